@@ -1,0 +1,276 @@
+//! The GL front end: validates every call exactly as GL does, then changes `State`, records the
+//! call, and hands vertices to the CPU backend.
+//!
+//! Every entry point follows the same three steps (Mesa `main/*.c`):
+//! 1. **record**: when recording, the call is appended to the stream as a [`Call`], erroneous or
+//!    not, so a replay elsewhere reproduces the same errors;
+//! 2. **validate**: on error, [`Context::error`] sets the sticky flag and the call returns having
+//!    changed nothing else (GL 2.1 §2.5);
+//! 3. **set**: flush the vertex batch if the change affects rendering, then write `State`.
+//!
+//! Commands not allowed between Begin and End (GL 2.1 §2.6.3) start with
+//! [`Context::outside_begin_end`], which both raises INVALID_OPERATION inside a Begin/End pair
+//! and flushes batched vertices before the state they were specified under changes.
+
+use glam::Vec4;
+
+use crate::call::Call;
+use crate::cpu::Renderer;
+use crate::gl;
+use crate::state::{State, MAX_VIEWPORT_DIM};
+use crate::Error;
+
+/// Appends `$call` to the recording, if one is running; builds the `Call` only then.
+macro_rules! record {
+    ($ctx:expr, $call:expr) => {
+        if let Some(rec) = $ctx.recording.as_mut() {
+            rec.push($call);
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use record;
+
+/// A GL context: state, sticky error flag, optional recording, and the CPU framebuffer.
+///
+/// Nothing is global: contexts are independent values and may live on different threads.
+#[derive(Debug)]
+pub struct Context {
+    pub(crate) state: State,
+    /// The sticky error flag (`NO_ERROR` when clear).
+    pub(crate) error: u32,
+    /// The mode of the open Begin/End pair, if any.
+    pub(crate) begin_mode: Option<u32>,
+    pub(crate) recording: Option<Vec<Call>>,
+    pub(crate) renderer: Renderer,
+}
+
+impl Context {
+    /// A context with a `width` x `height` framebuffer (RGBA8 colour, 24-bit depth, 8-bit stencil)
+    /// in GL's initial state. Each side must be between 1 and 16384.
+    pub fn new(width: u32, height: u32) -> Result<Context, Error> {
+        if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
+            return Err(Error::InvalidSize { width, height });
+        }
+        Ok(Context {
+            state: State::new(width, height),
+            error: gl::NO_ERROR,
+            begin_mode: None,
+            recording: None,
+            renderer: Renderer::new(width, height),
+        })
+    }
+
+    /// The state, read-only: what the `get_*` queries report, as plain data.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// Framebuffer width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (self.state.width, self.state.height)
+    }
+
+    /// Records `code` unless an earlier error is still unread: the first error sticks until
+    /// `get_error` reads it (GL 2.1 §2.5).
+    pub(crate) fn error(&mut self, code: u32) {
+        if self.error == gl::NO_ERROR {
+            self.error = code;
+        }
+    }
+
+    /// `glGetError`: returns and clears the sticky error flag. Between Begin and End it is, like
+    /// every command GL 2.1 §2.6.3 does not list, an INVALID_OPERATION: it returns NO_ERROR there
+    /// (as Mesa does) and the flag is read by the first `get_error` after End.
+    pub fn get_error(&mut self) -> u32 {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return gl::NO_ERROR;
+        }
+        std::mem::replace(&mut self.error, gl::NO_ERROR)
+    }
+
+    /// For a command not allowed between Begin and End: raises INVALID_OPERATION there and
+    /// returns false; otherwise draws the batched vertices (their state is about to change) and
+    /// returns true.
+    pub(crate) fn outside_begin_end(&mut self) -> bool {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return false;
+        }
+        self.renderer.flush(&self.state);
+        true
+    }
+
+    /// Starts recording every call made on this context (replacing any recording in progress).
+    pub fn start_recording(&mut self) {
+        self.recording = Some(Vec::new());
+    }
+
+    /// Stops recording and returns the calls recorded since `start_recording` (empty if none).
+    pub fn stop_recording(&mut self) -> Vec<Call> {
+        self.recording.take().unwrap_or_default()
+    }
+
+    /// `glBegin`.
+    pub fn begin(&mut self, mode: u32) {
+        record!(self, Call::Begin(mode));
+        if self.begin_mode.is_some() {
+            return self.error(gl::INVALID_OPERATION);
+        }
+        if mode > gl::POLYGON {
+            return self.error(gl::INVALID_ENUM);
+        }
+        self.begin_mode = Some(mode);
+        self.renderer.begin(mode);
+    }
+
+    /// `glEnd`.
+    pub fn end(&mut self) {
+        record!(self, Call::End);
+        if self.begin_mode.take().is_none() {
+            return self.error(gl::INVALID_OPERATION);
+        }
+        self.renderer.end();
+    }
+
+    /// The common path of every `Vertex*` form. Outside Begin/End a vertex has no effect (GL 2.1
+    /// §2.6.3 leaves it undefined; no error is defined, and drivers draw nothing).
+    #[inline]
+    pub(crate) fn vertex(&mut self, v: Vec4) {
+        if self.begin_mode.is_some() {
+            self.renderer.vertex(v, &self.state.current);
+        }
+    }
+
+    /// `glVertex3f`.
+    pub fn vertex3f(&mut self, x: f32, y: f32, z: f32) {
+        record!(self, Call::Vertex3f(x, y, z));
+        self.vertex(Vec4::new(x, y, z, 1.0));
+    }
+
+    /// `glNormal3f`.
+    pub fn normal3f(&mut self, x: f32, y: f32, z: f32) {
+        record!(self, Call::Normal3f(x, y, z));
+        self.state.current.normal = glam::Vec3::new(x, y, z);
+    }
+
+    /// `glColor4f`.
+    pub fn color4f(&mut self, r: f32, g: f32, b: f32, a: f32) {
+        record!(self, Call::Color4f(r, g, b, a));
+        self.state.current.color = Vec4::new(r, g, b, a);
+    }
+
+    /// `glEnable`.
+    pub fn enable(&mut self, cap: u32) {
+        record!(self, Call::Enable(cap));
+        self.set_enabled(cap, true);
+    }
+
+    /// `glDisable`.
+    pub fn disable(&mut self, cap: u32) {
+        record!(self, Call::Disable(cap));
+        self.set_enabled(cap, false);
+    }
+
+    fn set_enabled(&mut self, cap: u32, on: bool) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self.state.cap_mut(cap) {
+            Some(flag) => *flag = on,
+            None => self.error(gl::INVALID_ENUM),
+        }
+    }
+
+    /// `glIsEnabled`: INVALID_ENUM (and false) for a cap that is not one.
+    pub fn is_enabled(&mut self, cap: u32) -> bool {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return false;
+        }
+        match self.state.cap_mut(cap) {
+            Some(flag) => *flag,
+            None => {
+                self.error(gl::INVALID_ENUM);
+                false
+            }
+        }
+    }
+
+    /// Executes one recorded call on this context, exactly as if its method had been called.
+    pub fn execute(&mut self, call: &Call) {
+        match *call {
+            Call::Begin(mode) => self.begin(mode),
+            Call::End => self.end(),
+            Call::Vertex3f(x, y, z) => self.vertex3f(x, y, z),
+            Call::Normal3f(x, y, z) => self.normal3f(x, y, z),
+            Call::Color4f(r, g, b, a) => self.color4f(r, g, b, a),
+            Call::Enable(cap) => self.enable(cap),
+            Call::Disable(cap) => self.disable(cap),
+        }
+    }
+
+    /// Executes every call of `calls` in order.
+    pub fn replay(&mut self, calls: &[Call]) {
+        for call in calls {
+            self.execute(call);
+        }
+    }
+}
+
+impl State {
+    /// The flag behind an `Enable` capability, or `None` if `cap` is not one.
+    pub(crate) fn cap_mut(&mut self, cap: u32) -> Option<&mut bool> {
+        let e = &mut self.enables;
+        let unit = self.active_texture;
+        Some(match cap {
+            gl::LIGHTING => &mut e.lighting,
+            gl::LIGHT0..=gl::LIGHT7 => &mut e.lights[(cap - gl::LIGHT0) as usize],
+            gl::NORMALIZE => &mut e.normalize,
+            gl::RESCALE_NORMAL => &mut e.rescale_normal,
+            gl::COLOR_MATERIAL => &mut e.color_material,
+            gl::DEPTH_TEST => &mut e.depth_test,
+            gl::CULL_FACE => &mut e.cull_face,
+            gl::CLIP_PLANE0..=gl::CLIP_PLANE5 => {
+                &mut e.clip_planes[(cap - gl::CLIP_PLANE0) as usize]
+            }
+            gl::POLYGON_OFFSET_FILL => &mut e.polygon_offset_fill,
+            gl::POLYGON_OFFSET_LINE => &mut e.polygon_offset_line,
+            gl::POLYGON_OFFSET_POINT => &mut e.polygon_offset_point,
+            gl::SCISSOR_TEST => &mut e.scissor_test,
+            gl::ALPHA_TEST => &mut e.alpha_test,
+            gl::BLEND => &mut e.blend,
+            gl::STENCIL_TEST => &mut e.stencil_test,
+            gl::FOG => &mut e.fog,
+            gl::COLOR_SUM => &mut e.color_sum,
+            gl::COLOR_LOGIC_OP => &mut e.color_logic_op,
+            gl::INDEX_LOGIC_OP => &mut e.index_logic_op,
+            gl::DITHER => &mut e.dither,
+            gl::LINE_SMOOTH => &mut e.line_smooth,
+            gl::LINE_STIPPLE => &mut e.line_stipple,
+            gl::POINT_SMOOTH => &mut e.point_smooth,
+            gl::POINT_SPRITE => &mut e.point_sprite,
+            gl::POLYGON_SMOOTH => &mut e.polygon_smooth,
+            gl::POLYGON_STIPPLE => &mut e.polygon_stipple,
+            gl::AUTO_NORMAL => &mut e.auto_normal,
+            gl::MULTISAMPLE => &mut e.multisample,
+            gl::SAMPLE_ALPHA_TO_COVERAGE => &mut e.sample_alpha_to_coverage,
+            gl::SAMPLE_ALPHA_TO_ONE => &mut e.sample_alpha_to_one,
+            gl::SAMPLE_COVERAGE => &mut e.sample_coverage,
+            gl::VERTEX_PROGRAM_POINT_SIZE => &mut e.vertex_program_point_size,
+            gl::VERTEX_PROGRAM_TWO_SIDE => &mut e.vertex_program_two_side,
+            gl::TEXTURE_1D => &mut e.texture_1d[unit],
+            gl::TEXTURE_2D => &mut e.texture_2d[unit],
+            gl::TEXTURE_3D => &mut e.texture_3d[unit],
+            gl::TEXTURE_CUBE_MAP => &mut e.texture_cube_map[unit],
+            gl::TEXTURE_GEN_S => &mut e.texture_gen[unit][0],
+            gl::TEXTURE_GEN_T => &mut e.texture_gen[unit][1],
+            gl::TEXTURE_GEN_R => &mut e.texture_gen[unit][2],
+            gl::TEXTURE_GEN_Q => &mut e.texture_gen[unit][3],
+            gl::MAP1_COLOR_4..=gl::MAP1_VERTEX_4 => &mut e.map1[(cap - gl::MAP1_COLOR_4) as usize],
+            gl::MAP2_COLOR_4..=gl::MAP2_VERTEX_4 => &mut e.map2[(cap - gl::MAP2_COLOR_4) as usize],
+            _ => return None,
+        })
+    }
+}

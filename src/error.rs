@@ -1,0 +1,67 @@
+//! Rust-level errors: what GL itself cannot report through `get_error` (bad framebuffer sizes,
+//! I/O, a malformed recording, a backend that cannot start).
+
+use std::fmt;
+
+/// An error at the Rust level. GL errors proper (INVALID_ENUM, ...) are never an `Error`: they go to
+/// the context's sticky error flag, read by `Context::get_error`, exactly as in GL.
+#[derive(Debug)]
+pub enum Error {
+    /// `Context::new` was given a zero or oversized dimension.
+    InvalidSize {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// Reading or writing a file failed.
+    Io(std::io::Error),
+    /// A recording file could not be parsed; `line` is 1-based.
+    Parse {
+        /// The 1-based line number.
+        line: usize,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// Encoding or decoding an image failed.
+    Image(String),
+    /// The real-GL backend could not be set up; the message says what is missing and what to install.
+    Backend(String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidSize { width, height } => write!(
+                f,
+                "invalid framebuffer size {width}x{height}: each side must be 1..={}",
+                crate::state::MAX_VIEWPORT_DIM
+            ),
+            Error::Io(e) => write!(f, "I/O error: {e}"),
+            Error::Parse { line, message } => write!(f, "line {line}: {message}"),
+            Error::Image(m) => write!(f, "image error: {m}"),
+            Error::Backend(m) => write!(f, "GL backend: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Io(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<std::io::Error> for Error {
+    fn from(e: std::io::Error) -> Self {
+        Error::Io(e)
+    }
+}
+
+impl From<image::ImageError> for Error {
+    fn from(e: image::ImageError) -> Self {
+        Error::Image(e.to_string())
+    }
+}

@@ -1,0 +1,23 @@
+//! fixedgl: the OpenGL 1.x fixed-function pipeline on the CPU, and the same recorded calls replayed
+//! on a real GL driver, so that both can be compared side by side.
+//!
+//! ```text
+//! user code ─► Context (validates exactly as GL; sticky error flag; State; Call recording)
+//!                 ├─► cpu:  vertex stage → assembly → clipping → setup → tile rasteriser → framebuffer
+//!                 └─► Vec<Call> ─► GL backend (EGL, compatibility profile) ─► compare
+//! ```
+//!
+//! Start with [`Context::new`], then call GL entry points as methods: `glNormal3f` is
+//! [`Context::normal3f`], constants live in [`gl`]. See `docs/architecture.md`.
+#![warn(missing_docs)]
+
+pub mod call;
+pub mod context;
+pub mod cpu;
+mod error;
+pub mod gl;
+pub mod state;
+
+pub use call::Call;
+pub use context::Context;
+pub use error::Error;

@@ -1,0 +1,435 @@
+//! The GL state vector as plain data (GL 2.1 §6.2, tables 6.4 onwards).
+//!
+//! `State::new` is the spec's initial-state tables and nothing else: every field's starting value
+//! cites the table it comes from, so a state test can check one against the other. The front end
+//! (`crate::context`) is the only writer and validates before writing; the CPU pipeline
+//! (`crate::cpu`) reads it when it flushes a batch of vertices.
+//!
+//! Design decision: positions and directions that GL transforms "by the modelview matrix current
+//! at the call" (light POSITION and SPOT_DIRECTION, clip planes, later TexGen eye planes) are stored
+//! already transformed, in eye coordinates, exactly as `glGet*` reports them.
+
+// Fields are named after the GL state they hold (`light.spot_cutoff` is SPOT_CUTOFF): the table
+// row is their documentation.
+#![allow(missing_docs)]
+
+use glam::{DVec4, Mat4, Vec3, Vec4};
+
+use crate::gl;
+
+/// Number of lights (`MAX_LIGHTS`; the spec's minimum, and Mesa's value).
+pub const MAX_LIGHTS: usize = 8;
+/// Number of user clip planes (`MAX_CLIP_PLANES`).
+pub const MAX_CLIP_PLANES: usize = 6;
+/// Number of texture units (`MAX_TEXTURE_UNITS`).
+pub const MAX_TEXTURE_UNITS: usize = 4;
+/// `MAX_MODELVIEW_STACK_DEPTH` (the spec's minimum and Mesa's value).
+pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+/// `MAX_PROJECTION_STACK_DEPTH` (Mesa's value; the spec's minimum is 2).
+pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
+/// `MAX_TEXTURE_STACK_DEPTH` (Mesa's value; the spec's minimum is 2).
+pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
+/// Largest framebuffer side `Context::new` accepts (`MAX_VIEWPORT_DIMS`, Mesa's value).
+pub const MAX_VIEWPORT_DIM: u32 = 16384;
+
+/// A matrix stack (GL 2.1 §2.11.2). Never empty: the last element is the current matrix.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatrixStack {
+    /// The stack, bottom first; `stack.last()` is the current matrix.
+    pub stack: Vec<Mat4>,
+    /// The most matrices the stack may hold.
+    pub max_depth: usize,
+}
+
+impl MatrixStack {
+    /// A stack holding one identity matrix.
+    pub fn new(max_depth: usize) -> Self {
+        let mut stack = Vec::with_capacity(max_depth);
+        stack.push(Mat4::IDENTITY);
+        Self { stack, max_depth }
+    }
+
+    /// The current (top) matrix.
+    pub fn top(&self) -> &Mat4 {
+        // The stack is never empty: `new` pushes one and `pop` refuses the last.
+        &self.stack[self.stack.len() - 1]
+    }
+
+    /// The current (top) matrix, to modify in place.
+    pub fn top_mut(&mut self) -> &mut Mat4 {
+        let last = self.stack.len() - 1;
+        &mut self.stack[last]
+    }
+
+    /// The number of matrices on the stack (`*_STACK_DEPTH`).
+    pub fn depth(&self) -> usize {
+        self.stack.len()
+    }
+}
+
+/// One light source's parameters (GL 2.1 table 6.10), in eye coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    /// Eye coordinates: transformed by the modelview matrix current at `lightfv(POSITION)`.
+    pub position: Vec4,
+    /// Eye coordinates: transformed by the upper 3x3 of the modelview at `lightfv(SPOT_DIRECTION)`.
+    pub spot_direction: Vec3,
+    pub spot_exponent: f32,
+    pub spot_cutoff: f32,
+    pub constant_attenuation: f32,
+    pub linear_attenuation: f32,
+    pub quadratic_attenuation: f32,
+}
+
+impl Light {
+    /// The initial values of light `i` (LIGHT0 differs: white diffuse and specular).
+    pub fn initial(i: usize) -> Self {
+        let one = if i == 0 {
+            Vec4::ONE
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        };
+        Self {
+            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            diffuse: one,
+            specular: one,
+            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            constant_attenuation: 1.0,
+            linear_attenuation: 0.0,
+            quadratic_attenuation: 0.0,
+        }
+    }
+}
+
+/// `LightModel` parameters (GL 2.1 table 6.9).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightModel {
+    pub ambient: Vec4,
+    pub local_viewer: bool,
+    pub two_side: bool,
+    /// `SINGLE_COLOR` or `SEPARATE_SPECULAR_COLOR`.
+    pub color_control: u32,
+}
+
+/// One face's material (GL 2.1 table 6.9).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    pub emission: Vec4,
+    pub shininess: f32,
+    /// `COLOR_INDEXES` (ambient, diffuse, specular indices; colour-index mode only, kept for queries).
+    pub color_indexes: [f32; 3],
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+            color_indexes: [0.0, 1.0, 1.0],
+        }
+    }
+}
+
+/// Index of the front material in `State::materials`.
+pub const FRONT: usize = 0;
+/// Index of the back material in `State::materials`.
+pub const BACK: usize = 1;
+
+/// Every capability `Enable`/`Disable`/`IsEnabled` accept (GL 2.1 tables 6.x, "Enable" rows).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Enables {
+    pub lighting: bool,
+    pub lights: [bool; MAX_LIGHTS],
+    pub normalize: bool,
+    pub rescale_normal: bool,
+    pub color_material: bool,
+    pub depth_test: bool,
+    pub cull_face: bool,
+    pub clip_planes: [bool; MAX_CLIP_PLANES],
+    pub polygon_offset_fill: bool,
+    pub polygon_offset_line: bool,
+    pub polygon_offset_point: bool,
+    pub scissor_test: bool,
+    pub alpha_test: bool,
+    pub blend: bool,
+    pub stencil_test: bool,
+    pub fog: bool,
+    pub color_sum: bool,
+    pub color_logic_op: bool,
+    pub index_logic_op: bool,
+    /// Initially true (GL 2.1 table 6.21).
+    pub dither: bool,
+    pub line_smooth: bool,
+    pub line_stipple: bool,
+    pub point_smooth: bool,
+    pub point_sprite: bool,
+    pub polygon_smooth: bool,
+    pub polygon_stipple: bool,
+    pub auto_normal: bool,
+    pub multisample: bool,
+    pub sample_alpha_to_coverage: bool,
+    pub sample_alpha_to_one: bool,
+    pub sample_coverage: bool,
+    pub vertex_program_point_size: bool,
+    pub vertex_program_two_side: bool,
+    /// Per texture unit: TEXTURE_1D, TEXTURE_2D, TEXTURE_3D, TEXTURE_CUBE_MAP.
+    pub texture_1d: [bool; MAX_TEXTURE_UNITS],
+    pub texture_2d: [bool; MAX_TEXTURE_UNITS],
+    pub texture_3d: [bool; MAX_TEXTURE_UNITS],
+    pub texture_cube_map: [bool; MAX_TEXTURE_UNITS],
+    /// Per texture unit, TEXTURE_GEN_S, _T, _R, _Q.
+    pub texture_gen: [[bool; 4]; MAX_TEXTURE_UNITS],
+    /// Evaluator maps (MAP1_*, MAP2_*): queryable, never rendered (no evaluators in fixedgl).
+    pub map1: [bool; 9],
+    pub map2: [bool; 9],
+}
+
+impl Default for Enables {
+    fn default() -> Self {
+        Self {
+            lighting: false,
+            lights: [false; MAX_LIGHTS],
+            normalize: false,
+            rescale_normal: false,
+            color_material: false,
+            depth_test: false,
+            cull_face: false,
+            clip_planes: [false; MAX_CLIP_PLANES],
+            polygon_offset_fill: false,
+            polygon_offset_line: false,
+            polygon_offset_point: false,
+            scissor_test: false,
+            alpha_test: false,
+            blend: false,
+            stencil_test: false,
+            fog: false,
+            color_sum: false,
+            color_logic_op: false,
+            index_logic_op: false,
+            dither: true,
+            line_smooth: false,
+            line_stipple: false,
+            point_smooth: false,
+            point_sprite: false,
+            polygon_smooth: false,
+            polygon_stipple: false,
+            auto_normal: false,
+            multisample: true,
+            sample_alpha_to_coverage: false,
+            sample_alpha_to_one: false,
+            sample_coverage: false,
+            vertex_program_point_size: false,
+            vertex_program_two_side: false,
+            texture_1d: [false; MAX_TEXTURE_UNITS],
+            texture_2d: [false; MAX_TEXTURE_UNITS],
+            texture_3d: [false; MAX_TEXTURE_UNITS],
+            texture_cube_map: [false; MAX_TEXTURE_UNITS],
+            texture_gen: [[false; 4]; MAX_TEXTURE_UNITS],
+            map1: [false; 9],
+            map2: [false; 9],
+        }
+    }
+}
+
+/// The current vertex attributes (GL 2.1 table 6.5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Current {
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+    pub normal: Vec3,
+    pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
+    pub edge_flag: bool,
+}
+
+impl Default for Current {
+    fn default() -> Self {
+        Self {
+            color: Vec4::ONE,
+            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            normal: Vec3::new(0.0, 0.0, 1.0),
+            tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+            edge_flag: true,
+        }
+    }
+}
+
+/// `Hint` targets (GL 2.1 table 6.37); each `DONT_CARE`, `FASTEST` or `NICEST`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Hints {
+    pub perspective_correction: u32,
+    pub point_smooth: u32,
+    pub line_smooth: u32,
+    pub polygon_smooth: u32,
+    pub fog: u32,
+    pub generate_mipmap: u32,
+    pub texture_compression: u32,
+    pub fragment_shader_derivative: u32,
+    /// `PHONG_HINT_WIN` (GL_WIN_phong_shading).
+    pub phong: u32,
+}
+
+impl Default for Hints {
+    fn default() -> Self {
+        let d = gl::DONT_CARE;
+        Self {
+            perspective_correction: d,
+            point_smooth: d,
+            line_smooth: d,
+            polygon_smooth: d,
+            fog: d,
+            generate_mipmap: d,
+            texture_compression: d,
+            fragment_shader_derivative: d,
+            phong: d,
+        }
+    }
+}
+
+/// The whole GL state that fixedgl keeps, as plain data. `State::new` is the initial state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct State {
+    /// Framebuffer size, fixed at context creation.
+    pub width: u32,
+    pub height: u32,
+
+    // Current values (table 6.5).
+    pub current: Current,
+
+    // Transformation (tables 6.7, 6.8).
+    pub matrix_mode: u32,
+    pub modelview: MatrixStack,
+    pub projection: MatrixStack,
+    pub texture_matrix: [MatrixStack; MAX_TEXTURE_UNITS],
+    /// `ACTIVE_TEXTURE - TEXTURE0`: selects which texture matrix stack MatrixMode(TEXTURE) edits.
+    pub active_texture: usize,
+    pub client_active_texture: usize,
+    /// x, y, width, height.
+    pub viewport: [i32; 4],
+    /// near, far, clamped to [0, 1].
+    pub depth_range: [f64; 2],
+    /// Eye-coordinate plane equations.
+    pub clip_planes: [DVec4; MAX_CLIP_PLANES],
+
+    pub enables: Enables,
+
+    // Coloring and lighting (tables 6.9, 6.10).
+    pub shade_model: u32,
+    pub lights: [Light; MAX_LIGHTS],
+    pub light_model: LightModel,
+    /// `[FRONT]`, `[BACK]`.
+    pub materials: [Material; 2],
+    pub color_material_face: u32,
+    pub color_material_mode: u32,
+
+    // Rasterisation (tables 6.11, 6.12, 6.13).
+    pub point_size: f32,
+    pub line_width: f32,
+    pub front_face: u32,
+    pub cull_face_mode: u32,
+    /// `[FRONT]`, `[BACK]`: FILL, LINE or POINT.
+    pub polygon_mode: [u32; 2],
+    pub polygon_offset_factor: f32,
+    pub polygon_offset_units: f32,
+
+    // Pixel operations (tables 6.20, 6.21).
+    /// x, y, width, height.
+    pub scissor: [i32; 4],
+    pub depth_func: u32,
+
+    // Framebuffer control (table 6.22).
+    pub color_mask: [bool; 4],
+    pub depth_mask: bool,
+    pub stencil_writemask: u32,
+    pub clear_color: Vec4,
+    pub clear_depth: f64,
+    pub clear_stencil: i32,
+
+    // Pixel store (table 6.24).
+    pub pack_alignment: i32,
+    pub unpack_alignment: i32,
+
+    pub hints: Hints,
+}
+
+impl State {
+    /// The initial state of a context whose framebuffer is `width` x `height`.
+    pub fn new(width: u32, height: u32) -> Self {
+        let (w, h) = (width as i32, height as i32);
+        Self {
+            width,
+            height,
+            current: Current::default(),
+            matrix_mode: gl::MODELVIEW,
+            modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
+            projection: MatrixStack::new(MAX_PROJECTION_STACK_DEPTH),
+            texture_matrix: std::array::from_fn(|_| MatrixStack::new(MAX_TEXTURE_STACK_DEPTH)),
+            active_texture: 0,
+            client_active_texture: 0,
+            viewport: [0, 0, w, h],
+            depth_range: [0.0, 1.0],
+            clip_planes: [DVec4::ZERO; MAX_CLIP_PLANES],
+            enables: Enables::default(),
+            shade_model: gl::SMOOTH,
+            lights: std::array::from_fn(Light::initial),
+            light_model: LightModel {
+                ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+                local_viewer: false,
+                two_side: false,
+                color_control: gl::SINGLE_COLOR,
+            },
+            materials: [Material::default(); 2],
+            color_material_face: gl::FRONT_AND_BACK,
+            color_material_mode: gl::AMBIENT_AND_DIFFUSE,
+            point_size: 1.0,
+            line_width: 1.0,
+            front_face: gl::CCW,
+            cull_face_mode: gl::BACK,
+            polygon_mode: [gl::FILL, gl::FILL],
+            polygon_offset_factor: 0.0,
+            polygon_offset_units: 0.0,
+            scissor: [0, 0, w, h],
+            depth_func: gl::LESS,
+            color_mask: [true; 4],
+            depth_mask: true,
+            stencil_writemask: 0xFF,
+            clear_color: Vec4::ZERO,
+            clear_depth: 1.0,
+            clear_stencil: 0,
+            pack_alignment: 4,
+            unpack_alignment: 4,
+            hints: Hints::default(),
+        }
+    }
+
+    /// The matrix stack `MatrixMode` currently selects.
+    pub fn current_stack(&self) -> &MatrixStack {
+        match self.matrix_mode {
+            gl::PROJECTION => &self.projection,
+            gl::TEXTURE => &self.texture_matrix[self.active_texture],
+            _ => &self.modelview,
+        }
+    }
+
+    /// The matrix stack `MatrixMode` currently selects, to modify.
+    pub fn current_stack_mut(&mut self) -> &mut MatrixStack {
+        match self.matrix_mode {
+            gl::PROJECTION => &mut self.projection,
+            gl::TEXTURE => &mut self.texture_matrix[self.active_texture],
+            _ => &mut self.modelview,
+        }
+    }
+}
