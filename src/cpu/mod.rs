@@ -7,7 +7,7 @@
 
 use glam::Vec4;
 
-use crate::state::{Current, State};
+use crate::state::{Current, Material, State};
 
 /// The CPU renderer: the vertex batch not yet drawn and the framebuffer.
 #[derive(Debug)]
@@ -47,6 +47,15 @@ impl Renderer {
     pub fn flush(&mut self, _state: &State) {
         self.positions.clear();
     }
+
+    /// `Material` called between Begin and End: `materials` are the new front and back materials,
+    /// which apply from the next vertex on (GL 2.1 §2.14.3). Outside Begin/End the front end
+    /// flushes instead, so this is only called with a primitive open.
+    pub fn materials_changed(&mut self, _materials: &[Material; 2]) {}
+
+    /// `glClear` with a validated `mask` (any of COLOR/DEPTH/STENCIL_BUFFER_BIT), honouring the
+    /// scissor test and the colour, depth and stencil write masks in `state` (GL 2.1 §4.2.3).
+    pub fn clear(&mut self, _state: &State, _mask: u32) {}
 
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
