@@ -347,7 +347,7 @@ impl Context {
         }
     }
 
-    /// `glGetString`: VENDOR, RENDERER, VERSION ("1.5 fixedgl <crate version>") or
+    /// `glGetString`: VENDOR, RENDERER, VERSION ("1.5 fixedgl" and the crate version) or
     /// EXTENSIONS; `None` with INVALID_ENUM for any other name, and with INVALID_OPERATION
     /// between Begin and End.
     pub fn get_string(&mut self, name: u32) -> Option<&'static str> {

@@ -32,8 +32,9 @@ pub(crate) fn inverse_or_identity(m: DMat4) -> DMat4 {
 }
 
 /// The rotation of GL 2.1 §2.11.2 by `angle` degrees about the axis (x, y, z), normalised
-/// first. `None` for a zero-length axis, which leaves the matrix unchanged (no matrix is
-/// defined; Mesa skips the multiplication, and the replay must agree).
+/// first. `None` for a zero-length or non-finite axis, which leaves the matrix unchanged (the
+/// spec defines no matrix for it; Mesa skips the multiplication too). Mesa also skips axes
+/// shorter than 1e-4 that are not along x, y or z; fixedgl follows the spec and normalises them.
 fn rotation(angle: f64, x: f64, y: f64, z: f64) -> Option<DMat4> {
     let len = (x * x + y * y + z * z).sqrt();
     if len == 0.0 || !len.is_finite() {
