@@ -16,6 +16,9 @@ pub mod context;
 pub mod cpu;
 mod error;
 pub mod gl;
+// --- GLU (glu.rs)
+pub mod glu;
+// --- end GLU
 pub mod state;
 
 pub use call::Call;

@@ -20,6 +20,11 @@ use crate::gl;
 use crate::state::{State, MAX_VIEWPORT_DIM};
 use crate::Error;
 
+// --- transforms + queries (context/matrix.rs, context/get.rs)
+mod get;
+mod matrix;
+// --- end transforms + queries
+
 /// Appends `$call` to the recording, if one is running; builds the `Call` only then.
 macro_rules! record {
     ($ctx:expr, $call:expr) => {
@@ -208,6 +213,33 @@ impl Context {
             Call::Color4f(r, g, b, a) => self.color4f(r, g, b, a),
             Call::Enable(cap) => self.enable(cap),
             Call::Disable(cap) => self.disable(cap),
+            // --- transforms (context/matrix.rs)
+            Call::MatrixMode(mode) => self.matrix_mode(mode),
+            Call::LoadIdentity => self.load_identity(),
+            Call::LoadMatrixf(ref m) => self.load_matrixf(m),
+            Call::LoadMatrixd(ref m) => self.load_matrixd(m),
+            Call::MultMatrixf(ref m) => self.mult_matrixf(m),
+            Call::MultMatrixd(ref m) => self.mult_matrixd(m),
+            Call::LoadTransposeMatrixf(ref m) => self.load_transpose_matrixf(m),
+            Call::LoadTransposeMatrixd(ref m) => self.load_transpose_matrixd(m),
+            Call::MultTransposeMatrixf(ref m) => self.mult_transpose_matrixf(m),
+            Call::MultTransposeMatrixd(ref m) => self.mult_transpose_matrixd(m),
+            Call::Translatef(x, y, z) => self.translatef(x, y, z),
+            Call::Translated(x, y, z) => self.translated(x, y, z),
+            Call::Rotatef(a, x, y, z) => self.rotatef(a, x, y, z),
+            Call::Rotated(a, x, y, z) => self.rotated(a, x, y, z),
+            Call::Scalef(x, y, z) => self.scalef(x, y, z),
+            Call::Scaled(x, y, z) => self.scaled(x, y, z),
+            Call::Frustum(l, r, b, t, n, f) => self.frustum(l, r, b, t, n, f),
+            Call::Ortho(l, r, b, t, n, f) => self.ortho(l, r, b, t, n, f),
+            Call::PushMatrix => self.push_matrix(),
+            Call::PopMatrix => self.pop_matrix(),
+            Call::Viewport(x, y, w, h) => self.viewport(x, y, w, h),
+            Call::DepthRange(n, f) => self.depth_range(n, f),
+            Call::ClipPlane(plane, ref eq) => self.clip_plane(plane, eq),
+            Call::ActiveTexture(t) => self.active_texture(t),
+            Call::ClientActiveTexture(t) => self.client_active_texture(t),
+            // --- end transforms
         }
     }
 
