@@ -18,6 +18,9 @@ mod error;
 pub mod gl;
 pub mod state;
 
+// ---- frontend-set: the recording file format ----
+pub mod recording;
+
 pub use call::Call;
 pub use context::Context;
 pub use error::Error;

@@ -94,6 +94,13 @@ impl Context {
         std::mem::replace(&mut self.error, gl::NO_ERROR)
     }
 
+    /// The sticky error flag, without reading (clearing) it: what the next `get_error` outside
+    /// Begin/End will return. Not a GL entry point: for tests and tools that must not disturb
+    /// the context.
+    pub fn pending_error(&self) -> u32 {
+        self.error
+    }
+
     /// For a command not allowed between Begin and End: raises INVALID_OPERATION there and
     /// returns false; otherwise draws the batched vertices (their state is about to change) and
     /// returns true.
