@@ -16,6 +16,8 @@ mod control;
 mod framebuffer;
 mod lighting;
 mod raster;
+#[cfg(test)]
+mod tests;
 mod vertex;
 
 use crate::call::Call;
