@@ -212,11 +212,10 @@ fn tokenize(line: &str) -> Result<Vec<Token<'_>>, String> {
 
 /// One call as a line (without the newline).
 fn format_call(call: &Call) -> Result<String, Error> {
-    let ron = ron::to_string(call).map_err(|e| Error::Parse {
-        line: 0,
-        message: format!("cannot serialise {call:?}: {e}"),
-    })?;
-    let tokens = tokenize(&ron).map_err(|message| Error::Parse { line: 0, message })?;
+    // Neither can fail for a `Call` (no maps, no strings); reported as I/O errors all the same.
+    let invalid = |e: String| std::io::Error::new(std::io::ErrorKind::InvalidData, e);
+    let ron = ron::to_string(call).map_err(|e| invalid(format!("{call:?}: {e}")))?;
+    let tokens = tokenize(&ron).map_err(invalid)?;
     let variant = match tokens.first() {
         Some(Token::Word(w)) => *w,
         _ => "",

@@ -11,6 +11,12 @@
 //! Commands not allowed between Begin and End (GL 2.1 §2.6.3) start with
 //! [`Context::outside_begin_end`], which both raises INVALID_OPERATION inside a Begin/End pair
 //! and flushes batched vertices before the state they were specified under changes.
+//!
+//! One submodule per area, each an `impl Context` block: `vertex` (current attributes and
+//! `Vertex`, the hot path), `lighting` (Material, Light, LightModel, ColorMaterial, ShadeModel),
+//! `raster` (FrontFace, CullFace, PolygonMode, PolygonOffset, PointSize, LineWidth),
+//! `framebuffer` (Clear*, DepthFunc, masks, Scissor) and `control` (Hint, PixelStore, Flush,
+//! Finish). Begin/End, Enable/Disable, the error flag and [`Context::execute`] live here.
 
 mod control;
 mod framebuffer;

@@ -199,542 +199,101 @@ impl Context {
         self.state.current.fog_coord = f;
     }
 
-    attrib!(
-        vertex,
-        xyzw2,
-        i16,
-        2,
-        vertex2s / Vertex2s,
-        vertex2sv / Vertex2sv,
-        (x, y)
-    );
-    attrib!(
-        vertex,
-        xyzw2,
-        i32,
-        2,
-        vertex2i / Vertex2i,
-        vertex2iv / Vertex2iv,
-        (x, y)
-    );
-    attrib!(
-        vertex,
-        xyzw2,
-        f32,
-        2,
-        vertex2f / Vertex2f,
-        vertex2fv / Vertex2fv,
-        (x, y)
-    );
-    attrib!(
-        vertex,
-        xyzw2,
-        f64,
-        2,
-        vertex2d / Vertex2d,
-        vertex2dv / Vertex2dv,
-        (x, y)
-    );
-    attrib!(
-        vertex,
-        xyzw3,
-        i16,
-        3,
-        vertex3s / Vertex3s,
-        vertex3sv / Vertex3sv,
-        (x, y, z)
-    );
-    attrib!(
-        vertex,
-        xyzw3,
-        i32,
-        3,
-        vertex3i / Vertex3i,
-        vertex3iv / Vertex3iv,
-        (x, y, z)
-    );
-    attrib!(
-        vertex,
-        xyzw3,
-        f32,
-        3,
-        vertex3f / Vertex3f,
-        vertex3fv / Vertex3fv,
-        (x, y, z)
-    );
-    attrib!(
-        vertex,
-        xyzw3,
-        f64,
-        3,
-        vertex3d / Vertex3d,
-        vertex3dv / Vertex3dv,
-        (x, y, z)
-    );
-    attrib!(
-        vertex,
-        xyzw4,
-        i16,
-        4,
-        vertex4s / Vertex4s,
-        vertex4sv / Vertex4sv,
-        (x, y, z, w)
-    );
-    attrib!(
-        vertex,
-        xyzw4,
-        i32,
-        4,
-        vertex4i / Vertex4i,
-        vertex4iv / Vertex4iv,
-        (x, y, z, w)
-    );
-    attrib!(
-        vertex,
-        xyzw4,
-        f32,
-        4,
-        vertex4f / Vertex4f,
-        vertex4fv / Vertex4fv,
-        (x, y, z, w)
-    );
-    attrib!(
-        vertex,
-        xyzw4,
-        f64,
-        4,
-        vertex4d / Vertex4d,
-        vertex4dv / Vertex4dv,
-        (x, y, z, w)
-    );
+    attrib! { vertex, xyzw2, i16, 2, vertex2s / Vertex2s, vertex2sv / Vertex2sv, (x, y) }
+    attrib! { vertex, xyzw2, i32, 2, vertex2i / Vertex2i, vertex2iv / Vertex2iv, (x, y) }
+    attrib! { vertex, xyzw2, f32, 2, vertex2f / Vertex2f, vertex2fv / Vertex2fv, (x, y) }
+    attrib! { vertex, xyzw2, f64, 2, vertex2d / Vertex2d, vertex2dv / Vertex2dv, (x, y) }
+    attrib! { vertex, xyzw3, i16, 3, vertex3s / Vertex3s, vertex3sv / Vertex3sv, (x, y, z) }
+    attrib! { vertex, xyzw3, i32, 3, vertex3i / Vertex3i, vertex3iv / Vertex3iv, (x, y, z) }
+    attrib! { vertex, xyzw3, f32, 3, vertex3f / Vertex3f, vertex3fv / Vertex3fv, (x, y, z) }
+    attrib! { vertex, xyzw3, f64, 3, vertex3d / Vertex3d, vertex3dv / Vertex3dv, (x, y, z) }
+    attrib! { vertex, xyzw4, i16, 4, vertex4s / Vertex4s, vertex4sv / Vertex4sv, (x, y, z, w) }
+    attrib! { vertex, xyzw4, i32, 4, vertex4i / Vertex4i, vertex4iv / Vertex4iv, (x, y, z, w) }
+    attrib! { vertex, xyzw4, f32, 4, vertex4f / Vertex4f, vertex4fv / Vertex4fv, (x, y, z, w) }
+    attrib! { vertex, xyzw4, f64, 4, vertex4d / Vertex4d, vertex4dv / Vertex4dv, (x, y, z, w) }
 
-    attrib!(
-        set_normal,
-        normalized3,
-        i8,
-        3,
-        normal3b / Normal3b,
-        normal3bv / Normal3bv,
-        (x, y, z)
-    );
-    attrib!(
-        set_normal,
-        normalized3,
-        i16,
-        3,
-        normal3s / Normal3s,
-        normal3sv / Normal3sv,
-        (x, y, z)
-    );
-    attrib!(
-        set_normal,
-        normalized3,
-        i32,
-        3,
-        normal3i / Normal3i,
-        normal3iv / Normal3iv,
-        (x, y, z)
-    );
-    attrib!(
-        set_normal,
-        normalized3,
-        f32,
-        3,
-        normal3f / Normal3f,
-        normal3fv / Normal3fv,
-        (x, y, z)
-    );
-    attrib!(
-        set_normal,
-        normalized3,
-        f64,
-        3,
-        normal3d / Normal3d,
-        normal3dv / Normal3dv,
-        (x, y, z)
-    );
+    attrib! { set_normal, normalized3, i8, 3,
+    normal3b / Normal3b, normal3bv / Normal3bv, (x, y, z) }
+    attrib! { set_normal, normalized3, i16, 3,
+    normal3s / Normal3s, normal3sv / Normal3sv, (x, y, z) }
+    attrib! { set_normal, normalized3, i32, 3,
+    normal3i / Normal3i, normal3iv / Normal3iv, (x, y, z) }
+    attrib! { set_normal, normalized3, f32, 3,
+    normal3f / Normal3f, normal3fv / Normal3fv, (x, y, z) }
+    attrib! { set_normal, normalized3, f64, 3,
+    normal3d / Normal3d, normal3dv / Normal3dv, (x, y, z) }
 
-    attrib!(
-        set_color,
-        rgb,
-        i8,
-        3,
-        color3b / Color3b,
-        color3bv / Color3bv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        i16,
-        3,
-        color3s / Color3s,
-        color3sv / Color3sv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        i32,
-        3,
-        color3i / Color3i,
-        color3iv / Color3iv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        f32,
-        3,
-        color3f / Color3f,
-        color3fv / Color3fv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        f64,
-        3,
-        color3d / Color3d,
-        color3dv / Color3dv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        u8,
-        3,
-        color3ub / Color3ub,
-        color3ubv / Color3ubv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        u16,
-        3,
-        color3us / Color3us,
-        color3usv / Color3usv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgb,
-        u32,
-        3,
-        color3ui / Color3ui,
-        color3uiv / Color3uiv,
-        (r, g, b)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        i8,
-        4,
-        color4b / Color4b,
-        color4bv / Color4bv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        i16,
-        4,
-        color4s / Color4s,
-        color4sv / Color4sv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        i32,
-        4,
-        color4i / Color4i,
-        color4iv / Color4iv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        f32,
-        4,
-        color4f / Color4f,
-        color4fv / Color4fv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        f64,
-        4,
-        color4d / Color4d,
-        color4dv / Color4dv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        u8,
-        4,
-        color4ub / Color4ub,
-        color4ubv / Color4ubv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        u16,
-        4,
-        color4us / Color4us,
-        color4usv / Color4usv,
-        (r, g, b, a)
-    );
-    attrib!(
-        set_color,
-        rgba4,
-        u32,
-        4,
-        color4ui / Color4ui,
-        color4uiv / Color4uiv,
-        (r, g, b, a)
-    );
+    attrib! { set_color, rgb, i8, 3, color3b / Color3b, color3bv / Color3bv, (r, g, b) }
+    attrib! { set_color, rgb, i16, 3, color3s / Color3s, color3sv / Color3sv, (r, g, b) }
+    attrib! { set_color, rgb, i32, 3, color3i / Color3i, color3iv / Color3iv, (r, g, b) }
+    attrib! { set_color, rgb, f32, 3, color3f / Color3f, color3fv / Color3fv, (r, g, b) }
+    attrib! { set_color, rgb, f64, 3, color3d / Color3d, color3dv / Color3dv, (r, g, b) }
+    attrib! { set_color, rgb, u8, 3, color3ub / Color3ub, color3ubv / Color3ubv, (r, g, b) }
+    attrib! { set_color, rgb, u16, 3, color3us / Color3us, color3usv / Color3usv, (r, g, b) }
+    attrib! { set_color, rgb, u32, 3, color3ui / Color3ui, color3uiv / Color3uiv, (r, g, b) }
+    attrib! { set_color, rgba4, i8, 4, color4b / Color4b, color4bv / Color4bv, (r, g, b, a) }
+    attrib! { set_color, rgba4, i16, 4, color4s / Color4s, color4sv / Color4sv, (r, g, b, a) }
+    attrib! { set_color, rgba4, i32, 4, color4i / Color4i, color4iv / Color4iv, (r, g, b, a) }
+    attrib! { set_color, rgba4, f32, 4, color4f / Color4f, color4fv / Color4fv, (r, g, b, a) }
+    attrib! { set_color, rgba4, f64, 4, color4d / Color4d, color4dv / Color4dv, (r, g, b, a) }
+    attrib! { set_color, rgba4, u8, 4, color4ub / Color4ub, color4ubv / Color4ubv, (r, g, b, a) }
+    attrib! { set_color, rgba4, u16, 4, color4us / Color4us, color4usv / Color4usv, (r, g, b, a) }
+    attrib! { set_color, rgba4, u32, 4, color4ui / Color4ui, color4uiv / Color4uiv, (r, g, b, a) }
 
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        i8,
-        3,
-        secondary_color3b / SecondaryColor3b,
-        secondary_color3bv / SecondaryColor3bv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        i16,
-        3,
-        secondary_color3s / SecondaryColor3s,
-        secondary_color3sv / SecondaryColor3sv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        i32,
-        3,
-        secondary_color3i / SecondaryColor3i,
-        secondary_color3iv / SecondaryColor3iv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        f32,
-        3,
-        secondary_color3f / SecondaryColor3f,
-        secondary_color3fv / SecondaryColor3fv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        f64,
-        3,
-        secondary_color3d / SecondaryColor3d,
-        secondary_color3dv / SecondaryColor3dv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        u8,
-        3,
-        secondary_color3ub / SecondaryColor3ub,
-        secondary_color3ubv / SecondaryColor3ubv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        u16,
-        3,
-        secondary_color3us / SecondaryColor3us,
-        secondary_color3usv / SecondaryColor3usv,
-        (r, g, b)
-    );
-    attrib!(
-        set_secondary_color,
-        normalized3,
-        u32,
-        3,
-        secondary_color3ui / SecondaryColor3ui,
-        secondary_color3uiv / SecondaryColor3uiv,
-        (r, g, b)
-    );
+    attrib! { set_secondary_color, normalized3, i8, 3,
+    secondary_color3b / SecondaryColor3b, secondary_color3bv / SecondaryColor3bv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, i16, 3,
+    secondary_color3s / SecondaryColor3s, secondary_color3sv / SecondaryColor3sv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, i32, 3,
+    secondary_color3i / SecondaryColor3i, secondary_color3iv / SecondaryColor3iv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, f32, 3,
+    secondary_color3f / SecondaryColor3f, secondary_color3fv / SecondaryColor3fv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, f64, 3,
+    secondary_color3d / SecondaryColor3d, secondary_color3dv / SecondaryColor3dv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, u8, 3,
+    secondary_color3ub / SecondaryColor3ub, secondary_color3ubv / SecondaryColor3ubv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, u16, 3,
+    secondary_color3us / SecondaryColor3us, secondary_color3usv / SecondaryColor3usv, (r, g, b) }
+    attrib! { set_secondary_color, normalized3, u32, 3,
+    secondary_color3ui / SecondaryColor3ui, secondary_color3uiv / SecondaryColor3uiv, (r, g, b) }
 
-    attrib!(
-        set_tex_coord,
-        xyzw1,
-        i16,
-        1,
-        tex_coord1s / TexCoord1s,
-        tex_coord1sv / TexCoord1sv,
-        (s)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw1,
-        i32,
-        1,
-        tex_coord1i / TexCoord1i,
-        tex_coord1iv / TexCoord1iv,
-        (s)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw1,
-        f32,
-        1,
-        tex_coord1f / TexCoord1f,
-        tex_coord1fv / TexCoord1fv,
-        (s)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw1,
-        f64,
-        1,
-        tex_coord1d / TexCoord1d,
-        tex_coord1dv / TexCoord1dv,
-        (s)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw2,
-        i16,
-        2,
-        tex_coord2s / TexCoord2s,
-        tex_coord2sv / TexCoord2sv,
-        (s, t)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw2,
-        i32,
-        2,
-        tex_coord2i / TexCoord2i,
-        tex_coord2iv / TexCoord2iv,
-        (s, t)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw2,
-        f32,
-        2,
-        tex_coord2f / TexCoord2f,
-        tex_coord2fv / TexCoord2fv,
-        (s, t)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw2,
-        f64,
-        2,
-        tex_coord2d / TexCoord2d,
-        tex_coord2dv / TexCoord2dv,
-        (s, t)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw3,
-        i16,
-        3,
-        tex_coord3s / TexCoord3s,
-        tex_coord3sv / TexCoord3sv,
-        (s, t, r)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw3,
-        i32,
-        3,
-        tex_coord3i / TexCoord3i,
-        tex_coord3iv / TexCoord3iv,
-        (s, t, r)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw3,
-        f32,
-        3,
-        tex_coord3f / TexCoord3f,
-        tex_coord3fv / TexCoord3fv,
-        (s, t, r)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw3,
-        f64,
-        3,
-        tex_coord3d / TexCoord3d,
-        tex_coord3dv / TexCoord3dv,
-        (s, t, r)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw4,
-        i16,
-        4,
-        tex_coord4s / TexCoord4s,
-        tex_coord4sv / TexCoord4sv,
-        (s, t, r, q)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw4,
-        i32,
-        4,
-        tex_coord4i / TexCoord4i,
-        tex_coord4iv / TexCoord4iv,
-        (s, t, r, q)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw4,
-        f32,
-        4,
-        tex_coord4f / TexCoord4f,
-        tex_coord4fv / TexCoord4fv,
-        (s, t, r, q)
-    );
-    attrib!(
-        set_tex_coord,
-        xyzw4,
-        f64,
-        4,
-        tex_coord4d / TexCoord4d,
-        tex_coord4dv / TexCoord4dv,
-        (s, t, r, q)
-    );
+    attrib! { set_tex_coord, xyzw1, i16, 1,
+    tex_coord1s / TexCoord1s, tex_coord1sv / TexCoord1sv, (s) }
+    attrib! { set_tex_coord, xyzw1, i32, 1,
+    tex_coord1i / TexCoord1i, tex_coord1iv / TexCoord1iv, (s) }
+    attrib! { set_tex_coord, xyzw1, f32, 1,
+    tex_coord1f / TexCoord1f, tex_coord1fv / TexCoord1fv, (s) }
+    attrib! { set_tex_coord, xyzw1, f64, 1,
+    tex_coord1d / TexCoord1d, tex_coord1dv / TexCoord1dv, (s) }
+    attrib! { set_tex_coord, xyzw2, i16, 2,
+    tex_coord2s / TexCoord2s, tex_coord2sv / TexCoord2sv, (s, t) }
+    attrib! { set_tex_coord, xyzw2, i32, 2,
+    tex_coord2i / TexCoord2i, tex_coord2iv / TexCoord2iv, (s, t) }
+    attrib! { set_tex_coord, xyzw2, f32, 2,
+    tex_coord2f / TexCoord2f, tex_coord2fv / TexCoord2fv, (s, t) }
+    attrib! { set_tex_coord, xyzw2, f64, 2,
+    tex_coord2d / TexCoord2d, tex_coord2dv / TexCoord2dv, (s, t) }
+    attrib! { set_tex_coord, xyzw3, i16, 3,
+    tex_coord3s / TexCoord3s, tex_coord3sv / TexCoord3sv, (s, t, r) }
+    attrib! { set_tex_coord, xyzw3, i32, 3,
+    tex_coord3i / TexCoord3i, tex_coord3iv / TexCoord3iv, (s, t, r) }
+    attrib! { set_tex_coord, xyzw3, f32, 3,
+    tex_coord3f / TexCoord3f, tex_coord3fv / TexCoord3fv, (s, t, r) }
+    attrib! { set_tex_coord, xyzw3, f64, 3,
+    tex_coord3d / TexCoord3d, tex_coord3dv / TexCoord3dv, (s, t, r) }
+    attrib! { set_tex_coord, xyzw4, i16, 4,
+    tex_coord4s / TexCoord4s, tex_coord4sv / TexCoord4sv, (s, t, r, q) }
+    attrib! { set_tex_coord, xyzw4, i32, 4,
+    tex_coord4i / TexCoord4i, tex_coord4iv / TexCoord4iv, (s, t, r, q) }
+    attrib! { set_tex_coord, xyzw4, f32, 4,
+    tex_coord4f / TexCoord4f, tex_coord4fv / TexCoord4fv, (s, t, r, q) }
+    attrib! { set_tex_coord, xyzw4, f64, 4,
+    tex_coord4d / TexCoord4d, tex_coord4dv / TexCoord4dv, (s, t, r, q) }
 
-    attrib!(
-        set_fog_coord,
-        fog1,
-        f32,
-        1,
-        fog_coordf / FogCoordf,
-        fog_coordfv / FogCoordfv,
-        (coord)
-    );
-    attrib!(
-        set_fog_coord,
-        fog1,
-        f64,
-        1,
-        fog_coordd / FogCoordd,
-        fog_coorddv / FogCoorddv,
-        (coord)
-    );
+    attrib! { set_fog_coord, fog1, f32, 1,
+    fog_coordf / FogCoordf, fog_coordfv / FogCoordfv, (coord) }
+    attrib! { set_fog_coord, fog1, f64, 1,
+    fog_coordd / FogCoordd, fog_coorddv / FogCoorddv, (coord) }
 
     /// `glEdgeFlag`: whether the following vertices start boundary edges (GL 2.1 §2.6.2).
     #[inline]
