@@ -378,6 +378,8 @@ mod tests {
             line.ok().as_deref(),
             Some("Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT)")
         );
+        let line = format_call(&Call::TexCoord1sv([-5]));
+        assert_eq!(line.ok().as_deref(), Some("TexCoord1sv((-5))"));
         let line = format_call(&Call::ShadeModel(0x1234_5678));
         assert_eq!(line.ok().as_deref(), Some("ShadeModel(0x12345678)"));
     }
