@@ -23,7 +23,7 @@ use crate::state::{Material, BACK, FRONT, MAX_LIGHTS};
 type Params = [f32; 4];
 
 /// Converts `src` to at most four floats; colour pnames of integer forms are normalised.
-fn params<T: Component>(src: &[T], color: bool) -> (Params, usize) {
+fn convert<T: Component>(src: &[T], color: bool) -> (Params, usize) {
     let mut out = [0.0; 4];
     for (o, v) in out.iter_mut().zip(src) {
         *o = if color { v.normalized() } else { v.to_f32() };
@@ -134,7 +134,7 @@ impl Context {
     /// The validating body of every `Material` form. `scalar`: the `f`/`i` forms, which take
     /// SHININESS only (GL 2.1 §2.14.2).
     fn material(&mut self, face: u32, pname: u32, p: (Params, usize), scalar: bool) {
-        let Some(faces) = faces(face) else {
+        let Some(targets) = faces(face) else {
             return self.error(gl::INVALID_ENUM);
         };
         let Some(len) = material_len(pname) else {
@@ -159,16 +159,17 @@ impl Context {
         // While COLOR_MATERIAL is on, the tracked parameters follow the current colour "at all
         // times" (§2.14.3), so a Material call does not change them (as Mesa does).
         let color_material = self.state.enables.color_material;
-        let tracked_faces = faces_mask(self.state.color_material_face);
+        let tracked_faces = faces(self.state.color_material_face).unwrap_or(&[]);
         let tracked_pnames = tracked(self.state.color_material_mode);
         let pnames: &[u32] = if pname == gl::AMBIENT_AND_DIFFUSE {
             &[gl::AMBIENT, gl::DIFFUSE]
         } else {
             std::slice::from_ref(&pname)
         };
-        for &f in faces {
+        for &f in targets {
             for &pn in pnames {
-                let is_tracked = color_material && tracked_faces[f] && tracked_pnames.contains(&pn);
+                let is_tracked =
+                    color_material && tracked_faces.contains(&f) && tracked_pnames.contains(&pn);
                 if let (false, Some(m)) = (is_tracked, self.state.materials.get_mut(f)) {
                     set_material(m, pn, &p);
                 }
@@ -182,25 +183,25 @@ impl Context {
     /// `glMaterialf`: `pname` must be SHININESS.
     pub fn materialf(&mut self, face: u32, pname: u32, param: f32) {
         record!(self, Call::Materialf(face, pname, param));
-        self.material(face, pname, params(&[param], false), true);
+        self.material(face, pname, convert(&[param], false), true);
     }
 
     /// `glMateriali`: `pname` must be SHININESS.
     pub fn materiali(&mut self, face: u32, pname: u32, param: i32) {
         record!(self, Call::Materiali(face, pname, param));
-        self.material(face, pname, params(&[param], false), true);
+        self.material(face, pname, convert(&[param], false), true);
     }
 
     /// `glMaterialfv`.
-    pub fn materialfv(&mut self, face: u32, pname: u32, params_: &[f32]) {
-        record!(self, Call::Materialfv(face, pname, params_.to_vec()));
-        self.material(face, pname, params(params_, false), false);
+    pub fn materialfv(&mut self, face: u32, pname: u32, params: &[f32]) {
+        record!(self, Call::Materialfv(face, pname, params.to_vec()));
+        self.material(face, pname, convert(params, false), false);
     }
 
     /// `glMaterialiv`: colours map linearly, the most positive integer to 1.0.
-    pub fn materialiv(&mut self, face: u32, pname: u32, params_: &[i32]) {
-        record!(self, Call::Materialiv(face, pname, params_.to_vec()));
-        self.material(face, pname, params(params_, is_color(pname)), false);
+    pub fn materialiv(&mut self, face: u32, pname: u32, params: &[i32]) {
+        record!(self, Call::Materialiv(face, pname, params.to_vec()));
+        self.material(face, pname, convert(params, is_color(pname)), false);
     }
 
     /// The validating body of every `Light` form (GL 2.1 §2.14.2).
@@ -259,25 +260,25 @@ impl Context {
     /// `glLightf`: scalar pnames only (SPOT_EXPONENT, SPOT_CUTOFF, the attenuations).
     pub fn lightf(&mut self, light: u32, pname: u32, param: f32) {
         record!(self, Call::Lightf(light, pname, param));
-        self.light(light, pname, params(&[param], false), true);
+        self.light(light, pname, convert(&[param], false), true);
     }
 
     /// `glLighti`: scalar pnames only.
     pub fn lighti(&mut self, light: u32, pname: u32, param: i32) {
         record!(self, Call::Lighti(light, pname, param));
-        self.light(light, pname, params(&[param], false), true);
+        self.light(light, pname, convert(&[param], false), true);
     }
 
     /// `glLightfv`. POSITION and SPOT_DIRECTION are transformed by the current modelview matrix.
-    pub fn lightfv(&mut self, light: u32, pname: u32, params_: &[f32]) {
-        record!(self, Call::Lightfv(light, pname, params_.to_vec()));
-        self.light(light, pname, params(params_, false), false);
+    pub fn lightfv(&mut self, light: u32, pname: u32, params: &[f32]) {
+        record!(self, Call::Lightfv(light, pname, params.to_vec()));
+        self.light(light, pname, convert(params, false), false);
     }
 
     /// `glLightiv`: colours map linearly, the most positive integer to 1.0.
-    pub fn lightiv(&mut self, light: u32, pname: u32, params_: &[i32]) {
-        record!(self, Call::Lightiv(light, pname, params_.to_vec()));
-        self.light(light, pname, params(params_, is_color(pname)), false);
+    pub fn lightiv(&mut self, light: u32, pname: u32, params: &[i32]) {
+        record!(self, Call::Lightiv(light, pname, params.to_vec()));
+        self.light(light, pname, convert(params, is_color(pname)), false);
     }
 
     /// The validating body of every `LightModel` form (GL 2.1 §2.14.2, table 2.10).
@@ -317,26 +318,26 @@ impl Context {
     /// `glLightModelf`: LOCAL_VIEWER, TWO_SIDE or COLOR_CONTROL.
     pub fn light_modelf(&mut self, pname: u32, param: f32) {
         record!(self, Call::LightModelf(pname, param));
-        self.light_model(pname, params(&[param], false), true);
+        self.light_model(pname, convert(&[param], false), true);
     }
 
     /// `glLightModeli`: LOCAL_VIEWER, TWO_SIDE or COLOR_CONTROL.
     pub fn light_modeli(&mut self, pname: u32, param: i32) {
         record!(self, Call::LightModeli(pname, param));
-        self.light_model(pname, params(&[param], false), true);
+        self.light_model(pname, convert(&[param], false), true);
     }
 
     /// `glLightModelfv`.
-    pub fn light_modelfv(&mut self, pname: u32, params_: &[f32]) {
-        record!(self, Call::LightModelfv(pname, params_.to_vec()));
-        self.light_model(pname, params(params_, false), false);
+    pub fn light_modelfv(&mut self, pname: u32, params: &[f32]) {
+        record!(self, Call::LightModelfv(pname, params.to_vec()));
+        self.light_model(pname, convert(params, false), false);
     }
 
     /// `glLightModeliv`: AMBIENT maps linearly, the most positive integer to 1.0.
-    pub fn light_modeliv(&mut self, pname: u32, params_: &[i32]) {
-        record!(self, Call::LightModeliv(pname, params_.to_vec()));
+    pub fn light_modeliv(&mut self, pname: u32, params: &[i32]) {
+        record!(self, Call::LightModeliv(pname, params.to_vec()));
         let color = pname == gl::LIGHT_MODEL_AMBIENT;
-        self.light_model(pname, params(params_, color), false);
+        self.light_model(pname, convert(params, color), false);
     }
 
     /// `glColorMaterial` (GL 2.1 §2.14.3). With COLOR_MATERIAL enabled, the newly selected
@@ -366,15 +367,5 @@ impl Context {
             gl::FLAT | gl::SMOOTH | gl::PHONG_WIN => self.state.shade_model = mode,
             _ => self.error(gl::INVALID_ENUM),
         }
-    }
-}
-
-/// Which of `[FRONT, BACK]` the face enum `face` covers.
-fn faces_mask(face: u32) -> [bool; 2] {
-    match face {
-        gl::FRONT => [true, false],
-        gl::BACK => [false, true],
-        gl::FRONT_AND_BACK => [true, true],
-        _ => [false, false],
     }
 }
