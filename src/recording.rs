@@ -16,7 +16,7 @@
 //!
 //! Design decision: RON does the structural work through `Call`'s serde derive, so a variant added
 //! to `Call` needs nothing here to be recorded and read back. This module only rewrites argument
-//! tokens: on writing, integers in the positions [`arg_kinds`] marks as enums become names; on
+//! tokens: on writing, integers in the positions `arg_kinds` marks as enums become names; on
 //! reading, every GL name (anywhere) becomes its number. A variant missing from `arg_kinds` is
 //! written with plain numbers, which read back the same.
 //!

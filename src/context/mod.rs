@@ -4,12 +4,12 @@
 //! Every entry point follows the same three steps (Mesa `main/*.c`):
 //! 1. **record**: when recording, the call is appended to the stream as a [`Call`], erroneous or
 //!    not, so a replay elsewhere reproduces the same errors;
-//! 2. **validate**: on error, [`Context::error`] sets the sticky flag and the call returns having
+//! 2. **validate**: on error, `Context::error` sets the sticky flag and the call returns having
 //!    changed nothing else (GL 2.1 §2.5);
 //! 3. **set**: flush the vertex batch if the change affects rendering, then write `State`.
 //!
 //! Commands not allowed between Begin and End (GL 2.1 §2.6.3) start with
-//! [`Context::outside_begin_end`], which both raises INVALID_OPERATION inside a Begin/End pair
+//! `Context::outside_begin_end`, which both raises INVALID_OPERATION inside a Begin/End pair
 //! and flushes batched vertices before the state they were specified under changes.
 //!
 //! One submodule per area, each an `impl Context` block: `vertex` (current attributes and
