@@ -21,6 +21,9 @@ pub mod glu;
 // --- end GLU
 pub mod state;
 
+// ---- frontend-set: the recording file format ----
+pub mod recording;
+
 pub use call::Call;
 pub use context::Context;
 pub use error::Error;

@@ -405,7 +405,7 @@ impl State {
             depth_func: gl::LESS,
             color_mask: [true; 4],
             depth_mask: true,
-            stencil_writemask: 0xFF,
+            stencil_writemask: u32::MAX,
             clear_color: Vec4::ZERO,
             clear_depth: 1.0,
             clear_stencil: 0,

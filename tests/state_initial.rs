@@ -156,11 +156,11 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(DITHER, B(&[true])),
     row!(INDEX_LOGIC_OP, B(&[false])),
     row!(COLOR_LOGIC_OP, B(&[false])),
-    // Table 6.22: framebuffer control (STENCIL_WRITEMASK: all ones in the 8 stencil bits).
+    // Table 6.22: framebuffer control (STENCIL_WRITEMASK: "1's", all bits set; as GLint that is -1).
     row!(COLOR_WRITEMASK, B(&[true, true, true, true])),
     row!(COLOR_WRITEMASK, I(&[1, 1, 1, 1])),
     row!(DEPTH_WRITEMASK, B(&[true])),
-    row!(STENCIL_WRITEMASK, I(&[0xFF])),
+    row!(STENCIL_WRITEMASK, I(&[-1])),
     row!(COLOR_CLEAR_VALUE, F(&[0.0, 0.0, 0.0, 0.0])),
     row!(COLOR_CLEAR_VALUE, I(&[0, 0, 0, 0])),
     row!(DEPTH_CLEAR_VALUE, D(&[1.0])),

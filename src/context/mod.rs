@@ -4,15 +4,27 @@
 //! Every entry point follows the same three steps (Mesa `main/*.c`):
 //! 1. **record**: when recording, the call is appended to the stream as a [`Call`], erroneous or
 //!    not, so a replay elsewhere reproduces the same errors;
-//! 2. **validate**: on error, [`Context::error`] sets the sticky flag and the call returns having
+//! 2. **validate**: on error, `Context::error` sets the sticky flag and the call returns having
 //!    changed nothing else (GL 2.1 §2.5);
 //! 3. **set**: flush the vertex batch if the change affects rendering, then write `State`.
 //!
 //! Commands not allowed between Begin and End (GL 2.1 §2.6.3) start with
-//! [`Context::outside_begin_end`], which both raises INVALID_OPERATION inside a Begin/End pair
+//! `Context::outside_begin_end`, which both raises INVALID_OPERATION inside a Begin/End pair
 //! and flushes batched vertices before the state they were specified under changes.
+//!
+//! One submodule per area, each an `impl Context` block: `vertex` (current attributes and
+//! `Vertex`, the hot path), `lighting` (Material, Light, LightModel, ColorMaterial, ShadeModel),
+//! `raster` (FrontFace, CullFace, PolygonMode, PolygonOffset, PointSize, LineWidth),
+//! `framebuffer` (Clear*, DepthFunc, masks, Scissor) and `control` (Hint, PixelStore, Flush,
+//! Finish). Begin/End, Enable/Disable, the error flag and [`Context::execute`] live here.
 
-use glam::Vec4;
+mod control;
+mod framebuffer;
+mod lighting;
+mod raster;
+#[cfg(test)]
+mod tests;
+mod vertex;
 
 use crate::call::Call;
 use crate::cpu::Renderer;
@@ -95,6 +107,13 @@ impl Context {
         std::mem::replace(&mut self.error, gl::NO_ERROR)
     }
 
+    /// The sticky error flag, without reading (clearing) it: what the next `get_error` outside
+    /// Begin/End will return. Not a GL entry point: for tests and tools that must not disturb
+    /// the context.
+    pub fn pending_error(&self) -> u32 {
+        self.error
+    }
+
     /// For a command not allowed between Begin and End: raises INVALID_OPERATION there and
     /// returns false; otherwise draws the batched vertices (their state is about to change) and
     /// returns true.
@@ -139,33 +158,6 @@ impl Context {
         self.renderer.end();
     }
 
-    /// The common path of every `Vertex*` form. Outside Begin/End a vertex has no effect (GL 2.1
-    /// §2.6.3 leaves it undefined; no error is defined, and drivers draw nothing).
-    #[inline]
-    pub(crate) fn vertex(&mut self, v: Vec4) {
-        if self.begin_mode.is_some() {
-            self.renderer.vertex(v, &self.state.current);
-        }
-    }
-
-    /// `glVertex3f`.
-    pub fn vertex3f(&mut self, x: f32, y: f32, z: f32) {
-        record!(self, Call::Vertex3f(x, y, z));
-        self.vertex(Vec4::new(x, y, z, 1.0));
-    }
-
-    /// `glNormal3f`.
-    pub fn normal3f(&mut self, x: f32, y: f32, z: f32) {
-        record!(self, Call::Normal3f(x, y, z));
-        self.state.current.normal = glam::Vec3::new(x, y, z);
-    }
-
-    /// `glColor4f`.
-    pub fn color4f(&mut self, r: f32, g: f32, b: f32, a: f32) {
-        record!(self, Call::Color4f(r, g, b, a));
-        self.state.current.color = Vec4::new(r, g, b, a);
-    }
-
     /// `glEnable`.
     pub fn enable(&mut self, cap: u32) {
         record!(self, Call::Enable(cap));
@@ -184,7 +176,11 @@ impl Context {
         }
         match self.state.cap_mut(cap) {
             Some(flag) => *flag = on,
-            None => self.error(gl::INVALID_ENUM),
+            None => return self.error(gl::INVALID_ENUM),
+        }
+        // GL 2.1 §2.14.3: once enabled, the selected material values track the current colour.
+        if on && cap == gl::COLOR_MATERIAL {
+            self.track_color_material();
         }
     }
 
@@ -206,13 +202,9 @@ impl Context {
     /// Executes one recorded call on this context, exactly as if its method had been called.
     pub fn execute(&mut self, call: &Call) {
         match *call {
-            Call::Begin(mode) => self.begin(mode),
+            // ---- Begin/End and capabilities (GL 2.1 §2.6, §2.12) ----
+            Call::Begin(a) => self.begin(a),
             Call::End => self.end(),
-            Call::Vertex3f(x, y, z) => self.vertex3f(x, y, z),
-            Call::Normal3f(x, y, z) => self.normal3f(x, y, z),
-            Call::Color4f(r, g, b, a) => self.color4f(r, g, b, a),
-            Call::Enable(cap) => self.enable(cap),
-            Call::Disable(cap) => self.disable(cap),
             // --- transforms (context/matrix.rs)
             Call::MatrixMode(mode) => self.matrix_mode(mode),
             Call::LoadIdentity => self.load_identity(),
@@ -240,6 +232,166 @@ impl Context {
             Call::ActiveTexture(t) => self.active_texture(t),
             Call::ClientActiveTexture(t) => self.client_active_texture(t),
             // --- end transforms
+            Call::Enable(a) => self.enable(a),
+            Call::Disable(a) => self.disable(a),
+            // ---- Vertex attributes (GL 2.1 §2.7): context/vertex.rs ----
+            Call::Vertex2s(a, b) => self.vertex2s(a, b),
+            Call::Vertex2i(a, b) => self.vertex2i(a, b),
+            Call::Vertex2f(a, b) => self.vertex2f(a, b),
+            Call::Vertex2d(a, b) => self.vertex2d(a, b),
+            Call::Vertex3s(a, b, c) => self.vertex3s(a, b, c),
+            Call::Vertex3i(a, b, c) => self.vertex3i(a, b, c),
+            Call::Vertex3f(a, b, c) => self.vertex3f(a, b, c),
+            Call::Vertex3d(a, b, c) => self.vertex3d(a, b, c),
+            Call::Vertex4s(a, b, c, d) => self.vertex4s(a, b, c, d),
+            Call::Vertex4i(a, b, c, d) => self.vertex4i(a, b, c, d),
+            Call::Vertex4f(a, b, c, d) => self.vertex4f(a, b, c, d),
+            Call::Vertex4d(a, b, c, d) => self.vertex4d(a, b, c, d),
+            Call::Vertex2sv(ref a) => self.vertex2sv(a),
+            Call::Vertex2iv(ref a) => self.vertex2iv(a),
+            Call::Vertex2fv(ref a) => self.vertex2fv(a),
+            Call::Vertex2dv(ref a) => self.vertex2dv(a),
+            Call::Vertex3sv(ref a) => self.vertex3sv(a),
+            Call::Vertex3iv(ref a) => self.vertex3iv(a),
+            Call::Vertex3fv(ref a) => self.vertex3fv(a),
+            Call::Vertex3dv(ref a) => self.vertex3dv(a),
+            Call::Vertex4sv(ref a) => self.vertex4sv(a),
+            Call::Vertex4iv(ref a) => self.vertex4iv(a),
+            Call::Vertex4fv(ref a) => self.vertex4fv(a),
+            Call::Vertex4dv(ref a) => self.vertex4dv(a),
+            Call::Normal3b(a, b, c) => self.normal3b(a, b, c),
+            Call::Normal3s(a, b, c) => self.normal3s(a, b, c),
+            Call::Normal3i(a, b, c) => self.normal3i(a, b, c),
+            Call::Normal3f(a, b, c) => self.normal3f(a, b, c),
+            Call::Normal3d(a, b, c) => self.normal3d(a, b, c),
+            Call::Normal3bv(ref a) => self.normal3bv(a),
+            Call::Normal3sv(ref a) => self.normal3sv(a),
+            Call::Normal3iv(ref a) => self.normal3iv(a),
+            Call::Normal3fv(ref a) => self.normal3fv(a),
+            Call::Normal3dv(ref a) => self.normal3dv(a),
+            Call::Color3b(a, b, c) => self.color3b(a, b, c),
+            Call::Color3s(a, b, c) => self.color3s(a, b, c),
+            Call::Color3i(a, b, c) => self.color3i(a, b, c),
+            Call::Color3f(a, b, c) => self.color3f(a, b, c),
+            Call::Color3d(a, b, c) => self.color3d(a, b, c),
+            Call::Color3ub(a, b, c) => self.color3ub(a, b, c),
+            Call::Color3us(a, b, c) => self.color3us(a, b, c),
+            Call::Color3ui(a, b, c) => self.color3ui(a, b, c),
+            Call::Color3bv(ref a) => self.color3bv(a),
+            Call::Color3sv(ref a) => self.color3sv(a),
+            Call::Color3iv(ref a) => self.color3iv(a),
+            Call::Color3fv(ref a) => self.color3fv(a),
+            Call::Color3dv(ref a) => self.color3dv(a),
+            Call::Color3ubv(ref a) => self.color3ubv(a),
+            Call::Color3usv(ref a) => self.color3usv(a),
+            Call::Color3uiv(ref a) => self.color3uiv(a),
+            Call::Color4b(a, b, c, d) => self.color4b(a, b, c, d),
+            Call::Color4s(a, b, c, d) => self.color4s(a, b, c, d),
+            Call::Color4i(a, b, c, d) => self.color4i(a, b, c, d),
+            Call::Color4f(a, b, c, d) => self.color4f(a, b, c, d),
+            Call::Color4d(a, b, c, d) => self.color4d(a, b, c, d),
+            Call::Color4ub(a, b, c, d) => self.color4ub(a, b, c, d),
+            Call::Color4us(a, b, c, d) => self.color4us(a, b, c, d),
+            Call::Color4ui(a, b, c, d) => self.color4ui(a, b, c, d),
+            Call::Color4bv(ref a) => self.color4bv(a),
+            Call::Color4sv(ref a) => self.color4sv(a),
+            Call::Color4iv(ref a) => self.color4iv(a),
+            Call::Color4fv(ref a) => self.color4fv(a),
+            Call::Color4dv(ref a) => self.color4dv(a),
+            Call::Color4ubv(ref a) => self.color4ubv(a),
+            Call::Color4usv(ref a) => self.color4usv(a),
+            Call::Color4uiv(ref a) => self.color4uiv(a),
+            Call::SecondaryColor3b(a, b, c) => self.secondary_color3b(a, b, c),
+            Call::SecondaryColor3s(a, b, c) => self.secondary_color3s(a, b, c),
+            Call::SecondaryColor3i(a, b, c) => self.secondary_color3i(a, b, c),
+            Call::SecondaryColor3f(a, b, c) => self.secondary_color3f(a, b, c),
+            Call::SecondaryColor3d(a, b, c) => self.secondary_color3d(a, b, c),
+            Call::SecondaryColor3ub(a, b, c) => self.secondary_color3ub(a, b, c),
+            Call::SecondaryColor3us(a, b, c) => self.secondary_color3us(a, b, c),
+            Call::SecondaryColor3ui(a, b, c) => self.secondary_color3ui(a, b, c),
+            Call::SecondaryColor3bv(ref a) => self.secondary_color3bv(a),
+            Call::SecondaryColor3sv(ref a) => self.secondary_color3sv(a),
+            Call::SecondaryColor3iv(ref a) => self.secondary_color3iv(a),
+            Call::SecondaryColor3fv(ref a) => self.secondary_color3fv(a),
+            Call::SecondaryColor3dv(ref a) => self.secondary_color3dv(a),
+            Call::SecondaryColor3ubv(ref a) => self.secondary_color3ubv(a),
+            Call::SecondaryColor3usv(ref a) => self.secondary_color3usv(a),
+            Call::SecondaryColor3uiv(ref a) => self.secondary_color3uiv(a),
+            Call::TexCoord1s(a) => self.tex_coord1s(a),
+            Call::TexCoord1i(a) => self.tex_coord1i(a),
+            Call::TexCoord1f(a) => self.tex_coord1f(a),
+            Call::TexCoord1d(a) => self.tex_coord1d(a),
+            Call::TexCoord2s(a, b) => self.tex_coord2s(a, b),
+            Call::TexCoord2i(a, b) => self.tex_coord2i(a, b),
+            Call::TexCoord2f(a, b) => self.tex_coord2f(a, b),
+            Call::TexCoord2d(a, b) => self.tex_coord2d(a, b),
+            Call::TexCoord3s(a, b, c) => self.tex_coord3s(a, b, c),
+            Call::TexCoord3i(a, b, c) => self.tex_coord3i(a, b, c),
+            Call::TexCoord3f(a, b, c) => self.tex_coord3f(a, b, c),
+            Call::TexCoord3d(a, b, c) => self.tex_coord3d(a, b, c),
+            Call::TexCoord4s(a, b, c, d) => self.tex_coord4s(a, b, c, d),
+            Call::TexCoord4i(a, b, c, d) => self.tex_coord4i(a, b, c, d),
+            Call::TexCoord4f(a, b, c, d) => self.tex_coord4f(a, b, c, d),
+            Call::TexCoord4d(a, b, c, d) => self.tex_coord4d(a, b, c, d),
+            Call::TexCoord1sv(ref a) => self.tex_coord1sv(a),
+            Call::TexCoord1iv(ref a) => self.tex_coord1iv(a),
+            Call::TexCoord1fv(ref a) => self.tex_coord1fv(a),
+            Call::TexCoord1dv(ref a) => self.tex_coord1dv(a),
+            Call::TexCoord2sv(ref a) => self.tex_coord2sv(a),
+            Call::TexCoord2iv(ref a) => self.tex_coord2iv(a),
+            Call::TexCoord2fv(ref a) => self.tex_coord2fv(a),
+            Call::TexCoord2dv(ref a) => self.tex_coord2dv(a),
+            Call::TexCoord3sv(ref a) => self.tex_coord3sv(a),
+            Call::TexCoord3iv(ref a) => self.tex_coord3iv(a),
+            Call::TexCoord3fv(ref a) => self.tex_coord3fv(a),
+            Call::TexCoord3dv(ref a) => self.tex_coord3dv(a),
+            Call::TexCoord4sv(ref a) => self.tex_coord4sv(a),
+            Call::TexCoord4iv(ref a) => self.tex_coord4iv(a),
+            Call::TexCoord4fv(ref a) => self.tex_coord4fv(a),
+            Call::TexCoord4dv(ref a) => self.tex_coord4dv(a),
+            Call::FogCoordf(a) => self.fog_coordf(a),
+            Call::FogCoordd(a) => self.fog_coordd(a),
+            Call::FogCoordfv(ref a) => self.fog_coordfv(a),
+            Call::FogCoorddv(ref a) => self.fog_coorddv(a),
+            Call::EdgeFlag(a) => self.edge_flag(a),
+            Call::EdgeFlagv(ref a) => self.edge_flagv(a),
+            // ---- Lighting and shading (GL 2.1 §2.14): context/lighting.rs ----
+            Call::Materialf(a, b, c) => self.materialf(a, b, c),
+            Call::Materiali(a, b, c) => self.materiali(a, b, c),
+            Call::Materialfv(a, b, ref c) => self.materialfv(a, b, c),
+            Call::Materialiv(a, b, ref c) => self.materialiv(a, b, c),
+            Call::Lightf(a, b, c) => self.lightf(a, b, c),
+            Call::Lighti(a, b, c) => self.lighti(a, b, c),
+            Call::Lightfv(a, b, ref c) => self.lightfv(a, b, c),
+            Call::Lightiv(a, b, ref c) => self.lightiv(a, b, c),
+            Call::LightModelf(a, b) => self.light_modelf(a, b),
+            Call::LightModeli(a, b) => self.light_modeli(a, b),
+            Call::LightModelfv(a, ref b) => self.light_modelfv(a, b),
+            Call::LightModeliv(a, ref b) => self.light_modeliv(a, b),
+            Call::ColorMaterial(a, b) => self.color_material(a, b),
+            Call::ShadeModel(a) => self.shade_model(a),
+            // ---- Rasterisation (GL 2.1 §3.3 to §3.5): context/raster.rs ----
+            Call::FrontFace(a) => self.front_face(a),
+            Call::CullFace(a) => self.cull_face(a),
+            Call::PolygonMode(a, b) => self.polygon_mode(a, b),
+            Call::PolygonOffset(a, b) => self.polygon_offset(a, b),
+            Call::PointSize(a) => self.point_size(a),
+            Call::LineWidth(a) => self.line_width(a),
+            // ---- Framebuffer and per-fragment control (GL 2.1 §4.1, §4.2): context/framebuffer.rs ----
+            Call::ClearColor(a, b, c, d) => self.clear_color(a, b, c, d),
+            Call::ClearDepth(a) => self.clear_depth(a),
+            Call::ClearStencil(a) => self.clear_stencil(a),
+            Call::Clear(a) => self.clear(a),
+            Call::DepthFunc(a) => self.depth_func(a),
+            Call::DepthMask(a) => self.depth_mask(a),
+            Call::ColorMask(a, b, c, d) => self.color_mask(a, b, c, d),
+            Call::Scissor(a, b, c, d) => self.scissor(a, b, c, d),
+            // ---- Hints, pixel store, flush (GL 2.1 §5.6, §3.6.1, §5.5): context/control.rs ----
+            Call::Hint(a, b) => self.hint(a, b),
+            Call::PixelStorei(a, b) => self.pixel_storei(a, b),
+            Call::PixelStoref(a, b) => self.pixel_storef(a, b),
+            Call::Flush => self.flush(),
+            Call::Finish => self.finish(),
         }
     }
 
