@@ -575,3 +575,35 @@ fn replaying_a_recording_reproduces_the_state() {
     assert_eq!(a.get_error(), gl::INVALID_VALUE);
     assert_eq!(b.get_error(), gl::INVALID_VALUE);
 }
+
+/// GL 2.1 §2.14.1: POSITION is transformed by the modelview current at the call, SPOT_DIRECTION by
+/// its upper 3x3; later modelview changes do not move them. Worked by hand: M = T(1,2,3)·Rz(90°),
+/// Rz(90°) maps (1,0,0) to (0,1,0), so the point (1,0,0,1) goes to (0,1,0)+(1,2,3) = (1,3,3,1), the
+/// direction (1,0,0,0) to (0,1,0,0), and the spot direction (1,0,0) to (0,1,0).
+#[test]
+fn light_position_and_spot_direction_are_stored_in_eye_coordinates() {
+    let mut c = ctx();
+    c.matrix_mode(gl::MODELVIEW);
+    c.translatef(1.0, 2.0, 3.0);
+    c.rotatef(90.0, 0.0, 0.0, 1.0);
+    c.lightfv(gl::LIGHT1, gl::POSITION, &[1.0, 0.0, 0.0, 1.0]);
+    c.lightfv(gl::LIGHT2, gl::POSITION, &[1.0, 0.0, 0.0, 0.0]);
+    c.lightfv(gl::LIGHT1, gl::SPOT_DIRECTION, &[1.0, 0.0, 0.0]);
+    c.load_identity();
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+
+    let mut got = [0.0f32; 4];
+    c.get_lightfv(gl::LIGHT1, gl::POSITION, &mut got);
+    assert_close(&got, &[1.0, 3.0, 3.0, 1.0]);
+    c.get_lightfv(gl::LIGHT2, gl::POSITION, &mut got);
+    assert_close(&got, &[0.0, 1.0, 0.0, 0.0]);
+    let mut dir = [0.0f32; 3];
+    c.get_lightfv(gl::LIGHT1, gl::SPOT_DIRECTION, &mut dir);
+    assert_close(&dir, &[0.0, 1.0, 0.0]);
+}
+
+fn assert_close(got: &[f32], want: &[f32]) {
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() < 1e-6, "got {got:?}, want {want:?}");
+    }
+}
