@@ -29,12 +29,16 @@ impl GlBackend {
         // passed below points to at least as many elements as the driver reads for the call.
         match *call {
             Call::Begin(mode) => {
+                // GL 2.1 §2.6.1 has ten modes; a 3.2+ compatibility driver also accepts the
+                // adjacency modes and PATCHES (0xA..=0xE), so the GL 2.1 INVALID_ENUM is raised
+                // here. Inside Begin/End the driver's INVALID_OPERATION comes first, as in GL.
+                if mode > gl::POLYGON && !self.inside_begin_end {
+                    return self.raise(gl::INVALID_ENUM);
+                }
                 self.before_begin();
                 unsafe { self.raw.Begin(mode) };
-                // The driver opened a primitive iff none was open and the mode is valid (§2.6.1).
-                if !self.inside_begin_end && mode <= gl::POLYGON {
-                    self.inside_begin_end = true;
-                }
+                // The driver opened a primitive iff none was open (the mode is valid here).
+                self.inside_begin_end = true;
             }
             Call::End => {
                 unsafe { gl.End() };
