@@ -128,8 +128,9 @@ impl Comparison {
         img
     }
 
-    /// One image `CPU | GL | DIFF`, each panel under a label bar, separated by a 4-pixel gutter.
-    /// A smaller input is drawn at the top-left of its panel.
+    /// One opaque image `CPU | GL | DIFF`, each panel under a label bar, separated by a 4-pixel
+    /// gutter; the renderings are composited over an 8-pixel checkerboard so that transparent
+    /// pixels show as such. A smaller input is drawn at the top-left of its panel.
     pub fn side_by_side(&self, cpu: &RgbaImage, gl: &RgbaImage) -> RgbaImage {
         let heat = self.heat_map();
         let label = format!("DIFF X{HEAT_GAIN}");
@@ -143,7 +144,7 @@ impl Comparison {
         for (i, (panel, text)) in panels.iter().enumerate() {
             let x0 = i as u32 * (pw + gutter);
             for (x, y, px) in panel.enumerate_pixels() {
-                out.put_pixel(x0 + x, bar + y, *px);
+                out.put_pixel(x0 + x, bar + y, over_checker(*px, x, y));
             }
             font::draw(&mut out, x0 + 2, 2, scale, text, LABEL);
         }
@@ -176,6 +177,14 @@ impl std::fmt::Display for Comparison {
 
 const GUTTER: Rgba<u8> = Rgba([40, 40, 40, 255]);
 const LABEL: Rgba<u8> = Rgba([255, 255, 255, 255]);
+
+/// `px` composited over a light checkerboard of 8-pixel squares (204 / 255 grey), opaque.
+fn over_checker(px: Rgba<u8>, x: u32, y: u32) -> Rgba<u8> {
+    let bg: u32 = if (x / 8 + y / 8) % 2 == 0 { 255 } else { 204 };
+    let a = u32::from(px.0[3]);
+    let mix = |c: u8| ((u32::from(c) * a + bg * (255 - a) + 127) / 255) as u8;
+    Rgba([mix(px.0[0]), mix(px.0[1]), mix(px.0[2]), 255])
+}
 
 /// The heat colour of a largest-channel difference `d` (see [`Comparison::heat_map`]).
 fn heat_colour(d: u8) -> Rgba<u8> {
@@ -378,6 +387,29 @@ mod tests {
         assert_eq!(*strip.get_pixel(2, 2), GUTTER);
         assert_eq!(*strip.get_pixel(3, 2), LABEL);
         assert_eq!(*strip.get_pixel(4, 2), LABEL);
+    }
+
+    #[test]
+    fn transparent_pixels_show_the_checkerboard() {
+        // Fully transparent over square (0,0) (255) and square (1,0) (204); half-transparent
+        // red (alpha 128) over 255: r = (255*128 + 255*127 + 127)/255 = 255,
+        // g = b = (255*127 + 127)/255 = 127.
+        assert_eq!(
+            over_checker(Rgba([9, 9, 9, 0]), 0, 0),
+            Rgba([255, 255, 255, 255])
+        );
+        assert_eq!(
+            over_checker(Rgba([9, 9, 9, 0]), 8, 0),
+            Rgba([204, 204, 204, 255])
+        );
+        assert_eq!(
+            over_checker(Rgba([255, 0, 0, 128]), 7, 7),
+            Rgba([255, 127, 127, 255])
+        );
+        assert_eq!(
+            over_checker(Rgba([1, 2, 3, 255]), 9, 0),
+            Rgba([1, 2, 3, 255])
+        );
     }
 
     #[test]

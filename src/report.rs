@@ -62,6 +62,9 @@ pub fn write(dir: &Path, renderers: &Renderers, results: &[SceneResult]) -> Resu
         r.comparison
             .heat_map()
             .save(dir.join(format!("{stem}-diff.png")))?;
+        r.comparison
+            .side_by_side(&r.cpu, &r.gl)
+            .save(dir.join(format!("{stem}-strip.png")))?;
     }
     let index = dir.join("index.html");
     fs::write(&index, html(renderers, results))?;
@@ -101,14 +104,16 @@ body {{ font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222
 table {{ border-collapse: collapse; }}
 td, th {{ border: 1px solid #ccc; padding: 6px; vertical-align: top; background: #fff; }}
 th {{ background: #eee; }}
-img {{ image-rendering: pixelated; max-width: 320px; border: 1px solid #888; display: block; }}
+img {{ image-rendering: pixelated; max-width: 320px; border: 1px solid #888; display: block;
+  background: repeating-conic-gradient(#ccc 0 25%, #fff 0 50%) 0 0 / 16px 16px; }}
 .pass {{ color: #080; font-weight: bold; }} .fail {{ color: #b00; font-weight: bold; }}
 .m {{ font-family: monospace; white-space: pre; font-size: 90%; }}
 </style></head><body>
 <h1>fixedgl: CPU pipeline vs real GL driver</h1>
 <p>CPU: <b>{}</b><br>GL: <b>{}</b> &mdash; {}</p>
 <p>{passed} of {} scenes within tolerance. The difference images are magnified {}x
-(black = identical; red &rarr; yellow &rarr; white as the largest channel difference grows).</p>
+(black = identical; red &rarr; yellow &rarr; white as the largest channel difference grows);
+the checkerboard shows through transparent pixels.</p>
 <table><tr><th>scene</th><th>CPU</th><th>GL</th><th>difference</th><th>metrics</th></tr>
 "#,
         esc(&renderers.cpu),
@@ -149,7 +154,7 @@ img {{ image-rendering: pixelated; max-width: 320px; border: 1px solid #888; dis
         };
         let _ = writeln!(
             s,
-            "<tr><td><b>{}</b><br><span class=\"{class}\">{verdict}</span><br><small>{}</small></td>\
+            "<tr><td><b>{}</b><br><span class=\"{class}\">{verdict}</span><br><small>{}</small><br><a href=\"{stem}-strip.png\">side by side</a></td>\
              <td><img src=\"{stem}-cpu.png\" alt=\"CPU\"></td>\
              <td><img src=\"{stem}-gl.png\" alt=\"GL\"></td>\
              <td><img src=\"{stem}-diff.png\" alt=\"difference\"></td>\
@@ -207,7 +212,12 @@ mod tests {
             index.as_deref().ok(),
             Some(dir.join("index.html").as_path())
         );
-        for f in ["same-cpu.png", "same-gl.png", "off_by-diff.png"] {
+        for f in [
+            "same-cpu.png",
+            "same-gl.png",
+            "off_by-diff.png",
+            "off_by-strip.png",
+        ] {
             assert!(dir.join(f).is_file(), "{f}");
         }
         let _ = fs::remove_dir_all(&dir);
