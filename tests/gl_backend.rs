@@ -11,6 +11,7 @@ use fixedgl::glbackend::{DeviceChoice, GlBackend};
 use fixedgl::scenes;
 use fixedgl::{Call, Context};
 use image::Rgba;
+use std::io::Write as _;
 
 /// A backend, or `None` after printing why the test is skipped.
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
@@ -20,7 +21,9 @@ fn backend(width: u32, height: u32) -> Option<GlBackend> {
             panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
         }
         Err(e) => {
-            eprintln!("SKIPPED: GL backend unavailable: {e}");
+            // Written to the stderr handle, not with eprintln!: libtest captures the macros'
+            // output of passing tests, and a skip must stay visible.
+            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
             None
         }
     }
@@ -29,7 +32,12 @@ fn backend(width: u32, height: u32) -> Option<GlBackend> {
 #[test]
 fn starts_clears_and_reads_back_top_down() {
     let Some(mut gl) = backend(8, 6) else { return };
-    eprintln!("renderer: {} | {}", gl.renderer(), gl.version());
+    let _ = writeln!(
+        std::io::stderr(),
+        "GL backend: {} | {}",
+        gl.renderer(),
+        gl.version()
+    );
     assert!(!gl.renderer().is_empty());
     // SAFETY: plain driver calls on the backend's current context.
     unsafe {
@@ -342,4 +350,34 @@ fn phong_win_without_lighting_is_plain_smooth() {
     // An invalid mode is the driver's INVALID_ENUM.
     phong.shade_model(0x1234);
     assert_eq!(phong.get_error(), gl::INVALID_ENUM);
+}
+
+#[test]
+fn two_backends_on_one_thread_stay_apart() {
+    let Some(mut a) = backend(4, 4) else { return };
+    let Some(mut b) = backend(4, 4) else { return };
+    // `b` was created last, so its context is current; `a`'s calls must still reach `a`.
+    // SAFETY: plain driver calls on each backend's own context (raw() makes it current).
+    unsafe {
+        let raw = a.raw();
+        raw.ClearColor(1.0, 0.0, 0.0, 1.0);
+        raw.Clear(gl::COLOR_BUFFER_BIT);
+    }
+    unsafe {
+        let raw = b.raw();
+        raw.ClearColor(0.0, 1.0, 0.0, 1.0);
+        raw.Clear(gl::COLOR_BUFFER_BIT);
+    }
+    a.execute(&Call::Enable(gl::LIGHTING));
+    b.execute(&Call::Enable(0x1234));
+    assert_eq!(*a.read_image().get_pixel(1, 1), Rgba([255, 0, 0, 255]));
+    assert_eq!(*b.read_image().get_pixel(1, 1), Rgba([0, 255, 0, 255]));
+    assert!(a.is_enabled(gl::LIGHTING));
+    assert!(!b.is_enabled(gl::LIGHTING));
+    assert_eq!(a.get_error(), gl::NO_ERROR);
+    assert_eq!(b.get_error(), gl::INVALID_ENUM);
+    drop(a);
+    // Dropping `a` (which made itself current to clean up) leaves `b` working.
+    b.execute(&Call::Enable(gl::BLEND));
+    assert!(b.is_enabled(gl::BLEND));
 }

@@ -19,8 +19,10 @@ mod phong;
 pub mod raw;
 mod replay;
 
+use std::cell::Cell;
 use std::ffi::CString;
 use std::marker::PhantomData;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use glow::HasContext;
 use image::RgbaImage;
@@ -30,11 +32,20 @@ use crate::{Call, Error};
 
 pub use egl::{list_devices, DeviceChoice, DeviceInfo, INSTALL_HINT};
 
+thread_local! {
+    /// The id of the backend whose context is current on this thread (0: none of ours).
+    static CURRENT: Cell<u64> = const { Cell::new(0) };
+}
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+
 /// A real GL context replaying recorded calls into an offscreen framebuffer.
 ///
 /// Not `Send`: an EGL context is current on the thread that created it, so each thread (each
-/// test) creates its own backend.
+/// test) creates its own backend. Several backends on one thread are fine: every method makes
+/// its own context current first (a thread-local check, an EGL call only on a switch).
 pub struct GlBackend {
+    /// Unique per backend, for the `CURRENT` check.
+    id: u64,
     raw: raw::Gl,
     glow: glow::Context,
     fbo: glow::Framebuffer,
@@ -144,7 +155,10 @@ impl GlBackend {
             while glow.get_error() != glow::NO_ERROR {}
             (fbo, [colour, depth], renderer, version, max_get)
         };
+        let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
+        CURRENT.with(|c| c.set(id));
         Ok(GlBackend {
+            id,
             raw,
             glow,
             fbo,
@@ -169,6 +183,16 @@ impl GlBackend {
         (self.width, self.height)
     }
 
+    /// Makes this backend's context current on the calling thread if another one is.
+    pub(crate) fn make_current(&self) {
+        if CURRENT.with(Cell::get) != self.id {
+            match self.egl._context.make_current_surfaceless() {
+                Ok(()) => CURRENT.with(|c| c.set(self.id)),
+                Err(e) => eprintln!("fixedgl: eglMakeCurrent failed: {e}"),
+            }
+        }
+    }
+
     /// The driver's `GL_RENDERER` string (e.g. "llvmpipe (LLVM 19.1.7, 256 bits)").
     pub fn renderer(&self) -> &str {
         &self.renderer
@@ -188,6 +212,7 @@ impl GlBackend {
     /// `unsafe`: the caller vouches for pointer arguments). The backend's Begin/End and
     /// `PHONG_WIN` tracking does not see such calls.
     pub fn raw(&self) -> &raw::Gl {
+        self.make_current();
         &self.raw
     }
 
@@ -202,6 +227,7 @@ impl GlBackend {
     /// then clear (GL 2.1 §2.5). Between Begin and End it is itself an INVALID_OPERATION and
     /// returns NO_ERROR, as the driver and the CPU front end do.
     pub fn get_error(&mut self) -> u32 {
+        self.make_current();
         // SAFETY: context current; no pointers.
         let driver = unsafe { self.raw.GetError() };
         if self.inside_begin_end {
@@ -217,6 +243,7 @@ impl GlBackend {
     /// Records `code` as the backend's own error unless an earlier one is pending, in the
     /// driver's flag or ours (the first error sticks).
     pub(crate) fn raise(&mut self, code: u32) {
+        self.make_current();
         if self.error != gl::NO_ERROR {
             return;
         }
@@ -233,6 +260,7 @@ impl GlBackend {
 
     /// `glIsEnabled` on the driver.
     pub fn is_enabled(&mut self, cap: u32) -> bool {
+        self.make_current();
         // SAFETY: context current; no pointers.
         unsafe { self.raw.IsEnabled(cap) != 0 }
     }
@@ -303,6 +331,7 @@ impl GlBackend {
         bits: impl Fn(T) -> u32,
         query: impl Fn(&raw::Gl, u32, *mut T),
     ) -> bool {
+        self.make_current();
         let mut scratch = [
             vec![T::default(); self.max_get_values],
             vec![T::default(); self.max_get_values],
@@ -332,6 +361,7 @@ impl GlBackend {
 
     /// `glFinish`: waits until the driver has drawn everything issued.
     pub fn finish(&mut self) {
+        self.make_current();
         // SAFETY: context current; no pointers.
         unsafe { self.raw.Finish() }
     }
@@ -339,6 +369,7 @@ impl GlBackend {
     /// The colour buffer as an image with the top row first (glReadPixels returns rows bottom-up,
     /// GL 2.1 §4.3.2). Reads with PACK_ALIGNMENT 1 from the FBO and restores the pack state.
     pub fn read_image(&mut self) -> RgbaImage {
+        self.make_current();
         let (w, h) = (self.width as usize, self.height as usize);
         let mut pixels = vec![0u8; w * h * 4];
         // SAFETY: context current; `pixels` holds exactly w*h RGBA8 texels with alignment 1.
@@ -374,6 +405,7 @@ impl GlBackend {
     /// SMOOTH on the driver and shades lit primitives per fragment with the emulation program.
     /// Anything else goes to the driver unchanged, so the driver raises the error.
     pub fn shade_model(&mut self, mode: u32) {
+        self.make_current();
         if mode != gl::PHONG_WIN || self.inside_begin_end {
             // SAFETY: context current; no pointers.
             unsafe { self.raw.ShadeModel(mode) };
@@ -415,6 +447,7 @@ impl GlBackend {
 
 impl Drop for GlBackend {
     fn drop(&mut self) {
+        self.make_current();
         // SAFETY: the objects were created on this context, which is still current here.
         unsafe {
             if let Some(p) = &self.phong_program {
@@ -426,6 +459,7 @@ impl Drop for GlBackend {
                 self.glow.delete_renderbuffer(rb);
             }
         }
+        CURRENT.with(|c| c.set(0));
     }
 }
 
@@ -435,6 +469,7 @@ impl GlBackend {
     /// and restored after (PushAttrib/PushClientAttrib, GL 2.1 §6.1.14), an unterminated Begin
     /// is closed, and the PHONG_WIN emulation is reset to its state at the start.
     pub fn replay_frame(&mut self, calls: &[Call]) {
+        self.make_current();
         let phong = self.phong;
         // SAFETY: context current; no pointers.
         unsafe {

@@ -21,6 +21,7 @@ use crate::Call;
 impl GlBackend {
     /// Sends one recorded call to the driver, exactly as the user's program would have made it.
     pub fn execute(&mut self, call: &Call) {
+        self.make_current();
         if !phong_neutral(call) {
             self.phong_dirty = true;
         }
