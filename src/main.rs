@@ -154,7 +154,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn list() -> Result<ExitCode, Error> {
+fn list() -> Result<ExitCode, CliError> {
     for s in scenes::scenes() {
         let (w, h) = s.default_size;
         println!("{:<20} {w}x{h}  {}", s.name, s.summary);
@@ -172,16 +172,47 @@ fn list() -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn find_scene(name: &str) -> Result<&'static Scene, Error> {
+/// What a command can fail with: a fixedgl error, or a bad command line.
+#[derive(Debug)]
+enum CliError {
+    Fixedgl(Error),
+    Usage(String),
+}
+
+impl std::fmt::Display for CliError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CliError::Fixedgl(e) => e.fmt(f),
+            CliError::Usage(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<Error> for CliError {
+    fn from(e: Error) -> Self {
+        CliError::Fixedgl(e)
+    }
+}
+
+impl From<image::ImageError> for CliError {
+    fn from(e: image::ImageError) -> Self {
+        CliError::Fixedgl(e.into())
+    }
+}
+
+fn find_scene(name: &str) -> Result<&'static Scene, CliError> {
     scenes::find(name).ok_or_else(|| {
         let names: Vec<&str> = scenes::scenes().iter().map(|s| s.name).collect();
-        Error::Backend(format!("no scene {name:?}; scenes: {}", names.join(", ")))
+        CliError::Usage(format!(
+            "no scene {name:?}; scenes: {} (see `fixedgl list`)",
+            names.join(", ")
+        ))
     })
 }
 
 /// The scenes named on the command line (`all` = every scene; empty = every scene if
 /// `empty_means_all`).
-fn select(names: &[String], empty_means_all: bool) -> Result<Vec<&'static Scene>, Error> {
+fn select(names: &[String], empty_means_all: bool) -> Result<Vec<&'static Scene>, CliError> {
     if (names.is_empty() && empty_means_all) || names.iter().any(|n| n == "all") {
         return Ok(scenes::scenes().iter().collect());
     }
@@ -194,7 +225,7 @@ fn render(
     size: Option<(u32, u32)>,
     output: Option<PathBuf>,
     device: &str,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, CliError> {
     let scene = find_scene(name)?;
     let (w, h) = size.unwrap_or(scene.default_size);
     let (mut ctx, calls) = scene.record(w, h)?;
@@ -213,7 +244,7 @@ fn compare_scenes(
     size: Option<(u32, u32)>,
     out: &Path,
     device: &str,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, CliError> {
     let selected = select(names, false)?;
     let mut results = Vec::new();
     let mut renderers = Renderers {
@@ -275,7 +306,7 @@ fn bench(
     size: Option<(u32, u32)>,
     frames: u32,
     device: &str,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
     println!(
         "{:<20} {:>11} {:>10} {:>10} {:>8}",
@@ -333,7 +364,7 @@ fn replay(
     (w, h): (u32, u32),
     output: Option<PathBuf>,
     device: &str,
-) -> Result<ExitCode, Error> {
+) -> Result<ExitCode, CliError> {
     let calls = load_recording(file)?;
     let img = match backend {
         Backend::Cpu => {

@@ -381,3 +381,78 @@ fn two_backends_on_one_thread_stay_apart() {
     b.execute(&Call::Enable(gl::BLEND));
     assert!(b.is_enabled(gl::BLEND));
 }
+
+/// The 64x64 quad of `lit_quad` wound clockwise (a back face), LIGHT0 directional from behind
+/// (0, 0, -1, 0), BACK diffuse green; `two_side` sets LIGHT_MODEL_TWO_SIDE.
+fn back_quad(gl: &mut GlBackend, shade: u32, two_side: bool) -> Rgba<u8> {
+    // SAFETY: each pointer points to 4 floats, what Lightfv/Materialfv read for these pnames.
+    unsafe {
+        let raw = gl.raw();
+        raw.Lightfv(gl::LIGHT0, gl::POSITION, [0.0f32, 0.0, -1.0, 0.0].as_ptr());
+        raw.Materialfv(gl::BACK, gl::DIFFUSE, [0.0f32, 1.0, 0.0, 1.0].as_ptr());
+        raw.LightModeli(gl::LIGHT_MODEL_TWO_SIDE, i32::from(two_side));
+    }
+    gl.shade_model(shade);
+    gl.replay(&[
+        Call::Enable(gl::LIGHTING),
+        Call::Enable(gl::LIGHT0),
+        Call::Normal3f(0.0, 0.0, 1.0),
+        Call::Begin(gl::QUADS),
+        Call::Vertex3f(-1.0, -1.0, 0.0),
+        Call::Vertex3f(-1.0, 1.0, 0.0),
+        Call::Vertex3f(1.0, 1.0, 0.0),
+        Call::Vertex3f(1.0, -1.0, 0.0),
+        Call::End,
+    ]);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    *gl.read_image().get_pixel(20, 40)
+}
+
+#[test]
+fn phong_win_two_sided_lighting_uses_the_back_material_and_negated_normal() {
+    // Two-sided (§2.14.1): back material, normal (0,0,-1), n.l = 1 with l = (0,0,-1):
+    // c = 0.2*0.2 (back ambient x model ambient) + (0,1,0) = (0.04, 1.04, 0.04) -> (10, 255, 10).
+    // One-sided: front material, normal (0,0,1), n.l = -1: c = 0.04 -> (10, 10, 10).
+    for (two_side, expected) in [(true, [10, 255, 10, 255]), (false, [10, 10, 10, 255])] {
+        for shade in [gl::PHONG_WIN, gl::SMOOTH] {
+            let Some(mut gl) = backend(64, 64) else {
+                return;
+            };
+            let got = back_quad(&mut gl, shade, two_side);
+            assert_eq!(got, Rgba(expected), "two_side {two_side}, shade {shade:#x}");
+        }
+    }
+}
+
+#[test]
+fn phong_win_follows_color_material() {
+    // COLOR_MATERIAL (initially AMBIENT_AND_DIFFUSE on both faces, §2.14.3) with colour
+    // (0.5, 0.2, 0.6), LIGHT0 directional along +z, normal +z: n.l = 1, so
+    // c = 0.2 * colour (model ambient x ambient) + colour = 1.2 * colour
+    //   = (0.6, 0.24, 0.72) -> (153, 61.2, 183.6) -> (153, 61, 184).
+    for shade in [gl::PHONG_WIN, gl::SMOOTH] {
+        let Some(mut gl) = backend(16, 16) else {
+            return;
+        };
+        // SAFETY: 4 floats, what Lightfv reads for POSITION.
+        unsafe {
+            gl.raw()
+                .Lightfv(gl::LIGHT0, gl::POSITION, [0.0f32, 0.0, 1.0, 0.0].as_ptr());
+        }
+        gl.shade_model(shade);
+        gl.replay(&[
+            Call::Enable(gl::LIGHTING),
+            Call::Enable(gl::LIGHT0),
+            Call::Enable(gl::COLOR_MATERIAL),
+            Call::Color4f(0.5, 0.2, 0.6, 1.0),
+            Call::Begin(gl::QUADS),
+            Call::Vertex3f(-1.0, -1.0, 0.0),
+            Call::Vertex3f(1.0, -1.0, 0.0),
+            Call::Vertex3f(1.0, 1.0, 0.0),
+            Call::Vertex3f(-1.0, 1.0, 0.0),
+            Call::End,
+        ]);
+        let px = *gl.read_image().get_pixel(8, 8);
+        assert_eq!(px, Rgba([153, 61, 184, 255]), "shade {shade:#x}");
+    }
+}

@@ -222,3 +222,89 @@ pub(crate) mod params {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::glbackend::DeviceChoice;
+    use std::io::Write as _;
+
+    fn light0_position(b: &GlBackend) -> [f32; 4] {
+        let mut p = [f32::NAN; 4];
+        // SAFETY: GetLightfv(POSITION) writes 4 floats.
+        unsafe { b.raw().GetLightfv(gl::LIGHT0, gl::POSITION, p.as_mut_ptr()) };
+        p
+    }
+
+    #[test]
+    fn short_parameter_slices_never_reach_the_driver() {
+        let mut b = match GlBackend::new(4, 4, &DeviceChoice::Auto) {
+            Ok(b) => b,
+            Err(e) => {
+                let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
+                return;
+            }
+        };
+        let lightfv = |pname: u32| {
+            move |gl: &raw::Gl, v: *const f32| unsafe { gl.Lightfv(gl::LIGHT0, pname, v) }
+        };
+        // POSITION needs 4 values: 3 is INVALID_VALUE and the initial (0,0,1,0) stays.
+        b.with_params(
+            &[5.0, 5.0, 5.0],
+            params::light(gl::POSITION),
+            false,
+            lightfv(gl::POSITION),
+        );
+        assert_eq!(b.get_error(), gl::INVALID_VALUE);
+        assert_eq!(light0_position(&b), [0.0, 0.0, 1.0, 0.0]);
+        // Enough values: applied (identity modelview, so stored as given).
+        let v = [1.0, 2.0, 3.0, 1.0];
+        b.with_params(
+            &v,
+            params::light(gl::POSITION),
+            false,
+            lightfv(gl::POSITION),
+        );
+        assert_eq!(b.get_error(), gl::NO_ERROR);
+        assert_eq!(light0_position(&b), v);
+        // An unknown pname needs nothing of ours: the driver's INVALID_ENUM.
+        b.with_params(&[], params::light(0x1234), false, lightfv(0x1234));
+        assert_eq!(b.get_error(), gl::INVALID_ENUM);
+        // Between Begin and End a command not allowed there is INVALID_OPERATION first...
+        b.execute(&Call::Begin(gl::POINTS));
+        b.with_params(
+            &[1.0],
+            params::light(gl::POSITION),
+            false,
+            lightfv(gl::POSITION),
+        );
+        b.execute(&Call::End);
+        assert_eq!(b.get_error(), gl::INVALID_OPERATION);
+        // ...while Material, allowed there, reports the short slice.
+        b.execute(&Call::Begin(gl::POINTS));
+        b.with_params(
+            &[1.0],
+            params::material(gl::DIFFUSE),
+            true,
+            |gl, v| unsafe { gl.Materialfv(gl::FRONT, gl::DIFFUSE, v) },
+        );
+        b.execute(&Call::End);
+        assert_eq!(b.get_error(), gl::INVALID_VALUE);
+        assert_eq!(light0_position(&b), v);
+    }
+
+    #[test]
+    fn parameter_counts_follow_the_state_tables() {
+        assert_eq!(params::light(gl::SPOT_DIRECTION), 3);
+        assert_eq!(params::light(gl::QUADRATIC_ATTENUATION), 1);
+        assert_eq!(params::material(gl::AMBIENT_AND_DIFFUSE), 4);
+        assert_eq!(params::material(gl::COLOR_INDEXES), 3);
+        assert_eq!(params::material(gl::POSITION), 0);
+        assert_eq!(params::light_model(gl::LIGHT_MODEL_AMBIENT), 4);
+        assert_eq!(params::fog(gl::FOG_COLOR), 4);
+        assert_eq!(params::tex_gen(gl::EYE_PLANE), 4);
+        assert_eq!(params::tex_env(gl::TEXTURE_ENV_MODE), 1);
+        assert_eq!(params::tex_parameter(gl::TEXTURE_BORDER_COLOR), 4);
+        assert_eq!(params::point_parameter(gl::POINT_DISTANCE_ATTENUATION), 3);
+    }
+}
