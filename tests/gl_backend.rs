@@ -456,3 +456,36 @@ fn phong_win_follows_color_material() {
         assert_eq!(px, Rgba([153, 61, 184, 255]), "shade {shade:#x}");
     }
 }
+
+#[test]
+fn phong_win_spot_cone_applies_to_directional_lights_as_the_driver_does() {
+    // LIGHT0 directional along +z with a 10-degree cone aimed along +x: the direction from the
+    // light, (0,0,-1), makes 90 degrees with the spot axis, outside the cone, so the light adds
+    // nothing (§2.14.1 spot_i = 0) and c = 0.2 * 0.2 = 0.04 -> 10.2 -> 10. llvmpipe's fixed
+    // function agrees (it does not exempt directional lights from the cone).
+    for shade in [gl::SMOOTH, gl::PHONG_WIN] {
+        let Some(mut gl) = backend(16, 16) else {
+            return;
+        };
+        // SAFETY: 4 / 3 floats for POSITION / SPOT_DIRECTION, 1 for Lightf.
+        unsafe {
+            let raw = gl.raw();
+            raw.Lightfv(gl::LIGHT0, gl::POSITION, [0.0f32, 0.0, 1.0, 0.0].as_ptr());
+            raw.Lightf(gl::LIGHT0, gl::SPOT_CUTOFF, 10.0);
+            raw.Lightfv(gl::LIGHT0, gl::SPOT_DIRECTION, [1.0f32, 0.0, 0.0].as_ptr());
+        }
+        gl.shade_model(shade);
+        gl.replay(&[
+            Call::Enable(gl::LIGHTING),
+            Call::Enable(gl::LIGHT0),
+            Call::Begin(gl::QUADS),
+            Call::Vertex3f(-1.0, -1.0, 0.0),
+            Call::Vertex3f(1.0, -1.0, 0.0),
+            Call::Vertex3f(1.0, 1.0, 0.0),
+            Call::Vertex3f(-1.0, 1.0, 0.0),
+            Call::End,
+        ]);
+        let px = *gl.read_image().get_pixel(8, 8);
+        assert_eq!(px, Rgba([10, 10, 10, 255]), "shade {shade:#x}");
+    }
+}
