@@ -489,3 +489,54 @@ fn phong_win_spot_cone_applies_to_directional_lights_as_the_driver_does() {
         assert_eq!(px, Rgba([10, 10, 10, 255]), "shade {shade:#x}");
     }
 }
+
+#[test]
+fn phong_win_local_viewer_and_separate_specular() {
+    // Material: ambient 0.2 (default), diffuse 0, specular 0.5, shininess 1; LIGHT0 directional
+    // along +z (specular 1). On the z = 0 plane facing +z, n.l = 1 and:
+    //  - infinite viewer: h = (0,0,1), n.h = 1: c = 0.04 + 0.5 = 0.54 -> 137.7 -> 138;
+    //  - local viewer: v = -p/|p| lies in the plane, h ~ (v + l), n.h = 1/sqrt(2) at every point:
+    //    c = 0.04 + 0.5 * 0.70711 = 0.39355 -> 100.4 -> 100.
+    // Without texturing SEPARATE_SPECULAR_COLOR sums the same values.
+    for (local, separate, expected) in [
+        (false, false, 138),
+        (true, false, 100),
+        (false, true, 138),
+        (true, true, 100),
+    ] {
+        for shade in [gl::SMOOTH, gl::PHONG_WIN] {
+            let Some(mut gl) = backend(16, 16) else {
+                return;
+            };
+            // SAFETY: 4 floats for POSITION / DIFFUSE / SPECULAR, scalars otherwise.
+            unsafe {
+                let raw = gl.raw();
+                raw.Lightfv(gl::LIGHT0, gl::POSITION, [0.0f32, 0.0, 1.0, 0.0].as_ptr());
+                raw.Materialfv(gl::FRONT, gl::DIFFUSE, [0.0f32, 0.0, 0.0, 1.0].as_ptr());
+                raw.Materialfv(gl::FRONT, gl::SPECULAR, [0.5f32, 0.5, 0.5, 1.0].as_ptr());
+                raw.Materialf(gl::FRONT, gl::SHININESS, 1.0);
+                raw.LightModeli(gl::LIGHT_MODEL_LOCAL_VIEWER, i32::from(local));
+                let control = if separate {
+                    gl::SEPARATE_SPECULAR_COLOR
+                } else {
+                    gl::SINGLE_COLOR
+                };
+                raw.LightModeli(gl::LIGHT_MODEL_COLOR_CONTROL, control as i32);
+            }
+            gl.shade_model(shade);
+            gl.replay(&[
+                Call::Enable(gl::LIGHTING),
+                Call::Enable(gl::LIGHT0),
+                Call::Begin(gl::QUADS),
+                Call::Vertex3f(-1.0, -1.0, 0.0),
+                Call::Vertex3f(1.0, -1.0, 0.0),
+                Call::Vertex3f(1.0, 1.0, 0.0),
+                Call::Vertex3f(-1.0, 1.0, 0.0),
+                Call::End,
+            ]);
+            let px = *gl.read_image().get_pixel(8, 8);
+            let what = format!("local {local}, separate {separate}, shade {shade:#x}");
+            assert_eq!(px, Rgba([expected, expected, expected, 255]), "{what}");
+        }
+    }
+}
