@@ -162,7 +162,7 @@ fn choose(choice: &DeviceChoice) -> Result<(Device, DeviceInfo), Error> {
 /// A current, surfaceless, compatibility-profile EGL context on one device.
 pub(super) struct EglContext {
     /// Kept alive (and current on this thread) for the backend's lifetime.
-    pub _context: PossiblyCurrentContext,
+    pub context: PossiblyCurrentContext,
     pub display: Display,
     pub device: DeviceInfo,
 }
@@ -226,7 +226,7 @@ pub(super) fn create(choice: &DeviceChoice) -> Result<EglContext, Error> {
         .make_current_surfaceless()
         .map_err(|e| fail(&format!("eglMakeCurrent without surfaces failed ({e})")))?;
     Ok(EglContext {
-        _context: context,
+        context,
         display,
         device: device_info,
     })

@@ -94,6 +94,9 @@ impl GlBackend {
             return Err(Error::InvalidSize { width, height });
         }
         let egl = egl::create(choice)?;
+        // The new context is current now, whatever backend was before (and should this
+        // constructor fail below, none of ours is).
+        CURRENT.with(|c| c.set(0));
         use glutin::display::GlDisplay;
         let display = &egl.display;
         let load = |name: &str| match CString::new(name) {
@@ -186,19 +189,19 @@ impl GlBackend {
     /// Makes this backend's context current on the calling thread if another one is.
     pub(crate) fn make_current(&self) {
         if CURRENT.with(Cell::get) != self.id {
-            match self.egl._context.make_current_surfaceless() {
+            match self.egl.context.make_current_surfaceless() {
                 Ok(()) => CURRENT.with(|c| c.set(self.id)),
                 Err(e) => eprintln!("fixedgl: eglMakeCurrent failed: {e}"),
             }
         }
     }
 
-    /// The driver's `GL_RENDERER` string (e.g. "llvmpipe (LLVM 19.1.7, 256 bits)").
+    /// The driver's `GL_RENDERER` string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
     pub fn renderer(&self) -> &str {
         &self.renderer
     }
 
-    /// The driver's `GL_VERSION` string (e.g. "4.5 (Compatibility Profile) Mesa 25.0.7").
+    /// The driver's `GL_VERSION` string (e.g. "4.5 (Compatibility Profile) Mesa 22.3.6").
     pub fn version(&self) -> &str {
         &self.version
     }
