@@ -254,6 +254,21 @@ fn replay_adds_nothing() {
     assert_eq!(replayed.get_error(), gl::NO_ERROR);
 }
 
+/// LIGHTING and LIGHT0 on, then the quad (-1,-1)..(1,1) at z = 0, counter-clockwise (front
+/// facing), with whatever normal and colour are current (initially (0,0,1) and white).
+fn lit_viewport_quad() -> Vec<Call> {
+    vec![
+        Call::Enable(gl::LIGHTING),
+        Call::Enable(gl::LIGHT0),
+        Call::Begin(gl::QUADS),
+        Call::Vertex3f(-1.0, -1.0, 0.0),
+        Call::Vertex3f(1.0, -1.0, 0.0),
+        Call::Vertex3f(1.0, 1.0, 0.0),
+        Call::Vertex3f(-1.0, 1.0, 0.0),
+        Call::End,
+    ]
+}
+
 /// A 64x64 quad filling the viewport at z = 0 (identity matrices), normal +z, lit by LIGHT0 at
 /// eye position (0, 0, 1, 1) with white diffuse and no ambient or specular; default material
 /// (ambient 0.2, diffuse 0.8) and light-model ambient 0.2.
@@ -265,17 +280,7 @@ fn lit_quad(gl: &mut GlBackend, shade: u32) {
         raw.Lightfv(gl::LIGHT0, gl::SPECULAR, [0.0f32, 0.0, 0.0, 1.0].as_ptr());
     }
     gl.shade_model(shade);
-    gl.replay(&[
-        Call::Enable(gl::LIGHTING),
-        Call::Enable(gl::LIGHT0),
-        Call::Normal3f(0.0, 0.0, 1.0),
-        Call::Begin(gl::QUADS),
-        Call::Vertex3f(-1.0, -1.0, 0.0),
-        Call::Vertex3f(1.0, -1.0, 0.0),
-        Call::Vertex3f(1.0, 1.0, 0.0),
-        Call::Vertex3f(-1.0, 1.0, 0.0),
-        Call::End,
-    ]);
+    gl.replay(&lit_viewport_quad());
     gl.finish();
 }
 
@@ -441,17 +446,10 @@ fn phong_win_follows_color_material() {
         }
         gl.shade_model(shade);
         gl.replay(&[
-            Call::Enable(gl::LIGHTING),
-            Call::Enable(gl::LIGHT0),
             Call::Enable(gl::COLOR_MATERIAL),
             Call::Color4f(0.5, 0.2, 0.6, 1.0),
-            Call::Begin(gl::QUADS),
-            Call::Vertex3f(-1.0, -1.0, 0.0),
-            Call::Vertex3f(1.0, -1.0, 0.0),
-            Call::Vertex3f(1.0, 1.0, 0.0),
-            Call::Vertex3f(-1.0, 1.0, 0.0),
-            Call::End,
         ]);
+        gl.replay(&lit_viewport_quad());
         let px = *gl.read_image().get_pixel(8, 8);
         assert_eq!(px, Rgba([153, 61, 184, 255]), "shade {shade:#x}");
     }
@@ -475,16 +473,7 @@ fn phong_win_spot_cone_applies_to_directional_lights_as_the_driver_does() {
             raw.Lightfv(gl::LIGHT0, gl::SPOT_DIRECTION, [1.0f32, 0.0, 0.0].as_ptr());
         }
         gl.shade_model(shade);
-        gl.replay(&[
-            Call::Enable(gl::LIGHTING),
-            Call::Enable(gl::LIGHT0),
-            Call::Begin(gl::QUADS),
-            Call::Vertex3f(-1.0, -1.0, 0.0),
-            Call::Vertex3f(1.0, -1.0, 0.0),
-            Call::Vertex3f(1.0, 1.0, 0.0),
-            Call::Vertex3f(-1.0, 1.0, 0.0),
-            Call::End,
-        ]);
+        gl.replay(&lit_viewport_quad());
         let px = *gl.read_image().get_pixel(8, 8);
         assert_eq!(px, Rgba([10, 10, 10, 255]), "shade {shade:#x}");
     }
@@ -524,16 +513,7 @@ fn phong_win_local_viewer_and_separate_specular() {
                 raw.LightModeli(gl::LIGHT_MODEL_COLOR_CONTROL, control as i32);
             }
             gl.shade_model(shade);
-            gl.replay(&[
-                Call::Enable(gl::LIGHTING),
-                Call::Enable(gl::LIGHT0),
-                Call::Begin(gl::QUADS),
-                Call::Vertex3f(-1.0, -1.0, 0.0),
-                Call::Vertex3f(1.0, -1.0, 0.0),
-                Call::Vertex3f(1.0, 1.0, 0.0),
-                Call::Vertex3f(-1.0, 1.0, 0.0),
-                Call::End,
-            ]);
+            gl.replay(&lit_viewport_quad());
             let px = *gl.read_image().get_pixel(8, 8);
             let what = format!("local {local}, separate {separate}, shade {shade:#x}");
             assert_eq!(px, Rgba([expected, expected, expected, 255]), "{what}");

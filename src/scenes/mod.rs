@@ -116,10 +116,10 @@ mod tests {
 
     #[test]
     fn triangle_records_its_calls() {
-        let scene = find("triangle").map(|s| s.record(8, 8));
-        let Some(Ok((_, calls))) = scene else {
-            panic!("triangle scene missing or failed");
-        };
+        let calls = find("triangle")
+            .and_then(|s| s.record(8, 8).ok())
+            .map(|(_, calls)| calls)
+            .unwrap_or_default();
         assert_eq!(calls.len(), 8);
         assert_eq!(calls.first(), Some(&Call::Begin(gl::TRIANGLES)));
         assert_eq!(calls.get(2), Some(&Call::Vertex3f(-0.8, -0.8, 0.0)));
