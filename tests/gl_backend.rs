@@ -520,3 +520,38 @@ fn phong_win_local_viewer_and_separate_specular() {
         }
     }
 }
+
+#[test]
+fn implementation_limits_agree_with_the_cpu_state() {
+    // Known divergences, left to the state's owner: llvmpipe reports MAX_CLIP_PLANES 8 (state: 6)
+    // and MAX_TEXTURE_UNITS 8 (state: 4); on the FBO, DRAW_BUFFER/READ_BUFFER are
+    // COLOR_ATTACHMENT0 and DOUBLEBUFFER is false.
+    use fixedgl::state;
+    let Some(mut gl) = backend(8, 8) else { return };
+    for (pname, expected) in [
+        (gl::MAX_LIGHTS, state::MAX_LIGHTS as i32),
+        (
+            gl::MAX_MODELVIEW_STACK_DEPTH,
+            state::MAX_MODELVIEW_STACK_DEPTH as i32,
+        ),
+        (
+            gl::MAX_PROJECTION_STACK_DEPTH,
+            state::MAX_PROJECTION_STACK_DEPTH as i32,
+        ),
+        (
+            gl::MAX_TEXTURE_STACK_DEPTH,
+            state::MAX_TEXTURE_STACK_DEPTH as i32,
+        ),
+        (gl::MAX_VIEWPORT_DIMS, state::MAX_VIEWPORT_DIM as i32),
+        (gl::SUBPIXEL_BITS, 8), // DESIGN.md: window coordinates snap to 1/256 pixel
+        (gl::RED_BITS, 8),
+        (gl::ALPHA_BITS, 8),
+        (gl::DEPTH_BITS, 24),
+        (gl::STENCIL_BITS, 8),
+    ] {
+        let mut v = [0i32; 2];
+        gl.get_integerv(pname, &mut v);
+        assert_eq!(v[0], expected, "pname {pname:#x}");
+    }
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+}
