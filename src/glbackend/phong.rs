@@ -10,6 +10,12 @@
 //! the driver just before a Begin when a state change may have touched them, so the emulation
 //! follows the driver's state exactly, whatever call (Enable, LightModel, PopAttrib...) set it.
 //! With LIGHTING disabled the program is unbound: PHONG_WIN without lighting is plain SMOOTH.
+//!
+//! What the program does not do (while it is bound, a fragment shader replaces these fixed-function
+//! stages, GL 2.1 §3.11): texturing, colour sum with a texture, and fog. The interpolated normal is
+//! always renormalised per fragment, i.e. NORMALIZE/RESCALE_NORMAL make no difference. User clip
+//! planes work (`gl_ClipVertex`), as do all per-fragment operations after the shader (alpha, stencil
+//! and depth tests, blending).
 
 use glow::HasContext;
 
