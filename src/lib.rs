@@ -27,3 +27,10 @@ pub mod recording;
 pub use call::Call;
 pub use context::Context;
 pub use error::Error;
+
+// ---- gl-backend branch: compare, report, scenes, real-GL backend ----
+pub mod compare;
+#[cfg(feature = "gl")]
+pub mod glbackend;
+pub mod report;
+pub mod scenes;

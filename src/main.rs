@@ -1,1 +1,476 @@
-fn main() {}
+//! `fixedgl`: list, render, compare and benchmark the registered scenes on the CPU pipeline and
+//! on a real GL driver, and replay recording files.
+//!
+//! Design decision: every GL-side step goes through the small `gl_side` module, which is the real
+//! backend with the `gl` feature and a clear "built without GL" error without it, so the rest of
+//! the CLI is the same in both builds.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use image::RgbaImage;
+
+use fixedgl::compare::compare;
+use fixedgl::report::{self, Renderers, SceneResult};
+use fixedgl::scenes::{self, cpu_image, Scene};
+use fixedgl::{Call, Context, Error};
+
+/// The OpenGL 1.x fixed-function pipeline on the CPU, compared with a real driver.
+#[derive(Parser, Debug)]
+#[command(name = "fixedgl", version, about)]
+struct Cli {
+    /// EGL device for the GL backend: `auto` (Mesa's software device if present), an index, or a
+    /// name substring (see `fixedgl list`).
+    #[arg(long, global = true, default_value = "auto")]
+    device: String,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// List the scenes (and the EGL devices, with the `gl` feature).
+    List,
+    /// Render one scene to a PNG.
+    Render {
+        /// Scene name.
+        scene: String,
+        /// Which pipeline renders it.
+        #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+        backend: Backend,
+        /// Framebuffer size WxH (default: the scene's).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Output file (default: <scene>-<backend>.png).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Render scenes on both pipelines, print the metrics and write an HTML report; exits
+    /// non-zero if a scene exceeds its tolerance.
+    Compare {
+        /// Scene names, or `all`.
+        #[arg(required = true)]
+        scenes: Vec<String>,
+        /// Framebuffer size WxH for every scene (default: each scene's).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Report folder.
+        #[arg(long, default_value = "report")]
+        out: PathBuf,
+    },
+    /// Median milliseconds per frame on the CPU and GL pipelines, measured interleaved.
+    Bench {
+        /// Scene names (default: all).
+        scenes: Vec<String>,
+        /// Framebuffer size WxH (default: each scene's).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Frames measured per backend (after one warm-up frame).
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+        frames: u32,
+    },
+    /// Replay a recording file on one pipeline and write the image.
+    Replay {
+        /// The recording.
+        file: PathBuf,
+        /// Which pipeline replays it.
+        #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+        backend: Backend,
+        /// Framebuffer size WxH.
+        #[arg(long, value_parser = parse_size, default_value = "256x256")]
+        size: (u32, u32),
+        /// Output file (default: <file stem>-<backend>.png).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Backend {
+    /// fixedgl's CPU pipeline.
+    Cpu,
+    /// The real driver through EGL.
+    Gl,
+}
+
+impl Backend {
+    fn name(self) -> &'static str {
+        match self {
+            Backend::Cpu => "cpu",
+            Backend::Gl => "gl",
+        }
+    }
+}
+
+/// `WxH` with both sides in 1..=16384.
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("size must be WxH, e.g. 256x256, not {s:?}"))?;
+    let side = |v: &str| -> Result<u32, String> {
+        match v.trim().parse::<u32>() {
+            Ok(n) if (1..=fixedgl::state::MAX_VIEWPORT_DIM).contains(&n) => Ok(n),
+            _ => Err(format!(
+                "each side must be 1..={}, got {v:?}",
+                fixedgl::state::MAX_VIEWPORT_DIM
+            )),
+        }
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let device = cli.device.as_str();
+    let result = match cli.command {
+        Command::List => list(),
+        Command::Render {
+            scene,
+            backend,
+            size,
+            output,
+        } => render(&scene, backend, size, output, device),
+        Command::Compare { scenes, size, out } => compare_scenes(&scenes, size, &out, device),
+        Command::Bench {
+            scenes,
+            size,
+            frames,
+        } => bench(&scenes, size, frames, device),
+        Command::Replay {
+            file,
+            backend,
+            size,
+            output,
+        } => replay(&file, backend, size, output, device),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("fixedgl: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn list() -> Result<ExitCode, CliError> {
+    for s in scenes::scenes() {
+        let (w, h) = s.default_size;
+        println!("{:<20} {w}x{h}  {}", s.name, s.summary);
+    }
+    match gl_side::devices() {
+        Ok(devices) if devices.is_empty() => println!("\nEGL devices: none"),
+        Ok(devices) => {
+            println!("\nEGL devices (--device):");
+            for d in devices {
+                println!("  {d}");
+            }
+        }
+        Err(e) => println!("\nEGL devices: unavailable ({e})"),
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// What a command can fail with: a fixedgl error, or a bad command line.
+#[derive(Debug)]
+enum CliError {
+    Fixedgl(Error),
+    Usage(String),
+}
+
+impl std::fmt::Display for CliError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CliError::Fixedgl(e) => e.fmt(f),
+            CliError::Usage(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<Error> for CliError {
+    fn from(e: Error) -> Self {
+        CliError::Fixedgl(e)
+    }
+}
+
+impl From<image::ImageError> for CliError {
+    fn from(e: image::ImageError) -> Self {
+        CliError::Fixedgl(e.into())
+    }
+}
+
+fn find_scene(name: &str) -> Result<&'static Scene, CliError> {
+    scenes::find(name).ok_or_else(|| {
+        let names: Vec<&str> = scenes::scenes().iter().map(|s| s.name).collect();
+        CliError::Usage(format!(
+            "no scene {name:?}; scenes: {} (see `fixedgl list`)",
+            names.join(", ")
+        ))
+    })
+}
+
+/// The scenes named on the command line (`all` = every scene; empty = every scene if
+/// `empty_means_all`).
+fn select(names: &[String], empty_means_all: bool) -> Result<Vec<&'static Scene>, CliError> {
+    if (names.is_empty() && empty_means_all) || names.iter().any(|n| n == "all") {
+        return Ok(scenes::scenes().iter().collect());
+    }
+    names.iter().map(|n| find_scene(n)).collect()
+}
+
+fn render(
+    name: &str,
+    backend: Backend,
+    size: Option<(u32, u32)>,
+    output: Option<PathBuf>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    let scene = find_scene(name)?;
+    let (w, h) = size.unwrap_or(scene.default_size);
+    let (mut ctx, calls) = scene.record(w, h)?;
+    let img = match backend {
+        Backend::Cpu => cpu_image(&mut ctx),
+        Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
+    };
+    let out = output.unwrap_or_else(|| PathBuf::from(format!("{name}-{}.png", backend.name())));
+    img.save(&out)?;
+    println!("{}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+fn compare_scenes(
+    names: &[String],
+    size: Option<(u32, u32)>,
+    out: &Path,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    let selected = select(names, false)?;
+    let mut results = Vec::new();
+    let mut renderers = Renderers {
+        cpu: format!("fixedgl {} (CPU)", env!("CARGO_PKG_VERSION")),
+        ..Renderers::default()
+    };
+    let progress = selected.len() > 3;
+    for (i, scene) in selected.iter().enumerate() {
+        if progress {
+            eprintln!("[{}/{}] {}", i + 1, selected.len(), scene.name);
+        }
+        let (w, h) = size.unwrap_or(scene.default_size);
+        let (mut ctx, calls) = scene.record(w, h)?;
+        let cpu = cpu_image(&mut ctx);
+        let (gl, info) = gl_side::render(&calls, w, h, device)?;
+        renderers.gl = info.0;
+        renderers.gl_version = info.1;
+        let comparison = compare(&cpu, &gl, scene.tolerance.channel);
+        let result = SceneResult {
+            name: scene.name.to_owned(),
+            summary: scene.summary.to_owned(),
+            tolerance: scene.tolerance,
+            comparison,
+            cpu,
+            gl,
+        };
+        println!(
+            "{:<20} {} {}",
+            scene.name,
+            if result.passed() { "PASS" } else { "FAIL" },
+            result.comparison
+        );
+        results.push(result);
+    }
+    let index = report::write(out, &renderers, &results)?;
+    println!("report: {}", index.display());
+    let failed = results.iter().filter(|r| !r.passed()).count();
+    if failed > 0 {
+        eprintln!(
+            "{failed} of {} scenes exceed their tolerance",
+            results.len()
+        );
+        return Ok(ExitCode::FAILURE);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn median_ms(times: &mut [f64]) -> f64 {
+    times.sort_by(f64::total_cmp);
+    match times.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => times[n / 2],
+        n => (times[n / 2 - 1] + times[n / 2]) / 2.0,
+    }
+}
+
+fn bench(
+    names: &[String],
+    size: Option<(u32, u32)>,
+    frames: u32,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    let selected = select(names, true)?;
+    println!(
+        "{:<20} {:>11} {:>10} {:>10} {:>8}",
+        "scene", "size", "cpu ms", "gl ms", "cpu/gl"
+    );
+    for scene in selected {
+        let (w, h) = size.unwrap_or(scene.default_size);
+        let (_, calls) = scene.record(w, h)?;
+        let mut gl = gl_side::Bench::new(w, h, device)?;
+        let cpu_frame = || -> Result<f64, Error> {
+            let start = Instant::now();
+            let mut ctx = Context::new(w, h)?;
+            ctx.replay(&calls);
+            let img = cpu_image(&mut ctx);
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            drop(img);
+            Ok(ms)
+        };
+        // One warm-up frame each (shader compilation, first-touch allocation), then interleaved.
+        cpu_frame()?;
+        gl.frame(&calls);
+        let mut cpu_times = Vec::new();
+        let mut gl_times = Vec::new();
+        for _ in 0..frames {
+            cpu_times.push(cpu_frame()?);
+            gl_times.push(gl.frame(&calls));
+        }
+        let (c, g) = (median_ms(&mut cpu_times), median_ms(&mut gl_times));
+        println!(
+            "{:<20} {:>11} {:>10.3} {:>10.3} {:>8.2}",
+            scene.name,
+            format!("{w}x{h}"),
+            c,
+            g,
+            c / g
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Reads a recording file. Placeholder until `fixedgl::recording::load(path)` lands (another
+/// engineer's format): reads a RON list of `Call`s. Switch the body to
+/// `fixedgl::recording::load(path)` then.
+fn load_recording(path: &Path) -> Result<Vec<Call>, Error> {
+    let text = std::fs::read_to_string(path)?;
+    ron::from_str(&text).map_err(|e| Error::Parse {
+        line: e.span.start.line,
+        message: e.code.to_string(),
+    })
+}
+
+fn replay(
+    file: &Path,
+    backend: Backend,
+    (w, h): (u32, u32),
+    output: Option<PathBuf>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    let calls = load_recording(file)?;
+    let img = match backend {
+        Backend::Cpu => {
+            let mut ctx = Context::new(w, h)?;
+            ctx.replay(&calls);
+            cpu_image(&mut ctx)
+        }
+        Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
+    };
+    let stem = file
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("replay");
+    let out = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-{}.png", backend.name())));
+    img.save(&out)?;
+    println!("{}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The GL side of every command: the real backend with the `gl` feature.
+#[cfg(feature = "gl")]
+mod gl_side {
+    use super::*;
+    use fixedgl::glbackend::{list_devices, DeviceChoice, DeviceInfo, GlBackend};
+
+    fn backend(w: u32, h: u32, device: &str) -> Result<GlBackend, Error> {
+        let choice: DeviceChoice = device.parse().unwrap_or_default();
+        GlBackend::new(w, h, &choice)
+    }
+
+    /// The EGL devices.
+    pub fn devices() -> Result<Vec<DeviceInfo>, Error> {
+        list_devices()
+    }
+
+    /// `calls` replayed on a fresh backend: the image and (GL_RENDERER, GL_VERSION).
+    pub fn render(
+        calls: &[Call],
+        w: u32,
+        h: u32,
+        device: &str,
+    ) -> Result<(RgbaImage, (String, String)), Error> {
+        let mut gl = backend(w, h, device)?;
+        gl.replay(calls);
+        gl.finish();
+        let info = (gl.renderer().to_owned(), gl.version().to_owned());
+        Ok((gl.read_image(), info))
+    }
+
+    /// One backend reused across benchmark frames.
+    pub struct Bench(GlBackend);
+
+    impl Bench {
+        pub fn new(w: u32, h: u32, device: &str) -> Result<Self, Error> {
+            Ok(Bench(backend(w, h, device)?))
+        }
+
+        /// Milliseconds for one frame: the calls replayed from the initial state, up to
+        /// glFinish.
+        pub fn frame(&mut self, calls: &[Call]) -> f64 {
+            let start = Instant::now();
+            self.0.replay_frame(calls);
+            self.0.finish();
+            start.elapsed().as_secs_f64() * 1e3
+        }
+    }
+}
+
+/// Without the `gl` feature every GL-side step is a clear error.
+#[cfg(not(feature = "gl"))]
+mod gl_side {
+    use super::*;
+
+    fn unavailable() -> Error {
+        Error::Backend(
+            "this fixedgl was built without the `gl` feature; rebuild with default features \
+             (cargo build --features gl) for the real-GL backend"
+                .into(),
+        )
+    }
+
+    /// No devices without the backend.
+    pub fn devices() -> Result<Vec<String>, Error> {
+        Err(unavailable())
+    }
+
+    /// Always an error.
+    pub fn render(
+        _calls: &[Call],
+        _w: u32,
+        _h: u32,
+        _device: &str,
+    ) -> Result<(RgbaImage, (String, String)), Error> {
+        Err(unavailable())
+    }
+
+    /// Never constructed.
+    pub struct Bench;
+
+    impl Bench {
+        pub fn new(_w: u32, _h: u32, _device: &str) -> Result<Self, Error> {
+            Err(unavailable())
+        }
+
+        pub fn frame(&mut self, _calls: &[Call]) -> f64 {
+            f64::NAN
+        }
+    }
+}

@@ -1,0 +1,506 @@
+//! The real-GL backend: replays a recorded [`Call`] stream on a driver's own fixed-function
+//! pipeline (a GL 2.1+ compatibility-profile context on an EGL device, no window), renders into
+//! an FBO (RGBA8 colour, DEPTH24_STENCIL8) and reads the pixels back for [`crate::compare`].
+//!
+//! Every `Call` variant is the GL function of the same name with the same arguments (GL 2.1
+//! §2.5's command set), so the replay in `replay.rs` is one exhaustive match, one driver call per
+//! arm. Entry points come from bindings generated at build time (gl_generator, `build.rs`) and
+//! loaded through EGL's `get_proc_address`; glow serves the modern parts (FBO, GLSL, read-back).
+//!
+//! Design decision: the backend never lets a caller's bad slice reach the driver. Where the CPU
+//! front end records INVALID_VALUE for a slice shorter than its pname needs, the backend records
+//! the same error in its own sticky flag instead of calling the driver, and merges that flag with
+//! the driver's so that [`GlBackend::get_error`] answers exactly as one GL error flag would
+//! (GL 2.1 §2.5: the first error sticks until read). `PHONG_WIN`, which no driver implements, is
+//! emulated by a GLSL program (`phong.rs`).
+
+mod egl;
+mod phong;
+pub mod raw;
+mod replay;
+
+use std::cell::Cell;
+use std::ffi::CString;
+use std::marker::PhantomData;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use glow::HasContext;
+use image::RgbaImage;
+
+use crate::gl;
+use crate::{Call, Error};
+
+pub use egl::{list_devices, DeviceChoice, DeviceInfo, INSTALL_HINT};
+
+thread_local! {
+    /// The id of the backend whose context is current on this thread (0: none of ours).
+    static CURRENT: Cell<u64> = const { Cell::new(0) };
+}
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+
+/// A real GL context replaying recorded calls into an offscreen framebuffer.
+///
+/// Not `Send`: an EGL context is current on the thread that created it, so each thread (each
+/// test) creates its own backend. Several backends on one thread are fine: every method makes
+/// its own context current first (a thread-local check, an EGL call only on a switch).
+pub struct GlBackend {
+    /// Unique per backend, for the `CURRENT` check.
+    id: u64,
+    raw: raw::Gl,
+    glow: glow::Context,
+    fbo: glow::Framebuffer,
+    renderbuffers: [glow::Renderbuffer; 2],
+    width: u32,
+    height: u32,
+    /// The backend's own sticky error (a slice too short), merged with the driver's flag.
+    error: u32,
+    /// A Begin is open (mirrors the front end's Begin/End phase, GL 2.1 §2.6.3).
+    inside_begin_end: bool,
+    /// `ShadeModel(PHONG_WIN)` is in effect (the driver itself is in SMOOTH).
+    phong: bool,
+    /// A call since the last Begin may have changed what the Phong program depends on.
+    phong_dirty: bool,
+    phong_program: Option<phong::PhongProgram>,
+    /// Values a `get_*` may write at most (GL 2.1 §6.1.2; COMPRESSED_TEXTURE_FORMATS is the long one).
+    max_get_values: usize,
+    renderer: String,
+    version: String,
+    egl: egl::EglContext,
+    _not_send: PhantomData<*const ()>,
+}
+
+impl std::fmt::Debug for GlBackend {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("GlBackend")
+            .field("size", &(self.width, self.height))
+            .field("renderer", &self.renderer)
+            .field("version", &self.version)
+            .field("device", &self.egl.device)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Largest framebuffer side accepted (as [`crate::Context::new`]).
+const MAX_SIDE: u32 = crate::state::MAX_VIEWPORT_DIM;
+
+impl GlBackend {
+    /// A `width` x `height` offscreen framebuffer on the device `choice` selects, in GL's initial
+    /// state, with the viewport and scissor box covering it (as a window of that size would).
+    ///
+    /// Errors: no libEGL, no EGL device, no compatibility context, an incomplete FBO — each
+    /// message says which, and what to install.
+    pub fn new(width: u32, height: u32, choice: &DeviceChoice) -> Result<GlBackend, Error> {
+        if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
+            return Err(Error::InvalidSize { width, height });
+        }
+        let egl = egl::create(choice)?;
+        // The new context is current now, whatever backend was before (and should this
+        // constructor fail below, none of ours is).
+        CURRENT.with(|c| c.set(0));
+        use glutin::display::GlDisplay;
+        let display = &egl.display;
+        let load = |name: &str| match CString::new(name) {
+            Ok(c) => display.get_proc_address(&c),
+            Err(_) => std::ptr::null(),
+        };
+        let raw = raw::Gl::load_with(load);
+        if !raw.Begin.is_loaded() || !raw.Lightfv.is_loaded() {
+            return Err(Error::Backend(format!(
+                "the driver on {} exports no fixed-function entry points (glBegin, glLightfv)",
+                egl.device
+            )));
+        }
+        // SAFETY: the context is current on this thread and the loader resolves its entry points.
+        let glow =
+            unsafe { glow::Context::from_loader_function_cstr(|c| display.get_proc_address(c)) };
+        // SAFETY: context current; sizes validated above; every object is created here.
+        let (fbo, renderbuffers, renderer, version, max_get_values) = unsafe {
+            let renderer = glow.get_parameter_string(glow::RENDERER);
+            let version = glow.get_parameter_string(glow::VERSION);
+            let fbo = glow.create_framebuffer().map_err(Error::Backend)?;
+            let colour = glow.create_renderbuffer().map_err(Error::Backend)?;
+            let depth = glow.create_renderbuffer().map_err(Error::Backend)?;
+            let (w, h) = (width as i32, height as i32);
+            glow.bind_renderbuffer(glow::RENDERBUFFER, Some(colour));
+            glow.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
+            glow.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
+            glow.renderbuffer_storage(glow::RENDERBUFFER, glow::DEPTH24_STENCIL8, w, h);
+            glow.bind_renderbuffer(glow::RENDERBUFFER, None);
+            glow.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            glow.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::COLOR_ATTACHMENT0,
+                glow::RENDERBUFFER,
+                Some(colour),
+            );
+            glow.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::DEPTH_STENCIL_ATTACHMENT,
+                glow::RENDERBUFFER,
+                Some(depth),
+            );
+            let status = glow.check_framebuffer_status(glow::FRAMEBUFFER);
+            if status != glow::FRAMEBUFFER_COMPLETE {
+                return Err(Error::Backend(format!(
+                    "the RGBA8 + DEPTH24_STENCIL8 framebuffer is incomplete (status {status:#x}) \
+                     on {renderer}"
+                )));
+            }
+            // A window's initial viewport and scissor box are its size (GL 2.1 §2.11.1, §4.1.2);
+            // a surfaceless context starts at 0x0.
+            glow.viewport(0, 0, w, h);
+            glow.scissor(0, 0, w, h);
+            glow.clear_color(0.0, 0.0, 0.0, 0.0);
+            glow.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT);
+            let formats = glow.get_parameter_i32(glow::NUM_COMPRESSED_TEXTURE_FORMATS);
+            let max_get = (formats.max(0) as usize).clamp(16, 4096);
+            // Setup leaves no error behind: the stream starts with a clear flag.
+            while glow.get_error() != glow::NO_ERROR {}
+            (fbo, [colour, depth], renderer, version, max_get)
+        };
+        let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
+        CURRENT.with(|c| c.set(id));
+        Ok(GlBackend {
+            id,
+            raw,
+            glow,
+            fbo,
+            renderbuffers,
+            width,
+            height,
+            error: gl::NO_ERROR,
+            inside_begin_end: false,
+            phong: false,
+            phong_dirty: true,
+            phong_program: None,
+            max_get_values,
+            renderer,
+            version,
+            egl,
+            _not_send: PhantomData,
+        })
+    }
+
+    /// Framebuffer width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// Makes this backend's context current on the calling thread if another one is.
+    pub(crate) fn make_current(&self) {
+        if CURRENT.with(Cell::get) != self.id {
+            match self.egl.context.make_current_surfaceless() {
+                Ok(()) => CURRENT.with(|c| c.set(self.id)),
+                Err(e) => eprintln!("fixedgl: eglMakeCurrent failed: {e}"),
+            }
+        }
+    }
+
+    /// The driver's `GL_RENDERER` string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+    pub fn renderer(&self) -> &str {
+        &self.renderer
+    }
+
+    /// The driver's `GL_VERSION` string (e.g. "4.5 (Compatibility Profile) Mesa 22.3.6").
+    pub fn version(&self) -> &str {
+        &self.version
+    }
+
+    /// The EGL device the backend runs on.
+    pub fn device(&self) -> &DeviceInfo {
+        &self.egl.device
+    }
+
+    /// The generated driver entry points, for calling the driver directly (every one is
+    /// `unsafe`: the caller vouches for pointer arguments). The backend's Begin/End and
+    /// `PHONG_WIN` tracking does not see such calls.
+    pub fn raw(&self) -> &raw::Gl {
+        self.make_current();
+        &self.raw
+    }
+
+    /// Executes `calls` in order (see [`GlBackend::execute`]).
+    pub fn replay(&mut self, calls: &[Call]) {
+        for call in calls {
+            self.execute(call);
+        }
+    }
+
+    /// `glGetError` with the backend's own errors merged in: the first error since the last read,
+    /// then clear (GL 2.1 §2.5). Between Begin and End it is itself an INVALID_OPERATION and
+    /// returns NO_ERROR, as the driver and the CPU front end do.
+    pub fn get_error(&mut self) -> u32 {
+        self.make_current();
+        // SAFETY: context current; no pointers.
+        let driver = unsafe { self.raw.GetError() };
+        if self.inside_begin_end {
+            return driver;
+        }
+        if self.error != gl::NO_ERROR {
+            // Ours came first; one GL flag would have dropped whatever the driver holds.
+            return std::mem::replace(&mut self.error, gl::NO_ERROR);
+        }
+        driver
+    }
+
+    /// Records `code` as the backend's own error unless an earlier one is pending, in the
+    /// driver's flag or ours (the first error sticks).
+    pub(crate) fn raise(&mut self, code: u32) {
+        self.make_current();
+        if self.error != gl::NO_ERROR {
+            return;
+        }
+        if !self.inside_begin_end {
+            // SAFETY: context current; outside Begin/End glGetError is a plain read.
+            let pending = unsafe { self.raw.GetError() };
+            if pending != gl::NO_ERROR {
+                self.error = pending;
+                return;
+            }
+        }
+        self.error = code;
+    }
+
+    /// `glIsEnabled` on the driver.
+    pub fn is_enabled(&mut self, cap: u32) -> bool {
+        self.make_current();
+        // SAFETY: context current; no pointers.
+        unsafe { self.raw.IsEnabled(cap) != 0 }
+    }
+
+    /// `glGetFloatv`: writes the pname's values to the front of `out`. An `out` shorter than the
+    /// pname's value count is INVALID_VALUE with nothing written (as the CPU front end).
+    /// SHADE_MODEL reports PHONG_WIN while it is emulated.
+    pub fn get_floatv(&mut self, pname: u32, out: &mut [f32]) {
+        let sentinels = [f32::from_bits(0x7fc1_2345), f32::from_bits(0x7fd5_4321)];
+        // SAFETY (closure): the buffer has `max_get_values` slots, the most any pname writes.
+        let written = self.get_into(pname, out, sentinels, f32::to_bits, |gl, p, v| unsafe {
+            gl.GetFloatv(p, v)
+        });
+        if let (true, Some(first)) = (
+            written && pname == gl::SHADE_MODEL && self.phong,
+            out.first_mut(),
+        ) {
+            *first = gl::PHONG_WIN as f32;
+        }
+    }
+
+    /// `glGetIntegerv` (slice rule and SHADE_MODEL as [`GlBackend::get_floatv`]).
+    pub fn get_integerv(&mut self, pname: u32, out: &mut [i32]) {
+        let sentinels = [0x5a5a_1234, -0x2345_6789];
+        // SAFETY (closure): as in `get_floatv`.
+        let written = self.get_into(
+            pname,
+            out,
+            sentinels,
+            |v| v as u32,
+            |gl, p, v| unsafe { gl.GetIntegerv(p, v) },
+        );
+        if let (true, Some(first)) = (
+            written && pname == gl::SHADE_MODEL && self.phong,
+            out.first_mut(),
+        ) {
+            *first = gl::PHONG_WIN as i32;
+        }
+    }
+
+    /// `glGetBooleanv` (slice rule as [`GlBackend::get_floatv`]).
+    pub fn get_booleanv(&mut self, pname: u32, out: &mut [bool]) {
+        let mut bytes = vec![0u8; out.len()];
+        // SAFETY (closure): as in `get_floatv`.
+        let written = self.get_into(
+            pname,
+            &mut bytes,
+            [0xa5, 0x5a],
+            u32::from,
+            |gl, p, v| unsafe { gl.GetBooleanv(p, v) },
+        );
+        if written {
+            for (o, b) in out.iter_mut().zip(&bytes) {
+                *o = *b != 0;
+            }
+        }
+    }
+
+    /// The common path of the `get_*` queries. The driver writes into a scratch buffer twice
+    /// prefilled with two different sentinels; the written count is where both passes stop
+    /// differing from their sentinel. This needs no table of pnames and never lets the driver
+    /// write past a caller's slice. Returns whether `out` was written.
+    fn get_into<T: Copy + Default>(
+        &mut self,
+        pname: u32,
+        out: &mut [T],
+        sentinels: [T; 2],
+        bits: impl Fn(T) -> u32,
+        query: impl Fn(&raw::Gl, u32, *mut T),
+    ) -> bool {
+        self.make_current();
+        let mut scratch = [
+            vec![T::default(); self.max_get_values],
+            vec![T::default(); self.max_get_values],
+        ];
+        for (buf, s) in scratch.iter_mut().zip(sentinels) {
+            buf.fill(s);
+            query(&self.raw, pname, buf.as_mut_ptr());
+        }
+        let count = (0..self.max_get_values)
+            .rev()
+            .find(|&i| {
+                bits(scratch[0][i]) != bits(sentinels[0])
+                    || bits(scratch[1][i]) != bits(sentinels[1])
+            })
+            .map_or(0, |i| i + 1);
+        if count == 0 {
+            // Nothing written: the driver raised an error (bad pname, inside Begin/End).
+            return false;
+        }
+        if out.len() < count {
+            self.raise(gl::INVALID_VALUE);
+            return false;
+        }
+        out[..count].copy_from_slice(&scratch[0][..count]);
+        true
+    }
+
+    /// `glFinish`: waits until the driver has drawn everything issued.
+    pub fn finish(&mut self) {
+        self.make_current();
+        // SAFETY: context current; no pointers.
+        unsafe { self.raw.Finish() }
+    }
+
+    /// The colour buffer as an image with the top row first (glReadPixels returns rows bottom-up,
+    /// GL 2.1 §4.3.2). Reads with PACK_ALIGNMENT 1 from the FBO and restores the pack state.
+    pub fn read_image(&mut self) -> RgbaImage {
+        self.make_current();
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut pixels = vec![0u8; w * h * 4];
+        // SAFETY: context current; `pixels` holds exactly w*h RGBA8 texels with alignment 1.
+        unsafe {
+            let alignment = self.glow.get_parameter_i32(glow::PACK_ALIGNMENT);
+            let row_length = self.glow.get_parameter_i32(glow::PACK_ROW_LENGTH);
+            self.glow.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            self.glow.pixel_store_i32(glow::PACK_ROW_LENGTH, 0);
+            self.glow
+                .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
+            self.glow.read_pixels(
+                0,
+                0,
+                self.width as i32,
+                self.height as i32,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                glow::PixelPackData::Slice(Some(&mut pixels)),
+            );
+            self.glow.pixel_store_i32(glow::PACK_ALIGNMENT, alignment);
+            self.glow.pixel_store_i32(glow::PACK_ROW_LENGTH, row_length);
+        }
+        let row = w * 4;
+        let mut top_down = Vec::with_capacity(pixels.len());
+        for r in pixels.chunks_exact(row.max(1)).rev() {
+            top_down.extend_from_slice(r);
+        }
+        RgbaImage::from_raw(self.width, self.height, top_down)
+            .unwrap_or_else(|| RgbaImage::new(self.width, self.height))
+    }
+
+    /// `ShadeModel` as the backend replays it: FLAT and SMOOTH go to the driver; `PHONG_WIN` sets
+    /// SMOOTH on the driver and shades lit primitives per fragment with the emulation program.
+    /// Anything else goes to the driver unchanged, so the driver raises the error.
+    pub fn shade_model(&mut self, mode: u32) {
+        self.make_current();
+        if mode != gl::PHONG_WIN || self.inside_begin_end {
+            // SAFETY: context current; no pointers.
+            unsafe { self.raw.ShadeModel(mode) };
+            if !self.inside_begin_end && (mode == gl::FLAT || mode == gl::SMOOTH) && self.phong {
+                self.phong = false;
+                // SAFETY: context current.
+                unsafe { self.glow.use_program(None) };
+            }
+            return;
+        }
+        if self.phong_program.is_none() {
+            match phong::PhongProgram::new(&self.glow) {
+                Ok(p) => self.phong_program = Some(p),
+                Err(e) => {
+                    // A driver without GLSL cannot emulate PHONG_WIN: report it as the GL error
+                    // a driver lacking the extension gives, and say why on stderr.
+                    eprintln!("fixedgl: {e}");
+                    return self.raise(gl::INVALID_ENUM);
+                }
+            }
+        }
+        // SAFETY: context current; no pointers.
+        unsafe { self.raw.ShadeModel(gl::SMOOTH) };
+        self.phong = true;
+        self.phong_dirty = true;
+    }
+
+    /// Called before a Begin is sent to the driver: under PHONG_WIN, brings the program in line
+    /// with the driver's lighting state if anything may have changed it.
+    fn before_begin(&mut self) {
+        if self.phong && self.phong_dirty && !self.inside_begin_end {
+            if let Some(p) = &self.phong_program {
+                p.sync(&self.raw, &self.glow);
+            }
+            self.phong_dirty = false;
+        }
+    }
+}
+
+impl Drop for GlBackend {
+    fn drop(&mut self) {
+        self.make_current();
+        // SAFETY: the objects were created on this context, which is still current here.
+        unsafe {
+            if let Some(p) = &self.phong_program {
+                p.delete(&self.glow);
+            }
+            self.glow.bind_framebuffer(glow::FRAMEBUFFER, None);
+            self.glow.delete_framebuffer(self.fbo);
+            for rb in self.renderbuffers {
+                self.glow.delete_renderbuffer(rb);
+            }
+        }
+        CURRENT.with(|c| c.set(0));
+    }
+}
+
+impl GlBackend {
+    /// Replays `calls` as one benchmark frame starting from the state the frame began in: all
+    /// server and client attribute groups and the three matrix stacks' tops are saved before
+    /// and restored after (PushAttrib/PushClientAttrib, GL 2.1 §6.1.14), an unterminated Begin
+    /// is closed, and the PHONG_WIN emulation is reset to its state at the start.
+    pub fn replay_frame(&mut self, calls: &[Call]) {
+        self.make_current();
+        let phong = self.phong;
+        // SAFETY: context current; no pointers.
+        unsafe {
+            self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
+            self.raw.PushClientAttrib(gl::CLIENT_ALL_ATTRIB_BITS);
+            for mode in [gl::TEXTURE, gl::PROJECTION, gl::MODELVIEW] {
+                self.raw.MatrixMode(mode);
+                self.raw.PushMatrix();
+            }
+        }
+        self.replay(calls);
+        if self.inside_begin_end {
+            self.execute(&Call::End);
+        }
+        // SAFETY: as above.
+        unsafe {
+            for mode in [gl::TEXTURE, gl::PROJECTION, gl::MODELVIEW] {
+                self.raw.MatrixMode(mode);
+                self.raw.PopMatrix();
+            }
+            self.raw.PopClientAttrib();
+            self.raw.PopAttrib();
+        }
+        if !phong && self.phong {
+            self.phong = false;
+            // SAFETY: context current.
+            unsafe { self.glow.use_program(None) };
+        }
+        self.phong_dirty = true;
+    }
+}

@@ -1,0 +1,128 @@
+//! The scene registry: named drawings that the CLI renders on either backend, compares and
+//! benchmarks, each with the tolerance its comparison must meet.
+//!
+//! A scene is a plain function making GL calls on a [`Context`]; the runner records them
+//! (`Context::start_recording`) and replays the same `Call` stream on the real driver, so one
+//! drawing function serves both backends. Design decision: the registry is a static slice, so
+//! adding a scene is one entry (and usually one new file under `src/scenes/`) with no
+//! registration code.
+
+use image::RgbaImage;
+
+use crate::{gl, Call, Context, Error};
+
+/// How close the CPU and GL renderings of a scene must be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// A pixel differs when some channel differs by more than this.
+    pub channel: u8,
+    /// The comparison passes when at most this percentage of pixels differ.
+    pub max_percent: f64,
+}
+
+/// One named drawing.
+#[derive(Clone, Copy, Debug)]
+pub struct Scene {
+    /// Command-line name (`fixedgl render <name>`).
+    pub name: &'static str,
+    /// One line saying what it shows and which GL features it exercises.
+    pub summary: &'static str,
+    /// The comparison's pass criterion.
+    pub tolerance: Tolerance,
+    /// Framebuffer size when the command line gives none.
+    pub default_size: (u32, u32),
+    /// Makes the scene's GL calls on a fresh context of the chosen size.
+    pub draw: fn(&mut Context),
+}
+
+impl Scene {
+    /// Draws the scene on a new `width` x `height` CPU context, returning the context (its
+    /// framebuffer holds the CPU rendering) and the recorded calls.
+    pub fn record(&self, width: u32, height: u32) -> Result<(Context, Vec<Call>), Error> {
+        let mut ctx = Context::new(width, height)?;
+        ctx.start_recording();
+        (self.draw)(&mut ctx);
+        let calls = ctx.stop_recording();
+        Ok((ctx, calls))
+    }
+}
+
+static SCENES: &[Scene] = &[Scene {
+    name: "triangle",
+    summary:
+        "one smooth-shaded triangle with red, green and blue corners (Begin/Color4f/Vertex3f/End)",
+    tolerance: Tolerance {
+        channel: 2,
+        max_percent: 0.5,
+    },
+    default_size: (256, 256),
+    draw: triangle,
+}];
+
+/// Every registered scene, in listing order.
+pub fn scenes() -> &'static [Scene] {
+    SCENES
+}
+
+/// The scene called `name`, if any.
+pub fn find(name: &str) -> Option<&'static Scene> {
+    SCENES.iter().find(|s| s.name == name)
+}
+
+/// The CPU framebuffer of `ctx` as an image, top row first, after drawing whatever is still
+/// batched (as `glFinish` would).
+pub fn cpu_image(ctx: &mut Context) -> RgbaImage {
+    ctx.renderer.flush(&ctx.state);
+    let (w, h) = ctx.size();
+    let colour = ctx.renderer.color();
+    let mut img = RgbaImage::new(w, h);
+    for (y, row) in colour.chunks_exact(w.max(1) as usize).enumerate() {
+        // GL rows are bottom-up (window y = 0 at the bottom).
+        let iy = h.saturating_sub(1 + y as u32);
+        for (x, px) in row.iter().enumerate() {
+            if let Some(p) = img.get_pixel_mut_checked(x as u32, iy) {
+                *p = image::Rgba(*px);
+            }
+        }
+    }
+    img
+}
+
+/// `triangle`: a triangle in normalised device coordinates (identity matrices) with one colour
+/// per corner, smooth shading.
+fn triangle(gl: &mut Context) {
+    gl.begin(gl::TRIANGLES);
+    gl.color4f(1.0, 0.0, 0.0, 1.0);
+    gl.vertex3f(-0.8, -0.8, 0.0);
+    gl.color4f(0.0, 1.0, 0.0, 1.0);
+    gl.vertex3f(0.8, -0.8, 0.0);
+    gl.color4f(0.0, 0.0, 1.0, 1.0);
+    gl.vertex3f(0.0, 0.8, 0.0);
+    gl.end();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_names_are_unique_and_findable() {
+        for (i, s) in scenes().iter().enumerate() {
+            assert!(scenes()[..i].iter().all(|o| o.name != s.name), "{}", s.name);
+            assert_eq!(find(s.name).map(|f| f.name), Some(s.name));
+        }
+        assert!(find("no-such-scene").is_none());
+    }
+
+    #[test]
+    fn triangle_records_its_calls() {
+        let calls = find("triangle")
+            .and_then(|s| s.record(8, 8).ok())
+            .map(|(_, calls)| calls)
+            .unwrap_or_default();
+        assert_eq!(calls.len(), 8);
+        assert_eq!(calls.first(), Some(&Call::Begin(gl::TRIANGLES)));
+        assert_eq!(calls.get(2), Some(&Call::Vertex3f(-0.8, -0.8, 0.0)));
+        assert_eq!(calls.last(), Some(&Call::End));
+    }
+}
