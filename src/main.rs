@@ -347,17 +347,6 @@ fn bench(
     Ok(ExitCode::SUCCESS)
 }
 
-/// Reads a recording file. Placeholder until `fixedgl::recording::load(path)` lands (another
-/// engineer's format): reads a RON list of `Call`s. Switch the body to
-/// `fixedgl::recording::load(path)` then.
-fn load_recording(path: &Path) -> Result<Vec<Call>, Error> {
-    let text = std::fs::read_to_string(path)?;
-    ron::from_str(&text).map_err(|e| Error::Parse {
-        line: e.span.start.line,
-        message: e.code.to_string(),
-    })
-}
-
 fn replay(
     file: &Path,
     backend: Backend,
@@ -365,7 +354,7 @@ fn replay(
     output: Option<PathBuf>,
     device: &str,
 ) -> Result<ExitCode, CliError> {
-    let calls = load_recording(file)?;
+    let calls = fixedgl::recording::load(file)?;
     let img = match backend {
         Backend::Cpu => {
             let mut ctx = Context::new(w, h)?;

@@ -50,6 +50,225 @@ impl GlBackend {
             Call::Color4f(r, g, b, a) => unsafe { gl.Color4f(r, g, b, a) },
             Call::Enable(cap) => unsafe { gl.Enable(cap) },
             Call::Disable(cap) => unsafe { gl.Disable(cap) },
+            Call::MatrixMode(a) => unsafe { gl.MatrixMode(a) },
+            Call::LoadIdentity => unsafe { gl.LoadIdentity() },
+            Call::LoadMatrixf(ref v) => unsafe { gl.LoadMatrixf(v.as_ptr()) },
+            Call::LoadMatrixd(ref v) => unsafe { gl.LoadMatrixd(v.as_ptr()) },
+            Call::MultMatrixf(ref v) => unsafe { gl.MultMatrixf(v.as_ptr()) },
+            Call::MultMatrixd(ref v) => unsafe { gl.MultMatrixd(v.as_ptr()) },
+            Call::LoadTransposeMatrixf(ref v) => unsafe { gl.LoadTransposeMatrixf(v.as_ptr()) },
+            Call::LoadTransposeMatrixd(ref v) => unsafe { gl.LoadTransposeMatrixd(v.as_ptr()) },
+            Call::MultTransposeMatrixf(ref v) => unsafe { gl.MultTransposeMatrixf(v.as_ptr()) },
+            Call::MultTransposeMatrixd(ref v) => unsafe { gl.MultTransposeMatrixd(v.as_ptr()) },
+            Call::Translatef(a, b, c) => unsafe { gl.Translatef(a, b, c) },
+            Call::Translated(a, b, c) => unsafe { gl.Translated(a, b, c) },
+            Call::Rotatef(a, b, c, d) => unsafe { gl.Rotatef(a, b, c, d) },
+            Call::Rotated(a, b, c, d) => unsafe { gl.Rotated(a, b, c, d) },
+            Call::Scalef(a, b, c) => unsafe { gl.Scalef(a, b, c) },
+            Call::Scaled(a, b, c) => unsafe { gl.Scaled(a, b, c) },
+            Call::Frustum(a, b, c, d, e, f) => unsafe { gl.Frustum(a, b, c, d, e, f) },
+            Call::Ortho(a, b, c, d, e, f) => unsafe { gl.Ortho(a, b, c, d, e, f) },
+            Call::PushMatrix => unsafe { gl.PushMatrix() },
+            Call::PopMatrix => unsafe { gl.PopMatrix() },
+            Call::Viewport(a, b, c, d) => unsafe { gl.Viewport(a, b, c, d) },
+            Call::DepthRange(a, b) => unsafe { gl.DepthRange(a, b) },
+            Call::ClipPlane(a, ref b) => unsafe { gl.ClipPlane(a, b.as_ptr()) },
+            Call::ActiveTexture(a) => unsafe { gl.ActiveTexture(a) },
+            Call::ClientActiveTexture(a) => unsafe { gl.ClientActiveTexture(a) },
+            Call::Vertex2s(a, b) => unsafe { gl.Vertex2s(a, b) },
+            Call::Vertex2i(a, b) => unsafe { gl.Vertex2i(a, b) },
+            Call::Vertex2f(a, b) => unsafe { gl.Vertex2f(a, b) },
+            Call::Vertex2d(a, b) => unsafe { gl.Vertex2d(a, b) },
+            Call::Vertex3s(a, b, c) => unsafe { gl.Vertex3s(a, b, c) },
+            Call::Vertex3i(a, b, c) => unsafe { gl.Vertex3i(a, b, c) },
+            Call::Vertex3d(a, b, c) => unsafe { gl.Vertex3d(a, b, c) },
+            Call::Vertex4s(a, b, c, d) => unsafe { gl.Vertex4s(a, b, c, d) },
+            Call::Vertex4i(a, b, c, d) => unsafe { gl.Vertex4i(a, b, c, d) },
+            Call::Vertex4f(a, b, c, d) => unsafe { gl.Vertex4f(a, b, c, d) },
+            Call::Vertex4d(a, b, c, d) => unsafe { gl.Vertex4d(a, b, c, d) },
+            Call::Vertex2sv(ref v) => unsafe { gl.Vertex2sv(v.as_ptr()) },
+            Call::Vertex2iv(ref v) => unsafe { gl.Vertex2iv(v.as_ptr()) },
+            Call::Vertex2fv(ref v) => unsafe { gl.Vertex2fv(v.as_ptr()) },
+            Call::Vertex2dv(ref v) => unsafe { gl.Vertex2dv(v.as_ptr()) },
+            Call::Vertex3sv(ref v) => unsafe { gl.Vertex3sv(v.as_ptr()) },
+            Call::Vertex3iv(ref v) => unsafe { gl.Vertex3iv(v.as_ptr()) },
+            Call::Vertex3fv(ref v) => unsafe { gl.Vertex3fv(v.as_ptr()) },
+            Call::Vertex3dv(ref v) => unsafe { gl.Vertex3dv(v.as_ptr()) },
+            Call::Vertex4sv(ref v) => unsafe { gl.Vertex4sv(v.as_ptr()) },
+            Call::Vertex4iv(ref v) => unsafe { gl.Vertex4iv(v.as_ptr()) },
+            Call::Vertex4fv(ref v) => unsafe { gl.Vertex4fv(v.as_ptr()) },
+            Call::Vertex4dv(ref v) => unsafe { gl.Vertex4dv(v.as_ptr()) },
+            Call::Normal3b(a, b, c) => unsafe { gl.Normal3b(a, b, c) },
+            Call::Normal3s(a, b, c) => unsafe { gl.Normal3s(a, b, c) },
+            Call::Normal3i(a, b, c) => unsafe { gl.Normal3i(a, b, c) },
+            Call::Normal3d(a, b, c) => unsafe { gl.Normal3d(a, b, c) },
+            Call::Normal3bv(ref v) => unsafe { gl.Normal3bv(v.as_ptr()) },
+            Call::Normal3sv(ref v) => unsafe { gl.Normal3sv(v.as_ptr()) },
+            Call::Normal3iv(ref v) => unsafe { gl.Normal3iv(v.as_ptr()) },
+            Call::Normal3fv(ref v) => unsafe { gl.Normal3fv(v.as_ptr()) },
+            Call::Normal3dv(ref v) => unsafe { gl.Normal3dv(v.as_ptr()) },
+            Call::Color3b(a, b, c) => unsafe { gl.Color3b(a, b, c) },
+            Call::Color3s(a, b, c) => unsafe { gl.Color3s(a, b, c) },
+            Call::Color3i(a, b, c) => unsafe { gl.Color3i(a, b, c) },
+            Call::Color3f(a, b, c) => unsafe { gl.Color3f(a, b, c) },
+            Call::Color3d(a, b, c) => unsafe { gl.Color3d(a, b, c) },
+            Call::Color3ub(a, b, c) => unsafe { gl.Color3ub(a, b, c) },
+            Call::Color3us(a, b, c) => unsafe { gl.Color3us(a, b, c) },
+            Call::Color3ui(a, b, c) => unsafe { gl.Color3ui(a, b, c) },
+            Call::Color3bv(ref v) => unsafe { gl.Color3bv(v.as_ptr()) },
+            Call::Color3sv(ref v) => unsafe { gl.Color3sv(v.as_ptr()) },
+            Call::Color3iv(ref v) => unsafe { gl.Color3iv(v.as_ptr()) },
+            Call::Color3fv(ref v) => unsafe { gl.Color3fv(v.as_ptr()) },
+            Call::Color3dv(ref v) => unsafe { gl.Color3dv(v.as_ptr()) },
+            Call::Color3ubv(ref v) => unsafe { gl.Color3ubv(v.as_ptr()) },
+            Call::Color3usv(ref v) => unsafe { gl.Color3usv(v.as_ptr()) },
+            Call::Color3uiv(ref v) => unsafe { gl.Color3uiv(v.as_ptr()) },
+            Call::Color4b(a, b, c, d) => unsafe { gl.Color4b(a, b, c, d) },
+            Call::Color4s(a, b, c, d) => unsafe { gl.Color4s(a, b, c, d) },
+            Call::Color4i(a, b, c, d) => unsafe { gl.Color4i(a, b, c, d) },
+            Call::Color4d(a, b, c, d) => unsafe { gl.Color4d(a, b, c, d) },
+            Call::Color4ub(a, b, c, d) => unsafe { gl.Color4ub(a, b, c, d) },
+            Call::Color4us(a, b, c, d) => unsafe { gl.Color4us(a, b, c, d) },
+            Call::Color4ui(a, b, c, d) => unsafe { gl.Color4ui(a, b, c, d) },
+            Call::Color4bv(ref v) => unsafe { gl.Color4bv(v.as_ptr()) },
+            Call::Color4sv(ref v) => unsafe { gl.Color4sv(v.as_ptr()) },
+            Call::Color4iv(ref v) => unsafe { gl.Color4iv(v.as_ptr()) },
+            Call::Color4fv(ref v) => unsafe { gl.Color4fv(v.as_ptr()) },
+            Call::Color4dv(ref v) => unsafe { gl.Color4dv(v.as_ptr()) },
+            Call::Color4ubv(ref v) => unsafe { gl.Color4ubv(v.as_ptr()) },
+            Call::Color4usv(ref v) => unsafe { gl.Color4usv(v.as_ptr()) },
+            Call::Color4uiv(ref v) => unsafe { gl.Color4uiv(v.as_ptr()) },
+            Call::SecondaryColor3b(a, b, c) => unsafe { gl.SecondaryColor3b(a, b, c) },
+            Call::SecondaryColor3s(a, b, c) => unsafe { gl.SecondaryColor3s(a, b, c) },
+            Call::SecondaryColor3i(a, b, c) => unsafe { gl.SecondaryColor3i(a, b, c) },
+            Call::SecondaryColor3f(a, b, c) => unsafe { gl.SecondaryColor3f(a, b, c) },
+            Call::SecondaryColor3d(a, b, c) => unsafe { gl.SecondaryColor3d(a, b, c) },
+            Call::SecondaryColor3ub(a, b, c) => unsafe { gl.SecondaryColor3ub(a, b, c) },
+            Call::SecondaryColor3us(a, b, c) => unsafe { gl.SecondaryColor3us(a, b, c) },
+            Call::SecondaryColor3ui(a, b, c) => unsafe { gl.SecondaryColor3ui(a, b, c) },
+            Call::SecondaryColor3bv(ref v) => unsafe { gl.SecondaryColor3bv(v.as_ptr()) },
+            Call::SecondaryColor3sv(ref v) => unsafe { gl.SecondaryColor3sv(v.as_ptr()) },
+            Call::SecondaryColor3iv(ref v) => unsafe { gl.SecondaryColor3iv(v.as_ptr()) },
+            Call::SecondaryColor3fv(ref v) => unsafe { gl.SecondaryColor3fv(v.as_ptr()) },
+            Call::SecondaryColor3dv(ref v) => unsafe { gl.SecondaryColor3dv(v.as_ptr()) },
+            Call::SecondaryColor3ubv(ref v) => unsafe { gl.SecondaryColor3ubv(v.as_ptr()) },
+            Call::SecondaryColor3usv(ref v) => unsafe { gl.SecondaryColor3usv(v.as_ptr()) },
+            Call::SecondaryColor3uiv(ref v) => unsafe { gl.SecondaryColor3uiv(v.as_ptr()) },
+            Call::TexCoord1s(a) => unsafe { gl.TexCoord1s(a) },
+            Call::TexCoord1i(a) => unsafe { gl.TexCoord1i(a) },
+            Call::TexCoord1f(a) => unsafe { gl.TexCoord1f(a) },
+            Call::TexCoord1d(a) => unsafe { gl.TexCoord1d(a) },
+            Call::TexCoord2s(a, b) => unsafe { gl.TexCoord2s(a, b) },
+            Call::TexCoord2i(a, b) => unsafe { gl.TexCoord2i(a, b) },
+            Call::TexCoord2f(a, b) => unsafe { gl.TexCoord2f(a, b) },
+            Call::TexCoord2d(a, b) => unsafe { gl.TexCoord2d(a, b) },
+            Call::TexCoord3s(a, b, c) => unsafe { gl.TexCoord3s(a, b, c) },
+            Call::TexCoord3i(a, b, c) => unsafe { gl.TexCoord3i(a, b, c) },
+            Call::TexCoord3f(a, b, c) => unsafe { gl.TexCoord3f(a, b, c) },
+            Call::TexCoord3d(a, b, c) => unsafe { gl.TexCoord3d(a, b, c) },
+            Call::TexCoord4s(a, b, c, d) => unsafe { gl.TexCoord4s(a, b, c, d) },
+            Call::TexCoord4i(a, b, c, d) => unsafe { gl.TexCoord4i(a, b, c, d) },
+            Call::TexCoord4f(a, b, c, d) => unsafe { gl.TexCoord4f(a, b, c, d) },
+            Call::TexCoord4d(a, b, c, d) => unsafe { gl.TexCoord4d(a, b, c, d) },
+            Call::TexCoord1sv(ref v) => unsafe { gl.TexCoord1sv(v.as_ptr()) },
+            Call::TexCoord1iv(ref v) => unsafe { gl.TexCoord1iv(v.as_ptr()) },
+            Call::TexCoord1fv(ref v) => unsafe { gl.TexCoord1fv(v.as_ptr()) },
+            Call::TexCoord1dv(ref v) => unsafe { gl.TexCoord1dv(v.as_ptr()) },
+            Call::TexCoord2sv(ref v) => unsafe { gl.TexCoord2sv(v.as_ptr()) },
+            Call::TexCoord2iv(ref v) => unsafe { gl.TexCoord2iv(v.as_ptr()) },
+            Call::TexCoord2fv(ref v) => unsafe { gl.TexCoord2fv(v.as_ptr()) },
+            Call::TexCoord2dv(ref v) => unsafe { gl.TexCoord2dv(v.as_ptr()) },
+            Call::TexCoord3sv(ref v) => unsafe { gl.TexCoord3sv(v.as_ptr()) },
+            Call::TexCoord3iv(ref v) => unsafe { gl.TexCoord3iv(v.as_ptr()) },
+            Call::TexCoord3fv(ref v) => unsafe { gl.TexCoord3fv(v.as_ptr()) },
+            Call::TexCoord3dv(ref v) => unsafe { gl.TexCoord3dv(v.as_ptr()) },
+            Call::TexCoord4sv(ref v) => unsafe { gl.TexCoord4sv(v.as_ptr()) },
+            Call::TexCoord4iv(ref v) => unsafe { gl.TexCoord4iv(v.as_ptr()) },
+            Call::TexCoord4fv(ref v) => unsafe { gl.TexCoord4fv(v.as_ptr()) },
+            Call::TexCoord4dv(ref v) => unsafe { gl.TexCoord4dv(v.as_ptr()) },
+            Call::FogCoordf(a) => unsafe { gl.FogCoordf(a) },
+            Call::FogCoordd(a) => unsafe { gl.FogCoordd(a) },
+            Call::FogCoordfv(ref v) => unsafe { gl.FogCoordfv(v.as_ptr()) },
+            Call::FogCoorddv(ref v) => unsafe { gl.FogCoorddv(v.as_ptr()) },
+            Call::EdgeFlag(a) => unsafe { gl.EdgeFlag(u8::from(a)) },
+            Call::EdgeFlagv(v) => {
+                let flag = u8::from(v[0]);
+                unsafe { gl.EdgeFlagv(&flag) }
+            }
+            Call::Materialf(a, b, c) => unsafe { gl.Materialf(a, b, c) },
+            Call::Materiali(a, b, c) => unsafe { gl.Materiali(a, b, c) },
+            Call::Materialfv(a, p, ref v) => {
+                self.with_params(v, params::material(p), true, |gl, v| unsafe {
+                    gl.Materialfv(a, p, v)
+                })
+            }
+            Call::Materialiv(a, p, ref v) => {
+                self.with_params(v, params::material(p), true, |gl, v| unsafe {
+                    gl.Materialiv(a, p, v)
+                })
+            }
+            Call::Lightf(a, b, c) => unsafe { gl.Lightf(a, b, c) },
+            Call::Lighti(a, b, c) => unsafe { gl.Lighti(a, b, c) },
+            Call::Lightfv(a, p, ref v) => {
+                self.with_params(v, params::light(p), false, |gl, v| unsafe {
+                    gl.Lightfv(a, p, v)
+                })
+            }
+            Call::Lightiv(a, p, ref v) => {
+                self.with_params(v, params::light(p), false, |gl, v| unsafe {
+                    gl.Lightiv(a, p, v)
+                })
+            }
+            Call::LightModelf(a, b) => unsafe { gl.LightModelf(a, b) },
+            Call::LightModeli(a, b) => unsafe { gl.LightModeli(a, b) },
+            Call::LightModelfv(p, ref v) => {
+                self.with_params(v, params::light_model(p), false, |gl, v| unsafe {
+                    gl.LightModelfv(p, v)
+                })
+            }
+            Call::LightModeliv(p, ref v) => {
+                self.with_params(v, params::light_model(p), false, |gl, v| unsafe {
+                    gl.LightModeliv(p, v)
+                })
+            }
+            Call::ColorMaterial(a, b) => unsafe { gl.ColorMaterial(a, b) },
+            Call::ShadeModel(mode) => self.shade_model(mode),
+            Call::FrontFace(a) => unsafe { gl.FrontFace(a) },
+            Call::CullFace(a) => unsafe { gl.CullFace(a) },
+            Call::PolygonMode(a, b) => unsafe { gl.PolygonMode(a, b) },
+            Call::PolygonOffset(a, b) => unsafe { gl.PolygonOffset(a, b) },
+            Call::PointSize(a) => unsafe { gl.PointSize(a) },
+            Call::LineWidth(a) => unsafe { gl.LineWidth(a) },
+            Call::ClearColor(a, b, c, d) => unsafe { gl.ClearColor(a, b, c, d) },
+            Call::ClearDepth(a) => unsafe { gl.ClearDepth(a) },
+            Call::ClearStencil(a) => unsafe { gl.ClearStencil(a) },
+            Call::Clear(a) => unsafe { gl.Clear(a) },
+            Call::DepthFunc(a) => unsafe { gl.DepthFunc(a) },
+            Call::DepthMask(a) => unsafe { gl.DepthMask(u8::from(a)) },
+            Call::ColorMask(a, b, c, d) => unsafe {
+                gl.ColorMask(u8::from(a), u8::from(b), u8::from(c), u8::from(d))
+            },
+            Call::Scissor(a, b, c, d) => unsafe { gl.Scissor(a, b, c, d) },
+            Call::Hint(target, mode) => self.hint(target, mode),
+            Call::PixelStorei(a, b) => unsafe { gl.PixelStorei(a, b) },
+            Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
+            Call::Flush => unsafe { gl.Flush() },
+            Call::Finish => unsafe { gl.Finish() },
+        }
+    }
+
+    /// `Hint`: PHONG_HINT_WIN (GL_WIN_phong_shading) is not a target the driver knows, so it is
+    /// validated here with the rules of GL 2.1 §5.6 (INVALID_OPERATION inside Begin/End, then
+    /// INVALID_ENUM for a bad mode) and, having no effect on the emulation, not sent on.
+    fn hint(&mut self, target: u32, mode: u32) {
+        if target != gl::PHONG_HINT_WIN {
+            // SAFETY: the context is current (see `execute`); no pointers.
+            return unsafe { self.raw.Hint(target, mode) };
+        }
+        if self.inside_begin_end {
+            self.raise(gl::INVALID_OPERATION);
+        } else if !matches!(mode, gl::FASTEST | gl::NICEST | gl::DONT_CARE) {
+            self.raise(gl::INVALID_ENUM);
         }
     }
 
@@ -91,7 +310,128 @@ impl GlBackend {
 fn phong_neutral(call: &Call) -> bool {
     matches!(
         call,
-        Call::Begin(_) | Call::End | Call::Vertex3f(..) | Call::Normal3f(..) | Call::Color4f(..)
+        Call::Begin(_)
+            | Call::End
+            | Call::Vertex2s(..)
+            | Call::Vertex2i(..)
+            | Call::Vertex2f(..)
+            | Call::Vertex2d(..)
+            | Call::Vertex3s(..)
+            | Call::Vertex3i(..)
+            | Call::Vertex3f(..)
+            | Call::Vertex3d(..)
+            | Call::Vertex4s(..)
+            | Call::Vertex4i(..)
+            | Call::Vertex4f(..)
+            | Call::Vertex4d(..)
+            | Call::Vertex2sv(..)
+            | Call::Vertex2iv(..)
+            | Call::Vertex2fv(..)
+            | Call::Vertex2dv(..)
+            | Call::Vertex3sv(..)
+            | Call::Vertex3iv(..)
+            | Call::Vertex3fv(..)
+            | Call::Vertex3dv(..)
+            | Call::Vertex4sv(..)
+            | Call::Vertex4iv(..)
+            | Call::Vertex4fv(..)
+            | Call::Vertex4dv(..)
+            | Call::Normal3b(..)
+            | Call::Normal3s(..)
+            | Call::Normal3i(..)
+            | Call::Normal3f(..)
+            | Call::Normal3d(..)
+            | Call::Normal3bv(..)
+            | Call::Normal3sv(..)
+            | Call::Normal3iv(..)
+            | Call::Normal3fv(..)
+            | Call::Normal3dv(..)
+            | Call::Color3b(..)
+            | Call::Color3s(..)
+            | Call::Color3i(..)
+            | Call::Color3f(..)
+            | Call::Color3d(..)
+            | Call::Color3ub(..)
+            | Call::Color3us(..)
+            | Call::Color3ui(..)
+            | Call::Color3bv(..)
+            | Call::Color3sv(..)
+            | Call::Color3iv(..)
+            | Call::Color3fv(..)
+            | Call::Color3dv(..)
+            | Call::Color3ubv(..)
+            | Call::Color3usv(..)
+            | Call::Color3uiv(..)
+            | Call::Color4b(..)
+            | Call::Color4s(..)
+            | Call::Color4i(..)
+            | Call::Color4f(..)
+            | Call::Color4d(..)
+            | Call::Color4ub(..)
+            | Call::Color4us(..)
+            | Call::Color4ui(..)
+            | Call::Color4bv(..)
+            | Call::Color4sv(..)
+            | Call::Color4iv(..)
+            | Call::Color4fv(..)
+            | Call::Color4dv(..)
+            | Call::Color4ubv(..)
+            | Call::Color4usv(..)
+            | Call::Color4uiv(..)
+            | Call::SecondaryColor3b(..)
+            | Call::SecondaryColor3s(..)
+            | Call::SecondaryColor3i(..)
+            | Call::SecondaryColor3f(..)
+            | Call::SecondaryColor3d(..)
+            | Call::SecondaryColor3ub(..)
+            | Call::SecondaryColor3us(..)
+            | Call::SecondaryColor3ui(..)
+            | Call::SecondaryColor3bv(..)
+            | Call::SecondaryColor3sv(..)
+            | Call::SecondaryColor3iv(..)
+            | Call::SecondaryColor3fv(..)
+            | Call::SecondaryColor3dv(..)
+            | Call::SecondaryColor3ubv(..)
+            | Call::SecondaryColor3usv(..)
+            | Call::SecondaryColor3uiv(..)
+            | Call::TexCoord1s(..)
+            | Call::TexCoord1i(..)
+            | Call::TexCoord1f(..)
+            | Call::TexCoord1d(..)
+            | Call::TexCoord2s(..)
+            | Call::TexCoord2i(..)
+            | Call::TexCoord2f(..)
+            | Call::TexCoord2d(..)
+            | Call::TexCoord3s(..)
+            | Call::TexCoord3i(..)
+            | Call::TexCoord3f(..)
+            | Call::TexCoord3d(..)
+            | Call::TexCoord4s(..)
+            | Call::TexCoord4i(..)
+            | Call::TexCoord4f(..)
+            | Call::TexCoord4d(..)
+            | Call::TexCoord1sv(..)
+            | Call::TexCoord1iv(..)
+            | Call::TexCoord1fv(..)
+            | Call::TexCoord1dv(..)
+            | Call::TexCoord2sv(..)
+            | Call::TexCoord2iv(..)
+            | Call::TexCoord2fv(..)
+            | Call::TexCoord2dv(..)
+            | Call::TexCoord3sv(..)
+            | Call::TexCoord3iv(..)
+            | Call::TexCoord3fv(..)
+            | Call::TexCoord3dv(..)
+            | Call::TexCoord4sv(..)
+            | Call::TexCoord4iv(..)
+            | Call::TexCoord4fv(..)
+            | Call::TexCoord4dv(..)
+            | Call::FogCoordf(..)
+            | Call::FogCoordd(..)
+            | Call::FogCoordfv(..)
+            | Call::FogCoorddv(..)
+            | Call::EdgeFlag(..)
+            | Call::EdgeFlagv(..)
     )
 }
 
