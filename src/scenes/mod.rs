@@ -11,6 +11,14 @@ use image::RgbaImage;
 
 use crate::{gl, Call, Context, Error};
 
+pub mod gaussian;
+
+/// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
+pub const LECTURE: Tolerance = Tolerance {
+    channel: 2,
+    max_percent: 0.05,
+};
+
 /// How close the CPU and GL renderings of a scene must be.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerance {
@@ -47,17 +55,23 @@ impl Scene {
     }
 }
 
-static SCENES: &[Scene] = &[Scene {
-    name: "triangle",
-    summary:
-        "one smooth-shaded triangle with red, green and blue corners (Begin/Color4f/Vertex3f/End)",
-    tolerance: Tolerance {
-        channel: 2,
-        max_percent: 0.5,
+static SCENES: &[Scene] = &[
+    Scene {
+        name: "triangle",
+        summary:
+            "one smooth-shaded triangle with red, green and blue corners (Begin/Color4f/Vertex3f/End)",
+        tolerance: Tolerance {
+            channel: 2,
+            max_percent: 0.5,
+        },
+        default_size: (256, 256),
+        draw: triangle,
     },
-    default_size: (256, 256),
-    draw: triangle,
-}];
+    gaussian::SCENES[0],
+    gaussian::SCENES[1],
+    gaussian::SCENES[2],
+    gaussian::SCENES[3],
+];
 
 /// Every registered scene, in listing order.
 pub fn scenes() -> &'static [Scene] {
