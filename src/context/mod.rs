@@ -123,6 +123,8 @@ impl Context {
         }
         self.begin_mode = Some(mode);
         self.renderer.begin(mode);
+        // cpu-pipeline: the materials at Begin, for Material changes inside the pair (§2.14.3).
+        self.renderer.begin_materials(&self.state.materials);
     }
 
     /// `glEnd`.

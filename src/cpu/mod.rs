@@ -4,66 +4,195 @@
 //! `flush` with the state whenever it is about to change state that affects rendering, or before
 //! anything reads the framebuffer. Batching across many Begin/End pairs is what lets the vertex
 //! stage and the tile rasteriser run in parallel over large batches (Mesa's FLUSH_VERTICES idea).
+//!
+//! A flush runs GL 2.1's pipeline in stages, each in its own module:
+//! [`batch`] → [`vertex`] (§2.11, §2.14) → [`assembly`] (§2.6) → [`clip`] (§2.12) →
+//! [`setup`] (§2.11.1, §3.5–3.6) → [`raster`] (§3.4–3.6) → [`fragment`] (§3.9, §4.1) →
+//! [`framebuffer`] (§4.2). Design decision: setup splits the primitives across threads in order
+//! and bins them per 64x64 tile; tiles are then rasterised in parallel, each owning its pixels, and
+//! inside a tile primitives are drawn in submission order.
+
+pub mod assembly;
+pub mod batch;
+pub mod clip;
+pub mod fragment;
+pub mod framebuffer;
+pub mod raster;
+pub mod setup;
+pub mod vertex;
+
+#[cfg(test)]
+mod tests;
 
 use glam::Vec4;
+use rayon::prelude::*;
 
 use crate::state::{Current, Material, State};
+use assembly::Asm;
+use batch::Batch;
+use fragment::{FragCtx, TileBufs};
+use framebuffer::{Framebuffer, TILE, TILE_PIXELS};
+use setup::{SetupCtx, Worker};
+use vertex::{Layout, Lighting};
 
-/// The CPU renderer: the vertex batch not yet drawn and the framebuffer.
+/// Primitives below which setup stays on one thread.
+const PARALLEL_SETUP: usize = 4096;
+
+/// The CPU renderer: the vertex batch not yet drawn, scratch space reused across flushes, and the
+/// framebuffer.
 #[derive(Debug)]
 pub struct Renderer {
-    width: u32,
-    height: u32,
-    /// RGBA8, bottom-up rows (GL window coordinates).
-    color: Vec<[u8; 4]>,
-    /// Vertices of the current batch, object coordinates.
-    positions: Vec<Vec4>,
+    fb: Framebuffer,
+    batch: Batch,
+    vout: Vec<f32>,
+    asm: Vec<Asm>,
+    workers: Vec<Worker>,
 }
 
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     pub fn new(width: u32, height: u32) -> Self {
-        let n = width as usize * height as usize;
         Self {
-            width,
-            height,
-            color: vec![[0; 4]; n],
-            positions: Vec::new(),
+            fb: Framebuffer::new(width, height),
+            batch: Batch::default(),
+            vout: Vec::new(),
+            asm: Vec::new(),
+            workers: Vec::new(),
         }
     }
 
     /// `Begin(mode)`: opens a primitive in the batch (mode already validated).
-    pub fn begin(&mut self, _mode: u32) {}
+    pub fn begin(&mut self, mode: u32) {
+        self.batch.begin(mode);
+    }
+
+    /// The materials in effect at `Begin`: what the primitive's vertices use until a `Material`
+    /// call inside the pair ([`Renderer::materials_changed`]) changes them.
+    pub fn begin_materials(&mut self, materials: &[Material; 2]) {
+        self.batch.note_materials(materials);
+    }
 
     /// A vertex with the current attributes.
-    pub fn vertex(&mut self, position: Vec4, _current: &Current) {
-        self.positions.push(position);
+    #[inline]
+    pub fn vertex(&mut self, position: Vec4, current: &Current) {
+        self.batch.vertex(position, current);
     }
 
     /// `End`.
-    pub fn end(&mut self) {}
-
-    /// Draws everything batched so far with `state`, leaving the batch empty.
-    pub fn flush(&mut self, _state: &State) {
-        self.positions.clear();
+    pub fn end(&mut self) {
+        self.batch.end();
     }
 
     /// `Material` called between Begin and End: `materials` are the new front and back materials,
     /// which apply from the next vertex on (GL 2.1 §2.14.3). Outside Begin/End the front end
     /// flushes instead, so this is only called with a primitive open.
-    pub fn materials_changed(&mut self, _materials: &[Material; 2]) {}
+    pub fn materials_changed(&mut self, materials: &[Material; 2]) {
+        self.batch.materials_changed(materials);
+    }
 
     /// `glClear` with a validated `mask` (any of COLOR/DEPTH/STENCIL_BUFFER_BIT), honouring the
     /// scissor test and the colour, depth and stencil write masks in `state` (GL 2.1 §4.2.3).
-    pub fn clear(&mut self, _state: &State, _mask: u32) {}
+    pub fn clear(&mut self, state: &State, mask: u32) {
+        self.flush(state);
+        self.fb.clear(state, mask);
+    }
 
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
-        (self.width, self.height)
+        self.fb.size()
     }
 
-    /// The colour buffer, bottom-up rows.
-    pub fn color(&self) -> &[[u8; 4]] {
-        &self.color
+    /// The framebuffer (read access for readback).
+    pub fn framebuffer(&self) -> &Framebuffer {
+        &self.fb
+    }
+
+    /// The colour buffer as bottom-up rows, `width * height` pixels.
+    pub fn color(&self) -> Vec<[u8; 4]> {
+        self.fb.color_rows()
+    }
+
+    /// Draws everything batched so far with `state`, leaving the batch empty.
+    pub fn flush(&mut self, state: &State) {
+        if self.batch.is_empty() {
+            self.batch.clear();
+            return;
+        }
+        let layout = Layout::for_state(state);
+        // Vertex stage (§2.11, §2.14), parallel over large batches.
+        vertex::process(state, &self.batch, &layout, &mut self.vout);
+        // Primitive assembly (§2.6).
+        assembly::assemble(&self.batch.prims, &self.batch.edge, &mut self.asm);
+
+        // Clipping and setup, split in order across workers.
+        let rect = framebuffer::scissor_rect(state);
+        let ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
+        let nw = if self.asm.len() >= PARALLEL_SETUP {
+            rayon::current_num_threads().clamp(1, 16)
+        } else {
+            1
+        };
+        if self.workers.len() < nw {
+            self.workers.resize_with(nw, Worker::default);
+        }
+        let chunk = self.asm.len().div_ceil(nw).max(1);
+        let (vout, mats) = (&self.vout, &self.batch.mat);
+        let workers = &mut self.workers[..nw];
+        if nw == 1 {
+            if let Some(w) = workers.first_mut() {
+                w.run(&ctx, vout, mats, &self.asm);
+            }
+        } else {
+            let asm = &self.asm;
+            workers.par_iter_mut().enumerate().for_each(|(i, w)| {
+                let lo = (i * chunk).min(asm.len());
+                let hi = ((i + 1) * chunk).min(asm.len());
+                w.run(&ctx, vout, mats, asm.get(lo..hi).unwrap_or(&[]));
+            });
+        }
+
+        // Rasterisation and fragment operations, tiles in parallel.
+        let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
+        let mats: &[[Material; 2]] = if self.batch.snapshots.is_empty() {
+            std::slice::from_ref(&state.materials)
+        } else {
+            &self.batch.snapshots
+        };
+        let fctx = FragCtx {
+            depth_test: state.enables.depth_test,
+            depth_func: state.depth_func,
+            depth_mask: state.depth_mask,
+            color_mask: state.color_mask,
+            color_sum: layout.spec.is_some(),
+            rl: ctx.rl,
+            lighting: lighting.as_ref(),
+            mats,
+        };
+        let workers = &self.workers[..nw];
+        let tiles_x = ctx.tiles_x;
+        let fb = &mut self.fb;
+        fb.color
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .for_each(|(t, (color, depth))| {
+                if workers.iter().all(|w| w.bins.get(t).map_or(true, |b| b.is_empty())) {
+                    return;
+                }
+                let mut bufs = TileBufs {
+                    color,
+                    depth,
+                    x: ((t % tiles_x) * TILE) as i32,
+                    y: ((t / tiles_x) * TILE) as i32,
+                };
+                for w in workers {
+                    for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
+                        if let Some(p) = w.prims.get(pi as usize) {
+                            raster::prim(&fctx, &mut bufs, p, &w.pool);
+                        }
+                    }
+                }
+            });
+        self.batch.clear();
     }
 }

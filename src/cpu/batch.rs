@@ -1,0 +1,131 @@
+//! The vertex batch: every vertex given since the last flush, with its attributes, in flat
+//! structure-of-arrays form, plus the list of primitives (Begin/End pairs) over it.
+//!
+//! GL 2.1 §2.6–2.7: a vertex takes the current normal, colours, texture coordinates and edge
+//! flag at the moment `Vertex` is called. Design decision: the arrays are cleared, not freed, at
+//! each flush, so steady-state drawing allocates nothing per vertex; `Material` changes inside
+//! Begin/End (§2.14.3) are rare, so they are stored as whole snapshots that vertices index.
+
+use glam::{Vec3, Vec4};
+
+use crate::state::{Current, Material};
+
+/// One Begin/End pair: `count` vertices from `first`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Prim {
+    /// The Begin mode (POINTS ..= POLYGON).
+    pub mode: u32,
+    /// Index of the first vertex in the batch arrays.
+    pub first: u32,
+    /// Number of vertices.
+    pub count: u32,
+}
+
+/// The batched vertices (object coordinates and current attributes) and primitives.
+#[derive(Debug, Default)]
+pub struct Batch {
+    /// Object-coordinate positions.
+    pub pos: Vec<Vec4>,
+    /// Current normal at each vertex.
+    pub normal: Vec<Vec3>,
+    /// Current (primary) colour.
+    pub color: Vec<Vec4>,
+    /// Current secondary colour.
+    pub color2: Vec<Vec4>,
+    /// Texture coordinates of unit 0.
+    pub tex: Vec<Vec4>,
+    /// Edge flag.
+    pub edge: Vec<bool>,
+    /// Index into `snapshots`; meaningful only when `snapshots` is not empty.
+    pub mat: Vec<u32>,
+    /// The primitives, in call order.
+    pub prims: Vec<Prim>,
+    /// Material snapshots; empty when no Material call happened inside Begin/End in this batch,
+    /// in which case every vertex uses the state's materials.
+    pub snapshots: Vec<[Material; 2]>,
+    /// The materials in effect at the last Begin (what vertices before the first in-Begin
+    /// Material change use).
+    base: Option<[Material; 2]>,
+    cur_mat: u32,
+}
+
+impl Batch {
+    /// Number of batched vertices.
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+
+    /// True when nothing is batched.
+    pub fn is_empty(&self) -> bool {
+        self.prims.is_empty()
+    }
+
+    /// Opens a primitive.
+    pub fn begin(&mut self, mode: u32) {
+        self.prims.push(Prim {
+            mode,
+            first: self.pos.len() as u32,
+            count: 0,
+        });
+    }
+
+    /// Appends a vertex with the current attributes to the open primitive.
+    #[inline]
+    pub fn vertex(&mut self, position: Vec4, c: &Current) {
+        let Some(p) = self.prims.last_mut() else {
+            return;
+        };
+        p.count += 1;
+        self.pos.push(position);
+        self.normal.push(c.normal);
+        self.color.push(c.color);
+        self.color2.push(c.secondary_color);
+        self.tex.push(c.tex_coords[0]);
+        self.edge.push(c.edge_flag);
+        self.mat.push(self.cur_mat);
+    }
+
+    /// Closes the open primitive; an empty one is dropped.
+    pub fn end(&mut self) {
+        if self.prims.last().is_some_and(|p| p.count == 0) {
+            self.prims.pop();
+        }
+    }
+
+    /// Records the materials in effect at Begin (before any change inside the pair).
+    pub fn note_materials(&mut self, m: &[Material; 2]) {
+        if self.snapshots.is_empty() {
+            self.base = Some(*m);
+        }
+    }
+
+    /// `Material` inside Begin/End: vertices from now on use `m`.
+    pub fn materials_changed(&mut self, m: &[Material; 2]) {
+        if self.snapshots.is_empty() {
+            // Vertices so far (all with index 0) keep the materials current at Begin.
+            self.snapshots.push(self.base.unwrap_or(*m));
+        }
+        if self.snapshots.len() >= u32::MAX as usize {
+            return;
+        }
+        self.snapshots.push(*m);
+        self.cur_mat = (self.snapshots.len() - 1) as u32;
+    }
+
+    /// Empties the batch, keeping capacity (the front end flushes only outside Begin/End).
+    pub fn clear(&mut self) {
+        self.pos.clear();
+        self.normal.clear();
+        self.color.clear();
+        self.color2.clear();
+        self.tex.clear();
+        self.edge.clear();
+        self.mat.clear();
+        self.prims.clear();
+        if !self.snapshots.is_empty() {
+            self.base = self.snapshots.last().copied();
+        }
+        self.snapshots.clear();
+        self.cur_mat = 0;
+    }
+}

@@ -1,0 +1,586 @@
+//! Primitive setup (GL 2.1 §2.11.1, §3.4–3.6): perspective divide, viewport and DepthRange
+//! transform, facing by signed window area, culling, polygon mode, polygon offset, and the
+//! per-primitive data the tile rasteriser needs (edge functions, attribute planes, tile bins).
+//!
+//! Design decision: window x and y are snapped to 1/256 pixel (8 sub-pixel bits, as llvmpipe) and
+//! triangle edge functions are exact 64-bit integers evaluated at pixel centres, with a top-left
+//! tie-break, so two triangles sharing an edge never both cover a pixel on it. Attributes become
+//! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
+//! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
+
+use super::assembly::Asm;
+use super::clip::{Clipper, MAX_POLY};
+use super::framebuffer::TILE;
+use super::vertex::Layout;
+use crate::gl;
+use crate::state::State;
+
+/// Most interpolated floats per fragment.
+pub const MAXV: usize = 24;
+
+/// Where each interpolated value sits in a fragment's varyings.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RLayout {
+    /// Number of varyings.
+    pub n: usize,
+    /// Secondary colour (primary is always at 0).
+    pub spec: Option<usize>,
+    /// Texture coordinates.
+    pub tex: Option<usize>,
+    /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
+    pub phong: Option<usize>,
+}
+
+impl RLayout {
+    fn new(l: &Layout) -> Self {
+        let mut r = RLayout {
+            n: 4,
+            ..Default::default()
+        };
+        if l.spec.is_some() {
+            r.spec = Some(r.n);
+            r.n += 4;
+        }
+        if l.tex.is_some() {
+            r.tex = Some(r.n);
+            r.n += 4;
+        }
+        if l.nrm.is_some() {
+            r.phong = Some(r.n);
+            r.n += 10;
+        }
+        r
+    }
+}
+
+/// What kind of rasterised primitive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A filled triangle.
+    Tri,
+    /// A line segment.
+    Line,
+    /// A point.
+    Point,
+}
+
+/// Flag: colour varyings are constant (FLAT), not divided by w.
+pub const F_FLAT: u8 = 1;
+/// Flag: the primitive comes from a back-facing polygon.
+pub const F_BACK: u8 = 2;
+/// Flag: evaluate lighting per fragment (PHONG_WIN triangle).
+pub const F_PHONG: u8 = 4;
+
+/// One primitive ready for the tile rasteriser.
+#[derive(Clone, Copy, Debug)]
+pub struct RPrim {
+    /// Triangle, line or point.
+    pub kind: Kind,
+    /// `F_*` bits.
+    pub flags: u8,
+    /// Pixel bounding box `[x0, y0, x1, y1]`, inclusive, inside the framebuffer and scissor.
+    pub bbox: [i32; 4],
+    /// Material snapshot index (PHONG_WIN).
+    pub mat: u32,
+    /// Offset of this primitive's floats in the worker's pool.
+    pub voff: u32,
+    /// Triangle edge functions: `[E at pixel (0,0) centre (tie-break bias applied), dE/dx, dE/dy]`.
+    pub e: [[i64; 3]; 3],
+    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; line `[z0, z1, _]`; point `[z, _, _]`.
+    pub z: [f64; 3],
+    /// Line `[x0, y0, x1, y1, width]`; point `[x, y, size]` (window coordinates).
+    pub g: [f32; 5],
+}
+
+/// The per-flush constants of setup.
+#[derive(Clone, Debug)]
+pub struct SetupCtx {
+    /// Processed vertex layout.
+    pub layout: Layout,
+    /// Varying layout.
+    pub rl: RLayout,
+    clipper: Clipper,
+    scale: [f64; 3],
+    offset: [f64; 3],
+    ccw_front: bool,
+    cull: Option<u32>,
+    poly_mode: [u32; 2],
+    offset_on: [bool; 3],
+    factor: f64,
+    units: f64,
+    flat: bool,
+    phong: bool,
+    line_width: f32,
+    point_size: f32,
+    /// Framebuffer ∩ scissor, inclusive.
+    pub rect: [i32; 4],
+    /// Tiles across.
+    pub tiles_x: usize,
+    /// Total tiles.
+    pub tiles: usize,
+}
+
+impl SetupCtx {
+    /// The setup constants of `state`.
+    pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
+        let [vx, vy, vw, vh] = state.viewport.map(f64::from);
+        let [n, f] = state.depth_range;
+        SetupCtx {
+            layout,
+            rl: RLayout::new(&layout),
+            clipper: Clipper::new(state, &layout),
+            scale: [vw / 2.0, vh / 2.0, (f - n) / 2.0],
+            offset: [vx + vw / 2.0, vy + vh / 2.0, (n + f) / 2.0],
+            ccw_front: state.front_face != gl::CW,
+            cull: state.enables.cull_face.then_some(state.cull_face_mode),
+            poly_mode: state.polygon_mode,
+            offset_on: [
+                state.enables.polygon_offset_fill,
+                state.enables.polygon_offset_line,
+                state.enables.polygon_offset_point,
+            ],
+            factor: f64::from(state.polygon_offset_factor),
+            units: f64::from(state.polygon_offset_units),
+            flat: state.shade_model == gl::FLAT,
+            phong: layout.nrm.is_some(),
+            line_width: state.line_width,
+            point_size: state.point_size,
+            rect,
+            tiles_x: tiles.0,
+            tiles: tiles.0 * tiles.1,
+        }
+    }
+}
+
+/// A vertex in window coordinates with its varyings.
+#[derive(Clone, Copy, Debug)]
+struct WVert {
+    /// Snapped x, y in 1/256 pixel.
+    fx: i64,
+    fy: i64,
+    z: f64,
+    iw: f32,
+    v: [f32; MAXV],
+}
+
+/// One setup worker's output: its primitives in order, their floats, and per-tile bins. Several
+/// workers split a batch's primitives in order; the rasteriser visits worker 0's bin of a tile,
+/// then worker 1's, ..., which preserves primitive order inside every tile.
+#[derive(Debug, Default)]
+pub struct Worker {
+    /// Rasterisable primitives.
+    pub prims: Vec<RPrim>,
+    /// Their attribute floats.
+    pub pool: Vec<f32>,
+    /// Per tile, indices into `prims`.
+    pub bins: Vec<Vec<u32>>,
+    a: Vec<f32>,
+    b: Vec<f32>,
+    bins_x: usize,
+}
+
+impl Worker {
+    /// Sets up `asm` (indices into `vout`, `mats` the vertices' material indices).
+    pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], mats: &[u32], asm: &[Asm]) {
+        self.prims.clear();
+        self.pool.clear();
+        self.bins.resize_with(ctx.tiles, Vec::new);
+        self.bins_x = ctx.tiles_x;
+        for b in &mut self.bins {
+            b.clear();
+        }
+        let s = ctx.layout.stride;
+        let vert = |i: u32| vout.get(i as usize * s..(i as usize + 1) * s).unwrap_or(&[]);
+        for p in asm {
+            let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
+            let prov = vert(p.provoking);
+            match p.n {
+                3 => {
+                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
+                    let codes = vs.map(|v| ctx.clipper.code(v));
+                    if codes[0] & codes[1] & codes[2] != 0 {
+                        continue;
+                    }
+                    let mut edges = [false; MAX_POLY];
+                    for (k, e) in edges.iter_mut().take(3).enumerate() {
+                        *e = p.edges & (1 << k) != 0;
+                    }
+                    let planes = codes[0] | codes[1] | codes[2];
+                    if planes == 0 {
+                        self.polygon(ctx, &vs, &edges, prov, mat);
+                    } else {
+                        let mut a = std::mem::take(&mut self.a);
+                        let mut b = std::mem::take(&mut self.b);
+                        a.clear();
+                        for v in vs {
+                            a.extend_from_slice(v);
+                        }
+                        let n = ctx.clipper.polygon(s, planes, &mut a, &mut b, &mut edges, 3);
+                        let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
+                        for (i, src) in srcs.iter_mut().take(n).enumerate() {
+                            *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                        }
+                        self.polygon(ctx, &srcs[..n], &edges, prov, mat);
+                        self.a = a;
+                        self.b = b;
+                    }
+                }
+                2 => {
+                    let vs = [vert(p.v[0]), vert(p.v[1])];
+                    let codes = vs.map(|v| ctx.clipper.code(v));
+                    if codes[0] & codes[1] != 0 {
+                        continue;
+                    }
+                    let planes = codes[0] | codes[1];
+                    let mut a = std::mem::take(&mut self.a);
+                    a.clear();
+                    a.extend_from_slice(vs[0]);
+                    a.extend_from_slice(vs[1]);
+                    if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
+                        let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
+                        let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
+                        self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
+                        self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
+                        self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                    }
+                    self.a = a;
+                }
+                _ => {
+                    let v = vert(p.v[0]);
+                    if ctx.clipper.code(v) == 0 {
+                        let mut w = self.window(ctx, v);
+                        self.varyings(ctx, &mut w, v, false, prov);
+                        self.point(ctx, &w, 0.0, 0, mat);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Divide and viewport/DepthRange transform (§2.11.1); varyings are filled in later.
+    fn window(&self, ctx: &SetupCtx, v: &[f32]) -> WVert {
+        let g = |i: usize| f64::from(v.get(i).copied().unwrap_or(0.0));
+        let iw = 1.0 / g(3);
+        let xw = g(0) * iw * ctx.scale[0] + ctx.offset[0];
+        let yw = g(1) * iw * ctx.scale[1] + ctx.offset[1];
+        let zw = g(2) * iw * ctx.scale[2] + ctx.offset[2];
+        // Clipping keeps xw, yw inside the viewport, at most 16384 + a guard: no overflow.
+        let snap = |x: f64| (x * 256.0).round().clamp(-1e12, 1e12) as i64;
+        WVert {
+            fx: snap(xw),
+            fy: snap(yw),
+            z: zw,
+            iw: iw as f32,
+            v: [0.0; MAXV],
+        }
+    }
+
+    /// Fills `w.v` from processed vertex `v`: the face's colours (the provoking vertex's under
+    /// FLAT), then texture coordinates and the PHONG_WIN values.
+    fn varyings(&self, ctx: &SetupCtx, w: &mut WVert, v: &[f32], back: bool, prov: &[f32]) {
+        let l = &ctx.layout;
+        let rl = &ctx.rl;
+        let csrc = if ctx.flat { prov } else { v };
+        let (col, spec) = match (back, l.col_b) {
+            (true, Some(cb)) => (cb, l.spec_b),
+            _ => (l.col, l.spec),
+        };
+        copy(&mut w.v, 0, csrc, col, 4);
+        if let (Some(d), Some(s)) = (rl.spec, spec) {
+            copy(&mut w.v, d, csrc, s, 4);
+        }
+        if let (Some(d), Some(s)) = (rl.tex, l.tex) {
+            copy(&mut w.v, d, v, s, 4);
+        }
+        if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
+            let ew = v.get(e + 3).copied().unwrap_or(1.0);
+            let ew = if ew != 0.0 { ew } else { 1.0 };
+            for k in 0..3 {
+                if let (Some(o), Some(&x)) = (w.v.get_mut(d + k), v.get(e + k)) {
+                    *o = x / ew;
+                }
+            }
+            copy(&mut w.v, d + 3, v, n, 3);
+            copy(&mut w.v, d + 6, csrc, r, 4);
+        }
+    }
+
+    /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
+    /// processed vertices in order, `edges[i]` the flag of the edge leaving vertex i.
+    fn polygon(&mut self, ctx: &SetupCtx, srcs: &[&[f32]], edges: &[bool], prov: &[f32], mat: u32) {
+        let n = srcs.len().min(MAX_POLY);
+        if n < 3 {
+            return;
+        }
+        let mut w = [ZERO_W; MAX_POLY];
+        for (wv, src) in w.iter_mut().zip(srcs) {
+            *wv = self.window(ctx, src);
+        }
+        let w = &mut w[..n];
+        // §3.5.1 eq. 3.6: the signed area in window coordinates decides the facing.
+        let mut area: i128 = 0;
+        for i in 0..n {
+            let (a, b) = (&w[i], &w[(i + 1) % n]);
+            area += i128::from(a.fx) * i128::from(b.fy) - i128::from(b.fx) * i128::from(a.fy);
+        }
+        let front = area == 0 || ((area > 0) == ctx.ccw_front);
+        match ctx.cull {
+            Some(gl::FRONT) if front => return,
+            Some(gl::BACK) if !front => return,
+            Some(gl::FRONT_AND_BACK) => return,
+            _ => {}
+        }
+        let back = !front;
+        for (wv, src) in w.iter_mut().zip(srcs) {
+            self.varyings(ctx, wv, src, back, prov);
+        }
+        let mut flags = if back { F_BACK } else { 0 };
+        if ctx.flat {
+            flags |= F_FLAT;
+        }
+        let mode = ctx.poly_mode[usize::from(back)];
+        match mode {
+            gl::POINT | gl::LINE => {
+                let which = if mode == gl::POINT { 2 } else { 1 };
+                let off = if ctx.offset_on[which] {
+                    let [_, dx, dy] = z_slopes(&w[0], &w[1], &w[2]);
+                    offset(ctx, dx, dy)
+                } else {
+                    0.0
+                };
+                for i in 0..n {
+                    if !edges.get(i).copied().unwrap_or(false) {
+                        continue;
+                    }
+                    if mode == gl::POINT {
+                        self.point(ctx, &w[i], off, flags & F_BACK, mat);
+                    } else {
+                        let (a, b) = (w[i], w[(i + 1) % n]);
+                        self.line(ctx, &a, &b, off, flags & F_BACK, mat);
+                    }
+                }
+            }
+            _ => {
+                if area == 0 {
+                    return;
+                }
+                if ctx.phong {
+                    flags |= F_PHONG;
+                }
+                for i in 1..n - 1 {
+                    self.tri(ctx, &w[0], &w[i], &w[i + 1], flags, mat);
+                }
+            }
+        }
+    }
+
+    /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
+    fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
+        let mut area = (b.fx - a.fx) * (c.fy - a.fy) - (c.fx - a.fx) * (b.fy - a.fy);
+        let (b, c) = if area < 0 {
+            area = -area;
+            (c, b)
+        } else {
+            (b, c)
+        };
+        if area == 0 {
+            return;
+        }
+        let v = [a, b, c];
+        let (minx, maxx) = (a.fx.min(b.fx).min(c.fx), a.fx.max(b.fx).max(c.fx));
+        let (miny, maxy) = (a.fy.min(b.fy).min(c.fy), a.fy.max(b.fy).max(c.fy));
+        // Pixels whose centre (i + 0.5) can lie inside.
+        let lo = |m: i64| -((128 - m).div_euclid(256));
+        let hi = |m: i64| (m - 128).div_euclid(256);
+        let bbox = [
+            clamp_i32(lo(minx)).max(ctx.rect[0]),
+            clamp_i32(lo(miny)).max(ctx.rect[1]),
+            clamp_i32(hi(maxx)).min(ctx.rect[2]),
+            clamp_i32(hi(maxy)).min(ctx.rect[3]),
+        ];
+        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+            return;
+        }
+        let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
+        let mut e = [[0i64; 3]; 3];
+        let mut lam = [[0f64; 3]; 3];
+        for k in 0..3 {
+            let (p, q) = (v[k], v[(k + 1) % 3]);
+            let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
+            let e00 = dx * (128 - p.fy) - dy * (128 - p.fx);
+            let (ex, ey) = (-dy * 256, dx * 256);
+            // Top-left rule in GL's y-up window: a left edge (going down) or a top edge (going
+            // left) owns the pixel centres exactly on it; other edges do not.
+            let owns = dy < 0 || (dy == 0 && dx < 0);
+            e[k] = [e00 - i64::from(!owns), ex, ey];
+            // Barycentric of the vertex opposite edge k, relative to the bbox corner.
+            let inv = 1.0 / area as f64;
+            lam[(k + 2) % 3] = [
+                (e00 + ex * ox + ey * oy) as f64 * inv,
+                ex as f64 * inv,
+                ey as f64 * inv,
+            ];
+        }
+        let plane = |f: [f64; 3]| -> [f64; 3] {
+            let mut r = [0.0; 3];
+            for (j, rj) in r.iter_mut().enumerate() {
+                *rj = f[0] * lam[0][j] + f[1] * lam[1][j] + f[2] * lam[2][j];
+            }
+            r
+        };
+        let mut z = plane([a.z, b.z, c.z]);
+        if ctx.offset_on[0] {
+            z[0] += offset(ctx, z[1], z[2]);
+        }
+        let voff = self.pool.len() as u32;
+        let iw = [a.iw, b.iw, c.iw].map(f64::from);
+        self.pool.extend(plane(iw).map(|x| x as f32));
+        let nflat = if flags & F_FLAT != 0 {
+            ctx.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        for k in 0..ctx.rl.n {
+            let f = [a.v[k], b.v[k], c.v[k]].map(f64::from);
+            if k < nflat {
+                self.pool.extend([f[0] as f32, 0.0, 0.0]);
+            } else {
+                let p = plane([f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]);
+                self.pool.extend(p.map(|x| x as f32));
+            }
+        }
+        self.push(RPrim {
+            kind: Kind::Tri,
+            flags,
+            bbox,
+            mat,
+            voff,
+            e,
+            z,
+            g: [0.0; 5],
+        });
+    }
+
+    /// A line segment (§3.5): endpoints snapped like triangle vertices, varyings at both ends.
+    fn line(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, off: f64, flags: u8, mat: u32) {
+        let f = |v: i64| v as f32 / 256.0;
+        let g = [f(a.fx), f(a.fy), f(b.fx), f(b.fy), ctx.line_width];
+        let wi = ctx.line_width.round().max(1.0) + 2.0;
+        let bbox = [
+            clamp_f(g[0].min(g[2]) - wi).max(ctx.rect[0]),
+            clamp_f(g[1].min(g[3]) - wi).max(ctx.rect[1]),
+            clamp_f(g[0].max(g[2]) + wi).min(ctx.rect[2]),
+            clamp_f(g[1].max(g[3]) + wi).min(ctx.rect[3]),
+        ];
+        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+            return;
+        }
+        let voff = self.pool.len() as u32;
+        let n = ctx.rl.n;
+        self.pool.extend([a.iw, b.iw]);
+        self.pool.extend_from_slice(&a.v[..n]);
+        self.pool.extend_from_slice(&b.v[..n]);
+        self.push(RPrim {
+            kind: Kind::Line,
+            flags,
+            bbox,
+            mat,
+            voff,
+            e: [[0; 3]; 3],
+            z: [a.z + off, b.z + off, 0.0],
+            g,
+        });
+    }
+
+    /// A point (§3.4): a square of side round(size) centred on the vertex.
+    fn point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
+        let (x, y) = (a.fx as f32 / 256.0, a.fy as f32 / 256.0);
+        let size = ctx.point_size.round().max(1.0);
+        let x0 = clamp_f((x - size / 2.0 + 0.5).floor());
+        let y0 = clamp_f((y - size / 2.0 + 0.5).floor());
+        let s = size.min(1e6) as i32;
+        let bbox = [
+            x0.max(ctx.rect[0]),
+            y0.max(ctx.rect[1]),
+            x0.saturating_add(s - 1).min(ctx.rect[2]),
+            y0.saturating_add(s - 1).min(ctx.rect[3]),
+        ];
+        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+            return;
+        }
+        let voff = self.pool.len() as u32;
+        self.pool.extend_from_slice(&a.v[..ctx.rl.n]);
+        self.push(RPrim {
+            kind: Kind::Point,
+            flags,
+            bbox,
+            mat,
+            voff,
+            e: [[0; 3]; 3],
+            z: [a.z + off, 0.0, 0.0],
+            g: [x, y, size, 0.0, 0.0],
+        });
+    }
+
+    /// Appends `p` and bins it into every tile its bounding box overlaps.
+    fn push(&mut self, p: RPrim) {
+        let idx = self.prims.len() as u32;
+        let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
+        let tiles_x = self.bins_x;
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                if let Some(b) = self.bins.get_mut(ty * tiles_x + tx) {
+                    b.push(idx);
+                }
+            }
+        }
+        self.prims.push(p);
+    }
+}
+
+const ZERO_W: WVert = WVert {
+    fx: 0,
+    fy: 0,
+    z: 0.0,
+    iw: 0.0,
+    v: [0.0; MAXV],
+};
+
+/// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).
+fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
+    let (x1, y1) = ((b.fx - a.fx) as f64 / 256.0, (b.fy - a.fy) as f64 / 256.0);
+    let (x2, y2) = ((c.fx - a.fx) as f64 / 256.0, (c.fy - a.fy) as f64 / 256.0);
+    let (z1, z2) = (b.z - a.z, c.z - a.z);
+    let det = x1 * y2 - x2 * y1;
+    if det == 0.0 {
+        return [0.0; 3];
+    }
+    [0.0, (z1 * y2 - z2 * y1) / det, (x1 * z2 - x2 * z1) / det]
+}
+
+/// Polygon offset (§3.5.5): factor · max slope + units · r, r = 2^-24 for a 24-bit depth buffer.
+fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
+    let m = dzdx.abs().max(dzdy.abs());
+    ctx.factor * m + ctx.units / f64::from(1u32 << 24)
+}
+
+fn clamp_i32(v: i64) -> i32 {
+    v.clamp(i64::from(i32::MIN / 2), i64::from(i32::MAX / 2)) as i32
+}
+
+fn clamp_f(v: f32) -> i32 {
+    v.floor().clamp(-1e9, 1e9) as i32
+}
+
+#[inline(always)]
+fn copy(dst: &mut [f32; MAXV], d: usize, src: &[f32], s: usize, n: usize) {
+    if let (Some(o), Some(i)) = (dst.get_mut(d..d + n), src.get(s..s + n)) {
+        o.copy_from_slice(i);
+    }
+}
+
+/// Which tiles `bbox` overlaps: `(tx0, ty0, tx1, ty1)` inclusive.
+pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
+    let t = |v: i32| (v.max(0) as usize) / TILE;
+    [t(bbox[0]), t(bbox[1]), t(bbox[2]), t(bbox[3])]
+}

@@ -1,0 +1,381 @@
+//! The vertex stage: modelview and projection transforms, the normal transform with
+//! RESCALE_NORMAL / NORMALIZE, and the GL 1.x lighting equation (GL 2.1 §2.11, §2.14.1).
+//!
+//! Design decision: `Lighting::shade` is the one implementation of the lighting equation; the
+//! vertex stage calls it per vertex and the PHONG_WIN fragment path calls it per fragment, so the
+//! two shading modes can never disagree about the equation. Results are written to one flat
+//! `f32` array with a per-flush `Layout`, carrying only the attributes the flush needs.
+
+use glam::{Mat3, Mat4, Vec3, Vec4, Vec4Swizzles};
+use rayon::prelude::*;
+
+use super::batch::Batch;
+use crate::gl;
+use crate::state::{Material, State, BACK, FRONT, MAX_LIGHTS};
+
+/// Where each attribute lives inside one processed vertex (offsets in `f32`s; clip position at 0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Layout {
+    /// Floats per vertex.
+    pub stride: usize,
+    /// Front primary colour (always present; the vertex colour when lighting is off).
+    pub col: usize,
+    /// Front secondary colour, when the colour sum can use it.
+    pub spec: Option<usize>,
+    /// Back primary colour, under two-sided lighting.
+    pub col_b: Option<usize>,
+    /// Back secondary colour, under two-sided lighting with a secondary colour.
+    pub spec_b: Option<usize>,
+    /// Texture coordinates of unit 0.
+    pub tex: Option<usize>,
+    /// Eye-space position (x, y, z, w), for user clip planes and per-fragment lighting.
+    pub eye: Option<usize>,
+    /// Eye-space normal (after rescale/normalize), for per-fragment lighting.
+    pub nrm: Option<usize>,
+    /// Unlit vertex colour, for COLOR_MATERIAL under per-fragment lighting.
+    pub raw: Option<usize>,
+}
+
+impl Layout {
+    /// The layout `state` needs.
+    pub fn for_state(state: &State) -> Self {
+        let lit = state.enables.lighting;
+        let phong = lit && state.shade_model == gl::PHONG_WIN;
+        let spec = (lit && state.light_model.color_control == gl::SEPARATE_SPECULAR_COLOR)
+            || state.enables.color_sum;
+        let two = lit && state.light_model.two_side;
+        let tex = state.enables.texture_2d[0] || state.enables.texture_1d[0];
+        let user = state.enables.clip_planes.iter().any(|&b| b);
+        let mut l = Layout {
+            col: 4,
+            ..Layout::default()
+        };
+        let mut n = 8;
+        let mut take = |k: usize| {
+            let o = n;
+            n += k;
+            Some(o)
+        };
+        if spec {
+            l.spec = take(4);
+        }
+        if two {
+            l.col_b = take(4);
+            if spec {
+                l.spec_b = take(4);
+            }
+        }
+        if tex {
+            l.tex = take(4);
+        }
+        if phong || user {
+            l.eye = take(4);
+        }
+        if phong {
+            l.nrm = take(3);
+            l.raw = take(4);
+        }
+        l.stride = n;
+        l
+    }
+}
+
+/// One enabled light with what the equation needs, in eye coordinates.
+#[derive(Clone, Copy, Debug, Default)]
+struct Src {
+    ambient: Vec3,
+    diffuse: Vec3,
+    specular: Vec3,
+    /// xyz: position (w != 0, already divided) or direction (w == 0).
+    pos: Vec3,
+    positional: bool,
+    /// Unit spot direction.
+    spot_dir: Vec3,
+    spot_exp: f32,
+    /// cos(SPOT_CUTOFF), or None for cutoff 180.
+    spot_cos: Option<f32>,
+    att: [f32; 3],
+}
+
+/// The lighting parameters of one flush (GL 2.1 §2.14.1), ready to evaluate at any point.
+#[derive(Clone, Debug)]
+pub struct Lighting {
+    srcs: [Src; MAX_LIGHTS],
+    n: usize,
+    scene_ambient: Vec3,
+    local_viewer: bool,
+    separate: bool,
+    /// COLOR_MATERIAL: which faces track the colour, and the mode.
+    color_material: Option<([bool; 2], u32)>,
+}
+
+impl Lighting {
+    /// The lighting state of `state`, whether or not LIGHTING is enabled.
+    pub fn new(state: &State) -> Self {
+        let mut srcs = [Src::default(); MAX_LIGHTS];
+        let mut n = 0;
+        for (l, _) in state
+            .lights
+            .iter()
+            .zip(state.enables.lights)
+            .filter(|(_, on)| *on)
+        {
+            let positional = l.position.w != 0.0;
+            srcs[n] = Src {
+                ambient: l.ambient.xyz(),
+                diffuse: l.diffuse.xyz(),
+                specular: l.specular.xyz(),
+                pos: if positional {
+                    l.position.xyz() / l.position.w
+                } else {
+                    l.position.xyz()
+                },
+                positional,
+                spot_dir: l.spot_direction.normalize_or_zero(),
+                spot_exp: l.spot_exponent,
+                spot_cos: (l.spot_cutoff != 180.0).then(|| l.spot_cutoff.to_radians().cos()),
+                att: [
+                    l.constant_attenuation,
+                    l.linear_attenuation,
+                    l.quadratic_attenuation,
+                ],
+            };
+            n += 1;
+        }
+        let faces = match state.color_material_face {
+            gl::FRONT => [true, false],
+            gl::BACK => [false, true],
+            _ => [true, true],
+        };
+        Lighting {
+            srcs,
+            n,
+            scene_ambient: state.light_model.ambient.xyz(),
+            local_viewer: state.light_model.local_viewer,
+            separate: state.light_model.color_control == gl::SEPARATE_SPECULAR_COLOR,
+            color_material: state
+                .enables
+                .color_material
+                .then_some((faces, state.color_material_mode)),
+        }
+    }
+
+    /// The lit (primary, secondary) colours, clamped to [0, 1], of a point at eye position `v`
+    /// with unit normal `n` (already negated for a back face), material `m` of face `face`
+    /// (FRONT or BACK), and vertex colour `color` for COLOR_MATERIAL (GL 2.1 §2.14.1, §2.14.3).
+    /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
+    #[inline]
+    pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
+        let (mut acm, mut dcm, mut scm, mut ecm) = (m.ambient, m.diffuse, m.specular, m.emission);
+        if let Some((faces, mode)) = self.color_material {
+            if faces.get(face).copied().unwrap_or(false) {
+                match mode {
+                    gl::AMBIENT => acm = color,
+                    gl::DIFFUSE => dcm = color,
+                    gl::SPECULAR => scm = color,
+                    gl::EMISSION => ecm = color,
+                    _ => {
+                        acm = color;
+                        dcm = color;
+                    }
+                }
+            }
+        }
+        let (acm, dcm3, scm) = (acm.xyz(), dcm.xyz(), scm.xyz());
+        let mut c = ecm.xyz() + self.scene_ambient * acm;
+        let mut s = Vec3::ZERO;
+        let eye_dir = if self.local_viewer {
+            (-v).normalize_or_zero()
+        } else {
+            Vec3::Z
+        };
+        for l in &self.srcs[..self.n] {
+            let (vp, att) = if l.positional {
+                let d = l.pos - v;
+                let dist = d.length();
+                let k = l.att[0] + l.att[1] * dist + l.att[2] * dist * dist;
+                (d.normalize_or_zero(), 1.0 / k)
+            } else {
+                (l.pos.normalize_or_zero(), 1.0)
+            };
+            let spot = match l.spot_cos {
+                None => 1.0,
+                Some(cos_cut) => {
+                    let cosang = (-vp).dot(l.spot_dir);
+                    if cosang >= cos_cut {
+                        cosang.max(0.0).powf(l.spot_exp)
+                    } else {
+                        // Outside the cone the light contributes nothing at all.
+                        continue;
+                    }
+                }
+            };
+            let k = att * spot;
+            let ndl = n.dot(vp);
+            let mut term = l.ambient * acm;
+            if ndl > 0.0 {
+                term += ndl * l.diffuse * dcm3;
+                let h = (vp + eye_dir).normalize_or_zero();
+                let ndh = n.dot(h).max(0.0);
+                let sp = ndh.powf(m.shininess) * l.specular * scm;
+                if self.separate {
+                    s += k * sp;
+                } else {
+                    term += sp;
+                }
+            }
+            c += k * term;
+        }
+        let alpha = dcm.w;
+        (
+            c.extend(alpha).clamp(Vec4::ZERO, Vec4::ONE),
+            s.extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
+        )
+    }
+}
+
+/// The per-flush transform state.
+#[derive(Clone, Debug)]
+pub struct Transform {
+    mv: Mat4,
+    proj: Mat4,
+    normal: Mat3,
+    normalize: bool,
+}
+
+impl Transform {
+    /// Matrices of `state`: the normal matrix is the inverse transpose of the modelview's upper
+    /// 3x3 (GL 2.1 §2.11.3), times the RESCALE_NORMAL factor when that is enabled.
+    pub fn new(state: &State) -> Self {
+        let mv = *state.modelview.top();
+        let inv = Mat3::from_mat4(mv).inverse();
+        let mut normal = inv.transpose();
+        if state.enables.rescale_normal {
+            // §2.11.3: f = 1 / sqrt(m31² + m32² + m33²), m the entries of the inverse.
+            let row3 = inv.row(2);
+            normal *= 1.0 / row3.length();
+        }
+        Transform {
+            mv,
+            proj: *state.projection.top(),
+            normal,
+            normalize: state.enables.normalize,
+        }
+    }
+}
+
+/// Runs the vertex stage over the whole batch into `out` (`layout.stride` floats per vertex).
+pub fn process(state: &State, batch: &Batch, layout: &Layout, out: &mut Vec<f32>) {
+    let n = batch.len();
+    out.clear();
+    out.resize(n * layout.stride, 0.0);
+    let tf = Transform::new(state);
+    let lighting = state.enables.lighting.then(|| Lighting::new(state));
+    let lit = Lit {
+        state,
+        batch,
+        layout,
+        tf: &tf,
+        lighting: lighting.as_ref(),
+    };
+    const CHUNK: usize = 4096;
+    if n > 2 * CHUNK {
+        out.par_chunks_mut(CHUNK * layout.stride)
+            .enumerate()
+            .for_each(|(c, chunk)| lit.run(c * CHUNK, chunk));
+    } else {
+        lit.run(0, out);
+    }
+}
+
+struct Lit<'a> {
+    state: &'a State,
+    batch: &'a Batch,
+    layout: &'a Layout,
+    tf: &'a Transform,
+    lighting: Option<&'a Lighting>,
+}
+
+impl Lit<'_> {
+    fn run(&self, first: usize, out: &mut [f32]) {
+        let l = self.layout;
+        let b = self.batch;
+        let state = self.state;
+        for (k, o) in out.chunks_exact_mut(l.stride).enumerate() {
+            let i = first + k;
+            let (Some(&p), Some(&nrm), Some(&color), Some(&color2)) = (
+                b.pos.get(i),
+                b.normal.get(i),
+                b.color.get(i),
+                b.color2.get(i),
+            ) else {
+                return;
+            };
+            let eye = self.tf.mv * p;
+            let clip = self.tf.proj * eye;
+            put(o, 0, clip);
+            if let Some(o_eye) = l.eye {
+                put(o, o_eye, eye);
+            }
+            if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
+                put(o, t, tc);
+            }
+            let Some(lighting) = self.lighting else {
+                put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
+                if let Some(s) = l.spec {
+                    put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
+                }
+                continue;
+            };
+            let mut n = self.tf.normal * nrm;
+            if self.tf.normalize {
+                n = n.normalize_or_zero();
+            }
+            let v = if eye.w != 0.0 {
+                eye.xyz() / eye.w
+            } else {
+                eye.xyz()
+            };
+            let mats = if b.snapshots.is_empty() {
+                &state.materials
+            } else {
+                b.mat
+                    .get(i)
+                    .and_then(|&m| b.snapshots.get(m as usize))
+                    .unwrap_or(&state.materials)
+            };
+            let (c, s) = lighting.shade(&mats[FRONT], FRONT, color, v, n);
+            put(o, l.col, c);
+            if let Some(so) = l.spec {
+                put(o, so, s);
+            }
+            if let Some(cb) = l.col_b {
+                let (c, s) = lighting.shade(&mats[BACK], BACK, color, v, -n);
+                put(o, cb, c);
+                if let Some(sb) = l.spec_b {
+                    put(o, sb, s);
+                }
+            }
+            if let Some(no) = l.nrm {
+                put3(o, no, n);
+            }
+            if let Some(r) = l.raw {
+                put(o, r, color);
+            }
+        }
+    }
+}
+
+#[inline(always)]
+fn put(o: &mut [f32], at: usize, v: Vec4) {
+    if let Some(d) = o.get_mut(at..at + 4) {
+        d.copy_from_slice(&v.to_array());
+    }
+}
+
+#[inline(always)]
+fn put3(o: &mut [f32], at: usize, v: Vec3) {
+    if let Some(d) = o.get_mut(at..at + 3) {
+        d.copy_from_slice(&v.to_array());
+    }
+}
