@@ -66,13 +66,13 @@ impl Clipper {
     pub fn code(&self, v: &[f32]) -> u16 {
         let mut c = 0;
         for k in 0..7 {
-            if !(self.dist(v, k) >= 0.0) {
+            if outside(self.dist(v, k)) {
                 c |= 1 << k;
             }
         }
         if self.any_user {
             for k in 0..MAX_CLIP_PLANES {
-                if self.user_on[k] && !(self.dist(v, 7 + k) >= 0.0) {
+                if self.user_on[k] && outside(self.dist(v, 7 + k)) {
                     c |= 1 << (7 + k);
                 }
             }
@@ -83,6 +83,7 @@ impl Clipper {
     /// Clips the polygon in `a` (`n` vertices of `stride` floats, edge flag of the edge starting
     /// at each in `edges`) against every plane set in `planes`; the result is left in `a`/`edges`
     /// and its vertex count returned (0 when nothing is left). `b` is scratch.
+    #[allow(clippy::needless_range_loop)] // i indexes both the vertex array and the flags
     pub fn polygon(
         &self,
         stride: usize,
@@ -155,7 +156,7 @@ impl Clipper {
                 t1 = t1.min(t);
             }
         }
-        if !(t0 <= t1) {
+        if t0.is_nan() || t1.is_nan() || t0 > t1 {
             return false;
         }
         let (head, tail) = v.split_at_mut(stride);
@@ -166,4 +167,10 @@ impl Clipper {
         }
         true
     }
+}
+
+/// Outside a plane: negative distance, or NaN (a NaN vertex never reaches the rasteriser).
+#[inline(always)]
+fn outside(d: f32) -> bool {
+    d.is_nan() || d < 0.0
 }

@@ -34,6 +34,9 @@ pub struct FragCtx<'a> {
     pub lighting: Option<&'a Lighting>,
     /// Materials by snapshot index.
     pub mats: &'a [[Material; 2]],
+    /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
+    /// reaches the colour write (tests count coverage with it).
+    pub count: bool,
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -119,7 +122,9 @@ impl FragCtx<'_> {
         let Some(dst) = bufs.color.get_mut(i) else {
             return;
         };
-        if self.color_mask == [true; 4] {
+        if self.count {
+            dst[0] = dst[0].wrapping_add(1);
+        } else if self.color_mask == [true; 4] {
             *dst = px;
         } else {
             for k in 0..4 {
@@ -141,7 +146,15 @@ impl FragCtx<'_> {
 
     /// A triangle span: pixels `x0..=x1` of row `y` (all inside the tile), `planes` the
     /// primitive's pool floats (1/w plane then one plane per varying, relative to its bbox corner).
-    pub fn tri_span(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], y: i32, x0: i32, x1: i32) {
+    pub fn tri_span(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f64;
         let zrow = p.z[0] + p.z[2] * fy;

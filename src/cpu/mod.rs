@@ -47,6 +47,8 @@ pub struct Renderer {
     vout: Vec<f32>,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
+    /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
+    pub(crate) count_coverage: bool,
 }
 
 impl Renderer {
@@ -58,6 +60,7 @@ impl Renderer {
             vout: Vec::new(),
             asm: Vec::new(),
             workers: Vec::new(),
+            count_coverage: false,
         }
     }
 
@@ -167,6 +170,7 @@ impl Renderer {
             rl: ctx.rl,
             lighting: lighting.as_ref(),
             mats,
+            count: self.count_coverage,
         };
         let workers = &self.workers[..nw];
         let tiles_x = ctx.tiles_x;
@@ -176,7 +180,10 @@ impl Renderer {
             .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
             .enumerate()
             .for_each(|(t, (color, depth))| {
-                if workers.iter().all(|w| w.bins.get(t).map_or(true, |b| b.is_empty())) {
+                if workers
+                    .iter()
+                    .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
+                {
                     return;
                 }
                 let mut bufs = TileBufs {

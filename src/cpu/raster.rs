@@ -99,7 +99,10 @@ fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]
         // §3.5.1 eq. 3.10: perspective-correct parameter for the varyings; z is linear.
         let tp = t * iwb / ((1.0 - t) * iwa + t * iwb);
         for (k, vk) in v.iter_mut().enumerate().take(n) {
-            let (a, b) = (va.get(k).copied().unwrap_or(0.0), vb.get(k).copied().unwrap_or(0.0));
+            let (a, b) = (
+                va.get(k).copied().unwrap_or(0.0),
+                vb.get(k).copied().unwrap_or(0.0),
+            );
             *vk = a + tp * (b - a);
         }
         let z = p.z[0] + f64::from(t) * (p.z[1] - p.z[0]);

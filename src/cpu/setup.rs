@@ -190,7 +190,10 @@ impl Worker {
             b.clear();
         }
         let s = ctx.layout.stride;
-        let vert = |i: u32| vout.get(i as usize * s..(i as usize + 1) * s).unwrap_or(&[]);
+        let vert = |i: u32| {
+            vout.get(i as usize * s..(i as usize + 1) * s)
+                .unwrap_or(&[])
+        };
         for p in asm {
             let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
             let prov = vert(p.provoking);
@@ -215,7 +218,9 @@ impl Worker {
                         for v in vs {
                             a.extend_from_slice(v);
                         }
-                        let n = ctx.clipper.polygon(s, planes, &mut a, &mut b, &mut edges, 3);
+                        let n = ctx
+                            .clipper
+                            .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
                         let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
                         for (i, src) in srcs.iter_mut().take(n).enumerate() {
                             *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
