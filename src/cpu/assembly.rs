@@ -22,10 +22,15 @@ pub struct Asm {
     pub provoking: u32,
 }
 
-/// Appends the primitives of `prims` to `out`; `edge` are the batch's edge flags.
-pub fn assemble(prims: &[Prim], edge: &[bool], out: &mut Vec<Asm>) {
+/// Appends the primitives of `prims` to `out`: `idx` maps each vertex given to its unique
+/// vertex, `edge` are the unique vertices' edge flags.
+pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], out: &mut Vec<Asm>) {
     out.clear();
-    let ef = |i: u32| edge.get(i as usize).copied().unwrap_or(true);
+    let start = out.len();
+    let ef = |i: u32| {
+        let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
+        edge.get(u as usize).copied().unwrap_or(true)
+    };
     let point = |a: u32| Asm {
         n: 1,
         edges: 0,
@@ -106,5 +111,11 @@ pub fn assemble(prims: &[Prim], edge: &[bool], out: &mut Vec<Asm>) {
             }
             _ => {}
         }
+    }
+    // Assembled in given-vertex positions; now point them at the unique vertices.
+    let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
+    for a in &mut out[start..] {
+        a.v = a.v.map(map);
+        a.provoking = map(a.provoking);
     }
 }

@@ -2,28 +2,40 @@
 //! structure-of-arrays form, plus the list of primitives (Begin/End pairs) over it.
 //!
 //! GL 2.1 §2.6–2.7: a vertex takes the current normal, colours, texture coordinates and edge
-//! flag at the moment `Vertex` is called. Design decision: the arrays are cleared, not freed, at
-//! each flush, so steady-state drawing allocates nothing per vertex; `Material` changes inside
-//! Begin/End (§2.14.3) are rare, so they are stored as whole snapshots that vertices index.
+//! flag at the moment `Vertex` is called. Design decision: a vertex identical in every input to
+//! one already batched (found through a small direct-mapped cache, compared bit for bit) is
+//! stored once and referenced by index, so the vertex stage lights it once: immediate-mode
+//! meshes such as one strip per grid cell send each vertex up to four times, and the vertex
+//! stage is a pure function of these inputs, so the result is exactly the same. The arrays are
+//! cleared, not freed, at each flush, so steady-state drawing allocates nothing per vertex;
+//! `Material` changes inside Begin/End (§2.14.3) are rare, so they are stored as whole snapshots
+//! that vertices index.
 
 use glam::{Vec3, Vec4};
 
 use crate::state::{Current, Material};
 
-/// One Begin/End pair: `count` vertices from `first`.
+/// One Begin/End pair: `count` entries of `Batch::idx` from `first`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Prim {
     /// The Begin mode (POINTS ..= POLYGON).
     pub mode: u32,
-    /// Index of the first vertex in the batch arrays.
+    /// Index of the first entry in `Batch::idx`.
     pub first: u32,
     /// Number of vertices.
     pub count: u32,
 }
 
+/// Entries in the vertex cache (a power of two).
+const CACHE: usize = 1 << 13;
+
 /// The batched vertices (object coordinates and current attributes) and primitives.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct Batch {
+    /// Per vertex given, the index of its (unique) vertex in the attribute arrays.
+    pub idx: Vec<u32>,
+    /// Direct-mapped cache: input hash → a vertex index (validated on use).
+    cache: Box<[u32; CACHE]>,
     /// Object-coordinate positions.
     pub pos: Vec<Vec4>,
     /// Current normal at each vertex.
@@ -49,8 +61,34 @@ pub struct Batch {
     cur_mat: u32,
 }
 
+impl Default for Batch {
+    fn default() -> Self {
+        Batch {
+            idx: Vec::new(),
+            cache: Box::new([u32::MAX; CACHE]),
+            pos: Vec::new(),
+            normal: Vec::new(),
+            color: Vec::new(),
+            color2: Vec::new(),
+            tex: Vec::new(),
+            edge: Vec::new(),
+            mat: Vec::new(),
+            prims: Vec::new(),
+            snapshots: Vec::new(),
+            base: None,
+            cur_mat: 0,
+        }
+    }
+}
+
+/// Bitwise equality (NaNs with equal bits are equal, -0 and 0 differ): identical inputs.
+#[inline(always)]
+fn same4(a: Vec4, b: Vec4) -> bool {
+    a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits)
+}
+
 impl Batch {
-    /// Number of batched vertices.
+    /// Number of unique batched vertices.
     pub fn len(&self) -> usize {
         self.pos.len()
     }
@@ -64,7 +102,7 @@ impl Batch {
     pub fn begin(&mut self, mode: u32) {
         self.prims.push(Prim {
             mode,
-            first: self.pos.len() as u32,
+            first: self.idx.len() as u32,
             count: 0,
         });
     }
@@ -76,6 +114,28 @@ impl Batch {
             return;
         };
         p.count += 1;
+        let bits = |v: f32| u64::from(v.to_bits());
+        let mut h = bits(position.x) ^ bits(position.y).rotate_left(21) ^ bits(position.z).rotate_left(42);
+        h ^= bits(position.w).rotate_left(11) ^ bits(c.normal.x).rotate_left(32);
+        h ^= bits(c.normal.y).rotate_left(53) ^ bits(c.normal.z).rotate_left(7);
+        h ^= bits(c.color.x) ^ bits(c.color.y).rotate_left(16) ^ bits(c.color.z).rotate_left(48);
+        let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 51) as usize & (CACHE - 1);
+        let hit = self.cache[slot] as usize;
+        if hit < self.pos.len()
+            && same4(self.pos[hit], position)
+            && self.normal[hit].to_array().map(f32::to_bits) == c.normal.to_array().map(f32::to_bits)
+            && same4(self.color[hit], c.color)
+            && same4(self.color2[hit], c.secondary_color)
+            && same4(self.tex[hit], c.tex_coords[0])
+            && self.edge[hit] == c.edge_flag
+            && self.mat[hit] == self.cur_mat
+        {
+            self.idx.push(hit as u32);
+            return;
+        }
+        let i = self.pos.len();
+        self.cache[slot] = i as u32;
+        self.idx.push(i as u32);
         self.pos.push(position);
         self.normal.push(c.normal);
         self.color.push(c.color);
@@ -114,6 +174,7 @@ impl Batch {
 
     /// Empties the batch, keeping capacity (the front end flushes only outside Begin/End).
     pub fn clear(&mut self) {
+        self.idx.clear();
         self.pos.clear();
         self.normal.clear();
         self.color.clear();

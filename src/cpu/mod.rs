@@ -125,7 +125,12 @@ impl Renderer {
         // Vertex stage (§2.11, §2.14), parallel over large batches.
         vertex::process(state, &self.batch, &layout, &mut self.vout);
         // Primitive assembly (§2.6).
-        assembly::assemble(&self.batch.prims, &self.batch.edge, &mut self.asm);
+        assembly::assemble(
+            &self.batch.prims,
+            &self.batch.idx,
+            &self.batch.edge,
+            &mut self.asm,
+        );
 
         // Clipping and setup, split in order across workers.
         let rect = framebuffer::scissor_rect(state);

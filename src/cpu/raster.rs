@@ -38,6 +38,26 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
 
 fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
     let [x0, y0, x1, y1] = r;
+    if x1 - x0 < SMALL {
+        // Narrow: test each pixel centre (additions only) instead of dividing per edge.
+        for y in y0..=y1 {
+            let mut e = p.e.map(|e| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0));
+            let (mut l, mut h) = (i32::MAX, i32::MIN);
+            for x in x0..=x1 {
+                if (e[0] | e[1] | e[2]) >= 0 {
+                    l = l.min(x);
+                    h = x;
+                }
+                for k in 0..3 {
+                    e[k] += p.e[k][1];
+                }
+            }
+            if l <= h {
+                ctx.tri_span(bufs, p, planes, y, l, h);
+            }
+        }
+        return;
+    }
     for y in y0..=y1 {
         let (mut l, mut h) = (i64::from(x0), i64::from(x1));
         for e in &p.e {
@@ -57,6 +77,9 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         }
     }
 }
+
+/// Bounding boxes narrower than this are scanned pixel by pixel.
+const SMALL: i32 = 12;
 
 fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]) {
     let [ax, ay, bx, by, width] = p.g;

@@ -210,7 +210,7 @@ impl Worker {
                     }
                     let planes = codes[0] | codes[1] | codes[2];
                     if planes == 0 {
-                        self.polygon(ctx, &vs, &edges, prov, mat);
+                        self.polygon::<3>(ctx, &vs, &edges, prov, mat);
                     } else {
                         let mut a = std::mem::take(&mut self.a);
                         let mut b = std::mem::take(&mut self.b);
@@ -225,7 +225,7 @@ impl Worker {
                         for (i, src) in srcs.iter_mut().take(n).enumerate() {
                             *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
                         }
-                        self.polygon(ctx, &srcs[..n], &edges, prov, mat);
+                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &edges, prov, mat);
                         self.a = a;
                         self.b = b;
                     }
@@ -270,7 +270,11 @@ impl Worker {
         let yw = g(1) * iw * ctx.scale[1] + ctx.offset[1];
         let zw = g(2) * iw * ctx.scale[2] + ctx.offset[2];
         // Clipping keeps xw, yw inside the viewport, at most 16384 + a guard: no overflow.
-        let snap = |x: f64| (x * 256.0).round().clamp(-1e12, 1e12) as i64;
+        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64).
+        let snap = |x: f64| {
+            let t = (x * 256.0).clamp(-1e12, 1e12);
+            (t + 0.5f64.copysign(t)) as i64
+        };
         WVert {
             fx: snap(xw),
             fy: snap(yw),
@@ -312,12 +316,20 @@ impl Worker {
 
     /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
     /// processed vertices in order, `edges[i]` the flag of the edge leaving vertex i.
-    fn polygon(&mut self, ctx: &SetupCtx, srcs: &[&[f32]], edges: &[bool], prov: &[f32], mat: u32) {
-        let n = srcs.len().min(MAX_POLY);
+    /// `N` bounds the vertex count (3 on the unclipped path, so no large array is initialised).
+    fn polygon<const N: usize>(
+        &mut self,
+        ctx: &SetupCtx,
+        srcs: &[&[f32]],
+        edges: &[bool],
+        prov: &[f32],
+        mat: u32,
+    ) {
+        let n = srcs.len().min(N);
         if n < 3 {
             return;
         }
-        let mut w = [ZERO_W; MAX_POLY];
+        let mut w = [ZERO_W; N];
         for (wv, src) in w.iter_mut().zip(srcs) {
             *wv = self.window(ctx, src);
         }

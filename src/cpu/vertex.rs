@@ -95,6 +95,10 @@ struct Src {
     /// cos(SPOT_CUTOFF), or None for cutoff 180.
     spot_cos: Option<f32>,
     att: [f32; 3],
+    /// Attenuation is exactly 1 (constant 1, linear and quadratic 0): skip computing it.
+    no_att: bool,
+    /// Directional light: unit VP, the same at every point.
+    vp_dir: Vec3,
 }
 
 /// The lighting parameters of one flush (GL 2.1 §2.14.1), ready to evaluate at any point.
@@ -139,6 +143,10 @@ impl Lighting {
                     l.linear_attenuation,
                     l.quadratic_attenuation,
                 ],
+                no_att: l.constant_attenuation == 1.0
+                    && l.linear_attenuation == 0.0
+                    && l.quadratic_attenuation == 0.0,
+                vp_dir: l.position.xyz().normalize_or_zero(),
             };
             n += 1;
         }
@@ -192,11 +200,17 @@ impl Lighting {
         for l in &self.srcs[..self.n] {
             let (vp, att) = if l.positional {
                 let d = l.pos - v;
-                let dist = d.length();
-                let k = l.att[0] + l.att[1] * dist + l.att[2] * dist * dist;
-                (d.normalize_or_zero(), 1.0 / k)
+                let d2 = d.length_squared();
+                let inv = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
+                let att = if l.no_att {
+                    1.0
+                } else {
+                    let dist = d2 * inv;
+                    1.0 / (l.att[0] + l.att[1] * dist + l.att[2] * d2)
+                };
+                (d * inv, att)
             } else {
-                (l.pos.normalize_or_zero(), 1.0)
+                (l.vp_dir, 1.0)
             };
             let spot = match l.spot_cos {
                 None => 1.0,
