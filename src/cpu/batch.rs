@@ -115,7 +115,8 @@ impl Batch {
         };
         p.count += 1;
         let bits = |v: f32| u64::from(v.to_bits());
-        let mut h = bits(position.x) ^ bits(position.y).rotate_left(21) ^ bits(position.z).rotate_left(42);
+        let mut h =
+            bits(position.x) ^ bits(position.y).rotate_left(21) ^ bits(position.z).rotate_left(42);
         h ^= bits(position.w).rotate_left(11) ^ bits(c.normal.x).rotate_left(32);
         h ^= bits(c.normal.y).rotate_left(53) ^ bits(c.normal.z).rotate_left(7);
         h ^= bits(c.color.x) ^ bits(c.color.y).rotate_left(16) ^ bits(c.color.z).rotate_left(48);
@@ -123,7 +124,8 @@ impl Batch {
         let hit = self.cache[slot] as usize;
         if hit < self.pos.len()
             && same4(self.pos[hit], position)
-            && self.normal[hit].to_array().map(f32::to_bits) == c.normal.to_array().map(f32::to_bits)
+            && self.normal[hit].to_array().map(f32::to_bits)
+                == c.normal.to_array().map(f32::to_bits)
             && same4(self.color[hit], c.color)
             && same4(self.color2[hit], c.secondary_color)
             && same4(self.tex[hit], c.tex_coords[0])

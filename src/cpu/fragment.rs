@@ -156,7 +156,7 @@ impl FragCtx<'_> {
         x1: i32,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
-        let fy = (y - oy) as f64;
+        let fy = (y - oy) as f32;
         let zrow = p.z[0] + p.z[2] * fy;
         let row = ((y - bufs.y) as usize) * TILE;
         let base = row + (x0 - bufs.x) as usize;
@@ -164,8 +164,8 @@ impl FragCtx<'_> {
         // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits).
         let mut mask: u64 = 0;
         for k in 0..n.min(64) {
-            let z = zrow + p.z[1] * (x0 - ox + k as i32) as f64;
-            if self.depth(bufs, base + k, z) {
+            let z = zrow + p.z[1] * (x0 - ox + k as i32) as f32;
+            if self.depth(bufs, base + k, f64::from(z)) {
                 mask |= 1 << k;
             }
         }
@@ -179,7 +179,6 @@ impl FragCtx<'_> {
         } else {
             0
         };
-        let fy = fy as f32;
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());

@@ -45,6 +45,7 @@ pub struct Renderer {
     fb: Framebuffer,
     batch: Batch,
     vout: Vec<f32>,
+    wins: Vec<setup::Win>,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
@@ -58,6 +59,7 @@ impl Renderer {
             fb: Framebuffer::new(width, height),
             batch: Batch::default(),
             vout: Vec::new(),
+            wins: Vec::new(),
             asm: Vec::new(),
             workers: Vec::new(),
             count_coverage: false,
@@ -122,8 +124,17 @@ impl Renderer {
             return;
         }
         let layout = Layout::for_state(state);
+        let rect = framebuffer::scissor_rect(state);
+        let ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
         // Vertex stage (§2.11, §2.14), parallel over large batches.
-        vertex::process(state, &self.batch, &layout, &mut self.vout);
+        vertex::process(
+            state,
+            &self.batch,
+            &layout,
+            &ctx,
+            &mut self.vout,
+            &mut self.wins,
+        );
         // Primitive assembly (§2.6).
         assembly::assemble(
             &self.batch.prims,
@@ -133,8 +144,6 @@ impl Renderer {
         );
 
         // Clipping and setup, split in order across workers.
-        let rect = framebuffer::scissor_rect(state);
-        let ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
         let nw = if self.asm.len() >= PARALLEL_SETUP {
             rayon::current_num_threads().clamp(1, 16)
         } else {
@@ -144,18 +153,18 @@ impl Renderer {
             self.workers.resize_with(nw, Worker::default);
         }
         let chunk = self.asm.len().div_ceil(nw).max(1);
-        let (vout, mats) = (&self.vout, &self.batch.mat);
+        let (vout, wins, mats) = (&self.vout, &self.wins, &self.batch.mat);
         let workers = &mut self.workers[..nw];
         if nw == 1 {
             if let Some(w) = workers.first_mut() {
-                w.run(&ctx, vout, mats, &self.asm);
+                w.run(&ctx, vout, wins, mats, &self.asm);
             }
         } else {
             let asm = &self.asm;
             workers.par_iter_mut().enumerate().for_each(|(i, w)| {
                 let lo = (i * chunk).min(asm.len());
                 let hi = ((i + 1) * chunk).min(asm.len());
-                w.run(&ctx, vout, mats, asm.get(lo..hi).unwrap_or(&[]));
+                w.run(&ctx, vout, wins, mats, asm.get(lo..hi).unwrap_or(&[]));
             });
         }
 

@@ -26,10 +26,10 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
         Kind::Tri => tri(ctx, bufs, p, data, [x0, y0, x1, y1]),
         Kind::Line => line(ctx, bufs, p, data, [x0, y0, x1, y1]),
         Kind::Point => {
-            let v = data.get(..ctx.rl.n).unwrap_or(&[]);
+            let v = data.get(3..3 + ctx.rl.n).unwrap_or(&[]);
             for y in y0..=y1 {
                 for x in x0..=x1 {
-                    ctx.fragment(bufs, p, x, y, p.z[0], v);
+                    ctx.fragment(bufs, p, x, y, f64::from(p.z[0]), v);
                 }
             }
         }
@@ -38,18 +38,19 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
 
 fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
     let [x0, y0, x1, y1] = r;
+    let edges = p.edges();
     if x1 - x0 < SMALL {
         // Narrow: test each pixel centre (additions only) instead of dividing per edge.
         for y in y0..=y1 {
-            let mut e = p.e.map(|e| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0));
+            let mut e = edges.map(|e| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0));
             let (mut l, mut h) = (i32::MAX, i32::MIN);
             for x in x0..=x1 {
                 if (e[0] | e[1] | e[2]) >= 0 {
                     l = l.min(x);
                     h = x;
                 }
-                for k in 0..3 {
-                    e[k] += p.e[k][1];
+                for (ek, edge) in e.iter_mut().zip(&edges) {
+                    *ek += edge[1];
                 }
             }
             if l <= h {
@@ -60,7 +61,7 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
     }
     for y in y0..=y1 {
         let (mut l, mut h) = (i64::from(x0), i64::from(x1));
-        for e in &p.e {
+        for e in &edges {
             // E(x) = erow + e[1]·x must be >= 0 (the tie-break bias is already in e[0]).
             let erow = e[0] + e[2] * i64::from(y);
             let dx = e[1];
@@ -82,12 +83,12 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
 const SMALL: i32 = 12;
 
 fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]) {
-    let [ax, ay, bx, by, width] = p.g;
     let n = ctx.rl.n;
     let g = |k: usize| data.get(k).copied().unwrap_or(0.0);
-    let (iwa, iwb) = (g(0), g(1));
-    let va = data.get(2..2 + n).unwrap_or(&[]);
-    let vb = data.get(2 + n..2 + 2 * n).unwrap_or(&[]);
+    let [ax, ay, bx, by, width] = [0, 1, 2, 3, 4].map(g);
+    let (iwa, iwb) = (g(5), g(6));
+    let va = data.get(7..7 + n).unwrap_or(&[]);
+    let vb = data.get(7 + n..7 + 2 * n).unwrap_or(&[]);
     let wi = width.round().max(1.0);
     let x_major = (bx - ax).abs() >= (by - ay).abs();
     // Along the major axis u from a to b; the minor coordinate m.
@@ -128,7 +129,7 @@ fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]
             );
             *vk = a + tp * (b - a);
         }
-        let z = p.z[0] + f64::from(t) * (p.z[1] - p.z[0]);
+        let z = f64::from(p.z[0] + t * (p.z[1] - p.z[0]));
         for mm in m0.max(m_lo)..=(m0 + wi as i32 - 1).min(m_hi) {
             let (x, y) = if x_major { (u, mm) } else { (mm, u) };
             ctx.fragment(bufs, p, x, y, z, &v[..n]);

@@ -84,12 +84,31 @@ pub struct RPrim {
     pub mat: u32,
     /// Offset of this primitive's floats in the worker's pool.
     pub voff: u32,
-    /// Triangle edge functions: `[E at pixel (0,0) centre (tie-break bias applied), dE/dx, dE/dy]`.
-    pub e: [[i64; 3]; 3],
-    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; line `[z0, z1, _]`; point `[z, _, _]`.
-    pub z: [f64; 3],
-    /// Line `[x0, y0, x1, y1, width]`; point `[x, y, size]` (window coordinates).
-    pub g: [f32; 5],
+    /// Triangle: the vertices' snapped window x, y (1/256 pixel), counter-clockwise.
+    pub xy: [i32; 6],
+    /// Triangle: bit k set when edge k (vertex k to k+1) owns the pixel centres exactly on it
+    /// (the top-left rule).
+    pub owns: u8,
+    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; line `[z0, z1, _]`; point
+    /// `[z, _, _]`. Single precision, as llvmpipe interpolates depth.
+    pub z: [f32; 3],
+}
+
+impl RPrim {
+    /// Triangle edge functions at pixel centres: `[E at pixel (0,0), dE/dx, dE/dy]` with the
+    /// tie-break bias applied, so a centre is covered when all three are >= 0.
+    #[inline(always)]
+    pub fn edges(&self) -> [[i64; 3]; 3] {
+        let v = self.xy.map(i64::from);
+        [0, 1, 2].map(|k| {
+            let (px, py) = (v[2 * k], v[2 * k + 1]);
+            let j = (k + 1) % 3;
+            let (dx, dy) = (v[2 * j] - px, v[2 * j + 1] - py);
+            let e00 = dx * (128 - py) - dy * (128 - px);
+            let bias = i64::from(self.owns & (1 << k) == 0);
+            [e00 - bias, -dy * 256, dx * 256]
+        })
+    }
 }
 
 /// The per-flush constants of setup.
@@ -152,6 +171,48 @@ impl SetupCtx {
     }
 }
 
+/// A processed vertex's clip code and window coordinates (computed once per vertex by the
+/// vertex stage; the window values are meaningful only when `code` is 0).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Win {
+    /// Snapped window x, y in 1/256 pixel.
+    pub fx: i64,
+    /// See `fx`.
+    pub fy: i64,
+    /// Window z.
+    pub z: f64,
+    /// 1 / w_clip.
+    pub iw: f32,
+    /// Outside-plane bits (`Clipper::code`).
+    pub code: u16,
+}
+
+impl SetupCtx {
+    /// Clip code, perspective divide and viewport/DepthRange transform (§2.11.1) of the
+    /// processed vertex `v`, x and y snapped to 1/256 pixel.
+    #[inline]
+    pub fn win(&self, v: &[f32]) -> Win {
+        let g = |i: usize| f64::from(v.get(i).copied().unwrap_or(0.0));
+        let iw = 1.0 / g(3);
+        let xw = g(0) * iw * self.scale[0] + self.offset[0];
+        let yw = g(1) * iw * self.scale[1] + self.offset[1];
+        let zw = g(2) * iw * self.scale[2] + self.offset[2];
+        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64);
+        // the clamp only matters for vertices that clipping rejects anyway.
+        let snap = |x: f64| {
+            let t = (x * 256.0).clamp(-1e12, 1e12);
+            (t + 0.5f64.copysign(t)) as i64
+        };
+        Win {
+            fx: snap(xw),
+            fy: snap(yw),
+            z: zw,
+            iw: iw as f32,
+            code: self.clipper.code(v),
+        }
+    }
+}
+
 /// A vertex in window coordinates with its varyings.
 #[derive(Clone, Copy, Debug)]
 struct WVert {
@@ -180,8 +241,9 @@ pub struct Worker {
 }
 
 impl Worker {
-    /// Sets up `asm` (indices into `vout`, `mats` the vertices' material indices).
-    pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], mats: &[u32], asm: &[Asm]) {
+    /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
+    /// coordinates, `mats` their material indices).
+    pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
         self.prims.clear();
         self.pool.clear();
         self.bins.resize_with(ctx.tiles, Vec::new);
@@ -200,7 +262,9 @@ impl Worker {
             match p.n {
                 3 => {
                     let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                    let codes = vs.map(|v| ctx.clipper.code(v));
+                    let ws =
+                        p.v.map(|i| wins.get(i as usize).copied().unwrap_or_default());
+                    let codes = ws.map(|w| w.code);
                     if codes[0] & codes[1] & codes[2] != 0 {
                         continue;
                     }
@@ -210,7 +274,7 @@ impl Worker {
                     }
                     let planes = codes[0] | codes[1] | codes[2];
                     if planes == 0 {
-                        self.polygon::<3>(ctx, &vs, &edges, prov, mat);
+                        self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
                     } else {
                         let mut a = std::mem::take(&mut self.a);
                         let mut b = std::mem::take(&mut self.b);
@@ -222,10 +286,12 @@ impl Worker {
                             .clipper
                             .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
                         let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
-                        for (i, src) in srcs.iter_mut().take(n).enumerate() {
+                        let mut cw = [Win::default(); MAX_POLY];
+                        for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
                             *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                            *w = ctx.win(src);
                         }
-                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &edges, prov, mat);
+                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
                         self.a = a;
                         self.b = b;
                     }
@@ -252,7 +318,7 @@ impl Worker {
                 }
                 _ => {
                     let v = vert(p.v[0]);
-                    if ctx.clipper.code(v) == 0 {
+                    if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
                         let mut w = self.window(ctx, v);
                         self.varyings(ctx, &mut w, v, false, prov);
                         self.point(ctx, &w, 0.0, 0, mat);
@@ -262,26 +328,9 @@ impl Worker {
         }
     }
 
-    /// Divide and viewport/DepthRange transform (§2.11.1); varyings are filled in later.
+    /// Window coordinates of processed vertex `v`; varyings are filled in later.
     fn window(&self, ctx: &SetupCtx, v: &[f32]) -> WVert {
-        let g = |i: usize| f64::from(v.get(i).copied().unwrap_or(0.0));
-        let iw = 1.0 / g(3);
-        let xw = g(0) * iw * ctx.scale[0] + ctx.offset[0];
-        let yw = g(1) * iw * ctx.scale[1] + ctx.offset[1];
-        let zw = g(2) * iw * ctx.scale[2] + ctx.offset[2];
-        // Clipping keeps xw, yw inside the viewport, at most 16384 + a guard: no overflow.
-        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64).
-        let snap = |x: f64| {
-            let t = (x * 256.0).clamp(-1e12, 1e12);
-            (t + 0.5f64.copysign(t)) as i64
-        };
-        WVert {
-            fx: snap(xw),
-            fy: snap(yw),
-            z: zw,
-            iw: iw as f32,
-            v: [0.0; MAXV],
-        }
+        from_win(&ctx.win(v))
     }
 
     /// Fills `w.v` from processed vertex `v`: the face's colours (the provoking vertex's under
@@ -321,17 +370,18 @@ impl Worker {
         &mut self,
         ctx: &SetupCtx,
         srcs: &[&[f32]],
+        wins: &[Win],
         edges: &[bool],
         prov: &[f32],
         mat: u32,
     ) {
-        let n = srcs.len().min(N);
+        let n = srcs.len().min(wins.len()).min(N);
         if n < 3 {
             return;
         }
         let mut w = [ZERO_W; N];
-        for (wv, src) in w.iter_mut().zip(srcs) {
-            *wv = self.window(ctx, src);
+        for (wv, win) in w.iter_mut().zip(wins) {
+            *wv = from_win(win);
         }
         let w = &mut w[..n];
         // §3.5.1 eq. 3.6: the signed area in window coordinates decides the facing.
@@ -419,8 +469,9 @@ impl Worker {
             return;
         }
         let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
-        let mut e = [[0i64; 3]; 3];
+        let mut owns_bits = 0u8;
         let mut lam = [[0f64; 3]; 3];
+        let inv = 1.0 / area as f64;
         for k in 0..3 {
             let (p, q) = (v[k], v[(k + 1) % 3]);
             let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
@@ -429,41 +480,42 @@ impl Worker {
             // Top-left rule in GL's y-up window: a left edge (going down) or a top edge (going
             // left) owns the pixel centres exactly on it; other edges do not.
             let owns = dy < 0 || (dy == 0 && dx < 0);
-            e[k] = [e00 - i64::from(!owns), ex, ey];
+            owns_bits |= u8::from(owns) << k;
             // Barycentric of the vertex opposite edge k, relative to the bbox corner.
-            let inv = 1.0 / area as f64;
             lam[(k + 2) % 3] = [
                 (e00 + ex * ox + ey * oy) as f64 * inv,
                 ex as f64 * inv,
                 ey as f64 * inv,
             ];
         }
-        let plane = |f: [f64; 3]| -> [f64; 3] {
-            let mut r = [0.0; 3];
-            for (j, rj) in r.iter_mut().enumerate() {
-                *rj = f[0] * lam[0][j] + f[1] * lam[1][j] + f[2] * lam[2][j];
-            }
-            r
-        };
-        let mut z = plane([a.z, b.z, c.z]);
+        let mut z = [0.0f64; 3];
+        for (j, zj) in z.iter_mut().enumerate() {
+            *zj = a.z * lam[0][j] + b.z * lam[1][j] + c.z * lam[2][j];
+        }
         if ctx.offset_on[0] {
             z[0] += offset(ctx, z[1], z[2]);
         }
+        let z = z.map(|x| x as f32);
+        // Varying planes in f32: relative to the bbox corner the values stay small.
+        let l32 = lam.map(|r| r.map(|x| x as f32));
+        let plane = |f: [f32; 3]| -> [f32; 3] {
+            [0, 1, 2].map(|j| f[0] * l32[0][j] + f[1] * l32[1][j] + f[2] * l32[2][j])
+        };
         let voff = self.pool.len() as u32;
-        let iw = [a.iw, b.iw, c.iw].map(f64::from);
-        self.pool.extend(plane(iw).map(|x| x as f32));
+        let iw = [a.iw, b.iw, c.iw];
+        self.pool.extend(plane(iw));
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
-        for k in 0..ctx.rl.n {
-            let f = [a.v[k], b.v[k], c.v[k]].map(f64::from);
+        for k in 0..ctx.rl.n.min(MAXV) {
+            let f = [a.v[k], b.v[k], c.v[k]];
             if k < nflat {
-                self.pool.extend([f[0] as f32, 0.0, 0.0]);
+                self.pool.extend([f[0], 0.0, 0.0]);
             } else {
-                let p = plane([f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]);
-                self.pool.extend(p.map(|x| x as f32));
+                self.pool
+                    .extend(plane([f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
             }
         }
         self.push(RPrim {
@@ -472,9 +524,9 @@ impl Worker {
             bbox,
             mat,
             voff,
-            e,
+            xy: [a.fx, a.fy, b.fx, b.fy, c.fx, c.fy].map(|x| x as i32),
+            owns: owns_bits,
             z,
-            g: [0.0; 5],
         });
     }
 
@@ -494,6 +546,7 @@ impl Worker {
         }
         let voff = self.pool.len() as u32;
         let n = ctx.rl.n;
+        self.pool.extend(g);
         self.pool.extend([a.iw, b.iw]);
         self.pool.extend_from_slice(&a.v[..n]);
         self.pool.extend_from_slice(&b.v[..n]);
@@ -503,9 +556,9 @@ impl Worker {
             bbox,
             mat,
             voff,
-            e: [[0; 3]; 3],
-            z: [a.z + off, b.z + off, 0.0],
-            g,
+            xy: [0; 6],
+            owns: 0,
+            z: [(a.z + off) as f32, (b.z + off) as f32, 0.0],
         });
     }
 
@@ -526,6 +579,7 @@ impl Worker {
             return;
         }
         let voff = self.pool.len() as u32;
+        self.pool.extend([x, y, size]);
         self.pool.extend_from_slice(&a.v[..ctx.rl.n]);
         self.push(RPrim {
             kind: Kind::Point,
@@ -533,9 +587,9 @@ impl Worker {
             bbox,
             mat,
             voff,
-            e: [[0; 3]; 3],
-            z: [a.z + off, 0.0, 0.0],
-            g: [x, y, size, 0.0, 0.0],
+            xy: [0; 6],
+            owns: 0,
+            z: [(a.z + off) as f32, 0.0, 0.0],
         });
     }
 
@@ -544,6 +598,13 @@ impl Worker {
         let idx = self.prims.len() as u32;
         let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
         let tiles_x = self.bins_x;
+        if tx0 == tx1 && ty0 == ty1 {
+            if let Some(b) = self.bins.get_mut(ty0 * tiles_x + tx0) {
+                b.push(idx);
+            }
+            self.prims.push(p);
+            return;
+        }
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
                 if let Some(b) = self.bins.get_mut(ty * tiles_x + tx) {
@@ -552,6 +613,16 @@ impl Worker {
             }
         }
         self.prims.push(p);
+    }
+}
+
+fn from_win(w: &Win) -> WVert {
+    WVert {
+        fx: w.fx,
+        fy: w.fy,
+        z: w.z,
+        iw: w.iw,
+        v: [0.0; MAXV],
     }
 }
 

@@ -6,10 +6,11 @@
 //! two shading modes can never disagree about the equation. Results are written to one flat
 //! `f32` array with a per-flush `Layout`, carrying only the attributes the flush needs.
 
-use glam::{Mat3, Mat4, Vec3, Vec4, Vec4Swizzles};
+use glam::{Mat3, Mat4, Vec3, Vec3A, Vec4, Vec4Swizzles};
 use rayon::prelude::*;
 
 use super::batch::Batch;
+use super::setup::{SetupCtx, Win};
 use crate::gl;
 use crate::state::{Material, State, BACK, FRONT, MAX_LIGHTS};
 
@@ -83,14 +84,14 @@ impl Layout {
 /// One enabled light with what the equation needs, in eye coordinates.
 #[derive(Clone, Copy, Debug, Default)]
 struct Src {
-    ambient: Vec3,
-    diffuse: Vec3,
-    specular: Vec3,
+    ambient: Vec3A,
+    diffuse: Vec3A,
+    specular: Vec3A,
     /// xyz: position (w != 0, already divided) or direction (w == 0).
-    pos: Vec3,
+    pos: Vec3A,
     positional: bool,
     /// Unit spot direction.
-    spot_dir: Vec3,
+    spot_dir: Vec3A,
     spot_exp: f32,
     /// cos(SPOT_CUTOFF), or None for cutoff 180.
     spot_cos: Option<f32>,
@@ -98,7 +99,7 @@ struct Src {
     /// Attenuation is exactly 1 (constant 1, linear and quadratic 0): skip computing it.
     no_att: bool,
     /// Directional light: unit VP, the same at every point.
-    vp_dir: Vec3,
+    vp_dir: Vec3A,
 }
 
 /// The lighting parameters of one flush (GL 2.1 §2.14.1), ready to evaluate at any point.
@@ -106,7 +107,7 @@ struct Src {
 pub struct Lighting {
     srcs: [Src; MAX_LIGHTS],
     n: usize,
-    scene_ambient: Vec3,
+    scene_ambient: Vec3A,
     local_viewer: bool,
     separate: bool,
     /// COLOR_MATERIAL: which faces track the colour, and the mode.
@@ -126,16 +127,16 @@ impl Lighting {
         {
             let positional = l.position.w != 0.0;
             srcs[n] = Src {
-                ambient: l.ambient.xyz(),
-                diffuse: l.diffuse.xyz(),
-                specular: l.specular.xyz(),
+                ambient: l.ambient.xyz().into(),
+                diffuse: l.diffuse.xyz().into(),
+                specular: l.specular.xyz().into(),
                 pos: if positional {
-                    l.position.xyz() / l.position.w
+                    (l.position.xyz() / l.position.w).into()
                 } else {
-                    l.position.xyz()
+                    l.position.xyz().into()
                 },
                 positional,
-                spot_dir: l.spot_direction.normalize_or_zero(),
+                spot_dir: l.spot_direction.normalize_or_zero().into(),
                 spot_exp: l.spot_exponent,
                 spot_cos: (l.spot_cutoff != 180.0).then(|| l.spot_cutoff.to_radians().cos()),
                 att: [
@@ -146,7 +147,7 @@ impl Lighting {
                 no_att: l.constant_attenuation == 1.0
                     && l.linear_attenuation == 0.0
                     && l.quadratic_attenuation == 0.0,
-                vp_dir: l.position.xyz().normalize_or_zero(),
+                vp_dir: l.position.xyz().normalize_or_zero().into(),
             };
             n += 1;
         }
@@ -158,7 +159,7 @@ impl Lighting {
         Lighting {
             srcs,
             n,
-            scene_ambient: state.light_model.ambient.xyz(),
+            scene_ambient: state.light_model.ambient.xyz().into(),
             local_viewer: state.light_model.local_viewer,
             separate: state.light_model.color_control == gl::SEPARATE_SPECULAR_COLOR,
             color_material: state
@@ -189,13 +190,18 @@ impl Lighting {
                 }
             }
         }
-        let (acm, dcm3, scm) = (acm.xyz(), dcm.xyz(), scm.xyz());
-        let mut c = ecm.xyz() + self.scene_ambient * acm;
-        let mut s = Vec3::ZERO;
+        let (acm, dcm3, scm) = (
+            Vec3A::from(acm.xyz()),
+            Vec3A::from(dcm.xyz()),
+            Vec3A::from(scm.xyz()),
+        );
+        let (v, n) = (Vec3A::from(v), Vec3A::from(n));
+        let mut c = Vec3A::from(ecm.xyz()) + self.scene_ambient * acm;
+        let mut s = Vec3A::ZERO;
         let eye_dir = if self.local_viewer {
             (-v).normalize_or_zero()
         } else {
-            Vec3::Z
+            Vec3A::Z
         };
         for l in &self.srcs[..self.n] {
             let (vp, att) = if l.positional {
@@ -242,8 +248,8 @@ impl Lighting {
         }
         let alpha = dcm.w;
         (
-            c.extend(alpha).clamp(Vec4::ZERO, Vec4::ONE),
-            s.extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
+            Vec3::from(c).extend(alpha).clamp(Vec4::ZERO, Vec4::ONE),
+            Vec3::from(s).extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
         )
     }
 }
@@ -278,11 +284,21 @@ impl Transform {
     }
 }
 
-/// Runs the vertex stage over the whole batch into `out` (`layout.stride` floats per vertex).
-pub fn process(state: &State, batch: &Batch, layout: &Layout, out: &mut Vec<f32>) {
+/// Runs the vertex stage over the whole batch into `out` (`layout.stride` floats per vertex),
+/// and each vertex's clip code and window coordinates into `wins`.
+pub fn process(
+    state: &State,
+    batch: &Batch,
+    layout: &Layout,
+    setup: &SetupCtx,
+    out: &mut Vec<f32>,
+    wins: &mut Vec<Win>,
+) {
     let n = batch.len();
     out.clear();
     out.resize(n * layout.stride, 0.0);
+    wins.clear();
+    wins.resize(n, Win::default());
     let tf = Transform::new(state);
     let lighting = state.enables.lighting.then(|| Lighting::new(state));
     let lit = Lit {
@@ -291,14 +307,16 @@ pub fn process(state: &State, batch: &Batch, layout: &Layout, out: &mut Vec<f32>
         layout,
         tf: &tf,
         lighting: lighting.as_ref(),
+        setup,
     };
     const CHUNK: usize = 4096;
     if n > 2 * CHUNK {
         out.par_chunks_mut(CHUNK * layout.stride)
+            .zip(wins.par_chunks_mut(CHUNK))
             .enumerate()
-            .for_each(|(c, chunk)| lit.run(c * CHUNK, chunk));
+            .for_each(|(c, (chunk, w))| lit.run(c * CHUNK, chunk, w));
     } else {
-        lit.run(0, out);
+        lit.run(0, out, wins);
     }
 }
 
@@ -308,10 +326,18 @@ struct Lit<'a> {
     layout: &'a Layout,
     tf: &'a Transform,
     lighting: Option<&'a Lighting>,
+    setup: &'a SetupCtx,
 }
 
 impl Lit<'_> {
-    fn run(&self, first: usize, out: &mut [f32]) {
+    fn run(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+        self.shade_all(first, out);
+        for (o, w) in out.chunks_exact(self.layout.stride).zip(wins) {
+            *w = self.setup.win(o);
+        }
+    }
+
+    fn shade_all(&self, first: usize, out: &mut [f32]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
