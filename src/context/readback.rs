@@ -145,3 +145,135 @@ fn pack(dst: &mut [u8], ty: u32, norm: f64, int: Option<u32>) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::Vec4;
+
+    use crate::gl;
+    use crate::Context;
+
+    /// A 3x2 context: colour (0.2, 0.4, 0.6, 1.0) → bytes (51, 102, 153, 255) since
+    /// 0.2·255 + 0.5 = 51.5 → 51, 102.5 → 102, 153.5 → 153; depth 0.25, stencil 5; then the
+    /// bottom-left pixel cleared to pure red through the scissor.
+    fn ctx() -> Context {
+        let mut c = Context::new(3, 2).unwrap();
+        c.state.clear_color = Vec4::new(0.2, 0.4, 0.6, 1.0);
+        c.state.clear_depth = 0.25;
+        c.state.clear_stencil = 5;
+        let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
+        c.renderer.clear(&c.state, all);
+        c.state.enables.scissor_test = true;
+        c.state.scissor = [0, 0, 1, 1];
+        c.state.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
+        c.renderer.clear(&c.state, gl::COLOR_BUFFER_BIT);
+        c.state.enables.scissor_test = false;
+        c
+    }
+
+    const BG: [u8; 4] = [51, 102, 153, 255];
+
+    #[test]
+    fn rgba_bottom_up() {
+        let mut c = ctx();
+        let mut out = [0u8; 24];
+        c.read_pixels(0, 0, 3, 2, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+        assert_eq!(out[..4], [255, 0, 0, 255]);
+        assert_eq!(out[4..8], BG);
+        assert_eq!(out[12..16], BG);
+    }
+
+    #[test]
+    fn rgb_rows_padded_to_pack_alignment() {
+        let mut c = ctx();
+        // Row 3·3 = 9 bytes, padded to 12 with alignment 4; the last row is not padded: 21.
+        let mut out = [7u8; 21];
+        c.read_pixels(0, 0, 3, 2, gl::RGB, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+        assert_eq!(out[..9], [255, 0, 0, 51, 102, 153, 51, 102, 153]);
+        assert_eq!(out[9..12], [7, 7, 7]); // padding untouched
+        assert_eq!(out[12..15], [51, 102, 153]);
+        // One byte short: INVALID_VALUE, nothing written.
+        let mut short = [7u8; 20];
+        c.read_pixels(0, 0, 3, 2, gl::RGB, gl::UNSIGNED_BYTE, &mut short);
+        assert_eq!(c.get_error(), gl::INVALID_VALUE);
+        assert!(short.iter().all(|&b| b == 7));
+        // Alignment 1: rows packed back to back.
+        c.state.pack_alignment = 1;
+        let mut out = [0u8; 18];
+        c.read_pixels(0, 0, 3, 2, gl::RGB, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(out[9..12], [51, 102, 153]);
+    }
+
+    #[test]
+    fn alpha_luminance_depth_stencil() {
+        let mut c = ctx();
+        let mut a = [0u8; 2];
+        c.read_pixels(0, 0, 2, 1, gl::ALPHA, gl::UNSIGNED_BYTE, &mut a);
+        assert_eq!(a, [255, 255]);
+        c.read_pixels(0, 0, 2, 1, gl::LUMINANCE, gl::UNSIGNED_BYTE, &mut a);
+        assert_eq!(a, [255, 51]);
+        // Depth 0.25 is stored as 0.25·(2^24 − 1) + 0.5 → 4194304; read back as 4194304/(2^24 − 1).
+        let mut d = [0u8; 4];
+        c.read_pixels(2, 1, 1, 1, gl::DEPTH_COMPONENT, gl::FLOAT, &mut d);
+        assert_eq!(f32::from_le_bytes(d), (4194304.0f64 / 16777215.0) as f32);
+        let mut s = [0u8; 1];
+        c.read_pixels(1, 1, 1, 1, gl::STENCIL_INDEX, gl::UNSIGNED_BYTE, &mut s);
+        assert_eq!(s, [5]);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+    }
+
+    #[test]
+    fn outside_the_window_is_untouched() {
+        let mut c = ctx();
+        let mut out = [9u8; 12];
+        c.read_pixels(-1, 1, 3, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+        assert_eq!(out[..4], [9; 4]);
+        assert_eq!(out[4..8], BG);
+    }
+
+    #[test]
+    fn errors() {
+        let mut c = ctx();
+        let mut out = [0u8; 64];
+        c.read_pixels(0, 0, 1, 1, gl::TRIANGLES, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(c.get_error(), gl::INVALID_ENUM);
+        c.read_pixels(0, 0, 1, 1, gl::RGBA, gl::RGBA, &mut out);
+        assert_eq!(c.get_error(), gl::INVALID_ENUM);
+        c.read_pixels(0, 0, -1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+        assert_eq!(c.get_error(), gl::INVALID_VALUE);
+        c.begin(gl::POINTS);
+        c.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+        c.end();
+        assert_eq!(c.get_error(), gl::INVALID_OPERATION);
+        assert!(out.iter().all(|&b| b == 0));
+    }
+
+    #[test]
+    fn to_image_is_top_down() {
+        let mut c = ctx();
+        let img = c.to_image();
+        assert_eq!(img.dimensions(), (3, 2));
+        assert_eq!(img.get_pixel(0, 1).0, [255, 0, 0, 255]);
+        assert_eq!(img.get_pixel(0, 0).0, BG);
+    }
+
+    #[test]
+    fn context_draws_and_reads_back() {
+        let mut c = Context::new(4, 4).unwrap();
+        c.begin(gl::TRIANGLES);
+        c.color4f(0.0, 1.0, 0.0, 1.0);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0)] {
+            c.vertex3f(x, y, 0.0);
+        }
+        c.end();
+        let mut out = [0u8; 8];
+        // Pixel (0,0) is inside the lower-left half, (3,3) outside (cleared black).
+        c.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out[..4]);
+        c.read_pixels(3, 3, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out[4..]);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+        assert_eq!(out, [0, 255, 0, 255, 0, 0, 0, 0]);
+    }
+}
