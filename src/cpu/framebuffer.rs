@@ -5,6 +5,8 @@
 //! inside it. A tile is then one `chunks_mut` slice, so the rasteriser hands each tile to its own
 //! thread with no locks and no unsafe code.
 
+use rayon::prelude::*;
+
 use crate::state::State;
 
 /// Side of a square screen tile, in pixels.
@@ -105,24 +107,42 @@ impl Framebuffer {
         let smask = (state.stencil_writemask & 0xFF) as u8;
         let stencil = (mask & crate::gl::STENCIL_BUFFER_BIT != 0 && smask != 0)
             .then_some((state.clear_stencil & 0xFF) as u8);
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let i = self.index(x as usize, y as usize);
-                if let (Some(c), Some(px)) = (color, self.color.get_mut(i)) {
-                    for k in 0..4 {
-                        if cmask[k] {
-                            px[k] = c[k];
+        let tiles_x = self.tiles_x;
+        // Tiles in parallel, each clearing its part of the rectangle.
+        self.color
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(self.depth.par_chunks_mut(TILE_PIXELS))
+            .zip(self.stencil.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .for_each(|(t, ((cbuf, dbuf), sbuf))| {
+                let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
+                let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+                let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+                for y in ty0..=ty1 {
+                    let row = (y - oy) as usize * TILE;
+                    let (a, b) = (row + (tx0 - ox) as usize, row + (tx1 - ox) as usize);
+                    if tx0 > tx1 {
+                        continue;
+                    }
+                    if let (Some(c), Some(px)) = (color, cbuf.get_mut(a..=b)) {
+                        for p in px {
+                            for k in 0..4 {
+                                if cmask[k] {
+                                    p[k] = c[k];
+                                }
+                            }
+                        }
+                    }
+                    if let (Some(d), Some(px)) = (depth, dbuf.get_mut(a..=b)) {
+                        px.fill(d);
+                    }
+                    if let (Some(sv), Some(px)) = (stencil, sbuf.get_mut(a..=b)) {
+                        for p in px {
+                            *p = (*p & !smask) | (sv & smask);
                         }
                     }
                 }
-                if let (Some(d), Some(px)) = (depth, self.depth.get_mut(i)) {
-                    *px = d;
-                }
-                if let (Some(s), Some(px)) = (stencil, self.stencil.get_mut(i)) {
-                    *px = (*px & !smask) | (s & smask);
-                }
-            }
-        }
+            });
     }
 }
 

@@ -135,32 +135,48 @@ impl Renderer {
             &mut self.vout,
             &mut self.wins,
         );
-        // Primitive assembly (§2.6).
-        assembly::assemble(
-            &self.batch.prims,
-            &self.batch.idx,
-            &self.batch.edge,
-            &mut self.asm,
-        );
-
-        // Clipping and setup, split in order across workers.
-        let nw = if self.asm.len() >= PARALLEL_SETUP {
-            rayon::current_num_threads().clamp(1, 16)
+        // Primitive assembly (§2.6), clipping and setup, split in order across workers: each
+        // worker takes a run of whole primitives (balanced by vertex count) when no single
+        // primitive dominates, else one shared assembly is cut into equal runs of triangles.
+        let b = &self.batch;
+        let total = b.idx.len();
+        let nw = if total >= PARALLEL_SETUP {
+            // More workers than threads balances the load when other processes share the cores.
+            (4 * rayon::current_num_threads()).clamp(1, 32)
         } else {
             1
         };
         if self.workers.len() < nw {
             self.workers.resize_with(nw, Worker::default);
         }
-        let chunk = self.asm.len().div_ceil(nw).max(1);
-        let (vout, wins, mats) = (&self.vout, &self.wins, &self.batch.mat);
+        let (vout, wins, mats) = (&self.vout, &self.wins, &b.mat);
         let workers = &mut self.workers[..nw];
+        let largest = b.prims.iter().map(|p| p.count as usize).max().unwrap_or(0);
         if nw == 1 {
             if let Some(w) = workers.first_mut() {
-                w.run(&ctx, vout, wins, mats, &self.asm);
+                w.assemble_and_run(&ctx, vout, wins, b, &b.prims);
             }
+        } else if largest <= total / nw {
+            // Cut points: the first primitive starting at or after each k·total/nw vertices.
+            let mut cuts = [0usize; 33];
+            let mut k = 1;
+            for (i, p) in b.prims.iter().enumerate() {
+                while k < nw && p.first as usize >= k * total / nw {
+                    cuts[k] = i;
+                    k += 1;
+                }
+            }
+            for c in cuts.iter_mut().take(nw + 1).skip(k) {
+                *c = b.prims.len();
+            }
+            workers.par_iter_mut().enumerate().for_each(|(i, w)| {
+                let prims = b.prims.get(cuts[i]..cuts[i + 1]).unwrap_or(&[]);
+                w.assemble_and_run(&ctx, vout, wins, b, prims);
+            });
         } else {
+            assembly::assemble(&b.prims, &b.idx, &b.edge, &mut self.asm);
             let asm = &self.asm;
+            let chunk = asm.len().div_ceil(nw).max(1);
             workers.par_iter_mut().enumerate().for_each(|(i, w)| {
                 let lo = (i * chunk).min(asm.len());
                 let hi = ((i + 1) * chunk).min(asm.len());

@@ -9,11 +9,15 @@
 //! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
 
 use super::assembly::Asm;
+use super::batch::{Batch, Prim};
 use super::clip::{Clipper, MAX_POLY};
 use super::framebuffer::TILE;
 use super::vertex::Layout;
 use crate::gl;
 use crate::state::State;
+
+/// Largest snapped window coordinate magnitude (1/256 pixel units).
+const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
 
 /// Most interpolated floats per fragment.
 pub const MAXV: usize = 24;
@@ -197,10 +201,11 @@ impl SetupCtx {
         let xw = g(0) * iw * self.scale[0] + self.offset[0];
         let yw = g(1) * iw * self.scale[1] + self.offset[1];
         let zw = g(2) * iw * self.scale[2] + self.offset[2];
-        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64);
-        // the clamp only matters for vertices that clipping rejects anyway.
+        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64).
+        // The clamp to ±2^29 (±2M pixels) keeps every edge-function product inside i64; only
+        // a viewport placed millions of pixels away could reach it.
         let snap = |x: f64| {
-            let t = (x * 256.0).clamp(-1e12, 1e12);
+            let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
             (t + 0.5f64.copysign(t)) as i64
         };
         Win {
@@ -238,9 +243,25 @@ pub struct Worker {
     a: Vec<f32>,
     b: Vec<f32>,
     bins_x: usize,
+    asm: Vec<Asm>,
 }
 
 impl Worker {
+    /// Assembles `prims` of batch `b` (§2.6) and sets them up.
+    pub fn assemble_and_run(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        b: &Batch,
+        prims: &[Prim],
+    ) {
+        let mut asm = std::mem::take(&mut self.asm);
+        super::assembly::assemble(prims, &b.idx, &b.edge, &mut asm);
+        self.run(ctx, vout, wins, &b.mat, &asm);
+        self.asm = asm;
+    }
+
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
     /// coordinates, `mats` their material indices).
     pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {

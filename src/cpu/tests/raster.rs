@@ -505,3 +505,60 @@ fn phong_win_gives_a_sharper_highlight() {
     let wide = phong.iter().filter(|&&v| v >= 128).count();
     assert!((10..=12).contains(&wide), "{phong:?}");
 }
+
+/// A watertight 32x32-cell mesh over the whole window with jittered interior points, as
+/// triangles (two per cell, `per_cell` Begin/End pairs or one big one).
+fn jittered_mesh(r: &mut Renderer, st: &State, one_primitive: bool) {
+    let n = 32;
+    let pt = |i: usize, j: usize| {
+        let f = |k: usize| -1.0 + 2.0 * k as f32 / n as f32;
+        let interior = |k: usize| k > 0 && k < n;
+        // A fixed pseudo-random jitter of up to ±0.3 cell.
+        let h = ((i * 7919 + j * 104_729) % 997) as f32 / 997.0 - 0.5;
+        let g = ((i * 15_485_863 + j * 32_452_843) % 991) as f32 / 991.0 - 0.5;
+        let dx = if interior(i) && interior(j) {
+            0.6 * h / n as f32
+        } else {
+            0.0
+        };
+        let dy = if interior(i) && interior(j) {
+            0.6 * g / n as f32
+        } else {
+            0.0
+        };
+        Vec4::new(f(i) + dx, f(j) + dy, 0.0, 1.0)
+    };
+    let c = cur(WHITE, Vec3::Z);
+    if one_primitive {
+        r.begin(gl::TRIANGLES);
+    }
+    for j in 0..n {
+        for i in 0..n {
+            if !one_primitive {
+                r.begin(gl::TRIANGLES);
+            }
+            for (a, b) in [(0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (0, 1)] {
+                r.vertex(pt(i + a, j + b), &c);
+            }
+            if !one_primitive {
+                r.end();
+            }
+        }
+    }
+    if one_primitive {
+        r.end();
+    }
+    r.flush(st);
+}
+
+#[test]
+fn large_meshes_cover_every_pixel_once_on_every_setup_path() {
+    for one in [false, true] {
+        let (mut r, st) = setup(70, 50);
+        r.count_coverage = true;
+        // 32·32·6 = 6144 vertices: enough for the parallel setup paths (by primitives when
+        // they are many, by triangles when one primitive holds them all).
+        jittered_mesh(&mut r, &st, one);
+        assert!(counts(&r).iter().all(|&c| c == 1), "one primitive: {one}");
+    }
+}
