@@ -114,12 +114,12 @@ impl Batch {
             return;
         };
         p.count += 1;
+        // Hash position and normal (the attributes that vary across a mesh); a hit is then
+        // compared in full.
         let bits = |v: f32| u64::from(v.to_bits());
-        let mut h =
-            bits(position.x) ^ bits(position.y).rotate_left(21) ^ bits(position.z).rotate_left(42);
-        h ^= bits(position.w).rotate_left(11) ^ bits(c.normal.x).rotate_left(32);
-        h ^= bits(c.normal.y).rotate_left(53) ^ bits(c.normal.z).rotate_left(7);
-        h ^= bits(c.color.x) ^ bits(c.color.y).rotate_left(16) ^ bits(c.color.z).rotate_left(48);
+        let h = (bits(position.x) | bits(position.y) << 32)
+            ^ (bits(position.z) | bits(c.normal.x) << 32).rotate_left(17)
+            ^ (bits(c.normal.y) | bits(c.normal.z) << 32).rotate_left(41);
         let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 51) as usize & (CACHE - 1);
         let hit = self.cache[slot] as usize;
         if hit < self.pos.len()
@@ -154,9 +154,14 @@ impl Batch {
         }
     }
 
-    /// Records the materials in effect at Begin (before any change inside the pair).
+    /// Records the materials in effect at Begin (before any change inside the pair). Only the
+    /// batch's first Begin needs recording: a Material call outside Begin/End flushes the batch,
+    /// so every later Begin of the same batch starts with the same materials, or with the last
+    /// snapshot if a change happened inside an earlier pair. (COLOR_MATERIAL updates of the
+    /// state between Begins touch only the tracked property, which each vertex's colour
+    /// replaces anyway.)
     pub fn note_materials(&mut self, m: &[Material; 2]) {
-        if self.snapshots.is_empty() {
+        if self.prims.len() <= 1 && self.snapshots.is_empty() {
             self.base = Some(*m);
         }
     }
