@@ -130,7 +130,8 @@ fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]
             *vk = a + tp * (b - a);
         }
         let z = f64::from(p.z[0] + t * (p.z[1] - p.z[0]));
-        for mm in m0.max(m_lo)..=(m0 + wi as i32 - 1).min(m_hi) {
+        let m1 = (i64::from(m0) + wi as i64 - 1).min(i64::from(m_hi)) as i32;
+        for mm in m0.max(m_lo)..=m1 {
             let (x, y) = if x_major { (u, mm) } else { (mm, u) };
             ctx.fragment(bufs, p, x, y, z, &v[..n]);
         }

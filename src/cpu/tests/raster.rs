@@ -562,3 +562,51 @@ fn large_meshes_cover_every_pixel_once_on_every_setup_path() {
         assert!(counts(&r).iter().all(|&c| c == 1), "one primitive: {one}");
     }
 }
+
+#[test]
+fn hostile_input_never_panics() {
+    let bad = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        1e30,
+        -1e30,
+        0.0,
+        1e-30,
+    ];
+    for mode in gl::POINTS..=gl::POLYGON {
+        for &pm in &[gl::FILL, gl::LINE, gl::POINT] {
+            let (mut r, mut st) = setup(9, 7);
+            st.polygon_mode = [pm, pm];
+            st.point_size = 1e30;
+            st.line_width = 1e30;
+            st.enables.polygon_offset_fill = true;
+            st.polygon_offset_factor = 1e30;
+            st.enables.depth_test = true;
+            st.enables.lighting = true;
+            st.enables.lights[0] = true;
+            st.lights[0].position = Vec4::new(0.0, 0.0, 0.0, 1.0);
+            st.viewport = [i32::MAX - 5, i32::MIN + 5, 16384, 16384];
+            r.begin(mode);
+            for (i, &x) in bad.iter().enumerate() {
+                let y = bad[(i + 3) % bad.len()];
+                r.vertex(
+                    Vec4::new(x, y, 0.5, 1.0),
+                    &cur(WHITE, Vec3::new(x, 0.0, 0.0)),
+                );
+                r.vertex(Vec4::new(0.5, -0.5, x, y), &cur(WHITE, Vec3::Z));
+            }
+            r.end();
+            r.flush(&st);
+            st.viewport = [0, 0, 9, 7];
+            r.begin(mode);
+            for &x in &bad {
+                r.vertex(Vec4::new(x, 0.5, 0.0, 1.0), &cur(Vec4::splat(x), Vec3::Z));
+                r.vertex(Vec4::new(-0.5, x, 0.0, 1.0), &cur(WHITE, Vec3::Z));
+                r.vertex(Vec4::new(0.5, 0.5, 0.0, x), &cur(WHITE, Vec3::Z));
+            }
+            r.end();
+            r.flush(&st);
+        }
+    }
+}
