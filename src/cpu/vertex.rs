@@ -173,85 +173,140 @@ impl Lighting {
     /// with unit normal `n` (already negated for a back face), material `m` of face `face`
     /// (FRONT or BACK), and vertex colour `color` for COLOR_MATERIAL (GL 2.1 §2.14.1, §2.14.3).
     /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
-    #[inline]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
-        let (mut acm, mut dcm, mut scm, mut ecm) = (m.ambient, m.diffuse, m.specular, m.emission);
-        if let Some((faces, mode)) = self.color_material {
-            if faces.get(face).copied().unwrap_or(false) {
-                match mode {
-                    gl::AMBIENT => acm = color,
-                    gl::DIFFUSE => dcm = color,
-                    gl::SPECULAR => scm = color,
-                    gl::EMISSION => ecm = color,
-                    _ => {
-                        acm = color;
-                        dcm = color;
+        let mut out = [(Vec4::ZERO, Vec4::ZERO)];
+        let p = Point {
+            v: v.into(),
+            n: n.into(),
+            color,
+        };
+        self.shade_block(m, face, &[p], &mut out);
+        out[0]
+    }
+
+    /// [`Lighting::shade`] for up to [`LANES`] points at once (the rest of `pts` is ignored):
+    /// the same equation, evaluated step by step across the points so that the square roots,
+    /// divisions and `powf`s of different points overlap in the CPU.
+    pub fn shade_block(&self, m: &Material, face: usize, pts: &[Point], out: &mut [(Vec4, Vec4)]) {
+        let k = pts.len().min(out.len()).min(LANES);
+        let pts = &pts[..k];
+        // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
+        let tracked = self
+            .color_material
+            .and_then(|(faces, mode)| faces.get(face).copied().unwrap_or(false).then_some(mode));
+        let mut acm = [Vec3A::ZERO; LANES];
+        let mut dcm = [Vec3A::ZERO; LANES];
+        let mut scm = [Vec3A::ZERO; LANES];
+        let mut alpha = [0.0f32; LANES];
+        let mut c = [Vec3A::ZERO; LANES];
+        let mut s = [Vec3A::ZERO; LANES];
+        let mut eye = [Vec3A::Z; LANES];
+        for (i, p) in pts.iter().enumerate() {
+            let (mut a, mut d, mut sp, mut e) = (m.ambient, m.diffuse, m.specular, m.emission);
+            match tracked {
+                None => {}
+                Some(gl::AMBIENT) => a = p.color,
+                Some(gl::DIFFUSE) => d = p.color,
+                Some(gl::SPECULAR) => sp = p.color,
+                Some(gl::EMISSION) => e = p.color,
+                Some(_) => {
+                    a = p.color;
+                    d = p.color;
+                }
+            }
+            acm[i] = a.xyz().into();
+            dcm[i] = d.xyz().into();
+            scm[i] = sp.xyz().into();
+            alpha[i] = d.w;
+            c[i] = Vec3A::from(e.xyz()) + self.scene_ambient * acm[i];
+            if self.local_viewer {
+                // Local viewer: the half vector uses the direction to the eye.
+                eye[i] = (-p.v).normalize_or_zero();
+            }
+        }
+        for l in &self.srcs[..self.n] {
+            let mut vp = [l.vp_dir; LANES];
+            let mut kf = [1.0f32; LANES];
+            let mut on = [true; LANES];
+            if l.positional {
+                for (i, p) in pts.iter().enumerate() {
+                    let d = l.pos - p.v;
+                    let d2 = d.length_squared();
+                    let inv = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
+                    vp[i] = d * inv;
+                    if !l.no_att {
+                        // Attenuation, positional lights only.
+                        let dist = d2 * inv;
+                        kf[i] = 1.0 / (l.att[0] + l.att[1] * dist + l.att[2] * d2);
                     }
                 }
             }
-        }
-        let (acm, dcm3, scm) = (
-            Vec3A::from(acm.xyz()),
-            Vec3A::from(dcm.xyz()),
-            Vec3A::from(scm.xyz()),
-        );
-        let (v, n) = (Vec3A::from(v), Vec3A::from(n));
-        let mut c = Vec3A::from(ecm.xyz()) + self.scene_ambient * acm;
-        let mut s = Vec3A::ZERO;
-        let eye_dir = if self.local_viewer {
-            (-v).normalize_or_zero()
-        } else {
-            Vec3A::Z
-        };
-        for l in &self.srcs[..self.n] {
-            let (vp, att) = if l.positional {
-                let d = l.pos - v;
-                let d2 = d.length_squared();
-                let inv = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
-                let att = if l.no_att {
-                    1.0
-                } else {
-                    let dist = d2 * inv;
-                    1.0 / (l.att[0] + l.att[1] * dist + l.att[2] * d2)
-                };
-                (d * inv, att)
-            } else {
-                (l.vp_dir, 1.0)
-            };
-            let spot = match l.spot_cos {
-                None => 1.0,
-                Some(cos_cut) => {
-                    let cosang = (-vp).dot(l.spot_dir);
+            if let Some(cos_cut) = l.spot_cos {
+                for i in 0..k {
+                    let cosang = (-vp[i]).dot(l.spot_dir);
                     if cosang >= cos_cut {
-                        cosang.max(0.0).powf(l.spot_exp)
+                        kf[i] *= cosang.max(0.0).powf(l.spot_exp);
                     } else {
                         // Outside the cone the light contributes nothing at all.
-                        continue;
+                        on[i] = false;
                     }
                 }
-            };
-            let k = att * spot;
-            let ndl = n.dot(vp);
-            let mut term = l.ambient * acm;
-            if ndl > 0.0 {
-                term += ndl * l.diffuse * dcm3;
-                let h = (vp + eye_dir).normalize_or_zero();
-                let ndh = n.dot(h).max(0.0);
-                let sp = ndh.powf(m.shininess) * l.specular * scm;
-                if self.separate {
-                    s += k * sp;
-                } else {
-                    term += sp;
+            }
+            let mut ndl = [0.0f32; LANES];
+            let mut ndh = [0.0f32; LANES];
+            for (i, p) in pts.iter().enumerate() {
+                ndl[i] = p.n.dot(vp[i]);
+                let h = (vp[i] + eye[i]).normalize_or_zero();
+                ndh[i] = p.n.dot(h).max(0.0);
+            }
+            let mut pw = [0.0f32; LANES];
+            for i in 0..k {
+                // Specular only where N·L > 0.
+                if ndl[i] > 0.0 {
+                    pw[i] = ndh[i].powf(m.shininess);
                 }
             }
-            c += k * term;
+            for i in 0..k {
+                if !on[i] {
+                    continue;
+                }
+                let mut term = l.ambient * acm[i];
+                if ndl[i] > 0.0 {
+                    term += ndl[i] * l.diffuse * dcm[i];
+                    let sp = pw[i] * l.specular * scm[i];
+                    if self.separate {
+                        s[i] += kf[i] * sp;
+                    } else {
+                        term += sp;
+                    }
+                }
+                c[i] += kf[i] * term;
+            }
         }
-        let alpha = dcm.w;
-        (
-            Vec3::from(c).extend(alpha).clamp(Vec4::ZERO, Vec4::ONE),
-            Vec3::from(s).extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
-        )
+        // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
+        for (i, o) in out.iter_mut().take(k).enumerate() {
+            *o = (
+                Vec3::from(c[i])
+                    .extend(alpha[i])
+                    .clamp(Vec4::ZERO, Vec4::ONE),
+                Vec3::from(s[i]).extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
+            );
+        }
     }
+}
+
+/// Points lit together by [`Lighting::shade_block`].
+pub const LANES: usize = 8;
+
+/// One point to light: eye position, unit normal (negated for a back face), vertex colour.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Point {
+    /// Eye-space position.
+    pub v: Vec3A,
+    /// Normal.
+    pub n: Vec3A,
+    /// Vertex colour (COLOR_MATERIAL).
+    pub color: Vec4,
 }
 
 /// The per-flush transform state.
@@ -341,66 +396,103 @@ impl Lit<'_> {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
-        for (k, o) in out.chunks_exact_mut(l.stride).enumerate() {
-            let i = first + k;
-            let (Some(&p), Some(&nrm), Some(&color), Some(&color2)) = (
-                b.pos.get(i),
-                b.normal.get(i),
-                b.color.get(i),
-                b.color2.get(i),
-            ) else {
-                return;
-            };
-            let eye = self.tf.mv * p;
-            let clip = self.tf.proj * eye;
-            put(o, 0, clip);
-            if let Some(o_eye) = l.eye {
-                put(o, o_eye, eye);
-            }
-            if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
-                put(o, t, tc);
+        let uniform = b.snapshots.is_empty();
+        for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
+            let base = first + blk * LANES;
+            let mut pts = [Point::default(); LANES];
+            let mut cnt = 0;
+            for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                let i = base + k;
+                let (Some(&p), Some(&nrm), Some(&color), Some(&color2)) = (
+                    b.pos.get(i),
+                    b.normal.get(i),
+                    b.color.get(i),
+                    b.color2.get(i),
+                ) else {
+                    return;
+                };
+                let eye = self.tf.mv * p;
+                let clip = self.tf.proj * eye;
+                put(o, 0, clip);
+                if let Some(o_eye) = l.eye {
+                    put(o, o_eye, eye);
+                }
+                if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
+                    put(o, t, tc);
+                }
+                if self.lighting.is_none() {
+                    put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
+                    if let Some(s) = l.spec {
+                        put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
+                    }
+                    continue;
+                }
+                let mut n = self.tf.normal * nrm;
+                if self.tf.normalize {
+                    n = n.normalize_or_zero();
+                }
+                let v = if eye.w != 0.0 {
+                    eye.xyz() / eye.w
+                } else {
+                    eye.xyz()
+                };
+                pts[k] = Point {
+                    v: v.into(),
+                    n: n.into(),
+                    color,
+                };
+                cnt = k + 1;
+                if let Some(no) = l.nrm {
+                    put3(o, no, n);
+                }
+                if let Some(r) = l.raw {
+                    put(o, r, color);
+                }
             }
             let Some(lighting) = self.lighting else {
-                put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
-                if let Some(s) = l.spec {
-                    put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
-                }
                 continue;
             };
-            let mut n = self.tf.normal * nrm;
-            if self.tf.normalize {
-                n = n.normalize_or_zero();
-            }
-            let v = if eye.w != 0.0 {
-                eye.xyz() / eye.w
-            } else {
-                eye.xyz()
-            };
-            let mats = if b.snapshots.is_empty() {
-                &state.materials
-            } else {
+            // Materials: the state's for the whole block, or each vertex's own snapshot.
+            let mat_of = |i: usize| {
                 b.mat
                     .get(i)
                     .and_then(|&m| b.snapshots.get(m as usize))
                     .unwrap_or(&state.materials)
             };
-            let (c, s) = lighting.shade(&mats[FRONT], FRONT, color, v, n);
-            put(o, l.col, c);
-            if let Some(so) = l.spec {
-                put(o, so, s);
-            }
-            if let Some(cb) = l.col_b {
-                let (c, s) = lighting.shade(&mats[BACK], BACK, color, v, -n);
-                put(o, cb, c);
-                if let Some(sb) = l.spec_b {
-                    put(o, sb, s);
+            let mut lit = [(Vec4::ZERO, Vec4::ZERO); LANES];
+            let mut lit_b = [(Vec4::ZERO, Vec4::ZERO); LANES];
+            let two = l.col_b.is_some();
+            if uniform {
+                let m = &state.materials;
+                lighting.shade_block(&m[FRONT], FRONT, &pts[..cnt], &mut lit);
+                if two {
+                    let back = pts.map(|p| Point { n: -p.n, ..p });
+                    lighting.shade_block(&m[BACK], BACK, &back[..cnt], &mut lit_b);
+                }
+            } else {
+                for k in 0..cnt {
+                    let m = mat_of(base + k);
+                    let p = pts[k];
+                    lighting.shade_block(&m[FRONT], FRONT, &[p], &mut lit[k..]);
+                    if two {
+                        let q = Point { n: -p.n, ..p };
+                        lighting.shade_block(&m[BACK], BACK, &[q], &mut lit_b[k..]);
+                    }
                 }
             }
-            if let Some(no) = l.nrm {
-                put3(o, no, n);
-            }
-            if let Some(r) = l.raw {
-                put(o, r, color);
+            for (k, o) in os.chunks_exact_mut(l.stride).take(cnt).enumerate() {
+                let (c, s) = lit[k];
+                put(o, l.col, c);
+                if let Some(so) = l.spec {
+                    put(o, so, s);
+                }
+                if let Some(cb) = l.col_b {
+                    let (c, s) = lit_b[k];
+                    put(o, cb, c);
+                    if let Some(sb) = l.spec_b {
+                        put(o, sb, s);
+                    }
+                }
             }
         }
     }
