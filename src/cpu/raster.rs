@@ -42,7 +42,8 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
     if x1 - x0 < SMALL {
         // Narrow: test each pixel centre (additions only) instead of dividing per edge.
         for y in y0..=y1 {
-            let mut e = edges.map(|e| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0));
+            let at = |e: &[i64; 3]| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0);
+            let mut e = [at(&edges[0]), at(&edges[1]), at(&edges[2])];
             let (mut l, mut h) = (i32::MAX, i32::MIN);
             for x in x0..=x1 {
                 if (e[0] | e[1] | e[2]) >= 0 {

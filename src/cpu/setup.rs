@@ -103,15 +103,22 @@ impl RPrim {
     /// tie-break bias applied, so a centre is covered when all three are >= 0.
     #[inline(always)]
     pub fn edges(&self) -> [[i64; 3]; 3] {
-        let v = self.xy.map(i64::from);
-        [0, 1, 2].map(|k| {
+        let v = [
+            i64::from(self.xy[0]),
+            i64::from(self.xy[1]),
+            i64::from(self.xy[2]),
+            i64::from(self.xy[3]),
+            i64::from(self.xy[4]),
+            i64::from(self.xy[5]),
+        ];
+        let edge = |k: usize, j: usize| {
             let (px, py) = (v[2 * k], v[2 * k + 1]);
-            let j = (k + 1) % 3;
             let (dx, dy) = (v[2 * j] - px, v[2 * j + 1] - py);
             let e00 = dx * (128 - py) - dy * (128 - px);
             let bias = i64::from(self.owns & (1 << k) == 0);
             [e00 - bias, -dy * 256, dx * 256]
-        })
+        };
+        [edge(0, 1), edge(1, 2), edge(2, 0)]
     }
 }
 
@@ -283,9 +290,9 @@ impl Worker {
             match p.n {
                 3 => {
                     let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                    let ws =
-                        p.v.map(|i| wins.get(i as usize).copied().unwrap_or_default());
-                    let codes = ws.map(|w| w.code);
+                    let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
+                    let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
+                    let codes = [ws[0].code, ws[1].code, ws[2].code];
                     if codes[0] & codes[1] & codes[2] != 0 {
                         continue;
                     }
@@ -516,15 +523,23 @@ impl Worker {
         if ctx.offset_on[0] {
             z[0] += offset(ctx, z[1], z[2]);
         }
-        let z = z.map(|x| x as f32);
+        let z = [z[0] as f32, z[1] as f32, z[2] as f32];
         // Varying planes in f32: relative to the bbox corner the values stay small.
-        let l32 = lam.map(|r| r.map(|x| x as f32));
-        let plane = |f: [f32; 3]| -> [f32; 3] {
-            [0, 1, 2].map(|j| f[0] * l32[0][j] + f[1] * l32[1][j] + f[2] * l32[2][j])
-        };
+        let mut l32 = [[0.0f32; 3]; 3];
+        for (r, l) in l32.iter_mut().zip(&lam) {
+            *r = [l[0] as f32, l[1] as f32, l[2] as f32];
+        }
+        #[inline(always)]
+        fn plane(l: &[[f32; 3]; 3], f: [f32; 3]) -> [f32; 3] {
+            [
+                f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
+                f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
+                f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+            ]
+        }
         let voff = self.pool.len() as u32;
         let iw = [a.iw, b.iw, c.iw];
-        self.pool.extend(plane(iw));
+        self.pool.extend(plane(&l32, iw));
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
@@ -536,7 +551,7 @@ impl Worker {
                 self.pool.extend([f[0], 0.0, 0.0]);
             } else {
                 self.pool
-                    .extend(plane([f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
+                    .extend(plane(&l32, [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
             }
         }
         self.push(RPrim {
@@ -545,7 +560,14 @@ impl Worker {
             bbox,
             mat,
             voff,
-            xy: [a.fx, a.fy, b.fx, b.fy, c.fx, c.fy].map(|x| x as i32),
+            xy: [
+                a.fx as i32,
+                a.fy as i32,
+                b.fx as i32,
+                b.fy as i32,
+                c.fx as i32,
+                c.fy as i32,
+            ],
             owns: owns_bits,
             z,
         });
