@@ -179,6 +179,29 @@ impl FragCtx<'_> {
         } else {
             0
         };
+        // Fast path: smooth primary colour only (no FLAT, secondary colour or PHONG_WIN).
+        if nv == 4 && nflat == 0 && p.flags & F_PHONG == 0 {
+            if let Some(&[w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay]) =
+                planes.get(..15)
+            {
+                let (w0, r0, g0, b0, a0) =
+                    (w0 + wy * fy, r0 + ry * fy, g0 + gy * fy, b0 + by * fy, a0 + ay * fy);
+                while mask != 0 {
+                    let k = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    let fx = (x0 - ox + k as i32) as f32;
+                    let inv = 1.0 / (w0 + wx * fx);
+                    let c = Vec4::new(
+                        (r0 + rx * fx) * inv,
+                        (g0 + gx * fx) * inv,
+                        (b0 + bx * fx) * inv,
+                        (a0 + ax * fx) * inv,
+                    );
+                    self.write(bufs, base + k, c);
+                }
+            }
+            return;
+        }
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());
