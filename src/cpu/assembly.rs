@@ -1,7 +1,8 @@
 //! Primitive assembly: the ten Begin modes into points, lines and triangles (GL 2.1 §2.6.1,
 //! table 2.2 for the provoking vertex, §2.6.2 for edge flags).
 //!
-//! Design decision: quads and polygons are split into triangles here, with the interior
+//! Design decision: quads and polygons are split into triangles here, the way Mesa's draw module
+//! splits them (so interpolation across a non-planar quad matches llvmpipe), with the interior
 //! (diagonal) edges flagged off, so polygon mode LINE and POINT still draw exactly the original
 //! boundary and each boundary vertex once; every sub-triangle keeps the original polygon's
 //! provoking vertex. Incomplete primitives are dropped.
@@ -85,19 +86,22 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], out: &mut Vec<Asm>) 
                 (0..n.saturating_sub(2)).map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, 7)),
             ),
             gl::QUADS => {
+                // Split along the 1–3 diagonal, as Mesa's draw module does with the provoking
+                // vertex last: (0,1,3) and (1,2,3).
                 for i in 0..n / 4 {
                     let a = f + 4 * i;
                     let [e0, e1, e2, e3] = [ef(a), ef(a + 1), ef(a + 2), ef(a + 3)];
-                    out.push(tri(a, a + 1, a + 2, a + 3, flags(e0, e1, false)));
-                    out.push(tri(a, a + 2, a + 3, a + 3, flags(false, e2, e3)));
+                    out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
+                    out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
                 }
             }
             gl::QUAD_STRIP => {
                 for i in 0..(n / 2).saturating_sub(1) {
-                    // Quad i: vertices 2i, 2i+1, 2i+3, 2i+2 (0-based); provoking 2i+3.
+                    // Quad i: vertices 2i, 2i+1, 2i+3, 2i+2 (0-based), provoking 2i+3; split
+                    // along 2i–2i+3 like Mesa: (2i+2, 2i, 2i+3) and (2i, 2i+1, 2i+3).
                     let a = f + 2 * i;
+                    out.push(tri(a + 2, a, a + 3, a + 3, flags(true, false, true)));
                     out.push(tri(a, a + 1, a + 3, a + 3, flags(true, true, false)));
-                    out.push(tri(a, a + 3, a + 2, a + 3, flags(false, true, true)));
                 }
             }
             gl::POLYGON => {

@@ -184,8 +184,13 @@ impl FragCtx<'_> {
             if let Some(&[w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay]) =
                 planes.get(..15)
             {
-                let (w0, r0, g0, b0, a0) =
-                    (w0 + wy * fy, r0 + ry * fy, g0 + gy * fy, b0 + by * fy, a0 + ay * fy);
+                let (w0, r0, g0, b0, a0) = (
+                    w0 + wy * fy,
+                    r0 + ry * fy,
+                    g0 + gy * fy,
+                    b0 + by * fy,
+                    a0 + ay * fy,
+                );
                 while mask != 0 {
                     let k = mask.trailing_zeros() as usize;
                     mask &= mask - 1;

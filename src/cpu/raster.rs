@@ -4,8 +4,9 @@
 //! Design decision: triangles are walked row by row; on each row the covered pixels form one run
 //! whose ends come straight from the three integer edge functions (a division per edge, no
 //! per-pixel edge test), and the run goes to the fragment stage as a span. Lines use the spec's
-//! major-axis rule (a fragment per column of an x-major line, its centre column half-open at the
-//! end point), `round(width)` fragments across; points are `round(size)` squares.
+//! diamond-exit rule along the major axis (one fragment per column of an x-major line, the start
+//! pixel drawn and the end pixel not when they hold the end points), `round(width)` fragments
+//! across; points are `round(size)` squares.
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
@@ -107,32 +108,52 @@ fn line(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, data: &[f32], r: [i32; 4]
         (r[1], r[3], r[0], r[2])
     };
     let mut v = [0.0f32; MAXV];
+    let dir = if ub > ua { 1.0 } else { -1.0 };
+    // §3.5.1 diamond-exit: pixel f gets a fragment when the segment, from a to b, leaves f's
+    // diamond |x − xc| + |y − yc| < 1/2; a diamond holding b is never left.
+    let in_diamond = |u: i32, row: i32, pu: f32, pm: f32| {
+        (pu - (u as f32 + 0.5)).abs() + (pm - (row as f32 + 0.5)).abs() < 0.5
+    };
     for u in u_lo..=u_hi {
         let c = u as f32 + 0.5;
-        // Half-open: the start point's column is drawn, the end point's is not.
-        let inside = if ua < ub {
-            c >= ua && c < ub
-        } else {
-            c <= ua && c > ub
-        };
-        if !inside {
+        let (da, db) = ((c - ua) * dir, (ub - c) * dir);
+        if db <= 0.0 {
+            // At or past the end: the segment stops before crossing this column's centre.
             continue;
         }
-        let t = (c - ua) / (ub - ua);
-        let m = ma + t * (mb - ma);
-        let m0 = (m - wi / 2.0 + 0.5).floor() as i32;
-        // §3.5.1 eq. 3.10: perspective-correct parameter for the varyings; z is linear.
-        let tp = t * iwb / ((1.0 - t) * iwa + t * iwb);
-        for (k, vk) in v.iter_mut().enumerate().take(n) {
-            let (a, b) = (
-                va.get(k).copied().unwrap_or(0.0),
-                vb.get(k).copied().unwrap_or(0.0),
-            );
-            *vk = a + tp * (b - a);
+        let (t, row) = if da >= 0.0 {
+            // The segment crosses the column centre: the pixel there is the one it passes.
+            let t = (c - ua) / (ub - ua);
+            (t, (ma + t * (mb - ma)).floor() as i32)
+        } else {
+            // The start lies past this column's centre: only a diamond holding it is left.
+            let row = ma.floor() as i32;
+            if !in_diamond(u, row, ua, ma) {
+                continue;
+            }
+            (0.0, row)
+        };
+        if in_diamond(u, row, ub, mb) {
+            continue;
         }
-        let z = f64::from(p.z[0] + t * (p.z[1] - p.z[0]));
+        let m = ma + t * (mb - ma);
+        let m0 = if wi > 1.0 {
+            (m - wi / 2.0 + 0.5).floor() as i32
+        } else {
+            row
+        };
         let m1 = (i64::from(m0) + wi as i64 - 1).min(i64::from(m_hi)) as i32;
         for mm in m0.max(m_lo)..=m1 {
+            // Eq. 3.10 with t along the major axis (constant across a wide line, as llvmpipe):: perspective-correct parameter for the varyings; z is linear.
+            let tp = t * iwb / ((1.0 - t) * iwa + t * iwb);
+            for (k, vk) in v.iter_mut().enumerate().take(n) {
+                let (a, b) = (
+                    va.get(k).copied().unwrap_or(0.0),
+                    vb.get(k).copied().unwrap_or(0.0),
+                );
+                *vk = a + tp * (b - a);
+            }
+            let z = f64::from(p.z[0] + t * (p.z[1] - p.z[0]));
             let (x, y) = if x_major { (u, mm) } else { (mm, u) };
             ctx.fragment(bufs, p, x, y, z, &v[..n]);
         }

@@ -134,4 +134,7 @@ fn gaussian_400_timing() {
         ms[ms.len() / 2]
     );
     save(&r, "/tmp/cpu-gauss-400.png");
+    // Raw bottom-up RGBA, as glReadPixels returns it, for comparing with a reference render.
+    let raw: Vec<u8> = r.color().iter().flatten().copied().collect();
+    let _ = std::fs::write("/tmp/cpu-gauss400.rgba", raw);
 }

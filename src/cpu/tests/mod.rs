@@ -4,6 +4,7 @@
 mod gauss;
 mod lighting;
 mod raster;
+mod reference;
 
 use glam::{Vec3, Vec4};
 

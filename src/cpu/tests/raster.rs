@@ -610,3 +610,30 @@ fn hostile_input_never_panics() {
         }
     }
 }
+
+#[test]
+fn lines_follow_the_diamond_exit_rule() {
+    let st = State::new(16, 16);
+    // Window x → ndc: x/8 − 1; row 5's centre line y = 5.5 → −0.3125.
+    let ndc = |x: f32| x / 8.0 - 1.0;
+    let drawn = |xa: f32, xb: f32| {
+        let mut r = Renderer::new(16, 16);
+        draw_pal(
+            &mut r,
+            &st,
+            gl::LINES,
+            &[[ndc(xa), -0.3125], [ndc(xb), -0.3125]],
+        );
+        (0..16)
+            .filter(|&x| px(&r, x, 5) != [0; 4])
+            .collect::<Vec<_>>()
+    };
+    // From 2.7: the start lies in pixel 2's diamond (|2.7 − 2.5| = 0.2 < 0.5), which the line
+    // leaves, so pixel 2 is drawn; pixel 8's centre 8.5 lies past the end 8.3: not drawn.
+    assert_eq!(drawn(2.7, 8.3), (2..=7).collect::<Vec<_>>());
+    // To 8.6: the end lies in pixel 8's diamond (0.1 < 0.5), never left: not drawn.
+    assert_eq!(drawn(2.2, 8.6), (2..=7).collect::<Vec<_>>());
+    // Reversed: pixel 8's diamond holds the start (drawn, the line leaves it); pixel 2's holds
+    // the end (|2.2 − 2.5| = 0.3 < 0.5): not drawn.
+    assert_eq!(drawn(8.6, 2.2), (3..=8).collect::<Vec<_>>());
+}
