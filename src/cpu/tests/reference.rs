@@ -2,7 +2,9 @@
 //! bottom-up RGBA to /tmp/cpu-<scene>.rgba for an external comparison (the real-GL backend
 //! automates this; these scenes pin down line, point, clipping and polygon-mode rules).
 
-use glam::{Mat4, Vec4};
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::state::{BACK, FRONT};
 
 use super::*;
 
@@ -139,4 +141,83 @@ fn reference_scenes() {
         ],
     );
     dump(&r, "modes");
+}
+
+#[test]
+#[ignore = "writes /tmp/cpu-lit.rgba for comparison with llvmpipe"]
+fn reference_lit() {
+    let (mut r, mut st) = setup(128, 128);
+    *st.projection.top_mut() = Mat4::from_cols_array(&[
+        2.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        2.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        -11.0 / 9.0,
+        -1.0,
+        0.0,
+        0.0,
+        -20.0 / 9.0,
+        0.0,
+    ]);
+    let l0 = &mut st.lights[0];
+    l0.position = Vec4::new(0.5, 0.5, 1.0, 1.0);
+    l0.spot_direction = Vec3::new(-0.2, -0.2, -1.0);
+    l0.spot_cutoff = 40.0;
+    l0.spot_exponent = 8.0;
+    l0.linear_attenuation = 0.2;
+    l0.quadratic_attenuation = 0.1;
+    l0.diffuse = Vec4::new(1.0, 0.9, 0.8, 1.0);
+    l0.specular = Vec4::ONE;
+    l0.ambient = Vec4::new(0.1, 0.1, 0.1, 1.0);
+    let l1 = &mut st.lights[1];
+    l1.position = Vec4::new(-1.0, 0.5, 0.5, 0.0);
+    l1.diffuse = Vec4::new(0.2, 0.3, 0.9, 1.0);
+    l1.specular = Vec4::new(0.5, 0.5, 0.5, 1.0);
+    st.light_model.ambient = Vec4::new(0.1, 0.1, 0.15, 1.0);
+    st.light_model.local_viewer = true;
+    st.light_model.two_side = true;
+    st.light_model.color_control = gl::SEPARATE_SPECULAR_COLOR;
+    st.materials[FRONT].specular = Vec4::new(0.8, 0.8, 0.8, 1.0);
+    st.materials[FRONT].shininess = 30.0;
+    st.materials[FRONT].emission = Vec4::new(0.05, 0.0, 0.0, 1.0);
+    st.materials[BACK].diffuse = Vec4::new(0.9, 0.2, 0.2, 1.0);
+    st.materials[BACK].ambient = Vec4::new(0.2, 0.0, 0.0, 1.0);
+    st.materials[BACK].specular = Vec4::new(0.3, 0.3, 0.3, 1.0);
+    st.materials[BACK].shininess = 10.0;
+    st.color_material_face = gl::FRONT;
+    st.color_material_mode = gl::AMBIENT_AND_DIFFUSE;
+    st.enables.color_material = true;
+    st.enables.lighting = true;
+    st.enables.lights[0] = true;
+    st.enables.lights[1] = true;
+    st.enables.depth_test = true;
+    *st.modelview.top_mut() = Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0));
+    let g = 24;
+    for j in 0..g {
+        for half in 0..2 {
+            r.begin(gl::TRIANGLE_STRIP);
+            r.begin_materials(&st.materials);
+            for i in 0..=g / 2 {
+                for k in 0..2 {
+                    let jj = if (half == 0) == (k == 0) { j + 1 } else { j };
+                    let x = -1.0 + 2.0 * (i + half * g / 2) as f32 / g as f32;
+                    let y = -1.0 + 2.0 * jj as f32 / g as f32;
+                    let c = cur(
+                        Vec4::new((x + 1.0) / 2.0, (y + 1.0) / 2.0, 0.5, 1.0),
+                        Vec3::new(x * 0.5, y * 0.5, 1.0),
+                    );
+                    r.vertex(Vec4::new(x, y, 0.0, 1.0), &c);
+                }
+            }
+            r.end();
+        }
+    }
+    r.flush(&st);
+    dump(&r, "lit");
 }
