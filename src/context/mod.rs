@@ -12,9 +12,6 @@
 //! [`Context::outside_begin_end`], which both raises INVALID_OPERATION inside a Begin/End pair
 //! and flushes batched vertices before the state they were specified under changes.
 
-// cpu-pipeline: glReadPixels and to_image.
-mod readback;
-
 use glam::Vec4;
 
 use crate::call::Call;
@@ -279,3 +276,7 @@ impl State {
         })
     }
 }
+
+// --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
+mod readback;
+// --- end cpu-pipeline
