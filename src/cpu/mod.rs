@@ -135,61 +135,21 @@ impl Renderer {
             &mut self.vout,
             &mut self.wins,
         );
-        // Primitive assembly (§2.6), clipping and setup, split in order across workers: each
-        // worker takes a run of whole primitives (balanced by vertex count) when no single
-        // primitive dominates, else one shared assembly is cut into equal runs of triangles.
-        let b = &self.batch;
-        let total = b.idx.len();
-        let nw = if total >= PARALLEL_SETUP {
-            // More workers than threads balances the load when other processes share the cores.
-            (4 * rayon::current_num_threads()).clamp(1, 32)
-        } else {
-            1
-        };
-        if self.workers.len() < nw {
-            self.workers.resize_with(nw, Worker::default);
-        }
-        let (vout, wins, mats) = (&self.vout, &self.wins, &b.mat);
-        let workers = &mut self.workers[..nw];
-        let largest = b.prims.iter().map(|p| p.count as usize).max().unwrap_or(0);
-        if nw == 1 {
-            if let Some(w) = workers.first_mut() {
-                w.assemble_and_run(&ctx, vout, wins, b, &b.prims);
-            }
-        } else if largest <= total / nw {
-            // Cut points: the first primitive starting at or after each k·total/nw vertices.
-            let mut cuts = [0usize; 33];
-            let mut k = 1;
-            for (i, p) in b.prims.iter().enumerate() {
-                while k < nw && p.first as usize >= k * total / nw {
-                    cuts[k] = i;
-                    k += 1;
-                }
-            }
-            for c in cuts.iter_mut().take(nw + 1).skip(k) {
-                *c = b.prims.len();
-            }
-            workers.par_iter_mut().enumerate().for_each(|(i, w)| {
-                let prims = b.prims.get(cuts[i]..cuts[i + 1]).unwrap_or(&[]);
-                w.assemble_and_run(&ctx, vout, wins, b, prims);
-            });
-        } else {
-            assembly::assemble(&b.prims, &b.idx, &b.edge, &mut self.asm);
-            let asm = &self.asm;
-            let chunk = asm.len().div_ceil(nw).max(1);
-            workers.par_iter_mut().enumerate().for_each(|(i, w)| {
-                let lo = (i * chunk).min(asm.len());
-                let hi = ((i + 1) * chunk).min(asm.len());
-                w.run(&ctx, vout, wins, mats, asm.get(lo..hi).unwrap_or(&[]));
-            });
-        }
-
-        // Rasterisation and fragment operations, tiles in parallel.
+        // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
-        let mats: &[[Material; 2]] = if self.batch.snapshots.is_empty() {
+        let Renderer {
+            fb,
+            batch,
+            vout,
+            wins,
+            asm,
+            workers,
+            count_coverage,
+        } = self;
+        let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
             std::slice::from_ref(&state.materials)
         } else {
-            &self.batch.snapshots
+            &batch.snapshots
         };
         let fctx = FragCtx {
             depth_test: state.enables.depth_test,
@@ -200,36 +160,142 @@ impl Renderer {
             rl: ctx.rl,
             lighting: lighting.as_ref(),
             mats,
-            count: self.count_coverage,
+            count: *count_coverage,
         };
-        let workers = &self.workers[..nw];
-        let tiles_x = ctx.tiles_x;
-        let fb = &mut self.fb;
-        fb.color
-            .par_chunks_mut(TILE_PIXELS)
-            .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
-            .enumerate()
-            .for_each(|(t, (color, depth))| {
-                if workers
-                    .iter()
-                    .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
-                {
-                    return;
+        let nw = if batch.idx.len() >= PARALLEL_SETUP {
+            // More workers than threads balances the load when other processes share the cores.
+            (4 * rayon::current_num_threads()).clamp(1, 32)
+        } else {
+            1
+        };
+        if workers.len() < nw {
+            workers.resize_with(nw, Worker::default);
+        }
+        let workers = &mut workers[..nw];
+        let v = Verts { vout, wins, batch };
+        // Pieces of whole primitives, about PIECE vertices each, go through assembly, clipping,
+        // setup and rasterisation one after the other: the setup output stays small and warm
+        // in the cache, and memory does not grow with the batch.
+        let prims = &batch.prims;
+        let mut start = 0;
+        while start < prims.len() {
+            let mut end = start;
+            let mut count = 0usize;
+            while let Some(p) = prims.get(end) {
+                if end > start && count + p.count as usize > PIECE {
+                    break;
                 }
-                let mut bufs = TileBufs {
-                    color,
-                    depth,
-                    x: ((t % tiles_x) * TILE) as i32,
-                    y: ((t / tiles_x) * TILE) as i32,
-                };
-                for w in workers {
-                    for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
-                        if let Some(p) = w.prims.get(pi as usize) {
-                            raster::prim(&fctx, &mut bufs, p, &w.pool);
-                        }
+                count += p.count as usize;
+                end += 1;
+            }
+            let piece = prims.get(start..end).unwrap_or(&[]);
+            let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
+            if workers.len() == 1 || largest <= count / workers.len() {
+                setup_by_primitives(workers, &ctx, &v, piece, count);
+                rasterise(fb, workers, &fctx, ctx.tiles_x);
+            } else {
+                // One primitive dominates: assemble it, then cut its triangles into runs.
+                assembly::assemble(piece, &batch.idx, &batch.edge, asm);
+                for run in asm.chunks(PIECE) {
+                    setup_by_triangles(workers, &ctx, &v, run);
+                    rasterise(fb, workers, &fctx, ctx.tiles_x);
+                }
+            }
+            start = end;
+        }
+        batch.clear();
+    }
+}
+
+/// Given vertices per piece of a flush.
+const PIECE: usize = 1 << 15;
+
+/// The processed vertices of a flush.
+struct Verts<'a> {
+    vout: &'a [f32],
+    wins: &'a [setup::Win],
+    batch: &'a Batch,
+}
+
+/// Setup of whole primitives split in order across `workers`, balanced by vertex count
+/// (`count` vertices in all).
+fn setup_by_primitives(
+    workers: &mut [Worker],
+    ctx: &SetupCtx,
+    v: &Verts,
+    prims: &[batch::Prim],
+    count: usize,
+) {
+    let nw = workers.len();
+    if nw == 1 {
+        if let Some(w) = workers.first_mut() {
+            w.assemble_and_run(ctx, v.vout, v.wins, v.batch, prims);
+        }
+        return;
+    }
+    // Cut points: the first primitive starting at or after each k·count/nw vertices.
+    let first = prims.first().map_or(0, |p| p.first as usize);
+    let mut cuts = [0usize; 33];
+    let mut k = 1;
+    for (i, p) in prims.iter().enumerate() {
+        while k < nw && p.first as usize - first >= k * count / nw {
+            cuts[k] = i;
+            k += 1;
+        }
+    }
+    for c in cuts.iter_mut().take(nw + 1).skip(k) {
+        *c = prims.len();
+    }
+    workers.par_iter_mut().enumerate().for_each(|(i, w)| {
+        let lo = cuts.get(i).copied().unwrap_or(0);
+        let hi = cuts.get(i + 1).copied().unwrap_or(lo);
+        let part = prims.get(lo..hi).unwrap_or(&[]);
+        w.assemble_and_run(ctx, v.vout, v.wins, v.batch, part);
+    });
+}
+
+/// Setup of assembled triangles cut into equal runs across `workers`.
+fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[Asm]) {
+    let chunk = asm.len().div_ceil(workers.len()).max(1);
+    workers.par_iter_mut().enumerate().for_each(|(i, w)| {
+        let lo = (i * chunk).min(asm.len());
+        let hi = ((i + 1) * chunk).min(asm.len());
+        w.run(
+            ctx,
+            v.vout,
+            v.wins,
+            &v.batch.mat,
+            asm.get(lo..hi).unwrap_or(&[]),
+        );
+    });
+}
+
+/// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
+/// primitives first, then worker 1's, ..., which is submission order.
+fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) {
+    fb.color
+        .par_chunks_mut(TILE_PIXELS)
+        .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
+        .enumerate()
+        .for_each(|(t, (color, depth))| {
+            if workers
+                .iter()
+                .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
+            {
+                return;
+            }
+            let mut bufs = TileBufs {
+                color,
+                depth,
+                x: ((t % tiles_x) * TILE) as i32,
+                y: ((t / tiles_x) * TILE) as i32,
+            };
+            for w in workers {
+                for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
+                    if let Some(p) = w.prims.get(pi as usize) {
+                        raster::prim(fctx, &mut bufs, p, &w.pool);
                     }
                 }
-            });
-        self.batch.clear();
-    }
+            }
+        });
 }
