@@ -134,6 +134,8 @@ impl Context {
             return self.error(gl::INVALID_OPERATION);
         }
         self.renderer.end();
+        // cpu-pipeline: draw a large batch now (its state is unchanged since it was batched).
+        self.renderer.flush_if_large(&self.state);
     }
 
     /// The common path of every `Vertex*` form. Outside Begin/End a vertex has no effect (GL 2.1

@@ -88,6 +88,15 @@ impl Renderer {
         self.batch.end();
     }
 
+    /// Draws the batch now if it holds many vertices: called after `End`, when the state the
+    /// batch was specified under is still current. Keeps the batch (and its memory) bounded and
+    /// cache-warm without changing the result.
+    pub fn flush_if_large(&mut self, state: &State) {
+        if self.batch.idx.len() >= FLUSH_AT {
+            self.flush(state);
+        }
+    }
+
     /// `Material` called between Begin and End: `materials` are the new front and back materials,
     /// which apply from the next vertex on (GL 2.1 §2.14.3). Outside Begin/End the front end
     /// flushes instead, so this is only called with a primitive open.
@@ -206,6 +215,9 @@ impl Renderer {
         batch.clear();
     }
 }
+
+/// Given vertices after which `flush_if_large` draws the batch.
+const FLUSH_AT: usize = 1 << 16;
 
 /// Given vertices per piece of a flush.
 const PIECE: usize = 1 << 15;

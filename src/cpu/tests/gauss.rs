@@ -72,6 +72,8 @@ pub(super) fn frame(r: &mut Renderer, st: &State, size: usize, g: &(Vec<Vec3>, V
                 r.vertex(p[k].extend(1.0), &c);
             }
             r.end();
+            // As `Context::end` does.
+            r.flush_if_large(st);
         }
     }
     r.flush(st);
