@@ -140,3 +140,34 @@ fn gaussian_400_timing() {
     let raw: Vec<u8> = r.color().iter().flatten().copied().collect();
     let _ = std::fs::write("/tmp/cpu-gauss400.rgba", raw);
 }
+
+#[test]
+#[ignore = "writes /tmp/cpu-gaussflat40.rgba for comparison with llvmpipe"]
+fn gaussian_flat_40_reference() {
+    let mut st = scene_state(800);
+    st.shade_model = gl::FLAT;
+    let mut r = Renderer::new(800, 800);
+    let (p, nrm) = grid(40);
+    let n = 42;
+    r.clear(&st, gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+    let mut c = Current::default();
+    for i in 1..n - 1 {
+        for j in 1..n - 1 {
+            // One normal per cell, set before the strip (the seed's flat variant).
+            c.normal = nrm[i * n + j];
+            r.begin(gl::TRIANGLE_STRIP);
+            for k in [
+                (i + 1) * n + j,
+                (i + 1) * n + j + 1,
+                i * n + j,
+                i * n + j + 1,
+            ] {
+                r.vertex(p[k].extend(1.0), &c);
+            }
+            r.end();
+        }
+    }
+    r.flush(&st);
+    let raw: Vec<u8> = r.color().iter().flatten().copied().collect();
+    let _ = std::fs::write("/tmp/cpu-gaussflat40.rgba", raw);
+}
