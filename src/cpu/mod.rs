@@ -8,9 +8,14 @@
 //! A flush runs GL 2.1's pipeline in stages, each in its own module:
 //! [`batch`] → [`vertex`] (§2.11, §2.14) → [`assembly`] (§2.6) → [`clip`] (§2.12) →
 //! [`setup`] (§2.11.1, §3.5–3.6) → [`raster`] (§3.4–3.6) → [`fragment`] (§3.9, §4.1) →
-//! [`framebuffer`] (§4.2). Design decision: setup splits the primitives across threads in order
-//! and bins them per 64x64 tile; tiles are then rasterised in parallel, each owning its pixels, and
-//! inside a tile primitives are drawn in submission order.
+//! [`framebuffer`] (§4.2).
+//!
+//! Design decision: parallelism without locks and without reordering. The vertex stage runs in
+//! parallel chunks; the primitives are then taken in pieces of about 32k vertices, each piece
+//! split in order across setup workers that bin their primitives per 64x64 tile; tiles are
+//! rasterised in parallel, each owning its pixels, visiting worker 0's bin, then worker 1's, ...,
+//! so every tile sees the primitives in submission order (depth ties and, later, blending
+//! depend on it). A batch is drawn at End once it holds 64k vertices, so memory stays bounded.
 
 pub mod assembly;
 pub mod batch;

@@ -363,6 +363,7 @@ impl Worker {
 
     /// Fills `w.v` from processed vertex `v`: the face's colours (the provoking vertex's under
     /// FLAT), then texture coordinates and the PHONG_WIN values.
+    #[inline(always)]
     fn varyings(&self, ctx: &SetupCtx, w: &mut WVert, v: &[f32], back: bool, prov: &[f32]) {
         let l = &ctx.layout;
         let rl = &ctx.rl;
@@ -470,6 +471,7 @@ impl Worker {
     }
 
     /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
+    #[inline]
     fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
         let mut area = (b.fx - a.fx) * (c.fy - a.fy) - (c.fx - a.fx) * (b.fy - a.fy);
         let (b, c) = if area < 0 {
@@ -637,6 +639,7 @@ impl Worker {
     }
 
     /// Appends `p` and bins it into every tile its bounding box overlaps.
+    #[inline(always)]
     fn push(&mut self, p: RPrim) {
         let idx = self.prims.len() as u32;
         let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
