@@ -5,7 +5,9 @@
 //! every float of it is interpolated linearly in clip space, so new vertices carry colours, eye
 //! position, normal and texture coordinates alike; the provoking vertex is an index into the
 //! unclipped vertices, so a FLAT primitive keeps its colour through clipping (Mesa
-//! `tnl/t_vb_cliptmp.h` does the same). Edges created along a clip plane are not boundary edges.
+//! `tnl/t_vb_cliptmp.h` does the same). For polygon mode LINE, an edge created along a user clip
+//! plane is a boundary edge and one along a frustum plane is not (Mesa's draw module does this;
+//! GL leaves it open).
 
 use glam::{DVec4, Vec4};
 
@@ -118,8 +120,10 @@ impl Clipper {
                 if ini != inj && m < MAX_POLY {
                     let t = di / (di - dj);
                     b.extend(vi.iter().zip(vj).map(|(&p, &q)| p + t * (q - p)));
-                    // Leaving: the new edge runs along the plane; entering: it is part of i→j.
-                    eb[m] = if ini { false } else { edges[i] };
+                    // Entering: the new vertex's edge is part of i→j. Leaving: its edge runs
+                    // along the plane: drawn for a user plane, not for a frustum plane (what
+                    // Mesa does, after NVIDIA).
+                    eb[m] = if ini { k >= 7 } else { edges[i] };
                     m += 1;
                 }
             }

@@ -22,6 +22,7 @@ pub mod batch;
 pub mod clip;
 pub mod fragment;
 pub mod framebuffer;
+mod line;
 pub mod raster;
 pub mod setup;
 pub mod vertex;

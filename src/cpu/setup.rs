@@ -3,8 +3,8 @@
 //! per-primitive data the tile rasteriser needs (edge functions, attribute planes, tile bins).
 //!
 //! Design decision: window x and y are snapped to 1/256 pixel (8 sub-pixel bits, as llvmpipe) and
-//! triangle edge functions are exact 64-bit integers evaluated at pixel centres, with a top-left
-//! tie-break, so two triangles sharing an edge never both cover a pixel on it. Attributes become
+//! triangle edge functions are exact 64-bit integers evaluated at pixel centres, with a tie-break
+//! (left and bottom edges own their centres, as llvmpipe in a y-up window), so two triangles sharing an edge never both cover a pixel on it. Attributes become
 //! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
 //! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
 
@@ -60,10 +60,8 @@ impl RLayout {
 /// What kind of rasterised primitive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
-    /// A filled triangle.
+    /// A filled triangle (also half of a line's parallelogram).
     Tri,
-    /// A line segment.
-    Line,
     /// A point.
     Point,
 }
@@ -91,10 +89,10 @@ pub struct RPrim {
     /// Triangle: the vertices' snapped window x, y (1/256 pixel), counter-clockwise.
     pub xy: [i32; 6],
     /// Triangle: bit k set when edge k (vertex k to k+1) owns the pixel centres exactly on it
-    /// (the top-left rule).
+    /// (the tie rule: left and bottom edges).
     pub owns: u8,
-    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; line `[z0, z1, _]`; point
-    /// `[z, _, _]`. Single precision, as llvmpipe interpolates depth.
+    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; point `[z, _, _]`. Single
+    /// precision, as llvmpipe interpolates depth.
     pub z: [f32; 3],
 }
 
@@ -151,6 +149,16 @@ pub struct SetupCtx {
 }
 
 impl SetupCtx {
+    /// LineWidth.
+    pub(super) fn line_width(&self) -> f32 {
+        self.line_width
+    }
+
+    /// FLAT shading.
+    pub(super) fn flat(&self) -> bool {
+        self.flat
+    }
+
     /// The setup constants of `state`.
     pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
         let [vx, vy, vw, vh] = state.viewport.map(f64::from);
@@ -186,6 +194,10 @@ impl SetupCtx {
 /// vertex stage; the window values are meaningful only when `code` is 0).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Win {
+    /// Window x before snapping.
+    pub x: f32,
+    /// Window y before snapping.
+    pub y: f32,
     /// Snapped window x, y in 1/256 pixel.
     pub fx: i64,
     /// See `fx`.
@@ -216,6 +228,8 @@ impl SetupCtx {
             (t + 0.5f64.copysign(t)) as i64
         };
         Win {
+            x: xw as f32,
+            y: yw as f32,
             fx: snap(xw),
             fy: snap(yw),
             z: zw,
@@ -227,13 +241,16 @@ impl SetupCtx {
 
 /// A vertex in window coordinates with its varyings.
 #[derive(Clone, Copy, Debug)]
-struct WVert {
+pub(super) struct WVert {
+    /// Window x, y before snapping (line setup works from these, as llvmpipe does).
+    pub(super) x: f32,
+    pub(super) y: f32,
     /// Snapped x, y in 1/256 pixel.
-    fx: i64,
-    fy: i64,
-    z: f64,
-    iw: f32,
-    v: [f32; MAXV],
+    pub(super) fx: i64,
+    pub(super) fy: i64,
+    pub(super) z: f64,
+    pub(super) iw: f32,
+    pub(super) v: [f32; MAXV],
 }
 
 /// One setup worker's output: its primitives in order, their floats, and per-tile bins. Several
@@ -473,33 +490,13 @@ impl Worker {
     /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
     #[inline]
     fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
-        let mut area = (b.fx - a.fx) * (c.fy - a.fy) - (c.fx - a.fx) * (b.fy - a.fy);
-        let (b, c) = if area < 0 {
-            area = -area;
-            (c, b)
-        } else {
-            (b, c)
+        let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
+            return;
         };
-        if area == 0 {
-            return;
-        }
+        let (b, c) = if g.swapped { (c, b) } else { (b, c) };
+        let (area, bbox) = (g.area, g.bbox);
         let v = [a, b, c];
-        let (minx, maxx) = (a.fx.min(b.fx).min(c.fx), a.fx.max(b.fx).max(c.fx));
-        let (miny, maxy) = (a.fy.min(b.fy).min(c.fy), a.fy.max(b.fy).max(c.fy));
-        // Pixels whose centre (i + 0.5) can lie inside.
-        let lo = |m: i64| -((128 - m).div_euclid(256));
-        let hi = |m: i64| (m - 128).div_euclid(256);
-        let bbox = [
-            clamp_i32(lo(minx)).max(ctx.rect[0]),
-            clamp_i32(lo(miny)).max(ctx.rect[1]),
-            clamp_i32(hi(maxx)).min(ctx.rect[2]),
-            clamp_i32(hi(maxy)).min(ctx.rect[3]),
-        ];
-        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
-            return;
-        }
         let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
-        let mut owns_bits = 0u8;
         let mut lam = [[0f64; 3]; 3];
         let inv = 1.0 / area as f64;
         for k in 0..3 {
@@ -507,10 +504,6 @@ impl Worker {
             let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
             let e00 = dx * (128 - p.fy) - dy * (128 - p.fx);
             let (ex, ey) = (-dy * 256, dx * 256);
-            // Top-left rule in GL's y-up window: a left edge (going down) or a top edge (going
-            // left) owns the pixel centres exactly on it; other edges do not.
-            let owns = dy < 0 || (dy == 0 && dx < 0);
-            owns_bits |= u8::from(owns) << k;
             // Barycentric of the vertex opposite edge k, relative to the bbox corner.
             lam[(k + 2) % 3] = [
                 (e00 + ex * ox + ey * oy) as f64 * inv,
@@ -570,40 +563,8 @@ impl Worker {
                 c.fx as i32,
                 c.fy as i32,
             ],
-            owns: owns_bits,
+            owns: g.owns,
             z,
-        });
-    }
-
-    /// A line segment (§3.5): endpoints snapped like triangle vertices, varyings at both ends.
-    fn line(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, off: f64, flags: u8, mat: u32) {
-        let f = |v: i64| v as f32 / 256.0;
-        let g = [f(a.fx), f(a.fy), f(b.fx), f(b.fy), ctx.line_width];
-        let wi = ctx.line_width.round().max(1.0) + 2.0;
-        let bbox = [
-            clamp_f(g[0].min(g[2]) - wi).max(ctx.rect[0]),
-            clamp_f(g[1].min(g[3]) - wi).max(ctx.rect[1]),
-            clamp_f(g[0].max(g[2]) + wi).min(ctx.rect[2]),
-            clamp_f(g[1].max(g[3]) + wi).min(ctx.rect[3]),
-        ];
-        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
-            return;
-        }
-        let voff = self.pool.len() as u32;
-        let n = ctx.rl.n;
-        self.pool.extend(g);
-        self.pool.extend([a.iw, b.iw]);
-        self.pool.extend_from_slice(&a.v[..n]);
-        self.pool.extend_from_slice(&b.v[..n]);
-        self.push(RPrim {
-            kind: Kind::Line,
-            flags,
-            bbox,
-            mat,
-            voff,
-            xy: [0; 6],
-            owns: 0,
-            z: [(a.z + off) as f32, (b.z + off) as f32, 0.0],
         });
     }
 
@@ -640,7 +601,7 @@ impl Worker {
 
     /// Appends `p` and bins it into every tile its bounding box overlaps.
     #[inline(always)]
-    fn push(&mut self, p: RPrim) {
+    pub(super) fn push(&mut self, p: RPrim) {
         let idx = self.prims.len() as u32;
         let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
         let tiles_x = self.bins_x;
@@ -664,6 +625,8 @@ impl Worker {
 
 fn from_win(w: &Win) -> WVert {
     WVert {
+        x: w.x,
+        y: w.y,
         fx: w.fx,
         fy: w.fy,
         z: w.z,
@@ -673,12 +636,69 @@ fn from_win(w: &Win) -> WVert {
 }
 
 const ZERO_W: WVert = WVert {
+    x: 0.0,
+    y: 0.0,
     fx: 0,
     fy: 0,
     z: 0.0,
     iw: 0.0,
     v: [0.0; MAXV],
 };
+
+/// A triangle's place on the pixel grid: counter-clockwise order, doubled area, the pixels whose
+/// centres can be inside (cut to `rect`), and which edges own centres exactly on them.
+pub(super) struct Geom {
+    /// The vertices counter-clockwise (snapped, 1/256 pixel).
+    pub v: [[i64; 2]; 3],
+    /// The second and third input vertices were swapped to make the order counter-clockwise.
+    pub swapped: bool,
+    /// Twice the area, in (1/256 pixel)², positive.
+    pub area: i64,
+    /// Pixel bounding box, inclusive.
+    pub bbox: [i32; 4],
+    /// Bit k: edge k (vertex k to k + 1) owns the centres on it.
+    pub owns: u8,
+}
+
+/// The grid placement of triangle `p` (snapped window coordinates), `None` when it has no area
+/// or no pixel of `rect`.
+pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
+    let [a, b, c] = p;
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    if area == 0 {
+        return None;
+    }
+    let swapped = area < 0;
+    let v = if swapped { [a, c, b] } else { [a, b, c] };
+    let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+    let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+    // Pixels whose centre (i + 0.5) can lie inside.
+    let lo = |m: i64| -((128 - m).div_euclid(256));
+    let hi = |m: i64| (m - 128).div_euclid(256);
+    let bbox = [
+        clamp_i32(lo(minx)).max(rect[0]),
+        clamp_i32(lo(miny)).max(rect[1]),
+        clamp_i32(hi(maxx)).min(rect[2]),
+        clamp_i32(hi(maxy)).min(rect[3]),
+    ];
+    if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+        return None;
+    }
+    let mut owns = 0u8;
+    for k in 0..3 {
+        let (dx, dy) = (v[(k + 1) % 3][0] - v[k][0], v[(k + 1) % 3][1] - v[k][1]);
+        // Tie rule, as llvmpipe applies it to a y-up window: a left edge (going down) or a
+        // bottom edge (going right) owns the pixel centres exactly on it; other edges do not.
+        owns |= u8::from(dy < 0 || (dy == 0 && dx > 0)) << k;
+    }
+    Some(Geom {
+        v,
+        swapped,
+        area: area.abs(),
+        bbox,
+        owns,
+    })
+}
 
 /// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).
 fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {

@@ -348,18 +348,16 @@ fn near_plane_cut() {
 fn inside_triangle_is_not_clipped_and_boundary_vertices_are_inside() {
     let (mut r, st) = setup(16, 16);
     r.count_coverage = true;
-    // Vertices exactly on x = ±w: lower-right half-square of 16·16/2 = 128 pixels less the
-    // diagonal's ties: the diagonal y = −x passes through corners only, so exactly 120 centres
-    // are strictly inside (Σ over rows r of (15 − r)... = 120) plus none on it.
+    // Vertices exactly on x = ±w (the frustum's edge): nothing is clipped away.
     draw_pal(
         &mut r,
         &st,
         gl::TRIANGLES,
         &[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0]],
     );
-    // Row y has centres x + 0.5 > y + 0.5 strictly (x > y) or equal (x == y, on the edge):
-    // with the top-left rule the diagonal edge from (16,16) to (0,0) goes down-left (dy < 0),
-    // a left edge, so centres on it count: 16 + 15 + ... + 1 = 136.
+    // Row y has centres with x > y strictly inside, x == y on the diagonal: the edge from
+    // (16,16) to (0,0) goes down (dy < 0), a left edge, so centres on it count:
+    // 16 + 15 + ... + 1 = 136.
     assert_eq!(counts(&r).iter().filter(|&&c| c == 1).count(), 136);
 }
 
@@ -636,4 +634,47 @@ fn lines_follow_the_diamond_exit_rule() {
     // Reversed: pixel 8's diamond holds the start (drawn, the line leaves it); pixel 2's holds
     // the end (|2.2 − 2.5| = 0.3 < 0.5): not drawn.
     assert_eq!(drawn(8.6, 2.2), (3..=8).collect::<Vec<_>>());
+}
+
+#[test]
+fn tie_rule_owns_left_and_bottom_edges() {
+    let (mut r, st) = setup(16, 16);
+    // Window coordinates through pixel centres: x/8 − 1.
+    let ndc = |p: [f32; 2]| [p[0] / 8.0 - 1.0, p[1] / 8.0 - 1.0];
+    let a = [[2.5, 2.5], [8.5, 2.5], [2.5, 8.5]].map(ndc);
+    let b = [[13.5, 13.5], [9.5, 13.5], [13.5, 9.5]].map(ndc);
+    draw_pal(
+        &mut r,
+        &st,
+        gl::TRIANGLES,
+        &[a[0], a[1], a[2], b[0], b[1], b[2]],
+    );
+    // A: its bottom edge (row 2) and left edge (column 2) own their centres; the hypotenuse
+    // x + y = 11 does not (it goes up-left), so row 2 is columns 2..=7.
+    let row2: Vec<i64> = (0..16).filter(|&x| px(&r, x, 2) != [0; 4]).collect();
+    assert_eq!(row2, (2..=7).collect::<Vec<_>>());
+    assert!((2..=7).all(|y| px(&r, 2, y) != [0; 4]));
+    // B: its top edge (row 13) and right edge (column 13) own nothing.
+    assert!((0..16).all(|x| px(&r, x, 13) == [0; 4]));
+    assert!((0..16).all(|y| px(&r, 13, y) == [0; 4]));
+    assert_ne!(px(&r, 12, 12), [0; 4]);
+}
+
+#[test]
+fn edges_along_a_user_clip_plane_are_drawn_in_line_mode() {
+    let (mut r, mut st) = setup(16, 16);
+    st.polygon_mode = [gl::LINE, gl::LINE];
+    st.enables.clip_planes[0] = true;
+    // Keep x <= 0.0625 (window x <= 8.5, the centres of column 8).
+    st.clip_planes[0] = glam::DVec4::new(-1.0, 0.0, 0.0, 0.0625);
+    draw_pal(
+        &mut r,
+        &st,
+        gl::TRIANGLES,
+        &[[-0.9, -0.9], [0.9, -0.9], [-0.9, 0.9]],
+    );
+    // The cut runs along column 8 from the bottom edge up to the hypotenuse (window y from 0.8
+    // to 8.3): rows 1..=7 of column 8 are drawn; nothing right of it.
+    assert!((1..=7).all(|y| px(&r, 8, y) != [0; 4]));
+    assert!((0..16).all(|y| px(&r, 9, y) == [0; 4]));
 }

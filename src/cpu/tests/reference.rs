@@ -221,3 +221,59 @@ fn reference_lit() {
     r.flush(&st);
     dump(&r, "lit");
 }
+
+#[test]
+#[ignore = "writes /tmp/cpu-misc.rgba for comparison with llvmpipe"]
+fn reference_misc() {
+    let (mut r, mut st) = setup(64, 64);
+    st.viewport = [4, 6, 56, 50];
+    st.depth_range = [0.2, 0.8];
+    st.enables.scissor_test = true;
+    st.scissor = [2, 3, 58, 55];
+    st.clip_planes[0] = glam::DVec4::new(1.0, 0.3, 0.0, 0.4);
+    st.enables.clip_planes[0] = true;
+    st.enables.depth_test = true;
+    let p = [[-0.9, -0.9, -0.5], [0.9, -0.7, 0.6], [0.1, 0.9, 0.1]];
+    let cols = [c3(1.0, 0.0, 0.0), c3(0.0, 1.0, 0.0), c3(0.0, 0.0, 1.0)];
+    draw(
+        &mut r,
+        &st,
+        gl::TRIANGLES,
+        &[(p[0], cols[0]), (p[1], cols[1]), (p[2], cols[2])],
+    );
+    st.enables.polygon_offset_line = true;
+    st.polygon_offset_factor = -1.0;
+    st.polygon_offset_units = -2.0;
+    st.polygon_mode = [gl::LINE, gl::LINE];
+    let w = Vec4::ONE;
+    draw(
+        &mut r,
+        &st,
+        gl::TRIANGLES,
+        &[(p[0], w), (p[1], w), (p[2], w)],
+    );
+    dump(&r, "misc");
+}
+
+#[test]
+#[ignore = "writes /tmp/cpu-ties.rgba for comparison with llvmpipe"]
+fn reference_ties() {
+    let (mut r, st) = setup(16, 16);
+    let t = [
+        [[2.5, 2.5], [8.5, 2.5], [2.5, 8.5]],
+        [[13.5, 13.5], [9.5, 13.5], [13.5, 9.5]],
+    ];
+    let mut vs = Vec::new();
+    for (k, tri) in t.iter().enumerate() {
+        let c = c3(
+            if k == 0 { 1.0 } else { 0.0 },
+            if k == 1 { 1.0 } else { 0.0 },
+            1.0,
+        );
+        for p in tri {
+            vs.push(([p[0] / 8.0 - 1.0, p[1] / 8.0 - 1.0, 0.0], c));
+        }
+    }
+    draw(&mut r, &st, gl::TRIANGLES, &vs);
+    dump(&r, "ties");
+}
