@@ -1,10 +1,11 @@
 //! The vertex stage: modelview and projection transforms, the normal transform with
 //! RESCALE_NORMAL / NORMALIZE, and the GL 1.x lighting equation (GL 2.1 §2.11, §2.14.1).
 //!
-//! Design decision: `Lighting::shade` is the one implementation of the lighting equation; the
-//! vertex stage calls it per vertex and the PHONG_WIN fragment path calls it per fragment, so the
-//! two shading modes can never disagree about the equation. Results are written to one flat
-//! `f32` array with a per-flush `Layout`, carrying only the attributes the flush needs.
+//! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation;
+//! the vertex stage calls it for blocks of 8 vertices and the PHONG_WIN fragment path (through
+//! `Lighting::shade`) for single fragments, so the two shading modes can never disagree about the
+//! equation. Results are written to one flat `f32` array with a per-flush `Layout`, carrying only
+//! the attributes the flush needs, plus each vertex's clip code and window coordinates.
 
 use glam::{Mat3, Mat4, Vec3, Vec3A, Vec4, Vec4Swizzles};
 use rayon::prelude::*;
