@@ -493,6 +493,10 @@ impl Worker {
         let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
             return;
         };
+        if !g.may_cover() {
+            // A sliver between pixel centres (common in dense meshes): nothing to draw.
+            return;
+        }
         let (b, c) = if g.swapped { (c, b) } else { (b, c) };
         let (area, bbox) = (g.area, g.bbox);
         let v = [a, b, c];
@@ -658,6 +662,34 @@ pub(super) struct Geom {
     pub bbox: [i32; 4],
     /// Bit k: edge k (vertex k to k + 1) owns the centres on it.
     pub owns: u8,
+}
+
+impl Geom {
+    /// False when the triangle certainly covers no pixel centre: checked exactly for bounding
+    /// boxes of at most 2x2 pixels, assumed true for larger ones.
+    #[inline]
+    pub(super) fn may_cover(&self) -> bool {
+        let [x0, y0, x1, y1] = self.bbox;
+        if x1 - x0 > 1 || y1 - y0 > 1 {
+            return true;
+        }
+        let v = self.v;
+        let e = |k: usize, px: i64, py: i64| {
+            let (p, q) = (v[k], v[(k + 1) % 3]);
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let bias = i64::from(self.owns & (1 << k) == 0);
+            dx * (py - p[1]) - dy * (px - p[0]) - bias
+        };
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let (px, py) = (i64::from(x) * 256 + 128, i64::from(y) * 256 + 128);
+                if e(0, px, py) >= 0 && e(1, px, py) >= 0 && e(2, px, py) >= 0 {
+                    return true;
+                }
+            }
+        }
+        false
+    }
 }
 
 /// The grid placement of triangle `p` (snapped window coordinates), `None` when it has no area
