@@ -147,6 +147,8 @@ impl Context {
         }
         self.begin_mode = Some(mode);
         self.renderer.begin(mode);
+        // cpu-pipeline: the materials at Begin, for Material changes inside the pair (§2.14.3).
+        self.renderer.begin_materials(&self.state.materials);
     }
 
     /// `glEnd`.
@@ -156,6 +158,8 @@ impl Context {
             return self.error(gl::INVALID_OPERATION);
         }
         self.renderer.end();
+        // cpu-pipeline: draw a large batch now (its state is unchanged since it was batched).
+        self.renderer.flush_if_large(&self.state);
     }
 
     /// `glEnable`.
@@ -458,3 +462,7 @@ impl State {
         })
     }
 }
+
+// --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
+mod readback;
+// --- end cpu-pipeline

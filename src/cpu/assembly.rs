@@ -1,0 +1,125 @@
+//! Primitive assembly: the ten Begin modes into points, lines and triangles (GL 2.1 §2.6.1,
+//! table 2.2 for the provoking vertex, §2.6.2 for edge flags).
+//!
+//! Design decision: quads and polygons are split into triangles here, the way Mesa's draw module
+//! splits them (so interpolation across a non-planar quad matches llvmpipe), with the interior
+//! (diagonal) edges flagged off, so polygon mode LINE and POINT still draw exactly the original
+//! boundary and each boundary vertex once; every sub-triangle keeps the original polygon's
+//! provoking vertex. Incomplete primitives are dropped.
+
+use super::batch::Prim;
+use crate::gl;
+
+/// One assembled primitive, indices into the processed vertex array.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Asm {
+    /// 1 point, 2 line, 3 triangle.
+    pub n: u8,
+    /// Bit i set: the edge from `v[i]` to the next vertex is a boundary edge (triangles).
+    pub edges: u8,
+    /// Vertex indices (the first `n`).
+    pub v: [u32; 3],
+    /// The provoking vertex (FLAT colour source).
+    pub provoking: u32,
+}
+
+/// Appends the primitives of `prims` to `out`: `idx` maps each vertex given to its unique
+/// vertex, `edge` are the unique vertices' edge flags.
+pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], out: &mut Vec<Asm>) {
+    out.clear();
+    let start = out.len();
+    let ef = |i: u32| {
+        let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
+        edge.get(u as usize).copied().unwrap_or(true)
+    };
+    let point = |a: u32| Asm {
+        n: 1,
+        edges: 0,
+        v: [a, a, a],
+        provoking: a,
+    };
+    let line = |a: u32, b: u32, p: u32| Asm {
+        n: 2,
+        edges: 0,
+        v: [a, b, b],
+        provoking: p,
+    };
+    let tri = |a: u32, b: u32, c: u32, p: u32, edges: u8| Asm {
+        n: 3,
+        edges,
+        v: [a, b, c],
+        provoking: p,
+    };
+    let flags = |a: bool, b: bool, c: bool| u8::from(a) | u8::from(b) << 1 | u8::from(c) << 2;
+    for p in prims {
+        let (f, n) = (p.first, p.count);
+        match p.mode {
+            gl::POINTS => out.extend((f..f + n).map(point)),
+            gl::LINES => out.extend((0..n / 2).map(|i| {
+                let a = f + 2 * i;
+                line(a, a + 1, a + 1)
+            })),
+            gl::LINE_STRIP | gl::LINE_LOOP => {
+                if n < 2 {
+                    continue;
+                }
+                out.extend((f..f + n - 1).map(|a| line(a, a + 1, a + 1)));
+                if p.mode == gl::LINE_LOOP {
+                    // Table 2.2: the closing segment's provoking vertex is the first.
+                    out.push(line(f + n - 1, f, f));
+                }
+            }
+            gl::TRIANGLES => out.extend((0..n / 3).map(|i| {
+                let a = f + 3 * i;
+                tri(a, a + 1, a + 2, a + 2, flags(ef(a), ef(a + 1), ef(a + 2)))
+            })),
+            gl::TRIANGLE_STRIP => out.extend((0..n.saturating_sub(2)).map(|i| {
+                let a = f + i;
+                // Odd triangles swap their first two vertices to keep the strip's orientation.
+                if i % 2 == 0 {
+                    tri(a, a + 1, a + 2, a + 2, 7)
+                } else {
+                    tri(a + 1, a, a + 2, a + 2, 7)
+                }
+            })),
+            gl::TRIANGLE_FAN => out.extend(
+                (0..n.saturating_sub(2)).map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, 7)),
+            ),
+            gl::QUADS => {
+                // Split along the 1–3 diagonal, as Mesa's draw module does with the provoking
+                // vertex last: (0,1,3) and (1,2,3).
+                for i in 0..n / 4 {
+                    let a = f + 4 * i;
+                    let [e0, e1, e2, e3] = [ef(a), ef(a + 1), ef(a + 2), ef(a + 3)];
+                    out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
+                    out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
+                }
+            }
+            gl::QUAD_STRIP => {
+                for i in 0..(n / 2).saturating_sub(1) {
+                    // Quad i: vertices 2i, 2i+1, 2i+3, 2i+2 (0-based), provoking 2i+3; split
+                    // along 2i–2i+3 like Mesa: (2i+2, 2i, 2i+3) and (2i, 2i+1, 2i+3).
+                    let a = f + 2 * i;
+                    out.push(tri(a + 2, a, a + 3, a + 3, flags(true, false, true)));
+                    out.push(tri(a, a + 1, a + 3, a + 3, flags(true, true, false)));
+                }
+            }
+            gl::POLYGON => {
+                for i in 0..n.saturating_sub(2) {
+                    let (b, c) = (f + i + 1, f + i + 2);
+                    let first = i == 0;
+                    let last = i + 3 == n;
+                    let e = flags(first && ef(f), ef(b), last && ef(c));
+                    out.push(tri(f, b, c, f, e));
+                }
+            }
+            _ => {}
+        }
+    }
+    // Assembled in given-vertex positions; now point them at the unique vertices.
+    let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
+    for a in &mut out[start..] {
+        a.v = a.v.map(map);
+        a.provoking = map(a.provoking);
+    }
+}

@@ -1,0 +1,228 @@
+//! Per-fragment operations in the spec's order (GL 2.1 §3.9 colour sum, §4.1 per-fragment
+//! operations): the scissor test (already applied as the rasteriser's rectangle), the depth test
+//! with DepthFunc and DepthMask, then the colour write through ColorMask.
+//!
+//! Design decision: a triangle row arrives as a span; the depth test runs over the whole span
+//! first and produces a coverage mask, and colours are computed only for the surviving pixels,
+//! returning at once when the mask is empty (Mesa `swrast/s_span.h`). Texture, fog, alpha,
+//! stencil and blending slot in as further passes over the same mask.
+
+use glam::{Vec3, Vec4};
+
+use super::framebuffer::{depth_unorm, unorm8, TILE};
+use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_PHONG};
+use super::vertex::Lighting;
+use crate::gl;
+use crate::state::{Material, BACK, FRONT};
+
+/// The fragment-stage state of one flush.
+#[derive(Clone, Debug)]
+pub struct FragCtx<'a> {
+    /// DEPTH_TEST enabled.
+    pub depth_test: bool,
+    /// DepthFunc.
+    pub depth_func: u32,
+    /// DepthMask.
+    pub depth_mask: bool,
+    /// ColorMask.
+    pub color_mask: [bool; 4],
+    /// Add the secondary colour (§3.9: lighting with SEPARATE_SPECULAR_COLOR, or COLOR_SUM).
+    pub color_sum: bool,
+    /// Varying layout.
+    pub rl: RLayout,
+    /// Lighting for PHONG_WIN triangles.
+    pub lighting: Option<&'a Lighting>,
+    /// Materials by snapshot index.
+    pub mats: &'a [[Material; 2]],
+    /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
+    /// reaches the colour write (tests count coverage with it).
+    pub count: bool,
+}
+
+/// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
+pub struct TileBufs<'a> {
+    /// RGBA8, `TILE * TILE`.
+    pub color: &'a mut [[u8; 4]],
+    /// Depth, `TILE * TILE`.
+    pub depth: &'a mut [u32],
+    /// Tile origin x.
+    pub x: i32,
+    /// Tile origin y.
+    pub y: i32,
+}
+
+impl FragCtx<'_> {
+    /// The depth test (§4.1.6): does `d` pass against the stored `stored`?
+    #[inline(always)]
+    fn depth_pass(&self, d: u32, stored: u32) -> bool {
+        match self.depth_func {
+            gl::NEVER => false,
+            gl::LESS => d < stored,
+            gl::EQUAL => d == stored,
+            gl::LEQUAL => d <= stored,
+            gl::GREATER => d > stored,
+            gl::NOTEQUAL => d != stored,
+            gl::GEQUAL => d >= stored,
+            _ => true,
+        }
+    }
+
+    /// Depth test and depth write for the fragment at tile index `i`; true when it survives.
+    #[inline(always)]
+    fn depth(&self, bufs: &mut TileBufs, i: usize, z: f64) -> bool {
+        if !self.depth_test {
+            return true;
+        }
+        let d = depth_unorm(z);
+        let Some(stored) = bufs.depth.get_mut(i) else {
+            return false;
+        };
+        if !self.depth_pass(d, *stored) {
+            return false;
+        }
+        if self.depth_mask {
+            *stored = d;
+        }
+        true
+    }
+
+    /// The final colour of a fragment with varyings `v` (§3.9 colour sum; PHONG_WIN lighting).
+    #[inline(always)]
+    fn color(&self, p: &RPrim, v: &[f32]) -> Vec4 {
+        let g = |k: usize| v.get(k).copied().unwrap_or(0.0);
+        let mut c = Vec4::new(g(0), g(1), g(2), g(3));
+        let mut s = self.rl.spec.map(|o| Vec3::new(g(o), g(o + 1), g(o + 2)));
+        if p.flags & F_PHONG != 0 {
+            if let (Some(l), Some(o)) = (self.lighting, self.rl.phong) {
+                let eye = Vec3::new(g(o), g(o + 1), g(o + 2));
+                let mut n = Vec3::new(g(o + 3), g(o + 4), g(o + 5)).normalize_or_zero();
+                let raw = Vec4::new(g(o + 6), g(o + 7), g(o + 8), g(o + 9));
+                let face = if p.flags & F_BACK != 0 { BACK } else { FRONT };
+                if face == BACK {
+                    n = -n;
+                }
+                let mats = self.mats.get(p.mat as usize).or(self.mats.first());
+                if let Some(m) = mats {
+                    let (pc, ps) = l.shade(&m[face], face, raw, eye, n);
+                    c = pc;
+                    s = s.map(|_| ps.truncate());
+                }
+            }
+        }
+        if let (true, Some(s)) = (self.color_sum, s) {
+            c += s.extend(0.0);
+        }
+        c
+    }
+
+    /// Writes colour `c` at tile index `i` through ColorMask (§4.2.2).
+    #[inline(always)]
+    fn write(&self, bufs: &mut TileBufs, i: usize, c: Vec4) {
+        let px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
+        let Some(dst) = bufs.color.get_mut(i) else {
+            return;
+        };
+        if self.count {
+            dst[0] = dst[0].wrapping_add(1);
+        } else if self.color_mask == [true; 4] {
+            *dst = px;
+        } else {
+            for k in 0..4 {
+                if self.color_mask[k] {
+                    dst[k] = px[k];
+                }
+            }
+        }
+    }
+
+    /// One fragment of a line or point at window pixel (x, y).
+    pub fn fragment(&self, bufs: &mut TileBufs, p: &RPrim, x: i32, y: i32, z: f64, v: &[f32]) {
+        let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
+        if self.depth(bufs, i, z) {
+            let c = self.color(p, v);
+            self.write(bufs, i, c);
+        }
+    }
+
+    /// A triangle span: pixels `x0..=x1` of row `y` (all inside the tile), `planes` the
+    /// primitive's pool floats (1/w plane then one plane per varying, relative to its bbox corner).
+    pub fn tri_span(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let fy = (y - oy) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let row = ((y - bufs.y) as usize) * TILE;
+        let base = row + (x0 - bufs.x) as usize;
+        let n = (x1 - x0 + 1) as usize;
+        // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits).
+        let mut mask: u64 = 0;
+        for k in 0..n.min(64) {
+            let z = zrow + p.z[1] * (x0 - ox + k as i32) as f32;
+            if self.depth(bufs, base + k, f64::from(z)) {
+                mask |= 1 << k;
+            }
+        }
+        if mask == 0 {
+            return;
+        }
+        // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
+        let nv = self.rl.n;
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        // Fast path: smooth primary colour only (no FLAT, secondary colour or PHONG_WIN).
+        if nv == 4 && nflat == 0 && p.flags & F_PHONG == 0 {
+            if let Some(&[w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay]) =
+                planes.get(..15)
+            {
+                let (w0, r0, g0, b0, a0) = (
+                    w0 + wy * fy,
+                    r0 + ry * fy,
+                    g0 + gy * fy,
+                    b0 + by * fy,
+                    a0 + ay * fy,
+                );
+                while mask != 0 {
+                    let k = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    let fx = (x0 - ox + k as i32) as f32;
+                    let inv = 1.0 / (w0 + wx * fx);
+                    let c = Vec4::new(
+                        (r0 + rx * fx) * inv,
+                        (g0 + gx * fx) * inv,
+                        (b0 + bx * fx) * inv,
+                        (a0 + ax * fx) * inv,
+                    );
+                    self.write(bufs, base + k, c);
+                }
+            }
+            return;
+        }
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; super::setup::MAXV];
+        let nv = nv.min(v.len());
+        while mask != 0 {
+            let k = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            let fx = (x0 - ox + k as i32) as f32;
+            let iw = pl(0) + pl(1) * fx + pl(2) * fy;
+            let inv = 1.0 / iw;
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let o = 3 + 3 * j;
+                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
+                *vj = if j < nflat { val } else { val * inv };
+            }
+            let c = self.color(p, &v[..nv]);
+            self.write(bufs, base + k, c);
+        }
+    }
+}

@@ -1,0 +1,175 @@
+//! The framebuffer: RGBA8 colour, 24-bit depth and 8-bit stencil (GL 2.1 §4), and `Clear` (§4.2.3).
+//!
+//! Design decision: every buffer is stored tile-major: the framebuffer is cut into `TILE` x `TILE`
+//! squares (edge tiles padded to full size) and each square's pixels are contiguous, rows bottom-up
+//! inside it. A tile is then one `chunks_mut` slice, so the rasteriser hands each tile to its own
+//! thread with no locks and no unsafe code.
+
+use rayon::prelude::*;
+
+use crate::state::State;
+
+/// Side of a square screen tile, in pixels.
+pub const TILE: usize = 64;
+/// Pixels per tile.
+pub const TILE_PIXELS: usize = TILE * TILE;
+/// Largest 24-bit depth value (window z = 1).
+pub const DEPTH_MAX: u32 = (1 << 24) - 1;
+
+/// The colour, depth and stencil buffers, tile-major.
+#[derive(Debug, Clone)]
+pub struct Framebuffer {
+    width: u32,
+    height: u32,
+    tiles_x: usize,
+    tiles_y: usize,
+    /// RGBA8 per pixel.
+    pub(crate) color: Vec<[u8; 4]>,
+    /// 24-bit depth in the low bits.
+    pub(crate) depth: Vec<u32>,
+    pub(crate) stencil: Vec<u8>,
+}
+
+impl Framebuffer {
+    /// A framebuffer cleared to colour 0, depth 1 and stencil 0 (GL's initial contents are
+    /// undefined; this is what llvmpipe starts with too).
+    pub fn new(width: u32, height: u32) -> Self {
+        let tiles_x = (width as usize).div_ceil(TILE);
+        let tiles_y = (height as usize).div_ceil(TILE);
+        let n = tiles_x * tiles_y * TILE_PIXELS;
+        Self {
+            width,
+            height,
+            tiles_x,
+            tiles_y,
+            color: vec![[0; 4]; n],
+            depth: vec![DEPTH_MAX; n],
+            stencil: vec![0; n],
+        }
+    }
+
+    /// Width and height in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// Number of tiles across and up.
+    pub fn tiles(&self) -> (usize, usize) {
+        (self.tiles_x, self.tiles_y)
+    }
+
+    /// Index of pixel (x, y) in the tile-major buffers; the caller keeps x < width, y < height.
+    #[inline]
+    pub fn index(&self, x: usize, y: usize) -> usize {
+        let tile = (y / TILE) * self.tiles_x + x / TILE;
+        tile * TILE_PIXELS + (y % TILE) * TILE + x % TILE
+    }
+
+    /// Colour, depth and stencil of pixel (x, y), or `None` outside the framebuffer.
+    pub fn pixel(&self, x: i64, y: i64) -> Option<([u8; 4], u32, u8)> {
+        if x < 0 || y < 0 || x >= i64::from(self.width) || y >= i64::from(self.height) {
+            return None;
+        }
+        let i = self.index(x as usize, y as usize);
+        Some((
+            *self.color.get(i)?,
+            *self.depth.get(i)?,
+            *self.stencil.get(i)?,
+        ))
+    }
+
+    /// The colour buffer as bottom-up rows (GL window order), `width * height` pixels.
+    pub fn color_rows(&self) -> Vec<[u8; 4]> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut out = Vec::with_capacity(w * h);
+        for y in 0..h {
+            for x in 0..w {
+                out.push(self.color[self.index(x, y)]);
+            }
+        }
+        out
+    }
+
+    /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask`, inside the scissor box when the
+    /// scissor test is enabled, through ColorMask / DepthMask / StencilMask.
+    pub fn clear(&mut self, state: &State, mask: u32) {
+        let [x0, y0, x1, y1] = scissor_rect(state);
+        if x0 > x1 || y0 > y1 {
+            return;
+        }
+        let color = (mask & crate::gl::COLOR_BUFFER_BIT != 0).then(|| {
+            let c = state.clear_color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
+            [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)]
+        });
+        let cmask = state.color_mask;
+        let depth = (mask & crate::gl::DEPTH_BUFFER_BIT != 0 && state.depth_mask)
+            .then(|| depth_unorm(state.clear_depth.clamp(0.0, 1.0)));
+        let smask = (state.stencil_writemask & 0xFF) as u8;
+        let stencil = (mask & crate::gl::STENCIL_BUFFER_BIT != 0 && smask != 0)
+            .then_some((state.clear_stencil & 0xFF) as u8);
+        let tiles_x = self.tiles_x;
+        // Tiles in parallel, each clearing its part of the rectangle.
+        self.color
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(self.depth.par_chunks_mut(TILE_PIXELS))
+            .zip(self.stencil.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .for_each(|(t, ((cbuf, dbuf), sbuf))| {
+                let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
+                let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+                let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+                for y in ty0..=ty1 {
+                    let row = (y - oy) as usize * TILE;
+                    let (a, b) = (row + (tx0 - ox) as usize, row + (tx1 - ox) as usize);
+                    if tx0 > tx1 {
+                        continue;
+                    }
+                    if let (Some(c), Some(px)) = (color, cbuf.get_mut(a..=b)) {
+                        for p in px {
+                            for k in 0..4 {
+                                if cmask[k] {
+                                    p[k] = c[k];
+                                }
+                            }
+                        }
+                    }
+                    if let (Some(d), Some(px)) = (depth, dbuf.get_mut(a..=b)) {
+                        px.fill(d);
+                    }
+                    if let (Some(sv), Some(px)) = (stencil, sbuf.get_mut(a..=b)) {
+                        for p in px {
+                            *p = (*p & !smask) | (sv & smask);
+                        }
+                    }
+                }
+            });
+    }
+}
+
+/// The pixel rectangle `[x0, y0, x1, y1]` (inclusive) that fragments may touch: the framebuffer,
+/// cut by the scissor box when SCISSOR_TEST is on (GL 2.1 §4.1.2). Empty when x0 > x1 or y0 > y1.
+pub fn scissor_rect(state: &State) -> [i32; 4] {
+    let (w, h) = (state.width as i32, state.height as i32);
+    let mut r = [0, 0, w - 1, h - 1];
+    if state.enables.scissor_test {
+        let [sx, sy, sw, sh] = state.scissor;
+        r[0] = r[0].max(sx);
+        r[1] = r[1].max(sy);
+        r[2] = r[2].min(sx.saturating_add(sw).saturating_sub(1));
+        r[3] = r[3].min(sy.saturating_add(sh).saturating_sub(1));
+    }
+    r
+}
+
+/// Float colour component to unorm8 by round-to-nearest, as llvmpipe does (GL 2.1 §2.14.9);
+/// `c` is expected in [0, 1] (NaN gives 0).
+#[inline(always)]
+pub fn unorm8(c: f32) -> u8 {
+    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+/// Window z in [0, 1] to the 24-bit depth buffer value, round-to-nearest (GL 2.1 §2.11.1).
+#[inline(always)]
+pub fn depth_unorm(z: f64) -> u32 {
+    (z.clamp(0.0, 1.0) * f64::from(DEPTH_MAX) + 0.5) as u32
+}

@@ -1,0 +1,238 @@
+//! Line setup (GL 2.1 §3.5): each segment becomes a parallelogram that the triangle rasteriser
+//! fills, with varyings planes along the major axis.
+//!
+//! Design decision: GL's diamond-exit rule leaves the treatment of end points on diamond edges to
+//! the implementation; fixedgl reproduces Mesa llvmpipe's reading of it (the reference it is
+//! compared with): an x-major segment becomes the parallelogram of height round(width) centred on
+//! it, whose ends are moved half a pixel when the diamond tests say the end pixel must (or must
+//! not) be drawn, and whose edges follow the same tie rule as triangles. Varyings vary
+//! along the major axis only (so a wide line is constant across), perspective-correct (eq. 3.10);
+//! window z linearly.
+
+use super::setup::{geom, Kind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV};
+
+/// GL window coordinates have y up, so the fill rule's "top" edge is llvmpipe's bottom edge
+/// (its `bottom_edge_rule` for a y-up framebuffer).
+const BOTTOM_EDGE_RULE: bool = false;
+
+/// Nearest 1/256 pixel, ties to even (llvmpipe's `lrintf` in the default rounding mode).
+fn snap(v: f32) -> i64 {
+    (f64::from(v) * 256.0).round_ties_even().clamp(-1e12, 1e12) as i64
+}
+
+/// Offset of `v` from the centre of the pixel it lies in, in [-0.5, 0.5).
+fn centre_offset(v: f32) -> f32 {
+    v - v.floor() - 0.5
+}
+
+/// `v >= 0`, the sign test of the diamond rule.
+fn nonneg(v: f32) -> bool {
+    v >= 0.0
+}
+
+/// The parallelogram of the segment (x1, y1)–(x2, y2) of width `width`, as four corners in
+/// 1/256 pixel with pixel centres at +128 (the triangle rasteriser's convention).
+fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64; 2]; 4]> {
+    let (dx, dy) = (x1 - x2, y1 - y2);
+    if dx * dx + dy * dy == 0.0 || !(dx.is_finite() && dy.is_finite()) {
+        return None;
+    }
+    let (x1d, y1d) = (centre_offset(x1), centre_offset(y1));
+    let (mut x2d, mut y2d) = (centre_offset(x2), centre_offset(y2));
+    let half = (f64::from(width.max(1.0)).round_ties_even().min(1e6) as i64) * 256 / 2;
+    let frac = |v: f32| v - v.floor();
+    let (mut xo, mut yo, mut xoe, mut yoe) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
+    let q = if dx.abs() >= dy.abs() {
+        let dydx = dy / dx;
+        if y2d == -0.5 && dy < 0.0 {
+            y2d = 0.5;
+        }
+        // Diamond exit for the start: inside its diamond, the segment leaves it; otherwise it
+        // depends on which way the segment heads from the diamond's corner regions.
+        let start = if x1d.abs() + y1d.abs() < 0.5 {
+            true
+        } else if nonneg(x1d) == nonneg(-dx) {
+            false
+        } else if nonneg(-y1d) != nonneg(dy) {
+            true
+        } else {
+            let yi = frac(y1) + x1d * dydx;
+            yi > 0.0 && yi < 1.0
+        };
+        // The end: a diamond holding it is never left.
+        let end = if x2d.abs() + y2d.abs() < 0.5 || nonneg(x2d) != nonneg(-dx) {
+            false
+        } else if nonneg(-y2d) == nonneg(dy) {
+            true
+        } else {
+            let yi = frac(y2) + x2d * dydx;
+            yi > 0.0 && yi < 1.0
+        };
+        // Move an end by up to half a pixel where the plain parallelogram would decide
+        // differently from the diamond test.
+        let ((ax, ay), (bx, by)) = if dx < 0.0 {
+            if (x1d <= 0.0) != start {
+                xoe = -x1d - 0.5;
+                yoe = xoe * dydx;
+            }
+            if (x2d > 0.0) != end {
+                xo = -x2d - 0.5;
+                yo = xo * dydx;
+            }
+            ((x2, y2), (x1, y1))
+        } else {
+            if (x1d > 0.0) != start {
+                xo = -x1d + 0.5;
+                yo = xo * dydx;
+            }
+            if (x2d <= 0.0) != end {
+                xoe = -x2d + 0.5;
+                yoe = xoe * dydx;
+            }
+            ((x1, y1), (x2, y2))
+        };
+        let (xa, xb) = (snap(ax + xo - 0.5), snap(bx + xoe - 0.5));
+        let (ya, yb) = (snap(ay + yo - 0.5), snap(by + yoe - 0.5));
+        [
+            [xa, ya - half],
+            [xb, yb - half],
+            [xb, yb + half],
+            [xa, ya + half],
+        ]
+    } else {
+        let dxdy = dx / dy;
+        if x2d == -0.5 && dx < 0.0 {
+            x2d = 0.5;
+        }
+        let start = if x1d.abs() + y1d.abs() < 0.5 {
+            true
+        } else if nonneg(-y1d) == nonneg(dy) {
+            false
+        } else if nonneg(x1d) != nonneg(-dx) {
+            true
+        } else {
+            let xi = frac(x1) + y1d * dxdy;
+            xi > 0.0 && xi < 1.0
+        };
+        let end = if x2d.abs() + y2d.abs() < 0.5 || nonneg(-y2d) != nonneg(dy) {
+            false
+        } else if nonneg(x2d) == nonneg(-dx) {
+            true
+        } else {
+            let xi = frac(x2) + y2d * dxdy;
+            (0.0..1.0).contains(&xi)
+        };
+        let ((ax, ay), (bx, by)) = if dy > 0.0 {
+            let (will_start, will_end) = if BOTTOM_EDGE_RULE {
+                (y1d >= 0.0, y2d < 0.0)
+            } else {
+                (y1d > 0.0, y2d <= 0.0)
+            };
+            if will_start != start {
+                yoe = -y1d + 0.5;
+                xoe = yoe * dxdy;
+            }
+            if will_end != end {
+                yo = -y2d + 0.5;
+                xo = yo * dxdy;
+            }
+            ((x2, y2), (x1, y1))
+        } else {
+            let (will_start, will_end) = if BOTTOM_EDGE_RULE {
+                (y1d < 0.0, y2d >= 0.0)
+            } else {
+                (y1d <= 0.0, y2d > 0.0)
+            };
+            if will_start != start {
+                yo = -y1d - 0.5;
+                xo = yo * dxdy;
+            }
+            if will_end != end {
+                yoe = -y2d - 0.5;
+                xoe = yoe * dxdy;
+            }
+            ((x1, y1), (x2, y2))
+        };
+        let (xa, xb) = (snap(ax + xo - 0.5), snap(bx + xoe - 0.5));
+        let (ya, yb) = (snap(ay + yo - 0.5), snap(by + yoe - 0.5));
+        [
+            [xa - half, ya],
+            [xb - half, yb],
+            [xb + half, yb],
+            [xa + half, ya],
+        ]
+    };
+    // Back to centres at +0.5 pixel.
+    Some(q.map(|[x, y]| [x + 128, y + 128]))
+}
+
+impl Worker {
+    /// A line segment from `a` to `b` (window vertices with their varyings), its depth moved by
+    /// `off` (polygon offset of a polygon drawn as lines).
+    pub(super) fn line(
+        &mut self,
+        ctx: &SetupCtx,
+        a: &WVert,
+        b: &WVert,
+        off: f64,
+        flags: u8,
+        mat: u32,
+    ) {
+        let Some(q) = parallelogram(a.x, a.y, b.x, b.y, ctx.line_width()) else {
+            return;
+        };
+        let x_major = (a.x - b.x).abs() >= (a.y - b.y).abs();
+        let (p1, p2) = if x_major { (a.x, b.x) } else { (a.y, b.y) };
+        let d = p2 - p1;
+        let flat = ctx.flat();
+        let nflat = if flat {
+            ctx.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        for tri in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+            let Some(g) = geom(&ctx.rect, tri) else {
+                continue;
+            };
+            // Planes over the pixel grid relative to the bbox corner, varying along the major
+            // axis: value at a pixel = value at its centre's major coordinate.
+            let o = if x_major { g.bbox[0] } else { g.bbox[1] } as f32 + 0.5;
+            let lin = |v1: f32, v2: f32| -> [f32; 3] {
+                let s = (v2 - v1) / d;
+                let c = v1 + s * (o - p1);
+                if x_major {
+                    [c, s, 0.0]
+                } else {
+                    [c, 0.0, s]
+                }
+            };
+            let voff = self.pool.len() as u32;
+            self.pool.extend(lin(a.iw, b.iw));
+            for k in 0..ctx.rl.n.min(MAXV) {
+                if k < nflat {
+                    self.pool.extend([a.v[k], 0.0, 0.0]);
+                } else {
+                    self.pool.extend(lin(a.v[k] * a.iw, b.v[k] * b.iw));
+                }
+            }
+            let (za, zb) = ((a.z + off) as f32, (b.z + off) as f32);
+            self.push(RPrim {
+                kind: Kind::Tri,
+                flags: flags | if flat { F_FLAT } else { 0 },
+                bbox: g.bbox,
+                mat,
+                voff,
+                xy: [
+                    g.v[0][0] as i32,
+                    g.v[0][1] as i32,
+                    g.v[1][0] as i32,
+                    g.v[1][1] as i32,
+                    g.v[2][0] as i32,
+                    g.v[2][1] as i32,
+                ],
+                owns: g.owns,
+                z: lin(za, zb),
+            });
+        }
+    }
+}

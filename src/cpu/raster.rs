@@ -1,0 +1,82 @@
+//! Rasterisation of one screen tile (GL 2.1 §3.4 points, §3.5 lines, §3.6 polygons): which
+//! pixels each primitive covers, and the values interpolated there.
+//!
+//! Design decision: triangles are walked row by row; on each row the covered pixels form one run
+//! whose ends come straight from the three integer edge functions (a division per edge, no
+//! per-pixel edge test), and the run goes to the fragment stage as a span. Lines arrive as
+//! parallelograms made of two triangles (see `line`); points are `round(size)` squares.
+
+use super::fragment::{FragCtx, TileBufs};
+use super::framebuffer::TILE;
+use super::setup::{Kind, RPrim};
+
+/// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
+pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
+    let t = TILE as i32;
+    let x0 = p.bbox[0].max(bufs.x);
+    let y0 = p.bbox[1].max(bufs.y);
+    let x1 = p.bbox[2].min(bufs.x + t - 1);
+    let y1 = p.bbox[3].min(bufs.y + t - 1);
+    if x0 > x1 || y0 > y1 {
+        return;
+    }
+    let data = pool.get(p.voff as usize..).unwrap_or(&[]);
+    match p.kind {
+        Kind::Tri => tri(ctx, bufs, p, data, [x0, y0, x1, y1]),
+        Kind::Point => {
+            let v = data.get(3..3 + ctx.rl.n).unwrap_or(&[]);
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    ctx.fragment(bufs, p, x, y, f64::from(p.z[0]), v);
+                }
+            }
+        }
+    }
+}
+
+fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
+    let [x0, y0, x1, y1] = r;
+    let edges = p.edges();
+    if x1 - x0 < SMALL {
+        // Narrow: test each pixel centre (additions only) instead of dividing per edge.
+        for y in y0..=y1 {
+            let at = |e: &[i64; 3]| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0);
+            let mut e = [at(&edges[0]), at(&edges[1]), at(&edges[2])];
+            let (mut l, mut h) = (i32::MAX, i32::MIN);
+            for x in x0..=x1 {
+                if (e[0] | e[1] | e[2]) >= 0 {
+                    l = l.min(x);
+                    h = x;
+                }
+                for (ek, edge) in e.iter_mut().zip(&edges) {
+                    *ek += edge[1];
+                }
+            }
+            if l <= h {
+                ctx.tri_span(bufs, p, planes, y, l, h);
+            }
+        }
+        return;
+    }
+    for y in y0..=y1 {
+        let (mut l, mut h) = (i64::from(x0), i64::from(x1));
+        for e in &edges {
+            // E(x) = erow + e[1]·x must be >= 0 (the tie-break bias is already in e[0]).
+            let erow = e[0] + e[2] * i64::from(y);
+            let dx = e[1];
+            if dx > 0 {
+                l = l.max(-erow.div_euclid(dx));
+            } else if dx < 0 {
+                h = h.min(erow.div_euclid(-dx));
+            } else if erow < 0 {
+                h = l - 1;
+            }
+        }
+        if l <= h {
+            ctx.tri_span(bufs, p, planes, y, l as i32, h as i32);
+        }
+    }
+}
+
+/// Bounding boxes narrower than this are scanned pixel by pixel.
+const SMALL: i32 = 12;

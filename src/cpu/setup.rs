@@ -1,0 +1,772 @@
+//! Primitive setup (GL 2.1 §2.11.1, §3.4–3.6): perspective divide, viewport and DepthRange
+//! transform, facing by signed window area, culling, polygon mode, polygon offset, and the
+//! per-primitive data the tile rasteriser needs (edge functions, attribute planes, tile bins).
+//!
+//! Design decision: window x and y are snapped to 1/256 pixel (8 sub-pixel bits, as llvmpipe) and
+//! triangle edge functions are exact 64-bit integers evaluated at pixel centres, with a tie-break
+//! (left and bottom edges own their centres, as llvmpipe in a y-up window), so two triangles sharing an edge never both cover a pixel on it. Attributes become
+//! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
+//! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
+
+use super::assembly::Asm;
+use super::batch::{Batch, Prim};
+use super::clip::{Clipper, MAX_POLY};
+use super::framebuffer::TILE;
+use super::vertex::Layout;
+use crate::gl;
+use crate::state::State;
+
+/// Largest snapped window coordinate magnitude (1/256 pixel units).
+const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
+
+/// Most interpolated floats per fragment.
+pub const MAXV: usize = 24;
+
+/// Where each interpolated value sits in a fragment's varyings.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RLayout {
+    /// Number of varyings.
+    pub n: usize,
+    /// Secondary colour (primary is always at 0).
+    pub spec: Option<usize>,
+    /// Texture coordinates.
+    pub tex: Option<usize>,
+    /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
+    pub phong: Option<usize>,
+}
+
+impl RLayout {
+    fn new(l: &Layout) -> Self {
+        let mut r = RLayout {
+            n: 4,
+            ..Default::default()
+        };
+        if l.spec.is_some() {
+            r.spec = Some(r.n);
+            r.n += 4;
+        }
+        if l.tex.is_some() {
+            r.tex = Some(r.n);
+            r.n += 4;
+        }
+        if l.nrm.is_some() {
+            r.phong = Some(r.n);
+            r.n += 10;
+        }
+        r
+    }
+}
+
+/// What kind of rasterised primitive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A filled triangle (also half of a line's parallelogram).
+    Tri,
+    /// A point.
+    Point,
+}
+
+/// Flag: colour varyings are constant (FLAT), not divided by w.
+pub const F_FLAT: u8 = 1;
+/// Flag: the primitive comes from a back-facing polygon.
+pub const F_BACK: u8 = 2;
+/// Flag: evaluate lighting per fragment (PHONG_WIN triangle).
+pub const F_PHONG: u8 = 4;
+
+/// One primitive ready for the tile rasteriser.
+#[derive(Clone, Copy, Debug)]
+pub struct RPrim {
+    /// Triangle, line or point.
+    pub kind: Kind,
+    /// `F_*` bits.
+    pub flags: u8,
+    /// Pixel bounding box `[x0, y0, x1, y1]`, inclusive, inside the framebuffer and scissor.
+    pub bbox: [i32; 4],
+    /// Material snapshot index (PHONG_WIN).
+    pub mat: u32,
+    /// Offset of this primitive's floats in the worker's pool.
+    pub voff: u32,
+    /// Triangle: the vertices' snapped window x, y (1/256 pixel), counter-clockwise.
+    pub xy: [i32; 6],
+    /// Triangle: bit k set when edge k (vertex k to k+1) owns the pixel centres exactly on it
+    /// (the tie rule: left and bottom edges).
+    pub owns: u8,
+    /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; point `[z, _, _]`. Single
+    /// precision, as llvmpipe interpolates depth.
+    pub z: [f32; 3],
+}
+
+impl RPrim {
+    /// Triangle edge functions at pixel centres: `[E at pixel (0,0), dE/dx, dE/dy]` with the
+    /// tie-break bias applied, so a centre is covered when all three are >= 0.
+    #[inline(always)]
+    pub fn edges(&self) -> [[i64; 3]; 3] {
+        let v = [
+            i64::from(self.xy[0]),
+            i64::from(self.xy[1]),
+            i64::from(self.xy[2]),
+            i64::from(self.xy[3]),
+            i64::from(self.xy[4]),
+            i64::from(self.xy[5]),
+        ];
+        let edge = |k: usize, j: usize| {
+            let (px, py) = (v[2 * k], v[2 * k + 1]);
+            let (dx, dy) = (v[2 * j] - px, v[2 * j + 1] - py);
+            let e00 = dx * (128 - py) - dy * (128 - px);
+            let bias = i64::from(self.owns & (1 << k) == 0);
+            [e00 - bias, -dy * 256, dx * 256]
+        };
+        [edge(0, 1), edge(1, 2), edge(2, 0)]
+    }
+}
+
+/// The per-flush constants of setup.
+#[derive(Clone, Debug)]
+pub struct SetupCtx {
+    /// Processed vertex layout.
+    pub layout: Layout,
+    /// Varying layout.
+    pub rl: RLayout,
+    clipper: Clipper,
+    scale: [f64; 3],
+    offset: [f64; 3],
+    ccw_front: bool,
+    cull: Option<u32>,
+    poly_mode: [u32; 2],
+    offset_on: [bool; 3],
+    factor: f64,
+    units: f64,
+    flat: bool,
+    phong: bool,
+    line_width: f32,
+    point_size: f32,
+    /// Framebuffer ∩ scissor, inclusive.
+    pub rect: [i32; 4],
+    /// Tiles across.
+    pub tiles_x: usize,
+    /// Total tiles.
+    pub tiles: usize,
+}
+
+impl SetupCtx {
+    /// LineWidth.
+    pub(super) fn line_width(&self) -> f32 {
+        self.line_width
+    }
+
+    /// FLAT shading.
+    pub(super) fn flat(&self) -> bool {
+        self.flat
+    }
+
+    /// The setup constants of `state`.
+    pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
+        let [vx, vy, vw, vh] = state.viewport.map(f64::from);
+        let [n, f] = state.depth_range;
+        SetupCtx {
+            layout,
+            rl: RLayout::new(&layout),
+            clipper: Clipper::new(state, &layout),
+            scale: [vw / 2.0, vh / 2.0, (f - n) / 2.0],
+            offset: [vx + vw / 2.0, vy + vh / 2.0, (n + f) / 2.0],
+            ccw_front: state.front_face != gl::CW,
+            cull: state.enables.cull_face.then_some(state.cull_face_mode),
+            poly_mode: state.polygon_mode,
+            offset_on: [
+                state.enables.polygon_offset_fill,
+                state.enables.polygon_offset_line,
+                state.enables.polygon_offset_point,
+            ],
+            factor: f64::from(state.polygon_offset_factor),
+            units: f64::from(state.polygon_offset_units),
+            flat: state.shade_model == gl::FLAT,
+            phong: layout.nrm.is_some(),
+            line_width: state.line_width,
+            point_size: state.point_size,
+            rect,
+            tiles_x: tiles.0,
+            tiles: tiles.0 * tiles.1,
+        }
+    }
+}
+
+/// A processed vertex's clip code and window coordinates (computed once per vertex by the
+/// vertex stage; the window values are meaningful only when `code` is 0).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Win {
+    /// Window x before snapping.
+    pub x: f32,
+    /// Window y before snapping.
+    pub y: f32,
+    /// Snapped window x, y in 1/256 pixel.
+    pub fx: i64,
+    /// See `fx`.
+    pub fy: i64,
+    /// Window z.
+    pub z: f64,
+    /// 1 / w_clip.
+    pub iw: f32,
+    /// Outside-plane bits (`Clipper::code`).
+    pub code: u16,
+}
+
+impl SetupCtx {
+    /// Clip code, perspective divide and viewport/DepthRange transform (§2.11.1) of the
+    /// processed vertex `v`, x and y snapped to 1/256 pixel.
+    #[inline]
+    pub fn win(&self, v: &[f32]) -> Win {
+        let g = |i: usize| f64::from(v.get(i).copied().unwrap_or(0.0));
+        let iw = 1.0 / g(3);
+        let xw = g(0) * iw * self.scale[0] + self.offset[0];
+        let yw = g(1) * iw * self.scale[1] + self.offset[1];
+        let zw = g(2) * iw * self.scale[2] + self.offset[2];
+        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64).
+        // The clamp to ±2^29 (±2M pixels) keeps every edge-function product inside i64; only
+        // a viewport placed millions of pixels away could reach it.
+        let snap = |x: f64| {
+            let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
+            (t + 0.5f64.copysign(t)) as i64
+        };
+        Win {
+            x: xw as f32,
+            y: yw as f32,
+            fx: snap(xw),
+            fy: snap(yw),
+            z: zw,
+            iw: iw as f32,
+            code: self.clipper.code(v),
+        }
+    }
+}
+
+/// A vertex in window coordinates with its varyings.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct WVert {
+    /// Window x, y before snapping (line setup works from these, as llvmpipe does).
+    pub(super) x: f32,
+    pub(super) y: f32,
+    /// Snapped x, y in 1/256 pixel.
+    pub(super) fx: i64,
+    pub(super) fy: i64,
+    pub(super) z: f64,
+    pub(super) iw: f32,
+    pub(super) v: [f32; MAXV],
+}
+
+/// One setup worker's output: its primitives in order, their floats, and per-tile bins. Several
+/// workers split a batch's primitives in order; the rasteriser visits worker 0's bin of a tile,
+/// then worker 1's, ..., which preserves primitive order inside every tile.
+#[derive(Debug, Default)]
+pub struct Worker {
+    /// Rasterisable primitives.
+    pub prims: Vec<RPrim>,
+    /// Their attribute floats.
+    pub pool: Vec<f32>,
+    /// Per tile, indices into `prims`.
+    pub bins: Vec<Vec<u32>>,
+    a: Vec<f32>,
+    b: Vec<f32>,
+    bins_x: usize,
+    asm: Vec<Asm>,
+}
+
+impl Worker {
+    /// Assembles `prims` of batch `b` (§2.6) and sets them up.
+    pub fn assemble_and_run(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        b: &Batch,
+        prims: &[Prim],
+    ) {
+        let mut asm = std::mem::take(&mut self.asm);
+        super::assembly::assemble(prims, &b.idx, &b.edge, &mut asm);
+        self.run(ctx, vout, wins, &b.mat, &asm);
+        self.asm = asm;
+    }
+
+    /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
+    /// coordinates, `mats` their material indices).
+    pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
+        self.prims.clear();
+        self.pool.clear();
+        self.bins.resize_with(ctx.tiles, Vec::new);
+        self.bins_x = ctx.tiles_x;
+        for b in &mut self.bins {
+            b.clear();
+        }
+        let s = ctx.layout.stride;
+        let vert = |i: u32| {
+            vout.get(i as usize * s..(i as usize + 1) * s)
+                .unwrap_or(&[])
+        };
+        for p in asm {
+            let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
+            let prov = vert(p.provoking);
+            match p.n {
+                3 => {
+                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
+                    let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
+                    let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
+                    let codes = [ws[0].code, ws[1].code, ws[2].code];
+                    if codes[0] & codes[1] & codes[2] != 0 {
+                        continue;
+                    }
+                    let mut edges = [false; MAX_POLY];
+                    for (k, e) in edges.iter_mut().take(3).enumerate() {
+                        *e = p.edges & (1 << k) != 0;
+                    }
+                    let planes = codes[0] | codes[1] | codes[2];
+                    if planes == 0 {
+                        self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
+                    } else {
+                        let mut a = std::mem::take(&mut self.a);
+                        let mut b = std::mem::take(&mut self.b);
+                        a.clear();
+                        for v in vs {
+                            a.extend_from_slice(v);
+                        }
+                        let n = ctx
+                            .clipper
+                            .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
+                        let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
+                        let mut cw = [Win::default(); MAX_POLY];
+                        for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
+                            *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                            *w = ctx.win(src);
+                        }
+                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
+                        self.a = a;
+                        self.b = b;
+                    }
+                }
+                2 => {
+                    let vs = [vert(p.v[0]), vert(p.v[1])];
+                    let codes = vs.map(|v| ctx.clipper.code(v));
+                    if codes[0] & codes[1] != 0 {
+                        continue;
+                    }
+                    let planes = codes[0] | codes[1];
+                    let mut a = std::mem::take(&mut self.a);
+                    a.clear();
+                    a.extend_from_slice(vs[0]);
+                    a.extend_from_slice(vs[1]);
+                    if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
+                        let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
+                        let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
+                        self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
+                        self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
+                        self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                    }
+                    self.a = a;
+                }
+                _ => {
+                    let v = vert(p.v[0]);
+                    if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
+                        let mut w = self.window(ctx, v);
+                        self.varyings(ctx, &mut w, v, false, prov);
+                        self.point(ctx, &w, 0.0, 0, mat);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Window coordinates of processed vertex `v`; varyings are filled in later.
+    fn window(&self, ctx: &SetupCtx, v: &[f32]) -> WVert {
+        from_win(&ctx.win(v))
+    }
+
+    /// Fills `w.v` from processed vertex `v`: the face's colours (the provoking vertex's under
+    /// FLAT), then texture coordinates and the PHONG_WIN values.
+    #[inline(always)]
+    fn varyings(&self, ctx: &SetupCtx, w: &mut WVert, v: &[f32], back: bool, prov: &[f32]) {
+        let l = &ctx.layout;
+        let rl = &ctx.rl;
+        let csrc = if ctx.flat { prov } else { v };
+        let (col, spec) = match (back, l.col_b) {
+            (true, Some(cb)) => (cb, l.spec_b),
+            _ => (l.col, l.spec),
+        };
+        copy(&mut w.v, 0, csrc, col, 4);
+        if let (Some(d), Some(s)) = (rl.spec, spec) {
+            copy(&mut w.v, d, csrc, s, 4);
+        }
+        if let (Some(d), Some(s)) = (rl.tex, l.tex) {
+            copy(&mut w.v, d, v, s, 4);
+        }
+        if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
+            let ew = v.get(e + 3).copied().unwrap_or(1.0);
+            let ew = if ew != 0.0 { ew } else { 1.0 };
+            for k in 0..3 {
+                if let (Some(o), Some(&x)) = (w.v.get_mut(d + k), v.get(e + k)) {
+                    *o = x / ew;
+                }
+            }
+            copy(&mut w.v, d + 3, v, n, 3);
+            copy(&mut w.v, d + 6, csrc, r, 4);
+        }
+    }
+
+    /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
+    /// processed vertices in order, `edges[i]` the flag of the edge leaving vertex i.
+    /// `N` bounds the vertex count (3 on the unclipped path, so no large array is initialised).
+    fn polygon<const N: usize>(
+        &mut self,
+        ctx: &SetupCtx,
+        srcs: &[&[f32]],
+        wins: &[Win],
+        edges: &[bool],
+        prov: &[f32],
+        mat: u32,
+    ) {
+        let n = srcs.len().min(wins.len()).min(N);
+        if n < 3 {
+            return;
+        }
+        let mut w = [ZERO_W; N];
+        for (wv, win) in w.iter_mut().zip(wins) {
+            *wv = from_win(win);
+        }
+        let w = &mut w[..n];
+        // §3.5.1 eq. 3.6: the signed area in window coordinates decides the facing.
+        let mut area: i128 = 0;
+        for i in 0..n {
+            let (a, b) = (&w[i], &w[(i + 1) % n]);
+            area += i128::from(a.fx) * i128::from(b.fy) - i128::from(b.fx) * i128::from(a.fy);
+        }
+        let front = area == 0 || ((area > 0) == ctx.ccw_front);
+        match ctx.cull {
+            Some(gl::FRONT) if front => return,
+            Some(gl::BACK) if !front => return,
+            Some(gl::FRONT_AND_BACK) => return,
+            _ => {}
+        }
+        let back = !front;
+        for (wv, src) in w.iter_mut().zip(srcs) {
+            self.varyings(ctx, wv, src, back, prov);
+        }
+        let mut flags = if back { F_BACK } else { 0 };
+        if ctx.flat {
+            flags |= F_FLAT;
+        }
+        let mode = ctx.poly_mode[usize::from(back)];
+        match mode {
+            gl::POINT | gl::LINE => {
+                let which = if mode == gl::POINT { 2 } else { 1 };
+                let off = if ctx.offset_on[which] {
+                    let [_, dx, dy] = z_slopes(&w[0], &w[1], &w[2]);
+                    offset(ctx, dx, dy)
+                } else {
+                    0.0
+                };
+                for i in 0..n {
+                    if !edges.get(i).copied().unwrap_or(false) {
+                        continue;
+                    }
+                    if mode == gl::POINT {
+                        self.point(ctx, &w[i], off, flags & F_BACK, mat);
+                    } else {
+                        let (a, b) = (w[i], w[(i + 1) % n]);
+                        self.line(ctx, &a, &b, off, flags & F_BACK, mat);
+                    }
+                }
+            }
+            _ => {
+                if area == 0 {
+                    return;
+                }
+                if ctx.phong {
+                    flags |= F_PHONG;
+                }
+                for i in 1..n - 1 {
+                    self.tri(ctx, &w[0], &w[i], &w[i + 1], flags, mat);
+                }
+            }
+        }
+    }
+
+    /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
+    #[inline]
+    fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
+        let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
+            return;
+        };
+        if !g.may_cover() {
+            // A sliver between pixel centres (common in dense meshes): nothing to draw.
+            return;
+        }
+        let (b, c) = if g.swapped { (c, b) } else { (b, c) };
+        let (area, bbox) = (g.area, g.bbox);
+        let v = [a, b, c];
+        let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
+        let mut lam = [[0f64; 3]; 3];
+        let inv = 1.0 / area as f64;
+        for k in 0..3 {
+            let (p, q) = (v[k], v[(k + 1) % 3]);
+            let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
+            let e00 = dx * (128 - p.fy) - dy * (128 - p.fx);
+            let (ex, ey) = (-dy * 256, dx * 256);
+            // Barycentric of the vertex opposite edge k, relative to the bbox corner.
+            lam[(k + 2) % 3] = [
+                (e00 + ex * ox + ey * oy) as f64 * inv,
+                ex as f64 * inv,
+                ey as f64 * inv,
+            ];
+        }
+        let mut z = [0.0f64; 3];
+        for (j, zj) in z.iter_mut().enumerate() {
+            *zj = a.z * lam[0][j] + b.z * lam[1][j] + c.z * lam[2][j];
+        }
+        if ctx.offset_on[0] {
+            z[0] += offset(ctx, z[1], z[2]);
+        }
+        let z = [z[0] as f32, z[1] as f32, z[2] as f32];
+        // Varying planes in f32: relative to the bbox corner the values stay small.
+        let mut l32 = [[0.0f32; 3]; 3];
+        for (r, l) in l32.iter_mut().zip(&lam) {
+            *r = [l[0] as f32, l[1] as f32, l[2] as f32];
+        }
+        #[inline(always)]
+        fn plane(l: &[[f32; 3]; 3], f: [f32; 3]) -> [f32; 3] {
+            [
+                f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
+                f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
+                f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+            ]
+        }
+        let voff = self.pool.len() as u32;
+        let iw = [a.iw, b.iw, c.iw];
+        self.pool.extend(plane(&l32, iw));
+        let nflat = if flags & F_FLAT != 0 {
+            ctx.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        for k in 0..ctx.rl.n.min(MAXV) {
+            let f = [a.v[k], b.v[k], c.v[k]];
+            if k < nflat {
+                self.pool.extend([f[0], 0.0, 0.0]);
+            } else {
+                self.pool
+                    .extend(plane(&l32, [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
+            }
+        }
+        self.push(RPrim {
+            kind: Kind::Tri,
+            flags,
+            bbox,
+            mat,
+            voff,
+            xy: [
+                a.fx as i32,
+                a.fy as i32,
+                b.fx as i32,
+                b.fy as i32,
+                c.fx as i32,
+                c.fy as i32,
+            ],
+            owns: g.owns,
+            z,
+        });
+    }
+
+    /// A point (§3.4): a square of side round(size) centred on the vertex.
+    fn point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
+        let (x, y) = (a.fx as f32 / 256.0, a.fy as f32 / 256.0);
+        let size = ctx.point_size.round().max(1.0);
+        let x0 = clamp_f((x - size / 2.0 + 0.5).floor());
+        let y0 = clamp_f((y - size / 2.0 + 0.5).floor());
+        let s = size.min(1e6) as i32;
+        let bbox = [
+            x0.max(ctx.rect[0]),
+            y0.max(ctx.rect[1]),
+            x0.saturating_add(s - 1).min(ctx.rect[2]),
+            y0.saturating_add(s - 1).min(ctx.rect[3]),
+        ];
+        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+            return;
+        }
+        let voff = self.pool.len() as u32;
+        self.pool.extend([x, y, size]);
+        self.pool.extend_from_slice(&a.v[..ctx.rl.n]);
+        self.push(RPrim {
+            kind: Kind::Point,
+            flags,
+            bbox,
+            mat,
+            voff,
+            xy: [0; 6],
+            owns: 0,
+            z: [(a.z + off) as f32, 0.0, 0.0],
+        });
+    }
+
+    /// Appends `p` and bins it into every tile its bounding box overlaps.
+    #[inline(always)]
+    pub(super) fn push(&mut self, p: RPrim) {
+        let idx = self.prims.len() as u32;
+        let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
+        let tiles_x = self.bins_x;
+        if tx0 == tx1 && ty0 == ty1 {
+            if let Some(b) = self.bins.get_mut(ty0 * tiles_x + tx0) {
+                b.push(idx);
+            }
+            self.prims.push(p);
+            return;
+        }
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                if let Some(b) = self.bins.get_mut(ty * tiles_x + tx) {
+                    b.push(idx);
+                }
+            }
+        }
+        self.prims.push(p);
+    }
+}
+
+fn from_win(w: &Win) -> WVert {
+    WVert {
+        x: w.x,
+        y: w.y,
+        fx: w.fx,
+        fy: w.fy,
+        z: w.z,
+        iw: w.iw,
+        v: [0.0; MAXV],
+    }
+}
+
+const ZERO_W: WVert = WVert {
+    x: 0.0,
+    y: 0.0,
+    fx: 0,
+    fy: 0,
+    z: 0.0,
+    iw: 0.0,
+    v: [0.0; MAXV],
+};
+
+/// A triangle's place on the pixel grid: counter-clockwise order, doubled area, the pixels whose
+/// centres can be inside (cut to `rect`), and which edges own centres exactly on them.
+pub(super) struct Geom {
+    /// The vertices counter-clockwise (snapped, 1/256 pixel).
+    pub v: [[i64; 2]; 3],
+    /// The second and third input vertices were swapped to make the order counter-clockwise.
+    pub swapped: bool,
+    /// Twice the area, in (1/256 pixel)², positive.
+    pub area: i64,
+    /// Pixel bounding box, inclusive.
+    pub bbox: [i32; 4],
+    /// Bit k: edge k (vertex k to k + 1) owns the centres on it.
+    pub owns: u8,
+}
+
+impl Geom {
+    /// False when the triangle certainly covers no pixel centre: checked exactly for bounding
+    /// boxes of at most 2x2 pixels, assumed true for larger ones.
+    #[inline]
+    pub(super) fn may_cover(&self) -> bool {
+        let [x0, y0, x1, y1] = self.bbox;
+        if x1 - x0 > 1 || y1 - y0 > 1 {
+            return true;
+        }
+        let v = self.v;
+        let e = |k: usize, px: i64, py: i64| {
+            let (p, q) = (v[k], v[(k + 1) % 3]);
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let bias = i64::from(self.owns & (1 << k) == 0);
+            dx * (py - p[1]) - dy * (px - p[0]) - bias
+        };
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let (px, py) = (i64::from(x) * 256 + 128, i64::from(y) * 256 + 128);
+                if e(0, px, py) >= 0 && e(1, px, py) >= 0 && e(2, px, py) >= 0 {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+}
+
+/// The grid placement of triangle `p` (snapped window coordinates), `None` when it has no area
+/// or no pixel of `rect`.
+pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
+    let [a, b, c] = p;
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    if area == 0 {
+        return None;
+    }
+    let swapped = area < 0;
+    let v = if swapped { [a, c, b] } else { [a, b, c] };
+    let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+    let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+    // Pixels whose centre (i + 0.5) can lie inside.
+    let lo = |m: i64| -((128 - m).div_euclid(256));
+    let hi = |m: i64| (m - 128).div_euclid(256);
+    let bbox = [
+        clamp_i32(lo(minx)).max(rect[0]),
+        clamp_i32(lo(miny)).max(rect[1]),
+        clamp_i32(hi(maxx)).min(rect[2]),
+        clamp_i32(hi(maxy)).min(rect[3]),
+    ];
+    if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+        return None;
+    }
+    let mut owns = 0u8;
+    for k in 0..3 {
+        let (dx, dy) = (v[(k + 1) % 3][0] - v[k][0], v[(k + 1) % 3][1] - v[k][1]);
+        // Tie rule, as llvmpipe applies it to a y-up window: a left edge (going down) or a
+        // bottom edge (going right) owns the pixel centres exactly on it; other edges do not.
+        owns |= u8::from(dy < 0 || (dy == 0 && dx > 0)) << k;
+    }
+    Some(Geom {
+        v,
+        swapped,
+        area: area.abs(),
+        bbox,
+        owns,
+    })
+}
+
+/// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).
+fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
+    let (x1, y1) = ((b.fx - a.fx) as f64 / 256.0, (b.fy - a.fy) as f64 / 256.0);
+    let (x2, y2) = ((c.fx - a.fx) as f64 / 256.0, (c.fy - a.fy) as f64 / 256.0);
+    let (z1, z2) = (b.z - a.z, c.z - a.z);
+    let det = x1 * y2 - x2 * y1;
+    if det == 0.0 {
+        return [0.0; 3];
+    }
+    [0.0, (z1 * y2 - z2 * y1) / det, (x1 * z2 - x2 * z1) / det]
+}
+
+/// Polygon offset (§3.5.5): factor · max slope + units · r, r = 2^-24 for a 24-bit depth buffer.
+fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
+    let m = dzdx.abs().max(dzdy.abs());
+    ctx.factor * m + ctx.units / f64::from(1u32 << 24)
+}
+
+fn clamp_i32(v: i64) -> i32 {
+    v.clamp(i64::from(i32::MIN / 2), i64::from(i32::MAX / 2)) as i32
+}
+
+fn clamp_f(v: f32) -> i32 {
+    v.floor().clamp(-1e9, 1e9) as i32
+}
+
+#[inline(always)]
+fn copy(dst: &mut [f32; MAXV], d: usize, src: &[f32], s: usize, n: usize) {
+    if let (Some(o), Some(i)) = (dst.get_mut(d..d + n), src.get(s..s + n)) {
+        o.copy_from_slice(i);
+    }
+}
+
+/// Which tiles `bbox` overlaps: `(tx0, ty0, tx1, ty1)` inclusive.
+pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
+    let t = |v: i32| (v.max(0) as usize) / TILE;
+    [t(bbox[0]), t(bbox[1]), t(bbox[2]), t(bbox[3])]
+}
