@@ -220,4 +220,31 @@ mod tests {
         let p = pixel_at(&smooth, 4, tri);
         assert!(p[..3].iter().all(|&c| (70..100).contains(&c)), "{p:?}");
     }
+
+    /// A SMOOTH quad is split along its 0–2 diagonal, as llvmpipe does (a FLAT one along 1–3,
+    /// which only coverage of a non-convex quad could show). The window-filling quad with only
+    /// corner 2 (top right) white puts the centre pixel (window (32.5, 32.5) of 64, NDC
+    /// x = y = 1/64) on the 0–2 diagonal, at t = (1 + 1/64)/2 of the way from 0 to 2: colour
+    /// 0.508 · 255 ≈ 130. Split along 1–3 it would be in triangle (1,2,3) with corner 2's weight
+    /// (x + y)/2 = 1/64: about 4.
+    #[test]
+    fn smooth_quad_uses_the_0_2_diagonal() {
+        let mut gl = match Context::new(64, 64) {
+            Ok(gl) => gl,
+            Err(e) => panic!("{e}"),
+        };
+        gl.begin(QUADS);
+        for (i, v) in [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
+            .iter()
+            .enumerate()
+        {
+            let c = if i == 2 { 1.0 } else { 0.0 };
+            gl.color3f(c, c, c);
+            gl.vertex2f(v[0], v[1]);
+        }
+        gl.end();
+        let img = cpu_image(&mut gl);
+        let p = img.get_pixel(32, 63 - 32).0;
+        assert!((125..=135).contains(&p[0]), "{p:?}");
+    }
 }
