@@ -24,8 +24,9 @@ pub struct Asm {
 }
 
 /// Appends the primitives of `prims` to `out`: `idx` maps each vertex given to its unique
-/// vertex, `edge` are the unique vertices' edge flags.
-pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], out: &mut Vec<Asm>) {
+/// vertex, `edge` are the unique vertices' edge flags, `flat` whether the shade model is FLAT
+/// (it picks the diagonal quads are split along).
+pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], flat: bool, out: &mut Vec<Asm>) {
     out.clear();
     let start = out.len();
     let ef = |i: u32| {
@@ -86,13 +87,22 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], out: &mut Vec<Asm>) 
                 (0..n.saturating_sub(2)).map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, 7)),
             ),
             gl::QUADS => {
-                // Split along the 1–3 diagonal, as Mesa's draw module does with the provoking
-                // vertex last: (0,1,3) and (1,2,3).
+                // --- scenes branch: the diagonal depends on the shade model, as on llvmpipe.
+                // FLAT: along the 1–3 diagonal, (0,1,3) and (1,2,3), as Mesa's draw module
+                // splits with the provoking vertex last. SMOOTH: the provoking vertex cannot
+                // matter, and Mesa then decomposes first-vertex style, along 0–2: (0,1,2) and
+                // (0,2,3) (measured against llvmpipe: the `primitives` scene). Either way each
+                // sub-triangle keeps provoking vertex 3.
                 for i in 0..n / 4 {
                     let a = f + 4 * i;
                     let [e0, e1, e2, e3] = [ef(a), ef(a + 1), ef(a + 2), ef(a + 3)];
-                    out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
-                    out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
+                    if flat {
+                        out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
+                        out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
+                    } else {
+                        out.push(tri(a, a + 1, a + 2, a + 3, flags(e0, e1, false)));
+                        out.push(tri(a, a + 2, a + 3, a + 3, flags(false, e2, e3)));
+                    }
                 }
             }
             gl::QUAD_STRIP => {

@@ -210,7 +210,7 @@ impl Renderer {
                 rasterise(fb, workers, &fctx, ctx.tiles_x);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
-                assembly::assemble(piece, &batch.idx, &batch.edge, asm);
+                assembly::assemble(piece, &batch.idx, &batch.edge, ctx.flat(), asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
                     rasterise(fb, workers, &fctx, ctx.tiles_x);

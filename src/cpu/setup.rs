@@ -281,7 +281,7 @@ impl Worker {
         prims: &[Prim],
     ) {
         let mut asm = std::mem::take(&mut self.asm);
-        super::assembly::assemble(prims, &b.idx, &b.edge, &mut asm);
+        super::assembly::assemble(prims, &b.idx, &b.edge, ctx.flat, &mut asm);
         self.run(ctx, vout, wins, &b.mat, &asm);
         self.asm = asm;
     }

@@ -12,6 +12,13 @@ use image::RgbaImage;
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
+// --- lecture scenes (scenes branch)
+pub mod lights;
+pub mod primitives;
+pub mod shapes;
+pub mod sphere;
+pub mod surface;
+pub mod transforms;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -71,6 +78,20 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[1],
     gaussian::SCENES[2],
     gaussian::SCENES[3],
+    // --- lecture scenes (scenes branch)
+    surface::SCENES[0],
+    surface::SCENES[1],
+    sphere::SCENES[0],
+    lights::SCENES[0],
+    lights::SCENES[1],
+    lights::SCENES[2],
+    lights::SCENES[3],
+    lights::SCENES[4],
+    lights::SCENES[5],
+    sphere::SCENES[1],
+    transforms::SCENES[0],
+    primitives::SCENES[0],
+    primitives::SCENES[1],
 ];
 
 /// Every registered scene, in listing order.
