@@ -14,7 +14,7 @@ use image::RgbaImage;
 
 use fixedgl::compare::compare;
 use fixedgl::report::{self, Renderers, SceneResult};
-use fixedgl::scenes::{self, cpu_image, Scene};
+use fixedgl::scenes::{self, Scene};
 use fixedgl::{Call, Context, Error};
 
 /// The OpenGL 1.x fixed-function pipeline on the CPU, compared with a real driver.
@@ -230,7 +230,7 @@ fn render(
     let (w, h) = size.unwrap_or(scene.default_size);
     let (mut ctx, calls) = scene.record(w, h)?;
     let img = match backend {
-        Backend::Cpu => cpu_image(&mut ctx),
+        Backend::Cpu => ctx.to_image(),
         Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
     };
     let out = output.unwrap_or_else(|| PathBuf::from(format!("{name}-{}.png", backend.name())));
@@ -258,7 +258,7 @@ fn compare_scenes(
         }
         let (w, h) = size.unwrap_or(scene.default_size);
         let (mut ctx, calls) = scene.record(w, h)?;
-        let cpu = cpu_image(&mut ctx);
+        let cpu = ctx.to_image();
         let (gl, info) = gl_side::render(&calls, w, h, device)?;
         renderers.gl = info.0;
         renderers.gl_version = info.1;
@@ -320,7 +320,7 @@ fn bench(
             let start = Instant::now();
             let mut ctx = Context::new(w, h)?;
             ctx.replay(&calls);
-            let img = cpu_image(&mut ctx);
+            let img = ctx.to_image();
             let ms = start.elapsed().as_secs_f64() * 1e3;
             drop(img);
             Ok(ms)
@@ -359,7 +359,7 @@ fn replay(
         Backend::Cpu => {
             let mut ctx = Context::new(w, h)?;
             ctx.replay(&calls);
-            cpu_image(&mut ctx)
+            ctx.to_image()
         }
         Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
     };

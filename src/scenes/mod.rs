@@ -7,8 +7,6 @@
 //! adding a scene is one entry (and usually one new file under `src/scenes/`) with no
 //! registration code.
 
-use image::RgbaImage;
-
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
@@ -102,25 +100,6 @@ pub fn scenes() -> &'static [Scene] {
 /// The scene called `name`, if any.
 pub fn find(name: &str) -> Option<&'static Scene> {
     SCENES.iter().find(|s| s.name == name)
-}
-
-/// The CPU framebuffer of `ctx` as an image, top row first, after drawing whatever is still
-/// batched (as `glFinish` would).
-pub fn cpu_image(ctx: &mut Context) -> RgbaImage {
-    ctx.renderer.flush(&ctx.state);
-    let (w, h) = ctx.size();
-    let colour = ctx.renderer.color();
-    let mut img = RgbaImage::new(w, h);
-    for (y, row) in colour.chunks_exact(w.max(1) as usize).enumerate() {
-        // GL rows are bottom-up (window y = 0 at the bottom).
-        let iy = h.saturating_sub(1 + y as u32);
-        for (x, px) in row.iter().enumerate() {
-            if let Some(p) = img.get_pixel_mut_checked(x as u32, iy) {
-                *p = image::Rgba(*px);
-            }
-        }
-    }
-    img
 }
 
 /// `triangle`: a triangle in normalised device coordinates (identity matrices) with one colour

@@ -162,7 +162,6 @@ pub(super) const SCENES: [Scene; 2] = [
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenes::cpu_image;
 
     /// Every mode's vertex count is one the spec draws completely (no vertices left over):
     /// LINES even, TRIANGLES a multiple of 3, QUADS of 4, QUAD_STRIP even.
@@ -197,7 +196,7 @@ mod tests {
         let draw = |shade: u32| match Context::new(800, 800) {
             Ok(mut gl) => {
                 primitives(&mut gl, shade);
-                cpu_image(&mut gl)
+                gl.to_image()
             }
             Err(e) => panic!("{e}"),
         };
@@ -243,7 +242,7 @@ mod tests {
             gl.vertex2f(v[0], v[1]);
         }
         gl.end();
-        let img = cpu_image(&mut gl);
+        let img = gl.to_image();
         let p = img.get_pixel(32, 63 - 32).0;
         assert!((125..=135).contains(&p[0]), "{p:?}");
     }

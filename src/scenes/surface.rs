@@ -103,13 +103,13 @@ pub(super) const SCENES: [Scene; 2] = [
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenes::{cpu_image, find};
+    use crate::scenes::find;
 
     fn render(draw: fn(&mut Context), size: u32) -> image::RgbaImage {
         match Context::new(size, size) {
             Ok(mut gl) => {
                 draw(&mut gl);
-                cpu_image(&mut gl)
+                gl.to_image()
             }
             Err(e) => panic!("{e}"),
         }

@@ -193,7 +193,7 @@ mod tests {
         gl.matrix_mode(MODELVIEW);
         glu::look_at(&mut gl, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
         draw_cube(&mut gl);
-        let img = crate::scenes::cpu_image(&mut gl);
+        let img = gl.to_image();
         assert_eq!(img.get_pixel(208, 599).0, [255, 0, 0, 255]);
         // 0.483 · 200 = 96.6 pixels: 110 pixels right of the centre is background (black).
         assert_eq!(img.get_pixel(310, 599).0, [0, 0, 0, 0]);
