@@ -39,7 +39,7 @@ fn setup(gl: &mut Context) {
     glu::perspective(gl, 40.0, 1.0, 1.0, 30.0);
     gl.matrix_mode(MODELVIEW);
     gl.load_identity();
-    glu::look_at(gl, 0.0, 4.0, 9.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
+    glu::look_at(gl, 0.0, 5.0, 12.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.0);
     gl.enable(LIGHTING);
     gl.enable(LIGHT0);
     gl.lightfv(LIGHT0, POSITION, &[1.0, 2.0, 3.0, 0.0]);
@@ -113,7 +113,7 @@ fn display_list(gl: &mut Context) {
     gl.end_list();
     gl.call_list(20);
     gl.push_matrix();
-    gl.translatef(0.0, 1.6, 0.0);
+    gl.translatef(0.0, 2.4, 0.0);
     gl.scalef(0.4, 0.4, 0.4);
     gl.call_list(20);
     gl.pop_matrix();
