@@ -242,18 +242,20 @@ impl Context {
 
     /// `glCallLists`: executes the lists `ListBase + lists[i]` for i < n, the names read from
     /// `lists` as `ty` (BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT,
-    /// 2_BYTES, 3_BYTES or 4_BYTES; the bytes as they lie in memory). INVALID_VALUE for a
-    /// negative `n` or a `lists` shorter than `n` names, INVALID_ENUM for another type.
+    /// 2_BYTES, 3_BYTES or 4_BYTES; the bytes as they lie in memory). INVALID_ENUM for another
+    /// type (checked first, as Mesa does), INVALID_VALUE for a negative `n` or a `lists` shorter
+    /// than `n` names.
     pub fn call_lists(&mut self, n: i32, ty: u32, lists: &[u8]) {
         let needed = name_size(ty).and_then(|s| usize::try_from(n).ok()?.checked_mul(s));
         let kept = lists.get(..needed.unwrap_or(0)).unwrap_or(lists);
         record!(self, Call::CallLists(n, ty, kept.to_vec()));
-        if n < 0 {
-            return self.error(gl::INVALID_VALUE);
-        }
+        // The type first, then n: GL 2.1 leaves the order open; Mesa checks the type first.
         let Some(size) = name_size(ty) else {
             return self.error(gl::INVALID_ENUM);
         };
+        if n < 0 {
+            return self.error(gl::INVALID_VALUE);
+        }
         if needed.is_none() || needed.is_some_and(|needed| lists.len() < needed) {
             return self.error(gl::INVALID_VALUE);
         }
