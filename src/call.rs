@@ -240,9 +240,10 @@ pub enum Call {
 impl Call {
     /// Whether GL 2.1 §5.4 executes this command immediately instead of compiling it into the
     /// display list being defined: GenLists, DeleteLists, NewList, EndList, PixelStore, Flush,
-    /// Finish, the client attribute stack, and (add them here) the client-state and array-pointer
-    /// commands, ReadPixels, RenderMode, Gen*/Delete* of other objects. The front end's `record!`
-    /// and the GL backend both consult this one list.
+    /// Finish, ClientActiveTexture, the client attribute stack, and (add them here) the other
+    /// client-state and array-pointer commands (EnableClientState, *Pointer, InterleavedArrays),
+    /// ReadPixels, RenderMode, GenTextures/DeleteTextures. The front end's `record!` and the GL
+    /// backend both consult this one list.
     pub fn executes_immediately(&self) -> bool {
         matches!(
             self,
@@ -254,6 +255,7 @@ impl Call {
                 | Call::PixelStoref(..)
                 | Call::Flush
                 | Call::Finish
+                | Call::ClientActiveTexture(..)
                 | Call::PushClientAttrib(..)
                 | Call::PopClientAttrib
         )

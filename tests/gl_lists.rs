@@ -451,3 +451,31 @@ fn attribute_groups_hold_what_the_drivers_do() {
     }
     assert!(mismatches.is_empty(), "{mismatches:#?}");
 }
+
+#[test]
+fn nesting_stops_where_the_drivers_does() {
+    let Some(mut gl) = backend(4, 4) else { return };
+    let mut cpu = Context::new(4, 4).expect("context");
+    let mut calls = Vec::new();
+    for k in 1..=80 {
+        calls.extend([
+            Call::NewList(k, gl::COMPILE),
+            Call::Translatef(1.0, 0.0, 0.0),
+            Call::CallList(k + 1),
+            Call::EndList,
+        ]);
+    }
+    calls.push(Call::CallList(1));
+    gl.replay(&calls);
+    cpu.replay(&calls);
+    let (mut a, mut b) = ([0.0f32; 16], [0.0f32; 16]);
+    gl.get_floatv(gl::MODELVIEW_MATRIX, &mut a);
+    cpu.get_floatv(gl::MODELVIEW_MATRIX, &mut b);
+    assert_eq!(a, b);
+    assert_eq!(b[12], 64.0);
+    let (mut a, mut b) = ([0i32], [0i32]);
+    gl.get_integerv(gl::MAX_LIST_NESTING, &mut a);
+    cpu.get_integerv(gl::MAX_LIST_NESTING, &mut b);
+    assert_eq!(a, b);
+    assert_eq!(gl.get_error(), cpu.get_error());
+}

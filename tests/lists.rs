@@ -124,6 +124,7 @@ fn immediate_commands_are_executed_not_stored() {
     c.pixel_storei(gl::PACK_ALIGNMENT, 2);
     c.push_client_attrib(gl::CLIENT_PIXEL_STORE_BIT);
     c.pop_client_attrib();
+    c.client_active_texture(gl::TEXTURE1);
     let base = c.gen_lists(3);
     c.flush();
     c.finish();
@@ -134,15 +135,19 @@ fn immediate_commands_are_executed_not_stored() {
     c.point_size(3.0); // compiled
     c.end_list();
     assert_eq!(get_i(&mut c, gl::PACK_ALIGNMENT), 2);
+    assert_eq!(
+        get_i(&mut c, gl::CLIENT_ACTIVE_TEXTURE),
+        gl::TEXTURE1 as i32
+    );
     assert_eq!(c.list_calls(7), Some(&[Call::PointSize(3.0)][..]));
     assert_eq!(get_i(&mut c, gl::LIST_INDEX), 0);
     assert_eq!(get_i(&mut c, gl::LIST_MODE), 0);
     // The recording holds everything the caller made, the list's content once.
     let rec = c.stop_recording();
-    assert_eq!(rec.len(), 10);
+    assert_eq!(rec.len(), 11);
     assert_eq!(rec[0], Call::NewList(7, gl::COMPILE));
-    assert_eq!(rec[8], Call::PointSize(3.0));
-    assert_eq!(rec[9], Call::EndList);
+    assert_eq!(rec[9], Call::PointSize(3.0));
+    assert_eq!(rec[10], Call::EndList);
 }
 
 #[test]
