@@ -230,6 +230,11 @@ impl GlBackend {
         let Some(calls) = self.lists.lists.get(&name).cloned() else {
             return;
         };
+        if self.lists.depth == 0 && self.lists.compiling.is_some() {
+            // The driver is compiling the expanded calls in place of the CallList: its copy of
+            // the list being defined is no longer the mirror's.
+            self.lists.expand = true;
+        }
         self.lists.depth += 1;
         for call in calls.iter() {
             self.execute(call);
