@@ -479,3 +479,46 @@ fn nesting_stops_where_the_drivers_does() {
     assert_eq!(a, b);
     assert_eq!(gl.get_error(), cpu.get_error());
 }
+
+#[test]
+fn wire_shapes_match_the_driver() {
+    let draw = |c: &mut Context| {
+        c.matrix_mode(gl::PROJECTION);
+        c.ortho(-3.0, 3.0, -3.0, 3.0, -3.0, 3.0);
+        c.matrix_mode(gl::MODELVIEW);
+        c.rotatef(20.0, 1.0, 1.0, 0.0);
+        let spots: [(f32, f32); 5] = [
+            (-1.8, 1.5),
+            (0.0, 1.5),
+            (1.8, 1.5),
+            (-1.0, -1.5),
+            (1.2, -1.5),
+        ];
+        for (k, (x, y)) in spots.into_iter().enumerate() {
+            c.push_matrix();
+            c.translatef(x, y, 0.0);
+            match k {
+                0 => fixedgl::glut::wire_sphere(c, 0.9, 12, 8),
+                1 => fixedgl::glut::wire_cube(c, 1.2),
+                2 => fixedgl::glut::wire_cone(c, 0.8, 1.4, 10, 3),
+                3 => fixedgl::glut::wire_torus(c, 0.25, 0.7, 8, 14),
+                _ => fixedgl::glut::wire_teapot(c, 0.7),
+            }
+            c.pop_matrix();
+        }
+    };
+    let mut cpu = Context::new(200, 200).expect("context");
+    cpu.start_recording();
+    draw(&mut cpu);
+    let calls = cpu.stop_recording();
+    let Some(mut gl) = backend(200, 200) else {
+        return;
+    };
+    gl.replay(&calls);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    let img = scenes::cpu_image(&mut cpu);
+    let lit = img.pixels().filter(|p| p.0[0] > 0).count();
+    assert!(lit > 2000, "only {lit} pixels drawn");
+    let cmp = compare(&img, &gl.read_image(), 2);
+    assert!(cmp.differing_percent <= 0.05, "{cmp:?}");
+}
