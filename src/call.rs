@@ -225,7 +225,50 @@ pub enum Call {
     PixelStoref(u32, f32),
     Flush,
     Finish,
+
+    // --- lists: display lists, attribute stacks (GL 2.1 §5.4, §6.1.14): context/lists.rs, attrib.rs
+    GenLists(i32),
+    NewList(u32, u32),
+    EndList,
+    CallList(u32),
+    /// `n`, `type`, and the bytes of the names array (exactly the `n` names GL reads, or the
+    /// caller's shorter slice, which is INVALID_VALUE).
+    CallLists(i32, u32, Vec<u8>),
+    ListBase(u32),
+    DeleteLists(u32, i32),
+    PushAttrib(u32),
+    PopAttrib,
+    PushClientAttrib(u32),
+    PopClientAttrib,
+    // --- end lists
 }
+
+// --- lists: which calls a display list does not hold (GL 2.1 §5.4)
+impl Call {
+    /// Whether GL 2.1 §5.4 executes this command immediately instead of compiling it into the
+    /// display list being defined: GenLists, DeleteLists, NewList, EndList, PixelStore, Flush,
+    /// Finish, ClientActiveTexture, the client attribute stack, and (add them here) the other
+    /// client-state and array-pointer commands (EnableClientState, *Pointer, InterleavedArrays),
+    /// ReadPixels, RenderMode, GenTextures/DeleteTextures. The front end's `record!` and the GL
+    /// backend both consult this one list.
+    pub fn executes_immediately(&self) -> bool {
+        matches!(
+            self,
+            Call::GenLists(..)
+                | Call::DeleteLists(..)
+                | Call::NewList(..)
+                | Call::EndList
+                | Call::PixelStorei(..)
+                | Call::PixelStoref(..)
+                | Call::Flush
+                | Call::Finish
+                | Call::ClientActiveTexture(..)
+                | Call::PushClientAttrib(..)
+                | Call::PopClientAttrib
+        )
+    }
+}
+// --- end lists
 
 #[cfg(test)]
 mod tests {

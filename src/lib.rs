@@ -19,6 +19,9 @@ pub mod gl;
 // --- GLU (glu.rs)
 pub mod glu;
 // --- end GLU
+// --- lists: GLUT shapes (glut.rs)
+pub mod glut;
+// --- end lists
 pub mod state;
 
 // ---- frontend-set: the recording file format ----

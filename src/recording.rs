@@ -97,6 +97,9 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         | "TexParameterfv" => &[Enum, Enum],
         "StencilOp" => &[Enum, Enum, Enum],
         "VertexPointer" | "NormalPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
+        // --- lists
+        "NewList" | "CallLists" => &[Plain, Enum],
+        // --- end lists
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],
     }

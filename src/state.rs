@@ -363,6 +363,11 @@ pub struct State {
     pub unpack_alignment: i32,
 
     pub hints: Hints,
+
+    // --- lists: display lists (table 6.36)
+    /// LIST_BASE.
+    pub list_base: u32,
+    // --- end lists
 }
 
 impl State {
@@ -412,6 +417,9 @@ impl State {
             pack_alignment: 4,
             unpack_alignment: 4,
             hints: Hints::default(),
+            // --- lists
+            list_base: 0,
+            // --- end lists
         }
     }
 

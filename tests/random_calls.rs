@@ -39,6 +39,7 @@ fn allowed_inside(call: &Call) -> bool {
         "EdgeFlag",
         "Material",
         "End",
+        "CallList",
     ]
     .iter()
     .any(|p| {
@@ -49,12 +50,39 @@ fn allowed_inside(call: &Call) -> bool {
 fn run(calls: &[Call]) -> Result<(), TestCaseError> {
     let mut ctx = Context::new(16, 16).map_err(|e| TestCaseError::fail(e.to_string()))?;
     let mut inside = false;
+    // lists: the list being defined and its mode (a model of NewList/EndList, GL 2.1 §5.4).
+    let mut compiling: Option<u32> = None;
     for call in calls {
+        // Lists never call lists here: a list calling itself twice would run 2^64 times (as in
+        // GL). Nesting is tested in tests/lists.rs.
+        if compiling.is_some() && matches!(call, Call::CallList(_) | Call::CallLists(..)) {
+            continue;
+        }
+        let runs_list = matches!(call, Call::CallList(_) | Call::CallLists(..));
+        let compile_only = compiling == Some(gl::COMPILE) && !call.executes_immediately();
         let e0 = ctx.pending_error();
         let before = ctx.state().clone();
         ctx.execute(call);
         let e1 = ctx.pending_error();
         prop_assert!(CODES.contains(&e1), "{call:?} left error {e1:#x}");
+        if compile_only {
+            // Stored, not executed: no error, no change (GL 2.1 §5.4).
+            prop_assert!(
+                same(&before, ctx.state()),
+                "compiled {call:?} changed state"
+            );
+            prop_assert_eq!(e1, e0, "compiled {:?} raised an error", call);
+            continue;
+        }
+        if runs_list {
+            // The list's own commands may change state and then raise an error: no model here
+            // beyond the Begin/End phase, read back from the context.
+            inside = ctx.inside_begin_end();
+            if !inside {
+                prop_assert_eq!(ctx.get_error(), e1);
+            }
+            continue;
+        }
         if e0 == gl::NO_ERROR && e1 != gl::NO_ERROR {
             prop_assert!(
                 same(&before, ctx.state()),
@@ -78,6 +106,15 @@ fn run(calls: &[Call]) -> Result<(), TestCaseError> {
         match *call {
             Call::Begin(mode) if !inside && mode <= gl::POLYGON => inside = true,
             Call::End if inside => inside = false,
+            Call::NewList(n, mode)
+                if !inside
+                    && n != 0
+                    && compiling.is_none()
+                    && (mode == gl::COMPILE || mode == gl::COMPILE_AND_EXECUTE) =>
+            {
+                compiling = Some(mode)
+            }
+            Call::EndList if !inside => compiling = None,
             _ => {}
         }
         if !inside {

@@ -220,6 +220,17 @@ impl Context {
             | gl::SAMPLES => i(0),
             gl::RGBA_MODE => b(true),
             gl::INDEX_MODE | gl::DOUBLEBUFFER | gl::STEREO => b(false),
+            // --- lists: display lists, attribute stacks (table 6.36, 6.35)
+            gl::LIST_BASE => e(s.list_base),
+            gl::LIST_INDEX => e(self.list_index_and_mode().0),
+            gl::LIST_MODE => e(self.list_index_and_mode().1),
+            gl::MAX_LIST_NESTING => e(super::MAX_LIST_NESTING),
+            gl::ATTRIB_STACK_DEPTH => i(self.attrib_stack_depths().0 as i32),
+            gl::CLIENT_ATTRIB_STACK_DEPTH => i(self.attrib_stack_depths().1 as i32),
+            gl::MAX_ATTRIB_STACK_DEPTH | gl::MAX_CLIENT_ATTRIB_STACK_DEPTH => {
+                i(super::MAX_ATTRIB_STACK_DEPTH as i32)
+            }
+            // --- end lists
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)

@@ -37,11 +37,18 @@ mod get;
 mod matrix;
 // --- end transforms + queries
 
-/// Appends `$call` to the recording, if one is running; builds the `Call` only then.
+/// Appends `$call` to the recording, if one is running, and to the display list being
+/// compiled, if any (GL 2.1 §5.4); builds the `Call` only then. Under NewList(COMPILE) it then
+/// returns from the calling method: the command is stored, not validated or executed. A call
+/// [`Call::executes_immediately`] names is recorded but never compiled. Calls made by a list
+/// being executed (CallList) are neither recorded nor compiled: the stream holds the CallList.
 macro_rules! record {
     ($ctx:expr, $call:expr) => {
-        if let Some(rec) = $ctx.recording.as_mut() {
-            rec.push($call);
+        if ($ctx.recording.is_some() || $ctx.lists.compiling.is_some())
+            && $ctx.lists.depth == 0
+            && $ctx.capture($call)
+        {
+            return;
         }
     };
 }
@@ -60,6 +67,10 @@ pub struct Context {
     pub(crate) begin_mode: Option<u32>,
     pub(crate) recording: Option<Vec<Call>>,
     pub(crate) renderer: Renderer,
+    // --- lists (context/lists.rs, context/attrib.rs)
+    pub(crate) lists: lists::DisplayLists,
+    pub(crate) attrib: attrib::AttribStacks,
+    // --- end lists
 }
 
 impl Context {
@@ -75,6 +86,10 @@ impl Context {
             begin_mode: None,
             recording: None,
             renderer: Renderer::new(width, height),
+            // --- lists
+            lists: Default::default(),
+            attrib: Default::default(),
+            // --- end lists
         })
     }
 
@@ -112,6 +127,12 @@ impl Context {
     /// the context.
     pub fn pending_error(&self) -> u32 {
         self.error
+    }
+
+    /// Whether a Begin/End pair is open. Not a GL entry point (GL has no query for it): for
+    /// tests and tools.
+    pub fn inside_begin_end(&self) -> bool {
+        self.begin_mode.is_some()
     }
 
     /// For a command not allowed between Begin and End: raises INVALID_OPERATION there and
@@ -396,6 +417,21 @@ impl Context {
             Call::PixelStoref(a, b) => self.pixel_storef(a, b),
             Call::Flush => self.flush(),
             Call::Finish => self.finish(),
+            // --- lists: display lists, attribute stacks (context/lists.rs, context/attrib.rs)
+            Call::GenLists(a) => {
+                self.gen_lists(a);
+            }
+            Call::NewList(a, b) => self.new_list(a, b),
+            Call::EndList => self.end_list(),
+            Call::CallList(a) => self.call_list(a),
+            Call::CallLists(a, b, ref c) => self.call_lists(a, b, c),
+            Call::ListBase(a) => self.list_base(a),
+            Call::DeleteLists(a, b) => self.delete_lists(a, b),
+            Call::PushAttrib(a) => self.push_attrib(a),
+            Call::PopAttrib => self.pop_attrib(),
+            Call::PushClientAttrib(a) => self.push_client_attrib(a),
+            Call::PopClientAttrib => self.pop_client_attrib(),
+            // --- end lists
         }
     }
 
@@ -466,3 +502,12 @@ impl State {
 // --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
 mod readback;
 // --- end cpu-pipeline
+
+// --- lists: display lists and attribute stacks (context/lists.rs, context/attrib.rs)
+mod attrib;
+mod lists;
+pub use attrib::MAX_ATTRIB_STACK_DEPTH;
+pub use lists::MAX_LIST_NESTING;
+#[allow(unused_imports)] // The GL backend reads CallLists arrays as the front end does.
+pub(crate) use lists::{name_offset, name_size};
+// --- end lists

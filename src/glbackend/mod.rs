@@ -15,6 +15,9 @@
 //! emulated by a GLSL program (`phong.rs`).
 
 mod egl;
+// --- lists (lists.rs)
+mod lists;
+// --- end lists
 mod phong;
 pub mod raw;
 mod replay;
@@ -61,6 +64,9 @@ pub struct GlBackend {
     /// A call since the last Begin may have changed what the Phong program depends on.
     phong_dirty: bool,
     phong_program: Option<phong::PhongProgram>,
+    // --- lists: the mirror of the driver's display lists (lists.rs)
+    lists: lists::ListMirror,
+    // --- end lists
     /// Values a `get_*` may write at most (GL 2.1 §6.1.2; COMPRESSED_TEXTURE_FORMATS is the long one).
     max_get_values: usize,
     renderer: String,
@@ -197,6 +203,9 @@ impl GlBackend {
             phong: false,
             phong_dirty: true,
             phong_program: None,
+            // --- lists
+            lists: Default::default(),
+            // --- end lists
             max_get_values,
             renderer,
             version,
@@ -433,6 +442,17 @@ impl GlBackend {
     /// Anything else goes to the driver unchanged, so the driver raises the error.
     pub fn shade_model(&mut self, mode: u32) {
         self.make_current();
+        // lists: under NewList(COMPILE) the driver stores the mode (SMOOTH for PHONG_WIN, whose
+        // list is then expanded when it runs, see lists.rs) and nothing of ours changes.
+        if self.compile_only() {
+            let stored = if mode == gl::PHONG_WIN {
+                gl::SMOOTH
+            } else {
+                mode
+            };
+            // SAFETY: context current; no pointers.
+            return unsafe { self.raw.ShadeModel(stored) };
+        }
         if mode != gl::PHONG_WIN || self.inside_begin_end {
             // SAFETY: context current; no pointers.
             unsafe { self.raw.ShadeModel(mode) };

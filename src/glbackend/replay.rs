@@ -25,10 +25,15 @@ impl GlBackend {
         if !phong_neutral(call) {
             self.phong_dirty = true;
         }
+        // lists: the mirror of the display list being defined (lists.rs).
+        self.mirror_call(call);
         let gl = &self.raw;
         // SAFETY: the context is current on this thread (GlBackend is not Send) and every pointer
         // passed below points to at least as many elements as the driver reads for the call.
         match *call {
+            // lists: under NewList(COMPILE) the driver stores Begin/End, nothing opens.
+            Call::Begin(mode) if self.compile_only() => unsafe { gl.Begin(mode) },
+            Call::End if self.compile_only() => unsafe { gl.End() },
             Call::Begin(mode) => {
                 // GL 2.1 §2.6.1 has ten modes; a 3.2+ compatibility driver also accepts the
                 // adjacency modes and PATCHES (0xA..=0xE), so the GL 2.1 INVALID_ENUM is raised
@@ -254,6 +259,21 @@ impl GlBackend {
             Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
+            // --- lists: display lists, attribute stacks (glbackend/lists.rs)
+            Call::GenLists(range) => unsafe {
+                gl.GenLists(range);
+            },
+            Call::NewList(list, mode) => self.new_list(list, mode),
+            Call::EndList => self.end_list(),
+            Call::CallList(list) => self.call_list(list),
+            Call::CallLists(n, ty, ref names) => self.call_lists(n, ty, names),
+            Call::ListBase(base) => self.list_base(base),
+            Call::DeleteLists(list, range) => self.delete_lists(list, range),
+            Call::PushAttrib(mask) => self.push_attrib(mask),
+            Call::PopAttrib => self.pop_attrib(),
+            Call::PushClientAttrib(mask) => unsafe { gl.PushClientAttrib(mask) },
+            Call::PopClientAttrib => unsafe { gl.PopClientAttrib() },
+            // --- end lists
         }
     }
 
@@ -264,6 +284,11 @@ impl GlBackend {
         if target != gl::PHONG_HINT_WIN {
             // SAFETY: the context is current (see `execute`); no pointers.
             return unsafe { self.raw.Hint(target, mode) };
+        }
+        // lists: the driver's list cannot hold this hint; its errors come when the list runs.
+        self.list_needs_expansion();
+        if self.compile_only() {
+            return;
         }
         if self.inside_begin_end {
             self.raise(gl::INVALID_OPERATION);
@@ -287,6 +312,11 @@ impl GlBackend {
         call: impl FnOnce(&raw::Gl, *const T),
     ) {
         if v.len() < needed {
+            // lists: the driver's list cannot hold this call; its error comes when the list runs.
+            self.list_needs_expansion();
+            if self.compile_only() {
+                return;
+            }
             let code = if self.inside_begin_end && !allowed_in_begin_end {
                 gl::INVALID_OPERATION
             } else {
@@ -307,7 +337,7 @@ impl GlBackend {
 /// Calls that can never change what the PHONG_WIN program depends on (LIGHTING, the light
 /// enables, the light model, COLOR_MATERIAL), so they need not trigger a re-read before the next
 /// Begin. Anything not listed here does: a new variant is correct by default, merely slower.
-fn phong_neutral(call: &Call) -> bool {
+pub(super) fn phong_neutral(call: &Call) -> bool {
     matches!(
         call,
         Call::Begin(_)

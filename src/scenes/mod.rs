@@ -17,6 +17,9 @@ pub mod shapes;
 pub mod sphere;
 pub mod surface;
 pub mod transforms;
+// --- lists: display-list and glut-shapes scenes (scenes/lists.rs)
+pub mod lists;
+// --- end lists
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -90,6 +93,10 @@ static SCENES: &[Scene] = &[
     transforms::SCENES[0],
     primitives::SCENES[0],
     primitives::SCENES[1],
+    // --- lists
+    lists::SCENES[0],
+    lists::SCENES[1],
+    // --- end lists
 ];
 
 /// Every registered scene, in listing order.

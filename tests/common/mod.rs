@@ -10,7 +10,7 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = 157;
+pub const VARIANTS: usize = 168;
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -95,6 +95,15 @@ pub const ENUMS: &[u32] = &[
     gl::CULL_FACE,
     gl::NORMALIZE,
     gl::SCISSOR_TEST,
+    // --- lists: NewList modes, CallLists types, attribute masks
+    gl::COMPILE,
+    gl::COMPILE_AND_EXECUTE,
+    gl::UNSIGNED_BYTE,
+    gl::GL_2_BYTES,
+    gl::FLOAT,
+    gl::LIGHTING_BIT | gl::ENABLE_BIT,
+    gl::ALL_ATTRIB_BITS,
+    // --- end lists
     0,
     1,
     u32::MAX,
@@ -354,6 +363,19 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         154 => Call::PixelStoref(p.e[0], p.f[1]),
         155 => Call::Flush,
         156 => Call::Finish,
+        // --- lists: list names 1..=4, so that lists are defined and called often
+        157 => Call::GenLists(p.i[0]),
+        158 => Call::NewList(1 + (p.e[0] & 3), p.e[1]),
+        159 => Call::EndList,
+        160 => Call::CallList(1 + (p.e[0] & 3)),
+        161 => Call::CallLists(p.i[0] % 6, p.e[1], p.vi.iter().map(|&v| (v & 3) as u8).collect()),
+        162 => Call::ListBase(p.e[0] & 1),
+        163 => Call::DeleteLists(p.e[0] & 3, p.i[1]),
+        164 => Call::PushAttrib(p.e[0]),
+        165 => Call::PopAttrib,
+        166 => Call::PushClientAttrib(p.e[0]),
+        167 => Call::PopClientAttrib,
+        // --- end lists
         _ => Call::End,
     }
 }

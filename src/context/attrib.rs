@@ -1,0 +1,191 @@
+//! Attribute stacks (GL 2.1 §6.1.14): `PushAttrib`, `PopAttrib`, `PushClientAttrib`,
+//! `PopClientAttrib`.
+//!
+//! Which state belongs to which group is the "Attribute" column of GL 2.1 tables 6.5 to 6.31;
+//! [`copy_groups`] and [`copy_client_groups`] are that column written out, one line per field.
+//! The matrix stacks are in no group (TRANSFORM_BIT is the matrix mode, the clip planes and their
+//! enables, NORMALIZE and RESCALE_NORMAL).
+//!
+//! Design decision: a stack entry is a whole `State` (built fresh, not cloned, so no matrix stack
+//! or object store rides along) into which the pushed groups are copied, and PopAttrib copies the
+//! same groups back with the same function. Adding a field to a group is therefore one line in
+//! one table, and save and restore cannot disagree.
+
+use super::Context;
+use crate::call::Call;
+use crate::gl;
+use crate::state::State;
+
+/// `MAX_ATTRIB_STACK_DEPTH` and `MAX_CLIENT_ATTRIB_STACK_DEPTH` (GL 2.1 table 6.35: at least 16).
+pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
+
+/// The server and client attribute stacks: each entry the pushed mask and the saved values.
+#[derive(Debug, Default)]
+pub(crate) struct AttribStacks {
+    server: Vec<(u32, Box<State>)>,
+    client: Vec<(u32, Box<State>)>,
+}
+
+/// Copies `field` paths from `s` to `d`.
+macro_rules! copy {
+    ($d:ident, $s:ident; $($($f:ident).+),+ $(,)?) => {
+        $( $d.$($f).+ = $s.$($f).+.clone(); )+
+    };
+}
+
+/// Copies the server attribute groups in `mask` from `s` to `d` (GL 2.1 tables 6.5 to 6.31,
+/// "Attribute" column). A field of state in a group is one line here.
+pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
+    let has = |bit: u32| mask & bit != 0;
+    if has(gl::CURRENT_BIT) {
+        // Table 6.5: current colour, secondary colour, normal, texture coordinates, fog
+        // coordinate, edge flag.
+        copy!(d, s; current);
+    }
+    if has(gl::ENABLE_BIT) {
+        // Every Enable flag is in the enable group as well as in its own.
+        copy!(d, s; enables);
+    }
+    if has(gl::TRANSFORM_BIT) {
+        // Table 6.7 (the matrices themselves are in no group).
+        copy!(d, s; matrix_mode, clip_planes, enables.clip_planes, enables.normalize,
+            enables.rescale_normal);
+    }
+    if has(gl::VIEWPORT_BIT) {
+        copy!(d, s; viewport, depth_range);
+    }
+    if has(gl::LIGHTING_BIT) {
+        // Tables 6.9, 6.10.
+        copy!(d, s; shade_model, lights, light_model, materials, color_material_face,
+            color_material_mode, enables.lighting, enables.lights, enables.color_material);
+    }
+    if has(gl::POINT_BIT) {
+        // Table 6.11.
+        copy!(d, s; point_size, enables.point_smooth, enables.point_sprite);
+    }
+    if has(gl::LINE_BIT) {
+        // Table 6.12.
+        copy!(d, s; line_width, enables.line_smooth, enables.line_stipple);
+    }
+    if has(gl::POLYGON_BIT) {
+        // Table 6.13.
+        copy!(d, s; front_face, cull_face_mode, polygon_mode, polygon_offset_factor,
+            polygon_offset_units, enables.cull_face, enables.polygon_smooth,
+            enables.polygon_stipple, enables.polygon_offset_fill, enables.polygon_offset_line,
+            enables.polygon_offset_point);
+    }
+    if has(gl::TEXTURE_BIT) {
+        // Tables 6.15 to 6.20: the selected unit and every unit's enables.
+        copy!(d, s; active_texture, enables.texture_1d, enables.texture_2d, enables.texture_3d,
+            enables.texture_cube_map, enables.texture_gen);
+    }
+    if has(gl::SCISSOR_BIT) {
+        // Table 6.21.
+        copy!(d, s; scissor, enables.scissor_test);
+    }
+    if has(gl::COLOR_BUFFER_BIT) {
+        // Tables 6.21, 6.22.
+        copy!(d, s; color_mask, clear_color, enables.alpha_test, enables.blend, enables.dither,
+            enables.color_logic_op, enables.index_logic_op);
+    }
+    if has(gl::DEPTH_BUFFER_BIT) {
+        copy!(d, s; depth_func, depth_mask, clear_depth, enables.depth_test);
+    }
+    if has(gl::STENCIL_BUFFER_BIT) {
+        copy!(d, s; stencil_writemask, clear_stencil, enables.stencil_test);
+    }
+    if has(gl::FOG_BIT) {
+        // Table 6.8: fog, and COLOR_SUM.
+        copy!(d, s; enables.fog, enables.color_sum);
+    }
+    if has(gl::HINT_BIT) {
+        copy!(d, s; hints);
+    }
+    if has(gl::EVAL_BIT) {
+        copy!(d, s; enables.auto_normal, enables.map1, enables.map2);
+    }
+    if has(gl::MULTISAMPLE_BIT) {
+        copy!(d, s; enables.multisample, enables.sample_alpha_to_coverage,
+            enables.sample_alpha_to_one, enables.sample_coverage);
+    }
+    if has(gl::LIST_BIT) {
+        copy!(d, s; list_base);
+    }
+    // PIXEL_MODE_BIT (read buffer, pixel transfer, zoom), POLYGON_STIPPLE_BIT and
+    // ACCUM_BUFFER_BIT: no state of theirs is kept yet.
+}
+
+/// Copies the client attribute groups in `mask` from `s` to `d` (GL 2.1 tables 6.6 and 6.24).
+pub(crate) fn copy_client_groups(mask: u32, d: &mut State, s: &State) {
+    let has = |bit: u32| mask & bit != 0;
+    if has(gl::CLIENT_PIXEL_STORE_BIT) {
+        copy!(d, s; pack_alignment, unpack_alignment);
+    }
+    if has(gl::CLIENT_VERTEX_ARRAY_BIT) {
+        copy!(d, s; client_active_texture);
+    }
+}
+
+impl Context {
+    /// `glPushAttrib`: saves the groups in `mask` (ALL_ATTRIB_BITS for all).
+    /// STACK_OVERFLOW when MAX_ATTRIB_STACK_DEPTH entries are already pushed.
+    pub fn push_attrib(&mut self, mask: u32) {
+        record!(self, Call::PushAttrib(mask));
+        if !self.outside_begin_end() {
+            return;
+        }
+        if self.attrib.server.len() >= MAX_ATTRIB_STACK_DEPTH {
+            return self.error(gl::STACK_OVERFLOW);
+        }
+        let mut saved = Box::new(State::new(self.state.width, self.state.height));
+        copy_groups(mask, &mut saved, &self.state);
+        self.attrib.server.push((mask, saved));
+    }
+
+    /// `glPopAttrib`: restores the groups the matching PushAttrib saved.
+    /// STACK_UNDERFLOW when the stack is empty.
+    pub fn pop_attrib(&mut self) {
+        record!(self, Call::PopAttrib);
+        if !self.outside_begin_end() {
+            return;
+        }
+        let Some((mask, saved)) = self.attrib.server.pop() else {
+            return self.error(gl::STACK_UNDERFLOW);
+        };
+        copy_groups(mask, &mut self.state, &saved);
+    }
+
+    /// `glPushClientAttrib`: saves the client groups in `mask` (CLIENT_PIXEL_STORE_BIT,
+    /// CLIENT_VERTEX_ARRAY_BIT). Executed immediately, never compiled (GL 2.1 §5.4).
+    /// STACK_OVERFLOW when MAX_CLIENT_ATTRIB_STACK_DEPTH entries are already pushed.
+    pub fn push_client_attrib(&mut self, mask: u32) {
+        record!(self, Call::PushClientAttrib(mask));
+        if !self.outside_begin_end() {
+            return;
+        }
+        if self.attrib.client.len() >= MAX_ATTRIB_STACK_DEPTH {
+            return self.error(gl::STACK_OVERFLOW);
+        }
+        let mut saved = Box::new(State::new(self.state.width, self.state.height));
+        copy_client_groups(mask, &mut saved, &self.state);
+        self.attrib.client.push((mask, saved));
+    }
+
+    /// `glPopClientAttrib`: restores what the matching PushClientAttrib saved.
+    /// STACK_UNDERFLOW when the stack is empty.
+    pub fn pop_client_attrib(&mut self) {
+        record!(self, Call::PopClientAttrib);
+        if !self.outside_begin_end() {
+            return;
+        }
+        let Some((mask, saved)) = self.attrib.client.pop() else {
+            return self.error(gl::STACK_UNDERFLOW);
+        };
+        copy_client_groups(mask, &mut self.state, &saved);
+    }
+
+    /// ATTRIB_STACK_DEPTH and CLIENT_ATTRIB_STACK_DEPTH (GL 2.1 table 6.36).
+    pub(crate) fn attrib_stack_depths(&self) -> (usize, usize) {
+        (self.attrib.server.len(), self.attrib.client.len())
+    }
+}

@@ -1,0 +1,332 @@
+//! Attribute stacks (GL 2.1 §6.1.14): each group PushAttrib saves is restored by PopAttrib, groups
+//! not pushed are left alone, the matrix stacks are in no group, and the stacks are 16 deep.
+
+use fixedgl::{gl, Context};
+
+fn ctx() -> Context {
+    Context::new(16, 16).expect("context")
+}
+
+/// Every value of `pname`, as floats (unused slots NaN).
+fn get(c: &mut Context, pname: u32) -> Vec<f32> {
+    let mut v = [f32::NAN; 16];
+    c.get_floatv(pname, &mut v);
+    assert_eq!(c.get_error(), gl::NO_ERROR, "query {pname:#x}");
+    v.iter()
+        .map(|x| if x.is_nan() { -12345.0 } else { *x })
+        .collect()
+}
+
+type Setter = fn(&mut Context);
+
+/// (group, a call that changes state of that group, the query that shows it). The values
+/// set are all different from GL's initial ones (tables 6.5 to 6.36).
+const ROWS: &[(u32, Setter, u32)] = &[
+    (
+        gl::CURRENT_BIT,
+        |c| c.color4f(0.25, 0.5, 0.75, 1.0),
+        gl::CURRENT_COLOR,
+    ),
+    (
+        gl::CURRENT_BIT,
+        |c| c.normal3f(1.0, 0.0, 0.0),
+        gl::CURRENT_NORMAL,
+    ),
+    (
+        gl::CURRENT_BIT,
+        |c| c.tex_coord2f(0.5, 0.25),
+        gl::CURRENT_TEXTURE_COORDS,
+    ),
+    (gl::ENABLE_BIT, |c| c.disable(gl::DITHER), gl::DITHER),
+    (gl::ENABLE_BIT, |c| c.enable(gl::LIGHT3), gl::LIGHT3),
+    (
+        gl::TRANSFORM_BIT,
+        |c| c.matrix_mode(gl::PROJECTION),
+        gl::MATRIX_MODE,
+    ),
+    (
+        gl::TRANSFORM_BIT,
+        |c| c.enable(gl::NORMALIZE),
+        gl::NORMALIZE,
+    ),
+    (
+        gl::TRANSFORM_BIT,
+        |c| c.enable(gl::RESCALE_NORMAL),
+        gl::RESCALE_NORMAL,
+    ),
+    (
+        gl::TRANSFORM_BIT,
+        |c| c.enable(gl::CLIP_PLANE2),
+        gl::CLIP_PLANE2,
+    ),
+    (gl::VIEWPORT_BIT, |c| c.viewport(1, 2, 3, 4), gl::VIEWPORT),
+    (
+        gl::VIEWPORT_BIT,
+        |c| c.depth_range(0.25, 0.5),
+        gl::DEPTH_RANGE,
+    ),
+    (
+        gl::LIGHTING_BIT,
+        |c| c.shade_model(gl::FLAT),
+        gl::SHADE_MODEL,
+    ),
+    (gl::LIGHTING_BIT, |c| c.enable(gl::LIGHTING), gl::LIGHTING),
+    (gl::LIGHTING_BIT, |c| c.enable(gl::LIGHT1), gl::LIGHT1),
+    (
+        gl::LIGHTING_BIT,
+        |c| c.enable(gl::COLOR_MATERIAL),
+        gl::COLOR_MATERIAL,
+    ),
+    (
+        gl::LIGHTING_BIT,
+        |c| c.light_modeli(gl::LIGHT_MODEL_TWO_SIDE, 1),
+        gl::LIGHT_MODEL_TWO_SIDE,
+    ),
+    (
+        gl::LIGHTING_BIT,
+        |c| c.color_material(gl::FRONT, gl::EMISSION),
+        gl::COLOR_MATERIAL_PARAMETER,
+    ),
+    (gl::POINT_BIT, |c| c.point_size(4.0), gl::POINT_SIZE),
+    (gl::LINE_BIT, |c| c.line_width(3.0), gl::LINE_WIDTH),
+    (
+        gl::LINE_BIT,
+        |c| c.enable(gl::LINE_STIPPLE),
+        gl::LINE_STIPPLE,
+    ),
+    (
+        gl::POLYGON_BIT,
+        |c| c.cull_face(gl::FRONT),
+        gl::CULL_FACE_MODE,
+    ),
+    (gl::POLYGON_BIT, |c| c.front_face(gl::CW), gl::FRONT_FACE),
+    (
+        gl::POLYGON_BIT,
+        |c| c.polygon_mode(gl::FRONT_AND_BACK, gl::LINE),
+        gl::POLYGON_MODE,
+    ),
+    (
+        gl::POLYGON_BIT,
+        |c| c.polygon_offset(1.0, 2.0),
+        gl::POLYGON_OFFSET_UNITS,
+    ),
+    (gl::POLYGON_BIT, |c| c.enable(gl::CULL_FACE), gl::CULL_FACE),
+    (
+        gl::POLYGON_BIT,
+        |c| c.enable(gl::POLYGON_OFFSET_FILL),
+        gl::POLYGON_OFFSET_FILL,
+    ),
+    (
+        gl::DEPTH_BUFFER_BIT,
+        |c| c.depth_func(gl::ALWAYS),
+        gl::DEPTH_FUNC,
+    ),
+    (
+        gl::DEPTH_BUFFER_BIT,
+        |c| c.depth_mask(false),
+        gl::DEPTH_WRITEMASK,
+    ),
+    (
+        gl::DEPTH_BUFFER_BIT,
+        |c| c.clear_depth(0.5),
+        gl::DEPTH_CLEAR_VALUE,
+    ),
+    (
+        gl::DEPTH_BUFFER_BIT,
+        |c| c.enable(gl::DEPTH_TEST),
+        gl::DEPTH_TEST,
+    ),
+    (
+        gl::COLOR_BUFFER_BIT,
+        |c| c.clear_color(0.5, 0.25, 0.0, 1.0),
+        gl::COLOR_CLEAR_VALUE,
+    ),
+    (
+        gl::COLOR_BUFFER_BIT,
+        |c| c.color_mask(false, true, false, true),
+        gl::COLOR_WRITEMASK,
+    ),
+    (gl::COLOR_BUFFER_BIT, |c| c.enable(gl::BLEND), gl::BLEND),
+    (
+        gl::COLOR_BUFFER_BIT,
+        |c| c.enable(gl::ALPHA_TEST),
+        gl::ALPHA_TEST,
+    ),
+    (gl::SCISSOR_BIT, |c| c.scissor(1, 1, 2, 2), gl::SCISSOR_BOX),
+    (
+        gl::SCISSOR_BIT,
+        |c| c.enable(gl::SCISSOR_TEST),
+        gl::SCISSOR_TEST,
+    ),
+    (
+        gl::STENCIL_BUFFER_BIT,
+        |c| c.clear_stencil(3),
+        gl::STENCIL_CLEAR_VALUE,
+    ),
+    (
+        gl::STENCIL_BUFFER_BIT,
+        |c| c.enable(gl::STENCIL_TEST),
+        gl::STENCIL_TEST,
+    ),
+    (gl::FOG_BIT, |c| c.enable(gl::FOG), gl::FOG),
+    (
+        gl::HINT_BIT,
+        |c| c.hint(gl::FOG_HINT, gl::NICEST),
+        gl::FOG_HINT,
+    ),
+    (
+        gl::TEXTURE_BIT,
+        |c| c.active_texture(gl::TEXTURE1),
+        gl::ACTIVE_TEXTURE,
+    ),
+    (
+        gl::TEXTURE_BIT,
+        |c| c.enable(gl::TEXTURE_2D),
+        gl::TEXTURE_2D,
+    ),
+    (gl::EVAL_BIT, |c| c.enable(gl::AUTO_NORMAL), gl::AUTO_NORMAL),
+    (
+        gl::MULTISAMPLE_BIT,
+        |c| c.disable(gl::MULTISAMPLE),
+        gl::MULTISAMPLE,
+    ),
+    (gl::LIST_BIT, |c| c.list_base(7), gl::LIST_BASE),
+];
+
+#[test]
+fn pop_attrib_restores_every_group() {
+    for &(bit, set, pname) in ROWS {
+        for mask in [bit, gl::ALL_ATTRIB_BITS] {
+            let mut c = ctx();
+            let before = get(&mut c, pname);
+            c.push_attrib(mask);
+            set(&mut c);
+            let changed = get(&mut c, pname);
+            assert_ne!(before, changed, "{pname:#x}: the setter changes nothing");
+            c.pop_attrib();
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            assert_eq!(
+                get(&mut c, pname),
+                before,
+                "{bit:#x} did not restore {pname:#x}"
+            );
+        }
+        // A group the state is not in leaves it as set (LIST_BIT holds only LIST_BASE).
+        let other = if bit == gl::LIST_BIT {
+            gl::CURRENT_BIT
+        } else {
+            gl::LIST_BIT
+        };
+        let mut c = ctx();
+        c.push_attrib(other);
+        set(&mut c);
+        let changed = get(&mut c, pname);
+        c.pop_attrib();
+        assert_eq!(
+            get(&mut c, pname),
+            changed,
+            "{other:#x} restored {pname:#x}"
+        );
+    }
+}
+
+#[test]
+fn lights_materials_and_clip_planes_come_back_whole() {
+    let mut c = ctx();
+    let initial = c.state().clone();
+    c.push_attrib(gl::LIGHTING_BIT | gl::TRANSFORM_BIT);
+    c.lightfv(gl::LIGHT2, gl::POSITION, &[1.0, 2.0, 3.0, 1.0]);
+    c.materialfv(gl::BACK, gl::SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+    c.light_modelfv(gl::LIGHT_MODEL_AMBIENT, &[0.0, 0.0, 0.0, 1.0]);
+    c.clip_plane(gl::CLIP_PLANE1, &[1.0, 0.0, 0.0, 0.5]);
+    assert_ne!(c.state(), &initial);
+    c.pop_attrib();
+    assert_eq!(c.state(), &initial);
+}
+
+#[test]
+fn matrix_stacks_are_in_no_group() {
+    let mut c = ctx();
+    c.push_attrib(gl::ALL_ATTRIB_BITS);
+    c.translatef(1.0, 2.0, 3.0);
+    c.push_matrix();
+    c.pop_attrib();
+    let m = get(&mut c, gl::MODELVIEW_MATRIX);
+    assert_eq!(&m[12..15], &[1.0, 2.0, 3.0]);
+    assert_eq!(get(&mut c, gl::MODELVIEW_STACK_DEPTH)[0], 2.0);
+}
+
+#[test]
+fn client_groups_are_restored() {
+    let mut c = ctx();
+    c.push_client_attrib(gl::CLIENT_PIXEL_STORE_BIT);
+    c.pixel_storei(gl::UNPACK_ALIGNMENT, 1);
+    c.pixel_storei(gl::PACK_ALIGNMENT, 8);
+    c.pop_client_attrib();
+    assert_eq!(get(&mut c, gl::UNPACK_ALIGNMENT)[0], 4.0);
+    assert_eq!(get(&mut c, gl::PACK_ALIGNMENT)[0], 4.0);
+    c.push_client_attrib(gl::CLIENT_VERTEX_ARRAY_BIT);
+    c.client_active_texture(gl::TEXTURE2);
+    c.pixel_storei(gl::PACK_ALIGNMENT, 8);
+    c.pop_client_attrib();
+    assert_eq!(
+        get(&mut c, gl::CLIENT_ACTIVE_TEXTURE)[0],
+        gl::TEXTURE0 as f32
+    );
+    assert_eq!(get(&mut c, gl::PACK_ALIGNMENT)[0], 8.0);
+    // The server stack does not hold client state.
+    c.push_attrib(gl::ALL_ATTRIB_BITS);
+    c.pixel_storei(gl::PACK_ALIGNMENT, 2);
+    c.pop_attrib();
+    assert_eq!(get(&mut c, gl::PACK_ALIGNMENT)[0], 2.0);
+}
+
+#[test]
+fn stacks_are_sixteen_deep() {
+    let mut c = ctx();
+    assert_eq!(get(&mut c, gl::MAX_ATTRIB_STACK_DEPTH)[0], 16.0);
+    assert_eq!(get(&mut c, gl::MAX_CLIENT_ATTRIB_STACK_DEPTH)[0], 16.0);
+    for depth in 1..=16 {
+        c.push_attrib(gl::CURRENT_BIT);
+        c.push_client_attrib(gl::CLIENT_PIXEL_STORE_BIT);
+        assert_eq!(get(&mut c, gl::ATTRIB_STACK_DEPTH)[0], depth as f32);
+        assert_eq!(get(&mut c, gl::CLIENT_ATTRIB_STACK_DEPTH)[0], depth as f32);
+    }
+    c.push_attrib(gl::CURRENT_BIT);
+    assert_eq!(c.get_error(), gl::STACK_OVERFLOW);
+    c.push_client_attrib(gl::CLIENT_PIXEL_STORE_BIT);
+    assert_eq!(c.get_error(), gl::STACK_OVERFLOW);
+    assert_eq!(get(&mut c, gl::ATTRIB_STACK_DEPTH)[0], 16.0);
+    for _ in 0..16 {
+        c.pop_attrib();
+        c.pop_client_attrib();
+    }
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    c.pop_attrib();
+    assert_eq!(c.get_error(), gl::STACK_UNDERFLOW);
+    c.pop_client_attrib();
+    assert_eq!(c.get_error(), gl::STACK_UNDERFLOW);
+    // Between Begin and End: INVALID_OPERATION, nothing pushed.
+    c.begin(gl::POINTS);
+    c.push_attrib(gl::CURRENT_BIT);
+    c.end();
+    assert_eq!(c.get_error(), gl::INVALID_OPERATION);
+    assert_eq!(get(&mut c, gl::ATTRIB_STACK_DEPTH)[0], 0.0);
+}
+
+#[test]
+fn push_attrib_is_compiled_push_client_attrib_is_not() {
+    let mut c = ctx();
+    c.new_list(1, gl::COMPILE);
+    c.push_attrib(gl::POINT_BIT);
+    c.point_size(5.0);
+    c.push_client_attrib(gl::CLIENT_PIXEL_STORE_BIT);
+    c.pop_attrib();
+    c.end_list();
+    assert_eq!(get(&mut c, gl::ATTRIB_STACK_DEPTH)[0], 0.0);
+    assert_eq!(get(&mut c, gl::CLIENT_ATTRIB_STACK_DEPTH)[0], 1.0);
+    assert_eq!(c.list_calls(1).map(<[_]>::len), Some(3));
+    c.call_list(1);
+    assert_eq!(get(&mut c, gl::POINT_SIZE)[0], 1.0);
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+}
