@@ -363,6 +363,10 @@ pub struct State {
     pub unpack_alignment: i32,
 
     pub hints: Hints,
+
+    // --- arrays (src/arrays.rs): vertex arrays (tables 6.6 to 6.8), buffer objects (§2.9)
+    pub arrays: crate::arrays::ArrayState,
+    // --- end arrays
 }
 
 impl State {
@@ -412,6 +416,9 @@ impl State {
             pack_alignment: 4,
             unpack_alignment: 4,
             hints: Hints::default(),
+            // --- arrays
+            arrays: crate::arrays::ArrayState::default(),
+            // --- end arrays
         }
     }
 

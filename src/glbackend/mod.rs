@@ -18,6 +18,9 @@ mod egl;
 mod phong;
 pub mod raw;
 mod replay;
+// --- arrays: vertex arrays and buffer objects on the driver
+mod arrays;
+// --- end arrays
 
 use std::cell::Cell;
 use std::ffi::CString;
@@ -67,6 +70,9 @@ pub struct GlBackend {
     version: String,
     egl: egl::EglContext,
     _not_send: PhantomData<*const ()>,
+    // --- arrays: the shadow array state; the driver's client pointers point into it.
+    arrays: crate::arrays::ArrayState,
+    // --- end arrays
 }
 
 impl std::fmt::Debug for GlBackend {
@@ -178,6 +184,9 @@ impl GlBackend {
             version,
             egl,
             _not_send: PhantomData,
+            // --- arrays
+            arrays: crate::arrays::ArrayState::default(),
+            // --- end arrays
         })
     }
 

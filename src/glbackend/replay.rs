@@ -254,6 +254,27 @@ impl GlBackend {
             Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
+            // --- arrays (glbackend/arrays.rs: validated on a shadow state first)
+            Call::EnableClientState(..)
+            | Call::DisableClientState(..)
+            | Call::VertexPointer(..)
+            | Call::NormalPointer(..)
+            | Call::ColorPointer(..)
+            | Call::SecondaryColorPointer(..)
+            | Call::TexCoordPointer(..)
+            | Call::FogCoordPointer(..)
+            | Call::EdgeFlagPointer(..)
+            | Call::InterleavedArrays(..)
+            | Call::ArrayElement(..)
+            | Call::DrawArrays(..)
+            | Call::DrawElements(..)
+            | Call::DrawRangeElements(..)
+            | Call::GenBuffers(..)
+            | Call::DeleteBuffers(..)
+            | Call::BindBuffer(..)
+            | Call::BufferData(..)
+            | Call::BufferSubData(..) => self.arrays_call(call),
+            // --- end arrays
         }
     }
 

@@ -12,6 +12,9 @@ use image::RgbaImage;
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
+// --- arrays: seed 004's VBO/EBO examples
+pub mod arrays;
+// --- end arrays
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -71,6 +74,10 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[1],
     gaussian::SCENES[2],
     gaussian::SCENES[3],
+    // --- arrays
+    arrays::SCENES[0],
+    arrays::SCENES[1],
+    // --- end arrays
 ];
 
 /// Every registered scene, in listing order.
