@@ -289,6 +289,8 @@ fn to_ron(tokens: &[Token<'_>], names: &HashMap<&str, u32>) -> Result<String, St
             Some(u64::from(v))
         } else if word.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
             && !matches!(word, "true" | "false" | "NaN" | "inf")
+            // --- arrays: the variants of a `Pointer` argument
+            && !matches!(word, "Data" | "Offset")
         {
             return Err(format!("unknown GL name `{word}`"));
         } else {
