@@ -181,7 +181,8 @@ fn interleaved_arrays_match_begin_end() {
 fn interleaved_formats_set_table_2_5() {
     const UB: u32 = gl::UNSIGNED_BYTE;
     const F: u32 = gl::FLOAT;
-    let rows: [(u32, i32, Option<(i32, u32)>, bool, i32, i32); 14] = [
+    type Row = (u32, i32, Option<(i32, u32)>, bool, i32, i32);
+    let rows: [Row; 14] = [
         (gl::V2F, 0, None, false, 2, 8),
         (gl::V3F, 0, None, false, 3, 12),
         (gl::C4UB_V2F, 0, Some((4, UB)), false, 2, 12),
