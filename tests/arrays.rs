@@ -590,3 +590,108 @@ fn recording_replays_to_the_same_image() {
         "{text}"
     );
 }
+
+/// The same recordings on the real driver (skipped, with the reason printed, without EGL).
+#[cfg(feature = "gl")]
+mod on_gl {
+    use super::*;
+    use fixedgl::compare::compare;
+    use fixedgl::glbackend::{DeviceChoice, GlBackend};
+    use std::io::Write as _;
+
+    fn backend() -> Option<GlBackend> {
+        match GlBackend::new(SIZE, SIZE, &DeviceChoice::Auto) {
+            Ok(b) => Some(b),
+            Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
+                panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
+            }
+            Err(e) => {
+                let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
+                None
+            }
+        }
+    }
+
+    #[test]
+    fn recorded_array_draws_replay_on_the_driver() {
+        let Some(mut gl) = backend() else { return };
+        let mut c = ctx();
+        c.start_recording();
+        mixed(&mut c);
+        let calls = c.stop_recording();
+        let cpu = c.to_image();
+        gl.replay(&calls);
+        // The out-of-bounds DrawArrays at the end: refused on the driver too.
+        assert_eq!(gl.get_error(), IO);
+        let img = gl.read_image();
+        let cmp = compare(&cpu, &img, 2);
+        assert!(
+            cmp.passes(0.5),
+            "{} pixels differ, max {:?}",
+            cmp.differing_pixels,
+            cmp.max_diff
+        );
+        // Replaying again as a frame (Push/PopClientAttrib) keeps the shadow in step: the same
+        // image and the same error.
+        gl.replay_frame(&calls);
+        assert_eq!(gl.get_error(), IO);
+        gl.replay(&[Call::DrawArrays(gl::TRIANGLES, 0, 3)]);
+        assert_eq!(gl.get_error(), gl::NO_ERROR);
+    }
+
+    #[test]
+    fn refused_draws_never_reach_the_driver() {
+        let Some(mut gl) = backend() else { return };
+        for &(name, setup, call, expected) in ERRORS {
+            let mut c = ctx();
+            c.start_recording();
+            setup(&mut c);
+            call(&mut c);
+            let calls = c.stop_recording();
+            // Queries are not recorded: nothing of theirs to replay.
+            if name.starts_with("Get") {
+                continue;
+            }
+            gl.replay(&calls);
+            if matches!(calls.first(), Some(Call::Begin(_)))
+                || name.contains("in Begin/End")
+                || matches!(calls.get(2), Some(Call::Begin(_)))
+            {
+                gl.replay(&[Call::End]);
+            }
+            assert_eq!(gl.get_error(), expected, "{name}");
+            // Leave the driver's client state as a fresh context's for the next row.
+            gl.replay(&[
+                Call::DisableClientState(gl::VERTEX_ARRAY),
+                Call::BindBuffer(gl::ARRAY_BUFFER, 0),
+                Call::BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0),
+            ]);
+            assert_eq!(gl.get_error(), gl::NO_ERROR, "{name}: reset");
+        }
+    }
+
+    #[test]
+    fn seed_scenes_match_the_driver() {
+        let Some(_) = backend() else { return };
+        for name in ["rect-wire", "cube-colors"] {
+            let Some(scene) = fixedgl::scenes::find(name) else {
+                panic!("{name} not registered")
+            };
+            let Ok((mut c, calls)) = scene.record(200, 200) else {
+                panic!("{name}: record")
+            };
+            let Ok(mut gl) = GlBackend::new(200, 200, &DeviceChoice::Auto) else {
+                return;
+            };
+            gl.replay(&calls);
+            assert_eq!(gl.get_error(), gl::NO_ERROR, "{name}");
+            assert_eq!(c.get_error(), gl::NO_ERROR, "{name}");
+            let cmp = compare(&c.to_image(), &gl.read_image(), scene.tolerance.channel);
+            assert!(
+                cmp.passes(scene.tolerance.max_percent),
+                "{name}: {} pixels differ",
+                cmp.differing_pixels
+            );
+        }
+    }
+}

@@ -142,6 +142,46 @@ impl GlBackend {
         Ok(())
     }
 
+    /// After `PopClientAttrib`: the shadow's client arrays and bindings return to `saved` (the
+    /// buffer objects, which are not client state, stay as they are; a binding to one deleted
+    /// since reverts to 0), and the driver is re-sent the whole array state, because the
+    /// pointers it restored may point into copies the shadow has since dropped.
+    pub(super) fn restore_client_arrays(&mut self, saved: ArrayState) {
+        let buffers = std::mem::take(&mut self.arrays.buffers);
+        let reserved = std::mem::take(&mut self.arrays.reserved);
+        let mut a = saved;
+        a.buffers = buffers;
+        a.reserved = reserved;
+        let exists = |n: u32, a: &ArrayState| n == 0 || a.buffers.contains_key(&n);
+        if !exists(a.array_buffer, &a) {
+            a.array_buffer = 0;
+        }
+        if !exists(a.element_array_buffer, &a) {
+            a.element_array_buffer = 0;
+        }
+        let names: Vec<u32> = [
+            &a.vertex,
+            &a.normal,
+            &a.color,
+            &a.secondary_color,
+            &a.fog_coord,
+            &a.edge_flag,
+        ]
+        .into_iter()
+        .chain(a.tex_coords.iter())
+        .map(|c| c.buffer)
+        .filter(|&n| !exists(n, &a))
+        .collect();
+        for n in names {
+            // Reverts every array bound to the vanished buffer, as deleting it would have.
+            a.buffers.insert(n, Default::default());
+            let _ = a.delete_buffers(1, &[n]);
+        }
+        let unit = self.client_unit();
+        self.sync_arrays(&a, unit);
+        self.arrays = a;
+    }
+
     /// Sends the shadow's whole array state to the driver: each array's buffer, format,
     /// pointer and enable, then the ARRAY_BUFFER and ELEMENT_ARRAY_BUFFER bindings and the
     /// client active unit as they were.

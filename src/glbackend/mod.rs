@@ -483,6 +483,9 @@ impl GlBackend {
     pub fn replay_frame(&mut self, calls: &[Call]) {
         self.make_current();
         let phong = self.phong;
+        // --- arrays: the client array state PopClientAttrib restores, for the shadow.
+        let saved_arrays = self.arrays.clone();
+        // --- end arrays
         // SAFETY: context current; no pointers.
         unsafe {
             self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
@@ -505,6 +508,9 @@ impl GlBackend {
             self.raw.PopClientAttrib();
             self.raw.PopAttrib();
         }
+        // --- arrays
+        self.restore_client_arrays(saved_arrays);
+        // --- end arrays
         if !phong && self.phong {
             self.phong = false;
             // SAFETY: context current.
