@@ -31,6 +31,11 @@ pub const MAX_BUFFER_SIZE: usize = 256 << 20;
 /// (Mesa's value; larger ones work too).
 pub const MAX_ELEMENTS: i32 = 3000;
 
+/// The largest stride a `*Pointer` command accepts (`MAX_VERTEX_ATTRIB_STRIDE`, GL 4.4
+/// §10.3.1). GL 2.1 sets no limit; Mesa applies this one to compatibility contexts of version
+/// 4.4 and later, so the reference driver refuses larger strides with INVALID_VALUE, and so do we.
+pub const MAX_VERTEX_ATTRIB_STRIDE: i32 = 2048;
+
 /// A GL pointer argument: the caller's bytes, or an offset into a bound buffer object.
 ///
 /// Built with `.into()` from a slice, array or `Vec` of any GL component type (copied in native
@@ -236,7 +241,8 @@ fn type_size(ty: u32) -> usize {
 }
 
 /// The checks of GL 2.1 §2.8 for a `*Pointer` call: the accepted sizes and types per array
-/// (INVALID_VALUE for a size, INVALID_ENUM for a type, INVALID_VALUE for a negative stride).
+/// (INVALID_VALUE for a stride outside 0 to [`MAX_VERTEX_ATTRIB_STRIDE`], then INVALID_ENUM for
+/// a type, then INVALID_VALUE for a size: Mesa's order).
 fn check_format(attr: Attr, size: i32, ty: u32, stride: i32) -> GlResult<()> {
     use gl::{BYTE, DOUBLE, FLOAT, INT, SHORT, UNSIGNED_BYTE, UNSIGNED_INT, UNSIGNED_SHORT};
     let (sizes, types): (&[i32], &[u32]) = match attr {
@@ -272,7 +278,7 @@ fn check_format(attr: Attr, size: i32, ty: u32, stride: i32) -> GlResult<()> {
         Attr::FogCoord => (&[1], &[FLOAT, DOUBLE]),
         Attr::EdgeFlag => (&[1], &[UNSIGNED_BYTE]),
     };
-    if stride < 0 {
+    if !(0..=MAX_VERTEX_ATTRIB_STRIDE).contains(&stride) {
         return Err(gl::INVALID_VALUE);
     }
     if !types.contains(&ty) {
@@ -493,7 +499,7 @@ impl ArrayState {
     }
 
     /// `InterleavedArrays` (GL 2.1 §2.8, table 2.5): INVALID_ENUM for a format, INVALID_VALUE
-    /// for a negative stride; then the pointers and enables of the format, on unit `unit`.
+    /// for a stride outside 0 to [`MAX_VERTEX_ATTRIB_STRIDE`]; then the pointers and enables of the format, on unit `unit`.
     pub fn interleaved_arrays(
         &mut self,
         format: u32,
@@ -502,7 +508,7 @@ impl ArrayState {
         unit: usize,
     ) -> GlResult<()> {
         let (t, c, n, v, tight) = interleaved_format(format).ok_or(gl::INVALID_ENUM)?;
-        if stride < 0 {
+        if !(0..=MAX_VERTEX_ATTRIB_STRIDE).contains(&stride) {
             return Err(gl::INVALID_VALUE);
         }
         if self.array_buffer != 0 && matches!(pointer, Pointer::Data(_)) {

@@ -86,14 +86,17 @@ impl GlBackend {
                 return Ok(());
             }
             Call::DrawArrays(mode, first, count) => {
-                if a.check_draw_arrays(mode, first, count)?.is_some() {
+                // With no array enabled there is nothing to read and nothing to draw.
+                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources().is_empty() {
                     self.before_begin();
                     unsafe { self.raw.DrawArrays(mode, first, count) };
                 }
                 return Ok(());
             }
             Call::DrawElements(mode, count, ty, ref p) => {
-                if a.check_draw_elements(mode, count, ty, p, None)?.is_some() {
+                if a.check_draw_elements(mode, count, ty, p, None)?.is_some()
+                    && !a.sources().is_empty()
+                {
                     self.before_begin();
                     unsafe { self.raw.DrawElements(mode, count, ty, ptr(p)) };
                 }
