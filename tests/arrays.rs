@@ -311,6 +311,46 @@ fn integer_arrays_convert_as_immediate_mode() {
 }
 
 #[test]
+fn normal_and_edge_flag_arrays_match_immediate_mode() {
+    // A lit quad fan with BYTE normals (normalised by table 2.9) and an edge flag per vertex,
+    // drawn filled and in LINE mode (where a false edge flag hides the edge it starts).
+    let pos: [f32; 12] = [
+        -0.8, -0.8, 0.0, 0.8, -0.7, 0.0, 0.7, 0.8, 0.0, -0.6, 0.6, 0.0,
+    ];
+    let nrm: [i8; 12] = [0, 0, 127, 60, 0, 100, -40, 40, 100, 0, -127, 20];
+    let edge = [true, false, true, true];
+    for mode in [gl::FILL, gl::LINE] {
+        let setup = |c: &mut Context| {
+            c.enable(gl::LIGHTING);
+            c.enable(gl::LIGHT0);
+            c.lightfv(gl::LIGHT0, gl::POSITION, &[0.3, 0.2, 1.0, 0.0]);
+            c.polygon_mode(gl::FRONT_AND_BACK, mode);
+        };
+        let mut c = ctx();
+        setup(&mut c);
+        c.vertex_pointer(3, gl::FLOAT, 0, &pos);
+        c.normal_pointer(gl::BYTE, 0, &nrm);
+        c.edge_flag_pointer(0, &edge);
+        for cap in [gl::VERTEX_ARRAY, gl::NORMAL_ARRAY, gl::EDGE_FLAG_ARRAY] {
+            c.enable_client_state(cap);
+        }
+        c.draw_arrays(gl::POLYGON, 0, 4);
+        let mut r = ctx();
+        setup(&mut r);
+        r.begin(gl::POLYGON);
+        for i in 0..4 {
+            r.edge_flag(edge[i]);
+            r.normal3b(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+            r.vertex3f(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
+        }
+        r.end();
+        let a = image(&mut c);
+        assert_eq!(a, image(&mut r), "mode {mode:#x}");
+        assert!(a.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count() > 100);
+    }
+}
+
+#[test]
 fn queries_report_the_state_tables() {
     let mut c = ctx();
     let geti = |c: &mut Context, p: u32| {

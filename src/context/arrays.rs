@@ -45,29 +45,30 @@ impl Context {
     }
 
     /// `glVertexPointer`: size 2, 3 or 4 (else INVALID_VALUE); SHORT, INT, FLOAT or DOUBLE
-    /// (else INVALID_ENUM); stride ≥ 0 (else INVALID_VALUE). `pointer`: the caller's data
+    /// (else INVALID_ENUM); stride 0 to 2048 (else INVALID_VALUE; the upper bound is the
+    /// reference driver's, see [`crate::arrays::MAX_VERTEX_ATTRIB_STRIDE`]). `pointer`: the caller's data
     /// (`&[f32]`, `&[i16; N]`, `&Vec<f64>`, ... copied now) or, with a buffer bound to
     /// ARRAY_BUFFER, a byte offset (`0usize`); client data with a buffer bound is
     /// INVALID_OPERATION.
     pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::VertexPointer(size, ty, stride, p.clone()));
         self.arrays_do(|a, _| a.pointer(Attr::Vertex, size, ty, stride, &p));
-        record!(self, Call::VertexPointer(size, ty, stride, p));
     }
 
     /// `glNormalPointer`: BYTE, SHORT, INT, FLOAT or DOUBLE; otherwise as `vertex_pointer`.
     pub fn normal_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::NormalPointer(ty, stride, p.clone()));
         self.arrays_do(|a, _| a.pointer(Attr::Normal, 3, ty, stride, &p));
-        record!(self, Call::NormalPointer(ty, stride, p));
     }
 
     /// `glColorPointer`: size 3 or 4; any of the eight integer and float types (integers
     /// normalised by GL 2.1 table 2.9); otherwise as `vertex_pointer`.
     pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::ColorPointer(size, ty, stride, p.clone()));
         self.arrays_do(|a, _| a.pointer(Attr::Color, size, ty, stride, &p));
-        record!(self, Call::ColorPointer(size, ty, stride, p));
     }
 
     /// `glSecondaryColorPointer`: size 3; types as `color_pointer`.
@@ -79,8 +80,11 @@ impl Context {
         pointer: impl Into<Pointer>,
     ) {
         let p = pointer.into();
+        record!(
+            self,
+            Call::SecondaryColorPointer(size, ty, stride, p.clone())
+        );
         self.arrays_do(|a, _| a.pointer(Attr::SecondaryColor, size, ty, stride, &p));
-        record!(self, Call::SecondaryColorPointer(size, ty, stride, p));
     }
 
     /// `glTexCoordPointer`, for the client active texture unit: size 1 to 4; SHORT, INT, FLOAT
@@ -93,31 +97,31 @@ impl Context {
         pointer: impl Into<Pointer>,
     ) {
         let p = pointer.into();
+        record!(self, Call::TexCoordPointer(size, ty, stride, p.clone()));
         self.arrays_do(|a, u| a.pointer(Attr::TexCoord(u), size, ty, stride, &p));
-        record!(self, Call::TexCoordPointer(size, ty, stride, p));
     }
 
     /// `glFogCoordPointer`: FLOAT or DOUBLE.
     pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::FogCoordPointer(ty, stride, p.clone()));
         self.arrays_do(|a, _| a.pointer(Attr::FogCoord, 1, ty, stride, &p));
-        record!(self, Call::FogCoordPointer(ty, stride, p));
     }
 
     /// `glEdgeFlagPointer`: one GLboolean (byte) per element (`&[bool]` or `&[u8]`).
     pub fn edge_flag_pointer(&mut self, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::EdgeFlagPointer(stride, p.clone()));
         self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
-        record!(self, Call::EdgeFlagPointer(stride, p));
     }
 
     /// `glInterleavedArrays` (GL 2.1 §2.8, table 2.5): one of the 14 formats (else
-    /// INVALID_ENUM), stride ≥ 0 (else INVALID_VALUE); sets and enables the format's arrays
+    /// INVALID_ENUM), stride 0 to 2048 (else INVALID_VALUE); sets and enables the format's arrays
     /// (texture coordinates on the client active unit) and disables the others.
     pub fn interleaved_arrays(&mut self, format: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
+        record!(self, Call::InterleavedArrays(format, stride, p.clone()));
         self.arrays_do(|a, u| a.interleaved_arrays(format, stride, &p, u));
-        record!(self, Call::InterleavedArrays(format, stride, p));
     }
 
     /// `glArrayElement(i)` (GL 2.1 §2.8): the current attributes from element `i` of every
@@ -154,8 +158,8 @@ impl Context {
     /// data while an element buffer is bound), or when an enabled array lacks an indexed element.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: impl Into<Pointer>) {
         let p = indices.into();
+        record!(self, Call::DrawElements(mode, count, ty, p.clone()));
         self.draw_indexed(mode, count, ty, &p, None);
-        record!(self, Call::DrawElements(mode, count, ty, p));
     }
 
     /// `glDrawRangeElements`: as `draw_elements`, and INVALID_VALUE when `end < start`.
@@ -170,11 +174,11 @@ impl Context {
         indices: impl Into<Pointer>,
     ) {
         let p = indices.into();
-        self.draw_indexed(mode, count, ty, &p, Some((start, end)));
         record!(
             self,
-            Call::DrawRangeElements(mode, start, end, count, ty, p)
+            Call::DrawRangeElements(mode, start, end, count, ty, p.clone())
         );
+        self.draw_indexed(mode, count, ty, &p, Some((start, end)));
     }
 
     fn draw_indexed(&mut self, mode: u32, count: i32, ty: u32, p: &Pointer, r: Option<(u32, u32)>) {
@@ -277,8 +281,8 @@ impl Context {
     /// no buffer bound, OUT_OF_MEMORY past [`crate::arrays::MAX_BUFFER_SIZE`] without data.
     pub fn buffer_data(&mut self, target: u32, size: isize, data: impl Into<Pointer>, usage: u32) {
         let p = data.into();
+        record!(self, Call::BufferData(target, size, p.clone(), usage));
         self.arrays_do(|a, _| a.buffer_data(target, size, &p, usage));
-        record!(self, Call::BufferData(target, size, p, usage));
     }
 
     /// `glBufferSubData`: INVALID_VALUE when `offset` or `size` is negative, the range passes
@@ -291,8 +295,8 @@ impl Context {
         data: impl Into<Pointer>,
     ) {
         let p = data.into();
+        record!(self, Call::BufferSubData(target, offset, size, p.clone()));
         self.arrays_do(|a, _| a.buffer_sub_data(target, offset, size, &p));
-        record!(self, Call::BufferSubData(target, offset, size, p));
     }
 
     /// `glGetBufferSubData` into `data` (a query: not recorded); errors as `buffer_sub_data`.
