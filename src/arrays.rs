@@ -17,6 +17,35 @@
 //! client pointer given while a buffer is bound (GL would take it as an offset) and a
 //! DrawElements whose index data is too short. Nothing allocates more than the caller supplied,
 //! except `BufferData` with no data, which is capped at [`MAX_BUFFER_SIZE`] (OUT_OF_MEMORY past it).
+//!
+//! Seed 004's VBO/EBO code ports line by line:
+//!
+//! ```
+//! use fixedgl::{gl, Context, Pointer};
+//! let mut ctx = Context::new(64, 64)?;
+//! let vertices: [f32; 8] = [0.5, 0.5, 0.5, -0.5, -0.5, -0.5, -0.5, 0.5];
+//! let indices: [u8; 6] = [0, 1, 3, 1, 2, 3];
+//! let mut vbo = [0];
+//! ctx.gen_buffers(1, &mut vbo);
+//! ctx.bind_buffer(gl::ARRAY_BUFFER, vbo[0]);
+//! ctx.buffer_data(gl::ARRAY_BUFFER, 32, &vertices, gl::STATIC_DRAW);
+//! let mut ebo = [0];
+//! ctx.gen_buffers(1, &mut ebo);
+//! ctx.bind_buffer(gl::ELEMENT_ARRAY_BUFFER, ebo[0]);
+//! ctx.buffer_data(gl::ELEMENT_ARRAY_BUFFER, 6, &indices, gl::STATIC_DRAW);
+//! ctx.vertex_pointer(2, gl::FLOAT, 2 * 4, Pointer::NULL); // offset None
+//! ctx.enable_client_state(gl::VERTEX_ARRAY);
+//! ctx.polygon_mode(gl::FRONT_AND_BACK, gl::LINE);
+//! ctx.draw_elements(gl::TRIANGLES, 6, gl::UNSIGNED_BYTE, Pointer::NULL);
+//! assert_eq!(ctx.get_error(), gl::NO_ERROR);
+//! // Without buffers, the same arrays as client memory (copied at the call):
+//! ctx.bind_buffer(gl::ARRAY_BUFFER, 0);
+//! ctx.bind_buffer(gl::ELEMENT_ARRAY_BUFFER, 0);
+//! ctx.vertex_pointer(2, gl::FLOAT, 0, &vertices);
+//! ctx.draw_elements(gl::TRIANGLES, 6, gl::UNSIGNED_BYTE, &indices);
+//! assert_eq!(ctx.get_error(), gl::NO_ERROR);
+//! # Ok::<(), fixedgl::Error>(())
+//! ```
 
 use std::collections::{BTreeMap, BTreeSet};
 

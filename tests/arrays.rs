@@ -409,6 +409,12 @@ fn queries_report_the_state_tables() {
     assert!(c.is_enabled(gl::TEXTURE_COORD_ARRAY));
     assert!(c.is_enabled(gl::NORMAL_ARRAY));
     assert!(!c.is_enabled(gl::VERTEX_ARRAY));
+    assert_eq!(
+        c.get_pointerv(gl::TEXTURE_COORD_ARRAY_POINTER),
+        Pointer::Data(vec![0; 16])
+    );
+    assert_eq!(c.get_pointerv(gl::VERTEX_ARRAY_SIZE), Pointer::NULL);
+    assert_eq!(c.get_error(), IE);
     // Unit 0's texture coordinate array is untouched.
     c.client_active_texture(gl::TEXTURE0);
     assert_eq!(geti(&mut c, gl::TEXTURE_COORD_ARRAY_SIZE), 4);

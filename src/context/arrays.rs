@@ -334,4 +334,33 @@ impl Context {
             Err(code) => self.error(code),
         }
     }
+
+    /// `glGetPointerv`: the pointer of VERTEX_ARRAY_POINTER, NORMAL_ARRAY_POINTER,
+    /// COLOR_ARRAY_POINTER, SECONDARY_COLOR_ARRAY_POINTER, FOG_COORD_ARRAY_POINTER,
+    /// EDGE_FLAG_ARRAY_POINTER or TEXTURE_COORD_ARRAY_POINTER (client active unit): the bytes
+    /// the context holds, or the offset. INVALID_ENUM (and [`Pointer::NULL`]) for another pname.
+    pub fn get_pointerv(&mut self, pname: u32) -> Pointer {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return Pointer::NULL;
+        }
+        let a = &self.state.arrays;
+        let array = match pname {
+            gl::VERTEX_ARRAY_POINTER => Some(&a.vertex),
+            gl::NORMAL_ARRAY_POINTER => Some(&a.normal),
+            gl::COLOR_ARRAY_POINTER => Some(&a.color),
+            gl::SECONDARY_COLOR_ARRAY_POINTER => Some(&a.secondary_color),
+            gl::FOG_COORD_ARRAY_POINTER => Some(&a.fog_coord),
+            gl::EDGE_FLAG_ARRAY_POINTER => Some(&a.edge_flag),
+            gl::TEXTURE_COORD_ARRAY_POINTER => a.tex_coords.get(self.state.client_active_texture),
+            _ => None,
+        };
+        match array {
+            Some(arr) => arr.pointer.clone(),
+            None => {
+                self.error(gl::INVALID_ENUM);
+                Pointer::NULL
+            }
+        }
+    }
 }
