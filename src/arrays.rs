@@ -381,8 +381,8 @@ impl Source<'_> {
         let base = i.checked_mul(self.stride)?;
         let mut out = [0.0, 0.0, 0.0, 1.0];
         for (c, slot) in out.iter_mut().enumerate().take(self.size) {
-            let o = base + c * cs;
-            let b = self.bytes.get(o..o + cs)?;
+            let o = base.checked_add(c * cs)?;
+            let b = self.bytes.get(o..o.checked_add(cs)?)?;
             *slot = decode(b, self.ty, normalized)?;
         }
         Some(out)
@@ -687,7 +687,7 @@ impl ArrayState {
         if count == 0 {
             return Ok(None);
         }
-        let last = first + (count - 1);
+        let last = first.checked_add(count - 1).ok_or(gl::INVALID_OPERATION)?;
         self.check_reads(last)?;
         Ok(Some(first..=last))
     }
@@ -926,5 +926,78 @@ impl ArrayState {
             gl::BUFFER_ACCESS => gl::READ_WRITE as i32,
             _ => 0,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Expected values by hand: bytes in native order, table 2.9 for normalised types.
+    #[test]
+    fn fetch_decodes_each_type() {
+        let mut a = ArrayState::default();
+        let bytes: Pointer = (&[255u8, 0, 51, 7]).into();
+        assert_eq!(
+            a.pointer(Attr::Color, 3, gl::UNSIGNED_BYTE, 4, &bytes),
+            Ok(())
+        );
+        a.color.enabled = true;
+        let s = a.sources();
+        let src = s.first().copied();
+        // 4 bytes, element size 3, stride 4: one whole element.
+        assert_eq!(src.map(|s| s.count), Some(1));
+        assert_eq!(src.and_then(|s| s.fetch(0)), Some([1.0, 0.0, 0.2, 1.0]));
+        assert_eq!(src.and_then(|s| s.fetch(1)), None);
+        assert_eq!(src.and_then(|s| s.fetch(usize::MAX)), None);
+        // Signed normals: (2c + 1) / (2^16 - 1); vertices unnormalised.
+        let n: Pointer = (&[32767i16, -32768, 0]).into();
+        assert_eq!(a.pointer(Attr::Normal, 3, gl::SHORT, 0, &n), Ok(()));
+        let v: Pointer = (&[-3i32, 9]).into();
+        assert_eq!(a.pointer(Attr::Vertex, 2, gl::INT, 0, &v), Ok(()));
+        a.normal.enabled = true;
+        a.vertex.enabled = true;
+        let s = a.sources();
+        let got: Vec<_> = s.iter().map(|s| (s.attr, s.fetch(0))).collect();
+        assert_eq!(
+            got,
+            vec![
+                (Attr::Color, Some([1.0, 0.0, 0.2, 1.0])),
+                (
+                    Attr::Normal,
+                    Some([1.0, -1.0, (1.0 / 65535.0f64) as f32, 1.0])
+                ),
+                (Attr::Vertex, Some([-3.0, 9.0, 0.0, 1.0])),
+            ]
+        );
+    }
+
+    #[test]
+    fn counts_follow_stride_and_offset() {
+        let mut a = ArrayState::default();
+        assert_eq!(a.bind_buffer(gl::ARRAY_BUFFER, 3), Ok(()));
+        // 100 bytes; from offset 8, 92 bytes: elements of 12 bytes every 20: (92-12)/20+1 = 5.
+        assert_eq!(
+            a.buffer_data(gl::ARRAY_BUFFER, 100, &Pointer::NULL, gl::STATIC_DRAW),
+            Ok(())
+        );
+        assert_eq!(
+            a.pointer(Attr::Vertex, 3, gl::FLOAT, 20, &Pointer::Offset(8)),
+            Ok(())
+        );
+        a.vertex.enabled = true;
+        assert_eq!(a.sources().first().map(|s| s.count), Some(5));
+        assert_eq!(a.check_reads(4), Ok(()));
+        assert_eq!(a.check_reads(5), Err(gl::INVALID_OPERATION));
+        // An offset past the end holds nothing.
+        assert_eq!(
+            a.pointer(Attr::Vertex, 3, gl::FLOAT, 0, &Pointer::Offset(usize::MAX)),
+            Ok(())
+        );
+        assert_eq!(a.sources().first().map(|s| s.count), Some(0));
+        assert_eq!(
+            a.check_draw_arrays(gl::POINTS, i32::MAX, i32::MAX),
+            Err(gl::INVALID_OPERATION)
+        );
     }
 }
