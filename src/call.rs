@@ -18,6 +18,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::arrays::Pointer;
+
 /// One GL call with its arguments.
 #[allow(missing_docs)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -241,6 +243,32 @@ pub enum Call {
     PushClientAttrib(u32),
     PopClientAttrib,
     // --- end lists
+
+    // --- arrays (context/arrays.rs): vertex arrays (GL 2.1 §2.8) and buffer objects (§2.9).
+    // A `Pointer` holds the bytes the caller handed over, or an offset into a bound buffer.
+    EnableClientState(u32),
+    DisableClientState(u32),
+    VertexPointer(i32, u32, i32, Pointer),
+    NormalPointer(u32, i32, Pointer),
+    ColorPointer(i32, u32, i32, Pointer),
+    SecondaryColorPointer(i32, u32, i32, Pointer),
+    TexCoordPointer(i32, u32, i32, Pointer),
+    FogCoordPointer(u32, i32, Pointer),
+    EdgeFlagPointer(i32, Pointer),
+    InterleavedArrays(u32, i32, Pointer),
+    ArrayElement(i32),
+    DrawArrays(u32, i32, i32),
+    DrawElements(u32, i32, u32, Pointer),
+    /// The index pointer is boxed, as in the next two: see the module docs on size.
+    DrawRangeElements(u32, u32, u32, i32, u32, Box<Pointer>),
+    /// `GenBuffers(n, names)`: the names the call returned (empty when it failed), so that a
+    /// replay can check it gets the same ones.
+    GenBuffers(i32, Vec<u32>),
+    DeleteBuffers(i32, Vec<u32>),
+    BindBuffer(u32, u32),
+    BufferData(u32, isize, Box<Pointer>, u32),
+    BufferSubData(u32, isize, isize, Box<Pointer>),
+    // --- end arrays
 }
 
 // --- lists: which calls a display list does not hold (GL 2.1 §5.4)
@@ -265,6 +293,22 @@ impl Call {
                 | Call::ClientActiveTexture(..)
                 | Call::PushClientAttrib(..)
                 | Call::PopClientAttrib
+                // --- arrays: client state and buffer objects (GL 2.1 §5.4)
+                | Call::EnableClientState(..)
+                | Call::DisableClientState(..)
+                | Call::VertexPointer(..)
+                | Call::NormalPointer(..)
+                | Call::ColorPointer(..)
+                | Call::SecondaryColorPointer(..)
+                | Call::TexCoordPointer(..)
+                | Call::FogCoordPointer(..)
+                | Call::EdgeFlagPointer(..)
+                | Call::InterleavedArrays(..)
+                | Call::GenBuffers(..)
+                | Call::DeleteBuffers(..)
+                | Call::BindBuffer(..)
+                | Call::BufferData(..)
+                | Call::BufferSubData(..)
         )
     }
 }

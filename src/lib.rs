@@ -37,3 +37,8 @@ pub mod compare;
 pub mod glbackend;
 pub mod report;
 pub mod scenes;
+
+// --- arrays: vertex arrays and buffer objects (arrays.rs)
+pub mod arrays;
+pub use arrays::Pointer;
+// --- end arrays

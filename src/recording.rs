@@ -57,7 +57,14 @@ enum Kind {
 fn arg_kinds(variant: &str) -> &'static [Kind] {
     use Kind::{Blend, ClearBits, Enum, Plain, Prim};
     match variant {
-        "Begin" | "DrawArrays" | "DrawRangeElements" => &[Prim],
+        "Begin" | "DrawArrays" => &[Prim],
+        // --- arrays
+        "DrawRangeElements" => &[Prim, Plain, Plain, Plain, Enum],
+        "NormalPointer" | "FogCoordPointer" | "InterleavedArrays" | "BindBuffer"
+        | "BufferSubData" => &[Enum],
+        "SecondaryColorPointer" => &[Plain, Enum],
+        "BufferData" => &[Enum, Plain, Plain, Enum],
+        // --- end arrays
         "DrawElements" => &[Prim, Plain, Enum],
         "Clear" => &[ClearBits],
         "BlendFunc" => &[Blend, Blend],
@@ -96,7 +103,7 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         | "TexEnviv" | "TexEnvfv" | "TexParameteri" | "TexParameterf" | "TexParameteriv"
         | "TexParameterfv" => &[Enum, Enum],
         "StencilOp" => &[Enum, Enum, Enum],
-        "VertexPointer" | "NormalPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
+        "VertexPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
         // --- lists
         "NewList" | "CallLists" => &[Plain, Enum],
         // --- end lists
@@ -285,6 +292,8 @@ fn to_ron(tokens: &[Token<'_>], names: &HashMap<&str, u32>) -> Result<String, St
             Some(u64::from(v))
         } else if word.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
             && !matches!(word, "true" | "false" | "NaN" | "inf")
+            // --- arrays: the variants of a `Pointer` argument
+            && !matches!(word, "Data" | "Offset")
         {
             return Err(format!("unknown GL name `{word}`"));
         } else {

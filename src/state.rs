@@ -368,6 +368,9 @@ pub struct State {
     /// LIST_BASE.
     pub list_base: u32,
     // --- end lists
+    // --- arrays (src/arrays.rs): vertex arrays (tables 6.6 to 6.8), buffer objects (§2.9)
+    pub arrays: crate::arrays::ArrayState,
+    // --- end arrays
 }
 
 impl State {
@@ -420,6 +423,9 @@ impl State {
             // --- lists
             list_base: 0,
             // --- end lists
+            // --- arrays
+            arrays: crate::arrays::ArrayState::default(),
+            // --- end arrays
         }
     }
 

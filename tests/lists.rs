@@ -293,3 +293,55 @@ fn a_recording_holds_call_list_and_replays_the_same() {
     assert_eq!(r.state(), c.state());
     assert_eq!(r.to_image(), c.to_image());
 }
+
+/// GL 2.1 §5.4: a vertex-array draw compiled into a display list captures the array data at
+/// compile time. A triangle in the left half is compiled; then the vertex array is repointed at a
+/// triangle in the right half before the list runs. The list must still draw the left one —
+/// exactly what drawing it immediately draws — and the driver must agree.
+#[test]
+fn compiled_draw_arrays_keeps_the_arrays_of_compile_time() {
+    let left: [f32; 6] = [-0.9, -0.9, -0.1, -0.9, -0.5, 0.9];
+    let right: [f32; 6] = [0.1, -0.9, 0.9, -0.9, 0.5, 0.9];
+    let colours: [u8; 12] = [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255];
+    let setup = |c: &mut Context, verts: &[f32; 6]| {
+        c.enable_client_state(gl::VERTEX_ARRAY);
+        c.enable_client_state(gl::COLOR_ARRAY);
+        c.vertex_pointer(2, gl::FLOAT, 0, verts);
+        c.color_pointer(4, gl::UNSIGNED_BYTE, 0, &colours);
+    };
+
+    let mut listed = Context::new(64, 64).expect("context");
+    listed.start_recording();
+    setup(&mut listed, &left);
+    listed.new_list(1, gl::COMPILE);
+    listed.draw_arrays(gl::TRIANGLES, 0, 3);
+    listed.end_list();
+    listed.vertex_pointer(2, gl::FLOAT, 0, &right);
+    listed.call_list(1);
+    assert_eq!(listed.get_error(), gl::NO_ERROR);
+    let calls = listed.stop_recording();
+    let got = listed.to_image();
+
+    let mut direct = Context::new(64, 64).expect("context");
+    setup(&mut direct, &left);
+    direct.draw_arrays(gl::TRIANGLES, 0, 3);
+    let want = direct.to_image();
+    assert!(
+        want.pixels().filter(|p| p.0[3] != 0).count() > 300,
+        "the triangle is drawn"
+    );
+    assert_eq!(
+        got.as_raw(),
+        want.as_raw(),
+        "the list drew the arrays of call time"
+    );
+
+    #[cfg(feature = "gl")]
+    if let Some(mut driver) = fixedgl::glbackend::test_backend(64, 64) {
+        driver.replay(&calls);
+        driver.finish();
+        assert_eq!(driver.get_error(), gl::NO_ERROR);
+        let c = fixedgl::compare::compare(&got, &driver.read_image(), 2);
+        assert_eq!(c.differing_pixels, 0, "{c}");
+    }
+}

@@ -40,10 +40,16 @@ fn allowed_inside(call: &Call) -> bool {
         "Material",
         "End",
         "CallList",
+        // --- arrays
+        "ArrayElement",
     ]
     .iter()
     .any(|p| {
-        name.starts_with(p) && !name.starts_with("ColorMaterial") && !name.starts_with("ColorMask")
+        name.starts_with(p)
+            && !name.starts_with("ColorMaterial")
+            && !name.starts_with("ColorMask")
+            // --- arrays: the *Pointer commands are not allowed inside.
+            && !name.contains("Pointer(")
     })
 }
 

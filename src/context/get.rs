@@ -231,6 +231,48 @@ impl Context {
                 i(super::MAX_ATTRIB_STACK_DEPTH as i32)
             }
             // --- end lists
+            // --- arrays: client arrays (tables 6.6 to 6.8) and buffer bindings (GL 2.1 §2.9).
+            gl::VERTEX_ARRAY
+            | gl::NORMAL_ARRAY
+            | gl::COLOR_ARRAY
+            | gl::SECONDARY_COLOR_ARRAY
+            | gl::FOG_COORD_ARRAY
+            | gl::EDGE_FLAG_ARRAY
+            | gl::TEXTURE_COORD_ARRAY => b(s.arrays.enabled(pname, s.client_active_texture)?),
+            gl::VERTEX_ARRAY_SIZE => i(s.arrays.vertex.size),
+            gl::VERTEX_ARRAY_TYPE => e(s.arrays.vertex.ty),
+            gl::VERTEX_ARRAY_STRIDE => i(s.arrays.vertex.stride),
+            gl::VERTEX_ARRAY_BUFFER_BINDING => e(s.arrays.vertex.buffer),
+            gl::NORMAL_ARRAY_TYPE => e(s.arrays.normal.ty),
+            gl::NORMAL_ARRAY_STRIDE => i(s.arrays.normal.stride),
+            gl::NORMAL_ARRAY_BUFFER_BINDING => e(s.arrays.normal.buffer),
+            gl::COLOR_ARRAY_SIZE => i(s.arrays.color.size),
+            gl::COLOR_ARRAY_TYPE => e(s.arrays.color.ty),
+            gl::COLOR_ARRAY_STRIDE => i(s.arrays.color.stride),
+            gl::COLOR_ARRAY_BUFFER_BINDING => e(s.arrays.color.buffer),
+            gl::SECONDARY_COLOR_ARRAY_SIZE => i(s.arrays.secondary_color.size),
+            gl::SECONDARY_COLOR_ARRAY_TYPE => e(s.arrays.secondary_color.ty),
+            gl::SECONDARY_COLOR_ARRAY_STRIDE => i(s.arrays.secondary_color.stride),
+            gl::SECONDARY_COLOR_ARRAY_BUFFER_BINDING => e(s.arrays.secondary_color.buffer),
+            gl::FOG_COORD_ARRAY_TYPE => e(s.arrays.fog_coord.ty),
+            gl::FOG_COORD_ARRAY_STRIDE => i(s.arrays.fog_coord.stride),
+            gl::FOG_COORD_ARRAY_BUFFER_BINDING => e(s.arrays.fog_coord.buffer),
+            gl::EDGE_FLAG_ARRAY_STRIDE => i(s.arrays.edge_flag.stride),
+            gl::EDGE_FLAG_ARRAY_BUFFER_BINDING => e(s.arrays.edge_flag.buffer),
+            gl::TEXTURE_COORD_ARRAY_SIZE => {
+                i(s.arrays.tex_coords.get(s.client_active_texture)?.size)
+            }
+            gl::TEXTURE_COORD_ARRAY_TYPE => e(s.arrays.tex_coords.get(s.client_active_texture)?.ty),
+            gl::TEXTURE_COORD_ARRAY_STRIDE => {
+                i(s.arrays.tex_coords.get(s.client_active_texture)?.stride)
+            }
+            gl::TEXTURE_COORD_ARRAY_BUFFER_BINDING => {
+                e(s.arrays.tex_coords.get(s.client_active_texture)?.buffer)
+            }
+            gl::ARRAY_BUFFER_BINDING => e(s.arrays.array_buffer),
+            gl::ELEMENT_ARRAY_BUFFER_BINDING => e(s.arrays.element_array_buffer),
+            gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => i(crate::arrays::MAX_ELEMENTS),
+            // --- end arrays
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)

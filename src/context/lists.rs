@@ -150,12 +150,20 @@ impl Context {
     /// Appends `call` to the recording and to the list being compiled, as the `record!` macro
     /// does; returns true when the command must not be executed now (COMPILE mode).
     pub(crate) fn capture(&mut self, call: Call) -> bool {
-        match self.lists.compiling.as_mut() {
-            Some(list) if !call.executes_immediately() => {
+        match self.lists.compiling.as_ref() {
+            Some(_) if !call.executes_immediately() => {
                 if let Some(rec) = self.recording.as_mut() {
                     rec.push(call.clone());
                 }
-                list.calls.push(call);
+                // A vertex-array draw compiles into the data it reads now (GL 2.1 §5.4).
+                let compiled = self.compile_draw(&call);
+                let Some(list) = self.lists.compiling.as_mut() else {
+                    return false;
+                };
+                match compiled {
+                    Some(calls) => list.calls.extend(calls),
+                    None => list.calls.push(call),
+                }
                 list.mode == gl::COMPILE
             }
             _ => {

@@ -215,6 +215,12 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return false;
         }
+        // --- arrays: the client states (GL 2.1 §2.8) are IsEnabled caps, not Enable caps.
+        let unit = self.state.client_active_texture;
+        if let Some(on) = self.state.arrays.enabled(cap, unit) {
+            return on;
+        }
+        // --- end arrays
         match self.state.cap_mut(cap) {
             Some(flag) => *flag,
             None => {
@@ -432,6 +438,35 @@ impl Context {
             Call::PushClientAttrib(a) => self.push_client_attrib(a),
             Call::PopClientAttrib => self.pop_client_attrib(),
             // --- end lists
+            // --- arrays (context/arrays.rs)
+            Call::EnableClientState(a) => self.enable_client_state(a),
+            Call::DisableClientState(a) => self.disable_client_state(a),
+            Call::VertexPointer(a, b, c, ref p) => self.vertex_pointer(a, b, c, p.clone()),
+            Call::NormalPointer(a, b, ref p) => self.normal_pointer(a, b, p.clone()),
+            Call::ColorPointer(a, b, c, ref p) => self.color_pointer(a, b, c, p.clone()),
+            Call::SecondaryColorPointer(a, b, c, ref p) => {
+                self.secondary_color_pointer(a, b, c, p.clone())
+            }
+            Call::TexCoordPointer(a, b, c, ref p) => self.tex_coord_pointer(a, b, c, p.clone()),
+            Call::FogCoordPointer(a, b, ref p) => self.fog_coord_pointer(a, b, p.clone()),
+            Call::EdgeFlagPointer(a, ref p) => self.edge_flag_pointer(a, p.clone()),
+            Call::InterleavedArrays(a, b, ref p) => self.interleaved_arrays(a, b, p.clone()),
+            Call::ArrayElement(i) => self.array_element(i),
+            Call::DrawArrays(a, b, c) => self.draw_arrays(a, b, c),
+            Call::DrawElements(a, b, c, ref p) => self.draw_elements(a, b, c, p.clone()),
+            Call::DrawRangeElements(a, b, c, d, e, ref p) => {
+                self.draw_range_elements(a, b, c, d, e, (**p).clone())
+            }
+            Call::GenBuffers(n, ref names) => {
+                // The names the recorded call got, if it succeeded; room for as many.
+                let mut out = vec![0; names.len()];
+                self.gen_buffers(n, &mut out);
+            }
+            Call::DeleteBuffers(n, ref names) => self.delete_buffers(n, names),
+            Call::BindBuffer(a, b) => self.bind_buffer(a, b),
+            Call::BufferData(a, b, ref p, d) => self.buffer_data(a, b, (**p).clone(), d),
+            Call::BufferSubData(a, b, c, ref p) => self.buffer_sub_data(a, b, c, (**p).clone()),
+            // --- end arrays
         }
     }
 
@@ -498,6 +533,10 @@ impl State {
         })
     }
 }
+
+// --- arrays: vertex arrays and buffer objects (context/arrays.rs)
+mod arrays;
+// --- end arrays
 
 // --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
 mod readback;

@@ -21,6 +21,9 @@ mod lists;
 mod phong;
 pub mod raw;
 mod replay;
+// --- arrays: vertex arrays and buffer objects on the driver
+mod arrays;
+// --- end arrays
 
 use std::cell::Cell;
 use std::ffi::CString;
@@ -73,6 +76,9 @@ pub struct GlBackend {
     version: String,
     egl: egl::EglContext,
     _not_send: PhantomData<*const ()>,
+    // --- arrays: the shadow array state; the driver's client pointers point into it.
+    arrays: crate::arrays::ArrayState,
+    // --- end arrays
 }
 
 impl std::fmt::Debug for GlBackend {
@@ -211,6 +217,9 @@ impl GlBackend {
             version,
             egl,
             _not_send: PhantomData,
+            // --- arrays
+            arrays: crate::arrays::ArrayState::default(),
+            // --- end arrays
         })
     }
 
@@ -518,6 +527,9 @@ impl GlBackend {
     pub fn replay_frame(&mut self, calls: &[Call]) {
         self.make_current();
         let phong = self.phong;
+        // --- arrays: the client array state PopClientAttrib restores, for the shadow.
+        let saved_arrays = self.arrays.clone();
+        // --- end arrays
         // SAFETY: context current; no pointers.
         unsafe {
             self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
@@ -540,6 +552,9 @@ impl GlBackend {
             self.raw.PopClientAttrib();
             self.raw.PopAttrib();
         }
+        // --- arrays
+        self.restore_client_arrays(saved_arrays);
+        // --- end arrays
         if !phong && self.phong {
             self.phong = false;
             // SAFETY: context current.

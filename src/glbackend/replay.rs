@@ -274,6 +274,27 @@ impl GlBackend {
             Call::PushClientAttrib(mask) => unsafe { gl.PushClientAttrib(mask) },
             Call::PopClientAttrib => unsafe { gl.PopClientAttrib() },
             // --- end lists
+            // --- arrays (glbackend/arrays.rs: validated on a shadow state first)
+            Call::EnableClientState(..)
+            | Call::DisableClientState(..)
+            | Call::VertexPointer(..)
+            | Call::NormalPointer(..)
+            | Call::ColorPointer(..)
+            | Call::SecondaryColorPointer(..)
+            | Call::TexCoordPointer(..)
+            | Call::FogCoordPointer(..)
+            | Call::EdgeFlagPointer(..)
+            | Call::InterleavedArrays(..)
+            | Call::ArrayElement(..)
+            | Call::DrawArrays(..)
+            | Call::DrawElements(..)
+            | Call::DrawRangeElements(..)
+            | Call::GenBuffers(..)
+            | Call::DeleteBuffers(..)
+            | Call::BindBuffer(..)
+            | Call::BufferData(..)
+            | Call::BufferSubData(..) => self.arrays_call(call),
+            // --- end arrays
         }
     }
 

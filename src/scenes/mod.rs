@@ -20,6 +20,9 @@ pub mod transforms;
 // --- lists: display-list and glut-shapes scenes (scenes/lists.rs)
 pub mod lists;
 // --- end lists
+// --- arrays: seed 004's VBO/EBO examples
+pub mod arrays;
+// --- end arrays
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -97,6 +100,10 @@ static SCENES: &[Scene] = &[
     lists::SCENES[0],
     lists::SCENES[1],
     // --- end lists
+    // --- arrays
+    arrays::SCENES[0],
+    arrays::SCENES[1],
+    // --- end arrays
 ];
 
 /// Every registered scene, in listing order.

@@ -10,7 +10,14 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = 168;
+pub const VARIANTS: usize = ARRAY_BASE + ARRAY_VARIANTS;
+
+// --- arrays
+/// The first of the arrays area's variant numbers (tests that fuzz only array calls use it).
+pub const ARRAY_BASE: usize = 168;
+/// The arrays area's variants, numbered from `ARRAY_BASE`.
+pub const ARRAY_VARIANTS: usize = 19;
+// --- end arrays
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -107,6 +114,27 @@ pub const ENUMS: &[u32] = &[
     0,
     1,
     u32::MAX,
+    // --- arrays
+    gl::VERTEX_ARRAY,
+    gl::COLOR_ARRAY,
+    gl::NORMAL_ARRAY,
+    gl::TEXTURE_COORD_ARRAY,
+    gl::EDGE_FLAG_ARRAY,
+    gl::BYTE,
+    gl::UNSIGNED_BYTE,
+    gl::SHORT,
+    gl::UNSIGNED_SHORT,
+    gl::UNSIGNED_INT,
+    gl::FLOAT,
+    gl::DOUBLE,
+    gl::V3F,
+    gl::C4UB_V3F,
+    gl::T4F_C4F_N3F_V4F,
+    gl::ARRAY_BUFFER,
+    gl::ELEMENT_ARRAY_BUFFER,
+    gl::STATIC_DRAW,
+    gl::STREAM_COPY,
+    // --- end arrays
 ];
 
 /// Floats worth drawing often: range limits of the lighting parameters, and the non-finite.
@@ -376,6 +404,48 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         166 => Call::PushClientAttrib(p.e[0]),
         167 => Call::PopClientAttrib,
         // --- end lists
+        // --- arrays
+        k @ ARRAY_BASE.. if k < ARRAY_BASE + ARRAY_VARIANTS => array_call(k - ARRAY_BASE, p),
+        // --- end arrays
         _ => Call::End,
     }
 }
+
+// --- arrays
+/// A pointer argument: the pool's floats as bytes, or an offset (possibly huge).
+fn pointer(p: &Pool) -> fixedgl::Pointer {
+    if p.b[3] {
+        fixedgl::Pointer::Data(p.vf.iter().flat_map(|x| x.to_ne_bytes()).collect())
+    } else {
+        fixedgl::Pointer::Offset(p.i[3] as u32 as usize)
+    }
+}
+
+/// The arrays area's variant number `k` (declaration order) from `p`; small counts and sizes
+/// drawn often so that draws succeed as well as fail.
+#[rustfmt::skip]
+fn array_call(k: usize, p: &Pool) -> Call {
+    let small = |x: i32| if p.b[2] { x.rem_euclid(5) } else { x };
+    match k {
+        0 => Call::EnableClientState(p.e[0]),
+        1 => Call::DisableClientState(p.e[0]),
+        2 => Call::VertexPointer(small(p.i[0]), p.e[1], small(p.i[2]), pointer(p)),
+        3 => Call::NormalPointer(p.e[0], small(p.i[1]), pointer(p)),
+        4 => Call::ColorPointer(small(p.i[0]), p.e[1], small(p.i[2]), pointer(p)),
+        5 => Call::SecondaryColorPointer(small(p.i[0]), p.e[1], small(p.i[2]), pointer(p)),
+        6 => Call::TexCoordPointer(small(p.i[0]), p.e[1], small(p.i[2]), pointer(p)),
+        7 => Call::FogCoordPointer(p.e[0], small(p.i[1]), pointer(p)),
+        8 => Call::EdgeFlagPointer(small(p.i[0]), pointer(p)),
+        9 => Call::InterleavedArrays(p.e[0], small(p.i[1]), pointer(p)),
+        10 => Call::ArrayElement(small(p.i[0])),
+        11 => Call::DrawArrays(p.e[0], small(p.i[1]), small(p.i[2])),
+        12 => Call::DrawElements(p.e[0], small(p.i[1]), p.e[2], pointer(p)),
+        13 => Call::DrawRangeElements(p.e[0], p.e[1], p.e[2], small(p.i[0]), p.e[3], Box::new(pointer(p))),
+        14 => Call::GenBuffers(small(p.i[0]), p.vi.iter().map(|&x| x as u32).collect()),
+        15 => Call::DeleteBuffers(small(p.i[0]), p.vi.iter().map(|&x| x.rem_euclid(4) as u32).collect()),
+        16 => Call::BindBuffer(p.e[0], small(p.i[1]) as u32),
+        17 => Call::BufferData(p.e[0], small(p.i[1]) as isize, Box::new(pointer(p)), p.e[2]),
+        _ => Call::BufferSubData(p.e[0], small(p.i[1]) as isize, small(p.i[2]) as isize, Box::new(pointer(p))),
+    }
+}
+// --- end arrays

@@ -1,0 +1,443 @@
+//! Vertex arrays and buffer objects on the context (GL 2.1 §2.8, §2.9): the client-state
+//! commands, the draws, and buffer objects.
+//!
+//! Each method records itself, checks the Begin/End phase, and hands validation and the state
+//! change to [`ArrayState`](crate::arrays::ArrayState) (shared with the GL backend's shadow
+//! copy, which must refuse the same draws before the driver reads memory).
+//!
+//! Design decision: a draw is exactly its GL 2.1 §2.8 definition, `Begin(mode)`, then
+//! `ArrayElement(i)` for each index (current attributes set from the enabled arrays, then a
+//! vertex), then `End`, fed to the renderer like immediate mode, so the batch and vertex stage
+//! are shared. The whole draw is validated first, bounds included: an erroneous draw draws
+//! nothing and changes nothing. Only the draw is recorded, never the vertices it makes.
+
+use glam::{Vec3, Vec4};
+
+use super::Context;
+use crate::arrays::{ArrayState, Attr, GlResult, Pointer, Source};
+use crate::call::Call;
+use crate::gl;
+
+impl Context {
+    /// Runs an `ArrayState` command outside Begin/End (GL 2.1 §2.6.3), raising its error.
+    fn arrays_do(&mut self, f: impl FnOnce(&mut ArrayState, usize) -> GlResult<()>) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        let unit = self.state.client_active_texture;
+        if let Err(code) = f(&mut self.state.arrays, unit) {
+            self.error(code);
+        }
+    }
+
+    /// `glEnableClientState`: VERTEX_ARRAY, NORMAL_ARRAY, COLOR_ARRAY, SECONDARY_COLOR_ARRAY,
+    /// FOG_COORD_ARRAY, EDGE_FLAG_ARRAY, or TEXTURE_COORD_ARRAY of the client active texture
+    /// unit; INVALID_ENUM otherwise.
+    pub fn enable_client_state(&mut self, cap: u32) {
+        record!(self, Call::EnableClientState(cap));
+        self.arrays_do(|a, u| a.enable_client_state(cap, true, u));
+    }
+
+    /// `glDisableClientState`.
+    pub fn disable_client_state(&mut self, cap: u32) {
+        record!(self, Call::DisableClientState(cap));
+        self.arrays_do(|a, u| a.enable_client_state(cap, false, u));
+    }
+
+    /// `glVertexPointer`: size 2, 3 or 4 (else INVALID_VALUE); SHORT, INT, FLOAT or DOUBLE
+    /// (else INVALID_ENUM); stride 0 to 2048 (else INVALID_VALUE; the upper bound is the
+    /// reference driver's, see [`crate::arrays::MAX_VERTEX_ATTRIB_STRIDE`]). `pointer`: the caller's data
+    /// (`&[f32]`, `&[i16; N]`, `&Vec<f64>`, ... copied now) or, with a buffer bound to
+    /// ARRAY_BUFFER, a byte offset (`0usize`); client data with a buffer bound is
+    /// INVALID_OPERATION.
+    pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::VertexPointer(size, ty, stride, p.clone()));
+        self.arrays_do(|a, _| a.pointer(Attr::Vertex, size, ty, stride, &p));
+    }
+
+    /// `glNormalPointer`: BYTE, SHORT, INT, FLOAT or DOUBLE; otherwise as `vertex_pointer`.
+    pub fn normal_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::NormalPointer(ty, stride, p.clone()));
+        self.arrays_do(|a, _| a.pointer(Attr::Normal, 3, ty, stride, &p));
+    }
+
+    /// `glColorPointer`: size 3 or 4; any of the eight integer and float types (integers
+    /// normalised by GL 2.1 table 2.9); otherwise as `vertex_pointer`.
+    pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::ColorPointer(size, ty, stride, p.clone()));
+        self.arrays_do(|a, _| a.pointer(Attr::Color, size, ty, stride, &p));
+    }
+
+    /// `glSecondaryColorPointer`: size 3; types as `color_pointer`.
+    pub fn secondary_color_pointer(
+        &mut self,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        pointer: impl Into<Pointer>,
+    ) {
+        let p = pointer.into();
+        record!(
+            self,
+            Call::SecondaryColorPointer(size, ty, stride, p.clone())
+        );
+        self.arrays_do(|a, _| a.pointer(Attr::SecondaryColor, size, ty, stride, &p));
+    }
+
+    /// `glTexCoordPointer`, for the client active texture unit: size 1 to 4; SHORT, INT, FLOAT
+    /// or DOUBLE; otherwise as `vertex_pointer`.
+    pub fn tex_coord_pointer(
+        &mut self,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        pointer: impl Into<Pointer>,
+    ) {
+        let p = pointer.into();
+        record!(self, Call::TexCoordPointer(size, ty, stride, p.clone()));
+        self.arrays_do(|a, u| a.pointer(Attr::TexCoord(u), size, ty, stride, &p));
+    }
+
+    /// `glFogCoordPointer`: FLOAT or DOUBLE.
+    pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::FogCoordPointer(ty, stride, p.clone()));
+        self.arrays_do(|a, _| a.pointer(Attr::FogCoord, 1, ty, stride, &p));
+    }
+
+    /// `glEdgeFlagPointer`: one GLboolean (byte) per element (`&[bool]` or `&[u8]`).
+    pub fn edge_flag_pointer(&mut self, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::EdgeFlagPointer(stride, p.clone()));
+        self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
+    }
+
+    /// `glInterleavedArrays` (GL 2.1 §2.8, table 2.5): one of the 14 formats (else
+    /// INVALID_ENUM), stride 0 to 2048 (else INVALID_VALUE); sets and enables the format's arrays
+    /// (texture coordinates on the client active unit) and disables the others.
+    pub fn interleaved_arrays(&mut self, format: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::InterleavedArrays(format, stride, p.clone()));
+        self.arrays_do(|a, u| a.interleaved_arrays(format, stride, &p, u));
+    }
+
+    /// `glArrayElement(i)` (GL 2.1 §2.8): the current attributes from element `i` of every
+    /// enabled array, then a vertex if the vertex array is enabled. Allowed between Begin and
+    /// End. INVALID_VALUE for a negative `i` and INVALID_OPERATION when an enabled array has no
+    /// element `i` (GL leaves both undefined); nothing changes then.
+    pub fn array_element(&mut self, i: i32) {
+        record!(self, Call::ArrayElement(i));
+        match self.state.arrays.check_array_element(i) {
+            Ok(i) => self.draw(None, [i]),
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glDrawArrays`: elements `first .. first + count`. INVALID_ENUM for a mode,
+    /// INVALID_VALUE for a negative `first` or `count`, INVALID_OPERATION between Begin and End
+    /// or when an enabled array is shorter than `first + count` elements.
+    pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
+        record!(self, Call::DrawArrays(mode, first, count));
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self.state.arrays.check_draw_arrays(mode, first, count) {
+            Ok(Some(range)) => self.draw(Some(mode), range),
+            Ok(None) => {}
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glDrawElements`: `count` indices of `ty` (UNSIGNED_BYTE, UNSIGNED_SHORT or
+    /// UNSIGNED_INT, else INVALID_ENUM) from `indices` (client data, or a byte offset into the
+    /// ELEMENT_ARRAY_BUFFER). INVALID_ENUM for a mode, INVALID_VALUE for a negative `count`,
+    /// INVALID_OPERATION between Begin and End, when the index data is too short (or is client
+    /// data while an element buffer is bound), or when an enabled array lacks an indexed element.
+    pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: impl Into<Pointer>) {
+        let p = indices.into();
+        record!(self, Call::DrawElements(mode, count, ty, p.clone()));
+        self.draw_indexed(mode, count, ty, &p, None);
+    }
+
+    /// `glDrawRangeElements`: as `draw_elements`, and INVALID_VALUE when `end < start`.
+    /// Indices outside `start..=end` are drawn all the same (GL leaves them undefined).
+    pub fn draw_range_elements(
+        &mut self,
+        mode: u32,
+        start: u32,
+        end: u32,
+        count: i32,
+        ty: u32,
+        indices: impl Into<Pointer>,
+    ) {
+        let p = indices.into();
+        record!(
+            self,
+            Call::DrawRangeElements(mode, start, end, count, ty, Box::new(p.clone()))
+        );
+        self.draw_indexed(mode, count, ty, &p, Some((start, end)));
+    }
+
+    fn draw_indexed(&mut self, mode: u32, count: i32, ty: u32, p: &Pointer, r: Option<(u32, u32)>) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self.state.arrays.check_draw_elements(mode, count, ty, p, r) {
+            Ok(Some(idx)) => self.draw(Some(mode), idx.into_iter().map(|i| i as usize)),
+            Ok(None) => {}
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `Begin(mode)` (when given), ArrayElement(i) for each index, `End`; the indices are
+    /// already checked against every enabled array.
+    fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>) {
+        let arrays = std::mem::take(&mut self.state.arrays);
+        let sources = arrays.sources();
+        if !sources.is_empty() {
+            if let Some(mode) = mode {
+                self.begin_mode = Some(mode);
+                self.renderer.begin(mode);
+                self.renderer.begin_materials(&self.state.materials);
+            }
+            for i in indices {
+                self.element(&sources, i);
+            }
+            if mode.is_some() {
+                self.begin_mode = None;
+                self.renderer.end();
+                self.renderer.flush_if_large(&self.state);
+            }
+        }
+        drop(sources);
+        self.state.arrays = arrays;
+    }
+
+    /// What a vertex-array call compiles into a display list (GL 2.1 §5.4: "the array data are
+    /// resolved at compile time"): for a draw that is valid against the arrays current now,
+    /// the immediate-mode calls it amounts to — Begin, per element the enabled arrays' attribute
+    /// calls and the vertex, End — so the list keeps this data whatever the arrays hold when it
+    /// runs. `None` for any other call, and for a draw that is erroneous now: that one is
+    /// compiled as it is, to raise its error when the list runs. Texture coordinates of units
+    /// other than 0 have no immediate-mode call yet (MultiTexCoord) and are not captured.
+    pub(crate) fn compile_draw(&self, call: &Call) -> Option<Vec<Call>> {
+        let arrays = &self.state.arrays;
+        let (mode, indices): (Option<u32>, Vec<usize>) = match call {
+            Call::ArrayElement(i) => (None, vec![arrays.check_array_element(*i).ok()?]),
+            Call::DrawArrays(mode, first, count) => {
+                let range = arrays.check_draw_arrays(*mode, *first, *count).ok()?;
+                (
+                    Some(*mode),
+                    range.map(Iterator::collect).unwrap_or_default(),
+                )
+            }
+            Call::DrawElements(mode, count, ty, p) => {
+                let idx = arrays
+                    .check_draw_elements(*mode, *count, *ty, p, None)
+                    .ok()?;
+                (
+                    Some(*mode),
+                    idx.unwrap_or_default()
+                        .into_iter()
+                        .map(|i| i as usize)
+                        .collect(),
+                )
+            }
+            Call::DrawRangeElements(mode, start, end, count, ty, p) => {
+                let idx = arrays
+                    .check_draw_elements(*mode, *count, *ty, p, Some((*start, *end)))
+                    .ok()?;
+                (
+                    Some(*mode),
+                    idx.unwrap_or_default()
+                        .into_iter()
+                        .map(|i| i as usize)
+                        .collect(),
+                )
+            }
+            _ => return None,
+        };
+        let sources = arrays.sources();
+        let mut calls = Vec::new();
+        if sources.is_empty() {
+            return Some(calls);
+        }
+        calls.extend(mode.map(Call::Begin));
+        for i in indices {
+            for s in &sources {
+                let Some([x, y, z, w]) = s.fetch(i) else {
+                    continue;
+                };
+                calls.extend(match s.attr {
+                    Attr::EdgeFlag => Some(Call::EdgeFlag(x != 0.0)),
+                    Attr::TexCoord(0) => Some(Call::TexCoord4f(x, y, z, w)),
+                    Attr::TexCoord(_) => None,
+                    Attr::Color => Some(Call::Color4f(x, y, z, w)),
+                    Attr::SecondaryColor => Some(Call::SecondaryColor3f(x, y, z)),
+                    Attr::FogCoord => Some(Call::FogCoordf(x)),
+                    Attr::Normal => Some(Call::Normal3f(x, y, z)),
+                    Attr::Vertex => Some(Call::Vertex4f(x, y, z, w)),
+                });
+            }
+        }
+        calls.extend(mode.map(|_| Call::End));
+        Some(calls)
+    }
+
+    /// ArrayElement's body for an index already checked against every source.
+    fn element(&mut self, sources: &[Source<'_>], i: usize) {
+        for s in sources {
+            let Some(v) = s.fetch(i) else { continue };
+            let c = &mut self.state.current;
+            match s.attr {
+                Attr::EdgeFlag => c.edge_flag = v[0] != 0.0,
+                Attr::TexCoord(u) => {
+                    if let Some(t) = c.tex_coords.get_mut(u) {
+                        *t = Vec4::from_array(v);
+                    }
+                }
+                Attr::Color => {
+                    c.color = Vec4::from_array(v);
+                    if self.state.enables.color_material {
+                        self.track_color_material();
+                    }
+                }
+                Attr::SecondaryColor => c.secondary_color = Vec3::new(v[0], v[1], v[2]).extend(1.0),
+                Attr::FogCoord => c.fog_coord = v[0],
+                Attr::Normal => c.normal = Vec3::new(v[0], v[1], v[2]),
+                Attr::Vertex => self.vertex(Vec4::from_array(v)),
+            }
+        }
+    }
+
+    /// `glGenBuffers`: writes `n` unused names to `buffers`. INVALID_VALUE for a negative `n`
+    /// or a `buffers` shorter than `n`.
+    pub fn gen_buffers(&mut self, n: i32, buffers: &mut [u32]) {
+        let mut made = Vec::new();
+        self.arrays_do(|a, _| {
+            a.gen_buffers(n, buffers)?;
+            made = buffers.get(..n.max(0) as usize).unwrap_or(&[]).to_vec();
+            Ok(())
+        });
+        record!(self, Call::GenBuffers(n, made));
+    }
+
+    /// `glDeleteBuffers`: INVALID_VALUE for a negative `n` or fewer than `n` names.
+    pub fn delete_buffers(&mut self, n: i32, buffers: &[u32]) {
+        record!(self, Call::DeleteBuffers(n, buffers.to_vec()));
+        self.arrays_do(|a, _| a.delete_buffers(n, buffers));
+    }
+
+    /// `glIsBuffer`: whether `buffer` names a buffer object (one bound at least once).
+    pub fn is_buffer(&mut self, buffer: u32) -> bool {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return false;
+        }
+        self.state.arrays.is_buffer(buffer)
+    }
+
+    /// `glBindBuffer`: ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER (else INVALID_ENUM).
+    pub fn bind_buffer(&mut self, target: u32, buffer: u32) {
+        record!(self, Call::BindBuffer(target, buffer));
+        self.arrays_do(|a, _| a.bind_buffer(target, buffer));
+    }
+
+    /// `glBufferData`: `size` bytes from `data` (or zeros for [`Pointer::NULL`]) into the
+    /// buffer bound to `target`, replacing its store. INVALID_ENUM for a target or usage,
+    /// INVALID_VALUE for a negative size or a `data` shorter than `size`, INVALID_OPERATION with
+    /// no buffer bound, OUT_OF_MEMORY past [`crate::arrays::MAX_BUFFER_SIZE`] without data.
+    pub fn buffer_data(&mut self, target: u32, size: isize, data: impl Into<Pointer>, usage: u32) {
+        let p = data.into();
+        record!(
+            self,
+            Call::BufferData(target, size, Box::new(p.clone()), usage)
+        );
+        self.arrays_do(|a, _| a.buffer_data(target, size, &p, usage));
+    }
+
+    /// `glBufferSubData`: INVALID_VALUE when `offset` or `size` is negative, the range passes
+    /// the buffer's end, or `data` is shorter than `size`; otherwise as `buffer_data`.
+    pub fn buffer_sub_data(
+        &mut self,
+        target: u32,
+        offset: isize,
+        size: isize,
+        data: impl Into<Pointer>,
+    ) {
+        let p = data.into();
+        record!(
+            self,
+            Call::BufferSubData(target, offset, size, Box::new(p.clone()))
+        );
+        self.arrays_do(|a, _| a.buffer_sub_data(target, offset, size, &p));
+    }
+
+    /// `glGetBufferSubData` into `data` (a query: not recorded); errors as `buffer_sub_data`.
+    pub fn get_buffer_sub_data(
+        &mut self,
+        target: u32,
+        offset: isize,
+        size: isize,
+        data: &mut [u8],
+    ) {
+        if self.begin_mode.is_some() {
+            return self.error(gl::INVALID_OPERATION);
+        }
+        if let Err(code) = self
+            .state
+            .arrays
+            .get_buffer_sub_data(target, offset, size, data)
+        {
+            self.error(code);
+        }
+    }
+
+    /// `glGetBufferParameteriv`: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS or BUFFER_MAPPED of
+    /// the buffer bound to `target`. INVALID_ENUM for a target or pname, INVALID_OPERATION with
+    /// none bound, INVALID_VALUE for an empty `params`.
+    pub fn get_buffer_parameteriv(&mut self, target: u32, pname: u32, params: &mut [i32]) {
+        if self.begin_mode.is_some() {
+            return self.error(gl::INVALID_OPERATION);
+        }
+        match self.state.arrays.buffer_parameter(target, pname) {
+            Ok(v) => match params.first_mut() {
+                Some(p) => *p = v,
+                None => self.error(gl::INVALID_VALUE),
+            },
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glGetPointerv`: the pointer of VERTEX_ARRAY_POINTER, NORMAL_ARRAY_POINTER,
+    /// COLOR_ARRAY_POINTER, SECONDARY_COLOR_ARRAY_POINTER, FOG_COORD_ARRAY_POINTER,
+    /// EDGE_FLAG_ARRAY_POINTER or TEXTURE_COORD_ARRAY_POINTER (client active unit): the bytes
+    /// the context holds, or the offset. INVALID_ENUM (and [`Pointer::NULL`]) for another pname.
+    pub fn get_pointerv(&mut self, pname: u32) -> Pointer {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return Pointer::NULL;
+        }
+        let a = &self.state.arrays;
+        let array = match pname {
+            gl::VERTEX_ARRAY_POINTER => Some(&a.vertex),
+            gl::NORMAL_ARRAY_POINTER => Some(&a.normal),
+            gl::COLOR_ARRAY_POINTER => Some(&a.color),
+            gl::SECONDARY_COLOR_ARRAY_POINTER => Some(&a.secondary_color),
+            gl::FOG_COORD_ARRAY_POINTER => Some(&a.fog_coord),
+            gl::EDGE_FLAG_ARRAY_POINTER => Some(&a.edge_flag),
+            gl::TEXTURE_COORD_ARRAY_POINTER => a.tex_coords.get(self.state.client_active_texture),
+            _ => None,
+        };
+        match array {
+            Some(arr) => arr.pointer.clone(),
+            None => {
+                self.error(gl::INVALID_ENUM);
+                Pointer::NULL
+            }
+        }
+    }
+}
