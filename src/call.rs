@@ -218,4 +218,24 @@ pub enum Call {
     PixelStoref(u32, f32),
     Flush,
     Finish,
+
+    // --- fragment ops (context/fragment.rs): GL 2.1 §3.10, §4.1
+    Fogf(u32, f32),
+    Fogi(u32, i32),
+    Fogfv(u32, Vec<f32>),
+    Fogiv(u32, Vec<i32>),
+    AlphaFunc(u32, f32),
+    StencilFunc(u32, i32, u32),
+    StencilFuncSeparate(u32, u32, i32, u32),
+    StencilOp(u32, u32, u32),
+    StencilOpSeparate(u32, u32, u32, u32),
+    StencilMask(u32),
+    StencilMaskSeparate(u32, u32),
+    BlendFunc(u32, u32),
+    BlendFuncSeparate(u32, u32, u32, u32),
+    BlendEquation(u32),
+    BlendEquationSeparate(u32, u32),
+    BlendColor(f32, f32, f32, f32),
+    LogicOp(u32),
+    // --- end fragment ops
 }

@@ -96,6 +96,13 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         | "TexEnviv" | "TexEnvfv" | "TexParameteri" | "TexParameterf" | "TexParameteriv"
         | "TexParameterfv" => &[Enum, Enum],
         "StencilOp" => &[Enum, Enum, Enum],
+        // --- fragment ops
+        "BlendFuncSeparate" => &[Blend, Blend, Blend, Blend],
+        "BlendEquationSeparate" => &[Enum, Enum],
+        "StencilFuncSeparate" => &[Enum, Enum],
+        "StencilOpSeparate" => &[Enum, Enum, Enum, Enum],
+        "StencilMaskSeparate" => &[Enum],
+        // --- end fragment ops
         "VertexPointer" | "NormalPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],

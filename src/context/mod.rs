@@ -396,6 +396,25 @@ impl Context {
             Call::PixelStoref(a, b) => self.pixel_storef(a, b),
             Call::Flush => self.flush(),
             Call::Finish => self.finish(),
+            // --- fragment ops (context/fragment.rs)
+            Call::Fogf(p, v) => self.fogf(p, v),
+            Call::Fogi(p, v) => self.fogi(p, v),
+            Call::Fogfv(p, ref v) => self.fogfv(p, v),
+            Call::Fogiv(p, ref v) => self.fogiv(p, v),
+            Call::AlphaFunc(f, r) => self.alpha_func(f, r),
+            Call::StencilFunc(f, r, m) => self.stencil_func(f, r, m),
+            Call::StencilFuncSeparate(face, f, r, m) => self.stencil_func_separate(face, f, r, m),
+            Call::StencilOp(a, b, c) => self.stencil_op(a, b, c),
+            Call::StencilOpSeparate(face, a, b, c) => self.stencil_op_separate(face, a, b, c),
+            Call::StencilMask(m) => self.stencil_mask(m),
+            Call::StencilMaskSeparate(face, m) => self.stencil_mask_separate(face, m),
+            Call::BlendFunc(s, d) => self.blend_func(s, d),
+            Call::BlendFuncSeparate(a, b, c, d) => self.blend_func_separate(a, b, c, d),
+            Call::BlendEquation(m) => self.blend_equation(m),
+            Call::BlendEquationSeparate(a, b) => self.blend_equation_separate(a, b),
+            Call::BlendColor(r, g, b, a) => self.blend_color(r, g, b, a),
+            Call::LogicOp(op) => self.logic_op(op),
+            // --- end fragment ops
         }
     }
 
@@ -466,3 +485,7 @@ impl State {
 // --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
 mod readback;
 // --- end cpu-pipeline
+
+// --- fragment ops: Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
+mod fragment;
+// --- end fragment ops

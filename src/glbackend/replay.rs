@@ -254,6 +254,33 @@ impl GlBackend {
             Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
+            // --- fragment ops
+            Call::Fogf(p, v) => unsafe { gl.Fogf(p, v) },
+            Call::Fogi(p, v) => unsafe { gl.Fogi(p, v) },
+            Call::Fogfv(p, ref v) => {
+                self.with_params(v, params::fog(p), false, |gl, v| unsafe { gl.Fogfv(p, v) })
+            }
+            Call::Fogiv(p, ref v) => {
+                self.with_params(v, params::fog(p), false, |gl, v| unsafe { gl.Fogiv(p, v) })
+            }
+            Call::AlphaFunc(f, r) => unsafe { gl.AlphaFunc(f, r) },
+            Call::StencilFunc(f, r, m) => unsafe { gl.StencilFunc(f, r, m) },
+            Call::StencilFuncSeparate(face, f, r, m) => unsafe {
+                gl.StencilFuncSeparate(face, f, r, m)
+            },
+            Call::StencilOp(a, b, c) => unsafe { gl.StencilOp(a, b, c) },
+            Call::StencilOpSeparate(face, a, b, c) => unsafe {
+                gl.StencilOpSeparate(face, a, b, c)
+            },
+            Call::StencilMask(m) => unsafe { gl.StencilMask(m) },
+            Call::StencilMaskSeparate(face, m) => unsafe { gl.StencilMaskSeparate(face, m) },
+            Call::BlendFunc(s, d) => unsafe { gl.BlendFunc(s, d) },
+            Call::BlendFuncSeparate(a, b, c, d) => unsafe { gl.BlendFuncSeparate(a, b, c, d) },
+            Call::BlendEquation(m) => unsafe { gl.BlendEquation(m) },
+            Call::BlendEquationSeparate(a, b) => unsafe { gl.BlendEquationSeparate(a, b) },
+            Call::BlendColor(r, g, b, a) => unsafe { gl.BlendColor(r, g, b, a) },
+            Call::LogicOp(op) => unsafe { gl.LogicOp(op) },
+            // --- end fragment ops
         }
     }
 

@@ -12,6 +12,9 @@ use image::RgbaImage;
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
+// --- fragment ops
+pub mod fragment;
+// --- end fragment ops
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -71,6 +74,12 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[1],
     gaussian::SCENES[2],
     gaussian::SCENES[3],
+    // --- fragment ops
+    fragment::SCENES[0],
+    fragment::SCENES[1],
+    fragment::SCENES[2],
+    fragment::SCENES[3],
+    // --- end fragment ops
 ];
 
 /// Every registered scene, in listing order.

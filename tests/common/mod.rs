@@ -10,7 +10,7 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = 157;
+pub const VARIANTS: usize = 174;
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -95,6 +95,32 @@ pub const ENUMS: &[u32] = &[
     gl::CULL_FACE,
     gl::NORMALIZE,
     gl::SCISSOR_TEST,
+    // --- fragment ops
+    gl::FOG_MODE,
+    gl::FOG_DENSITY,
+    gl::FOG_COLOR,
+    gl::FOG_COORD_SRC,
+    gl::FOG_COORD,
+    gl::FRAGMENT_DEPTH,
+    gl::LINEAR,
+    gl::EXP,
+    gl::EXP2,
+    gl::KEEP,
+    gl::INCR_WRAP,
+    gl::DECR_WRAP,
+    gl::INVERT,
+    gl::SRC_ALPHA,
+    gl::ONE_MINUS_SRC_ALPHA,
+    gl::SRC_ALPHA_SATURATE,
+    gl::CONSTANT_COLOR,
+    gl::FUNC_ADD,
+    gl::FUNC_REVERSE_SUBTRACT,
+    gl::MIN,
+    gl::MAX,
+    gl::CLEAR,
+    gl::SET,
+    gl::SET + 1,
+    // --- end fragment ops
     0,
     1,
     u32::MAX,
@@ -354,6 +380,25 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         154 => Call::PixelStoref(p.e[0], p.f[1]),
         155 => Call::Flush,
         156 => Call::Finish,
+        // --- fragment ops
+        157 => Call::Fogf(p.e[0], p.f[1]),
+        158 => Call::Fogi(p.e[0], p.i[1]),
+        159 => Call::Fogfv(p.e[0], p.vf.clone()),
+        160 => Call::Fogiv(p.e[0], p.vi.clone()),
+        161 => Call::AlphaFunc(p.e[0], p.f[1]),
+        162 => Call::StencilFunc(p.e[0], p.i[1], p.e[2]),
+        163 => Call::StencilFuncSeparate(p.e[0], p.e[1], p.i[2], p.e[3]),
+        164 => Call::StencilOp(p.e[0], p.e[1], p.e[2]),
+        165 => Call::StencilOpSeparate(p.e[0], p.e[1], p.e[2], p.e[3]),
+        166 => Call::StencilMask(p.e[0]),
+        167 => Call::StencilMaskSeparate(p.e[0], p.e[1]),
+        168 => Call::BlendFunc(p.e[0], p.e[1]),
+        169 => Call::BlendFuncSeparate(p.e[0], p.e[1], p.e[2], p.e[3]),
+        170 => Call::BlendEquation(p.e[0]),
+        171 => Call::BlendEquationSeparate(p.e[0], p.e[1]),
+        172 => Call::BlendColor(p.f[0], p.f[1], p.f[2], p.f[3]),
+        173 => Call::LogicOp(p.e[0]),
+        // --- end fragment ops
         _ => Call::End,
     }
 }
