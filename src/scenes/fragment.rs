@@ -339,7 +339,7 @@ fn planar_shadow(gl: &mut Context) {
 
 /// `planar-reflection`: the floor marks its pixels in the stencil buffer without drawing; the
 /// objects mirrored by Scale(1, −1, 1) (light re-specified under the mirror, FrontFace CW) are
-/// drawn where the stencil is 1; the floor is blended over them at alpha 0.7; then the objects.
+/// drawn where the stencil is 1; the floor is blended over them at alpha 0.55; then the objects.
 fn planar_reflection(gl: &mut Context) {
     gl.clear_color(0.2, 0.22, 0.28, 1.0);
     gl.clear_stencil(0);
@@ -371,7 +371,7 @@ fn planar_reflection(gl: &mut Context) {
     lights(gl, LIGHT);
     gl.enable(BLEND);
     gl.blend_func(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
-    floor(gl, 3.0, 6, 0.7);
+    floor(gl, 3.0, 6, 0.55);
     gl.disable(BLEND);
     objects(gl, false);
 }
