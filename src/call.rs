@@ -6,7 +6,12 @@
 //!
 //! Variants are named as the GL function without `gl` (`glNormal3f` → `Normal3f`) and take the
 //! GL types one to one; vector forms whose length GL fixes keep their own variant with an array
-//! (`Normal3fv([f32; 3])`), so a replay calls exactly the entry point the user called. Forms whose
+//! (`Normal3fv([f32; 3])`), so a replay calls exactly the entry point the user called.
+//!
+//! Size matters: a frame of the 400x400 lecture surface records 1.6M calls, and every replay streams
+//! them from memory, so `size_of::<Call>()` is a per-call cost. Rare calls with large arguments
+//! (the 16-element matrices) keep them boxed, and so do `Frustum`/`Ortho`, which holds every call to 40 bytes instead of 136 (the
+//! test below keeps it there). Forms whose
 //! length depends on a pname (`Lightfv`) own a `Vec` holding exactly the slice the caller passed.
 //!
 //! Variants are grouped in sections by area; each area's owner edits only its own section.
@@ -25,22 +30,24 @@ pub enum Call {
     // --- transforms (context/matrix.rs)
     MatrixMode(u32),
     LoadIdentity,
-    LoadMatrixf([f32; 16]),
-    LoadMatrixd([f64; 16]),
-    MultMatrixf([f32; 16]),
-    MultMatrixd([f64; 16]),
-    LoadTransposeMatrixf([f32; 16]),
-    LoadTransposeMatrixd([f64; 16]),
-    MultTransposeMatrixf([f32; 16]),
-    MultTransposeMatrixd([f64; 16]),
+    LoadMatrixf(Box<[f32; 16]>),
+    LoadMatrixd(Box<[f64; 16]>),
+    MultMatrixf(Box<[f32; 16]>),
+    MultMatrixd(Box<[f64; 16]>),
+    LoadTransposeMatrixf(Box<[f32; 16]>),
+    LoadTransposeMatrixd(Box<[f64; 16]>),
+    MultTransposeMatrixf(Box<[f32; 16]>),
+    MultTransposeMatrixd(Box<[f64; 16]>),
     Translatef(f32, f32, f32),
     Translated(f64, f64, f64),
     Rotatef(f32, f32, f32, f32),
     Rotated(f64, f64, f64, f64),
     Scalef(f32, f32, f32),
     Scaled(f64, f64, f64),
-    Frustum(f64, f64, f64, f64, f64, f64),
-    Ortho(f64, f64, f64, f64, f64, f64),
+    /// left, right, bottom, top, near, far (boxed: see the module docs on size).
+    Frustum(Box<[f64; 6]>),
+    /// left, right, bottom, top, near, far (boxed: see the module docs on size).
+    Ortho(Box<[f64; 6]>),
     PushMatrix,
     PopMatrix,
     Viewport(i32, i32, i32, i32),
@@ -238,4 +245,18 @@ pub enum Call {
     BlendColor(f32, f32, f32, f32),
     LogicOp(u32),
     // --- end fragment ops
+}
+
+#[cfg(test)]
+mod tests {
+    /// A replay streams every recorded call from memory: a variant that grows `Call` (say, an
+    /// inline 16-element matrix) makes every `Vertex3f` of a 1.6M-call frame pay for it.
+    #[test]
+    fn call_stays_small() {
+        assert!(
+            std::mem::size_of::<super::Call>() <= 40,
+            "{}",
+            std::mem::size_of::<super::Call>()
+        );
+    }
 }

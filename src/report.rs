@@ -104,7 +104,7 @@ body {{ font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222
 table {{ border-collapse: collapse; }}
 td, th {{ border: 1px solid #ccc; padding: 6px; vertical-align: top; background: #fff; }}
 th {{ background: #eee; }}
-img {{ image-rendering: pixelated; max-width: 320px; border: 1px solid #888; display: block;
+img {{ image-rendering: pixelated; max-width: min(320px, 22vw); border: 1px solid #888; display: block;
   background: repeating-conic-gradient(#ccc 0 25%, #fff 0 50%) 0 0 / 16px 16px; }}
 .pass {{ color: #080; font-weight: bold; }} .fail {{ color: #b00; font-weight: bold; }}
 .m {{ font-family: monospace; white-space: pre; font-size: 90%; }}

@@ -7,7 +7,7 @@
 
 use fixedgl::compare::compare;
 use fixedgl::gl;
-use fixedgl::glbackend::{DeviceChoice, GlBackend};
+use fixedgl::glbackend::GlBackend;
 use fixedgl::scenes;
 use fixedgl::{Call, Context};
 use image::Rgba;
@@ -15,18 +15,7 @@ use std::io::Write as _;
 
 /// A backend, or `None` after printing why the test is skipped.
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    match GlBackend::new(width, height, &DeviceChoice::Auto) {
-        Ok(b) => Some(b),
-        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
-            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
-        }
-        Err(e) => {
-            // Written to the stderr handle, not with eprintln!: libtest captures the macros'
-            // output of passing tests, and a skip must stay visible.
-            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
-            None
-        }
-    }
+    fixedgl::glbackend::test_backend(width, height)
 }
 
 #[test]

@@ -223,7 +223,10 @@ fn glu_goes_through_recorded_calls() {
         "{calls:?}"
     );
     assert_eq!(calls[1], Call::Translated(-0.0, -0.0, -3.0));
-    assert_eq!(calls[3], Call::Ortho(0.0, 1.0, 0.0, 1.0, -1.0, 1.0));
+    assert_eq!(
+        calls[3],
+        Call::Ortho(Box::new([0.0, 1.0, 0.0, 1.0, -1.0, 1.0]))
+    );
 }
 
 #[test]

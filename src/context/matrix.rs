@@ -96,51 +96,51 @@ impl Context {
 
     /// `glLoadMatrixf`: `m` is column-major, as GL stores it.
     pub fn load_matrixf(&mut self, m: &[f32; 16]) {
-        record!(self, Call::LoadMatrixf(*m));
+        record!(self, Call::LoadMatrixf(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(&m.map(f64::from)), false);
     }
 
     /// `glLoadMatrixd`: `m` is column-major.
     pub fn load_matrixd(&mut self, m: &[f64; 16]) {
-        record!(self, Call::LoadMatrixd(*m));
+        record!(self, Call::LoadMatrixd(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(m), false);
     }
 
     /// `glMultMatrixf`: C = C·M, `m` column-major.
     pub fn mult_matrixf(&mut self, m: &[f32; 16]) {
-        record!(self, Call::MultMatrixf(*m));
+        record!(self, Call::MultMatrixf(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(&m.map(f64::from)), true);
     }
 
     /// `glMultMatrixd`: C = C·M, `m` column-major.
     pub fn mult_matrixd(&mut self, m: &[f64; 16]) {
-        record!(self, Call::MultMatrixd(*m));
+        record!(self, Call::MultMatrixd(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(m), true);
     }
 
     /// `glLoadTransposeMatrixf`: `m` is row-major (GL 2.1 §2.11.2).
     pub fn load_transpose_matrixf(&mut self, m: &[f32; 16]) {
-        record!(self, Call::LoadTransposeMatrixf(*m));
+        record!(self, Call::LoadTransposeMatrixf(Box::new(*m)));
         let m = DMat4::from_cols_array(&m.map(f64::from)).transpose();
         self.load_or_mult(m, false);
     }
 
     /// `glLoadTransposeMatrixd`: `m` is row-major.
     pub fn load_transpose_matrixd(&mut self, m: &[f64; 16]) {
-        record!(self, Call::LoadTransposeMatrixd(*m));
+        record!(self, Call::LoadTransposeMatrixd(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(m).transpose(), false);
     }
 
     /// `glMultTransposeMatrixf`: C = C·M with `m` read row-major.
     pub fn mult_transpose_matrixf(&mut self, m: &[f32; 16]) {
-        record!(self, Call::MultTransposeMatrixf(*m));
+        record!(self, Call::MultTransposeMatrixf(Box::new(*m)));
         let m = DMat4::from_cols_array(&m.map(f64::from)).transpose();
         self.load_or_mult(m, true);
     }
 
     /// `glMultTransposeMatrixd`: `m` row-major.
     pub fn mult_transpose_matrixd(&mut self, m: &[f64; 16]) {
-        record!(self, Call::MultTransposeMatrixd(*m));
+        record!(self, Call::MultTransposeMatrixd(Box::new(*m)));
         self.load_or_mult(DMat4::from_cols_array(m).transpose(), true);
     }
 
@@ -195,7 +195,10 @@ impl Context {
     /// `glFrustum`: multiplies by the perspective matrix of GL 2.1 §2.11.2. INVALID_VALUE if
     /// `near` or `far` is not positive, `left == right`, `bottom == top` or `near == far`.
     pub fn frustum(&mut self, left: f64, right: f64, bottom: f64, top: f64, near: f64, far: f64) {
-        record!(self, Call::Frustum(left, right, bottom, top, near, far));
+        record!(
+            self,
+            Call::Frustum(Box::new([left, right, bottom, top, near, far]))
+        );
         if !self.outside_begin_end() {
             return;
         }
@@ -214,7 +217,10 @@ impl Context {
     /// `glOrtho`: multiplies by the parallel projection of GL 2.1 §2.11.2. INVALID_VALUE if
     /// `left == right`, `bottom == top` or `near == far`.
     pub fn ortho(&mut self, left: f64, right: f64, bottom: f64, top: f64, near: f64, far: f64) {
-        record!(self, Call::Ortho(left, right, bottom, top, near, far));
+        record!(
+            self,
+            Call::Ortho(Box::new([left, right, bottom, top, near, far]))
+        );
         if !self.outside_begin_end() {
             return;
         }

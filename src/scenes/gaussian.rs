@@ -160,24 +160,18 @@ pub fn display(gl: &mut Context, size: usize, shading: Shading) {
     let n = |gl: &mut Context, c: &Cell| gl.normal3f(c.normal[0], c.normal[1], c.normal[2]);
     for i in 1..m.len() - 1 {
         for j in 1..m.len() - 1 {
+            let corners = [&m[i + 1][j], &m[i + 1][j + 1], &m[i][j], &m[i][j + 1]];
             if shading == Shading::Flat {
-                // One normal per face: the cell's own point's.
-                n(gl, &m[i][j]);
-                gl.begin(TRIANGLE_STRIP);
-                v(gl, &m[i + 1][j]);
-                v(gl, &m[i + 1][j + 1]);
-                v(gl, &m[i][j]);
-                v(gl, &m[i][j + 1]);
-                gl.end();
-            } else {
-                // One normal per vertex.
-                gl.begin(TRIANGLE_STRIP);
-                for c in [&m[i + 1][j], &m[i + 1][j + 1], &m[i][j], &m[i][j + 1]] {
-                    n(gl, c);
-                    v(gl, c);
-                }
-                gl.end();
+                n(gl, &m[i][j]); // One normal per face, before glBegin: the cell's own point's.
             }
+            gl.begin(TRIANGLE_STRIP);
+            for c in corners {
+                if shading != Shading::Flat {
+                    n(gl, c); // One normal per vertex.
+                }
+                v(gl, c);
+            }
+            gl.end();
         }
     }
     gl.flush(); // gl.glFlush();
