@@ -414,7 +414,8 @@ impl State {
             depth_func: gl::LESS,
             color_mask: [true; 4],
             depth_mask: true,
-            stencil_writemask: u32::MAX,
+            // fragment ops: "1's" for the 8-bit stencil buffer, 0xFF as the driver reports it.
+            stencil_writemask: 0xFF,
             clear_color: Vec4::ZERO,
             clear_depth: 1.0,
             clear_stencil: 0,
@@ -507,7 +508,7 @@ pub struct StencilFace {
     pub func: u32,
     /// `STENCIL_REF` as given (clamped to [0, 2^8 - 1] where it is used and queried).
     pub reference: i32,
-    /// `STENCIL_VALUE_MASK`.
+    /// `STENCIL_VALUE_MASK`: initially "1's" (table 6.20), the 8 bits of the stencil buffer.
     pub value_mask: u32,
     /// `STENCIL_FAIL`.
     pub fail: u32,
@@ -522,7 +523,7 @@ impl Default for StencilFace {
         Self {
             func: gl::ALWAYS,
             reference: 0,
-            value_mask: u32::MAX,
+            value_mask: 0xFF,
             fail: gl::KEEP,
             zfail: gl::KEEP,
             zpass: gl::KEEP,
@@ -543,7 +544,7 @@ impl Default for Stencil {
     fn default() -> Self {
         Self {
             faces: [StencilFace::default(); 2],
-            back_writemask: u32::MAX,
+            back_writemask: 0xFF,
         }
     }
 }

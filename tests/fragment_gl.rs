@@ -7,9 +7,8 @@
 //! Skipped (with `SKIPPED:` on stderr) where no EGL device exists, as tests/gl_backend.rs.
 #![cfg(feature = "gl")]
 
-use fixedgl::glbackend::{DeviceChoice, GlBackend};
-use fixedgl::{gl, scenes, Context};
-use std::io::Write as _;
+use fixedgl::glbackend::test_backend;
+use fixedgl::{gl, scenes, Call, Context};
 
 /// Points at every pixel centre of the 256x256 grid, coloured `f(x, y)`.
 fn grid(ctx: &mut Context, f: impl Fn(u32, u32) -> [u8; 4]) {
@@ -27,16 +26,7 @@ fn grid(ctx: &mut Context, f: impl Fn(u32, u32) -> [u8; 4]) {
 /// Draws `setup` on both backends (pixel-aligned ortho projection) and returns the number of
 /// pixels that differ at all and the largest channel difference; `None` when GL is unavailable.
 fn diff(setup: impl Fn(&mut Context)) -> Option<(usize, u8)> {
-    let mut glb = match GlBackend::new(256, 256, &DeviceChoice::Auto) {
-        Ok(b) => b,
-        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
-            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
-        }
-        Err(e) => {
-            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
-            return None;
-        }
-    };
+    let mut glb = test_backend(256, 256)?;
     let Ok(mut ctx) = Context::new(256, 256) else {
         panic!("CPU context")
     };
@@ -220,4 +210,147 @@ fn fog_modes_match_the_driver_within_one() {
             );
         }
     }
+}
+
+#[test]
+fn errors_agree_with_the_driver() {
+    let Some(mut gl) = test_backend(4, 4) else {
+        return;
+    };
+    let Ok(mut cpu) = Context::new(4, 4) else {
+        panic!("CPU context")
+    };
+    // Rows where GL 2.1 and the driver agree. (Not listed: SRC_ALPHA_SATURATE as a destination
+    // factor, INVALID_ENUM in GL 2.1 but accepted by a driver with ARB_blend_func_extended.)
+    let rows: &[(Call, u32)] = &[
+        (Call::Fogi(gl::FOG_MODE, 0x1234), gl::INVALID_ENUM),
+        (Call::Fogf(gl::FOG_DENSITY, -1.0), gl::INVALID_VALUE),
+        (
+            Call::Fogi(gl::FOG_COORD_SRC, gl::LINEAR as i32),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::Fogfv(gl::FOG_COLOR, vec![0.1, 0.2, 0.3, 0.4]),
+            gl::NO_ERROR,
+        ),
+        (Call::AlphaFunc(gl::ALWAYS + 1, 0.5), gl::INVALID_ENUM),
+        (Call::StencilFunc(gl::KEEP, 0, 0xFF), gl::INVALID_ENUM),
+        (
+            Call::StencilFuncSeparate(gl::LEFT, gl::LESS, 0, 0xFF),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::StencilOp(gl::KEEP, gl::NEVER, gl::KEEP),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::StencilOpSeparate(gl::FRONT, gl::KEEP, gl::KEEP, gl::INCR_WRAP),
+            gl::NO_ERROR,
+        ),
+        (Call::StencilMaskSeparate(gl::LEFT, 0), gl::INVALID_ENUM),
+        (Call::BlendFunc(gl::LESS, gl::ONE), gl::INVALID_ENUM),
+        (
+            Call::BlendFuncSeparate(gl::ONE, gl::ONE, gl::ONE, gl::LESS),
+            gl::INVALID_ENUM,
+        ),
+        (Call::BlendEquation(gl::FUNC_ADD + 0x20), gl::INVALID_ENUM),
+        (
+            Call::BlendEquationSeparate(gl::MIN, gl::ONE),
+            gl::INVALID_ENUM,
+        ),
+        (Call::LogicOp(gl::SET + 1), gl::INVALID_ENUM),
+        (Call::Begin(gl::TRIANGLES), gl::NO_ERROR),
+        (Call::BlendColor(1.0, 1.0, 1.0, 1.0), gl::NO_ERROR),
+        (Call::End, gl::INVALID_OPERATION),
+    ];
+    for (i, (call, expected)) in rows.iter().enumerate() {
+        cpu.execute(call);
+        gl.execute(call);
+        if matches!(call, Call::Begin(_)) {
+            continue;
+        }
+        assert_eq!(cpu.get_error(), *expected, "CPU after row {i}: {call:?}");
+        assert_eq!(gl.get_error(), *expected, "GL after row {i}: {call:?}");
+    }
+}
+
+#[test]
+fn queries_agree_with_the_driver() {
+    let Some(mut gl) = test_backend(4, 4) else {
+        return;
+    };
+    let Ok(mut cpu) = Context::new(4, 4) else {
+        panic!("CPU context")
+    };
+    let pnames = [
+        gl::FOG_MODE,
+        gl::FOG_DENSITY,
+        gl::FOG_START,
+        gl::FOG_END,
+        gl::FOG_COORD_SRC,
+        gl::ALPHA_TEST_FUNC,
+        gl::STENCIL_FUNC,
+        gl::STENCIL_REF,
+        gl::STENCIL_FAIL,
+        gl::STENCIL_PASS_DEPTH_FAIL,
+        gl::STENCIL_PASS_DEPTH_PASS,
+        gl::STENCIL_BACK_FUNC,
+        gl::STENCIL_BACK_REF,
+        gl::STENCIL_VALUE_MASK,
+        gl::STENCIL_WRITEMASK,
+        gl::STENCIL_BACK_VALUE_MASK,
+        gl::STENCIL_BACK_FAIL,
+        gl::STENCIL_BACK_WRITEMASK,
+        gl::BLEND_SRC_RGB,
+        gl::BLEND_DST_RGB,
+        gl::BLEND_SRC_ALPHA,
+        gl::BLEND_DST_ALPHA,
+        gl::BLEND_EQUATION_RGB,
+        gl::BLEND_EQUATION_ALPHA,
+        gl::LOGIC_OP_MODE,
+    ];
+    let check = |cpu: &mut Context, gl: &mut fixedgl::glbackend::GlBackend, when: &str| {
+        for p in pnames {
+            let (mut a, mut b) = ([0i32], [0i32]);
+            cpu.get_integerv(p, &mut a);
+            gl.get_integerv(p, &mut b);
+            assert_eq!(a, b, "{when}: pname {p:#x}");
+        }
+        for p in [gl::FOG_COLOR, gl::BLEND_COLOR] {
+            let (mut a, mut b) = ([0f32; 4], [0f32; 4]);
+            cpu.get_floatv(p, &mut a);
+            gl.get_floatv(p, &mut b);
+            assert_eq!(a, b, "{when}: pname {p:#x}");
+        }
+    };
+    check(&mut cpu, &mut gl, "initial");
+    let calls = [
+        Call::Fogi(gl::FOG_MODE, gl::EXP2 as i32),
+        Call::Fogf(gl::FOG_DENSITY, 0.25),
+        Call::Fogf(gl::FOG_START, -2.0),
+        Call::Fogf(gl::FOG_END, 7.5),
+        Call::Fogfv(gl::FOG_COLOR, vec![0.25, 0.5, 0.75, 1.0]),
+        Call::Fogi(gl::FOG_COORD_SRC, gl::FOG_COORD as i32),
+        Call::AlphaFunc(gl::NOTEQUAL, 0.5),
+        Call::StencilFunc(gl::GEQUAL, 300, 0x3F),
+        Call::StencilFuncSeparate(gl::BACK, gl::LESS, -3, 0x0F),
+        Call::StencilOp(gl::INCR_WRAP, gl::DECR, gl::INVERT),
+        Call::StencilOpSeparate(gl::BACK, gl::ZERO, gl::REPLACE, gl::DECR_WRAP),
+        Call::StencilMaskSeparate(gl::BACK, 0x5A),
+        Call::StencilMaskSeparate(gl::FRONT, 0xFFFF_FF0F),
+        Call::BlendFuncSeparate(
+            gl::SRC_ALPHA_SATURATE,
+            gl::DST_COLOR,
+            gl::CONSTANT_ALPHA,
+            gl::ZERO,
+        ),
+        Call::BlendEquationSeparate(gl::FUNC_REVERSE_SUBTRACT, gl::MAX),
+        Call::BlendColor(0.125, 0.25, 0.5, 1.0),
+        Call::LogicOp(gl::OR_INVERTED),
+    ];
+    cpu.replay(&calls);
+    gl.replay(&calls);
+    assert_eq!(cpu.get_error(), gl::NO_ERROR);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    check(&mut cpu, &mut gl, "after the calls");
 }

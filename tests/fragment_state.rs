@@ -41,18 +41,18 @@ fn initial_values_match_the_state_tables() {
         (gl::ALPHA_TEST_FUNC, gl::ALWAYS as i32),
         (gl::STENCIL_FUNC, gl::ALWAYS as i32),
         (gl::STENCIL_REF, 0),
-        (gl::STENCIL_VALUE_MASK, -1),
+        (gl::STENCIL_VALUE_MASK, 255),
         (gl::STENCIL_FAIL, gl::KEEP as i32),
         (gl::STENCIL_PASS_DEPTH_FAIL, gl::KEEP as i32),
         (gl::STENCIL_PASS_DEPTH_PASS, gl::KEEP as i32),
         (gl::STENCIL_BACK_FUNC, gl::ALWAYS as i32),
         (gl::STENCIL_BACK_REF, 0),
-        (gl::STENCIL_BACK_VALUE_MASK, -1),
+        (gl::STENCIL_BACK_VALUE_MASK, 255),
         (gl::STENCIL_BACK_FAIL, gl::KEEP as i32),
         (gl::STENCIL_BACK_PASS_DEPTH_FAIL, gl::KEEP as i32),
         (gl::STENCIL_BACK_PASS_DEPTH_PASS, gl::KEEP as i32),
-        (gl::STENCIL_WRITEMASK, -1),
-        (gl::STENCIL_BACK_WRITEMASK, -1),
+        (gl::STENCIL_WRITEMASK, 255),
+        (gl::STENCIL_BACK_WRITEMASK, 255),
         (gl::BLEND_SRC, gl::ONE as i32),
         (gl::BLEND_DST, gl::ZERO as i32),
         (gl::BLEND_SRC_RGB, gl::ONE as i32),
@@ -128,6 +128,9 @@ fn valid_calls_store_and_clamp() {
     c.stencil_mask_separate(gl::BACK, 0x81);
     assert_eq!(geti(&mut c, gl::STENCIL_WRITEMASK), 0x3C);
     assert_eq!(geti(&mut c, gl::STENCIL_BACK_WRITEMASK), 0x81);
+    // An unsigned mask past i32::MAX saturates in GetIntegerv (§6.1.2), as the driver does.
+    c.stencil_mask(0xFFFF_FF0F);
+    assert_eq!(geti(&mut c, gl::STENCIL_WRITEMASK), i32::MAX);
     // §4.1.8.
     c.blend_func_separate(
         gl::SRC_ALPHA_SATURATE,
