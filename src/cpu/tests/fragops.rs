@@ -326,6 +326,13 @@ fn fog_through_the_pipeline_at_eye_distance_4() {
     c.fogf(gl::FOG_DENSITY, 0.25);
     quad(&mut c, -4.0, false);
     assert_eq!(pixel(&c).0, [94, 0, 161, 255]);
+    // EXP2, density 0.125: f = e^−(0.5²) = 0.7788: R = 198.6 → 199, B = 56.4 → 56.
+    c.fogi(gl::FOG_MODE, gl::EXP2 as i32);
+    c.fogf(gl::FOG_DENSITY, 0.125);
+    quad(&mut c, -4.0, false);
+    assert_eq!(pixel(&c).0, [199, 0, 56, 255]);
+    c.fogi(gl::FOG_MODE, gl::EXP as i32);
+    c.fogf(gl::FOG_DENSITY, 0.25);
     // FOG_COORD source: c = |−2| = 2 → EXP f = e^−0.5 = 0.6065: R = 154.7 → 155, B = 100.3 → 100.
     c.fogi(gl::FOG_COORD_SRC, gl::FOG_COORD as i32);
     c.fog_coordf(-2.0);
