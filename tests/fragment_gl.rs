@@ -354,3 +354,43 @@ fn queries_agree_with_the_driver() {
     assert_eq!(gl.get_error(), gl::NO_ERROR);
     check(&mut cpu, &mut gl, "after the calls");
 }
+
+#[test]
+fn lines_and_wide_points_take_the_same_operations() {
+    let r = diff(|c| {
+        c.clear_color(0.2, 0.3, 0.4, 0.5);
+        c.clear(gl::COLOR_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
+        c.enable(gl::STENCIL_TEST);
+        c.stencil_func(gl::ALWAYS, 0, 0xFF);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::INCR);
+        c.enable(gl::BLEND);
+        c.blend_func(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA);
+        c.begin(gl::LINES);
+        for k in 0..64u32 {
+            let t = k as f32 * 4.0;
+            c.color4ub((k * 4) as u8, 255 - (k * 4) as u8, 90, (k * 3 + 40) as u8);
+            c.vertex2f(3.0, t + 1.3);
+            c.vertex2f(250.0, 255.0 - t);
+        }
+        c.end();
+        c.point_size(5.0);
+        c.begin(gl::POINTS);
+        for k in 0..40u32 {
+            c.color4ub(255, (k * 6) as u8, 0, 160);
+            c.vertex2f(10.0 + k as f32 * 6.1, 128.0 + (k % 7) as f32 * 9.3);
+        }
+        c.end();
+        // Where lines crossed, the stencil counts above 1: paint those pixels white.
+        c.disable(gl::BLEND);
+        c.stencil_func(gl::LESS, 1, 0xFF);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::KEEP);
+        c.color3f(1.0, 1.0, 1.0);
+        c.begin(gl::QUADS);
+        c.vertex2f(0.0, 0.0);
+        c.vertex2f(256.0, 0.0);
+        c.vertex2f(256.0, 256.0);
+        c.vertex2f(0.0, 256.0);
+        c.end();
+    });
+    assert!(r.map_or(true, |r| r.0 == 0), "{r:?}");
+}
