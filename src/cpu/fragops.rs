@@ -35,10 +35,10 @@ impl Fog {
     #[inline]
     pub fn factor(&self, c: f32) -> f32 {
         let f = match self.mode {
-            // As Mesa's fog parameters: c·(−1/(e − s)) + e/(e − s).
+            // As Mesa's fog parameters: c·(−1/(e − s)) + e·(1/(e − s)).
             gl::LINEAR => {
-                let scale = 1.0 / (self.end - self.start);
-                c * -scale + self.end * scale
+                let scale = -1.0 / (self.end - self.start);
+                c * scale + self.end * -scale
             }
             gl::EXP => (-self.density * c).exp(),
             _ => {
