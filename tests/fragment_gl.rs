@@ -220,9 +220,19 @@ fn errors_agree_with_the_driver() {
     let Ok(mut cpu) = Context::new(4, 4) else {
         panic!("CPU context")
     };
-    // Rows where GL 2.1 and the driver agree. (Not listed: SRC_ALPHA_SATURATE as a destination
-    // factor, INVALID_ENUM in GL 2.1 but accepted by a driver with ARB_blend_func_extended.)
+    // The first rows are where a driver is laxer than GL 2.1 and the GL backend raises the
+    // error itself: FOG_COLOR through Fogf/Fogi, SRC_ALPHA_SATURATE as a destination factor.
     let rows: &[(Call, u32)] = &[
+        (Call::Fogf(gl::FOG_COLOR, 1.0), gl::INVALID_ENUM),
+        (Call::Fogi(gl::FOG_COLOR, 1), gl::INVALID_ENUM),
+        (
+            Call::BlendFunc(gl::ONE, gl::SRC_ALPHA_SATURATE),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::BlendFuncSeparate(gl::ONE, gl::ONE, gl::ONE, gl::SRC_ALPHA_SATURATE),
+            gl::INVALID_ENUM,
+        ),
         (Call::Fogi(gl::FOG_MODE, 0x1234), gl::INVALID_ENUM),
         (Call::Fogf(gl::FOG_DENSITY, -1.0), gl::INVALID_VALUE),
         (

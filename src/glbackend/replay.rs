@@ -255,6 +255,13 @@ impl GlBackend {
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
             // --- fragment ops
+            // GL 2.1 (glFog reference page) takes FOG_COLOR only through the vector forms; Mesa
+            // also takes it here. Raised here as for Begin, so both backends agree.
+            Call::Fogf(gl::FOG_COLOR, _) | Call::Fogi(gl::FOG_COLOR, _)
+                if !self.inside_begin_end =>
+            {
+                self.raise(gl::INVALID_ENUM)
+            }
             Call::Fogf(p, v) => unsafe { gl.Fogf(p, v) },
             Call::Fogi(p, v) => unsafe { gl.Fogi(p, v) },
             Call::Fogfv(p, ref v) => {
@@ -274,6 +281,15 @@ impl GlBackend {
             },
             Call::StencilMask(m) => unsafe { gl.StencilMask(m) },
             Call::StencilMaskSeparate(face, m) => unsafe { gl.StencilMaskSeparate(face, m) },
+            // SRC_ALPHA_SATURATE is a source factor only in GL 2.1 (§4.1.8); a driver with
+            // ARB_blend_func_extended takes it as a destination too.
+            Call::BlendFunc(_, gl::SRC_ALPHA_SATURATE)
+            | Call::BlendFuncSeparate(_, gl::SRC_ALPHA_SATURATE, _, _)
+            | Call::BlendFuncSeparate(_, _, _, gl::SRC_ALPHA_SATURATE)
+                if !self.inside_begin_end =>
+            {
+                self.raise(gl::INVALID_ENUM)
+            }
             Call::BlendFunc(s, d) => unsafe { gl.BlendFunc(s, d) },
             Call::BlendFuncSeparate(a, b, c, d) => unsafe { gl.BlendFuncSeparate(a, b, c, d) },
             Call::BlendEquation(m) => unsafe { gl.BlendEquation(m) },
