@@ -118,6 +118,8 @@ impl FragCtx<'_> {
                 }
             }
         }
+        // --- texturing slot (§3.8.13): the texture environment applies to `c` here, before
+        // the colour sum (§3.9) and fog (§3.10, in `full`).
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
