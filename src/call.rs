@@ -269,6 +269,166 @@ pub enum Call {
     BufferData(u32, isize, Box<Pointer>, u32),
     BufferSubData(u32, isize, isize, Box<Pointer>),
     // --- end arrays
+    // --- fragment ops (context/fragment.rs): GL 2.1 §3.10, §4.1
+    Fogf(u32, f32),
+    Fogi(u32, i32),
+    Fogfv(u32, Vec<f32>),
+    Fogiv(u32, Vec<i32>),
+    AlphaFunc(u32, f32),
+    StencilFunc(u32, i32, u32),
+    StencilFuncSeparate(u32, u32, i32, u32),
+    StencilOp(u32, u32, u32),
+    StencilOpSeparate(u32, u32, u32, u32),
+    StencilMask(u32),
+    StencilMaskSeparate(u32, u32),
+    BlendFunc(u32, u32),
+    BlendFuncSeparate(u32, u32, u32, u32),
+    BlendEquation(u32),
+    BlendEquationSeparate(u32, u32),
+    BlendColor(f32, f32, f32, f32),
+    LogicOp(u32),
+    // --- end fragment ops
+}
+
+impl Call {
+    /// Whether GL 2.1 §2.6.3 allows this command between Begin and End: the vertex attributes
+    /// (Vertex, Normal, Color, SecondaryColor, TexCoord, MultiTexCoord, FogCoord, EdgeFlag),
+    /// Material, ArrayElement, CallList(s) and End. Every other command raises INVALID_OPERATION
+    /// there. The GL backend raises it itself rather than asking the driver, so that every error
+    /// inside a Begin/End pair (where the driver's flag cannot be read) keeps its order.
+    pub fn allowed_between_begin_end(&self) -> bool {
+        matches!(
+            self,
+            Call::End
+                | Call::Vertex2s(..)
+                | Call::Vertex2i(..)
+                | Call::Vertex2f(..)
+                | Call::Vertex2d(..)
+                | Call::Vertex3s(..)
+                | Call::Vertex3i(..)
+                | Call::Vertex3f(..)
+                | Call::Vertex3d(..)
+                | Call::Vertex4s(..)
+                | Call::Vertex4i(..)
+                | Call::Vertex4f(..)
+                | Call::Vertex4d(..)
+                | Call::Vertex2sv(..)
+                | Call::Vertex2iv(..)
+                | Call::Vertex2fv(..)
+                | Call::Vertex2dv(..)
+                | Call::Vertex3sv(..)
+                | Call::Vertex3iv(..)
+                | Call::Vertex3fv(..)
+                | Call::Vertex3dv(..)
+                | Call::Vertex4sv(..)
+                | Call::Vertex4iv(..)
+                | Call::Vertex4fv(..)
+                | Call::Vertex4dv(..)
+                | Call::Normal3b(..)
+                | Call::Normal3s(..)
+                | Call::Normal3i(..)
+                | Call::Normal3f(..)
+                | Call::Normal3d(..)
+                | Call::Normal3bv(..)
+                | Call::Normal3sv(..)
+                | Call::Normal3iv(..)
+                | Call::Normal3fv(..)
+                | Call::Normal3dv(..)
+                | Call::Color3b(..)
+                | Call::Color3s(..)
+                | Call::Color3i(..)
+                | Call::Color3f(..)
+                | Call::Color3d(..)
+                | Call::Color3ub(..)
+                | Call::Color3us(..)
+                | Call::Color3ui(..)
+                | Call::Color3bv(..)
+                | Call::Color3sv(..)
+                | Call::Color3iv(..)
+                | Call::Color3fv(..)
+                | Call::Color3dv(..)
+                | Call::Color3ubv(..)
+                | Call::Color3usv(..)
+                | Call::Color3uiv(..)
+                | Call::Color4b(..)
+                | Call::Color4s(..)
+                | Call::Color4i(..)
+                | Call::Color4f(..)
+                | Call::Color4d(..)
+                | Call::Color4ub(..)
+                | Call::Color4us(..)
+                | Call::Color4ui(..)
+                | Call::Color4bv(..)
+                | Call::Color4sv(..)
+                | Call::Color4iv(..)
+                | Call::Color4fv(..)
+                | Call::Color4dv(..)
+                | Call::Color4ubv(..)
+                | Call::Color4usv(..)
+                | Call::Color4uiv(..)
+                | Call::SecondaryColor3b(..)
+                | Call::SecondaryColor3s(..)
+                | Call::SecondaryColor3i(..)
+                | Call::SecondaryColor3f(..)
+                | Call::SecondaryColor3d(..)
+                | Call::SecondaryColor3ub(..)
+                | Call::SecondaryColor3us(..)
+                | Call::SecondaryColor3ui(..)
+                | Call::SecondaryColor3bv(..)
+                | Call::SecondaryColor3sv(..)
+                | Call::SecondaryColor3iv(..)
+                | Call::SecondaryColor3fv(..)
+                | Call::SecondaryColor3dv(..)
+                | Call::SecondaryColor3ubv(..)
+                | Call::SecondaryColor3usv(..)
+                | Call::SecondaryColor3uiv(..)
+                | Call::TexCoord1s(..)
+                | Call::TexCoord1i(..)
+                | Call::TexCoord1f(..)
+                | Call::TexCoord1d(..)
+                | Call::TexCoord2s(..)
+                | Call::TexCoord2i(..)
+                | Call::TexCoord2f(..)
+                | Call::TexCoord2d(..)
+                | Call::TexCoord3s(..)
+                | Call::TexCoord3i(..)
+                | Call::TexCoord3f(..)
+                | Call::TexCoord3d(..)
+                | Call::TexCoord4s(..)
+                | Call::TexCoord4i(..)
+                | Call::TexCoord4f(..)
+                | Call::TexCoord4d(..)
+                | Call::TexCoord1sv(..)
+                | Call::TexCoord1iv(..)
+                | Call::TexCoord1fv(..)
+                | Call::TexCoord1dv(..)
+                | Call::TexCoord2sv(..)
+                | Call::TexCoord2iv(..)
+                | Call::TexCoord2fv(..)
+                | Call::TexCoord2dv(..)
+                | Call::TexCoord3sv(..)
+                | Call::TexCoord3iv(..)
+                | Call::TexCoord3fv(..)
+                | Call::TexCoord3dv(..)
+                | Call::TexCoord4sv(..)
+                | Call::TexCoord4iv(..)
+                | Call::TexCoord4fv(..)
+                | Call::TexCoord4dv(..)
+                | Call::FogCoordf(..)
+                | Call::FogCoordd(..)
+                | Call::FogCoordfv(..)
+                | Call::FogCoorddv(..)
+                | Call::EdgeFlag(..)
+                | Call::EdgeFlagv(..)
+                | Call::Materialf(..)
+                | Call::Materiali(..)
+                | Call::Materialfv(..)
+                | Call::Materialiv(..)
+                | Call::CallList(..)
+                | Call::CallLists(..)
+                | Call::ArrayElement(..)
+        )
+    }
 }
 
 // --- lists: which calls a display list does not hold (GL 2.1 §5.4)

@@ -107,6 +107,13 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         // --- lists
         "NewList" | "CallLists" => &[Plain, Enum],
         // --- end lists
+        // --- fragment ops
+        "BlendFuncSeparate" => &[Blend, Blend, Blend, Blend],
+        "BlendEquationSeparate" => &[Enum, Enum],
+        "StencilFuncSeparate" => &[Enum, Enum],
+        "StencilOpSeparate" => &[Enum, Enum, Enum, Enum],
+        "StencilMaskSeparate" => &[Enum],
+        // --- end fragment ops
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],
     }

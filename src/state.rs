@@ -371,6 +371,14 @@ pub struct State {
     // --- arrays (src/arrays.rs): vertex arrays (tables 6.6 to 6.8), buffer objects (§2.9)
     pub arrays: crate::arrays::ArrayState,
     // --- end arrays
+    // --- fragment ops (context/fragment.rs): their own structs, one line each for PushAttrib
+    pub fog: Fog,
+    pub alpha: AlphaTest,
+    pub stencil: Stencil,
+    pub blend: Blend,
+    /// `LOGIC_OP_MODE` (table 6.21).
+    pub logic_op: u32,
+    // --- end fragment ops
 }
 
 impl State {
@@ -413,7 +421,8 @@ impl State {
             depth_func: gl::LESS,
             color_mask: [true; 4],
             depth_mask: true,
-            stencil_writemask: u32::MAX,
+            // fragment ops: "1's" for the 8-bit stencil buffer, 0xFF as the driver reports it.
+            stencil_writemask: 0xFF,
             clear_color: Vec4::ZERO,
             clear_depth: 1.0,
             clear_stencil: 0,
@@ -426,6 +435,13 @@ impl State {
             // --- arrays
             arrays: crate::arrays::ArrayState::default(),
             // --- end arrays
+            // --- fragment ops
+            fog: Fog::default(),
+            alpha: AlphaTest::default(),
+            stencil: Stencil::default(),
+            blend: Blend::default(),
+            logic_op: gl::COPY,
+            // --- end fragment ops
         }
     }
 
@@ -447,3 +463,130 @@ impl State {
         }
     }
 }
+
+// --- fragment ops (context/fragment.rs, cpu/fragment.rs)
+
+/// Fog parameters (GL 2.1 §3.10, table 6.8).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fog {
+    /// `FOG_MODE`: LINEAR, EXP or EXP2.
+    pub mode: u32,
+    pub density: f32,
+    pub start: f32,
+    pub end: f32,
+    /// `FOG_COLOR`, clamped to [0, 1] when specified.
+    pub color: Vec4,
+    /// `FOG_INDEX` (colour-index mode only; kept for queries).
+    pub index: f32,
+    /// `FOG_COORD_SRC`: FRAGMENT_DEPTH or FOG_COORD.
+    pub coord_src: u32,
+}
+
+impl Default for Fog {
+    fn default() -> Self {
+        Self {
+            mode: gl::EXP,
+            density: 1.0,
+            start: 0.0,
+            end: 1.0,
+            color: Vec4::ZERO,
+            index: 0.0,
+            coord_src: gl::FRAGMENT_DEPTH,
+        }
+    }
+}
+
+/// The alpha test (GL 2.1 §4.1.4, table 6.20).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaTest {
+    /// `ALPHA_TEST_FUNC`.
+    pub func: u32,
+    /// `ALPHA_TEST_REF`, clamped to [0, 1] when specified.
+    pub reference: f32,
+}
+
+impl Default for AlphaTest {
+    fn default() -> Self {
+        Self {
+            func: gl::ALWAYS,
+            reference: 0.0,
+        }
+    }
+}
+
+/// One face's stencil function and operations (GL 2.1 §4.1.5, table 6.20).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StencilFace {
+    /// `STENCIL_FUNC`.
+    pub func: u32,
+    /// `STENCIL_REF` as given (clamped to [0, 2^8 - 1] where it is used and queried).
+    pub reference: i32,
+    /// `STENCIL_VALUE_MASK`: initially "1's" (table 6.20), the 8 bits of the stencil buffer.
+    pub value_mask: u32,
+    /// `STENCIL_FAIL`.
+    pub fail: u32,
+    /// `STENCIL_PASS_DEPTH_FAIL`.
+    pub zfail: u32,
+    /// `STENCIL_PASS_DEPTH_PASS`.
+    pub zpass: u32,
+}
+
+impl Default for StencilFace {
+    fn default() -> Self {
+        Self {
+            func: gl::ALWAYS,
+            reference: 0,
+            value_mask: 0xFF,
+            fail: gl::KEEP,
+            zfail: gl::KEEP,
+            zpass: gl::KEEP,
+        }
+    }
+}
+
+/// Stencil test state (GL 2.1 §4.1.5); the front write mask is `State::stencil_writemask`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stencil {
+    /// `[FRONT]`, `[BACK]` (STENCIL_* and STENCIL_BACK_*).
+    pub faces: [StencilFace; 2],
+    /// `STENCIL_BACK_WRITEMASK`.
+    pub back_writemask: u32,
+}
+
+impl Default for Stencil {
+    fn default() -> Self {
+        Self {
+            faces: [StencilFace::default(); 2],
+            back_writemask: 0xFF,
+        }
+    }
+}
+
+/// Blending (GL 2.1 §4.1.8, table 6.21).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Blend {
+    pub src_rgb: u32,
+    pub dst_rgb: u32,
+    pub src_alpha: u32,
+    pub dst_alpha: u32,
+    /// `BLEND_EQUATION_RGB` (= `BLEND_EQUATION`).
+    pub equation_rgb: u32,
+    pub equation_alpha: u32,
+    /// `BLEND_COLOR`, clamped to [0, 1] when specified.
+    pub color: Vec4,
+}
+
+impl Default for Blend {
+    fn default() -> Self {
+        Self {
+            src_rgb: gl::ONE,
+            dst_rgb: gl::ZERO,
+            src_alpha: gl::ONE,
+            dst_alpha: gl::ZERO,
+            equation_rgb: gl::FUNC_ADD,
+            equation_alpha: gl::FUNC_ADD,
+            color: Vec4::ZERO,
+        }
+    }
+}
+// --- end fragment ops

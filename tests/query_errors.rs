@@ -223,14 +223,17 @@ fn a_zero_axis_rotation_is_no_error() {
 }
 
 #[test]
-fn client_active_texture_is_client_state() {
-    // No INVALID_OPERATION between Begin and End (reference page; Mesa agrees).
+fn client_active_texture_is_not_allowed_between_begin_and_end() {
+    // GL 2.1 §2.6.3 does not list it, and Mesa's llvmpipe raises INVALID_OPERATION there.
     let mut c = ctx();
     c.begin(gl::POINTS);
     c.client_active_texture(gl::TEXTURE3);
     c.end();
-    assert_eq!(c.get_error(), gl::NO_ERROR);
+    assert_eq!(c.get_error(), gl::INVALID_OPERATION);
     let mut unit = [0];
+    c.get_integerv(gl::CLIENT_ACTIVE_TEXTURE, &mut unit);
+    assert_eq!(unit, [gl::TEXTURE0 as i32], "unchanged");
+    c.client_active_texture(gl::TEXTURE3);
     c.get_integerv(gl::CLIENT_ACTIVE_TEXTURE, &mut unit);
     assert_eq!(unit, [(gl::TEXTURE0 + 3) as i32]);
 }

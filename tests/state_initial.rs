@@ -156,11 +156,12 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(DITHER, B(&[true])),
     row!(INDEX_LOGIC_OP, B(&[false])),
     row!(COLOR_LOGIC_OP, B(&[false])),
-    // Table 6.22: framebuffer control (STENCIL_WRITEMASK: "1's", all bits set; as GLint that is -1).
+    // Table 6.22: framebuffer control (STENCIL_WRITEMASK: "1's", the stencil buffer's 8 bits, as
+    // the driver reports it).
     row!(COLOR_WRITEMASK, B(&[true, true, true, true])),
     row!(COLOR_WRITEMASK, I(&[1, 1, 1, 1])),
     row!(DEPTH_WRITEMASK, B(&[true])),
-    row!(STENCIL_WRITEMASK, I(&[-1])),
+    row!(STENCIL_WRITEMASK, I(&[255])),
     row!(COLOR_CLEAR_VALUE, F(&[0.0, 0.0, 0.0, 0.0])),
     row!(COLOR_CLEAR_VALUE, I(&[0, 0, 0, 0])),
     row!(DEPTH_CLEAR_VALUE, D(&[1.0])),

@@ -176,7 +176,8 @@ impl Context {
             gl::DEPTH_FUNC => e(s.depth_func),
             gl::COLOR_WRITEMASK => bools(s.color_mask),
             gl::DEPTH_WRITEMASK => b(s.depth_mask),
-            gl::STENCIL_WRITEMASK => i(s.stencil_writemask as i32),
+            // fragment ops: masks are unsigned; past i32::MAX GetIntegerv saturates (§6.1.2).
+            gl::STENCIL_WRITEMASK => e(s.stencil_writemask),
             gl::COLOR_CLEAR_VALUE => norm(s.clear_color.to_array()),
             gl::DEPTH_CLEAR_VALUE => Value::new(Kind::Normalized, [s.clear_depth]),
             gl::STENCIL_CLEAR_VALUE => i(s.clear_stencil),
@@ -273,6 +274,38 @@ impl Context {
             gl::ELEMENT_ARRAY_BUFFER_BINDING => e(s.arrays.element_array_buffer),
             gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => i(crate::arrays::MAX_ELEMENTS),
             // --- end arrays
+            // --- fragment ops (tables 6.8, 6.20, 6.21)
+            gl::FOG_MODE => e(s.fog.mode),
+            gl::FOG_DENSITY => f(s.fog.density),
+            gl::FOG_START => f(s.fog.start),
+            gl::FOG_END => f(s.fog.end),
+            gl::FOG_INDEX => f(s.fog.index),
+            gl::FOG_COLOR => norm(s.fog.color.to_array()),
+            gl::FOG_COORD_SRC => e(s.fog.coord_src),
+            gl::ALPHA_TEST_FUNC => e(s.alpha.func),
+            gl::ALPHA_TEST_REF => norm([s.alpha.reference]),
+            gl::STENCIL_FUNC => e(s.stencil.faces[FRONT].func),
+            gl::STENCIL_REF => i(stencil_ref(s.stencil.faces[FRONT].reference)),
+            gl::STENCIL_VALUE_MASK => e(s.stencil.faces[FRONT].value_mask),
+            gl::STENCIL_FAIL => e(s.stencil.faces[FRONT].fail),
+            gl::STENCIL_PASS_DEPTH_FAIL => e(s.stencil.faces[FRONT].zfail),
+            gl::STENCIL_PASS_DEPTH_PASS => e(s.stencil.faces[FRONT].zpass),
+            gl::STENCIL_BACK_FUNC => e(s.stencil.faces[BACK].func),
+            gl::STENCIL_BACK_REF => i(stencil_ref(s.stencil.faces[BACK].reference)),
+            gl::STENCIL_BACK_VALUE_MASK => e(s.stencil.faces[BACK].value_mask),
+            gl::STENCIL_BACK_FAIL => e(s.stencil.faces[BACK].fail),
+            gl::STENCIL_BACK_PASS_DEPTH_FAIL => e(s.stencil.faces[BACK].zfail),
+            gl::STENCIL_BACK_PASS_DEPTH_PASS => e(s.stencil.faces[BACK].zpass),
+            gl::STENCIL_BACK_WRITEMASK => e(s.stencil.back_writemask),
+            gl::BLEND_SRC | gl::BLEND_SRC_RGB => e(s.blend.src_rgb),
+            gl::BLEND_DST | gl::BLEND_DST_RGB => e(s.blend.dst_rgb),
+            gl::BLEND_SRC_ALPHA => e(s.blend.src_alpha),
+            gl::BLEND_DST_ALPHA => e(s.blend.dst_alpha),
+            gl::BLEND_EQUATION_RGB => e(s.blend.equation_rgb),
+            gl::BLEND_EQUATION_ALPHA => e(s.blend.equation_alpha),
+            gl::BLEND_COLOR => norm(s.blend.color.to_array()),
+            gl::LOGIC_OP_MODE => e(s.logic_op),
+            // --- end fragment ops
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)
@@ -462,3 +495,10 @@ fn material_param(m: &Material, pname: u32) -> Option<Value> {
         _ => return None,
     })
 }
+
+// --- fragment ops
+/// STENCIL_REF as queried: the reference clamped to [0, 2^8 - 1] (GL 2.1 §4.1.5).
+fn stencil_ref(r: i32) -> i32 {
+    r.clamp(0, 255)
+}
+// --- end fragment ops

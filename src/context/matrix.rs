@@ -328,6 +328,10 @@ impl Context {
     /// lists none) and nothing is flushed, since no batched vertex depends on it.
     pub fn client_active_texture(&mut self, texture: u32) {
         record!(self, Call::ClientActiveTexture(texture));
+        // Not in GL 2.1 §2.6.3's list of commands allowed between Begin and End (Mesa agrees).
+        if self.begin_mode.is_some() {
+            return self.error(gl::INVALID_OPERATION);
+        }
         match texture_unit(texture) {
             Some(unit) => self.state.client_active_texture = unit,
             None => self.error(gl::INVALID_ENUM),

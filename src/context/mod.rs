@@ -467,6 +467,25 @@ impl Context {
             Call::BufferData(a, b, ref p, d) => self.buffer_data(a, b, (**p).clone(), d),
             Call::BufferSubData(a, b, c, ref p) => self.buffer_sub_data(a, b, c, (**p).clone()),
             // --- end arrays
+            // --- fragment ops (context/fragment.rs)
+            Call::Fogf(p, v) => self.fogf(p, v),
+            Call::Fogi(p, v) => self.fogi(p, v),
+            Call::Fogfv(p, ref v) => self.fogfv(p, v),
+            Call::Fogiv(p, ref v) => self.fogiv(p, v),
+            Call::AlphaFunc(f, r) => self.alpha_func(f, r),
+            Call::StencilFunc(f, r, m) => self.stencil_func(f, r, m),
+            Call::StencilFuncSeparate(face, f, r, m) => self.stencil_func_separate(face, f, r, m),
+            Call::StencilOp(a, b, c) => self.stencil_op(a, b, c),
+            Call::StencilOpSeparate(face, a, b, c) => self.stencil_op_separate(face, a, b, c),
+            Call::StencilMask(m) => self.stencil_mask(m),
+            Call::StencilMaskSeparate(face, m) => self.stencil_mask_separate(face, m),
+            Call::BlendFunc(s, d) => self.blend_func(s, d),
+            Call::BlendFuncSeparate(a, b, c, d) => self.blend_func_separate(a, b, c, d),
+            Call::BlendEquation(m) => self.blend_equation(m),
+            Call::BlendEquationSeparate(a, b) => self.blend_equation_separate(a, b),
+            Call::BlendColor(r, g, b, a) => self.blend_color(r, g, b, a),
+            Call::LogicOp(op) => self.logic_op(op),
+            // --- end fragment ops
         }
     }
 
@@ -550,3 +569,6 @@ pub use lists::MAX_LIST_NESTING;
 #[allow(unused_imports)] // The GL backend reads CallLists arrays as the front end does.
 pub(crate) use lists::{name_offset, name_size};
 // --- end lists
+// --- fragment ops: Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
+mod fragment;
+// --- end fragment ops

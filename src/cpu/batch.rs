@@ -50,6 +50,10 @@ pub struct Batch {
     pub edge: Vec<bool>,
     /// Index into `snapshots`; meaningful only when `snapshots` is not empty.
     pub mat: Vec<u32>,
+    // --- fragment ops
+    /// Current fog coordinate (FOG_COORD_SRC = FOG_COORD, §3.10).
+    pub fog: Vec<f32>,
+    // --- end fragment ops
     /// The primitives, in call order.
     pub prims: Vec<Prim>,
     /// Material snapshots; empty when no Material call happened inside Begin/End in this batch,
@@ -73,6 +77,7 @@ impl Default for Batch {
             tex: Vec::new(),
             edge: Vec::new(),
             mat: Vec::new(),
+            fog: Vec::new(), // fragment ops
             prims: Vec::new(),
             snapshots: Vec::new(),
             base: None,
@@ -131,6 +136,8 @@ impl Batch {
             && same4(self.tex[hit], c.tex_coords[0])
             && self.edge[hit] == c.edge_flag
             && self.mat[hit] == self.cur_mat
+            && self.fog[hit].to_bits() == c.fog_coord.to_bits()
+        // fragment ops
         {
             self.idx.push(hit as u32);
             return;
@@ -145,6 +152,7 @@ impl Batch {
         self.tex.push(c.tex_coords[0]);
         self.edge.push(c.edge_flag);
         self.mat.push(self.cur_mat);
+        self.fog.push(c.fog_coord); // fragment ops
     }
 
     /// Closes the open primitive; an empty one is dropped.
@@ -189,6 +197,7 @@ impl Batch {
         self.tex.clear();
         self.edge.clear();
         self.mat.clear();
+        self.fog.clear(); // fragment ops
         self.prims.clear();
         if !self.snapshots.is_empty() {
             self.base = self.snapshots.last().copied();

@@ -1,14 +1,19 @@
-//! Per-fragment operations in the spec's order (GL 2.1 §3.9 colour sum, §4.1 per-fragment
-//! operations): the scissor test (already applied as the rasteriser's rectangle), the depth test
-//! with DepthFunc and DepthMask, then the colour write through ColorMask.
+//! Per-fragment operations in the spec's order (GL 2.1 §3.9 colour sum, §3.10 fog, §4.1
+//! per-fragment operations): the scissor test (already applied as the rasteriser's rectangle),
+//! the alpha test, the stencil test, the depth test with DepthFunc and DepthMask, blending or
+//! the logical operation, then the colour write through ColorMask (the operations themselves
+//! are in `fragops`). Dithering is never done (GL 2.1 §4.1.9 allows it; llvmpipe does not).
 //!
-//! Design decision: a triangle row arrives as a span; the depth test runs over the whole span
-//! first and produces a coverage mask, and colours are computed only for the surviving pixels,
-//! returning at once when the mask is empty (Mesa `swrast/s_span.h`). Texture, fog, alpha,
-//! stencil and blending slot in as further passes over the same mask.
+//! Design decision: two routines, chosen once per span (never per pixel). With no fog, alpha,
+//! stencil, blend or logic op enabled (`FragCtx::ops` is `None`, as in the lecture's surface
+//! scenes), the depth test runs over the whole span first and produces a coverage mask, and
+//! colours are computed only for the surviving pixels, returning at once when the mask is empty
+//! (Mesa `swrast/s_span.h`). Otherwise every pixel takes the full sequence, in spec order,
+//! because the alpha test needs the colour before the stencil and depth tests may write.
 
 use glam::{Vec3, Vec4};
 
+use super::fragops::{compare, Combine, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_PHONG};
 use super::vertex::Lighting;
@@ -37,6 +42,8 @@ pub struct FragCtx<'a> {
     /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
     /// reaches the colour write (tests count coverage with it).
     pub count: bool,
+    /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
+    pub ops: Option<Ops>,
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -45,6 +52,8 @@ pub struct TileBufs<'a> {
     pub color: &'a mut [[u8; 4]],
     /// Depth, `TILE * TILE`.
     pub depth: &'a mut [u32],
+    /// Stencil, `TILE * TILE`.
+    pub stencil: &'a mut [u8],
     /// Tile origin x.
     pub x: i32,
     /// Tile origin y.
@@ -109,6 +118,8 @@ impl FragCtx<'_> {
                 }
             }
         }
+        // --- texturing slot (§3.8.13): the texture environment applies to `c` here, before
+        // the colour sum (§3.9) and fog (§3.10, in `full`).
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
@@ -119,6 +130,12 @@ impl FragCtx<'_> {
     #[inline(always)]
     fn write(&self, bufs: &mut TileBufs, i: usize, c: Vec4) {
         let px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
+        self.store(bufs, i, px);
+    }
+
+    /// Writes unorm8 colour `px` at tile index `i` through ColorMask (§4.2.2).
+    #[inline(always)]
+    fn store(&self, bufs: &mut TileBufs, i: usize, px: [u8; 4]) {
         let Some(dst) = bufs.color.get_mut(i) else {
             return;
         };
@@ -135,9 +152,81 @@ impl FragCtx<'_> {
         }
     }
 
+    /// The full sequence for one fragment with colour `c` (before clamping) and fog coordinate
+    /// `fogc` at tile index `i`: clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil and
+    /// depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn full(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        i: usize,
+        z: f64,
+        c: Vec4,
+        fogc: f32,
+    ) {
+        let mut c = c.clamp(Vec4::ZERO, Vec4::ONE);
+        // (Texturing, §3.8, is applied by `color` before the colour sum.)
+        if let Some(fog) = &ops.fog {
+            c = fog.apply(c, fogc);
+        }
+        if let Some((func, reference)) = ops.alpha {
+            if !compare(func, unorm8(c.w), reference) {
+                return;
+            }
+        }
+        if let Some(sides) = &ops.stencil {
+            let side = &sides[usize::from(p.flags & F_BACK != 0)];
+            let Some(&s) = bufs.stencil.get(i) else {
+                return;
+            };
+            let (pass, which) = if !side.test(s) {
+                (false, 0)
+            } else if !self.depth(bufs, i, z) {
+                (false, 1)
+            } else {
+                (true, 2)
+            };
+            if let Some(st) = bufs.stencil.get_mut(i) {
+                *st = side.update(which, s);
+            }
+            if !pass {
+                return;
+            }
+        } else if !self.depth(bufs, i, z) {
+            return;
+        }
+        let src = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
+        let px = match ops.combine {
+            Combine::Replace => src,
+            Combine::Blend(b) => match bufs.color.get(i) {
+                Some(&d) => b.apply(src, d),
+                None => return,
+            },
+            Combine::Logic(op) => match bufs.color.get(i) {
+                Some(&d) => std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k])),
+                None => return,
+            },
+        };
+        self.store(bufs, i, px);
+    }
+
+    /// The fog coordinate among varyings `v` (0 when fog is off).
+    #[inline(always)]
+    fn fog_coord(&self, v: &[f32]) -> f32 {
+        self.rl.fog.and_then(|o| v.get(o).copied()).unwrap_or(0.0)
+    }
+
     /// One fragment of a line or point at window pixel (x, y).
     pub fn fragment(&self, bufs: &mut TileBufs, p: &RPrim, x: i32, y: i32, z: f64, v: &[f32]) {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
+        if let Some(ops) = &self.ops {
+            let c = self.color(p, v);
+            self.full(ops, bufs, p, i, z, c, self.fog_coord(v));
+            return;
+        }
         if self.depth(bufs, i, z) {
             let c = self.color(p, v);
             self.write(bufs, i, c);
@@ -161,6 +250,9 @@ impl FragCtx<'_> {
         let row = ((y - bufs.y) as usize) * TILE;
         let base = row + (x0 - bufs.x) as usize;
         let n = (x1 - x0 + 1) as usize;
+        if let Some(ops) = &self.ops {
+            return self.full_span(ops, bufs, p, planes, fy, zrow, base, x0, n);
+        }
         // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits).
         let mut mask: u64 = 0;
         for k in 0..n.min(64) {
@@ -223,6 +315,44 @@ impl FragCtx<'_> {
             }
             let c = self.color(p, &v[..nv]);
             self.write(bufs, base + k, c);
+        }
+    }
+
+    /// A span through the full sequence (`ops` enabled): every pixel in order.
+    #[allow(clippy::too_many_arguments)]
+    fn full_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+    ) {
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; super::setup::MAXV];
+        let nv = self.rl.n.min(v.len());
+        for k in 0..n.min(TILE) {
+            let fx = (x0 - ox + k as i32) as f32;
+            let z = zrow + p.z[1] * fx;
+            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let o = 3 + 3 * j;
+                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
+                *vj = if j < nflat { val } else { val * inv };
+            }
+            let c = self.color(p, &v[..nv]);
+            let fogc = self.fog_coord(&v[..nv]);
+            self.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
         }
     }
 }

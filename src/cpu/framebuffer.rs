@@ -161,11 +161,18 @@ pub fn scissor_rect(state: &State) -> [i32; 4] {
     r
 }
 
-/// Float colour component to unorm8 by round-to-nearest, as llvmpipe does (GL 2.1 §2.14.9);
-/// `c` is expected in [0, 1] (NaN gives 0).
+/// Float colour component to unorm8 (GL 2.1 §2.14.9), clamped to [0, 1] (NaN gives 0).
+///
+/// fragment ops: exactly llvmpipe's conversion (and Mesa's `float_to_ubyte`, used for clears):
+/// `c·(255/256)` in single precision, then rounded to a multiple of 1/256 by adding 2^15 (whose
+/// ulp is 2^-8), ties to even. It is `round(255·c)` except at ties after the f32 product, where
+/// it goes to even: 0.3 and 0.7 give 76 and 178, not 77 and 179 (measured against the driver).
 #[inline(always)]
 pub fn unorm8(c: f32) -> u8 {
-    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+    // NaN gives 0 (`clamp` would keep it).
+    let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
+    let t = c * (255.0 / 256.0) + 32768.0;
+    (t.to_bits() & 0xFF) as u8
 }
 
 /// Window z in [0, 1] to the 24-bit depth buffer value, round-to-nearest (GL 2.1 §2.11.1).

@@ -21,6 +21,7 @@ pub mod assembly;
 pub mod batch;
 pub mod clip;
 pub mod fragment;
+pub mod fragops;
 pub mod framebuffer;
 mod line;
 pub mod raster;
@@ -176,6 +177,7 @@ impl Renderer {
             lighting: lighting.as_ref(),
             mats,
             count: *count_coverage,
+            ops: fragops::Ops::new(state),
         };
         let nw = if batch.idx.len() >= PARALLEL_SETUP {
             // More workers than threads balances the load when other processes share the cores.
@@ -294,8 +296,9 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
     fb.color
         .par_chunks_mut(TILE_PIXELS)
         .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
+        .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
         .enumerate()
-        .for_each(|(t, (color, depth))| {
+        .for_each(|(t, ((color, depth), stencil))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
@@ -305,6 +308,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
             let mut bufs = TileBufs {
                 color,
                 depth,
+                stencil,
                 x: ((t % tiles_x) * TILE) as i32,
                 y: ((t / tiles_x) * TILE) as i32,
             };

@@ -33,6 +33,8 @@ pub struct RLayout {
     pub tex: Option<usize>,
     /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
     pub phong: Option<usize>,
+    /// Fog coordinate (one float; fragment ops).
+    pub fog: Option<usize>,
 }
 
 impl RLayout {
@@ -53,6 +55,12 @@ impl RLayout {
             r.phong = Some(r.n);
             r.n += 10;
         }
+        // --- fragment ops
+        if l.fog.is_some() {
+            r.fog = Some(r.n);
+            r.n += 1;
+        }
+        // --- end fragment ops
         r
     }
 }
@@ -406,6 +414,10 @@ impl Worker {
             }
             copy(&mut w.v, d + 3, v, n, 3);
             copy(&mut w.v, d + 6, csrc, r, 4);
+        }
+        // --- fragment ops: the fog coordinate is never flat (§3.10 interpolates it).
+        if let (Some(d), Some(s)) = (rl.fog, l.fog) {
+            copy(&mut w.v, d, v, s, 1);
         }
     }
 

@@ -36,6 +36,10 @@ pub struct Layout {
     pub nrm: Option<usize>,
     /// Unlit vertex colour, for COLOR_MATERIAL under per-fragment lighting.
     pub raw: Option<usize>,
+    // --- fragment ops
+    /// Fog coordinate c (one float), when FOG is enabled (§3.10).
+    pub fog: Option<usize>,
+    // --- end fragment ops
 }
 
 impl Layout {
@@ -77,6 +81,11 @@ impl Layout {
             l.nrm = take(3);
             l.raw = take(4);
         }
+        // --- fragment ops
+        if state.enables.fog {
+            l.fog = take(1);
+        }
+        // --- end fragment ops
         l.stride = n;
         l
     }
@@ -421,6 +430,19 @@ impl Lit<'_> {
                 if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
                     put(o, t, tc);
                 }
+                // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
+                // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
+                if let Some(f) = l.fog {
+                    let c = if state.fog.coord_src == gl::FOG_COORD {
+                        b.fog.get(i).copied().unwrap_or(0.0)
+                    } else {
+                        eye.z
+                    };
+                    if let Some(d) = o.get_mut(f) {
+                        *d = c.abs();
+                    }
+                }
+                // --- end fragment ops
                 if self.lighting.is_none() {
                     put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
                     if let Some(s) = l.spec {

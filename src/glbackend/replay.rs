@@ -27,6 +27,13 @@ impl GlBackend {
         }
         // lists: the mirror of the display list being defined (lists.rs).
         self.mirror_call(call);
+        // GL 2.1 §2.6.3, raised here rather than by the driver: inside Begin/End the driver's
+        // error flag cannot be read, so an error it held could not be ordered against one this
+        // backend raises itself (a short slice, an array element it refuses to read).
+        if self.inside_begin_end && !call.allowed_between_begin_end() {
+            self.list_needs_expansion();
+            return self.raise(gl::INVALID_OPERATION);
+        }
         let gl = &self.raw;
         // SAFETY: the context is current on this thread (GlBackend is not Send) and every pointer
         // passed below points to at least as many elements as the driver reads for the call.
@@ -295,6 +302,49 @@ impl GlBackend {
             | Call::BufferData(..)
             | Call::BufferSubData(..) => self.arrays_call(call),
             // --- end arrays
+            // --- fragment ops
+            // GL 2.1 (glFog reference page) takes FOG_COLOR only through the vector forms; Mesa
+            // also takes it here. Raised here as for Begin, so both backends agree.
+            Call::Fogf(gl::FOG_COLOR, _) | Call::Fogi(gl::FOG_COLOR, _)
+                if !self.inside_begin_end =>
+            {
+                self.raise(gl::INVALID_ENUM)
+            }
+            Call::Fogf(p, v) => unsafe { gl.Fogf(p, v) },
+            Call::Fogi(p, v) => unsafe { gl.Fogi(p, v) },
+            Call::Fogfv(p, ref v) => {
+                self.with_params(v, params::fog(p), false, |gl, v| unsafe { gl.Fogfv(p, v) })
+            }
+            Call::Fogiv(p, ref v) => {
+                self.with_params(v, params::fog(p), false, |gl, v| unsafe { gl.Fogiv(p, v) })
+            }
+            Call::AlphaFunc(f, r) => unsafe { gl.AlphaFunc(f, r) },
+            Call::StencilFunc(f, r, m) => unsafe { gl.StencilFunc(f, r, m) },
+            Call::StencilFuncSeparate(face, f, r, m) => unsafe {
+                gl.StencilFuncSeparate(face, f, r, m)
+            },
+            Call::StencilOp(a, b, c) => unsafe { gl.StencilOp(a, b, c) },
+            Call::StencilOpSeparate(face, a, b, c) => unsafe {
+                gl.StencilOpSeparate(face, a, b, c)
+            },
+            Call::StencilMask(m) => unsafe { gl.StencilMask(m) },
+            Call::StencilMaskSeparate(face, m) => unsafe { gl.StencilMaskSeparate(face, m) },
+            // SRC_ALPHA_SATURATE is a source factor only in GL 2.1 (§4.1.8); a driver with
+            // ARB_blend_func_extended takes it as a destination too.
+            Call::BlendFunc(_, gl::SRC_ALPHA_SATURATE)
+            | Call::BlendFuncSeparate(_, gl::SRC_ALPHA_SATURATE, _, _)
+            | Call::BlendFuncSeparate(_, _, _, gl::SRC_ALPHA_SATURATE)
+                if !self.inside_begin_end =>
+            {
+                self.raise(gl::INVALID_ENUM)
+            }
+            Call::BlendFunc(s, d) => unsafe { gl.BlendFunc(s, d) },
+            Call::BlendFuncSeparate(a, b, c, d) => unsafe { gl.BlendFuncSeparate(a, b, c, d) },
+            Call::BlendEquation(m) => unsafe { gl.BlendEquation(m) },
+            Call::BlendEquationSeparate(a, b) => unsafe { gl.BlendEquationSeparate(a, b) },
+            Call::BlendColor(r, g, b, a) => unsafe { gl.BlendColor(r, g, b, a) },
+            Call::LogicOp(op) => unsafe { gl.LogicOp(op) },
+            // --- end fragment ops
         }
     }
 

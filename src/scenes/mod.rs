@@ -23,6 +23,9 @@ pub mod lists;
 // --- arrays: seed 004's VBO/EBO examples
 pub mod arrays;
 // --- end arrays
+// --- fragment ops
+pub mod fragment;
+// --- end fragment ops
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -104,6 +107,12 @@ static SCENES: &[Scene] = &[
     arrays::SCENES[0],
     arrays::SCENES[1],
     // --- end arrays
+    // --- fragment ops
+    fragment::SCENES[0],
+    fragment::SCENES[1],
+    fragment::SCENES[2],
+    fragment::SCENES[3],
+    // --- end fragment ops
 ];
 
 /// Every registered scene, in listing order.

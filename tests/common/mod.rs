@@ -10,7 +10,7 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = ARRAY_BASE + ARRAY_VARIANTS;
+pub const VARIANTS: usize = FRAGMENT_BASE + FRAGMENT_VARIANTS;
 
 // --- arrays
 /// The first of the arrays area's variant numbers (tests that fuzz only array calls use it).
@@ -18,6 +18,12 @@ pub const ARRAY_BASE: usize = 168;
 /// The arrays area's variants, numbered from `ARRAY_BASE`.
 pub const ARRAY_VARIANTS: usize = 19;
 // --- end arrays
+// --- fragment ops
+/// The first of the fragment-ops area's variant numbers.
+pub const FRAGMENT_BASE: usize = ARRAY_BASE + ARRAY_VARIANTS;
+/// The fragment-ops area's variants, numbered from `FRAGMENT_BASE`.
+pub const FRAGMENT_VARIANTS: usize = 17;
+// --- end fragment ops
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -111,6 +117,32 @@ pub const ENUMS: &[u32] = &[
     gl::LIGHTING_BIT | gl::ENABLE_BIT,
     gl::ALL_ATTRIB_BITS,
     // --- end lists
+    // --- fragment ops
+    gl::FOG_MODE,
+    gl::FOG_DENSITY,
+    gl::FOG_COLOR,
+    gl::FOG_COORD_SRC,
+    gl::FOG_COORD,
+    gl::FRAGMENT_DEPTH,
+    gl::LINEAR,
+    gl::EXP,
+    gl::EXP2,
+    gl::KEEP,
+    gl::INCR_WRAP,
+    gl::DECR_WRAP,
+    gl::INVERT,
+    gl::SRC_ALPHA,
+    gl::ONE_MINUS_SRC_ALPHA,
+    gl::SRC_ALPHA_SATURATE,
+    gl::CONSTANT_COLOR,
+    gl::FUNC_ADD,
+    gl::FUNC_REVERSE_SUBTRACT,
+    gl::MIN,
+    gl::MAX,
+    gl::CLEAR,
+    gl::SET,
+    gl::SET + 1,
+    // --- end fragment ops
     0,
     1,
     u32::MAX,
@@ -407,6 +439,11 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         // --- arrays
         k @ ARRAY_BASE.. if k < ARRAY_BASE + ARRAY_VARIANTS => array_call(k - ARRAY_BASE, p),
         // --- end arrays
+        // --- fragment ops
+        k @ FRAGMENT_BASE.. if k < FRAGMENT_BASE + FRAGMENT_VARIANTS => {
+            fragment_call(k - FRAGMENT_BASE, p)
+        }
+        // --- end fragment ops
         _ => Call::End,
     }
 }
@@ -449,3 +486,28 @@ fn array_call(k: usize, p: &Pool) -> Call {
     }
 }
 // --- end arrays
+
+// --- fragment ops
+/// The fragment-ops area's variant `k` (0-based).
+fn fragment_call(k: usize, p: &Pool) -> Call {
+    match k {
+        0 => Call::Fogf(p.e[0], p.f[1]),
+        1 => Call::Fogi(p.e[0], p.i[1]),
+        2 => Call::Fogfv(p.e[0], p.vf.clone()),
+        3 => Call::Fogiv(p.e[0], p.vi.clone()),
+        4 => Call::AlphaFunc(p.e[0], p.f[1]),
+        5 => Call::StencilFunc(p.e[0], p.i[1], p.e[2]),
+        6 => Call::StencilFuncSeparate(p.e[0], p.e[1], p.i[2], p.e[3]),
+        7 => Call::StencilOp(p.e[0], p.e[1], p.e[2]),
+        8 => Call::StencilOpSeparate(p.e[0], p.e[1], p.e[2], p.e[3]),
+        9 => Call::StencilMask(p.e[0]),
+        10 => Call::StencilMaskSeparate(p.e[0], p.e[1]),
+        11 => Call::BlendFunc(p.e[0], p.e[1]),
+        12 => Call::BlendFuncSeparate(p.e[0], p.e[1], p.e[2], p.e[3]),
+        13 => Call::BlendEquation(p.e[0]),
+        14 => Call::BlendEquationSeparate(p.e[0], p.e[1]),
+        15 => Call::BlendColor(p.f[0], p.f[1], p.f[2], p.f[3]),
+        _ => Call::LogicOp(p.e[0]),
+    }
+}
+// --- end fragment ops

@@ -1,6 +1,7 @@
 //! Pipeline-level tests: a `State` built by hand feeds a `Renderer` directly. Every expected value
 //! is worked out by hand from the spec's equations in the comment next to it.
 
+mod fragops;
 mod gauss;
 mod lighting;
 mod raster;
