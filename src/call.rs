@@ -218,4 +218,32 @@ pub enum Call {
     PixelStoref(u32, f32),
     Flush,
     Finish,
+
+    // --- texture (context/texture.rs, context/texture_params.rs)
+    GenTextures(i32),
+    DeleteTextures(i32, Vec<u32>),
+    BindTexture(u32, u32),
+    /// target, level, internalformat, width, height, border, format, type, pixels (None: NULL).
+    TexImage2D(u32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8>>),
+    /// target, level, xoffset, yoffset, width, height, format, type, pixels.
+    TexSubImage2D(u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>),
+    /// target, level, internalformat, x, y, width, height, border.
+    CopyTexImage2D(u32, i32, u32, i32, i32, i32, i32, i32),
+    /// target, level, xoffset, yoffset, x, y, width, height.
+    CopyTexSubImage2D(u32, i32, i32, i32, i32, i32, i32, i32),
+    TexParameteri(u32, u32, i32),
+    TexParameterf(u32, u32, f32),
+    TexParameteriv(u32, u32, Vec<i32>),
+    TexParameterfv(u32, u32, Vec<f32>),
+    TexEnvi(u32, u32, i32),
+    TexEnvf(u32, u32, f32),
+    TexEnviv(u32, u32, Vec<i32>),
+    TexEnvfv(u32, u32, Vec<f32>),
+    TexGeni(u32, u32, i32),
+    TexGenf(u32, u32, f32),
+    TexGend(u32, u32, f64),
+    TexGeniv(u32, u32, Vec<i32>),
+    TexGenfv(u32, u32, Vec<f32>),
+    TexGendv(u32, u32, Vec<f64>),
+    // --- end texture
 }

@@ -34,3 +34,8 @@ pub mod compare;
 pub mod glbackend;
 pub mod report;
 pub mod scenes;
+
+// --- texture: texture state, unpacking and image helpers (texture.rs)
+pub mod texture;
+pub use texture::{checkerboard, texture_from_image};
+// --- end texture

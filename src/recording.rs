@@ -96,6 +96,12 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         | "TexEnviv" | "TexEnvfv" | "TexParameteri" | "TexParameterf" | "TexParameteriv"
         | "TexParameterfv" => &[Enum, Enum],
         "StencilOp" => &[Enum, Enum, Enum],
+        // --- texture
+        "TexImage2D" => &[Enum, Plain, Enum, Plain, Plain, Plain, Enum, Enum],
+        "TexSubImage2D" => &[Enum, Plain, Plain, Plain, Plain, Plain, Enum, Enum],
+        "CopyTexImage2D" => &[Enum, Plain, Enum],
+        "CopyTexSubImage2D" => &[Enum],
+        // --- end texture
         "VertexPointer" | "NormalPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],
@@ -281,7 +287,7 @@ fn to_ron(tokens: &[Token<'_>], names: &HashMap<&str, u32>) -> Result<String, St
         } else if let Some(&v) = names.get(word) {
             Some(u64::from(v))
         } else if word.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
-            && !matches!(word, "true" | "false" | "NaN" | "inf")
+            && !matches!(word, "true" | "false" | "NaN" | "inf" | "Some" | "None")
         {
             return Err(format!("unknown GL name `{word}`"));
         } else {

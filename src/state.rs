@@ -363,6 +363,10 @@ pub struct State {
     pub unpack_alignment: i32,
 
     pub hints: Hints,
+
+    // --- texture: objects, units, UNPACK_ROW_LENGTH (tables 6.15 to 6.19, 6.24)
+    pub textures: crate::texture::Textures,
+    // --- end texture
 }
 
 impl State {
@@ -412,6 +416,9 @@ impl State {
             pack_alignment: 4,
             unpack_alignment: 4,
             hints: Hints::default(),
+            // --- texture
+            textures: crate::texture::Textures::default(),
+            // --- end texture
         }
     }
 

@@ -220,6 +220,11 @@ impl Context {
             | gl::SAMPLES => i(0),
             gl::RGBA_MODE => b(true),
             gl::INDEX_MODE | gl::DOUBLEBUFFER | gl::STEREO => b(false),
+            // --- texture (tables 6.15, 6.24, 6.35)
+            gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.binding_2d as i32),
+            gl::UNPACK_ROW_LENGTH => i(s.textures.unpack_row_length),
+            gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
+            // --- end texture
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)

@@ -396,6 +396,40 @@ impl Context {
             Call::PixelStoref(a, b) => self.pixel_storef(a, b),
             Call::Flush => self.flush(),
             Call::Finish => self.finish(),
+            // --- texture (context/texture.rs, context/texture_params.rs)
+            Call::GenTextures(n) => {
+                let mut names = vec![0; n.clamp(0, texture::MAX_GEN_TEXTURES) as usize];
+                self.gen_textures(n, &mut names);
+            }
+            Call::DeleteTextures(n, ref t) => self.delete_textures(n, t),
+            Call::BindTexture(a, b) => self.bind_texture(a, b),
+            Call::TexImage2D(t, l, i, w, h, b, f, ty, ref p) => {
+                self.tex_image_2d(t, l, i, w, h, b, f, ty, p.as_deref())
+            }
+            Call::TexSubImage2D(t, l, x, y, w, h, f, ty, ref p) => {
+                self.tex_sub_image_2d(t, l, x, y, w, h, f, ty, p)
+            }
+            Call::CopyTexImage2D(t, l, i, x, y, w, h, b) => {
+                self.copy_tex_image_2d(t, l, i, x, y, w, h, b)
+            }
+            Call::CopyTexSubImage2D(t, l, xo, yo, x, y, w, h) => {
+                self.copy_tex_sub_image_2d(t, l, xo, yo, x, y, w, h)
+            }
+            Call::TexParameteri(a, b, c) => self.tex_parameteri(a, b, c),
+            Call::TexParameterf(a, b, c) => self.tex_parameterf(a, b, c),
+            Call::TexParameteriv(a, b, ref c) => self.tex_parameteriv(a, b, c),
+            Call::TexParameterfv(a, b, ref c) => self.tex_parameterfv(a, b, c),
+            Call::TexEnvi(a, b, c) => self.tex_envi(a, b, c),
+            Call::TexEnvf(a, b, c) => self.tex_envf(a, b, c),
+            Call::TexEnviv(a, b, ref c) => self.tex_enviv(a, b, c),
+            Call::TexEnvfv(a, b, ref c) => self.tex_envfv(a, b, c),
+            Call::TexGeni(a, b, c) => self.tex_geni(a, b, c),
+            Call::TexGenf(a, b, c) => self.tex_genf(a, b, c),
+            Call::TexGend(a, b, c) => self.tex_gend(a, b, c),
+            Call::TexGeniv(a, b, ref c) => self.tex_geniv(a, b, c),
+            Call::TexGenfv(a, b, ref c) => self.tex_genfv(a, b, c),
+            Call::TexGendv(a, b, ref c) => self.tex_gendv(a, b, c),
+            // --- end texture
         }
     }
 
@@ -466,3 +500,8 @@ impl State {
 // --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
 mod readback;
 // --- end cpu-pipeline
+
+// --- texture: objects, images, parameters (context/texture.rs, context/texture_params.rs)
+pub mod texture;
+mod texture_params;
+// --- end texture

@@ -18,6 +18,9 @@ mod egl;
 mod phong;
 pub mod raw;
 mod replay;
+// --- texture
+mod texture;
+// --- end texture
 
 use std::cell::Cell;
 use std::ffi::CString;

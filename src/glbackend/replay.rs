@@ -254,6 +254,64 @@ impl GlBackend {
             Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
+            // --- texture (glbackend/texture.rs for the pointer-reading calls)
+            Call::GenTextures(n) => self.gen_textures(n),
+            Call::DeleteTextures(n, ref v) => self.delete_textures(n, v),
+            Call::BindTexture(a, b) => unsafe { gl.BindTexture(a, b) },
+            Call::TexImage2D(t, l, i, w, h, b, f, ty, ref p) => {
+                self.tex_image_2d(t, l, i, w, h, b, f, ty, p.as_deref())
+            }
+            Call::TexSubImage2D(t, l, x, y, w, h, f, ty, ref p) => {
+                self.tex_sub_image_2d(t, l, x, y, w, h, f, ty, p)
+            }
+            Call::CopyTexImage2D(t, l, i, x, y, w, h, b) => unsafe {
+                gl.CopyTexImage2D(t, l, i, x, y, w, h, b)
+            },
+            Call::CopyTexSubImage2D(t, l, xo, yo, x, y, w, h) => unsafe {
+                gl.CopyTexSubImage2D(t, l, xo, yo, x, y, w, h)
+            },
+            Call::TexParameteri(a, b, c) => unsafe { gl.TexParameteri(a, b, c) },
+            Call::TexParameterf(a, b, c) => unsafe { gl.TexParameterf(a, b, c) },
+            Call::TexParameteriv(a, p, ref v) => {
+                self.with_params(v, params::tex_parameter(p), false, |gl, v| unsafe {
+                    gl.TexParameteriv(a, p, v)
+                })
+            }
+            Call::TexParameterfv(a, p, ref v) => {
+                self.with_params(v, params::tex_parameter(p), false, |gl, v| unsafe {
+                    gl.TexParameterfv(a, p, v)
+                })
+            }
+            Call::TexEnvi(a, b, c) => unsafe { gl.TexEnvi(a, b, c) },
+            Call::TexEnvf(a, b, c) => unsafe { gl.TexEnvf(a, b, c) },
+            Call::TexEnviv(a, p, ref v) => {
+                self.with_params(v, params::tex_env(p), false, |gl, v| unsafe {
+                    gl.TexEnviv(a, p, v)
+                })
+            }
+            Call::TexEnvfv(a, p, ref v) => {
+                self.with_params(v, params::tex_env(p), false, |gl, v| unsafe {
+                    gl.TexEnvfv(a, p, v)
+                })
+            }
+            Call::TexGeni(a, b, c) => unsafe { gl.TexGeni(a, b, c) },
+            Call::TexGenf(a, b, c) => unsafe { gl.TexGenf(a, b, c) },
+            Call::TexGend(a, b, c) => unsafe { gl.TexGend(a, b, c) },
+            Call::TexGeniv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGeniv(a, p, v)
+                })
+            }
+            Call::TexGenfv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGenfv(a, p, v)
+                })
+            }
+            Call::TexGendv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGendv(a, p, v)
+                })
+            } // --- end texture
         }
     }
 

@@ -10,7 +10,12 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = 157;
+pub const VARIANTS: usize = 157 + TEXTURE_VARIANTS;
+
+// --- texture: the texture area's arms are 157.. (see `texture_call`)
+/// Number of texture variants `texture_call` builds.
+pub const TEXTURE_VARIANTS: usize = 21;
+// --- end texture
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -354,6 +359,141 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         154 => Call::PixelStoref(p.e[0], p.f[1]),
         155 => Call::Flush,
         156 => Call::Finish,
+        // --- texture
+        157..=177 => texture_call(k - 157, p),
+        // --- end texture
         _ => Call::End,
     }
 }
+
+// --- texture: texture calls, targets and pnames biased towards the valid ones so that the
+// setters get past their first checks often.
+fn texture_call(k: usize, p: &Pool) -> Call {
+    let target = if p.b[0] { gl::TEXTURE_2D } else { p.e[0] };
+    let tp = [
+        gl::TEXTURE_MIN_FILTER,
+        gl::TEXTURE_MAG_FILTER,
+        gl::TEXTURE_WRAP_S,
+        gl::TEXTURE_WRAP_T,
+        gl::TEXTURE_BORDER_COLOR,
+        gl::TEXTURE_BASE_LEVEL,
+        gl::TEXTURE_MAX_LEVEL,
+        gl::TEXTURE_MIN_LOD,
+        gl::GENERATE_MIPMAP,
+        gl::TEXTURE_COMPARE_MODE,
+        gl::DEPTH_TEXTURE_MODE,
+    ];
+    let values = [
+        gl::NEAREST,
+        gl::LINEAR,
+        gl::LINEAR_MIPMAP_LINEAR,
+        gl::NEAREST_MIPMAP_NEAREST,
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::MIRRORED_REPEAT,
+        gl::COMPARE_R_TO_TEXTURE,
+        gl::ALPHA,
+        gl::MODULATE,
+        gl::DECAL,
+        gl::BLEND,
+        gl::REPLACE,
+        gl::ADD,
+        gl::EYE_LINEAR,
+        gl::SPHERE_MAP,
+    ];
+    let pick = |xs: &[u32], i: i32| xs[(i.unsigned_abs() as usize) % xs.len()];
+    let pname = if p.b[1] { pick(&tp, p.i[3]) } else { p.e[1] };
+    let value = if p.b[2] {
+        pick(&values, p.i[2]) as i32
+    } else {
+        p.i[2]
+    };
+    let formats = [
+        gl::RGBA,
+        gl::RGB,
+        gl::LUMINANCE,
+        gl::ALPHA,
+        gl::DEPTH_COMPONENT,
+        gl::INTENSITY,
+    ];
+    let format = if p.b[3] {
+        pick(&formats, p.i[0])
+    } else {
+        p.e[2]
+    };
+    let size = |i: i32| i.rem_euclid(6) - 1;
+    let bytes: Vec<u8> = p.vi.iter().flat_map(|x| x.to_ne_bytes()).collect();
+    let env = if p.b[1] { gl::TEXTURE_ENV } else { p.e[0] };
+    let envp = if p.b[2] { gl::TEXTURE_ENV_MODE } else { p.e[1] };
+    let coord = if p.b[1] {
+        gl::S + (p.i[0].rem_euclid(4)) as u32
+    } else {
+        p.e[0]
+    };
+    match k {
+        0 => Call::GenTextures(p.i[0].rem_euclid(5) - 1),
+        1 => Call::DeleteTextures(
+            p.i[0].rem_euclid(4) - 1,
+            p.vi.iter().map(|&x| x.rem_euclid(8) as u32).collect(),
+        ),
+        2 => Call::BindTexture(target, p.i[1].rem_euclid(8) as u32),
+        3 => Call::TexImage2D(
+            target,
+            p.i[1].rem_euclid(3) - 1,
+            format as i32,
+            size(p.i[2]),
+            size(p.i[3]),
+            i32::from(!p.b[2]) * p.i[2].rem_euclid(2),
+            format,
+            if p.b[1] { gl::UNSIGNED_BYTE } else { gl::FLOAT },
+            p.b[2].then_some(bytes),
+        ),
+        4 => Call::TexSubImage2D(
+            target,
+            0,
+            size(p.i[1]),
+            size(p.i[2]),
+            size(p.i[3]),
+            1,
+            format,
+            gl::UNSIGNED_BYTE,
+            bytes,
+        ),
+        5 => Call::CopyTexImage2D(
+            target,
+            p.i[1].rem_euclid(3) - 1,
+            format,
+            p.i[0],
+            p.i[1],
+            size(p.i[2]),
+            size(p.i[3]),
+            0,
+        ),
+        6 => Call::CopyTexSubImage2D(
+            target,
+            0,
+            size(p.i[1]),
+            0,
+            p.i[0],
+            p.i[1],
+            size(p.i[2]),
+            size(p.i[3]),
+        ),
+        7 => Call::TexParameteri(target, pname, value),
+        8 => Call::TexParameterf(target, pname, value as f32),
+        9 => Call::TexParameteriv(target, pname, p.vi.clone()),
+        10 => Call::TexParameterfv(target, pname, p.vf.clone()),
+        11 => Call::TexEnvi(env, envp, value),
+        12 => Call::TexEnvf(env, envp, p.f[0]),
+        13 => Call::TexEnviv(env, gl::TEXTURE_ENV_COLOR, p.vi.clone()),
+        14 => Call::TexEnvfv(env, envp, p.vf.clone()),
+        15 => Call::TexGeni(coord, gl::TEXTURE_GEN_MODE, value),
+        16 => Call::TexGenf(coord, p.e[1], p.f[0]),
+        17 => Call::TexGend(coord, gl::TEXTURE_GEN_MODE, p.d[0]),
+        18 => Call::TexGeniv(coord, gl::OBJECT_PLANE, p.vi.clone()),
+        19 => Call::TexGenfv(coord, gl::EYE_PLANE, p.vf.clone()),
+        _ => Call::TexGendv(coord, p.e[1], p.vf.iter().map(|&x| f64::from(x)).collect()),
+    }
+}
+// --- end texture
