@@ -37,6 +37,10 @@ pub struct FragCtx<'a> {
     /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
     /// reaches the colour write (tests count coverage with it).
     pub count: bool,
+    // --- texture: unit 0's sampler when texturing is on and its texture complete (§3.8)
+    /// Texture unit 0 (`None`: no texturing in this flush).
+    pub tex: Option<&'a super::texture::Sampler>,
+    // --- end texture
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -86,9 +90,10 @@ impl FragCtx<'_> {
         true
     }
 
-    /// The final colour of a fragment with varyings `v` (§3.9 colour sum; PHONG_WIN lighting).
+    /// The final colour of a fragment with varyings `v` and texture level of detail `lambda`
+    /// (§3.8 texturing, §3.9 colour sum; PHONG_WIN lighting).
     #[inline(always)]
-    fn color(&self, p: &RPrim, v: &[f32]) -> Vec4 {
+    fn color(&self, p: &RPrim, v: &[f32], lambda: f32) -> Vec4 {
         let g = |k: usize| v.get(k).copied().unwrap_or(0.0);
         let mut c = Vec4::new(g(0), g(1), g(2), g(3));
         let mut s = self.rl.spec.map(|o| Vec3::new(g(o), g(o + 1), g(o + 2)));
@@ -109,6 +114,11 @@ impl FragCtx<'_> {
                 }
             }
         }
+        // --- texture: §3.8.13, texturing comes before the colour sum
+        if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
+            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda);
+        }
+        // --- end texture
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
@@ -139,7 +149,8 @@ impl FragCtx<'_> {
     pub fn fragment(&self, bufs: &mut TileBufs, p: &RPrim, x: i32, y: i32, z: f64, v: &[f32]) {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
         if self.depth(bufs, i, z) {
-            let c = self.color(p, v);
+            // A point has no derivatives: λ = 0 (the base level, magnification).
+            let c = self.color(p, v, 0.0);
             self.write(bufs, i, c);
         }
     }
@@ -221,7 +232,16 @@ impl FragCtx<'_> {
                 let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
                 *vj = if j < nflat { val } else { val * inv };
             }
-            let c = self.color(p, &v[..nv]);
+            // --- texture: λ per 2x2 quad (its lower-left pixel), as llvmpipe
+            let lambda = match (self.tex, self.rl.tex) {
+                (Some(tx), Some(to)) => {
+                    let x = x0 + k as i32;
+                    tx.quad_lambda(planes, to, ((x & !1) - ox) as f32, ((y & !1) - oy) as f32)
+                }
+                _ => 0.0,
+            };
+            // --- end texture
+            let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);
         }
     }

@@ -25,6 +25,9 @@ pub mod framebuffer;
 mod line;
 pub mod raster;
 pub mod setup;
+// --- texture
+pub mod texture;
+// --- end texture
 pub mod vertex;
 
 #[cfg(test)]
@@ -152,6 +155,9 @@ impl Renderer {
         );
         // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
+        // --- texture: unit 0, when enabled and complete (§3.8.10)
+        let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
+        // --- end texture
         let Renderer {
             fb,
             batch,
@@ -176,6 +182,9 @@ impl Renderer {
             lighting: lighting.as_ref(),
             mats,
             count: *count_coverage,
+            // --- texture
+            tex: sampler.as_ref(),
+            // --- end texture
         };
         let nw = if batch.idx.len() >= PARALLEL_SETUP {
             // More workers than threads balances the load when other processes share the cores.

@@ -398,6 +398,9 @@ impl Lit<'_> {
         let b = self.batch;
         let state = self.state;
         let uniform = b.snapshots.is_empty();
+        // --- texture
+        let tex_matrix = *state.texture_matrix[0].top();
+        // --- end texture
         for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
             let base = first + blk * LANES;
             let mut pts = [Point::default(); LANES];
@@ -419,7 +422,9 @@ impl Lit<'_> {
                     put(o, o_eye, eye);
                 }
                 if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
-                    put(o, t, tc);
+                    // --- texture: the texture matrix (§2.11.2)
+                    put(o, t, tex_matrix * tc);
+                    // --- end texture
                 }
                 if self.lighting.is_none() {
                     put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));

@@ -12,6 +12,9 @@ use image::RgbaImage;
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
+// --- texture
+pub mod texture;
+// --- end texture
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -71,6 +74,9 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[1],
     gaussian::SCENES[2],
     gaussian::SCENES[3],
+    // --- texture
+    texture::SCENES[0],
+    // --- end texture
 ];
 
 /// Every registered scene, in listing order.
