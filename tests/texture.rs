@@ -1,0 +1,694 @@
+//! The texture front end: objects and names, TexImage2D/TexSubImage2D unpacking, parameters and
+//! environment, their queries and errors (each erroneous call changes nothing), GENERATE_MIPMAP,
+//! CopyTexImage from colour and depth, and textured drawing read back from the framebuffer.
+//! Expected values are worked out by hand from GL 2.1 §3.6, §3.8 and tables 6.15 to 6.17.
+
+use fixedgl::gl::*;
+use fixedgl::texture::f32_bytes;
+use fixedgl::Context;
+
+fn ctx() -> Context {
+    Context::new(4, 4).expect("context")
+}
+
+/// A quad covering the whole 4x4 window (identity matrices) with texture coordinates 0..1.
+fn full_quad(gl: &mut Context) {
+    gl.begin(QUADS);
+    for (s, t) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+        gl.tex_coord2f(s, t);
+        gl.vertex2f(2.0 * s - 1.0, 2.0 * t - 1.0);
+    }
+    gl.end();
+}
+
+fn pixel(gl: &mut Context, x: i32, y: i32) -> [u8; 4] {
+    let mut p = [0u8; 4];
+    gl.read_pixels(x, y, 1, 1, RGBA, UNSIGNED_BYTE, &mut p);
+    p
+}
+
+#[test]
+fn names_bind_delete_and_is_texture() {
+    let mut gl = ctx();
+    let mut names = [0u32; 3];
+    gl.gen_textures(3, &mut names);
+    assert_eq!(names, [1, 2, 3]);
+    // Generated but never bound: not yet a texture (§3.8.12).
+    assert!(!gl.is_texture(2));
+    gl.bind_texture(TEXTURE_2D, 2);
+    assert!(gl.is_texture(2));
+    let mut b = [0i32];
+    gl.get_integerv(TEXTURE_BINDING_2D, &mut b);
+    assert_eq!(b, [2]);
+    // Deleting the bound texture reverts the binding to 0.
+    gl.delete_textures(1, &[2]);
+    assert!(!gl.is_texture(2));
+    gl.get_integerv(TEXTURE_BINDING_2D, &mut b);
+    assert_eq!(b, [0]);
+    // New names start above every name in use (1 and 3 still are).
+    let mut more = [0u32; 1];
+    gl.gen_textures(1, &mut more);
+    assert_eq!(more, [4]);
+    // A name bound without GenTextures is a texture too.
+    gl.bind_texture(TEXTURE_2D, 10);
+    assert!(gl.is_texture(10));
+    assert!(!gl.is_texture(0));
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+#[test]
+fn error_rows_change_nothing() {
+    type Row = (&'static str, fn(&mut Context), u32);
+    let rows: &[Row] = &[
+        (
+            "TexImage2D 1D target",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_1D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_ENUM,
+        ),
+        (
+            "TexImage2D level -1",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    -1,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D level 12",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    12,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D internal 0",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    0,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D internal 5",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    5,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D width -1",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    -1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    None,
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D width 4096",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    4096,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    None,
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D level 1 width 2048",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    1,
+                    RGBA as i32,
+                    2048,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    None,
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D border 2",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    2,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_VALUE,
+        ),
+        (
+            "TexImage2D bad format",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    0x1234,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_ENUM,
+        ),
+        (
+            "TexImage2D bad type",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    0x1234,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_ENUM,
+        ),
+        (
+            "TexImage2D depth data, colour format",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    DEPTH_COMPONENT,
+                    FLOAT,
+                    Some(&[0; 4]),
+                )
+            },
+            INVALID_OPERATION,
+        ),
+        (
+            "TexImage2D colour data, depth format",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    DEPTH_COMPONENT as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    FLOAT,
+                    Some(&[0; 16]),
+                )
+            },
+            INVALID_OPERATION,
+        ),
+        // 2x2 RGB bytes with UNPACK_ALIGNMENT 4: rows of 8 bytes, 8 + 6 = 14 needed.
+        (
+            "TexImage2D short data",
+            |g| {
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGB as i32,
+                    2,
+                    2,
+                    0,
+                    RGB,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 13]),
+                )
+            },
+            INVALID_OPERATION,
+        ),
+        (
+            "TexImage2D inside Begin/End",
+            |g| {
+                g.begin(POINTS);
+                g.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&[0; 4]),
+                );
+                g.end();
+            },
+            INVALID_OPERATION,
+        ),
+        (
+            "TexSubImage2D undefined level",
+            |g| g.tex_sub_image_2d(TEXTURE_2D, 3, 0, 0, 1, 1, RGBA, UNSIGNED_BYTE, &[0; 4]),
+            INVALID_OPERATION,
+        ),
+        (
+            "TexSubImage2D outside",
+            |g| g.tex_sub_image_2d(TEXTURE_2D, 0, 1, 1, 2, 1, RGBA, UNSIGNED_BYTE, &[0; 8]),
+            INVALID_VALUE,
+        ),
+        (
+            "TexSubImage2D negative offset",
+            |g| g.tex_sub_image_2d(TEXTURE_2D, 0, -1, 0, 1, 1, RGBA, UNSIGNED_BYTE, &[0; 4]),
+            INVALID_VALUE,
+        ),
+        (
+            "TexSubImage2D short",
+            |g| g.tex_sub_image_2d(TEXTURE_2D, 0, 0, 0, 2, 2, RGBA, UNSIGNED_BYTE, &[0; 15]),
+            INVALID_OPERATION,
+        ),
+        (
+            "TexParameteri bad target",
+            |g| g.tex_parameteri(TEXTURE_3D, TEXTURE_MIN_FILTER, LINEAR as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexParameteri bad pname",
+            |g| g.tex_parameteri(TEXTURE_2D, 0x1234, 0),
+            INVALID_ENUM,
+        ),
+        (
+            "TexParameteri MAG mipmap",
+            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, LINEAR_MIPMAP_LINEAR as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexParameteri wrap bad",
+            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_S, LINEAR as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexParameteri border colour scalar",
+            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_BORDER_COLOR, 0),
+            INVALID_ENUM,
+        ),
+        (
+            "TexParameteri BASE_LEVEL -1",
+            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_BASE_LEVEL, -1),
+            INVALID_VALUE,
+        ),
+        (
+            "TexParameterfv short border",
+            |g| g.tex_parameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, &[1.0; 3]),
+            INVALID_VALUE,
+        ),
+        (
+            "TexParameteri compare func bad",
+            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_COMPARE_FUNC, LINEAR as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexEnvi bad mode",
+            |g| g.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, LINEAR as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexEnvi bad target",
+            |g| g.tex_envi(TEXTURE_2D, TEXTURE_ENV_MODE, MODULATE as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexEnvfv short colour",
+            |g| g.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[1.0; 3]),
+            INVALID_VALUE,
+        ),
+        (
+            "TexGeni SPHERE_MAP on R",
+            |g| g.tex_geni(R, TEXTURE_GEN_MODE, SPHERE_MAP as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexGeni REFLECTION_MAP on Q",
+            |g| g.tex_geni(Q, TEXTURE_GEN_MODE, REFLECTION_MAP as i32),
+            INVALID_ENUM,
+        ),
+        (
+            "TexGenf plane scalar",
+            |g| g.tex_genf(S, EYE_PLANE, 1.0),
+            INVALID_ENUM,
+        ),
+        (
+            "TexGenfv short plane",
+            |g| g.tex_genfv(S, OBJECT_PLANE, &[1.0; 3]),
+            INVALID_VALUE,
+        ),
+        (
+            "GenTextures -1",
+            |g| g.gen_textures(-1, &mut []),
+            INVALID_VALUE,
+        ),
+        (
+            "GenTextures short slice",
+            |g| g.gen_textures(2, &mut [0]),
+            INVALID_VALUE,
+        ),
+        (
+            "DeleteTextures short slice",
+            |g| g.delete_textures(2, &[1]),
+            INVALID_VALUE,
+        ),
+        (
+            "BindTexture 1D",
+            |g| g.bind_texture(TEXTURE_1D, 1),
+            INVALID_ENUM,
+        ),
+        (
+            "PixelStorei UNPACK_ROW_LENGTH -1",
+            |g| g.pixel_storei(UNPACK_ROW_LENGTH, -1),
+            INVALID_VALUE,
+        ),
+        (
+            "CopyTexImage2D bad internal",
+            |g| g.copy_tex_image_2d(TEXTURE_2D, 0, 3, 0, 0, 1, 1, 0),
+            INVALID_VALUE,
+        ),
+        (
+            "CopyTexSubImage2D undefined level",
+            |g| g.copy_tex_sub_image_2d(TEXTURE_2D, 2, 0, 0, 0, 0, 1, 1),
+            INVALID_OPERATION,
+        ),
+    ];
+    for (name, call, code) in rows {
+        let mut gl = ctx();
+        // A 2x2 RGBA level 0 to update.
+        gl.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            RGBA as i32,
+            2,
+            2,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&[7; 16]),
+        );
+        assert_eq!(gl.get_error(), NO_ERROR);
+        let before = gl.state().clone();
+        call(&mut gl);
+        assert_eq!(gl.get_error(), *code, "{name}");
+        assert!(gl.state() == &before, "{name} changed state");
+    }
+}
+
+#[test]
+fn parameter_defaults_and_round_trips() {
+    let mut gl = ctx();
+    // Table 6.16 initial values.
+    let rows: &[(u32, i32)] = &[
+        (TEXTURE_MIN_FILTER, NEAREST_MIPMAP_LINEAR as i32),
+        (TEXTURE_MAG_FILTER, LINEAR as i32),
+        (TEXTURE_WRAP_S, REPEAT as i32),
+        (TEXTURE_WRAP_T, REPEAT as i32),
+        (TEXTURE_BASE_LEVEL, 0),
+        (TEXTURE_MAX_LEVEL, 1000),
+        (TEXTURE_MIN_LOD, -1000),
+        (TEXTURE_MAX_LOD, 1000),
+        (GENERATE_MIPMAP, 0),
+        (TEXTURE_COMPARE_MODE, NONE as i32),
+        (TEXTURE_COMPARE_FUNC, LEQUAL as i32),
+        (DEPTH_TEXTURE_MODE, LUMINANCE as i32),
+    ];
+    for &(pname, want) in rows {
+        let mut v = [-7];
+        gl.get_tex_parameteriv(TEXTURE_2D, pname, &mut v);
+        assert_eq!(v, [want], "{pname:#x}");
+    }
+    gl.tex_parameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, &[0.25, 2.0, -1.0, 0.5]);
+    let mut c = [0.0f32; 4];
+    gl.get_tex_parameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, &mut c);
+    // Clamped to [0, 1] (§3.8.4).
+    assert_eq!(c, [0.25, 1.0, 0.0, 0.5]);
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_T, MIRRORED_REPEAT as i32);
+    let mut w = [0i32];
+    gl.get_tex_parameteriv(TEXTURE_2D, TEXTURE_WRAP_T, &mut w);
+    assert_eq!(w, [MIRRORED_REPEAT as i32]);
+    // TexEnv defaults (table 6.19) and a colour set through integers: i → (2i + 1)/(2^32 - 1).
+    let mut m = [0i32];
+    gl.get_tex_enviv(TEXTURE_ENV, TEXTURE_ENV_MODE, &mut m);
+    assert_eq!(m, [MODULATE as i32]);
+    gl.tex_enviv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[i32::MAX, 0, i32::MAX, -1]);
+    let mut ec = [9.0f32; 4];
+    gl.get_tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &mut ec);
+    // MAX → 1; 0 → 1/(2^32 - 1) ≈ 0; -1 → -1/(2^32-1) clamped to 0.
+    assert!((ec[0] - 1.0).abs() < 1e-6 && ec[1].abs() < 1e-6 && ec[3] == 0.0);
+    // TexGen defaults (table 6.15): EYE_LINEAR, S plane (1,0,0,0), T plane (0,1,0,0).
+    let mut g = [0i32];
+    gl.get_tex_geniv(T, TEXTURE_GEN_MODE, &mut g);
+    assert_eq!(g, [EYE_LINEAR as i32]);
+    let mut p = [9.0f64; 4];
+    gl.get_tex_gendv(T, OBJECT_PLANE, &mut p);
+    assert_eq!(p, [0.0, 1.0, 0.0, 0.0]);
+    // EYE_PLANE is multiplied by the inverse modelview at the call: with a translation by
+    // (0, 0, -5), p' = p · M^-1 where M^-1 translates by +5: (0, 0, 1, 0) → (0, 0, 1, 5).
+    gl.translatef(0.0, 0.0, -5.0);
+    gl.tex_genfv(R, EYE_PLANE, &[0.0, 0.0, 1.0, 0.0]);
+    gl.get_tex_gendv(R, EYE_PLANE, &mut p);
+    assert_eq!(p, [0.0, 0.0, 1.0, 5.0]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+#[test]
+fn unpack_alignment_row_length_and_get_tex_image() {
+    let mut gl = ctx();
+    // 2x2 RGB with UNPACK_ALIGNMENT 4 and UNPACK_ROW_LENGTH 3: rows start 12 bytes apart
+    // (3 pixels · 3 bytes = 9, padded to 12); the third pixel of each row is skipped.
+    gl.pixel_storei(UNPACK_ROW_LENGTH, 3);
+    #[rustfmt::skip]
+    let data = [
+        10, 20, 30,  40, 50, 60,  99, 99, 99,  0, 0, 0,
+        70, 80, 90,  100, 110, 120,
+    ];
+    gl.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        RGB as i32,
+        2,
+        2,
+        0,
+        RGB,
+        UNSIGNED_BYTE,
+        Some(&data),
+    );
+    assert_eq!(gl.get_error(), NO_ERROR);
+    let mut out = [0u8; 16];
+    gl.get_tex_image(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, &mut out);
+    #[rustfmt::skip]
+    assert_eq!(out, [10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255, 100, 110, 120, 255]);
+    // Level parameters (table 6.17).
+    let q = |gl: &mut Context, pname| {
+        let mut v = [-1];
+        gl.get_tex_level_parameteriv(TEXTURE_2D, 0, pname, &mut v);
+        v[0]
+    };
+    assert_eq!(q(&mut gl, TEXTURE_WIDTH), 2);
+    assert_eq!(q(&mut gl, TEXTURE_HEIGHT), 2);
+    assert_eq!(q(&mut gl, TEXTURE_INTERNAL_FORMAT), RGB as i32);
+    assert_eq!(q(&mut gl, TEXTURE_RED_SIZE), 8);
+    assert_eq!(q(&mut gl, TEXTURE_ALPHA_SIZE), 0);
+    // FLOAT luminance data: clamped to [0, 1], returned as L in R with G = B = 0... read back
+    // as LUMINANCE: 0.5 → 128 after 8-bit storage (0.5·255 = 127.5 rounds to 128).
+    gl.tex_image_2d(
+        TEXTURE_2D,
+        1,
+        LUMINANCE as i32,
+        1,
+        1,
+        0,
+        LUMINANCE,
+        FLOAT,
+        Some(&f32_bytes(&[0.5])),
+    );
+    let mut l = [0u8; 1];
+    gl.get_tex_image(TEXTURE_2D, 1, LUMINANCE, UNSIGNED_BYTE, &mut l);
+    assert_eq!(l, [128]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+#[test]
+fn generate_mipmap_averages_the_base_level() {
+    let mut gl = ctx();
+    gl.tex_parameteri(TEXTURE_2D, GENERATE_MIPMAP, 1);
+    // Rows of 2 bytes: without alignment 1 they would be padded to 4 (and 4 bytes too short).
+    gl.pixel_storei(UNPACK_ALIGNMENT, 1);
+    // 2x2 luminance 0, 100, 200, 255 → level 1 = round((0 + 100 + 200 + 255) / 4) = 139
+    // (138.75 stored as 8 bits).
+    gl.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        LUMINANCE as i32,
+        2,
+        2,
+        0,
+        LUMINANCE,
+        UNSIGNED_BYTE,
+        Some(&[0, 100, 200, 255]),
+    );
+    let mut l = [0u8; 1];
+    gl.get_tex_image(TEXTURE_2D, 1, LUMINANCE, UNSIGNED_BYTE, &mut l);
+    assert_eq!(l, [139]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+#[test]
+fn copy_tex_image_from_colour_and_depth() {
+    let mut gl = ctx();
+    gl.clear_color(1.0, 0.5, 0.0, 1.0);
+    gl.clear_depth(0.25);
+    gl.clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    gl.copy_tex_image_2d(TEXTURE_2D, 0, RGBA, 1, 1, 2, 2, 0);
+    let mut out = [0u8; 16];
+    gl.get_tex_image(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, &mut out);
+    // The clear colour: 0.5 → 128 in the framebuffer.
+    assert_eq!(out[..4], [255, 128, 0, 255]);
+    assert_eq!(out[12..], [255, 128, 0, 255]);
+    // Depth: 0.25 in a 24-bit buffer is round(0.25 · (2^24 - 1)) / (2^24 - 1) ≈ 0.25.
+    gl.copy_tex_image_2d(TEXTURE_2D, 1, DEPTH_COMPONENT, 0, 0, 1, 1, 0);
+    let mut d = [0u8; 4];
+    gl.get_tex_image(TEXTURE_2D, 1, DEPTH_COMPONENT, FLOAT, &mut d);
+    assert!((f32::from_ne_bytes(d) - 0.25).abs() < 1e-6);
+    // CopyTexSubImage2D of a region drawn red into the colour texture.
+    gl.clear_color(1.0, 0.0, 0.0, 1.0);
+    gl.clear(COLOR_BUFFER_BIT);
+    gl.copy_tex_sub_image_2d(TEXTURE_2D, 0, 1, 0, 0, 0, 1, 1);
+    gl.get_tex_image(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, &mut out);
+    assert_eq!(out[..8], [255, 128, 0, 255, 255, 0, 0, 255]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+#[test]
+fn a_textured_quad_reads_back_the_texels() {
+    let mut gl = ctx();
+    // 2x2 NEAREST texture over the 4x4 window: each texel covers a 2x2 pixel block.
+    #[rustfmt::skip]
+    let img = [
+        255, 0, 0, 255,   0, 255, 0, 255,
+        0, 0, 255, 255,   255, 255, 255, 255,
+    ];
+    gl.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        RGBA as i32,
+        2,
+        2,
+        0,
+        RGBA,
+        UNSIGNED_BYTE,
+        Some(&img),
+    );
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+    gl.enable(TEXTURE_2D);
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+    full_quad(&mut gl);
+    assert_eq!(pixel(&mut gl, 0, 0), [255, 0, 0, 255]);
+    assert_eq!(pixel(&mut gl, 3, 0), [0, 255, 0, 255]);
+    assert_eq!(pixel(&mut gl, 0, 3), [0, 0, 255, 255]);
+    assert_eq!(pixel(&mut gl, 2, 2), [255, 255, 255, 255]);
+    // MODULATE with colour (0.5, 1, 1, 1): red texel → (128, 0, 0).
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, MODULATE as i32);
+    gl.color3f(0.5, 1.0, 1.0);
+    full_quad(&mut gl);
+    assert_eq!(pixel(&mut gl, 1, 1), [128, 0, 0, 255]);
+    // The texture matrix scales s by 2 with REPEAT: pixel x = 1 (s = 0.375 → 0.75) reads
+    // texel column 1 (green) in row 0.
+    gl.matrix_mode(TEXTURE);
+    gl.scalef(2.0, 1.0, 1.0);
+    gl.matrix_mode(MODELVIEW);
+    gl.color3f(1.0, 1.0, 1.0);
+    full_quad(&mut gl);
+    assert_eq!(pixel(&mut gl, 1, 0), [0, 255, 0, 255]);
+    // Incomplete texture (default MIN filter wants mipmaps): texturing is off, colour passes.
+    gl.matrix_mode(TEXTURE);
+    gl.load_identity();
+    gl.matrix_mode(MODELVIEW);
+    gl.tex_parameteri(
+        TEXTURE_2D,
+        TEXTURE_MIN_FILTER,
+        NEAREST_MIPMAP_NEAREST as i32,
+    );
+    gl.color3f(0.0, 0.0, 1.0);
+    full_quad(&mut gl);
+    assert_eq!(pixel(&mut gl, 0, 0), [0, 0, 255, 255]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
