@@ -26,6 +26,7 @@ mod line;
 pub mod raster;
 pub mod setup;
 // --- texture
+pub mod texgen;
 pub mod texture;
 // --- end texture
 pub mod vertex;

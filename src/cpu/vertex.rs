@@ -400,6 +400,7 @@ impl Lit<'_> {
         let uniform = b.snapshots.is_empty();
         // --- texture
         let tex_matrix = *state.texture_matrix[0].top();
+        let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
         // --- end texture
         for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
             let base = first + blk * LANES;
@@ -422,7 +423,17 @@ impl Lit<'_> {
                     put(o, o_eye, eye);
                 }
                 if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
-                    // --- texture: the texture matrix (§2.11.2)
+                    // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
+                    let tc = match &texgen {
+                        Some(g) => {
+                            let mut n = self.tf.normal * nrm;
+                            if g.needs_normal && self.tf.normalize {
+                                n = n.normalize_or_zero();
+                            }
+                            g.apply(tc, p, eye, n)
+                        }
+                        None => tc,
+                    };
                     put(o, t, tex_matrix * tc);
                     // --- end texture
                 }
