@@ -13,6 +13,7 @@ use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
 // --- texture
+pub mod projective;
 pub mod texture;
 // --- end texture
 
@@ -76,6 +77,8 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[3],
     // --- texture
     texture::SCENES[0],
+    projective::SCENES[0],
+    projective::SCENES[1],
     // --- end texture
 ];
 
