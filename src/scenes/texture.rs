@@ -4,6 +4,12 @@
 //! The floor runs from the camera to the horizon, so every mipmap level is used and the
 //! comparison exercises λ selection and LINEAR_MIPMAP_LINEAR blending; the cube's faces
 //! exercise magnification, REPEAT wrapping and MODULATE over lit colours.
+//!
+//! Measured against llvmpipe at 800x800: 84 of 640 000 pixels (0.013%) differ by more than
+//! 2/255, on checker edges where LINEAR_MIPMAP_LINEAR blends levels of very different values, so
+//! a difference in λ of a few hundredths (llvmpipe's log2 and derivative arithmetic are not
+//! ours bit for bit) moves the result by up to 3 to 5 levels; at 400x400, where more of the floor
+//! is strongly minified, it is 0.22%.
 
 use crate::gl::*;
 use crate::texture::checkerboard;
