@@ -779,3 +779,54 @@ fn object_linear_texgen_textures_a_quad_like_explicit_coordinates() {
     assert_eq!(pixel(&mut gl, 1, 3), [0, 0, 255, 255]);
     assert_eq!(pixel(&mut gl, 3, 3), [255, 255, 255, 255]);
 }
+
+#[test]
+fn two_units_combine_in_order() {
+    // Unit 0: 1x1 RGB (1, 0.5, 0) with MODULATE over white; unit 1: 1x1 LUMINANCE 0.5 with ADD
+    // (table 3.21: Cv = Cf + Lt): (1, 0.5, 0) + 0.5 = (1, 1, 0.5) → (255, 255, 128).
+    let mut gl = ctx();
+    gl.pixel_storei(UNPACK_ALIGNMENT, 1);
+    let mut names = [0u32; 2];
+    gl.gen_textures(2, &mut names);
+    for (unit, name, fmt, data, env) in [
+        (TEXTURE0, names[0], RGB, &[255u8, 128, 0][..], MODULATE),
+        (TEXTURE1, names[1], LUMINANCE, &[128u8][..], ADD),
+    ] {
+        gl.active_texture(unit);
+        gl.bind_texture(TEXTURE_2D, name);
+        gl.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            fmt as i32,
+            1,
+            1,
+            0,
+            fmt,
+            UNSIGNED_BYTE,
+            Some(data),
+        );
+        gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+        gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, env as i32);
+        gl.enable(TEXTURE_2D);
+    }
+    gl.begin(QUADS);
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        gl.multi_tex_coord2f(TEXTURE0, 0.5, 0.5);
+        gl.multi_tex_coord2f(TEXTURE1, 0.5, 0.5);
+        gl.vertex2f(x, y);
+    }
+    gl.end();
+    // 128/255 + 128/255 = 1.0039 → clamped to 1 for green; blue 0 + 0.50196 → 128.
+    assert_eq!(pixel(&mut gl, 2, 2), [255, 255, 128, 255]);
+    // MultiTexCoord on a unit that does not exist is INVALID_ENUM, allowed inside Begin/End.
+    gl.multi_tex_coord1f(TEXTURE0 + 4, 1.0);
+    assert_eq!(gl.get_error(), INVALID_ENUM);
+    gl.begin(POINTS);
+    gl.multi_tex_coord4fv(TEXTURE1, &[1.0, 2.0, 3.0, 4.0]);
+    gl.end();
+    assert_eq!(gl.get_error(), NO_ERROR);
+    let mut tc = [0.0f32; 4];
+    gl.active_texture(TEXTURE1);
+    gl.get_floatv(CURRENT_TEXTURE_COORDS, &mut tc);
+    assert_eq!(tc, [1.0, 2.0, 3.0, 4.0]);
+}

@@ -259,3 +259,66 @@ fn texture_scenes_hold_their_tolerance() {
         assert!(cmp.passes(scene.tolerance.max_percent), "{name}: {cmp:?}");
     }
 }
+
+#[test]
+fn two_units_match_the_driver() {
+    let Some(mut gl) = backend(16, 16) else {
+        return;
+    };
+    let Ok(mut cpu) = Context::new(16, 16) else {
+        panic!("CPU context")
+    };
+    cpu.start_recording();
+    {
+        use fixedgl::gl::*;
+        let c = &mut cpu;
+        c.pixel_storei(UNPACK_ALIGNMENT, 1);
+        let board = fixedgl::checkerboard(8, 2, [255, 200, 0, 255], [0, 80, 255, 255]);
+        let lum: Vec<u8> = (0..16u8).map(|i| i * 16).collect();
+        for (unit, w, fmt, data, env) in [
+            (TEXTURE0, 8, RGBA, &board[..], MODULATE),
+            (TEXTURE1, 4, LUMINANCE, &lum[..], BLEND),
+        ] {
+            c.active_texture(unit);
+            c.bind_texture(TEXTURE_2D, unit - TEXTURE0 + 1);
+            c.tex_image_2d(
+                TEXTURE_2D,
+                0,
+                fmt as i32,
+                w,
+                w,
+                0,
+                fmt,
+                UNSIGNED_BYTE,
+                Some(data),
+            );
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+            c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, env as i32);
+            c.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[0.2, 0.9, 0.4, 1.0]);
+            c.enable(TEXTURE_2D);
+        }
+        c.color3f(0.9, 0.8, 0.7);
+        c.begin(QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            c.multi_tex_coord2f(TEXTURE0, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+            c.multi_tex_coord2f(TEXTURE1, (1.0 - y) / 2.0, (x + 1.0) / 2.0);
+            c.vertex2f(x, y);
+        }
+        c.end();
+    }
+    let calls = cpu.stop_recording();
+    gl.replay(&calls);
+    let cmp = compare(&scenes::cpu_image(&mut cpu), &gl.read_image(), 1);
+    let (ci, gi) = (scenes::cpu_image(&mut cpu), gl.read_image());
+    assert_eq!(
+        cmp.differing_pixels,
+        0,
+        "cpu {:?} gl {:?} cpu {:?} gl {:?}",
+        ci.get_pixel(15, 8),
+        gi.get_pixel(15, 8),
+        ci.get_pixel(15, 0),
+        gi.get_pixel(15, 0)
+    );
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+}

@@ -429,6 +429,38 @@ impl Context {
             Call::TexGeniv(a, b, ref c) => self.tex_geniv(a, b, c),
             Call::TexGenfv(a, b, ref c) => self.tex_genfv(a, b, c),
             Call::TexGendv(a, b, ref c) => self.tex_gendv(a, b, c),
+            Call::MultiTexCoord1s(t, a0) => self.multi_tex_coord1s(t, a0),
+            Call::MultiTexCoord1sv(t, ref v) => self.multi_tex_coord1sv(t, v),
+            Call::MultiTexCoord1i(t, a0) => self.multi_tex_coord1i(t, a0),
+            Call::MultiTexCoord1iv(t, ref v) => self.multi_tex_coord1iv(t, v),
+            Call::MultiTexCoord1f(t, a0) => self.multi_tex_coord1f(t, a0),
+            Call::MultiTexCoord1fv(t, ref v) => self.multi_tex_coord1fv(t, v),
+            Call::MultiTexCoord1d(t, a0) => self.multi_tex_coord1d(t, a0),
+            Call::MultiTexCoord1dv(t, ref v) => self.multi_tex_coord1dv(t, v),
+            Call::MultiTexCoord2s(t, a0, a1) => self.multi_tex_coord2s(t, a0, a1),
+            Call::MultiTexCoord2sv(t, ref v) => self.multi_tex_coord2sv(t, v),
+            Call::MultiTexCoord2i(t, a0, a1) => self.multi_tex_coord2i(t, a0, a1),
+            Call::MultiTexCoord2iv(t, ref v) => self.multi_tex_coord2iv(t, v),
+            Call::MultiTexCoord2f(t, a0, a1) => self.multi_tex_coord2f(t, a0, a1),
+            Call::MultiTexCoord2fv(t, ref v) => self.multi_tex_coord2fv(t, v),
+            Call::MultiTexCoord2d(t, a0, a1) => self.multi_tex_coord2d(t, a0, a1),
+            Call::MultiTexCoord2dv(t, ref v) => self.multi_tex_coord2dv(t, v),
+            Call::MultiTexCoord3s(t, a0, a1, a2) => self.multi_tex_coord3s(t, a0, a1, a2),
+            Call::MultiTexCoord3sv(t, ref v) => self.multi_tex_coord3sv(t, v),
+            Call::MultiTexCoord3i(t, a0, a1, a2) => self.multi_tex_coord3i(t, a0, a1, a2),
+            Call::MultiTexCoord3iv(t, ref v) => self.multi_tex_coord3iv(t, v),
+            Call::MultiTexCoord3f(t, a0, a1, a2) => self.multi_tex_coord3f(t, a0, a1, a2),
+            Call::MultiTexCoord3fv(t, ref v) => self.multi_tex_coord3fv(t, v),
+            Call::MultiTexCoord3d(t, a0, a1, a2) => self.multi_tex_coord3d(t, a0, a1, a2),
+            Call::MultiTexCoord3dv(t, ref v) => self.multi_tex_coord3dv(t, v),
+            Call::MultiTexCoord4s(t, a0, a1, a2, a3) => self.multi_tex_coord4s(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4sv(t, ref v) => self.multi_tex_coord4sv(t, v),
+            Call::MultiTexCoord4i(t, a0, a1, a2, a3) => self.multi_tex_coord4i(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4iv(t, ref v) => self.multi_tex_coord4iv(t, v),
+            Call::MultiTexCoord4f(t, a0, a1, a2, a3) => self.multi_tex_coord4f(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4fv(t, ref v) => self.multi_tex_coord4fv(t, v),
+            Call::MultiTexCoord4d(t, a0, a1, a2, a3) => self.multi_tex_coord4d(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4dv(t, ref v) => self.multi_tex_coord4dv(t, v),
             // --- end texture
         }
     }
@@ -503,5 +535,6 @@ mod readback;
 
 // --- texture: objects, images, parameters (context/texture.rs, context/texture_params.rs)
 pub mod texture;
+mod texture_coords;
 mod texture_params;
 // --- end texture

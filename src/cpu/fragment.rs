@@ -40,6 +40,8 @@ pub struct FragCtx<'a> {
     // --- texture: unit 0's sampler when texturing is on and its texture complete (§3.8)
     /// Texture unit 0 (`None`: no texturing in this flush).
     pub tex: Option<&'a super::texture::Sampler>,
+    /// Texture unit 1, applied to unit 0's result (§3.8.15).
+    pub tex1: Option<&'a super::texture::Sampler>,
     // --- end texture
 }
 
@@ -93,7 +95,7 @@ impl FragCtx<'_> {
     /// The final colour of a fragment with varyings `v` and texture level of detail `lambda`
     /// (§3.8 texturing, §3.9 colour sum; PHONG_WIN lighting).
     #[inline(always)]
-    fn color(&self, p: &RPrim, v: &[f32], lambda: f32) -> Vec4 {
+    fn color(&self, p: &RPrim, v: &[f32], lambda: [f32; 2]) -> Vec4 {
         let g = |k: usize| v.get(k).copied().unwrap_or(0.0);
         let mut c = Vec4::new(g(0), g(1), g(2), g(3));
         let mut s = self.rl.spec.map(|o| Vec3::new(g(o), g(o + 1), g(o + 2)));
@@ -116,7 +118,11 @@ impl FragCtx<'_> {
         }
         // --- texture: §3.8.13, texturing comes before the colour sum
         if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
-            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda);
+            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[0]);
+        }
+        // §3.8.15: each enabled unit takes the previous unit's result as Cf.
+        if let (Some(tx), Some(o)) = (self.tex1, self.rl.tex1) {
+            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
         }
         // --- end texture
         if let (true, Some(s)) = (self.color_sum, s) {
@@ -150,7 +156,7 @@ impl FragCtx<'_> {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
         if self.depth(bufs, i, z) {
             // A point has no derivatives: λ = 0 (the base level, magnification).
-            let c = self.color(p, v, 0.0);
+            let c = self.color(p, v, [0.0; 2]);
             self.write(bufs, i, c);
         }
     }
@@ -233,13 +239,12 @@ impl FragCtx<'_> {
                 *vj = if j < nflat { val } else { val * inv };
             }
             // --- texture: λ per 2x2 quad (its lower-left pixel), as llvmpipe
-            let lambda = match (self.tex, self.rl.tex) {
-                (Some(tx), Some(to)) => {
-                    let x = x0 + k as i32;
-                    tx.quad_lambda(planes, to, ((x & !1) - ox) as f32, ((y & !1) - oy) as f32)
-                }
+            let (qx, qy) = (((x0 + k as i32) & !1) - ox, (y & !1) - oy);
+            let lod = |tx: Option<&super::texture::Sampler>, to: Option<usize>| match (tx, to) {
+                (Some(tx), Some(to)) => tx.quad_lambda(planes, to, qx as f32, qy as f32),
                 _ => 0.0,
             };
+            let lambda = [lod(self.tex, self.rl.tex), lod(self.tex1, self.rl.tex1)];
             // --- end texture
             let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);

@@ -158,6 +158,7 @@ impl Renderer {
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
         // --- texture: unit 0, when enabled and complete (§3.8.10)
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
+        let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
         // --- end texture
         let Renderer {
             fb,
@@ -185,6 +186,7 @@ impl Renderer {
             count: *count_coverage,
             // --- texture
             tex: sampler.as_ref(),
+            tex1: sampler1.as_ref(),
             // --- end texture
         };
         let nw = if batch.idx.len() >= PARALLEL_SETUP {

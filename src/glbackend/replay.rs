@@ -311,7 +311,48 @@ impl GlBackend {
                 self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
                     gl.TexGendv(a, p, v)
                 })
-            } // --- end texture
+            }
+            Call::MultiTexCoord1s(t, a0) => unsafe { gl.MultiTexCoord1s(t, a0) },
+            Call::MultiTexCoord1sv(t, ref v) => unsafe { gl.MultiTexCoord1sv(t, v.as_ptr()) },
+            Call::MultiTexCoord1i(t, a0) => unsafe { gl.MultiTexCoord1i(t, a0) },
+            Call::MultiTexCoord1iv(t, ref v) => unsafe { gl.MultiTexCoord1iv(t, v.as_ptr()) },
+            Call::MultiTexCoord1f(t, a0) => unsafe { gl.MultiTexCoord1f(t, a0) },
+            Call::MultiTexCoord1fv(t, ref v) => unsafe { gl.MultiTexCoord1fv(t, v.as_ptr()) },
+            Call::MultiTexCoord1d(t, a0) => unsafe { gl.MultiTexCoord1d(t, a0) },
+            Call::MultiTexCoord1dv(t, ref v) => unsafe { gl.MultiTexCoord1dv(t, v.as_ptr()) },
+            Call::MultiTexCoord2s(t, a0, a1) => unsafe { gl.MultiTexCoord2s(t, a0, a1) },
+            Call::MultiTexCoord2sv(t, ref v) => unsafe { gl.MultiTexCoord2sv(t, v.as_ptr()) },
+            Call::MultiTexCoord2i(t, a0, a1) => unsafe { gl.MultiTexCoord2i(t, a0, a1) },
+            Call::MultiTexCoord2iv(t, ref v) => unsafe { gl.MultiTexCoord2iv(t, v.as_ptr()) },
+            Call::MultiTexCoord2f(t, a0, a1) => unsafe { gl.MultiTexCoord2f(t, a0, a1) },
+            Call::MultiTexCoord2fv(t, ref v) => unsafe { gl.MultiTexCoord2fv(t, v.as_ptr()) },
+            Call::MultiTexCoord2d(t, a0, a1) => unsafe { gl.MultiTexCoord2d(t, a0, a1) },
+            Call::MultiTexCoord2dv(t, ref v) => unsafe { gl.MultiTexCoord2dv(t, v.as_ptr()) },
+            Call::MultiTexCoord3s(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3s(t, a0, a1, a2) },
+            Call::MultiTexCoord3sv(t, ref v) => unsafe { gl.MultiTexCoord3sv(t, v.as_ptr()) },
+            Call::MultiTexCoord3i(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3i(t, a0, a1, a2) },
+            Call::MultiTexCoord3iv(t, ref v) => unsafe { gl.MultiTexCoord3iv(t, v.as_ptr()) },
+            Call::MultiTexCoord3f(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3f(t, a0, a1, a2) },
+            Call::MultiTexCoord3fv(t, ref v) => unsafe { gl.MultiTexCoord3fv(t, v.as_ptr()) },
+            Call::MultiTexCoord3d(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3d(t, a0, a1, a2) },
+            Call::MultiTexCoord3dv(t, ref v) => unsafe { gl.MultiTexCoord3dv(t, v.as_ptr()) },
+            Call::MultiTexCoord4s(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4s(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4sv(t, ref v) => unsafe { gl.MultiTexCoord4sv(t, v.as_ptr()) },
+            Call::MultiTexCoord4i(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4i(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4iv(t, ref v) => unsafe { gl.MultiTexCoord4iv(t, v.as_ptr()) },
+            Call::MultiTexCoord4f(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4f(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4fv(t, ref v) => unsafe { gl.MultiTexCoord4fv(t, v.as_ptr()) },
+            Call::MultiTexCoord4d(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4d(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4dv(t, ref v) => unsafe { gl.MultiTexCoord4dv(t, v.as_ptr()) },
+            // --- end texture
         }
     }
 

@@ -14,7 +14,7 @@ pub const VARIANTS: usize = 157 + TEXTURE_VARIANTS;
 
 // --- texture: the texture area's arms are 157.. (see `texture_call`)
 /// Number of texture variants `texture_call` builds.
-pub const TEXTURE_VARIANTS: usize = 21;
+pub const TEXTURE_VARIANTS: usize = 53;
 // --- end texture
 
 /// Argument values for one call; each variant takes what it needs in order.
@@ -360,7 +360,7 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
         155 => Call::Flush,
         156 => Call::Finish,
         // --- texture
-        157..=177 => texture_call(k - 157, p),
+        157..=209 => texture_call(k - 157, p),
         // --- end texture
         _ => Call::End,
     }
@@ -426,6 +426,11 @@ fn texture_call(k: usize, p: &Pool) -> Call {
     let bytes: Vec<u8> = p.vi.iter().flat_map(|x| x.to_ne_bytes()).collect();
     let env = if p.b[1] { gl::TEXTURE_ENV } else { p.e[0] };
     let envp = if p.b[2] { gl::TEXTURE_ENV_MODE } else { p.e[1] };
+    let unit = if p.b[0] {
+        gl::TEXTURE0 + p.i[3].rem_euclid(5) as u32
+    } else {
+        p.e[0]
+    };
     let coord = if p.b[1] {
         gl::S + (p.i[0].rem_euclid(4)) as u32
     } else {
@@ -493,6 +498,47 @@ fn texture_call(k: usize, p: &Pool) -> Call {
         17 => Call::TexGend(coord, gl::TEXTURE_GEN_MODE, p.d[0]),
         18 => Call::TexGeniv(coord, gl::OBJECT_PLANE, p.vi.clone()),
         19 => Call::TexGenfv(coord, gl::EYE_PLANE, p.vf.clone()),
+        21 => Call::MultiTexCoord1s(unit, p.i[0] as i16),
+        22 => Call::MultiTexCoord1sv(unit, [p.i[0] as i16]),
+        23 => Call::MultiTexCoord1i(unit, p.i[0]),
+        24 => Call::MultiTexCoord1iv(unit, [p.i[0]]),
+        25 => Call::MultiTexCoord1f(unit, p.f[0]),
+        26 => Call::MultiTexCoord1fv(unit, [p.f[0]]),
+        27 => Call::MultiTexCoord1d(unit, p.d[0]),
+        28 => Call::MultiTexCoord1dv(unit, [p.d[0]]),
+        29 => Call::MultiTexCoord2s(unit, p.i[0] as i16, p.i[1] as i16),
+        30 => Call::MultiTexCoord2sv(unit, [p.i[0] as i16, p.i[1] as i16]),
+        31 => Call::MultiTexCoord2i(unit, p.i[0], p.i[1]),
+        32 => Call::MultiTexCoord2iv(unit, [p.i[0], p.i[1]]),
+        33 => Call::MultiTexCoord2f(unit, p.f[0], p.f[1]),
+        34 => Call::MultiTexCoord2fv(unit, [p.f[0], p.f[1]]),
+        35 => Call::MultiTexCoord2d(unit, p.d[0], p.d[1]),
+        36 => Call::MultiTexCoord2dv(unit, [p.d[0], p.d[1]]),
+        37 => Call::MultiTexCoord3s(unit, p.i[0] as i16, p.i[1] as i16, p.i[2] as i16),
+        38 => Call::MultiTexCoord3sv(unit, [p.i[0] as i16, p.i[1] as i16, p.i[2] as i16]),
+        39 => Call::MultiTexCoord3i(unit, p.i[0], p.i[1], p.i[2]),
+        40 => Call::MultiTexCoord3iv(unit, [p.i[0], p.i[1], p.i[2]]),
+        41 => Call::MultiTexCoord3f(unit, p.f[0], p.f[1], p.f[2]),
+        42 => Call::MultiTexCoord3fv(unit, [p.f[0], p.f[1], p.f[2]]),
+        43 => Call::MultiTexCoord3d(unit, p.d[0], p.d[1], p.d[2]),
+        44 => Call::MultiTexCoord3dv(unit, [p.d[0], p.d[1], p.d[2]]),
+        45 => Call::MultiTexCoord4s(
+            unit,
+            p.i[0] as i16,
+            p.i[1] as i16,
+            p.i[2] as i16,
+            p.i[3] as i16,
+        ),
+        46 => Call::MultiTexCoord4sv(
+            unit,
+            [p.i[0] as i16, p.i[1] as i16, p.i[2] as i16, p.i[3] as i16],
+        ),
+        47 => Call::MultiTexCoord4i(unit, p.i[0], p.i[1], p.i[2], p.i[3]),
+        48 => Call::MultiTexCoord4iv(unit, [p.i[0], p.i[1], p.i[2], p.i[3]]),
+        49 => Call::MultiTexCoord4f(unit, p.f[0], p.f[1], p.f[2], p.f[3]),
+        50 => Call::MultiTexCoord4fv(unit, [p.f[0], p.f[1], p.f[2], p.f[3]]),
+        51 => Call::MultiTexCoord4d(unit, p.d[0], p.d[1], p.d[2], p.d[3]),
+        52 => Call::MultiTexCoord4dv(unit, [p.d[0], p.d[1], p.d[2], p.d[3]]),
         _ => Call::TexGendv(coord, p.e[1], p.vf.iter().map(|&x| f64::from(x)).collect()),
     }
 }
