@@ -830,3 +830,22 @@ fn two_units_combine_in_order() {
     gl.get_floatv(CURRENT_TEXTURE_COORDS, &mut tc);
     assert_eq!(tc, [1.0, 2.0, 3.0, 4.0]);
 }
+
+#[test]
+fn image_helpers_give_gl_row_order() {
+    // A 1x2 image: top pixel red, bottom pixel blue. GL's first row is the bottom one.
+    let mut img = image::RgbaImage::new(1, 2);
+    img.put_pixel(0, 0, image::Rgba([255, 0, 0, 255]));
+    img.put_pixel(0, 1, image::Rgba([0, 0, 255, 255]));
+    let (w, h, data) = fixedgl::texture_from_image(&image::DynamicImage::ImageRgba8(img));
+    assert_eq!((w, h), (1, 2));
+    assert_eq!(data, [0, 0, 255, 255, 255, 0, 0, 255]);
+    // 4x4 board of 2x2 cells: a at (0,0), b at (2,0) and (0,2), a again at (2,2).
+    let (a, b) = ([1, 1, 1, 1], [2, 2, 2, 2]);
+    let board = fixedgl::checkerboard(4, 2, a, b);
+    let at = |x: usize, y: usize| &board[(y * 4 + x) * 4..(y * 4 + x) * 4 + 4];
+    assert_eq!(
+        (at(0, 0), at(1, 1), at(2, 0), at(0, 2), at(3, 3)),
+        (&a[..], &a[..], &b[..], &b[..], &a[..])
+    );
+}

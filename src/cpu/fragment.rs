@@ -227,6 +227,10 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());
+        // --- texture: the quad whose λ is in `lambda` (none yet)
+        let mut quad_x = i32::MIN;
+        let mut lambda = [0.0f32; 2];
+        // --- end texture
         while mask != 0 {
             let k = mask.trailing_zeros() as usize;
             mask &= mask - 1;
@@ -238,13 +242,20 @@ impl FragCtx<'_> {
                 let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
                 *vj = if j < nflat { val } else { val * inv };
             }
-            // --- texture: λ per 2x2 quad (its lower-left pixel), as llvmpipe
-            let (qx, qy) = (((x0 + k as i32) & !1) - ox, (y & !1) - oy);
-            let lod = |tx: Option<&super::texture::Sampler>, to: Option<usize>| match (tx, to) {
-                (Some(tx), Some(to)) => tx.quad_lambda(planes, to, qx as f32, qy as f32),
-                _ => 0.0,
-            };
-            let lambda = [lod(self.tex, self.rl.tex), lod(self.tex1, self.rl.tex1)];
+            // --- texture: λ per 2x2 quad (its lower-left pixel), as llvmpipe; computed once per
+            // quad, and only for a unit whose result depends on it.
+            let qx = ((x0 + k as i32) & !1) - ox;
+            if qx != quad_x {
+                quad_x = qx;
+                let qy = (y & !1) - oy;
+                let lod = |tx: Option<&super::texture::Sampler>, to: Option<usize>| match (tx, to) {
+                    (Some(tx), Some(to)) if tx.needs_lambda() => {
+                        tx.quad_lambda(planes, to, qx as f32, qy as f32)
+                    }
+                    _ => 0.0,
+                };
+                lambda = [lod(self.tex, self.rl.tex), lod(self.tex1, self.rl.tex1)];
+            }
             // --- end texture
             let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);

@@ -96,6 +96,13 @@ impl Sampler {
         })
     }
 
+    /// Does the result depend on λ? Not when no mipmaps are used and the minification and
+    /// magnification filters agree (then λ only chooses between two identical filters).
+    #[inline]
+    pub fn needs_lambda(&self) -> bool {
+        is_mipmap_filter(self.min) || self.min != self.mag
+    }
+
     /// λ of §3.8.8 for the 2x2 quad whose lower-left pixel is at (fx, fy) relative to the
     /// primitive's plane origin: `planes` are the primitive's (1/w plane, then one plane per
     /// varying) and `to` the index of the varying s (t, r, q follow).
@@ -291,10 +298,16 @@ impl Sampler {
     }
 }
 
-/// `floor` as an index, saturating (NaN → 0).
+/// `floor` as an index, saturating (NaN → 0), without a libm call: truncate, then step down
+/// where truncation rounded up (negative non-integers).
 #[inline(always)]
 fn ifloor(x: f32) -> i32 {
-    x.floor() as i32
+    let t = x as i32;
+    if (t as f32) > x {
+        t - 1
+    } else {
+        t
+    }
 }
 
 /// MIRRORED_REPEAT's coordinate (§3.8.7): frac(s) where floor(s) is even, else 1 - frac(s).
@@ -338,7 +351,8 @@ fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
     let u = s * nf - 0.5;
     let u = if u.is_nan() { 0.0 } else { u };
     let i0 = ifloor(u);
-    let a = u - u.floor();
+    // |u| beyond 2^24 has no fraction; a saturated i0 must not produce a weight outside [0, 1].
+    let a = (u - i0 as f32).clamp(0.0, 1.0);
     let i1 = i0.saturating_add(1);
     let inside = |i: i32| (0..n).contains(&i).then_some(i);
     match mode {
