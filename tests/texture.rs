@@ -849,3 +849,56 @@ fn image_helpers_give_gl_row_order() {
         (&a[..], &a[..], &b[..], &b[..], &a[..])
     );
 }
+
+#[test]
+fn hostile_texture_coordinates_do_not_panic() {
+    // NaN, infinities and huge values through every wrap mode and a mipmapped filter.
+    let mut gl = ctx();
+    gl.tex_parameteri(TEXTURE_2D, GENERATE_MIPMAP, 1);
+    let board = fixedgl::checkerboard(4, 2, [255; 4], [0, 0, 0, 255]);
+    gl.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        RGBA as i32,
+        4,
+        4,
+        0,
+        RGBA,
+        UNSIGNED_BYTE,
+        Some(&board),
+    );
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR as i32);
+    gl.enable(TEXTURE_2D);
+    let bad = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        3e9,
+        -3e9,
+        1e30,
+        0.0,
+    ];
+    for wrap in [
+        REPEAT,
+        CLAMP,
+        CLAMP_TO_EDGE,
+        CLAMP_TO_BORDER,
+        MIRRORED_REPEAT,
+    ] {
+        gl.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_S, wrap as i32);
+        gl.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_T, wrap as i32);
+        for (k, &a) in bad.iter().enumerate() {
+            let b = bad[(k + 3) % bad.len()];
+            gl.begin(TRIANGLES);
+            gl.tex_coord4f(a, b, 0.0, 1.0);
+            gl.vertex2f(-1.0, -1.0);
+            gl.tex_coord4f(b, a, a, b);
+            gl.vertex2f(1.0, -1.0);
+            gl.tex_coord2f(0.5, a);
+            gl.vertex2f(0.0, 1.0);
+            gl.end();
+        }
+    }
+    let _ = pixel(&mut gl, 1, 1);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}

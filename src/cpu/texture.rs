@@ -304,7 +304,7 @@ impl Sampler {
 fn ifloor(x: f32) -> i32 {
     let t = x as i32;
     if (t as f32) > x {
-        t - 1
+        t.saturating_sub(1)
     } else {
         t
     }
