@@ -250,6 +250,44 @@ pub struct TexUnit {
     pub lod_bias: f32,
     /// S, T, R, Q.
     pub gen: [TexGen; 4],
+    /// The COMBINE environment's parameters (table 6.19).
+    pub combine: Combine,
+}
+
+/// TexEnv COMBINE parameters (GL 2.1 §3.8.13, tables 3.22 to 3.24, initial values table 6.19).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Combine {
+    /// COMBINE_RGB.
+    pub rgb: u32,
+    /// COMBINE_ALPHA.
+    pub alpha: u32,
+    /// SRC0_RGB, SRC1_RGB, SRC2_RGB.
+    pub src_rgb: [u32; 3],
+    /// SRC0_ALPHA, SRC1_ALPHA, SRC2_ALPHA.
+    pub src_alpha: [u32; 3],
+    /// OPERAND0_RGB ..= OPERAND2_RGB.
+    pub operand_rgb: [u32; 3],
+    /// OPERAND0_ALPHA ..= OPERAND2_ALPHA.
+    pub operand_alpha: [u32; 3],
+    /// RGB_SCALE (1, 2 or 4).
+    pub rgb_scale: f32,
+    /// ALPHA_SCALE (1, 2 or 4).
+    pub alpha_scale: f32,
+}
+
+impl Default for Combine {
+    fn default() -> Self {
+        Self {
+            rgb: gl::MODULATE,
+            alpha: gl::MODULATE,
+            src_rgb: [gl::TEXTURE, gl::PREVIOUS, gl::CONSTANT],
+            src_alpha: [gl::TEXTURE, gl::PREVIOUS, gl::CONSTANT],
+            operand_rgb: [gl::SRC_COLOR, gl::SRC_COLOR, gl::SRC_ALPHA],
+            operand_alpha: [gl::SRC_ALPHA; 3],
+            rgb_scale: 1.0,
+            alpha_scale: 1.0,
+        }
+    }
 }
 
 impl Default for TexUnit {
@@ -266,6 +304,7 @@ impl Default for TexUnit {
             env_mode: gl::MODULATE,
             env_color: Vec4::ZERO,
             lod_bias: 0.0,
+            combine: Combine::default(),
             gen: std::array::from_fn(|k| TexGen {
                 mode: gl::EYE_LINEAR,
                 object_plane: plane(k),

@@ -322,3 +322,118 @@ fn two_units_match_the_driver() {
     );
     assert_eq!(gl.get_error(), gl::NO_ERROR);
 }
+
+#[test]
+fn combine_matches_the_driver() {
+    use fixedgl::gl::*;
+    /// COMBINE_RGB, COMBINE_ALPHA, sources, operands, RGB_SCALE, ALPHA_SCALE.
+    type Run = (u32, u32, [u32; 3], [u32; 3], f32, f32);
+    let runs: &[Run] = &[
+        (
+            MODULATE,
+            MODULATE,
+            [TEXTURE, PREVIOUS, CONSTANT],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            1.0,
+        ),
+        (
+            ADD_SIGNED,
+            ADD,
+            [TEXTURE, PRIMARY_COLOR, CONSTANT],
+            [SRC_COLOR, ONE_MINUS_SRC_COLOR, SRC_ALPHA],
+            2.0,
+            1.0,
+        ),
+        (
+            INTERPOLATE,
+            SUBTRACT,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            2.0,
+        ),
+        (
+            SUBTRACT,
+            REPLACE,
+            [CONSTANT, TEXTURE, PREVIOUS],
+            [SRC_COLOR, ONE_MINUS_SRC_ALPHA, SRC_ALPHA],
+            4.0,
+            1.0,
+        ),
+        (
+            DOT3_RGB,
+            INTERPOLATE,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            1.0,
+        ),
+        (
+            DOT3_RGBA,
+            MODULATE,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            2.0,
+        ),
+    ];
+    for (i, &(rgb, alpha, src, op, rs, as_)) in runs.iter().enumerate() {
+        let Some(mut gl) = backend(8, 8) else {
+            return;
+        };
+        let Ok(mut cpu) = Context::new(8, 8) else {
+            panic!("CPU context")
+        };
+        cpu.start_recording();
+        let c = &mut cpu;
+        let tex: Vec<u8> = (0..16u8)
+            .flat_map(|k| [k * 16, 255 - k * 12, 40 + k * 8, 60 + k * 10])
+            .collect();
+        c.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            RGBA as i32,
+            4,
+            4,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&tex),
+        );
+        c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+        c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+        c.enable(TEXTURE_2D);
+        c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+        c.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[0.3, 0.6, 0.9, 0.4]);
+        c.tex_envi(TEXTURE_ENV, COMBINE_RGB, rgb as i32);
+        c.tex_envi(TEXTURE_ENV, COMBINE_ALPHA, alpha as i32);
+        for k in 0..3 {
+            c.tex_envi(TEXTURE_ENV, SRC0_RGB + k as u32, src[k] as i32);
+            c.tex_envi(TEXTURE_ENV, SRC0_ALPHA + k as u32, src[k] as i32);
+            c.tex_envi(TEXTURE_ENV, OPERAND0_RGB + k as u32, op[k] as i32);
+        }
+        c.tex_envf(TEXTURE_ENV, RGB_SCALE, rs);
+        c.tex_envf(TEXTURE_ENV, ALPHA_SCALE, as_);
+        c.color4f(0.8, 0.5, 0.2, 0.7);
+        c.begin(QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            c.tex_coord2f((x + 1.0) / 2.0, (y + 1.0) / 2.0);
+            c.vertex2f(x, y);
+        }
+        c.end();
+        let calls = cpu.stop_recording();
+        assert_eq!(cpu.get_error(), gl::NO_ERROR, "run {i}");
+        gl.replay(&calls);
+        assert_eq!(gl.get_error(), gl::NO_ERROR, "run {i}");
+        let (ci, gi) = (scenes::cpu_image(&mut cpu), gl.read_image());
+        let cmp = compare(&ci, &gi, 1);
+        assert_eq!(
+            cmp.differing_pixels,
+            0,
+            "run {i}: cpu {:?} gl {:?}",
+            ci.get_pixel(1, 1),
+            gi.get_pixel(1, 1)
+        );
+    }
+}

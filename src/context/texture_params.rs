@@ -13,6 +13,7 @@ use glam::{DVec4, Vec4};
 use super::Context;
 use crate::call::Call;
 use crate::gl;
+use crate::state::MAX_TEXTURE_UNITS;
 use crate::texture::{TexObject, MAX_TEXTURE_LOD_BIAS};
 
 /// Values a texture parameter takes (GL 2.1 table 6.16).
@@ -193,20 +194,30 @@ impl Context {
     }
 
     /// The body of the TexEnv forms (§3.8.13): TEXTURE_ENV with TEXTURE_ENV_MODE (MODULATE,
-    /// DECAL, BLEND, REPLACE, ADD) or TEXTURE_ENV_COLOR (vector forms, clamped to [0, 1]), and
-    /// TEXTURE_FILTER_CONTROL with TEXTURE_LOD_BIAS (clamped to ±MAX_TEXTURE_LOD_BIAS). COMBINE
-    /// and its parameters are not supported (INVALID_ENUM), nor POINT_SPRITE's COORD_REPLACE.
+    /// DECAL, BLEND, REPLACE, ADD, COMBINE), TEXTURE_ENV_COLOR (vector forms, clamped to
+    /// [0, 1]) and the COMBINE parameters (tables 3.22 to 3.24: the functions, the sources
+    /// TEXTURE, TEXTUREn, CONSTANT, PRIMARY_COLOR, PREVIOUS, the operands, RGB_SCALE and
+    /// ALPHA_SCALE 1, 2 or 4, else INVALID_VALUE), and TEXTURE_FILTER_CONTROL with
+    /// TEXTURE_LOD_BIAS (clamped to ±MAX_TEXTURE_LOD_BIAS). POINT_SPRITE's COORD_REPLACE is not
+    /// supported (INVALID_ENUM).
     fn tex_env(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         if !self.outside_begin_end() {
             return;
         }
-        let pair_ok = matches!(
-            (target, pname),
-            (
-                gl::TEXTURE_ENV,
-                gl::TEXTURE_ENV_MODE | gl::TEXTURE_ENV_COLOR
-            ) | (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS)
-        );
+        let env_pname = matches!(
+            pname,
+            gl::TEXTURE_ENV_MODE
+                | gl::TEXTURE_ENV_COLOR
+                | gl::COMBINE_RGB
+                | gl::COMBINE_ALPHA
+                | gl::RGB_SCALE
+                | gl::ALPHA_SCALE
+        ) || (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname)
+            && !matches!(pname, 0x8583..=0x8587)
+            || (gl::OPERAND0_RGB..=gl::OPERAND2_ALPHA).contains(&pname)
+                && !matches!(pname, 0x8593..=0x8597);
+        let pair_ok = (target == gl::TEXTURE_ENV && env_pname)
+            || (target, pname) == (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS);
         if !pair_ok || (pname == gl::TEXTURE_ENV_COLOR && !vector) {
             return self.error(gl::INVALID_ENUM);
         }
@@ -216,22 +227,66 @@ impl Context {
         }
         let x = v.first().copied().unwrap_or(0.0);
         let unit = self.state.active_texture;
-        let mode = as_enum(x);
-        if pname == gl::TEXTURE_ENV_MODE
-            && !matches!(
-                mode,
-                gl::MODULATE | gl::DECAL | gl::BLEND | gl::REPLACE | gl::ADD
+        let e = as_enum(x);
+        let source = |e: u32| {
+            matches!(
+                e,
+                gl::TEXTURE | gl::CONSTANT | gl::PRIMARY_COLOR | gl::PREVIOUS
+            ) || (gl::TEXTURE0..gl::TEXTURE0 + MAX_TEXTURE_UNITS as u32).contains(&e)
+        };
+        let rgb_fns = |e: u32| {
+            matches!(
+                e,
+                gl::REPLACE
+                    | gl::MODULATE
+                    | gl::ADD
+                    | gl::ADD_SIGNED
+                    | gl::INTERPOLATE
+                    | gl::SUBTRACT
             )
-        {
+        };
+        let ok = match pname {
+            gl::TEXTURE_ENV_MODE => matches!(
+                e,
+                gl::MODULATE | gl::DECAL | gl::BLEND | gl::REPLACE | gl::ADD | gl::COMBINE
+            ),
+            gl::COMBINE_RGB => rgb_fns(e) || matches!(e, gl::DOT3_RGB | gl::DOT3_RGBA),
+            gl::COMBINE_ALPHA => rgb_fns(e),
+            gl::SRC0_RGB..=gl::SRC2_ALPHA => source(e),
+            gl::OPERAND0_RGB..=gl::OPERAND2_RGB => matches!(
+                e,
+                gl::SRC_COLOR | gl::ONE_MINUS_SRC_COLOR | gl::SRC_ALPHA | gl::ONE_MINUS_SRC_ALPHA
+            ),
+            gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA => {
+                matches!(e, gl::SRC_ALPHA | gl::ONE_MINUS_SRC_ALPHA)
+            }
+            _ => true,
+        };
+        if !ok {
             return self.error(gl::INVALID_ENUM);
+        }
+        if matches!(pname, gl::RGB_SCALE | gl::ALPHA_SCALE) && ![1.0, 2.0, 4.0].contains(&x) {
+            return self.error(gl::INVALID_VALUE);
         }
         let Some(u) = self.state.textures.units.get_mut(unit) else {
             return;
         };
+        let c = &mut u.combine;
+        let k = |first: u32| (pname - first) as usize;
         match pname {
-            gl::TEXTURE_ENV_MODE => u.env_mode = mode,
+            gl::TEXTURE_ENV_MODE => u.env_mode = e,
             gl::TEXTURE_LOD_BIAS => {
                 u.lod_bias = (x as f32).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS)
+            }
+            gl::COMBINE_RGB => c.rgb = e,
+            gl::COMBINE_ALPHA => c.alpha = e,
+            gl::RGB_SCALE => c.rgb_scale = x as f32,
+            gl::ALPHA_SCALE => c.alpha_scale = x as f32,
+            gl::SRC0_RGB..=gl::SRC2_RGB => c.src_rgb[k(gl::SRC0_RGB).min(2)] = e,
+            gl::SRC0_ALPHA..=gl::SRC2_ALPHA => c.src_alpha[k(gl::SRC0_ALPHA).min(2)] = e,
+            gl::OPERAND0_RGB..=gl::OPERAND2_RGB => c.operand_rgb[k(gl::OPERAND0_RGB).min(2)] = e,
+            gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA => {
+                c.operand_alpha[k(gl::OPERAND0_ALPHA).min(2)] = e
             }
             _ => {
                 let c: Vec<f32> = v
@@ -538,6 +593,28 @@ impl Context {
                 u.env_color.to_array().map(f64::from).to_vec()
             }
             (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS) => vec![f64::from(u.lod_bias)],
+            (gl::TEXTURE_ENV, gl::COMBINE_RGB) => vec![f64::from(u.combine.rgb)],
+            (gl::TEXTURE_ENV, gl::COMBINE_ALPHA) => vec![f64::from(u.combine.alpha)],
+            (gl::TEXTURE_ENV, gl::RGB_SCALE) => vec![f64::from(u.combine.rgb_scale)],
+            (gl::TEXTURE_ENV, gl::ALPHA_SCALE) => vec![f64::from(u.combine.alpha_scale)],
+            (gl::TEXTURE_ENV, p @ gl::SRC0_RGB..=gl::SRC2_RGB) => {
+                vec![f64::from(
+                    u.combine.src_rgb[((p - gl::SRC0_RGB) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::SRC0_ALPHA..=gl::SRC2_ALPHA) => {
+                vec![f64::from(
+                    u.combine.src_alpha[((p - gl::SRC0_ALPHA) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::OPERAND0_RGB..=gl::OPERAND2_RGB) => {
+                vec![f64::from(
+                    u.combine.operand_rgb[((p - gl::OPERAND0_RGB) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA) => vec![f64::from(
+                u.combine.operand_alpha[((p - gl::OPERAND0_ALPHA) as usize).min(2)],
+            )],
             _ => {
                 self.error(gl::INVALID_ENUM);
                 return None;

@@ -117,12 +117,13 @@ impl FragCtx<'_> {
             }
         }
         // --- texture: §3.8.13, texturing comes before the colour sum
+        let prim = c;
         if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
-            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[0]);
+            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[0]);
         }
         // §3.8.15: each enabled unit takes the previous unit's result as Cf.
         if let (Some(tx), Some(o)) = (self.tex1, self.rl.tex1) {
-            c = tx.shade(c, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
+            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
         }
         // --- end texture
         if let (true, Some(s)) = (self.color_sum, s) {

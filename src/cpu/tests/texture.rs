@@ -231,25 +231,25 @@ fn depth_comparison_and_depth_texture_mode() {
     o.depth_texture_mode = gl::LUMINANCE;
     let s = sampler(o.clone(), gl::MODULATE);
     let cf = Vec4::new(0.8, 0.6, 0.4, 1.0);
-    let lit = s.shade(cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
+    let lit = s.shade(cf, cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
     assert!(close(lit, [0.8, 0.6, 0.4, 1.0]));
-    let shadowed = s.shade(cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
+    let shadowed = s.shade(cf, cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
     assert!(close(shadowed, [0.0, 0.0, 0.0, 1.0]));
     // r is divided by q: r/q = 1.2/2 = 0.6 > 0.5.
-    let q2 = s.shade(cf, [1.0, 1.0, 1.2, 2.0], 0.0).to_array();
+    let q2 = s.shade(cf, cf, [1.0, 1.0, 1.2, 2.0], 0.0).to_array();
     assert!(close(q2, [0.0, 0.0, 0.0, 1.0]));
     o.compare_func = gl::GREATER;
     o.depth_texture_mode = gl::ALPHA;
     let s = sampler(o.clone(), gl::MODULATE);
-    let a = s.shade(cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
+    let a = s.shade(cf, cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
     assert!(close(a, [0.8, 0.6, 0.4, 1.0]));
-    let b = s.shade(cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
+    let b = s.shade(cf, cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
     assert!(close(b, [0.8, 0.6, 0.4, 0.0]));
     // Without comparison the depth itself is the luminance: MODULATE by 0.5.
     o.compare_mode = gl::NONE;
     o.depth_texture_mode = gl::LUMINANCE;
     let s = sampler(o, gl::MODULATE);
-    let d = s.shade(cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
+    let d = s.shade(cf, cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
     assert!(close(d, [0.4, 0.3, 0.2, 1.0]));
 }
 
@@ -287,4 +287,19 @@ fn incomplete_textures_disable_the_unit() {
     state.enables.texture_2d[0] = false;
     state.textures.default_2d = Arc::new(o);
     assert!(Sampler::new(&state, 0).is_none());
+}
+
+#[test]
+fn combine_interpolate_by_hand() {
+    // Table 3.23 INTERPOLATE: a0·a2 + a1·(1 - a2) with a0 = the texel (0.5, 0.75, 0.25),
+    // a1 = Cc (1, 0, 0.5), a2 = the previous alpha 0.8: (0.6, 0.6, 0.3); alpha MODULATE of the
+    // initial sources TEXTURE and PREVIOUS: 0.5 · 0.8 = 0.4.
+    let lv = level(1, 1, gl::RGBA, |_, _| [0.5, 0.75, 0.25, 0.5]);
+    let mut s = sampler(obj_with(vec![lv], gl::NEAREST, gl::NEAREST), gl::COMBINE);
+    s.combine.rgb = gl::INTERPOLATE;
+    s.combine.src_rgb = [gl::TEXTURE, gl::CONSTANT, gl::PREVIOUS];
+    s.combine.operand_rgb = [gl::SRC_COLOR, gl::SRC_COLOR, gl::SRC_ALPHA];
+    let cf = Vec4::new(0.5, 0.25, 1.0, 0.8);
+    let got = s.shade(cf, cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
+    assert!(close(got, [0.6, 0.6, 0.3, 0.4]), "{got:?}");
 }
