@@ -241,8 +241,7 @@ fn texture_scenes_hold_their_tolerance() {
         let Some(scene) = scenes::find(name) else {
             panic!("{name} is registered")
         };
-        // The scenes' own size: the tolerance is stated for it (at 400x400 textured-cube has
-        // 0.22% of pixels off by 3 to 5, all on mip-blended checker edges; see the scene docs).
+        // The scenes' own size: the tolerance is stated for it.
         let (w, h) = scene.default_size;
         let Some(mut gl) = backend(w, h) else {
             return;
@@ -434,6 +433,137 @@ fn combine_matches_the_driver() {
             "run {i}: cpu {:?} gl {:?}",
             ci.get_pixel(1, 1),
             gi.get_pixel(1, 1)
+        );
+    }
+}
+
+/// Records `draw` on a CPU context of `w` x `w`, replays it on the driver, and returns the number
+/// of pixels off by more than `tol`, with the first one for the message.
+fn cpu_vs_gl(w: u32, tol: u8, draw: impl FnOnce(&mut Context)) -> Option<(u64, String)> {
+    let mut gl = backend(w, w)?;
+    let Ok(mut cpu) = Context::new(w, w) else {
+        panic!("CPU context")
+    };
+    cpu.start_recording();
+    draw(&mut cpu);
+    let calls = cpu.stop_recording();
+    assert_eq!(cpu.get_error(), gl::NO_ERROR);
+    gl.replay(&calls);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    let (ci, gi) = (scenes::cpu_image(&mut cpu), gl.read_image());
+    let cmp = compare(&ci, &gi, tol);
+    let first = ci
+        .enumerate_pixels()
+        .find(|(x, y, p)| {
+            let q = gi.get_pixel(*x, *y);
+            p.0.iter().zip(q.0).any(|(a, b)| a.abs_diff(b) > tol)
+        })
+        .map(|(x, y, p)| format!("({x},{y}) cpu {:?} gl {:?}", p.0, gi.get_pixel(x, y).0))
+        .unwrap_or_default();
+    Some((cmp.differing_pixels, first))
+}
+
+#[test]
+fn wrap_modes_and_filters_match_the_driver() {
+    use fixedgl::gl::*;
+    for wrap in [
+        REPEAT,
+        CLAMP,
+        CLAMP_TO_EDGE,
+        CLAMP_TO_BORDER,
+        MIRRORED_REPEAT,
+    ] {
+        for filter in [NEAREST, LINEAR] {
+            let Some((n, first)) = cpu_vs_gl(64, 1, |c| {
+                let tex: Vec<u8> = (0..16u8)
+                    .flat_map(|k| [k * 16, 255 - k * 16, (k % 3) * 100, 255])
+                    .collect();
+                c.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    4,
+                    4,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&tex),
+                );
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, filter as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, filter as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_S, wrap as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_T, wrap as i32);
+                c.tex_parameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, &[0.2, 0.4, 0.9, 1.0]);
+                c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+                c.enable(TEXTURE_2D);
+                c.begin(QUADS);
+                for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    c.tex_coord2f(x * 1.7 + 0.3, y * 1.3 + 0.4);
+                    c.vertex2f(x, y);
+                }
+                c.end();
+            }) else {
+                return;
+            };
+            assert_eq!(n, 0, "wrap {wrap:#x} filter {filter:#x}: first {first}");
+        }
+    }
+}
+
+#[test]
+fn mipmap_filters_match_the_driver() {
+    use fixedgl::gl::*;
+    for min in [
+        NEAREST_MIPMAP_NEAREST,
+        LINEAR_MIPMAP_NEAREST,
+        NEAREST_MIPMAP_LINEAR,
+        LINEAR_MIPMAP_LINEAR,
+    ] {
+        let Some((n, first)) = cpu_vs_gl(128, 2, |c| {
+            c.tex_parameteri(TEXTURE_2D, GENERATE_MIPMAP, 1);
+            let board = fixedgl::checkerboard(64, 8, [250, 250, 250, 255], [10, 60, 200, 255]);
+            c.tex_image_2d(
+                TEXTURE_2D,
+                0,
+                RGBA as i32,
+                64,
+                64,
+                0,
+                RGBA,
+                UNSIGNED_BYTE,
+                Some(&board),
+            );
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, min as i32);
+            // MAG NEAREST keeps the switch point c at 0 (§3.8.9), where llvmpipe has it always;
+            // with MAG LINEAR and a NEAREST_MIPMAP_* filter the spec's c = 0.5 differs.
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+            c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+            c.enable(TEXTURE_2D);
+            // A floor receding in perspective: λ from about -1 to 5 across the picture.
+            c.matrix_mode(PROJECTION);
+            c.frustum(-0.1, 0.1, -0.1, 0.1, 0.1, 50.0);
+            c.matrix_mode(MODELVIEW);
+            c.begin(QUADS);
+            for (s, t, x, z) in [
+                (0.0, 0.0, -4.0, -0.2),
+                (8.0, 0.0, 4.0, -0.2),
+                (8.0, 24.0, 4.0, -40.0),
+                (0.0, 24.0, -4.0, -40.0),
+            ] {
+                c.tex_coord2f(s, t);
+                c.vertex3f(x, -1.0, z);
+            }
+            c.end();
+        }) else {
+            return;
+        };
+        // Measured, not exact: λ differs from llvmpipe's in the last bits, which moves mip-blended
+        // texels on checker edges by a few levels.
+        assert!(n <= 128 * 128 / 200, "min {min:#x}: {n} px, first {first}");
+        let _ = writeln!(
+            std::io::stderr(),
+            "min {min:#x}: {n} of {} px off by more than 2",
+            128 * 128
         );
     }
 }

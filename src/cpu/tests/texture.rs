@@ -303,3 +303,12 @@ fn combine_interpolate_by_hand() {
     let got = s.shade(cf, cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
     assert!(close(got, [0.6, 0.6, 0.3, 0.4]), "{got:?}");
 }
+
+#[test]
+fn lod_log2_is_piecewise_linear_like_llvmpipe() {
+    // Exact at powers of two, linear in between: 3 = 2^1 · 1.5 → 1 + 0.5; 0.75 = 2^-1 · 1.5.
+    assert_eq!(fast_log2(4.0), 2.0);
+    assert_eq!(fast_log2(3.0), 1.5);
+    assert_eq!(fast_log2(0.75), -0.5);
+    assert_eq!(fast_log2(0.0), f32::NEG_INFINITY);
+}
