@@ -24,6 +24,17 @@ use crate::gl;
 use crate::state::State;
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject};
 
+/// Which sampling routine a flush uses (chosen once in [`Sampler::new`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Route {
+    /// NEAREST on the base level whatever λ (no mipmaps, both filters NEAREST).
+    Nearest,
+    /// LINEAR on the base level whatever λ (no mipmaps, both filters LINEAR).
+    Linear,
+    /// λ decides: magnification, or minification with or without mipmaps.
+    Lod,
+}
+
 /// One texture unit's sampling and environment state for a flush.
 #[derive(Clone, Debug)]
 pub struct Sampler {
@@ -48,6 +59,8 @@ pub struct Sampler {
     env_color: Vec4,
     /// The COMBINE parameters.
     combine: Combine,
+    /// The sampling routine of this flush.
+    route: Route,
     /// TEXTURE_COMPARE_FUNC when TEXTURE_COMPARE_MODE is COMPARE_R_TO_TEXTURE on a depth texture.
     compare: Option<u32>,
     depth_mode: u32,
@@ -96,6 +109,11 @@ impl Sampler {
             env: u.env_mode,
             env_color: u.env_color,
             combine: u.combine,
+            route: match (mipmapped, obj.min_filter == obj.mag_filter, obj.min_filter) {
+                (false, true, gl::NEAREST) => Route::Nearest,
+                (false, true, _) => Route::Linear,
+                _ => Route::Lod,
+            },
             compare: (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
                 && b.base == gl::DEPTH_COMPONENT)
                 .then_some(obj.compare_func),
@@ -108,7 +126,7 @@ impl Sampler {
     /// magnification filters agree (then λ only chooses between two identical filters).
     #[inline]
     pub fn needs_lambda(&self) -> bool {
-        is_mipmap_filter(self.min) || self.min != self.mag
+        self.route == Route::Lod
     }
 
     /// λ of §3.8.8 for the 2x2 quad whose lower-left pixel is at (fx, fy) relative to the
@@ -147,7 +165,14 @@ impl Sampler {
     pub fn shade(&self, cf: Vec4, prim: Vec4, coords: [f32; 4], lambda: f32) -> Vec4 {
         let [s, t, r, q] = coords;
         let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
-        let texel = self.sample(s * inv, t * inv, r * inv, lambda);
+        let (s, t, r) = (s * inv, t * inv, r * inv);
+        // The route was chosen once for the flush: without mipmaps and with equal filters, λ
+        // cannot matter and the base level's filter is called directly.
+        let texel = match self.route {
+            Route::Nearest => self.nearest(self.base_level, s, t, r),
+            Route::Linear => self.linear(self.base_level, s, t, r),
+            Route::Lod => self.sample(s, t, r, lambda),
+        };
         if self.env == gl::COMBINE {
             return self.combine(cf, prim, texel);
         }
@@ -276,18 +301,34 @@ impl Sampler {
     }
 
     /// NEAREST or LINEAR on one level (§3.8.8, the wrap modes of §3.8.7).
+    #[inline]
     fn filter(&self, level: i32, filter: u32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        if filter == gl::NEAREST {
+            self.nearest(level, s, t, r)
+        } else {
+            self.linear(level, s, t, r)
+        }
+    }
+
+    /// NEAREST on level `level`: the texel containing (u, v) (eq. 3.22).
+    #[inline]
+    fn nearest(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
         let Some(lv) = self.obj.level(level) else {
             return [0.0; 4];
         };
-        let (w, h) = (lv.width, lv.height);
-        if filter == gl::NEAREST {
-            let i = wrap_nearest(self.wrap[0], s, w);
-            let j = wrap_nearest(self.wrap[1], t, h);
-            return self.fetch(lv, i, j, r);
-        }
-        let (i0, i1, a) = wrap_linear(self.wrap[0], s, w);
-        let (j0, j1, b) = wrap_linear(self.wrap[1], t, h);
+        let i = wrap_nearest(self.wrap[0], s, lv.width);
+        let j = wrap_nearest(self.wrap[1], t, lv.height);
+        self.fetch(lv, i, j, r)
+    }
+
+    /// LINEAR on level `level`: the 2x2 texels around (u, v) weighted by eq. 3.24.
+    #[inline]
+    fn linear(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        let Some(lv) = self.obj.level(level) else {
+            return [0.0; 4];
+        };
+        let (i0, i1, a) = wrap_linear(self.wrap[0], s, lv.width);
+        let (j0, j1, b) = wrap_linear(self.wrap[1], t, lv.height);
         let t00 = self.fetch(lv, i0, j0, r);
         let t10 = self.fetch(lv, i1, j0, r);
         let t01 = self.fetch(lv, i0, j1, r);
