@@ -10,7 +10,7 @@
 //!
 //! Size matters: a frame of the 400x400 lecture surface records 1.6M calls, and every replay streams
 //! them from memory, so `size_of::<Call>()` is a per-call cost. Rare calls with large arguments
-//! (the 16-element matrices) keep them boxed, and so do `Frustum`/`Ortho`, which holds every call to 40 bytes instead of 136 (the
+//! (the 16-element matrices) keep them boxed, and so do `Frustum`/`Ortho` and the texture image calls, which holds every call to 40 bytes instead of 136 (the
 //! test below keeps it there). Forms whose
 //! length depends on a pname (`Lightfv`) own a `Vec` holding exactly the slice the caller passed.
 //!
@@ -19,6 +19,13 @@
 use serde::{Deserialize, Serialize};
 
 use crate::arrays::Pointer;
+
+/// `TexImage2D`'s arguments: target, level, internalformat, width, height, border, format, type,
+/// pixels (`None`: a NULL pointer).
+pub type TexImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8>>);
+/// `TexSubImage2D`'s arguments: target, level, xoffset, yoffset, width, height, format, type,
+/// pixels.
+pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
 /// One GL call with its arguments.
 #[allow(missing_docs)]
@@ -288,6 +295,67 @@ pub enum Call {
     BlendColor(f32, f32, f32, f32),
     LogicOp(u32),
     // --- end fragment ops
+
+    // --- texture (context/texture.rs, context/texture_params.rs)
+    GenTextures(i32),
+    DeleteTextures(i32, Vec<u32>),
+    BindTexture(u32, u32),
+    /// target, level, internalformat, width, height, border, format, type, pixels (None: NULL);
+    /// boxed, as the next one: eight integers would grow every call (see the module docs).
+    TexImage2D(Box<TexImage2DArgs>),
+    /// target, level, xoffset, yoffset, width, height, format, type, pixels.
+    TexSubImage2D(Box<TexSubImage2DArgs>),
+    /// target, level, internalformat, x, y, width, height, border.
+    CopyTexImage2D(u32, i32, u32, i32, i32, i32, i32, i32),
+    /// target, level, xoffset, yoffset, x, y, width, height.
+    CopyTexSubImage2D(u32, i32, i32, i32, i32, i32, i32, i32),
+    TexParameteri(u32, u32, i32),
+    TexParameterf(u32, u32, f32),
+    TexParameteriv(u32, u32, Vec<i32>),
+    TexParameterfv(u32, u32, Vec<f32>),
+    TexEnvi(u32, u32, i32),
+    TexEnvf(u32, u32, f32),
+    TexEnviv(u32, u32, Vec<i32>),
+    TexEnvfv(u32, u32, Vec<f32>),
+    TexGeni(u32, u32, i32),
+    TexGenf(u32, u32, f32),
+    TexGend(u32, u32, f64),
+    TexGeniv(u32, u32, Vec<i32>),
+    TexGenfv(u32, u32, Vec<f32>),
+    TexGendv(u32, u32, Vec<f64>),
+    MultiTexCoord1s(u32, i16),
+    MultiTexCoord1sv(u32, [i16; 1]),
+    MultiTexCoord1i(u32, i32),
+    MultiTexCoord1iv(u32, [i32; 1]),
+    MultiTexCoord1f(u32, f32),
+    MultiTexCoord1fv(u32, [f32; 1]),
+    MultiTexCoord1d(u32, f64),
+    MultiTexCoord1dv(u32, [f64; 1]),
+    MultiTexCoord2s(u32, i16, i16),
+    MultiTexCoord2sv(u32, [i16; 2]),
+    MultiTexCoord2i(u32, i32, i32),
+    MultiTexCoord2iv(u32, [i32; 2]),
+    MultiTexCoord2f(u32, f32, f32),
+    MultiTexCoord2fv(u32, [f32; 2]),
+    MultiTexCoord2d(u32, f64, f64),
+    MultiTexCoord2dv(u32, [f64; 2]),
+    MultiTexCoord3s(u32, i16, i16, i16),
+    MultiTexCoord3sv(u32, [i16; 3]),
+    MultiTexCoord3i(u32, i32, i32, i32),
+    MultiTexCoord3iv(u32, [i32; 3]),
+    MultiTexCoord3f(u32, f32, f32, f32),
+    MultiTexCoord3fv(u32, [f32; 3]),
+    MultiTexCoord3d(u32, f64, f64, f64),
+    MultiTexCoord3dv(u32, [f64; 3]),
+    MultiTexCoord4s(u32, i16, i16, i16, i16),
+    MultiTexCoord4sv(u32, [i16; 4]),
+    MultiTexCoord4i(u32, i32, i32, i32, i32),
+    MultiTexCoord4iv(u32, [i32; 4]),
+    MultiTexCoord4f(u32, f32, f32, f32, f32),
+    MultiTexCoord4fv(u32, [f32; 4]),
+    MultiTexCoord4d(u32, f64, f64, f64, f64),
+    MultiTexCoord4dv(u32, [f64; 4]),
+    // --- end texture
 }
 
 impl Call {
@@ -427,6 +495,38 @@ impl Call {
                 | Call::CallList(..)
                 | Call::CallLists(..)
                 | Call::ArrayElement(..)
+                | Call::MultiTexCoord1s(..)
+                | Call::MultiTexCoord1sv(..)
+                | Call::MultiTexCoord1i(..)
+                | Call::MultiTexCoord1iv(..)
+                | Call::MultiTexCoord1f(..)
+                | Call::MultiTexCoord1fv(..)
+                | Call::MultiTexCoord1d(..)
+                | Call::MultiTexCoord1dv(..)
+                | Call::MultiTexCoord2s(..)
+                | Call::MultiTexCoord2sv(..)
+                | Call::MultiTexCoord2i(..)
+                | Call::MultiTexCoord2iv(..)
+                | Call::MultiTexCoord2f(..)
+                | Call::MultiTexCoord2fv(..)
+                | Call::MultiTexCoord2d(..)
+                | Call::MultiTexCoord2dv(..)
+                | Call::MultiTexCoord3s(..)
+                | Call::MultiTexCoord3sv(..)
+                | Call::MultiTexCoord3i(..)
+                | Call::MultiTexCoord3iv(..)
+                | Call::MultiTexCoord3f(..)
+                | Call::MultiTexCoord3fv(..)
+                | Call::MultiTexCoord3d(..)
+                | Call::MultiTexCoord3dv(..)
+                | Call::MultiTexCoord4s(..)
+                | Call::MultiTexCoord4sv(..)
+                | Call::MultiTexCoord4i(..)
+                | Call::MultiTexCoord4iv(..)
+                | Call::MultiTexCoord4f(..)
+                | Call::MultiTexCoord4fv(..)
+                | Call::MultiTexCoord4d(..)
+                | Call::MultiTexCoord4dv(..)
         )
     }
 }
@@ -469,6 +569,9 @@ impl Call {
                 | Call::BindBuffer(..)
                 | Call::BufferData(..)
                 | Call::BufferSubData(..)
+                // --- texture: object names (GL 2.1 §5.4)
+                | Call::GenTextures(..)
+                | Call::DeleteTextures(..)
         )
     }
 }

@@ -95,3 +95,108 @@ pub fn perspective(ctx: &mut Context, fovy: f64, aspect: f64, near: f64, far: f6
 pub fn ortho_2d(ctx: &mut Context, left: f64, right: f64, bottom: f64, top: f64) {
     ctx.ortho(left, right, bottom, top, -1.0, 1.0);
 }
+
+// --- texture: gluBuild2DMipmaps
+/// `GLU_INVALID_VALUE`.
+pub const GLU_INVALID_VALUE: i32 = 100_901;
+/// `GLU_INVALID_ENUM`.
+pub const GLU_INVALID_ENUM: i32 = 100_900;
+
+/// `gluBuild2DMipmaps` (GLU 1.3 §3.2) for UNSIGNED_BYTE data: level 0 is `data` (read with the
+/// context's UNPACK_ALIGNMENT and UNPACK_ROW_LENGTH), each next level halves the previous one
+/// with a 2x2 box filter, rounding `(a + b + c + d + 2) / 4` as the reference GLU does, down
+/// to 1x1; every level goes to `tex_image_2d` with UNPACK_ALIGNMENT 1 and UNPACK_ROW_LENGTH 0,
+/// which are restored afterwards (as GLU saves and restores the pixel store state).
+/// Returns 0, or GLU_INVALID_VALUE for a size below 1 or data too short, GLU_INVALID_ENUM for
+/// a format or type not supported. Deviation: a size that is not a power of two is reduced to
+/// the power of two below it by nearest sampling (GLU scales to the nearest one with a box
+/// filter).
+#[allow(clippy::too_many_arguments)]
+pub fn build_2d_mipmaps(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    type_: u32,
+    data: &[u8],
+) -> i32 {
+    use crate::gl;
+    use crate::texture::{format_components, unpack_extent};
+    let Some(n) = format_components(format) else {
+        return GLU_INVALID_ENUM;
+    };
+    if type_ != gl::UNSIGNED_BYTE {
+        return GLU_INVALID_ENUM;
+    }
+    if width < 1 || height < 1 || width > crate::texture::MAX_TEXTURE_SIZE * 8 {
+        return GLU_INVALID_VALUE;
+    }
+    let align = ctx.state().unpack_alignment;
+    let row_length = ctx.state().textures.unpack_row_length;
+    let (stride, need) = unpack_extent(width, height, n, 1, align, row_length);
+    if data.len() < need {
+        return GLU_INVALID_VALUE;
+    }
+    let pot = |x: i32| 1i32 << (31 - x.leading_zeros());
+    let (mut w, mut h) = (
+        pot(width).min(crate::texture::MAX_TEXTURE_SIZE),
+        pot(height).min(crate::texture::MAX_TEXTURE_SIZE),
+    );
+    // Level 0, tightly packed (nearest sampling when the size changes).
+    let mut img = Vec::with_capacity((w * h) as usize * n);
+    for j in 0..h as usize {
+        let sj = j * height as usize / h as usize;
+        for i in 0..w as usize {
+            let si = i * width as usize / w as usize;
+            let at = sj * stride + si * n;
+            img.extend_from_slice(data.get(at..at + n).unwrap_or(&[0, 0, 0, 0][..n.min(4)]));
+        }
+    }
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 1);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
+    let mut level = 0;
+    loop {
+        ctx.tex_image_2d(
+            target,
+            level,
+            internal_format,
+            w,
+            h,
+            0,
+            format,
+            type_,
+            Some(&img),
+        );
+        if w == 1 && h == 1 {
+            break;
+        }
+        let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+        let (fx, fy) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 });
+        let mut next = Vec::with_capacity((nw * nh) as usize * n);
+        for j in 0..nh as usize {
+            for i in 0..nw as usize {
+                for k in 0..n {
+                    let mut sum = 0u32;
+                    for dj in 0..fy {
+                        for di in 0..fx {
+                            let at = ((j * fy + dj) * w as usize + i * fx + di) * n + k;
+                            sum += u32::from(img.get(at).copied().unwrap_or(0));
+                        }
+                    }
+                    let cnt = (fx * fy) as u32;
+                    next.push(((sum + cnt / 2) / cnt) as u8);
+                }
+            }
+        }
+        img = next;
+        w = nw;
+        h = nh;
+        level += 1;
+    }
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, align);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, row_length);
+    0
+}
+// --- end texture

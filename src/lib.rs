@@ -42,3 +42,7 @@ pub mod scenes;
 pub mod arrays;
 pub use arrays::Pointer;
 // --- end arrays
+// --- texture: texture state, unpacking and image helpers (texture.rs)
+pub mod texture;
+pub use texture::{checkerboard, texture_from_image};
+// --- end texture

@@ -114,6 +114,12 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         "StencilOpSeparate" => &[Enum, Enum, Enum, Enum],
         "StencilMaskSeparate" => &[Enum],
         // --- end fragment ops
+        // --- texture
+        "TexImage2D" => &[Enum, Plain, Enum, Plain, Plain, Plain, Enum, Enum],
+        "TexSubImage2D" => &[Enum, Plain, Plain, Plain, Plain, Plain, Enum, Enum],
+        "CopyTexImage2D" => &[Enum, Plain, Enum],
+        "CopyTexSubImage2D" => &[Enum],
+        // --- end texture
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],
     }
@@ -301,6 +307,7 @@ fn to_ron(tokens: &[Token<'_>], names: &HashMap<&str, u32>) -> Result<String, St
             && !matches!(word, "true" | "false" | "NaN" | "inf")
             // --- arrays: the variants of a `Pointer` argument
             && !matches!(word, "Data" | "Offset")
+            && !matches!(word, "true" | "false" | "NaN" | "inf" | "Some" | "None")
         {
             return Err(format!("unknown GL name `{word}`"));
         } else {

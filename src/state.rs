@@ -379,6 +379,9 @@ pub struct State {
     /// `LOGIC_OP_MODE` (table 6.21).
     pub logic_op: u32,
     // --- end fragment ops
+    // --- texture: objects, units, UNPACK_ROW_LENGTH (tables 6.15 to 6.19, 6.24)
+    pub textures: crate::texture::Textures,
+    // --- end texture
 }
 
 impl State {
@@ -442,6 +445,9 @@ impl State {
             blend: Blend::default(),
             logic_op: gl::COPY,
             // --- end fragment ops
+            // --- texture
+            textures: crate::texture::Textures::default(),
+            // --- end texture
         }
     }
 

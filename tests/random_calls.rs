@@ -35,6 +35,7 @@ fn allowed_inside(call: &Call) -> bool {
         "Color",
         "SecondaryColor",
         "TexCoord",
+        "MultiTexCoord",
         "FogCoord",
         "EdgeFlag",
         "Material",

@@ -306,6 +306,11 @@ impl Context {
             gl::BLEND_COLOR => norm(s.blend.color.to_array()),
             gl::LOGIC_OP_MODE => e(s.logic_op),
             // --- end fragment ops
+            // --- texture (tables 6.15, 6.24, 6.35)
+            gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.binding_2d as i32),
+            gl::UNPACK_ROW_LENGTH => i(s.textures.unpack_row_length),
+            gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
+            // --- end texture
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)

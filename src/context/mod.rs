@@ -486,6 +486,74 @@ impl Context {
             Call::BlendColor(r, g, b, a) => self.blend_color(r, g, b, a),
             Call::LogicOp(op) => self.logic_op(op),
             // --- end fragment ops
+            // --- texture (context/texture.rs, context/texture_params.rs)
+            Call::GenTextures(n) => {
+                let mut names = vec![0; n.clamp(0, texture::MAX_GEN_TEXTURES) as usize];
+                self.gen_textures(n, &mut names);
+            }
+            Call::DeleteTextures(n, ref t) => self.delete_textures(n, t),
+            Call::BindTexture(a, b) => self.bind_texture(a, b),
+            Call::TexImage2D(ref args) => {
+                let (t, l, i, w, h, b, f, ty, ref p) = **args;
+                self.tex_image_2d(t, l, i, w, h, b, f, ty, p.as_deref())
+            }
+            Call::TexSubImage2D(ref args) => {
+                let (t, l, x, y, w, h, f, ty, ref p) = **args;
+                self.tex_sub_image_2d(t, l, x, y, w, h, f, ty, p)
+            }
+            Call::CopyTexImage2D(t, l, i, x, y, w, h, b) => {
+                self.copy_tex_image_2d(t, l, i, x, y, w, h, b)
+            }
+            Call::CopyTexSubImage2D(t, l, xo, yo, x, y, w, h) => {
+                self.copy_tex_sub_image_2d(t, l, xo, yo, x, y, w, h)
+            }
+            Call::TexParameteri(a, b, c) => self.tex_parameteri(a, b, c),
+            Call::TexParameterf(a, b, c) => self.tex_parameterf(a, b, c),
+            Call::TexParameteriv(a, b, ref c) => self.tex_parameteriv(a, b, c),
+            Call::TexParameterfv(a, b, ref c) => self.tex_parameterfv(a, b, c),
+            Call::TexEnvi(a, b, c) => self.tex_envi(a, b, c),
+            Call::TexEnvf(a, b, c) => self.tex_envf(a, b, c),
+            Call::TexEnviv(a, b, ref c) => self.tex_enviv(a, b, c),
+            Call::TexEnvfv(a, b, ref c) => self.tex_envfv(a, b, c),
+            Call::TexGeni(a, b, c) => self.tex_geni(a, b, c),
+            Call::TexGenf(a, b, c) => self.tex_genf(a, b, c),
+            Call::TexGend(a, b, c) => self.tex_gend(a, b, c),
+            Call::TexGeniv(a, b, ref c) => self.tex_geniv(a, b, c),
+            Call::TexGenfv(a, b, ref c) => self.tex_genfv(a, b, c),
+            Call::TexGendv(a, b, ref c) => self.tex_gendv(a, b, c),
+            Call::MultiTexCoord1s(t, a0) => self.multi_tex_coord1s(t, a0),
+            Call::MultiTexCoord1sv(t, ref v) => self.multi_tex_coord1sv(t, v),
+            Call::MultiTexCoord1i(t, a0) => self.multi_tex_coord1i(t, a0),
+            Call::MultiTexCoord1iv(t, ref v) => self.multi_tex_coord1iv(t, v),
+            Call::MultiTexCoord1f(t, a0) => self.multi_tex_coord1f(t, a0),
+            Call::MultiTexCoord1fv(t, ref v) => self.multi_tex_coord1fv(t, v),
+            Call::MultiTexCoord1d(t, a0) => self.multi_tex_coord1d(t, a0),
+            Call::MultiTexCoord1dv(t, ref v) => self.multi_tex_coord1dv(t, v),
+            Call::MultiTexCoord2s(t, a0, a1) => self.multi_tex_coord2s(t, a0, a1),
+            Call::MultiTexCoord2sv(t, ref v) => self.multi_tex_coord2sv(t, v),
+            Call::MultiTexCoord2i(t, a0, a1) => self.multi_tex_coord2i(t, a0, a1),
+            Call::MultiTexCoord2iv(t, ref v) => self.multi_tex_coord2iv(t, v),
+            Call::MultiTexCoord2f(t, a0, a1) => self.multi_tex_coord2f(t, a0, a1),
+            Call::MultiTexCoord2fv(t, ref v) => self.multi_tex_coord2fv(t, v),
+            Call::MultiTexCoord2d(t, a0, a1) => self.multi_tex_coord2d(t, a0, a1),
+            Call::MultiTexCoord2dv(t, ref v) => self.multi_tex_coord2dv(t, v),
+            Call::MultiTexCoord3s(t, a0, a1, a2) => self.multi_tex_coord3s(t, a0, a1, a2),
+            Call::MultiTexCoord3sv(t, ref v) => self.multi_tex_coord3sv(t, v),
+            Call::MultiTexCoord3i(t, a0, a1, a2) => self.multi_tex_coord3i(t, a0, a1, a2),
+            Call::MultiTexCoord3iv(t, ref v) => self.multi_tex_coord3iv(t, v),
+            Call::MultiTexCoord3f(t, a0, a1, a2) => self.multi_tex_coord3f(t, a0, a1, a2),
+            Call::MultiTexCoord3fv(t, ref v) => self.multi_tex_coord3fv(t, v),
+            Call::MultiTexCoord3d(t, a0, a1, a2) => self.multi_tex_coord3d(t, a0, a1, a2),
+            Call::MultiTexCoord3dv(t, ref v) => self.multi_tex_coord3dv(t, v),
+            Call::MultiTexCoord4s(t, a0, a1, a2, a3) => self.multi_tex_coord4s(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4sv(t, ref v) => self.multi_tex_coord4sv(t, v),
+            Call::MultiTexCoord4i(t, a0, a1, a2, a3) => self.multi_tex_coord4i(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4iv(t, ref v) => self.multi_tex_coord4iv(t, v),
+            Call::MultiTexCoord4f(t, a0, a1, a2, a3) => self.multi_tex_coord4f(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4fv(t, ref v) => self.multi_tex_coord4fv(t, v),
+            Call::MultiTexCoord4d(t, a0, a1, a2, a3) => self.multi_tex_coord4d(t, a0, a1, a2, a3),
+            Call::MultiTexCoord4dv(t, ref v) => self.multi_tex_coord4dv(t, v),
+            // --- end texture
         }
     }
 
@@ -572,3 +640,8 @@ pub(crate) use lists::{name_offset, name_size};
 // --- fragment ops: Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
 mod fragment;
 // --- end fragment ops
+// --- texture: objects, images, parameters (context/texture.rs, context/texture_params.rs)
+pub mod texture;
+mod texture_coords;
+mod texture_params;
+// --- end texture

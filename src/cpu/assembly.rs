@@ -24,9 +24,9 @@ pub struct Asm {
 }
 
 /// Appends the primitives of `prims` to `out`: `idx` maps each vertex given to its unique
-/// vertex, `edge` are the unique vertices' edge flags, `flat` whether the shade model is FLAT
-/// (it picks the diagonal quads are split along).
-pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], flat: bool, out: &mut Vec<Asm>) {
+/// vertex, `edge` are the unique vertices' edge flags, `split_last` whether quads split along
+/// their 1–3 diagonal (FLAT shading, or a batch that needs clipping) rather than 0–2.
+pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, out: &mut Vec<Asm>) {
     out.clear();
     let start = out.len();
     let ef = |i: u32| {
@@ -87,16 +87,15 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], flat: bool, out: &mu
                 (0..n.saturating_sub(2)).map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, 7)),
             ),
             gl::QUADS => {
-                // --- scenes branch: the diagonal depends on the shade model, as on llvmpipe.
-                // FLAT: along the 1–3 diagonal, (0,1,3) and (1,2,3), as Mesa's draw module
-                // splits with the provoking vertex last. SMOOTH: the provoking vertex cannot
-                // matter, and Mesa then decomposes first-vertex style, along 0–2: (0,1,2) and
-                // (0,2,3) (measured against llvmpipe: the `primitives` scene). Either way each
-                // sub-triangle keeps provoking vertex 3.
+                // GL leaves the diagonal open (§2.6.1); fixedgl takes llvmpipe's. With `flat`
+                // (FLAT shading, or a batch that needs clipping: the caller decides), along
+                // 1–3, (0,1,3) and (1,2,3), as Mesa's draw pipeline splits with the provoking
+                // vertex last; otherwise along 0–2, (0,1,2) and (0,2,3), as llvmpipe's own
+                // setup does. Either way each sub-triangle keeps provoking vertex 3.
                 for i in 0..n / 4 {
                     let a = f + 4 * i;
                     let [e0, e1, e2, e3] = [ef(a), ef(a + 1), ef(a + 2), ef(a + 3)];
-                    if flat {
+                    if split_last {
                         out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
                         out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
                     } else {

@@ -46,6 +46,10 @@ pub struct Batch {
     pub color2: Vec<Vec4>,
     /// Texture coordinates of unit 0.
     pub tex: Vec<Vec4>,
+    // --- texture: unit 1's coordinates (multitexture)
+    /// Texture coordinates of unit 1.
+    pub tex1: Vec<Vec4>,
+    // --- end texture
     /// Edge flag.
     pub edge: Vec<bool>,
     /// Index into `snapshots`; meaningful only when `snapshots` is not empty.
@@ -75,6 +79,7 @@ impl Default for Batch {
             color: Vec::new(),
             color2: Vec::new(),
             tex: Vec::new(),
+            tex1: Vec::new(),
             edge: Vec::new(),
             mat: Vec::new(),
             fog: Vec::new(), // fragment ops
@@ -134,6 +139,7 @@ impl Batch {
             && same4(self.color[hit], c.color)
             && same4(self.color2[hit], c.secondary_color)
             && same4(self.tex[hit], c.tex_coords[0])
+            && same4(self.tex1[hit], c.tex_coords[1])
             && self.edge[hit] == c.edge_flag
             && self.mat[hit] == self.cur_mat
             && self.fog[hit].to_bits() == c.fog_coord.to_bits()
@@ -150,6 +156,7 @@ impl Batch {
         self.color.push(c.color);
         self.color2.push(c.secondary_color);
         self.tex.push(c.tex_coords[0]);
+        self.tex1.push(c.tex_coords[1]);
         self.edge.push(c.edge_flag);
         self.mat.push(self.cur_mat);
         self.fog.push(c.fog_coord); // fragment ops
@@ -195,6 +202,7 @@ impl Batch {
         self.color.clear();
         self.color2.clear();
         self.tex.clear();
+        self.tex1.clear();
         self.edge.clear();
         self.mat.clear();
         self.fog.clear(); // fragment ops

@@ -44,6 +44,12 @@ pub struct FragCtx<'a> {
     pub count: bool,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
+    // --- texture: unit 0's sampler when texturing is on and its texture complete (§3.8)
+    /// Texture unit 0 (`None`: no texturing in this flush).
+    pub tex: Option<&'a super::texture::Sampler>,
+    /// Texture unit 1, applied to unit 0's result (§3.8.15).
+    pub tex1: Option<&'a super::texture::Sampler>,
+    // --- end texture
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -95,9 +101,10 @@ impl FragCtx<'_> {
         true
     }
 
-    /// The final colour of a fragment with varyings `v` (§3.9 colour sum; PHONG_WIN lighting).
+    /// The final colour of a fragment with varyings `v` and texture level of detail `lambda`
+    /// (§3.8 texturing, §3.9 colour sum; PHONG_WIN lighting).
     #[inline(always)]
-    fn color(&self, p: &RPrim, v: &[f32]) -> Vec4 {
+    fn color(&self, p: &RPrim, v: &[f32], lambda: [f32; 2]) -> Vec4 {
         let g = |k: usize| v.get(k).copied().unwrap_or(0.0);
         let mut c = Vec4::new(g(0), g(1), g(2), g(3));
         let mut s = self.rl.spec.map(|o| Vec3::new(g(o), g(o + 1), g(o + 2)));
@@ -118,8 +125,17 @@ impl FragCtx<'_> {
                 }
             }
         }
-        // --- texturing slot (§3.8.13): the texture environment applies to `c` here, before
-        // the colour sum (§3.9) and fog (§3.10, in `full`).
+        // --- texture: §3.8.13, texturing comes before the colour sum (§3.9) and fog (§3.10,
+        // in `full`)
+        let prim = c;
+        if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
+            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[0]);
+        }
+        // §3.8.15: each enabled unit takes the previous unit's result as Cf.
+        if let (Some(tx), Some(o)) = (self.tex1, self.rl.tex1) {
+            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
+        }
+        // --- end texture
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
@@ -223,12 +239,14 @@ impl FragCtx<'_> {
     pub fn fragment(&self, bufs: &mut TileBufs, p: &RPrim, x: i32, y: i32, z: f64, v: &[f32]) {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
         if let Some(ops) = &self.ops {
-            let c = self.color(p, v);
+            // A line or point fragment has no quad derivatives: λ = 0, as below.
+            let c = self.color(p, v, [0.0; 2]);
             self.full(ops, bufs, p, i, z, c, self.fog_coord(v));
             return;
         }
         if self.depth(bufs, i, z) {
-            let c = self.color(p, v);
+            // A point has no derivatives: λ = 0 (the base level, magnification).
+            let c = self.color(p, v, [0.0; 2]);
             self.write(bufs, i, c);
         }
     }
@@ -302,6 +320,10 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());
+        // --- texture: the quad whose λ is in `lambda` (none yet)
+        let mut quad_x = i32::MIN;
+        let mut lambda = [0.0f32; 2];
+        // --- end texture
         while mask != 0 {
             let k = mask.trailing_zeros() as usize;
             mask &= mask - 1;
@@ -313,9 +335,30 @@ impl FragCtx<'_> {
                 let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
                 *vj = if j < nflat { val } else { val * inv };
             }
-            let c = self.color(p, &v[..nv]);
+            // --- texture: λ once per 2x2 quad
+            let qx = (x0 + k as i32) & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                lambda = self.quad_lambda(planes, qx, y, ox, oy);
+            }
+            // --- end texture
+            let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);
         }
+    }
+
+    /// Texture level of detail of both units for the 2x2 quad holding window pixel (x, y), from
+    /// the quad's lower-left pixel as llvmpipe does (§3.8.8), relative to the primitive's
+    /// bounding-box corner (ox, oy); 0 for a unit whose result does not depend on it.
+    fn quad_lambda(&self, planes: &[f32], x: i32, y: i32, ox: i32, oy: i32) -> [f32; 2] {
+        let (qx, qy) = ((x & !1) - ox, (y & !1) - oy);
+        let lod = |tx: Option<&super::texture::Sampler>, to: Option<usize>| match (tx, to) {
+            (Some(tx), Some(to)) if tx.needs_lambda() => {
+                tx.quad_lambda(planes, to, qx as f32, qy as f32)
+            }
+            _ => 0.0,
+        };
+        [lod(self.tex, self.rl.tex), lod(self.tex1, self.rl.tex1)]
     }
 
     /// A span through the full sequence (`ops` enabled): every pixel in order.
@@ -341,6 +384,7 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = self.rl.n.min(v.len());
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
         for k in 0..n.min(TILE) {
             let fx = (x0 - ox + k as i32) as f32;
             let z = zrow + p.z[1] * fx;
@@ -350,7 +394,14 @@ impl FragCtx<'_> {
                 let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
                 *vj = if j < nflat { val } else { val * inv };
             }
-            let c = self.color(p, &v[..nv]);
+            let qx = (x0 + k as i32) & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                // `fy` is the row's offset from the bounding box's bottom (an integer).
+                let y = p.bbox[1] + fy as i32;
+                lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+            }
+            let c = self.color(p, &v[..nv], lambda);
             let fogc = self.fog_coord(&v[..nv]);
             self.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
         }

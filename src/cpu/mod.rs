@@ -26,6 +26,10 @@ pub mod framebuffer;
 mod line;
 pub mod raster;
 pub mod setup;
+// --- texture
+pub mod texgen;
+pub mod texture;
+// --- end texture
 pub mod vertex;
 
 #[cfg(test)]
@@ -141,7 +145,7 @@ impl Renderer {
         }
         let layout = Layout::for_state(state);
         let rect = framebuffer::scissor_rect(state);
-        let ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
+        let mut ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
         // Vertex stage (§2.11, §2.14), parallel over large batches.
         vertex::process(
             state,
@@ -151,8 +155,17 @@ impl Renderer {
             &mut self.vout,
             &mut self.wins,
         );
+        // llvmpipe splits quads along 1–3 when it shades FLAT or when any vertex of the draw
+        // needs clipping (its draw module then takes the clipping path, which decomposes quads
+        // provoking-vertex-last), and along 0–2 otherwise; measured in
+        // tests/implementation_choices.rs. A flush is our counterpart of its draw.
+        ctx.quads_split_last |= self.wins.iter().any(|w| w.code != 0);
         // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
+        // --- texture: unit 0, when enabled and complete (§3.8.10)
+        let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
+        let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
+        // --- end texture
         let Renderer {
             fb,
             batch,
@@ -178,6 +191,10 @@ impl Renderer {
             mats,
             count: *count_coverage,
             ops: fragops::Ops::new(state),
+            // --- texture
+            tex: sampler.as_ref(),
+            tex1: sampler1.as_ref(),
+            // --- end texture
         };
         let nw = if batch.idx.len() >= PARALLEL_SETUP {
             // More workers than threads balances the load when other processes share the cores.
@@ -212,7 +229,7 @@ impl Renderer {
                 rasterise(fb, workers, &fctx, ctx.tiles_x);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
-                assembly::assemble(piece, &batch.idx, &batch.edge, ctx.flat(), asm);
+                assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
                     rasterise(fb, workers, &fctx, ctx.tiles_x);

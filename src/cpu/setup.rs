@@ -19,8 +19,9 @@ use crate::state::State;
 /// Largest snapped window coordinate magnitude (1/256 pixel units).
 const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
 
-/// Most interpolated floats per fragment.
-pub const MAXV: usize = 24;
+/// Most interpolated floats per fragment: colour 4, secondary 4, two texture units 4 + 4
+/// (texture), PHONG_WIN 10.
+pub const MAXV: usize = 26;
 
 /// Where each interpolated value sits in a fragment's varyings.
 #[derive(Clone, Copy, Debug, Default)]
@@ -31,6 +32,10 @@ pub struct RLayout {
     pub spec: Option<usize>,
     /// Texture coordinates.
     pub tex: Option<usize>,
+    // --- texture
+    /// Texture coordinates of unit 1.
+    pub tex1: Option<usize>,
+    // --- end texture
     /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
     pub phong: Option<usize>,
     /// Fog coordinate (one float; fragment ops).
@@ -51,6 +56,12 @@ impl RLayout {
             r.tex = Some(r.n);
             r.n += 4;
         }
+        // --- texture
+        if l.tex1.is_some() {
+            r.tex1 = Some(r.n);
+            r.n += 4;
+        }
+        // --- end texture
         if l.nrm.is_some() {
             r.phong = Some(r.n);
             r.n += 10;
@@ -145,6 +156,9 @@ pub struct SetupCtx {
     factor: f64,
     units: f64,
     flat: bool,
+    /// Quads split along their 1–3 diagonal rather than 0–2 (see `assembly::assemble`); set by
+    /// the flush once the vertex stage has the clip codes.
+    pub(super) quads_split_last: bool,
     phong: bool,
     line_width: f32,
     point_size: f32,
@@ -188,6 +202,7 @@ impl SetupCtx {
             factor: f64::from(state.polygon_offset_factor),
             units: f64::from(state.polygon_offset_units),
             flat: state.shade_model == gl::FLAT,
+            quads_split_last: state.shade_model == gl::FLAT,
             phong: layout.nrm.is_some(),
             line_width: state.line_width,
             point_size: state.point_size,
@@ -289,7 +304,7 @@ impl Worker {
         prims: &[Prim],
     ) {
         let mut asm = std::mem::take(&mut self.asm);
-        super::assembly::assemble(prims, &b.idx, &b.edge, ctx.flat, &mut asm);
+        super::assembly::assemble(prims, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
         self.run(ctx, vout, wins, &b.mat, &asm);
         self.asm = asm;
     }
@@ -404,6 +419,11 @@ impl Worker {
         if let (Some(d), Some(s)) = (rl.tex, l.tex) {
             copy(&mut w.v, d, v, s, 4);
         }
+        // --- texture: unit 1's coordinates
+        if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
+            copy(&mut w.v, d, v, s, 4);
+        }
+        // --- end texture
         if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
             let ew = v.get(e + 3).copied().unwrap_or(1.0);
             let ew = if ew != 0.0 { ew } else { 1.0 };

@@ -30,6 +30,10 @@ pub struct Layout {
     pub spec_b: Option<usize>,
     /// Texture coordinates of unit 0.
     pub tex: Option<usize>,
+    // --- texture
+    /// Texture coordinates of unit 1 (when TEXTURE_2D is enabled there).
+    pub tex1: Option<usize>,
+    // --- end texture
     /// Eye-space position (x, y, z, w), for user clip planes and per-fragment lighting.
     pub eye: Option<usize>,
     /// Eye-space normal (after rescale/normalize), for per-fragment lighting.
@@ -74,6 +78,11 @@ impl Layout {
         if tex {
             l.tex = take(4);
         }
+        // --- texture
+        if state.enables.texture_2d[1] {
+            l.tex1 = take(4);
+        }
+        // --- end texture
         if phong || user {
             l.eye = take(4);
         }
@@ -407,6 +416,12 @@ impl Lit<'_> {
         let b = self.batch;
         let state = self.state;
         let uniform = b.snapshots.is_empty();
+        // --- texture
+        let tex_matrix = *state.texture_matrix[0].top();
+        let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
+        let tex_matrix1 = *state.texture_matrix[1].top();
+        let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
+        // --- end texture
         for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
             let base = first + blk * LANES;
             let mut pts = [Point::default(); LANES];
@@ -428,7 +443,32 @@ impl Lit<'_> {
                     put(o, o_eye, eye);
                 }
                 if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
-                    put(o, t, tc);
+                    // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
+                    let tc = match &texgen {
+                        Some(g) => {
+                            let mut n = self.tf.normal * nrm;
+                            if g.needs_normal && self.tf.normalize {
+                                n = n.normalize_or_zero();
+                            }
+                            g.apply(tc, p, eye, n)
+                        }
+                        None => tc,
+                    };
+                    put(o, t, tex_matrix * tc);
+                }
+                if let (Some(t), Some(&tc)) = (l.tex1, b.tex1.get(i)) {
+                    let tc = match &texgen1 {
+                        Some(g) => {
+                            let mut n = self.tf.normal * nrm;
+                            if g.needs_normal && self.tf.normalize {
+                                n = n.normalize_or_zero();
+                            }
+                            g.apply(tc, p, eye, n)
+                        }
+                        None => tc,
+                    };
+                    put(o, t, tex_matrix1 * tc);
+                    // --- end texture
                 }
                 // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
                 // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.

@@ -24,6 +24,9 @@ mod replay;
 // --- arrays: vertex arrays and buffer objects on the driver
 mod arrays;
 // --- end arrays
+// --- texture
+mod texture;
+// --- end texture
 
 use std::cell::Cell;
 use std::ffi::CString;

@@ -345,6 +345,107 @@ impl GlBackend {
             Call::BlendColor(r, g, b, a) => unsafe { gl.BlendColor(r, g, b, a) },
             Call::LogicOp(op) => unsafe { gl.LogicOp(op) },
             // --- end fragment ops
+            // --- texture (glbackend/texture.rs for the pointer-reading calls)
+            Call::GenTextures(n) => self.gen_textures(n),
+            Call::DeleteTextures(n, ref v) => self.delete_textures(n, v),
+            Call::BindTexture(a, b) => unsafe { gl.BindTexture(a, b) },
+            Call::TexImage2D(ref args) => {
+                let (t, l, i, w, h, b, f, ty, ref p) = **args;
+                self.tex_image_2d(t, l, i, w, h, b, f, ty, p.as_deref())
+            }
+            Call::TexSubImage2D(ref args) => {
+                let (t, l, x, y, w, h, f, ty, ref p) = **args;
+                self.tex_sub_image_2d(t, l, x, y, w, h, f, ty, p)
+            }
+            Call::CopyTexImage2D(t, l, i, x, y, w, h, b) => unsafe {
+                gl.CopyTexImage2D(t, l, i, x, y, w, h, b)
+            },
+            Call::CopyTexSubImage2D(t, l, xo, yo, x, y, w, h) => unsafe {
+                gl.CopyTexSubImage2D(t, l, xo, yo, x, y, w, h)
+            },
+            Call::TexParameteri(a, b, c) => unsafe { gl.TexParameteri(a, b, c) },
+            Call::TexParameterf(a, b, c) => unsafe { gl.TexParameterf(a, b, c) },
+            Call::TexParameteriv(a, p, ref v) => {
+                self.with_params(v, params::tex_parameter(p), false, |gl, v| unsafe {
+                    gl.TexParameteriv(a, p, v)
+                })
+            }
+            Call::TexParameterfv(a, p, ref v) => {
+                self.with_params(v, params::tex_parameter(p), false, |gl, v| unsafe {
+                    gl.TexParameterfv(a, p, v)
+                })
+            }
+            Call::TexEnvi(a, b, c) => unsafe { gl.TexEnvi(a, b, c) },
+            Call::TexEnvf(a, b, c) => unsafe { gl.TexEnvf(a, b, c) },
+            Call::TexEnviv(a, p, ref v) => {
+                self.with_params(v, params::tex_env(p), false, |gl, v| unsafe {
+                    gl.TexEnviv(a, p, v)
+                })
+            }
+            Call::TexEnvfv(a, p, ref v) => {
+                self.with_params(v, params::tex_env(p), false, |gl, v| unsafe {
+                    gl.TexEnvfv(a, p, v)
+                })
+            }
+            Call::TexGeni(a, b, c) => unsafe { gl.TexGeni(a, b, c) },
+            Call::TexGenf(a, b, c) => unsafe { gl.TexGenf(a, b, c) },
+            Call::TexGend(a, b, c) => unsafe { gl.TexGend(a, b, c) },
+            Call::TexGeniv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGeniv(a, p, v)
+                })
+            }
+            Call::TexGenfv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGenfv(a, p, v)
+                })
+            }
+            Call::TexGendv(a, p, ref v) => {
+                self.with_params(v, params::tex_gen(p), false, |gl, v| unsafe {
+                    gl.TexGendv(a, p, v)
+                })
+            }
+            Call::MultiTexCoord1s(t, a0) => unsafe { gl.MultiTexCoord1s(t, a0) },
+            Call::MultiTexCoord1sv(t, ref v) => unsafe { gl.MultiTexCoord1sv(t, v.as_ptr()) },
+            Call::MultiTexCoord1i(t, a0) => unsafe { gl.MultiTexCoord1i(t, a0) },
+            Call::MultiTexCoord1iv(t, ref v) => unsafe { gl.MultiTexCoord1iv(t, v.as_ptr()) },
+            Call::MultiTexCoord1f(t, a0) => unsafe { gl.MultiTexCoord1f(t, a0) },
+            Call::MultiTexCoord1fv(t, ref v) => unsafe { gl.MultiTexCoord1fv(t, v.as_ptr()) },
+            Call::MultiTexCoord1d(t, a0) => unsafe { gl.MultiTexCoord1d(t, a0) },
+            Call::MultiTexCoord1dv(t, ref v) => unsafe { gl.MultiTexCoord1dv(t, v.as_ptr()) },
+            Call::MultiTexCoord2s(t, a0, a1) => unsafe { gl.MultiTexCoord2s(t, a0, a1) },
+            Call::MultiTexCoord2sv(t, ref v) => unsafe { gl.MultiTexCoord2sv(t, v.as_ptr()) },
+            Call::MultiTexCoord2i(t, a0, a1) => unsafe { gl.MultiTexCoord2i(t, a0, a1) },
+            Call::MultiTexCoord2iv(t, ref v) => unsafe { gl.MultiTexCoord2iv(t, v.as_ptr()) },
+            Call::MultiTexCoord2f(t, a0, a1) => unsafe { gl.MultiTexCoord2f(t, a0, a1) },
+            Call::MultiTexCoord2fv(t, ref v) => unsafe { gl.MultiTexCoord2fv(t, v.as_ptr()) },
+            Call::MultiTexCoord2d(t, a0, a1) => unsafe { gl.MultiTexCoord2d(t, a0, a1) },
+            Call::MultiTexCoord2dv(t, ref v) => unsafe { gl.MultiTexCoord2dv(t, v.as_ptr()) },
+            Call::MultiTexCoord3s(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3s(t, a0, a1, a2) },
+            Call::MultiTexCoord3sv(t, ref v) => unsafe { gl.MultiTexCoord3sv(t, v.as_ptr()) },
+            Call::MultiTexCoord3i(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3i(t, a0, a1, a2) },
+            Call::MultiTexCoord3iv(t, ref v) => unsafe { gl.MultiTexCoord3iv(t, v.as_ptr()) },
+            Call::MultiTexCoord3f(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3f(t, a0, a1, a2) },
+            Call::MultiTexCoord3fv(t, ref v) => unsafe { gl.MultiTexCoord3fv(t, v.as_ptr()) },
+            Call::MultiTexCoord3d(t, a0, a1, a2) => unsafe { gl.MultiTexCoord3d(t, a0, a1, a2) },
+            Call::MultiTexCoord3dv(t, ref v) => unsafe { gl.MultiTexCoord3dv(t, v.as_ptr()) },
+            Call::MultiTexCoord4s(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4s(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4sv(t, ref v) => unsafe { gl.MultiTexCoord4sv(t, v.as_ptr()) },
+            Call::MultiTexCoord4i(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4i(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4iv(t, ref v) => unsafe { gl.MultiTexCoord4iv(t, v.as_ptr()) },
+            Call::MultiTexCoord4f(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4f(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4fv(t, ref v) => unsafe { gl.MultiTexCoord4fv(t, v.as_ptr()) },
+            Call::MultiTexCoord4d(t, a0, a1, a2, a3) => unsafe {
+                gl.MultiTexCoord4d(t, a0, a1, a2, a3)
+            },
+            Call::MultiTexCoord4dv(t, ref v) => unsafe { gl.MultiTexCoord4dv(t, v.as_ptr()) },
+            // --- end texture
         }
     }
 

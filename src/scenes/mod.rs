@@ -26,6 +26,10 @@ pub mod arrays;
 // --- fragment ops
 pub mod fragment;
 // --- end fragment ops
+// --- texture
+pub mod projective;
+pub mod texture;
+// --- end texture
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -113,6 +117,11 @@ static SCENES: &[Scene] = &[
     fragment::SCENES[2],
     fragment::SCENES[3],
     // --- end fragment ops
+    // --- texture
+    texture::SCENES[0],
+    projective::SCENES[0],
+    projective::SCENES[1],
+    // --- end texture
 ];
 
 /// Every registered scene, in listing order.

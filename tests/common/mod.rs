@@ -10,7 +10,7 @@ use fixedgl::{gl, Call};
 use proptest::prelude::*;
 
 /// Number of `Call` variants `call_from` can build.
-pub const VARIANTS: usize = FRAGMENT_BASE + FRAGMENT_VARIANTS;
+pub const VARIANTS: usize = TEXTURE_BASE + TEXTURE_VARIANTS;
 
 // --- arrays
 /// The first of the arrays area's variant numbers (tests that fuzz only array calls use it).
@@ -24,6 +24,12 @@ pub const FRAGMENT_BASE: usize = ARRAY_BASE + ARRAY_VARIANTS;
 /// The fragment-ops area's variants, numbered from `FRAGMENT_BASE`.
 pub const FRAGMENT_VARIANTS: usize = 17;
 // --- end fragment ops
+// --- texture
+/// The first of the texture area's variant numbers (see `texture_call`).
+pub const TEXTURE_BASE: usize = FRAGMENT_BASE + FRAGMENT_VARIANTS;
+/// Number of texture variants `texture_call` builds.
+pub const TEXTURE_VARIANTS: usize = 53;
+// --- end texture
 
 /// Argument values for one call; each variant takes what it needs in order.
 #[derive(Clone, Debug)]
@@ -444,6 +450,11 @@ pub fn call_from(k: usize, p: &Pool) -> Call {
             fragment_call(k - FRAGMENT_BASE, p)
         }
         // --- end fragment ops
+        // --- texture
+        k @ TEXTURE_BASE.. if k < TEXTURE_BASE + TEXTURE_VARIANTS => {
+            texture_call(k - TEXTURE_BASE, p)
+        }
+        // --- end texture
         _ => Call::End,
     }
 }
@@ -511,3 +522,180 @@ fn fragment_call(k: usize, p: &Pool) -> Call {
     }
 }
 // --- end fragment ops
+// --- texture: texture calls, targets and pnames biased towards the valid ones so that the
+// setters get past their first checks often.
+fn texture_call(k: usize, p: &Pool) -> Call {
+    let target = if p.b[0] { gl::TEXTURE_2D } else { p.e[0] };
+    let tp = [
+        gl::TEXTURE_MIN_FILTER,
+        gl::TEXTURE_MAG_FILTER,
+        gl::TEXTURE_WRAP_S,
+        gl::TEXTURE_WRAP_T,
+        gl::TEXTURE_BORDER_COLOR,
+        gl::TEXTURE_BASE_LEVEL,
+        gl::TEXTURE_MAX_LEVEL,
+        gl::TEXTURE_MIN_LOD,
+        gl::GENERATE_MIPMAP,
+        gl::TEXTURE_COMPARE_MODE,
+        gl::DEPTH_TEXTURE_MODE,
+    ];
+    let values = [
+        gl::NEAREST,
+        gl::LINEAR,
+        gl::LINEAR_MIPMAP_LINEAR,
+        gl::NEAREST_MIPMAP_NEAREST,
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::MIRRORED_REPEAT,
+        gl::COMPARE_R_TO_TEXTURE,
+        gl::ALPHA,
+        gl::MODULATE,
+        gl::DECAL,
+        gl::BLEND,
+        gl::REPLACE,
+        gl::ADD,
+        gl::EYE_LINEAR,
+        gl::SPHERE_MAP,
+    ];
+    let pick = |xs: &[u32], i: i32| xs[(i.unsigned_abs() as usize) % xs.len()];
+    let pname = if p.b[1] { pick(&tp, p.i[3]) } else { p.e[1] };
+    let value = if p.b[2] {
+        pick(&values, p.i[2]) as i32
+    } else {
+        p.i[2]
+    };
+    let formats = [
+        gl::RGBA,
+        gl::RGB,
+        gl::LUMINANCE,
+        gl::ALPHA,
+        gl::DEPTH_COMPONENT,
+        gl::INTENSITY,
+    ];
+    let format = if p.b[3] {
+        pick(&formats, p.i[0])
+    } else {
+        p.e[2]
+    };
+    let size = |i: i32| i.rem_euclid(6) - 1;
+    let bytes: Vec<u8> = p.vi.iter().flat_map(|x| x.to_ne_bytes()).collect();
+    let env = if p.b[1] { gl::TEXTURE_ENV } else { p.e[0] };
+    let envp = if p.b[2] { gl::TEXTURE_ENV_MODE } else { p.e[1] };
+    let unit = if p.b[0] {
+        gl::TEXTURE0 + p.i[3].rem_euclid(5) as u32
+    } else {
+        p.e[0]
+    };
+    let coord = if p.b[1] {
+        gl::S + (p.i[0].rem_euclid(4)) as u32
+    } else {
+        p.e[0]
+    };
+    match k {
+        0 => Call::GenTextures(p.i[0].rem_euclid(5) - 1),
+        1 => Call::DeleteTextures(
+            p.i[0].rem_euclid(4) - 1,
+            p.vi.iter().map(|&x| x.rem_euclid(8) as u32).collect(),
+        ),
+        2 => Call::BindTexture(target, p.i[1].rem_euclid(8) as u32),
+        3 => Call::TexImage2D(Box::new((
+            target,
+            p.i[1].rem_euclid(3) - 1,
+            format as i32,
+            size(p.i[2]),
+            size(p.i[3]),
+            i32::from(!p.b[2]) * p.i[2].rem_euclid(2),
+            format,
+            if p.b[1] { gl::UNSIGNED_BYTE } else { gl::FLOAT },
+            p.b[2].then_some(bytes),
+        ))),
+        4 => Call::TexSubImage2D(Box::new((
+            target,
+            0,
+            size(p.i[1]),
+            size(p.i[2]),
+            size(p.i[3]),
+            1,
+            format,
+            gl::UNSIGNED_BYTE,
+            bytes,
+        ))),
+        5 => Call::CopyTexImage2D(
+            target,
+            p.i[1].rem_euclid(3) - 1,
+            format,
+            p.i[0],
+            p.i[1],
+            size(p.i[2]),
+            size(p.i[3]),
+            0,
+        ),
+        6 => Call::CopyTexSubImage2D(
+            target,
+            0,
+            size(p.i[1]),
+            0,
+            p.i[0],
+            p.i[1],
+            size(p.i[2]),
+            size(p.i[3]),
+        ),
+        7 => Call::TexParameteri(target, pname, value),
+        8 => Call::TexParameterf(target, pname, value as f32),
+        9 => Call::TexParameteriv(target, pname, p.vi.clone()),
+        10 => Call::TexParameterfv(target, pname, p.vf.clone()),
+        11 => Call::TexEnvi(env, envp, value),
+        12 => Call::TexEnvf(env, envp, p.f[0]),
+        13 => Call::TexEnviv(env, gl::TEXTURE_ENV_COLOR, p.vi.clone()),
+        14 => Call::TexEnvfv(env, envp, p.vf.clone()),
+        15 => Call::TexGeni(coord, gl::TEXTURE_GEN_MODE, value),
+        16 => Call::TexGenf(coord, p.e[1], p.f[0]),
+        17 => Call::TexGend(coord, gl::TEXTURE_GEN_MODE, p.d[0]),
+        18 => Call::TexGeniv(coord, gl::OBJECT_PLANE, p.vi.clone()),
+        19 => Call::TexGenfv(coord, gl::EYE_PLANE, p.vf.clone()),
+        21 => Call::MultiTexCoord1s(unit, p.i[0] as i16),
+        22 => Call::MultiTexCoord1sv(unit, [p.i[0] as i16]),
+        23 => Call::MultiTexCoord1i(unit, p.i[0]),
+        24 => Call::MultiTexCoord1iv(unit, [p.i[0]]),
+        25 => Call::MultiTexCoord1f(unit, p.f[0]),
+        26 => Call::MultiTexCoord1fv(unit, [p.f[0]]),
+        27 => Call::MultiTexCoord1d(unit, p.d[0]),
+        28 => Call::MultiTexCoord1dv(unit, [p.d[0]]),
+        29 => Call::MultiTexCoord2s(unit, p.i[0] as i16, p.i[1] as i16),
+        30 => Call::MultiTexCoord2sv(unit, [p.i[0] as i16, p.i[1] as i16]),
+        31 => Call::MultiTexCoord2i(unit, p.i[0], p.i[1]),
+        32 => Call::MultiTexCoord2iv(unit, [p.i[0], p.i[1]]),
+        33 => Call::MultiTexCoord2f(unit, p.f[0], p.f[1]),
+        34 => Call::MultiTexCoord2fv(unit, [p.f[0], p.f[1]]),
+        35 => Call::MultiTexCoord2d(unit, p.d[0], p.d[1]),
+        36 => Call::MultiTexCoord2dv(unit, [p.d[0], p.d[1]]),
+        37 => Call::MultiTexCoord3s(unit, p.i[0] as i16, p.i[1] as i16, p.i[2] as i16),
+        38 => Call::MultiTexCoord3sv(unit, [p.i[0] as i16, p.i[1] as i16, p.i[2] as i16]),
+        39 => Call::MultiTexCoord3i(unit, p.i[0], p.i[1], p.i[2]),
+        40 => Call::MultiTexCoord3iv(unit, [p.i[0], p.i[1], p.i[2]]),
+        41 => Call::MultiTexCoord3f(unit, p.f[0], p.f[1], p.f[2]),
+        42 => Call::MultiTexCoord3fv(unit, [p.f[0], p.f[1], p.f[2]]),
+        43 => Call::MultiTexCoord3d(unit, p.d[0], p.d[1], p.d[2]),
+        44 => Call::MultiTexCoord3dv(unit, [p.d[0], p.d[1], p.d[2]]),
+        45 => Call::MultiTexCoord4s(
+            unit,
+            p.i[0] as i16,
+            p.i[1] as i16,
+            p.i[2] as i16,
+            p.i[3] as i16,
+        ),
+        46 => Call::MultiTexCoord4sv(
+            unit,
+            [p.i[0] as i16, p.i[1] as i16, p.i[2] as i16, p.i[3] as i16],
+        ),
+        47 => Call::MultiTexCoord4i(unit, p.i[0], p.i[1], p.i[2], p.i[3]),
+        48 => Call::MultiTexCoord4iv(unit, [p.i[0], p.i[1], p.i[2], p.i[3]]),
+        49 => Call::MultiTexCoord4f(unit, p.f[0], p.f[1], p.f[2], p.f[3]),
+        50 => Call::MultiTexCoord4fv(unit, [p.f[0], p.f[1], p.f[2], p.f[3]]),
+        51 => Call::MultiTexCoord4d(unit, p.d[0], p.d[1], p.d[2], p.d[3]),
+        52 => Call::MultiTexCoord4dv(unit, [p.d[0], p.d[1], p.d[2], p.d[3]]),
+        _ => Call::TexGendv(coord, p.e[1], p.vf.iter().map(|&x| f64::from(x)).collect()),
+    }
+}
+// --- end texture

@@ -1,0 +1,702 @@
+//! Texture parameters, environment and coordinate generation, and their queries:
+//! `TexParameter{i,f}[v]`, `TexEnv{i,f}[v]`, `TexGen{i,f,d}[v]`, `GetTexParameter*`,
+//! `GetTexLevelParameter*`, `GetTexEnv*`, `GetTexGen*` (GL 2.1 §3.8.4, §3.8.13, §2.11.4,
+//! §6.1.3, §6.1.4).
+//!
+//! Design decision: every setter form funnels into one validator taking `f64` values plus
+//! whether they came as integers (an integer BORDER_COLOR or TEXTURE_ENV_COLOR maps the whole
+//! integer range onto [-1, 1], §2.1.2), so the eight forms of a command cannot disagree; a vector
+//! shorter than the pname needs is INVALID_VALUE with nothing changed (the crate's slice rule).
+
+use glam::{DVec4, Vec4};
+
+use super::Context;
+use crate::call::Call;
+use crate::gl;
+use crate::state::MAX_TEXTURE_UNITS;
+use crate::texture::{TexObject, MAX_TEXTURE_LOD_BIAS};
+
+/// Values a texture parameter takes (GL 2.1 table 6.16).
+fn tex_parameter_count(pname: u32) -> Option<usize> {
+    Some(match pname {
+        gl::TEXTURE_BORDER_COLOR => 4,
+        gl::TEXTURE_MIN_FILTER
+        | gl::TEXTURE_MAG_FILTER
+        | gl::TEXTURE_WRAP_S
+        | gl::TEXTURE_WRAP_T
+        | gl::TEXTURE_WRAP_R
+        | gl::TEXTURE_PRIORITY
+        | gl::TEXTURE_MIN_LOD
+        | gl::TEXTURE_MAX_LOD
+        | gl::TEXTURE_BASE_LEVEL
+        | gl::TEXTURE_MAX_LEVEL
+        | gl::GENERATE_MIPMAP
+        | gl::TEXTURE_COMPARE_MODE
+        | gl::TEXTURE_COMPARE_FUNC
+        | gl::DEPTH_TEXTURE_MODE => 1,
+        _ => return None,
+    })
+}
+
+/// An integer colour component as a float: the full range onto [-1, 1] (table 2.9).
+fn int_to_norm(i: f64) -> f64 {
+    (2.0 * i + 1.0) / f64::from(u32::MAX)
+}
+
+/// The enum a parameter value names (float values convert by truncation, as Mesa does).
+fn as_enum(v: f64) -> u32 {
+    if v >= 0.0 && v <= f64::from(u32::MAX) {
+        v as u32
+    } else {
+        u32::MAX
+    }
+}
+
+impl Context {
+    /// `glTexParameteri`.
+    pub fn tex_parameteri(&mut self, target: u32, pname: u32, param: i32) {
+        record!(self, Call::TexParameteri(target, pname, param));
+        self.tex_parameter(target, pname, &[f64::from(param)], true, false);
+    }
+
+    /// `glTexParameterf`.
+    pub fn tex_parameterf(&mut self, target: u32, pname: u32, param: f32) {
+        record!(self, Call::TexParameterf(target, pname, param));
+        self.tex_parameter(target, pname, &[f64::from(param)], false, false);
+    }
+
+    /// `glTexParameteriv`.
+    pub fn tex_parameteriv(&mut self, target: u32, pname: u32, params: &[i32]) {
+        record!(self, Call::TexParameteriv(target, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_parameter(target, pname, &v, true, true);
+    }
+
+    /// `glTexParameterfv`.
+    pub fn tex_parameterfv(&mut self, target: u32, pname: u32, params: &[f32]) {
+        record!(self, Call::TexParameterfv(target, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_parameter(target, pname, &v, false, true);
+    }
+
+    /// The body of the TexParameter forms (§3.8.4, table 3.19): validate, then set on the
+    /// active unit's bound 2D texture. `vector`: BORDER_COLOR needs a vector form.
+    fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        if target != gl::TEXTURE_2D {
+            return self.error(gl::INVALID_ENUM);
+        }
+        let Some(count) = tex_parameter_count(pname) else {
+            return self.error(gl::INVALID_ENUM);
+        };
+        if count > 1 && !vector {
+            return self.error(gl::INVALID_ENUM);
+        }
+        if v.len() < count {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let x = v.first().copied().unwrap_or(0.0);
+        let e = as_enum(x);
+        let ok_enum = match pname {
+            gl::TEXTURE_MIN_FILTER => matches!(
+                e,
+                gl::NEAREST
+                    | gl::LINEAR
+                    | gl::NEAREST_MIPMAP_NEAREST
+                    | gl::LINEAR_MIPMAP_NEAREST
+                    | gl::NEAREST_MIPMAP_LINEAR
+                    | gl::LINEAR_MIPMAP_LINEAR
+            ),
+            gl::TEXTURE_MAG_FILTER => matches!(e, gl::NEAREST | gl::LINEAR),
+            gl::TEXTURE_WRAP_S | gl::TEXTURE_WRAP_T | gl::TEXTURE_WRAP_R => matches!(
+                e,
+                gl::CLAMP
+                    | gl::REPEAT
+                    | gl::CLAMP_TO_EDGE
+                    | gl::CLAMP_TO_BORDER
+                    | gl::MIRRORED_REPEAT
+            ),
+            gl::TEXTURE_COMPARE_MODE => matches!(e, gl::NONE | gl::COMPARE_R_TO_TEXTURE),
+            gl::TEXTURE_COMPARE_FUNC => (gl::NEVER..=gl::ALWAYS).contains(&e),
+            gl::DEPTH_TEXTURE_MODE => matches!(e, gl::LUMINANCE | gl::INTENSITY | gl::ALPHA),
+            _ => true,
+        };
+        if !ok_enum {
+            return self.error(gl::INVALID_ENUM);
+        }
+        if matches!(pname, gl::TEXTURE_BASE_LEVEL | gl::TEXTURE_MAX_LEVEL) && x < 0.0 {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let unit = self.state.active_texture;
+        let Some(o) = self.state.textures.bound_2d_mut(unit) else {
+            return;
+        };
+        let f = x as f32;
+        match pname {
+            gl::TEXTURE_MIN_FILTER => o.min_filter = e,
+            gl::TEXTURE_MAG_FILTER => o.mag_filter = e,
+            gl::TEXTURE_WRAP_S => o.wrap_s = e,
+            gl::TEXTURE_WRAP_T => o.wrap_t = e,
+            gl::TEXTURE_WRAP_R => o.wrap_r = e,
+            gl::TEXTURE_COMPARE_MODE => o.compare_mode = e,
+            gl::TEXTURE_COMPARE_FUNC => o.compare_func = e,
+            gl::DEPTH_TEXTURE_MODE => o.depth_texture_mode = e,
+            gl::TEXTURE_PRIORITY => {
+                o.priority = if int { int_to_norm(x) as f32 } else { f }.clamp(0.0, 1.0)
+            }
+            gl::TEXTURE_MIN_LOD => o.min_lod = f,
+            gl::TEXTURE_MAX_LOD => o.max_lod = f,
+            gl::TEXTURE_BASE_LEVEL => o.base_level = x.min(f64::from(i32::MAX)) as i32,
+            gl::TEXTURE_MAX_LEVEL => o.max_level = x.min(f64::from(i32::MAX)) as i32,
+            gl::GENERATE_MIPMAP => {
+                o.generate_mipmap = x != 0.0;
+            }
+            gl::TEXTURE_BORDER_COLOR => {
+                let c: Vec<f32> = v
+                    .iter()
+                    .take(4)
+                    .map(|&c| if int { int_to_norm(c) } else { c } as f32)
+                    .collect();
+                if let [r, g, b, a] = c[..] {
+                    o.border_color = Vec4::new(r, g, b, a).clamp(Vec4::ZERO, Vec4::ONE);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// `glTexEnvi`.
+    pub fn tex_envi(&mut self, target: u32, pname: u32, param: i32) {
+        record!(self, Call::TexEnvi(target, pname, param));
+        self.tex_env(target, pname, &[f64::from(param)], true, false);
+    }
+
+    /// `glTexEnvf`.
+    pub fn tex_envf(&mut self, target: u32, pname: u32, param: f32) {
+        record!(self, Call::TexEnvf(target, pname, param));
+        self.tex_env(target, pname, &[f64::from(param)], false, false);
+    }
+
+    /// `glTexEnviv`.
+    pub fn tex_enviv(&mut self, target: u32, pname: u32, params: &[i32]) {
+        record!(self, Call::TexEnviv(target, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_env(target, pname, &v, true, true);
+    }
+
+    /// `glTexEnvfv`.
+    pub fn tex_envfv(&mut self, target: u32, pname: u32, params: &[f32]) {
+        record!(self, Call::TexEnvfv(target, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_env(target, pname, &v, false, true);
+    }
+
+    /// The body of the TexEnv forms (§3.8.13): TEXTURE_ENV with TEXTURE_ENV_MODE (MODULATE,
+    /// DECAL, BLEND, REPLACE, ADD, COMBINE), TEXTURE_ENV_COLOR (vector forms, clamped to
+    /// [0, 1]) and the COMBINE parameters (tables 3.22 to 3.24: the functions, the sources
+    /// TEXTURE, TEXTUREn, CONSTANT, PRIMARY_COLOR, PREVIOUS, the operands, RGB_SCALE and
+    /// ALPHA_SCALE 1, 2 or 4, else INVALID_VALUE), and TEXTURE_FILTER_CONTROL with
+    /// TEXTURE_LOD_BIAS (clamped to ±MAX_TEXTURE_LOD_BIAS). POINT_SPRITE's COORD_REPLACE is not
+    /// supported (INVALID_ENUM).
+    fn tex_env(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        let env_pname = matches!(
+            pname,
+            gl::TEXTURE_ENV_MODE
+                | gl::TEXTURE_ENV_COLOR
+                | gl::COMBINE_RGB
+                | gl::COMBINE_ALPHA
+                | gl::RGB_SCALE
+                | gl::ALPHA_SCALE
+        ) || (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname)
+            && !matches!(pname, 0x8583..=0x8587)
+            || (gl::OPERAND0_RGB..=gl::OPERAND2_ALPHA).contains(&pname)
+                && !matches!(pname, 0x8593..=0x8597);
+        let pair_ok = (target == gl::TEXTURE_ENV && env_pname)
+            || (target, pname) == (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS);
+        if !pair_ok || (pname == gl::TEXTURE_ENV_COLOR && !vector) {
+            return self.error(gl::INVALID_ENUM);
+        }
+        let need = if pname == gl::TEXTURE_ENV_COLOR { 4 } else { 1 };
+        if v.len() < need {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let x = v.first().copied().unwrap_or(0.0);
+        let unit = self.state.active_texture;
+        let e = as_enum(x);
+        let source = |e: u32| {
+            matches!(
+                e,
+                gl::TEXTURE | gl::CONSTANT | gl::PRIMARY_COLOR | gl::PREVIOUS
+            ) || (gl::TEXTURE0..gl::TEXTURE0 + MAX_TEXTURE_UNITS as u32).contains(&e)
+        };
+        let rgb_fns = |e: u32| {
+            matches!(
+                e,
+                gl::REPLACE
+                    | gl::MODULATE
+                    | gl::ADD
+                    | gl::ADD_SIGNED
+                    | gl::INTERPOLATE
+                    | gl::SUBTRACT
+            )
+        };
+        let ok = match pname {
+            gl::TEXTURE_ENV_MODE => matches!(
+                e,
+                gl::MODULATE | gl::DECAL | gl::BLEND | gl::REPLACE | gl::ADD | gl::COMBINE
+            ),
+            gl::COMBINE_RGB => rgb_fns(e) || matches!(e, gl::DOT3_RGB | gl::DOT3_RGBA),
+            gl::COMBINE_ALPHA => rgb_fns(e),
+            gl::SRC0_RGB..=gl::SRC2_ALPHA => source(e),
+            gl::OPERAND0_RGB..=gl::OPERAND2_RGB => matches!(
+                e,
+                gl::SRC_COLOR | gl::ONE_MINUS_SRC_COLOR | gl::SRC_ALPHA | gl::ONE_MINUS_SRC_ALPHA
+            ),
+            gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA => {
+                matches!(e, gl::SRC_ALPHA | gl::ONE_MINUS_SRC_ALPHA)
+            }
+            _ => true,
+        };
+        if !ok {
+            return self.error(gl::INVALID_ENUM);
+        }
+        if matches!(pname, gl::RGB_SCALE | gl::ALPHA_SCALE) && ![1.0, 2.0, 4.0].contains(&x) {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let Some(u) = self.state.textures.units.get_mut(unit) else {
+            return;
+        };
+        let c = &mut u.combine;
+        let k = |first: u32| (pname - first) as usize;
+        match pname {
+            gl::TEXTURE_ENV_MODE => u.env_mode = e,
+            gl::TEXTURE_LOD_BIAS => {
+                u.lod_bias = (x as f32).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS)
+            }
+            gl::COMBINE_RGB => c.rgb = e,
+            gl::COMBINE_ALPHA => c.alpha = e,
+            gl::RGB_SCALE => c.rgb_scale = x as f32,
+            gl::ALPHA_SCALE => c.alpha_scale = x as f32,
+            gl::SRC0_RGB..=gl::SRC2_RGB => c.src_rgb[k(gl::SRC0_RGB).min(2)] = e,
+            gl::SRC0_ALPHA..=gl::SRC2_ALPHA => c.src_alpha[k(gl::SRC0_ALPHA).min(2)] = e,
+            gl::OPERAND0_RGB..=gl::OPERAND2_RGB => c.operand_rgb[k(gl::OPERAND0_RGB).min(2)] = e,
+            gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA => {
+                c.operand_alpha[k(gl::OPERAND0_ALPHA).min(2)] = e
+            }
+            _ => {
+                let c: Vec<f32> = v
+                    .iter()
+                    .take(4)
+                    .map(|&c| if int { int_to_norm(c) } else { c } as f32)
+                    .collect();
+                if let [r, g, b, a] = c[..] {
+                    u.env_color = Vec4::new(r, g, b, a).clamp(Vec4::ZERO, Vec4::ONE);
+                }
+            }
+        }
+    }
+
+    /// `glTexGeni`.
+    pub fn tex_geni(&mut self, coord: u32, pname: u32, param: i32) {
+        record!(self, Call::TexGeni(coord, pname, param));
+        self.tex_gen(coord, pname, &[f64::from(param)], false);
+    }
+
+    /// `glTexGenf`.
+    pub fn tex_genf(&mut self, coord: u32, pname: u32, param: f32) {
+        record!(self, Call::TexGenf(coord, pname, param));
+        self.tex_gen(coord, pname, &[f64::from(param)], false);
+    }
+
+    /// `glTexGend`.
+    pub fn tex_gend(&mut self, coord: u32, pname: u32, param: f64) {
+        record!(self, Call::TexGend(coord, pname, param));
+        self.tex_gen(coord, pname, &[param], false);
+    }
+
+    /// `glTexGeniv`.
+    pub fn tex_geniv(&mut self, coord: u32, pname: u32, params: &[i32]) {
+        record!(self, Call::TexGeniv(coord, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_gen(coord, pname, &v, true);
+    }
+
+    /// `glTexGenfv`.
+    pub fn tex_genfv(&mut self, coord: u32, pname: u32, params: &[f32]) {
+        record!(self, Call::TexGenfv(coord, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).map(|&x| f64::from(x)).collect();
+        self.tex_gen(coord, pname, &v, true);
+    }
+
+    /// `glTexGendv`.
+    pub fn tex_gendv(&mut self, coord: u32, pname: u32, params: &[f64]) {
+        record!(self, Call::TexGendv(coord, pname, params.to_vec()));
+        let v: Vec<f64> = params.iter().take(4).copied().collect();
+        self.tex_gen(coord, pname, &v, true);
+    }
+
+    /// The body of the TexGen forms (§2.11.4): TEXTURE_GEN_MODE (SPHERE_MAP only for S and T,
+    /// REFLECTION_MAP and NORMAL_MAP not for Q), OBJECT_PLANE, and EYE_PLANE, which is stored
+    /// multiplied by the inverse of the modelview matrix current now: (p1 p2 p3 p4) M^-1.
+    fn tex_gen(&mut self, coord: u32, pname: u32, v: &[f64], vector: bool) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        let k = match coord {
+            gl::S => 0,
+            gl::T => 1,
+            gl::R => 2,
+            gl::Q => 3,
+            _ => return self.error(gl::INVALID_ENUM),
+        };
+        let plane = matches!(pname, gl::OBJECT_PLANE | gl::EYE_PLANE);
+        if !(pname == gl::TEXTURE_GEN_MODE || plane) || (plane && !vector) {
+            return self.error(gl::INVALID_ENUM);
+        }
+        let need = if plane { 4 } else { 1 };
+        if v.len() < need {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let unit = self.state.active_texture;
+        let mv = self.state.modelview.top().as_dmat4();
+        let Some(u) = self.state.textures.units.get_mut(unit) else {
+            return;
+        };
+        let g = &mut u.gen[k];
+        match pname {
+            gl::TEXTURE_GEN_MODE => {
+                let m = as_enum(v.first().copied().unwrap_or(0.0));
+                let ok = match m {
+                    gl::OBJECT_LINEAR | gl::EYE_LINEAR => true,
+                    gl::SPHERE_MAP => k < 2,
+                    gl::REFLECTION_MAP | gl::NORMAL_MAP => k < 3,
+                    _ => false,
+                };
+                if !ok {
+                    return self.error(gl::INVALID_ENUM);
+                }
+                g.mode = m;
+            }
+            _ => {
+                let p = DVec4::new(
+                    v.first().copied().unwrap_or(0.0),
+                    v.get(1).copied().unwrap_or(0.0),
+                    v.get(2).copied().unwrap_or(0.0),
+                    v.get(3).copied().unwrap_or(0.0),
+                );
+                if pname == gl::OBJECT_PLANE {
+                    g.object_plane = p.as_vec4();
+                } else {
+                    // Row vector times M^-1 = (M^-T) p.
+                    g.eye_plane = (mv.inverse().transpose() * p).as_vec4();
+                }
+            }
+        }
+    }
+
+    /// `glGetTexParameteriv`.
+    pub fn get_tex_parameteriv(&mut self, target: u32, pname: u32, params: &mut [i32]) {
+        if let Some((v, norm)) = self.tex_parameter_value(target, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = if norm {
+                    norm_to_int(x)
+                } else {
+                    x.round() as i32
+                };
+            }
+        }
+    }
+
+    /// `glGetTexParameterfv`.
+    pub fn get_tex_parameterfv(&mut self, target: u32, pname: u32, params: &mut [f32]) {
+        if let Some((v, _)) = self.tex_parameter_value(target, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = x as f32;
+            }
+        }
+    }
+
+    /// A texture parameter's values (and whether they are a normalised colour), after the
+    /// Begin/End, target, pname and length checks (§6.1.3).
+    fn tex_parameter_value(
+        &mut self,
+        target: u32,
+        pname: u32,
+        len: usize,
+    ) -> Option<(Vec<f64>, bool)> {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return None;
+        }
+        if target != gl::TEXTURE_2D {
+            self.error(gl::INVALID_ENUM);
+            return None;
+        }
+        let unit = self.state.active_texture;
+        let default = TexObject::default();
+        let o: &TexObject = self.state.textures.bound_2d(unit).map_or(&default, |a| a);
+        let e = |x: u32| vec![f64::from(x)];
+        let v = match pname {
+            gl::TEXTURE_MIN_FILTER => e(o.min_filter),
+            gl::TEXTURE_MAG_FILTER => e(o.mag_filter),
+            gl::TEXTURE_WRAP_S => e(o.wrap_s),
+            gl::TEXTURE_WRAP_T => e(o.wrap_t),
+            gl::TEXTURE_WRAP_R => e(o.wrap_r),
+            gl::TEXTURE_COMPARE_MODE => e(o.compare_mode),
+            gl::TEXTURE_COMPARE_FUNC => e(o.compare_func),
+            gl::DEPTH_TEXTURE_MODE => e(o.depth_texture_mode),
+            gl::TEXTURE_PRIORITY => vec![f64::from(o.priority)],
+            gl::TEXTURE_MIN_LOD => vec![f64::from(o.min_lod)],
+            gl::TEXTURE_MAX_LOD => vec![f64::from(o.max_lod)],
+            gl::TEXTURE_BASE_LEVEL => vec![f64::from(o.base_level)],
+            gl::TEXTURE_MAX_LEVEL => vec![f64::from(o.max_level)],
+            gl::GENERATE_MIPMAP => vec![f64::from(u8::from(o.generate_mipmap))],
+            gl::TEXTURE_RESIDENT => vec![1.0],
+            gl::TEXTURE_BORDER_COLOR => o.border_color.to_array().map(f64::from).to_vec(),
+            _ => {
+                self.error(gl::INVALID_ENUM);
+                return None;
+            }
+        };
+        if len < v.len() {
+            self.error(gl::INVALID_VALUE);
+            return None;
+        }
+        Some((v, pname == gl::TEXTURE_BORDER_COLOR))
+    }
+
+    /// `glGetTexLevelParameteriv`.
+    pub fn get_tex_level_parameteriv(
+        &mut self,
+        target: u32,
+        level: i32,
+        pname: u32,
+        params: &mut [i32],
+    ) {
+        if let Some(v) = self.tex_level_value(target, level, pname, params.len()) {
+            if let Some(o) = params.first_mut() {
+                *o = v;
+            }
+        }
+    }
+
+    /// `glGetTexLevelParameterfv`.
+    pub fn get_tex_level_parameterfv(
+        &mut self,
+        target: u32,
+        level: i32,
+        pname: u32,
+        params: &mut [f32],
+    ) {
+        if let Some(v) = self.tex_level_value(target, level, pname, params.len()) {
+            if let Some(o) = params.first_mut() {
+                *o = v as f32;
+            }
+        }
+    }
+
+    /// One level parameter (table 6.17) of the active unit's 2D texture; a level without an
+    /// image reports zero sizes and internal format 1, as the spec's initial values.
+    fn tex_level_value(&mut self, target: u32, level: i32, pname: u32, len: usize) -> Option<i32> {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return None;
+        }
+        if target != gl::TEXTURE_2D {
+            self.error(gl::INVALID_ENUM);
+            return None;
+        }
+        if level < 0 || level >= crate::texture::MAX_LEVELS as i32 {
+            self.error(gl::INVALID_VALUE);
+            return None;
+        }
+        let unit = self.state.active_texture;
+        let lv = self
+            .state
+            .textures
+            .bound_2d(unit)
+            .and_then(|o| o.level(level));
+        let base = lv.map_or(0, |l| l.base);
+        let bits = |has: bool, n: i32| if has { n } else { 0 };
+        let v = match pname {
+            gl::TEXTURE_WIDTH => lv.map_or(0, |l| l.width),
+            gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.height),
+            gl::TEXTURE_DEPTH => i32::from(lv.is_some()),
+            gl::TEXTURE_BORDER | gl::TEXTURE_COMPRESSED => 0,
+            gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| l.internal_format),
+            gl::TEXTURE_RED_SIZE | gl::TEXTURE_GREEN_SIZE | gl::TEXTURE_BLUE_SIZE => {
+                bits(matches!(base, gl::RGB | gl::RGBA), 8)
+            }
+            gl::TEXTURE_ALPHA_SIZE => bits(
+                matches!(base, gl::ALPHA | gl::LUMINANCE_ALPHA | gl::RGBA),
+                8,
+            ),
+            gl::TEXTURE_LUMINANCE_SIZE => {
+                bits(matches!(base, gl::LUMINANCE | gl::LUMINANCE_ALPHA), 8)
+            }
+            gl::TEXTURE_INTENSITY_SIZE => bits(base == gl::INTENSITY, 8),
+            gl::TEXTURE_DEPTH_SIZE => bits(base == gl::DEPTH_COMPONENT, 24),
+            _ => {
+                self.error(gl::INVALID_ENUM);
+                return None;
+            }
+        };
+        if len < 1 {
+            self.error(gl::INVALID_VALUE);
+            return None;
+        }
+        Some(v)
+    }
+
+    /// `glGetTexEnviv` (colours map [0, 1] onto the integer range, §6.1.2).
+    pub fn get_tex_enviv(&mut self, target: u32, pname: u32, params: &mut [i32]) {
+        if let Some((v, norm)) = self.tex_env_value(target, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = if norm {
+                    norm_to_int(x)
+                } else {
+                    x.round() as i32
+                };
+            }
+        }
+    }
+
+    /// `glGetTexEnvfv`.
+    pub fn get_tex_envfv(&mut self, target: u32, pname: u32, params: &mut [f32]) {
+        if let Some((v, _)) = self.tex_env_value(target, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = x as f32;
+            }
+        }
+    }
+
+    fn tex_env_value(&mut self, target: u32, pname: u32, len: usize) -> Option<(Vec<f64>, bool)> {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return None;
+        }
+        let u = self
+            .state
+            .textures
+            .units
+            .get(self.state.active_texture)
+            .copied()
+            .unwrap_or_default();
+        let v = match (target, pname) {
+            (gl::TEXTURE_ENV, gl::TEXTURE_ENV_MODE) => vec![f64::from(u.env_mode)],
+            (gl::TEXTURE_ENV, gl::TEXTURE_ENV_COLOR) => {
+                u.env_color.to_array().map(f64::from).to_vec()
+            }
+            (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS) => vec![f64::from(u.lod_bias)],
+            (gl::TEXTURE_ENV, gl::COMBINE_RGB) => vec![f64::from(u.combine.rgb)],
+            (gl::TEXTURE_ENV, gl::COMBINE_ALPHA) => vec![f64::from(u.combine.alpha)],
+            (gl::TEXTURE_ENV, gl::RGB_SCALE) => vec![f64::from(u.combine.rgb_scale)],
+            (gl::TEXTURE_ENV, gl::ALPHA_SCALE) => vec![f64::from(u.combine.alpha_scale)],
+            (gl::TEXTURE_ENV, p @ gl::SRC0_RGB..=gl::SRC2_RGB) => {
+                vec![f64::from(
+                    u.combine.src_rgb[((p - gl::SRC0_RGB) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::SRC0_ALPHA..=gl::SRC2_ALPHA) => {
+                vec![f64::from(
+                    u.combine.src_alpha[((p - gl::SRC0_ALPHA) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::OPERAND0_RGB..=gl::OPERAND2_RGB) => {
+                vec![f64::from(
+                    u.combine.operand_rgb[((p - gl::OPERAND0_RGB) as usize).min(2)],
+                )]
+            }
+            (gl::TEXTURE_ENV, p @ gl::OPERAND0_ALPHA..=gl::OPERAND2_ALPHA) => vec![f64::from(
+                u.combine.operand_alpha[((p - gl::OPERAND0_ALPHA) as usize).min(2)],
+            )],
+            _ => {
+                self.error(gl::INVALID_ENUM);
+                return None;
+            }
+        };
+        if len < v.len() {
+            self.error(gl::INVALID_VALUE);
+            return None;
+        }
+        Some((v, pname == gl::TEXTURE_ENV_COLOR))
+    }
+
+    /// `glGetTexGeniv`.
+    pub fn get_tex_geniv(&mut self, coord: u32, pname: u32, params: &mut [i32]) {
+        if let Some(v) = self.tex_gen_value(coord, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = x.round() as i32;
+            }
+        }
+    }
+
+    /// `glGetTexGenfv`.
+    pub fn get_tex_genfv(&mut self, coord: u32, pname: u32, params: &mut [f32]) {
+        if let Some(v) = self.tex_gen_value(coord, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = x as f32;
+            }
+        }
+    }
+
+    /// `glGetTexGendv`.
+    pub fn get_tex_gendv(&mut self, coord: u32, pname: u32, params: &mut [f64]) {
+        if let Some(v) = self.tex_gen_value(coord, pname, params.len()) {
+            for (o, x) in params.iter_mut().zip(v) {
+                *o = x;
+            }
+        }
+    }
+
+    fn tex_gen_value(&mut self, coord: u32, pname: u32, len: usize) -> Option<Vec<f64>> {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return None;
+        }
+        let k = match coord {
+            gl::S => 0,
+            gl::T => 1,
+            gl::R => 2,
+            gl::Q => 3,
+            _ => {
+                self.error(gl::INVALID_ENUM);
+                return None;
+            }
+        };
+        let u = self
+            .state
+            .textures
+            .units
+            .get(self.state.active_texture)
+            .copied()
+            .unwrap_or_default();
+        let g = u.gen.get(k).copied().unwrap_or(u.gen[0]);
+        let v = match pname {
+            gl::TEXTURE_GEN_MODE => vec![f64::from(g.mode)],
+            gl::OBJECT_PLANE => g.object_plane.to_array().map(f64::from).to_vec(),
+            gl::EYE_PLANE => g.eye_plane.to_array().map(f64::from).to_vec(),
+            _ => {
+                self.error(gl::INVALID_ENUM);
+                return None;
+            }
+        };
+        if len < v.len() {
+            self.error(gl::INVALID_VALUE);
+            return None;
+        }
+        Some(v)
+    }
+}
+
+/// A [0, 1] colour component as an integer: the whole positive range (table 4.9 inverted).
+fn norm_to_int(x: f64) -> i32 {
+    ((x * f64::from(u32::MAX) - 1.0) / 2.0)
+        .round()
+        .clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32
+}

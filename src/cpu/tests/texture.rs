@@ -1,0 +1,314 @@
+//! Sampling and environment tests; every expected value is worked out by hand from the GL 2.1
+//! formulas cited on each test (§3.8.7 wrap, §3.8.8 filters and λ, §3.8.13 table 3.21,
+//! §3.8.14 depth comparison).
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use super::*;
+use crate::texture::{Level, TexObject};
+
+/// A level of `w` x `h` texels of base format `base`, from `f(i, j)`.
+fn level(w: i32, h: i32, base: u32, f: impl Fn(i32, i32) -> [f32; 4]) -> Level {
+    let mut texels = Vec::new();
+    for j in 0..h {
+        for i in 0..w {
+            texels.push(f(i, j));
+        }
+    }
+    Level {
+        width: w,
+        height: h,
+        internal_format: base as i32,
+        base,
+        texels,
+    }
+}
+
+/// A sampler over `obj` with the given environment, as `Sampler::new` would make it.
+fn sampler(obj: TexObject, env: u32) -> Sampler {
+    let mut state = State::new(4, 4);
+    state.enables.texture_2d[0] = true;
+    state.textures.default_2d = Arc::new(obj);
+    state.textures.units[0].env_mode = env;
+    state.textures.units[0].env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
+    Sampler::new(&state, 0).expect("complete texture")
+}
+
+fn obj_with(levels: Vec<Level>, min: u32, mag: u32) -> TexObject {
+    let mut o = TexObject {
+        min_filter: min,
+        mag_filter: mag,
+        ..TexObject::default()
+    };
+    for (k, l) in levels.into_iter().enumerate() {
+        o.levels[k] = Some(l);
+    }
+    o
+}
+
+fn close(a: [f32; 4], b: [f32; 4]) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-5)
+}
+
+#[test]
+fn wrap_modes_pick_the_spec_texels() {
+    // §3.8.7/3.8.8, n = 4: i = floor(u) with u = 4s, then the wrap rule.
+    assert_eq!(wrap_nearest(gl::REPEAT, 1.25, 4), Some(1)); // floor(5) mod 4
+    assert_eq!(wrap_nearest(gl::REPEAT, -0.1, 4), Some(3)); // floor(-0.4) = -1 mod 4
+    assert_eq!(wrap_nearest(gl::CLAMP_TO_EDGE, -0.3, 4), Some(0));
+    assert_eq!(wrap_nearest(gl::CLAMP_TO_EDGE, 1.0, 4), Some(3)); // i = 4 taken as 3
+    assert_eq!(wrap_nearest(gl::CLAMP, 1.7, 4), Some(3));
+    assert_eq!(wrap_nearest(gl::CLAMP_TO_BORDER, -0.1, 4), None);
+    assert_eq!(wrap_nearest(gl::CLAMP_TO_BORDER, 0.6, 4), Some(2));
+    // Mirrored: floor(1.25) = 1 is odd, s' = 1 - 0.25 = 0.75, i = 3.
+    assert_eq!(wrap_nearest(gl::MIRRORED_REPEAT, 1.25, 4), Some(3));
+    assert_eq!(wrap_nearest(gl::MIRRORED_REPEAT, 2.25, 4), Some(1));
+    // LINEAR, s = 0: u = -0.5, i0 = -1, i1 = 0, α = 0.5.
+    assert_eq!(wrap_linear(gl::REPEAT, 0.0, 4), (Some(3), Some(0), 0.5));
+    assert_eq!(
+        wrap_linear(gl::CLAMP_TO_EDGE, 0.0, 4),
+        (Some(0), Some(0), 0.5)
+    );
+    assert_eq!(wrap_linear(gl::CLAMP, -2.0, 4), (None, Some(0), 0.5));
+    assert_eq!(
+        wrap_linear(gl::CLAMP_TO_BORDER, 1.0, 4),
+        (Some(3), None, 0.5)
+    );
+    // s = 0.3: u = 0.7, i0 = 0, i1 = 1, α = 0.7.
+    let (i0, i1, a) = wrap_linear(gl::REPEAT, 0.3, 4);
+    assert_eq!((i0, i1), (Some(0), Some(1)));
+    assert!((a - 0.7).abs() < 1e-6);
+}
+
+#[test]
+fn nearest_linear_and_border_on_a_known_texture() {
+    // 2x2 luminance: (0,0) 0, (1,0) 0.2, (0,1) 0.4, (1,1) 1.0.
+    let v = [[0.0, 0.2], [0.4, 1.0]];
+    let lv = level(2, 2, gl::LUMINANCE, |i, j| {
+        [v[j as usize][i as usize], 0.0, 0.0, 0.0]
+    });
+    let mut o = obj_with(vec![lv.clone()], gl::NEAREST, gl::NEAREST);
+    let s = sampler(o.clone(), gl::REPLACE);
+    // NEAREST at (0.3, 0.7): i = floor(0.6) = 0, j = floor(1.4) = 1.
+    assert!(close(s.sample(0.3, 0.7, 0.0, 0.0), [0.4, 0.0, 0.0, 0.0]));
+    o.mag_filter = gl::LINEAR;
+    let s = sampler(o.clone(), gl::REPLACE);
+    // LINEAR at the centre: u = v = 0.5, all four weights 1/4: (0 + 0.2 + 0.4 + 1) / 4.
+    assert!(close(s.sample(0.5, 0.5, 0.0, 0.0), [0.4, 0.0, 0.0, 0.0]));
+    // LINEAR at (0.25, 0.25): u = 0, i0 = -1 → REPEAT → 1, i1 = 0, α = 0... u = 0.5·2 - 0.5
+    // = 0 exactly, so i0 = 0 with α = 0 and the texel (0, 0) alone.
+    assert!(close(s.sample(0.25, 0.25, 0.0, 0.0), [0.0; 4]));
+    // CLAMP_TO_BORDER with border (0.5, ...): at s = 0, u = -0.5: α = 0.5 between the border
+    // and texel 0; t = 0.25 → v = 0 → row 0 only: 0.5·0.5 + 0.5·0 = 0.25.
+    o.wrap_s = gl::CLAMP_TO_BORDER;
+    o.border_color = Vec4::new(0.5, 0.5, 0.5, 0.5);
+    let s = sampler(o, gl::REPLACE);
+    assert!(close(s.sample(0.0, 0.25, 0.0, 0.0), [0.25, 0.0, 0.0, 0.0]));
+}
+
+/// Levels 0, 1, 2 of a 4x4 texture, uniformly 0, 0.5 and 1 in R.
+fn three_levels(min: u32, mag: u32) -> TexObject {
+    let lv = |n: i32, c: f32| level(n, n, gl::LUMINANCE, move |_, _| [c, 0.0, 0.0, 0.0]);
+    obj_with(vec![lv(4, 0.0), lv(2, 0.5), lv(1, 1.0)], min, mag)
+}
+
+#[test]
+fn mipmap_level_selection() {
+    // §3.8.8: *_MIPMAP_NEAREST uses level ceil(λ + 1/2) - 1 for λ > 1/2, else 0, at most q = 2.
+    let s = sampler(
+        three_levels(gl::NEAREST_MIPMAP_NEAREST, gl::NEAREST),
+        gl::REPLACE,
+    );
+    for (lambda, want) in [(0.4, 0.0), (0.6, 0.5), (1.4, 0.5), (1.7, 1.0), (5.0, 1.0)] {
+        assert!(
+            close(s.sample(0.5, 0.5, 0.0, lambda), [want, 0.0, 0.0, 0.0]),
+            "λ = {lambda}"
+        );
+    }
+    // *_MIPMAP_LINEAR: (1 - frac λ)·level floor(λ) + frac λ·level floor(λ) + 1.
+    let s = sampler(
+        three_levels(gl::LINEAR_MIPMAP_LINEAR, gl::NEAREST),
+        gl::REPLACE,
+    );
+    for (lambda, want) in [(0.25, 0.125), (1.5, 0.75), (3.0, 1.0), (-1.0, 0.0)] {
+        assert!(
+            close(s.sample(0.5, 0.5, 0.0, lambda), [want, 0.0, 0.0, 0.0]),
+            "λ = {lambda}"
+        );
+    }
+    // §3.8.9: with MAG LINEAR and MIN NEAREST_MIPMAP_NEAREST, c = 0.5: λ = 0.4 magnifies.
+    let s = sampler(
+        three_levels(gl::NEAREST_MIPMAP_NEAREST, gl::LINEAR),
+        gl::REPLACE,
+    );
+    assert_eq!(s.c, 0.5);
+    // MIN_LOD clamps λ from below: λ = 0 with MIN_LOD 2 reads level 2.
+    let mut o = three_levels(gl::NEAREST_MIPMAP_NEAREST, gl::NEAREST);
+    o.min_lod = 2.0;
+    let s = sampler(o, gl::REPLACE);
+    assert!(close(s.sample(0.5, 0.5, 0.0, 0.0), [1.0, 0.0, 0.0, 0.0]));
+}
+
+#[test]
+fn lambda_from_the_quad_derivatives() {
+    // A 16x16 texture; s = x/8 and t = y/4 over the window with w = 1 (planes: 1/w, then s, t,
+    // r, q as the varyings 0..4): ∂u/∂x = 16/8 = 2, ∂v/∂y = 16/4 = 4, ρ = 4, λ = 2.
+    let lv = level(16, 16, gl::RGBA, |_, _| [1.0; 4]);
+    let s = sampler(obj_with(vec![lv], gl::LINEAR, gl::LINEAR), gl::REPLACE);
+    #[rustfmt::skip]
+    let planes = [
+        1.0, 0.0, 0.0, // 1/w
+        0.0, 0.125, 0.0, // s/w
+        0.0, 0.0, 0.25, // t/w
+        0.0, 0.0, 0.0, // r/w
+        1.0, 0.0, 0.0, // q/w
+    ];
+    assert!((s.quad_lambda(&planes, 0, 6.0, 10.0) - 2.0).abs() < 1e-5);
+    // Under perspective, q = 1/w varies: s/q and t/q are what is differentiated. With
+    // q/w = 1 + x/2 (and s/w = x/8): s/q = (x/8)/(1 + x/2); at x = 0 → 0, x = 1 → 1/12:
+    // ∂u/∂x = 16/12; ∂v/∂y = 4 still dominates: λ = 2 exactly.
+    let mut p = planes;
+    p[13] = 0.5;
+    assert!((s.quad_lambda(&p, 0, 0.0, 0.0) - 2.0).abs() < 1e-5);
+}
+
+#[test]
+fn every_env_mode_and_base_format_follows_table_3_21() {
+    // Cf = (0.5, 0.25, 1, 0.8); Cc = (1, 0, 0.5, 0.25); the texel is Ct = (0.5, 0.75, 0.25),
+    // At = 0.5; L = I = 0.5 (its R); the expected rows are table 3.21 worked by hand.
+    let cf = Vec4::new(0.5, 0.25, 1.0, 0.8);
+    let texel = [0.5, 0.75, 0.25, 0.5];
+    let rows: &[(u32, u32, [f32; 4])] = &[
+        (gl::REPLACE, gl::ALPHA, [0.5, 0.25, 1.0, 0.5]),
+        (gl::REPLACE, gl::LUMINANCE, [0.5, 0.5, 0.5, 0.8]),
+        (gl::REPLACE, gl::LUMINANCE_ALPHA, [0.5, 0.5, 0.5, 0.5]),
+        (gl::REPLACE, gl::INTENSITY, [0.5, 0.5, 0.5, 0.5]),
+        (gl::REPLACE, gl::RGB, [0.5, 0.75, 0.25, 0.8]),
+        (gl::REPLACE, gl::RGBA, [0.5, 0.75, 0.25, 0.5]),
+        (gl::MODULATE, gl::ALPHA, [0.5, 0.25, 1.0, 0.4]),
+        (gl::MODULATE, gl::LUMINANCE, [0.25, 0.125, 0.5, 0.8]),
+        (gl::MODULATE, gl::LUMINANCE_ALPHA, [0.25, 0.125, 0.5, 0.4]),
+        (gl::MODULATE, gl::INTENSITY, [0.25, 0.125, 0.5, 0.4]),
+        (gl::MODULATE, gl::RGB, [0.25, 0.1875, 0.25, 0.8]),
+        (gl::MODULATE, gl::RGBA, [0.25, 0.1875, 0.25, 0.4]),
+        (gl::DECAL, gl::RGB, [0.5, 0.75, 0.25, 0.8]),
+        (gl::DECAL, gl::RGBA, [0.5, 0.5, 0.625, 0.8]),
+        (gl::BLEND, gl::ALPHA, [0.5, 0.25, 1.0, 0.4]),
+        (gl::BLEND, gl::LUMINANCE, [0.75, 0.125, 0.75, 0.8]),
+        (gl::BLEND, gl::LUMINANCE_ALPHA, [0.75, 0.125, 0.75, 0.4]),
+        (gl::BLEND, gl::INTENSITY, [0.75, 0.125, 0.75, 0.525]),
+        (gl::BLEND, gl::RGB, [0.75, 0.0625, 0.875, 0.8]),
+        (gl::BLEND, gl::RGBA, [0.75, 0.0625, 0.875, 0.4]),
+        (gl::ADD, gl::ALPHA, [0.5, 0.25, 1.0, 0.4]),
+        (gl::ADD, gl::LUMINANCE, [1.0, 0.75, 1.0, 0.8]),
+        (gl::ADD, gl::LUMINANCE_ALPHA, [1.0, 0.75, 1.0, 0.4]),
+        (gl::ADD, gl::INTENSITY, [1.0, 0.75, 1.0, 1.0]),
+        (gl::ADD, gl::RGB, [1.0, 1.0, 1.0, 0.8]),
+        (gl::ADD, gl::RGBA, [1.0, 1.0, 1.0, 0.4]),
+    ];
+    for &(env, base, want) in rows {
+        let lv = level(1, 1, base, |_, _| crate::texture::keep(base, texel));
+        let s = sampler(obj_with(vec![lv], gl::NEAREST, gl::NEAREST), env);
+        let t = s.sample(0.5, 0.5, 0.0, 0.0);
+        let got = s.env(cf, t).to_array();
+        assert!(
+            close(got, want),
+            "env {env:#x} base {base:#x}: {got:?} != {want:?}"
+        );
+    }
+}
+
+#[test]
+fn depth_comparison_and_depth_texture_mode() {
+    // §3.8.14: with COMPARE_R_TO_TEXTURE and LEQUAL the result is 1 where r <= D, else 0;
+    // DEPTH_TEXTURE_MODE ALPHA puts it in alpha, LUMINANCE in r, g, b.
+    let lv = level(1, 1, gl::DEPTH_COMPONENT, |_, _| [0.5, 0.0, 0.0, 0.0]);
+    let mut o = obj_with(vec![lv], gl::NEAREST, gl::NEAREST);
+    o.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+    o.compare_func = gl::LEQUAL;
+    o.depth_texture_mode = gl::LUMINANCE;
+    let s = sampler(o.clone(), gl::MODULATE);
+    let cf = Vec4::new(0.8, 0.6, 0.4, 1.0);
+    let lit = s.shade(cf, cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
+    assert!(close(lit, [0.8, 0.6, 0.4, 1.0]));
+    let shadowed = s.shade(cf, cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
+    assert!(close(shadowed, [0.0, 0.0, 0.0, 1.0]));
+    // r is divided by q: r/q = 1.2/2 = 0.6 > 0.5.
+    let q2 = s.shade(cf, cf, [1.0, 1.0, 1.2, 2.0], 0.0).to_array();
+    assert!(close(q2, [0.0, 0.0, 0.0, 1.0]));
+    o.compare_func = gl::GREATER;
+    o.depth_texture_mode = gl::ALPHA;
+    let s = sampler(o.clone(), gl::MODULATE);
+    let a = s.shade(cf, cf, [0.5, 0.5, 0.6, 1.0], 0.0).to_array();
+    assert!(close(a, [0.8, 0.6, 0.4, 1.0]));
+    let b = s.shade(cf, cf, [0.5, 0.5, 0.4, 1.0], 0.0).to_array();
+    assert!(close(b, [0.8, 0.6, 0.4, 0.0]));
+    // Without comparison the depth itself is the luminance: MODULATE by 0.5.
+    o.compare_mode = gl::NONE;
+    o.depth_texture_mode = gl::LUMINANCE;
+    let s = sampler(o, gl::MODULATE);
+    let d = s.shade(cf, cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
+    assert!(close(d, [0.4, 0.3, 0.2, 1.0]));
+}
+
+#[test]
+fn incomplete_textures_disable_the_unit() {
+    // §3.8.10: the default MIN filter needs mipmaps, so level 0 alone is incomplete.
+    let mut state = State::new(4, 4);
+    state.enables.texture_2d[0] = true;
+    let one = level(4, 4, gl::RGBA, |_, _| [1.0; 4]);
+    let mut o = obj_with(vec![one.clone()], gl::NEAREST_MIPMAP_LINEAR, gl::LINEAR);
+    state.textures.default_2d = Arc::new(o.clone());
+    assert!(Sampler::new(&state, 0).is_none());
+    // A full chain 4, 2, 1 is complete...
+    let half = level(2, 2, gl::RGBA, |_, _| [1.0; 4]);
+    let quarter = level(1, 1, gl::RGBA, |_, _| [1.0; 4]);
+    o.levels[1] = Some(half.clone());
+    o.levels[2] = Some(quarter);
+    state.textures.default_2d = Arc::new(o.clone());
+    assert!(Sampler::new(&state, 0).is_some());
+    // ...unless a level has the wrong size, or the internal format differs...
+    o.levels[2] = Some(level(2, 2, gl::RGBA, |_, _| [1.0; 4]));
+    assert!(!o.is_complete());
+    o.levels[2] = Some(level(1, 1, gl::RGB, |_, _| [1.0; 4]));
+    assert!(!o.is_complete());
+    // ...while MAX_LEVEL 1 needs only levels 0 and 1.
+    o.max_level = 1;
+    assert!(o.is_complete());
+    // BASE_LEVEL above MAX_LEVEL is incomplete under a mipmap filter.
+    o.base_level = 2;
+    assert!(!o.is_complete());
+    // A non-mipmap filter needs only the base level.
+    let o = obj_with(vec![one], gl::LINEAR, gl::LINEAR);
+    assert!(o.is_complete());
+    // Disabled: no sampler even when complete.
+    state.enables.texture_2d[0] = false;
+    state.textures.default_2d = Arc::new(o);
+    assert!(Sampler::new(&state, 0).is_none());
+}
+
+#[test]
+fn combine_interpolate_by_hand() {
+    // Table 3.23 INTERPOLATE: a0·a2 + a1·(1 - a2) with a0 = the texel (0.5, 0.75, 0.25),
+    // a1 = Cc (1, 0, 0.5), a2 = the previous alpha 0.8: (0.6, 0.6, 0.3); alpha MODULATE of the
+    // initial sources TEXTURE and PREVIOUS: 0.5 · 0.8 = 0.4.
+    let lv = level(1, 1, gl::RGBA, |_, _| [0.5, 0.75, 0.25, 0.5]);
+    let mut s = sampler(obj_with(vec![lv], gl::NEAREST, gl::NEAREST), gl::COMBINE);
+    s.combine.rgb = gl::INTERPOLATE;
+    s.combine.src_rgb = [gl::TEXTURE, gl::CONSTANT, gl::PREVIOUS];
+    s.combine.operand_rgb = [gl::SRC_COLOR, gl::SRC_COLOR, gl::SRC_ALPHA];
+    let cf = Vec4::new(0.5, 0.25, 1.0, 0.8);
+    let got = s.shade(cf, cf, [0.5, 0.5, 0.0, 1.0], 0.0).to_array();
+    assert!(close(got, [0.6, 0.6, 0.3, 0.4]), "{got:?}");
+}
+
+#[test]
+fn lod_log2_is_piecewise_linear_like_llvmpipe() {
+    // Exact at powers of two, linear in between: 3 = 2^1 · 1.5 → 1 + 0.5; 0.75 = 2^-1 · 1.5.
+    assert_eq!(fast_log2(4.0), 2.0);
+    assert_eq!(fast_log2(3.0), 1.5);
+    assert_eq!(fast_log2(0.75), -0.5);
+    assert_eq!(fast_log2(0.0), f32::NEG_INFINITY);
+}

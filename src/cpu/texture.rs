@@ -1,0 +1,507 @@
+//! Texturing of fragments (GL 2.1 §3.8.8 minification and magnification, §3.8.9, §3.8.13
+//! texture environments, §3.8.14 depth comparison): level of detail from the derivatives of
+//! the texture coordinates, wrap modes, NEAREST / LINEAR and the four mipmap filters, the
+//! depth compare, then TexEnv REPLACE / MODULATE / DECAL / BLEND / ADD per table 3.21.
+//!
+//! Design decision: λ comes from one scale factor per 2x2 pixel quad, as llvmpipe computes it:
+//! the perspective-correct coordinates are evaluated at the quad's lower-left pixel and its right
+//! and upper neighbours (the planes give any pixel, covered or not), and
+//! ρ = max(|∂(u,v)/∂x|, |∂(u,v)/∂y|) from those differences (eq. 3.21 with the exact lengths),
+//! and λ = ½·log2(ρ²) with llvmpipe's piecewise-linear log2 (exponent + mantissa − 1, exact at
+//! powers of two): with the exact log2, mip-blended checker edges differed from the driver in
+//! 16 times as many pixels. One measured difference is kept on purpose: the switch point c of
+//! §3.8.9 is 0.5 for MAG LINEAR with a NEAREST_MIPMAP_* filter, as the spec says; llvmpipe
+//! switches at 0 (3.8% of pixels of a minified floor differ in that configuration).
+//! Everything that does not change per fragment (the object, its complete levels, the filters,
+//! the environment) is resolved once per flush in [`Sampler::new`], and an untextured flush
+//! carries no sampler at all, so untextured fragments never reach this module.
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use crate::gl;
+use crate::state::State;
+use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject};
+
+/// Which sampling routine a flush uses (chosen once in [`Sampler::new`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Route {
+    /// NEAREST on the base level whatever λ (no mipmaps, both filters NEAREST).
+    Nearest,
+    /// LINEAR on the base level whatever λ (no mipmaps, both filters LINEAR).
+    Linear,
+    /// λ decides: magnification, or minification with or without mipmaps.
+    Lod,
+}
+
+/// One texture unit's sampling and environment state for a flush.
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    obj: Arc<TexObject>,
+    /// Base internal format of the base level (DEPTH_COMPONENT read through `depth_mode`).
+    base: u32,
+    base_level: i32,
+    /// The last mipmap level used (q of §3.8.8).
+    last: i32,
+    /// Base level width and height, for ρ.
+    size: [f32; 2],
+    min: u32,
+    mag: u32,
+    wrap: [u32; 2],
+    border: [f32; 4],
+    min_lod: f32,
+    max_lod: f32,
+    bias: f32,
+    /// The minification / magnification switch point c of §3.8.9.
+    c: f32,
+    env: u32,
+    env_color: Vec4,
+    /// The COMBINE parameters.
+    combine: Combine,
+    /// The sampling routine of this flush.
+    route: Route,
+    /// TEXTURE_COMPARE_FUNC when TEXTURE_COMPARE_MODE is COMPARE_R_TO_TEXTURE on a depth texture.
+    compare: Option<u32>,
+    depth_mode: u32,
+}
+
+impl Sampler {
+    /// The sampler of texture unit `unit`, or None when TEXTURE_2D is disabled there or its
+    /// texture is not complete (§3.8.10: texturing is then disabled for the unit).
+    pub fn new(state: &State, unit: usize) -> Option<Sampler> {
+        if !state.enables.texture_2d.get(unit).copied().unwrap_or(false) {
+            return None;
+        }
+        let obj = state.textures.bound_2d(unit)?;
+        if !obj.is_complete() {
+            return None;
+        }
+        let u = state.textures.units.get(unit)?;
+        let b = obj.level(obj.base_level)?;
+        let mipmapped = is_mipmap_filter(obj.min_filter);
+        let c = if obj.mag_filter == gl::LINEAR
+            && matches!(
+                obj.min_filter,
+                gl::NEAREST_MIPMAP_NEAREST | gl::NEAREST_MIPMAP_LINEAR
+            ) {
+            0.5
+        } else {
+            0.0
+        };
+        Some(Sampler {
+            base: b.base,
+            base_level: obj.base_level,
+            last: if mipmapped {
+                obj.last_level().unwrap_or(obj.base_level)
+            } else {
+                obj.base_level
+            },
+            size: [b.width as f32, b.height as f32],
+            min: obj.min_filter,
+            mag: obj.mag_filter,
+            wrap: [obj.wrap_s, obj.wrap_t],
+            border: obj.border_color.to_array(),
+            min_lod: obj.min_lod,
+            max_lod: obj.max_lod,
+            bias: u.lod_bias,
+            c,
+            env: u.env_mode,
+            env_color: u.env_color,
+            combine: u.combine,
+            route: match (mipmapped, obj.min_filter == obj.mag_filter, obj.min_filter) {
+                (false, true, gl::NEAREST) => Route::Nearest,
+                (false, true, _) => Route::Linear,
+                _ => Route::Lod,
+            },
+            compare: (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
+                && b.base == gl::DEPTH_COMPONENT)
+                .then_some(obj.compare_func),
+            depth_mode: obj.depth_texture_mode,
+            obj: Arc::clone(obj),
+        })
+    }
+
+    /// Does the result depend on λ? Not when no mipmaps are used and the minification and
+    /// magnification filters agree (then λ only chooses between two identical filters).
+    #[inline]
+    pub fn needs_lambda(&self) -> bool {
+        self.route == Route::Lod
+    }
+
+    /// λ of §3.8.8 for the 2x2 quad whose lower-left pixel is at (fx, fy) relative to the
+    /// primitive's plane origin: `planes` are the primitive's (1/w plane, then one plane per
+    /// varying) and `to` the index of the varying s (t, r, q follow).
+    #[inline]
+    pub fn quad_lambda(&self, planes: &[f32], to: usize, fx: f32, fy: f32) -> f32 {
+        let at = |x: f32, y: f32| {
+            let pl = |j: usize| {
+                let o = 3 * j;
+                planes.get(o).copied().unwrap_or(0.0)
+                    + planes.get(o + 1).copied().unwrap_or(0.0) * x
+                    + planes.get(o + 2).copied().unwrap_or(0.0) * y
+            };
+            // The 1/w factors cancel in s/q and t/q.
+            let q = pl(1 + to + 3);
+            let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
+            [
+                pl(1 + to) * inv * self.size[0],
+                pl(2 + to) * inv * self.size[1],
+            ]
+        };
+        let p0 = at(fx, fy);
+        let px = at(fx + 1.0, fy);
+        let py = at(fx, fy + 1.0);
+        let dx = [px[0] - p0[0], px[1] - p0[1]];
+        let dy = [py[0] - p0[0], py[1] - p0[1]];
+        let rho2 = (dx[0] * dx[0] + dx[1] * dx[1]).max(dy[0] * dy[0] + dy[1] * dy[1]);
+        0.5 * fast_log2(rho2)
+    }
+
+    /// The texture-environment result for fragment colour `cf` (the previous unit's result),
+    /// primary colour `prim` (COMBINE's PRIMARY_COLOR), texture coordinates `(s, t, r, q)`
+    /// (already perspective-correct) and level of detail `lambda` before bias.
+    #[inline]
+    pub fn shade(&self, cf: Vec4, prim: Vec4, coords: [f32; 4], lambda: f32) -> Vec4 {
+        let [s, t, r, q] = coords;
+        let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
+        let (s, t, r) = (s * inv, t * inv, r * inv);
+        // The route was chosen once for the flush: without mipmaps and with equal filters, λ
+        // cannot matter and the base level's filter is called directly.
+        let texel = match self.route {
+            Route::Nearest => self.nearest(self.base_level, s, t, r),
+            Route::Linear => self.linear(self.base_level, s, t, r),
+            Route::Lod => self.sample(s, t, r, lambda),
+        };
+        if self.env == gl::COMBINE {
+            return self.combine(cf, prim, texel);
+        }
+        self.env(cf, texel)
+    }
+
+    /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
+    /// primary colour `prim` and this unit's filtered texel. A TEXTUREn source naming another
+    /// unit reads this unit's texel (the crossbar is not supported).
+    fn combine(&self, cf: Vec4, prim: Vec4, texel: [f32; 4]) -> Vec4 {
+        let (base, t) = if self.base == gl::DEPTH_COMPONENT {
+            match self.depth_mode {
+                gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, texel[0]]),
+                m => (m, texel),
+            }
+        } else {
+            (self.base, texel)
+        };
+        let tex = Vec4::from_array(as_rgba(base, t));
+        let c = &self.combine;
+        let src = |s: u32| match s {
+            gl::CONSTANT => self.env_color,
+            gl::PRIMARY_COLOR => prim,
+            gl::PREVIOUS => cf,
+            _ => tex,
+        };
+        let arg_rgb = |k: usize| {
+            let v = src(c.src_rgb[k]);
+            match c.operand_rgb[k] {
+                gl::ONE_MINUS_SRC_COLOR => Vec4::ONE - v,
+                gl::SRC_ALPHA => Vec4::splat(v.w),
+                gl::ONE_MINUS_SRC_ALPHA => Vec4::splat(1.0 - v.w),
+                _ => v,
+            }
+        };
+        let arg_a = |k: usize| {
+            let a = src(c.src_alpha[k]).w;
+            if c.operand_alpha[k] == gl::ONE_MINUS_SRC_ALPHA {
+                1.0 - a
+            } else {
+                a
+            }
+        };
+        let rgb = match c.rgb {
+            gl::REPLACE => arg_rgb(0),
+            gl::MODULATE => arg_rgb(0) * arg_rgb(1),
+            gl::ADD => arg_rgb(0) + arg_rgb(1),
+            gl::ADD_SIGNED => arg_rgb(0) + arg_rgb(1) - Vec4::splat(0.5),
+            gl::INTERPOLATE => {
+                let a2 = arg_rgb(2);
+                arg_rgb(0) * a2 + arg_rgb(1) * (Vec4::ONE - a2)
+            }
+            gl::SUBTRACT => arg_rgb(0) - arg_rgb(1),
+            _ => {
+                // DOT3_RGB(A): 4·Σ (a0 - 1/2)(a1 - 1/2) over r, g, b into every channel.
+                let d = (arg_rgb(0) - Vec4::splat(0.5)).truncate();
+                let e = (arg_rgb(1) - Vec4::splat(0.5)).truncate();
+                Vec4::splat(4.0 * d.dot(e))
+            }
+        };
+        let a = if c.rgb == gl::DOT3_RGBA {
+            rgb.x
+        } else {
+            match c.alpha {
+                gl::REPLACE => arg_a(0),
+                gl::MODULATE => arg_a(0) * arg_a(1),
+                gl::ADD => arg_a(0) + arg_a(1),
+                gl::ADD_SIGNED => arg_a(0) + arg_a(1) - 0.5,
+                gl::INTERPOLATE => arg_a(0) * arg_a(2) + arg_a(1) * (1.0 - arg_a(2)),
+                _ => arg_a(0) - arg_a(1),
+            }
+        };
+        // RGB_SCALE and ALPHA_SCALE, then the clamp (§3.8.13); DOT3_RGBA's alpha is scaled by
+        // ALPHA_SCALE like any alpha (as llvmpipe does; measured in the GL-backend test).
+        (rgb * c.rgb_scale)
+            .truncate()
+            .extend(a * c.alpha_scale)
+            .clamp(Vec4::ZERO, Vec4::ONE)
+    }
+
+    /// The filtered texel (internal components: L and I in R) at (s, t), depth compared
+    /// against `r` when comparison is on (§3.8.8, §3.8.14).
+    pub fn sample(&self, s: f32, t: f32, r: f32, lambda: f32) -> [f32; 4] {
+        let lambda = (lambda + self.bias).clamp(self.min_lod, self.max_lod);
+        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        if lambda <= self.c {
+            return self.filter(self.base_level, self.mag, s, t, r);
+        }
+        let lin = |f: u32| {
+            if matches!(
+                f,
+                gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
+            ) {
+                gl::LINEAR
+            } else {
+                gl::NEAREST
+            }
+        };
+        let span = (self.last - self.base_level) as f32;
+        match self.min {
+            gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                // d = base + ceil(λ + 1/2) - 1 for λ > 1/2, else base; at most q.
+                let d = if lambda <= 0.5 {
+                    0.0
+                } else {
+                    ((lambda + 0.5).ceil() - 1.0).min(span)
+                };
+                self.filter(self.base_level + d as i32, lin(self.min), s, t, r)
+            }
+            gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                if lambda >= span {
+                    return self.filter(self.last, lin(self.min), s, t, r);
+                }
+                let d1 = lambda.floor();
+                let f = lambda - d1;
+                let l1 = self.base_level + d1 as i32;
+                let a = self.filter(l1, lin(self.min), s, t, r);
+                if f == 0.0 {
+                    return a;
+                }
+                let b = self.filter(l1 + 1, lin(self.min), s, t, r);
+                std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f)
+            }
+            f => self.filter(self.base_level, f, s, t, r),
+        }
+    }
+
+    /// NEAREST or LINEAR on one level (§3.8.8, the wrap modes of §3.8.7).
+    #[inline]
+    fn filter(&self, level: i32, filter: u32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        if filter == gl::NEAREST {
+            self.nearest(level, s, t, r)
+        } else {
+            self.linear(level, s, t, r)
+        }
+    }
+
+    /// NEAREST on level `level`: the texel containing (u, v) (eq. 3.22).
+    #[inline]
+    fn nearest(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        let Some(lv) = self.obj.level(level) else {
+            return [0.0; 4];
+        };
+        let i = wrap_nearest(self.wrap[0], s, lv.width);
+        let j = wrap_nearest(self.wrap[1], t, lv.height);
+        self.fetch(lv, i, j, r)
+    }
+
+    /// LINEAR on level `level`: the 2x2 texels around (u, v) weighted by eq. 3.24.
+    #[inline]
+    fn linear(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        let Some(lv) = self.obj.level(level) else {
+            return [0.0; 4];
+        };
+        let (i0, i1, a) = wrap_linear(self.wrap[0], s, lv.width);
+        let (j0, j1, b) = wrap_linear(self.wrap[1], t, lv.height);
+        let t00 = self.fetch(lv, i0, j0, r);
+        let t10 = self.fetch(lv, i1, j0, r);
+        let t01 = self.fetch(lv, i0, j1, r);
+        let t11 = self.fetch(lv, i1, j1, r);
+        std::array::from_fn(|k| {
+            (1.0 - a) * (1.0 - b) * t00[k]
+                + a * (1.0 - b) * t10[k]
+                + (1.0 - a) * b * t01[k]
+                + a * b * t11[k]
+        })
+    }
+
+    /// The texel at (i, j), the border colour where a wrap mode says so (None), and the depth
+    /// comparison result in place of a depth when comparison is on.
+    #[inline(always)]
+    fn fetch(&self, lv: &Level, i: Option<i32>, j: Option<i32>, r: f32) -> [f32; 4] {
+        let t = match (i, j) {
+            (Some(i), Some(j)) => lv.texel(i, j),
+            // The border colour in the base format's components (table 3.15).
+            _ => crate::texture::keep(self.base, self.border),
+        };
+        match self.compare {
+            Some(func) => {
+                let d = t[0];
+                let r = r.clamp(0.0, 1.0);
+                let pass = match func {
+                    gl::LEQUAL => r <= d,
+                    gl::GEQUAL => r >= d,
+                    gl::LESS => r < d,
+                    gl::GREATER => r > d,
+                    gl::EQUAL => r == d,
+                    gl::NOTEQUAL => r != d,
+                    gl::ALWAYS => true,
+                    _ => false,
+                };
+                [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
+            }
+            None => t,
+        }
+    }
+
+    /// Table 3.21: the texture function `env` of fragment colour `cf` and filtered texel `t`.
+    pub fn env(&self, cf: Vec4, t: [f32; 4]) -> Vec4 {
+        // A depth texture reads as DEPTH_TEXTURE_MODE (§3.8.14).
+        let (base, t) = if self.base == gl::DEPTH_COMPONENT {
+            match self.depth_mode {
+                gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, t[0]]),
+                m => (m, t),
+            }
+        } else {
+            (self.base, t)
+        };
+        let ct = Vec4::new(t[0], t[1], t[2], 0.0);
+        let l = t[0];
+        let at = t[3];
+        let (cfr, af) = (cf.truncate().extend(0.0), cf.w);
+        let cc = self.env_color.truncate().extend(0.0);
+        let lum = Vec4::new(l, l, l, 0.0);
+        let (c, a) = match (self.env, base) {
+            (gl::REPLACE, gl::ALPHA) => (cfr, at),
+            (gl::REPLACE, gl::LUMINANCE) => (lum, af),
+            (gl::REPLACE, gl::LUMINANCE_ALPHA) => (lum, at),
+            (gl::REPLACE, gl::INTENSITY) => (lum, l),
+            (gl::REPLACE, gl::RGB) => (ct, af),
+            (gl::REPLACE, _) => (ct, at),
+            (gl::MODULATE, gl::ALPHA) => (cfr, af * at),
+            (gl::MODULATE, gl::LUMINANCE) => (cfr * l, af),
+            (gl::MODULATE, gl::LUMINANCE_ALPHA) => (cfr * l, af * at),
+            (gl::MODULATE, gl::INTENSITY) => (cfr * l, af * l),
+            (gl::MODULATE, gl::RGB) => (cfr * ct, af),
+            (gl::MODULATE, _) => (cfr * ct, af * at),
+            // DECAL is undefined for the one- and two-component formats: the fragment passes.
+            (gl::DECAL, gl::RGB) => (ct, af),
+            (gl::DECAL, gl::RGBA) => (cfr * (1.0 - at) + ct * at, af),
+            (gl::DECAL, _) => (cfr, af),
+            (gl::BLEND, gl::ALPHA) => (cfr, af * at),
+            (gl::BLEND, gl::LUMINANCE) => (cfr * (1.0 - l) + cc * l, af),
+            (gl::BLEND, gl::LUMINANCE_ALPHA) => (cfr * (1.0 - l) + cc * l, af * at),
+            (gl::BLEND, gl::INTENSITY) => (
+                cfr * (1.0 - l) + cc * l,
+                af * (1.0 - l) + self.env_color.w * l,
+            ),
+            (gl::BLEND, gl::RGB) => (cfr * (Vec4::ONE - ct) + cc * ct, af),
+            (gl::BLEND, _) => (cfr * (Vec4::ONE - ct) + cc * ct, af * at),
+            (gl::ADD, gl::ALPHA) => (cfr, af * at),
+            (gl::ADD, gl::LUMINANCE) => (cfr + lum, af),
+            (gl::ADD, gl::LUMINANCE_ALPHA) => (cfr + lum, af * at),
+            (gl::ADD, gl::INTENSITY) => (cfr + lum, af + l),
+            (gl::ADD, gl::RGB) => (cfr + ct, af),
+            (gl::ADD, _) => (cfr + ct, af * at),
+            _ => (cfr, af),
+        };
+        Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
+    }
+}
+
+/// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.
+#[inline(always)]
+fn fast_log2(x: f32) -> f32 {
+    if x.is_nan() || x <= 0.0 || x.is_infinite() {
+        return x.log2();
+    }
+    let bits = x.to_bits();
+    let e = ((bits >> 23) & 0xff) as i32 - 127;
+    let m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    e as f32 + (m - 1.0)
+}
+
+/// `floor` as an index, saturating (NaN → 0), without a libm call: truncate, then step down
+/// where truncation rounded up (negative non-integers).
+#[inline(always)]
+fn ifloor(x: f32) -> i32 {
+    let t = x as i32;
+    if (t as f32) > x {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
+/// MIRRORED_REPEAT's coordinate (§3.8.7): frac(s) where floor(s) is even, else 1 - frac(s).
+#[inline(always)]
+fn mirror(s: f32) -> f32 {
+    let f = s - s.floor();
+    if (s.floor() as i64).rem_euclid(2) == 0 {
+        f
+    } else {
+        1.0 - f
+    }
+}
+
+/// The NEAREST texel index along an axis of `n` texels; None: the border colour.
+#[inline(always)]
+fn wrap_nearest(mode: u32, s: f32, n: i32) -> Option<i32> {
+    let n = n.max(1);
+    match mode {
+        gl::REPEAT => Some(ifloor(s * n as f32).rem_euclid(n)),
+        gl::MIRRORED_REPEAT => Some(ifloor(mirror(s) * n as f32).clamp(0, n - 1)),
+        gl::CLAMP_TO_BORDER => {
+            let i = ifloor(s * n as f32);
+            (0..n).contains(&i).then_some(i)
+        }
+        // CLAMP and CLAMP_TO_EDGE agree for NEAREST: s in [0, 1], i = n taken as n - 1.
+        _ => Some(ifloor(s * n as f32).clamp(0, n - 1)),
+    }
+}
+
+/// The two LINEAR texel indices along an axis and the weight of the second (§3.8.8 eq. 3.24):
+/// u = s·n - 1/2, i0 = floor(u), i1 = i0 + 1, α = frac(u); None: the border colour.
+#[inline(always)]
+fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
+    let n = n.max(1);
+    let nf = n as f32;
+    let s = match mode {
+        gl::MIRRORED_REPEAT => mirror(s),
+        gl::CLAMP => s.clamp(0.0, 1.0),
+        _ => s,
+    };
+    let u = s * nf - 0.5;
+    let u = if u.is_nan() { 0.0 } else { u };
+    let i0 = ifloor(u);
+    // |u| beyond 2^24 has no fraction; a saturated i0 must not produce a weight outside [0, 1].
+    let a = (u - i0 as f32).clamp(0.0, 1.0);
+    let i1 = i0.saturating_add(1);
+    let inside = |i: i32| (0..n).contains(&i).then_some(i);
+    match mode {
+        gl::REPEAT => (Some(i0.rem_euclid(n)), Some(i1.rem_euclid(n)), a),
+        gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
+        // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
+        _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),
+    }
+}
+
+#[cfg(test)]
+#[path = "tests/texture.rs"]
+mod tests;

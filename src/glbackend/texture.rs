@@ -1,0 +1,170 @@
+//! Replay of the texture entry points whose client memory the driver reads through a pointer
+//! (GL 2.1 §3.8.1, §3.8.2, §3.8.12): GenTextures, DeleteTextures, TexImage2D, TexSubImage2D.
+//!
+//! Design decision: the driver must never read past the recorded bytes. The bytes an image needs
+//! are computed from the driver's own unpack state (alignment, row length, skipped rows and
+//! pixels, queried at the call); a recording whose data is shorter gets the front end's
+//! INVALID_OPERATION (see `context::texture`) without the driver seeing the pointer, unless the
+//! arguments are in error anyway, in which case the driver is called with NULL so that it raises
+//! its own error and reads nothing.
+
+use super::GlBackend;
+use crate::context::texture::{tex_image_args_error, MAX_GEN_TEXTURES};
+use crate::gl;
+use crate::texture::{format_components, type_size, unpack_extent};
+
+impl GlBackend {
+    /// The bytes the driver reads for a `width` x `height` image of `format` / `type_` under
+    /// its current unpack state, or None for a format or type this crate does not unpack.
+    fn driver_unpack_need(
+        &self,
+        width: i32,
+        height: i32,
+        format: u32,
+        type_: u32,
+    ) -> Option<usize> {
+        let (n, s) = (format_components(format)?, type_size(type_)?);
+        let mut v = [0i32; 4];
+        for (slot, pname) in v.iter_mut().zip([
+            gl::UNPACK_ALIGNMENT,
+            gl::UNPACK_ROW_LENGTH,
+            gl::UNPACK_SKIP_ROWS,
+            gl::UNPACK_SKIP_PIXELS,
+        ]) {
+            // SAFETY: context current (execute made it so); GetIntegerv writes one value.
+            unsafe { self.raw.GetIntegerv(pname, slot) };
+        }
+        let (stride, need) = unpack_extent(width, height, n, s, v[0], v[1]);
+        if need == 0 {
+            return Some(0);
+        }
+        let skip = stride * v[2].max(0) as usize + n * s * v[3].max(0) as usize;
+        Some(need + skip)
+    }
+
+    /// `glGenTextures(n)` with a scratch buffer for the names (the front end's bound on n).
+    pub(super) fn gen_textures(&mut self, n: i32) {
+        if n > MAX_GEN_TEXTURES {
+            return self.raise(gl::OUT_OF_MEMORY);
+        }
+        let mut names = vec![0u32; n.max(1) as usize];
+        // SAFETY: `names` holds at least max(n, 1) values; with n < 0 the driver writes nothing.
+        unsafe { self.raw.GenTextures(n, names.as_mut_ptr()) };
+    }
+
+    /// `glDeleteTextures(n, names)`: a slice shorter than n is INVALID_VALUE, as in the front end.
+    pub(super) fn delete_textures(&mut self, n: i32, names: &[u32]) {
+        if n > 0 && names.len() < n as usize && !self.inside_begin_end {
+            return self.raise(gl::INVALID_VALUE);
+        }
+        let one = [0u32];
+        let p = if names.is_empty() {
+            one.as_ptr()
+        } else {
+            names.as_ptr()
+        };
+        let n = if names.len() < n.max(0) as usize {
+            0
+        } else {
+            n
+        };
+        // SAFETY: the driver reads at most n <= names.len() names (0 inside Begin/End when short).
+        unsafe { self.raw.DeleteTextures(n, p) };
+    }
+
+    /// `glTexImage2D` with the recorded pixels (or NULL).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_image_2d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        let raw = &self.raw;
+        let call = |p: *const u8| {
+            // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+            unsafe {
+                raw.TexImage2D(
+                    target,
+                    level,
+                    internal,
+                    width,
+                    height,
+                    border,
+                    format,
+                    type_,
+                    p.cast(),
+                )
+            }
+        };
+        let bad = self.inside_begin_end
+            || tex_image_args_error(
+                target, level, internal, width, height, border, format, type_,
+            )
+            .is_some();
+        match pixels {
+            None => call(std::ptr::null()),
+            Some(_) if bad => call(std::ptr::null()),
+            Some(p) => match self.driver_unpack_need(width, height, format, type_) {
+                Some(need) if p.len() >= need => call(p.as_ptr()),
+                _ => self.raise(gl::INVALID_OPERATION),
+            },
+        }
+    }
+
+    /// `glTexSubImage2D` with the recorded pixels. Short data: the driver is called with NULL,
+    /// which Mesa treats as nothing to copy after its own checks, so its error (if any) comes
+    /// first, else the front end's INVALID_OPERATION.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_sub_image_2d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
+        let enough = !self.inside_begin_end
+            && self
+                .driver_unpack_need(width, height, format, type_)
+                .is_some_and(|need| pixels.len() >= need);
+        let p = if enough {
+            pixels.as_ptr()
+        } else {
+            std::ptr::null()
+        };
+        // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+        unsafe {
+            self.raw.TexSubImage2D(
+                target,
+                level,
+                xoffset,
+                yoffset,
+                width,
+                height,
+                format,
+                type_,
+                p.cast(),
+            )
+        };
+        if !enough && !self.inside_begin_end {
+            // SAFETY: context current; outside Begin/End a plain read of the flag.
+            let e = unsafe { self.raw.GetError() };
+            self.raise(if e == gl::NO_ERROR {
+                gl::INVALID_OPERATION
+            } else {
+                e
+            });
+        }
+    }
+}

@@ -1,0 +1,566 @@
+//! Texture state as plain data (GL 2.1 §3.8, tables 6.15 to 6.19): texture objects with their
+//! images and parameters, the per-unit environment and coordinate generation, the pixel
+//! unpacking of `TexImage2D` (§3.6), and helpers that make textures without data files.
+//!
+//! Design decision: a texture object lives behind an `Arc`, so `State` stays cheap to clone (a
+//! PushAttrib or a test's "state unchanged" snapshot shares the images) and a flush hands the
+//! bound object to the CPU sampler without copying; a change goes through `Arc::make_mut`, which
+//! copies only while someone else still holds the old version. Images are stored as RGBA `f32`
+//! texels, bottom row first, already reduced to the internal format's precision (8 bits per
+//! colour component, as llvmpipe stores them; 24 bits of depth), with the components the base
+//! format keeps (table 3.15: L in R, I in R, depth in R).
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use crate::gl;
+use crate::state::MAX_TEXTURE_UNITS;
+
+/// `MAX_TEXTURE_SIZE` (as `glGet` reports it).
+pub const MAX_TEXTURE_SIZE: i32 = 2048;
+/// Mipmap levels a 2D texture can hold: log2(MAX_TEXTURE_SIZE) + 1.
+pub const MAX_LEVELS: usize = 12;
+/// `MAX_TEXTURE_LOD_BIAS` (Mesa's value).
+pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
+
+/// One mipmap level's image (GL 2.1 table 6.17).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Level {
+    /// TEXTURE_WIDTH.
+    pub width: i32,
+    /// TEXTURE_HEIGHT.
+    pub height: i32,
+    /// The internal format as the application gave it (`TEXTURE_INTERNAL_FORMAT`).
+    pub internal_format: i32,
+    /// The base internal format (table 3.15): ALPHA, LUMINANCE, LUMINANCE_ALPHA, INTENSITY, RGB,
+    /// RGBA or DEPTH_COMPONENT.
+    pub base: u32,
+    /// `width * height` texels, bottom row first (t = 0 first, §3.8.1).
+    pub texels: Vec<[f32; 4]>,
+}
+
+impl Level {
+    /// The texel at (i, j), which must be inside the image.
+    #[inline(always)]
+    pub fn texel(&self, i: i32, j: i32) -> [f32; 4] {
+        let k = (j * self.width + i) as usize;
+        self.texels.get(k).copied().unwrap_or([0.0; 4])
+    }
+}
+
+/// A texture object (GL 2.1 §3.8.12, table 6.16): images and sampling parameters.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct TexObject {
+    /// Levels 0 to MAX_LEVELS - 1; `None` where no image was specified.
+    pub levels: Vec<Option<Level>>,
+    pub min_filter: u32,
+    pub mag_filter: u32,
+    pub wrap_s: u32,
+    pub wrap_t: u32,
+    pub wrap_r: u32,
+    pub border_color: Vec4,
+    pub priority: f32,
+    pub min_lod: f32,
+    pub max_lod: f32,
+    pub base_level: i32,
+    pub max_level: i32,
+    pub generate_mipmap: bool,
+    pub compare_mode: u32,
+    pub compare_func: u32,
+    pub depth_texture_mode: u32,
+}
+
+impl Default for TexObject {
+    /// Table 6.16's initial values.
+    fn default() -> Self {
+        Self {
+            levels: vec![None; MAX_LEVELS],
+            min_filter: gl::NEAREST_MIPMAP_LINEAR,
+            mag_filter: gl::LINEAR,
+            wrap_s: gl::REPEAT,
+            wrap_t: gl::REPEAT,
+            wrap_r: gl::REPEAT,
+            border_color: Vec4::ZERO,
+            priority: 1.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            base_level: 0,
+            max_level: 1000,
+            generate_mipmap: false,
+            compare_mode: gl::NONE,
+            compare_func: gl::LEQUAL,
+            depth_texture_mode: gl::LUMINANCE,
+        }
+    }
+}
+
+/// Does `filter` use mipmaps (§3.8.8)?
+pub fn is_mipmap_filter(filter: u32) -> bool {
+    matches!(
+        filter,
+        gl::NEAREST_MIPMAP_NEAREST
+            | gl::LINEAR_MIPMAP_NEAREST
+            | gl::NEAREST_MIPMAP_LINEAR
+            | gl::LINEAR_MIPMAP_LINEAR
+    )
+}
+
+impl TexObject {
+    /// The level `l`, if specified.
+    pub fn level(&self, l: i32) -> Option<&Level> {
+        usize::try_from(l)
+            .ok()
+            .and_then(|l| self.levels.get(l))
+            .and_then(Option::as_ref)
+    }
+
+    /// The last level a complete mipmap array uses: q = min(p, max_level) with
+    /// p = floor(log2(max(w, h))) + base_level (§3.8.8), or None without a base image.
+    pub fn last_level(&self) -> Option<i32> {
+        let b = self.level(self.base_level)?;
+        let size = b.width.max(b.height).max(1);
+        let p = 31 - size.leading_zeros() as i32 + self.base_level;
+        Some(p.min(self.max_level))
+    }
+
+    /// Texture completeness (§3.8.10): the base image exists with positive sizes and, when the
+    /// minification filter needs mipmaps, every level from the base to q exists with halved
+    /// sizes and the base's internal format, and base_level <= max_level.
+    pub fn is_complete(&self) -> bool {
+        let Some(base) = self.level(self.base_level) else {
+            return false;
+        };
+        if base.width <= 0 || base.height <= 0 {
+            return false;
+        }
+        if !is_mipmap_filter(self.min_filter) {
+            return true;
+        }
+        if self.base_level > self.max_level {
+            return false;
+        }
+        let Some(q) = self.last_level() else {
+            return false;
+        };
+        let (mut w, mut h) = (base.width, base.height);
+        for l in self.base_level + 1..=q {
+            w = (w / 2).max(1);
+            h = (h / 2).max(1);
+            match self.level(l) {
+                Some(lv)
+                    if lv.width == w
+                        && lv.height == h
+                        && lv.internal_format == base.internal_format => {}
+                _ => return false,
+            }
+        }
+        true
+    }
+
+    /// GENERATE_MIPMAP (§3.8.8): levels base+1 ..= q recomputed from the base level with a 2x2
+    /// box filter (Mesa's choice; the spec leaves the filter open), each reduced to the format's
+    /// precision.
+    pub fn generate_mipmaps(&mut self) {
+        let Some(q) = self.last_level() else {
+            return;
+        };
+        let mut l = self.base_level;
+        while l < q {
+            let Some(src) = self.level(l) else {
+                return;
+            };
+            let next = halve(src);
+            let Some(slot) = usize::try_from(l + 1)
+                .ok()
+                .and_then(|k| self.levels.get_mut(k))
+            else {
+                return;
+            };
+            *slot = Some(next);
+            l += 1;
+        }
+    }
+}
+
+/// The next-smaller mipmap image of `src`: each texel the mean of the (up to) 2x2 texels above it.
+pub fn halve(src: &Level) -> Level {
+    let w = (src.width / 2).max(1);
+    let h = (src.height / 2).max(1);
+    let mut texels = Vec::with_capacity((w * h) as usize);
+    let fx = if src.width > 1 { 2 } else { 1 };
+    let fy = if src.height > 1 { 2 } else { 1 };
+    for j in 0..h {
+        for i in 0..w {
+            let mut sum = [0.0f32; 4];
+            for dj in 0..fy {
+                for di in 0..fx {
+                    let t = src.texel(i * fx + di, j * fy + dj);
+                    for k in 0..4 {
+                        sum[k] += t[k];
+                    }
+                }
+            }
+            let n = (fx * fy) as f32;
+            texels.push(quantize(src.base, sum.map(|s| s / n)));
+        }
+    }
+    Level {
+        width: w,
+        height: h,
+        internal_format: src.internal_format,
+        base: src.base,
+        texels,
+    }
+}
+
+/// Reduces a texel to the stored precision: 8-bit unsigned normalised colour, 24-bit depth.
+pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
+    if base == gl::DEPTH_COMPONENT {
+        let s = 16_777_215.0;
+        t.map(|c| (c.clamp(0.0, 1.0) * s).round() / s)
+    } else {
+        t.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0)
+    }
+}
+
+/// Texture coordinate generation for one coordinate (GL 2.1 §2.11.4, table 6.15).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexGen {
+    /// TEXTURE_GEN_MODE.
+    pub mode: u32,
+    /// OBJECT_PLANE.
+    pub object_plane: Vec4,
+    /// EYE_PLANE, already multiplied by the inverse modelview current at the call.
+    pub eye_plane: Vec4,
+}
+
+/// One texture unit's state other than its enables and matrix (tables 6.15, 6.18, 6.19).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexUnit {
+    /// TEXTURE_BINDING_2D (0: the default texture).
+    pub binding_2d: u32,
+    /// TEXTURE_ENV_MODE.
+    pub env_mode: u32,
+    /// TEXTURE_ENV_COLOR.
+    pub env_color: Vec4,
+    /// TEXTURE_LOD_BIAS of TEXTURE_FILTER_CONTROL.
+    pub lod_bias: f32,
+    /// S, T, R, Q.
+    pub gen: [TexGen; 4],
+    /// The COMBINE environment's parameters (table 6.19).
+    pub combine: Combine,
+}
+
+/// TexEnv COMBINE parameters (GL 2.1 §3.8.13, tables 3.22 to 3.24, initial values table 6.19).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Combine {
+    /// COMBINE_RGB.
+    pub rgb: u32,
+    /// COMBINE_ALPHA.
+    pub alpha: u32,
+    /// SRC0_RGB, SRC1_RGB, SRC2_RGB.
+    pub src_rgb: [u32; 3],
+    /// SRC0_ALPHA, SRC1_ALPHA, SRC2_ALPHA.
+    pub src_alpha: [u32; 3],
+    /// OPERAND0_RGB ..= OPERAND2_RGB.
+    pub operand_rgb: [u32; 3],
+    /// OPERAND0_ALPHA ..= OPERAND2_ALPHA.
+    pub operand_alpha: [u32; 3],
+    /// RGB_SCALE (1, 2 or 4).
+    pub rgb_scale: f32,
+    /// ALPHA_SCALE (1, 2 or 4).
+    pub alpha_scale: f32,
+}
+
+impl Default for Combine {
+    fn default() -> Self {
+        Self {
+            rgb: gl::MODULATE,
+            alpha: gl::MODULATE,
+            src_rgb: [gl::TEXTURE, gl::PREVIOUS, gl::CONSTANT],
+            src_alpha: [gl::TEXTURE, gl::PREVIOUS, gl::CONSTANT],
+            operand_rgb: [gl::SRC_COLOR, gl::SRC_COLOR, gl::SRC_ALPHA],
+            operand_alpha: [gl::SRC_ALPHA; 3],
+            rgb_scale: 1.0,
+            alpha_scale: 1.0,
+        }
+    }
+}
+
+impl Default for TexUnit {
+    fn default() -> Self {
+        let plane = |k: usize| {
+            let mut p = [0.0; 4];
+            if k < 2 {
+                p[k] = 1.0;
+            }
+            Vec4::from_array(p)
+        };
+        Self {
+            binding_2d: 0,
+            env_mode: gl::MODULATE,
+            env_color: Vec4::ZERO,
+            lod_bias: 0.0,
+            combine: Combine::default(),
+            gen: std::array::from_fn(|k| TexGen {
+                mode: gl::EYE_LINEAR,
+                object_plane: plane(k),
+                eye_plane: plane(k),
+            }),
+        }
+    }
+}
+
+/// Every piece of texture state: objects, names, units, and the unpack row length.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Textures {
+    /// Names returned by GenTextures and not yet deleted (bound or not).
+    pub names: BTreeSet<u32>,
+    /// The objects that exist (a name becomes an object when first bound), by name.
+    pub objects: BTreeMap<u32, Arc<TexObject>>,
+    /// Texture object 0: the default 2D texture.
+    pub default_2d: Arc<TexObject>,
+    /// Per-unit state.
+    pub units: [TexUnit; MAX_TEXTURE_UNITS],
+    /// UNPACK_ROW_LENGTH (table 6.24; 0: rows are `width` long).
+    pub unpack_row_length: i32,
+}
+
+impl Textures {
+    /// The object bound to TEXTURE_2D on `unit`.
+    pub fn bound_2d(&self, unit: usize) -> Option<&Arc<TexObject>> {
+        let name = self.units.get(unit)?.binding_2d;
+        if name == 0 {
+            Some(&self.default_2d)
+        } else {
+            self.objects.get(&name)
+        }
+    }
+
+    /// The object bound to TEXTURE_2D on `unit`, to modify (copied first if shared).
+    pub fn bound_2d_mut(&mut self, unit: usize) -> Option<&mut TexObject> {
+        let name = self.units.get(unit)?.binding_2d;
+        let arc = if name == 0 {
+            &mut self.default_2d
+        } else {
+            self.objects.get_mut(&name)?
+        };
+        Some(Arc::make_mut(arc))
+    }
+}
+
+/// The base internal format (table 3.15) of an accepted `internalformat` (tables 3.16, 3.17,
+/// and 1..=4 for the component counts GL 1.0 took), or None.
+pub fn base_internal_format(internal: i32) -> Option<u32> {
+    let Ok(f) = u32::try_from(internal) else {
+        return None;
+    };
+    Some(match f {
+        1 => gl::LUMINANCE,
+        2 => gl::LUMINANCE_ALPHA,
+        3 => gl::RGB,
+        4 => gl::RGBA,
+        gl::ALPHA | gl::ALPHA4 | gl::ALPHA8 | gl::ALPHA12 | gl::ALPHA16 => gl::ALPHA,
+        gl::LUMINANCE | gl::LUMINANCE4 | gl::LUMINANCE8 | gl::LUMINANCE12 | gl::LUMINANCE16 => {
+            gl::LUMINANCE
+        }
+        gl::LUMINANCE_ALPHA
+        | gl::LUMINANCE4_ALPHA4
+        | gl::LUMINANCE6_ALPHA2
+        | gl::LUMINANCE8_ALPHA8
+        | gl::LUMINANCE12_ALPHA4
+        | gl::LUMINANCE12_ALPHA12
+        | gl::LUMINANCE16_ALPHA16 => gl::LUMINANCE_ALPHA,
+        gl::INTENSITY | gl::INTENSITY4 | gl::INTENSITY8 | gl::INTENSITY12 | gl::INTENSITY16 => {
+            gl::INTENSITY
+        }
+        gl::RGB
+        | gl::R3_G3_B2
+        | gl::RGB4
+        | gl::RGB5
+        | gl::RGB8
+        | gl::RGB10
+        | gl::RGB12
+        | gl::RGB16 => gl::RGB,
+        gl::RGBA
+        | gl::RGBA2
+        | gl::RGBA4
+        | gl::RGB5_A1
+        | gl::RGBA8
+        | gl::RGB10_A2
+        | gl::RGBA12
+        | gl::RGBA16 => gl::RGBA,
+        gl::DEPTH_COMPONENT
+        | gl::DEPTH_COMPONENT16
+        | gl::DEPTH_COMPONENT24
+        | gl::DEPTH_COMPONENT32 => gl::DEPTH_COMPONENT,
+        _ => return None,
+    })
+}
+
+/// Components per pixel of a client pixel `format` this crate unpacks (table 3.6), or None.
+pub fn format_components(format: u32) -> Option<usize> {
+    Some(match format {
+        gl::RED | gl::GREEN | gl::BLUE | gl::ALPHA | gl::LUMINANCE | gl::DEPTH_COMPONENT => 1,
+        gl::LUMINANCE_ALPHA => 2,
+        gl::RGB | gl::BGR => 3,
+        gl::RGBA | gl::BGRA => 4,
+        _ => return None,
+    })
+}
+
+/// Bytes per component of a client pixel `type_` this crate unpacks (table 3.5), or None.
+/// Packed types (UNSIGNED_SHORT_5_6_5 ...) and BITMAP are not supported.
+pub fn type_size(type_: u32) -> Option<usize> {
+    Some(match type_ {
+        gl::UNSIGNED_BYTE | gl::BYTE => 1,
+        gl::UNSIGNED_SHORT | gl::SHORT => 2,
+        gl::UNSIGNED_INT | gl::INT | gl::FLOAT => 4,
+        _ => return None,
+    })
+}
+
+/// Where an unpacked image's rows lie in client memory (§3.6.4 with UNPACK_ALIGNMENT and
+/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs.
+pub fn unpack_extent(
+    width: i32,
+    height: i32,
+    components: usize,
+    size: usize,
+    alignment: i32,
+    row_length: i32,
+) -> (usize, usize) {
+    let w = width.max(0) as usize;
+    let h = height.max(0) as usize;
+    let l = if row_length > 0 {
+        row_length as usize
+    } else {
+        w
+    };
+    let a = alignment.max(1) as usize;
+    let row = components * size * l;
+    // k = a/s · ceil(s·n·l / a) components when s < a, else n·l (eq. 3.? of §3.6.4), in bytes.
+    let stride = if size >= a { row } else { row.div_ceil(a) * a };
+    let need = if w == 0 || h == 0 {
+        0
+    } else {
+        stride * (h - 1) + components * size * w
+    };
+    (stride, need)
+}
+
+/// One component of client data as a float: unsigned and signed integers by table 2.9
+/// (c / (2^b - 1), (2c + 1) / (2^b - 1)), FLOAT as it is.
+fn component(data: &[u8], at: usize, type_: u32) -> f32 {
+    let b = |k: usize| data.get(at + k).copied().unwrap_or(0);
+    match type_ {
+        gl::UNSIGNED_BYTE => f32::from(b(0)) / 255.0,
+        gl::BYTE => (2.0 * f32::from(b(0) as i8) + 1.0) / 255.0,
+        gl::UNSIGNED_SHORT => f32::from(u16::from_ne_bytes([b(0), b(1)])) / 65535.0,
+        gl::SHORT => (2.0 * f32::from(i16::from_ne_bytes([b(0), b(1)])) + 1.0) / 65535.0,
+        gl::UNSIGNED_INT => {
+            (f64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])) / f64::from(u32::MAX)) as f32
+        }
+        gl::INT => {
+            ((2.0 * f64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])) + 1.0)
+                / f64::from(u32::MAX)) as f32
+        }
+        _ => f32::from_ne_bytes([b(0), b(1), b(2), b(3)]),
+    }
+}
+
+/// Unpacks `width` x `height` pixels of `format`/`type_` (already validated, `data` long
+/// enough) into texels of base format `base`: components to RGBA (§3.6.4 "conversion to
+/// RGB"; a missing R, G, B is 0, a missing A is 1; L goes to R), then the components `base`
+/// keeps (table 3.15), clamped and reduced to the stored precision.
+pub fn unpack(
+    data: &[u8],
+    width: i32,
+    height: i32,
+    format: u32,
+    type_: u32,
+    stride: usize,
+    base: u32,
+) -> Vec<[f32; 4]> {
+    let n = format_components(format).unwrap_or(4);
+    let s = type_size(type_).unwrap_or(1);
+    let mut out = Vec::with_capacity((width.max(0) * height.max(0)) as usize);
+    for j in 0..height.max(0) as usize {
+        for i in 0..width.max(0) as usize {
+            let at = j * stride + i * n * s;
+            let c = |k: usize| component(data, at + k * s, type_);
+            let rgba = match format {
+                gl::RED => [c(0), 0.0, 0.0, 1.0],
+                gl::GREEN => [0.0, c(0), 0.0, 1.0],
+                gl::BLUE => [0.0, 0.0, c(0), 1.0],
+                gl::ALPHA => [0.0, 0.0, 0.0, c(0)],
+                gl::LUMINANCE | gl::DEPTH_COMPONENT => [c(0), c(0), c(0), 1.0],
+                gl::LUMINANCE_ALPHA => [c(0), c(0), c(0), c(1)],
+                gl::RGB => [c(0), c(1), c(2), 1.0],
+                gl::BGR => [c(2), c(1), c(0), 1.0],
+                gl::BGRA => [c(2), c(1), c(0), c(3)],
+                _ => [c(0), c(1), c(2), c(3)],
+            };
+            out.push(quantize(base, keep(base, rgba)));
+        }
+    }
+    out
+}
+
+/// The components base format `base` keeps of an RGBA colour (table 3.15), others zero, the
+/// luminance and intensity in R.
+pub fn keep(base: u32, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
+    match base {
+        gl::ALPHA => [0.0, 0.0, 0.0, a],
+        gl::LUMINANCE | gl::INTENSITY | gl::DEPTH_COMPONENT => [r, 0.0, 0.0, 0.0],
+        gl::LUMINANCE_ALPHA => [r, 0.0, 0.0, a],
+        gl::RGB => [r, g, b, 0.0],
+        _ => [r, g, b, a],
+    }
+}
+
+/// A stored texel as RGBA with the base format's reading (table 3.21's Rt, Gt, Bt, At, before
+/// the environment): L → (L, L, L, 1), I → (I, I, I, I), A → (0, 0, 0, A), RGB → (R, G, B, 1).
+/// What GetTexImage returns, and what DECAL and the colour-only environments read.
+pub fn as_rgba(base: u32, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
+    match base {
+        gl::ALPHA => [0.0, 0.0, 0.0, a],
+        gl::LUMINANCE | gl::DEPTH_COMPONENT => [r, r, r, 1.0],
+        gl::LUMINANCE_ALPHA => [r, r, r, a],
+        gl::INTENSITY => [r, r, r, r],
+        gl::RGB => [r, g, b, 1.0],
+        _ => [r, g, b, a],
+    }
+}
+
+/// A `size` x `size` RGBA8 checkerboard of `cells` x `cells` squares, `a` at the lower-left
+/// corner and `b` beside it, as tightly packed bytes ready for `tex_image_2d(.., RGBA,
+/// UNSIGNED_BYTE, ..)` with any UNPACK_ALIGNMENT.
+pub fn checkerboard(size: u32, cells: u32, a: [u8; 4], b: [u8; 4]) -> Vec<u8> {
+    let size = size.min(MAX_TEXTURE_SIZE as u32);
+    let cell = (size / cells.max(1)).max(1);
+    let mut out = Vec::with_capacity((size * size * 4) as usize);
+    for y in 0..size {
+        for x in 0..size {
+            let odd = ((x / cell) + (y / cell)) % 2 == 1;
+            out.extend_from_slice(if odd { &b } else { &a });
+        }
+    }
+    out
+}
+
+/// An image's pixels as RGBA8 bytes in GL's row order (bottom row first), with its width and
+/// height, ready for `tex_image_2d(.., RGBA, UNSIGNED_BYTE, ..)`.
+pub fn texture_from_image(img: &image::DynamicImage) -> (i32, i32, Vec<u8>) {
+    let rgba = image::imageops::flip_vertical(&img.to_rgba8());
+    let (w, h) = rgba.dimensions();
+    (w as i32, h as i32, rgba.into_raw())
+}
+
+/// `f32` values as the native-endian bytes `tex_image_2d(.., FLOAT, ..)` takes.
+pub fn f32_bytes(values: &[f32]) -> Vec<u8> {
+    values.iter().flat_map(|v| v.to_ne_bytes()).collect()
+}

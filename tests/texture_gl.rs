@@ -1,0 +1,565 @@
+//! The texture entry points against the real driver (Mesa llvmpipe through EGL): the same error
+//! sequence as the CPU front end (including short client data, which never reaches the driver),
+//! and the texture scenes within their tolerance. Skipped, with a note on stderr, when no GL
+//! backend can start (unless FIXEDGL_REQUIRE_GL is set).
+#![cfg(feature = "gl")]
+
+use std::io::Write as _;
+
+use fixedgl::compare::compare;
+use fixedgl::glbackend::{DeviceChoice, GlBackend};
+use fixedgl::{gl, scenes, Call, Context};
+
+fn backend(width: u32, height: u32) -> Option<GlBackend> {
+    match GlBackend::new(width, height, &DeviceChoice::Auto) {
+        Ok(b) => Some(b),
+        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
+            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
+        }
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
+            None
+        }
+    }
+}
+
+#[test]
+fn texture_errors_match_the_driver() {
+    let Some(mut gl) = backend(8, 8) else {
+        return;
+    };
+    let Ok(mut cpu) = Context::new(8, 8) else {
+        panic!("CPU context")
+    };
+    let img = |n: usize| Some(vec![9u8; n]);
+    let rows: &[(Call, u32)] = &[
+        (Call::GenTextures(2), gl::NO_ERROR),
+        (Call::BindTexture(gl::TEXTURE_2D, 2), gl::NO_ERROR),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::RGBA as i32,
+                2,
+                2,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                img(16),
+            ))),
+            gl::NO_ERROR,
+        ),
+        // RGB rows of 6 bytes padded to 8 by UNPACK_ALIGNMENT 4: 14 bytes needed.
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::RGB as i32,
+                2,
+                2,
+                0,
+                gl::RGB,
+                gl::UNSIGNED_BYTE,
+                img(13),
+            ))),
+            gl::INVALID_OPERATION,
+        ),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::RGB as i32,
+                2,
+                2,
+                0,
+                gl::RGB,
+                gl::UNSIGNED_BYTE,
+                img(14),
+            ))),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                -1,
+                gl::RGBA as i32,
+                1,
+                1,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                img(4),
+            ))),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::RGBA as i32,
+                -1,
+                1,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                None,
+            ))),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::RGBA as i32,
+                1,
+                1,
+                0,
+                gl::DEPTH_COMPONENT,
+                gl::FLOAT,
+                img(4),
+            ))),
+            gl::INVALID_OPERATION,
+        ),
+        (
+            Call::TexSubImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                0,
+                0,
+                2,
+                2,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                vec![0; 15],
+            ))),
+            gl::INVALID_OPERATION,
+        ),
+        (
+            Call::TexSubImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                1,
+                1,
+                2,
+                2,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                vec![0; 16],
+            ))),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::TexSubImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                0,
+                0,
+                1,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                vec![0; 4],
+            ))),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::TexSubImage2D(Box::new((
+                gl::TEXTURE_2D,
+                5,
+                0,
+                0,
+                1,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                vec![0; 4],
+            ))),
+            gl::INVALID_OPERATION,
+        ),
+        (
+            Call::TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_MAG_FILTER,
+                gl::LINEAR_MIPMAP_LINEAR as i32,
+            ),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_WRAP_S,
+                gl::MIRRORED_REPEAT as i32,
+            ),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::TexParameteri(gl::TEXTURE_2D, gl::TEXTURE_BASE_LEVEL, -1),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::TexParameterfv(gl::TEXTURE_2D, gl::TEXTURE_BORDER_COLOR, vec![1.0; 3]),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::TexEnvi(gl::TEXTURE_ENV, gl::TEXTURE_ENV_MODE, gl::LINEAR as i32),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::TexEnvi(gl::TEXTURE_ENV, gl::TEXTURE_ENV_MODE, gl::ADD as i32),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::TexGeni(gl::R, gl::TEXTURE_GEN_MODE, gl::SPHERE_MAP as i32),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::TexGeni(gl::Q, gl::TEXTURE_GEN_MODE, gl::EYE_LINEAR as i32),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, gl::RGBA, 0, 0, 4, 4, 0),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::CopyTexSubImage2D(gl::TEXTURE_2D, 0, 3, 3, 0, 0, 2, 2),
+            gl::INVALID_VALUE,
+        ),
+        (Call::DeleteTextures(1, vec![2]), gl::NO_ERROR),
+        (Call::DeleteTextures(-1, vec![]), gl::INVALID_VALUE),
+    ];
+    for (i, (call, expected)) in rows.iter().enumerate() {
+        cpu.execute(call);
+        gl.execute(call);
+        assert_eq!(cpu.get_error(), *expected, "CPU after row {i}: {call:?}");
+        assert_eq!(gl.get_error(), *expected, "GL after row {i}: {call:?}");
+    }
+}
+
+#[test]
+fn texture_scenes_hold_their_tolerance() {
+    for name in ["textured-cube", "projective-texture", "shadow-map"] {
+        let Some(scene) = scenes::find(name) else {
+            panic!("{name} is registered")
+        };
+        // The scenes' own size: the tolerance is stated for it.
+        let (w, h) = scene.default_size;
+        let Some(mut gl) = backend(w, h) else {
+            return;
+        };
+        let Ok((mut ctx, calls)) = scene.record(w, h) else {
+            panic!("{name} records")
+        };
+        gl.replay(&calls);
+        let cmp = compare(&ctx.to_image(), &gl.read_image(), scene.tolerance.channel);
+        assert!(cmp.passes(scene.tolerance.max_percent), "{name}: {cmp:?}");
+    }
+}
+
+#[test]
+fn two_units_match_the_driver() {
+    let Some(mut gl) = backend(16, 16) else {
+        return;
+    };
+    let Ok(mut cpu) = Context::new(16, 16) else {
+        panic!("CPU context")
+    };
+    cpu.start_recording();
+    {
+        use fixedgl::gl::*;
+        let c = &mut cpu;
+        c.pixel_storei(UNPACK_ALIGNMENT, 1);
+        let board = fixedgl::checkerboard(8, 2, [255, 200, 0, 255], [0, 80, 255, 255]);
+        let lum: Vec<u8> = (0..16u8).map(|i| i * 16).collect();
+        for (unit, w, fmt, data, env) in [
+            (TEXTURE0, 8, RGBA, &board[..], MODULATE),
+            (TEXTURE1, 4, LUMINANCE, &lum[..], BLEND),
+        ] {
+            c.active_texture(unit);
+            c.bind_texture(TEXTURE_2D, unit - TEXTURE0 + 1);
+            c.tex_image_2d(
+                TEXTURE_2D,
+                0,
+                fmt as i32,
+                w,
+                w,
+                0,
+                fmt,
+                UNSIGNED_BYTE,
+                Some(data),
+            );
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+            c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, env as i32);
+            c.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[0.2, 0.9, 0.4, 1.0]);
+            c.enable(TEXTURE_2D);
+        }
+        c.color3f(0.9, 0.8, 0.7);
+        c.begin(QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            c.multi_tex_coord2f(TEXTURE0, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+            c.multi_tex_coord2f(TEXTURE1, (1.0 - y) / 2.0, (x + 1.0) / 2.0);
+            c.vertex2f(x, y);
+        }
+        c.end();
+    }
+    let calls = cpu.stop_recording();
+    gl.replay(&calls);
+    let cmp = compare(&cpu.to_image(), &gl.read_image(), 1);
+    let (ci, gi) = (cpu.to_image(), gl.read_image());
+    assert_eq!(
+        cmp.differing_pixels,
+        0,
+        "cpu {:?} gl {:?} cpu {:?} gl {:?}",
+        ci.get_pixel(15, 8),
+        gi.get_pixel(15, 8),
+        ci.get_pixel(15, 0),
+        gi.get_pixel(15, 0)
+    );
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+}
+
+#[test]
+fn combine_matches_the_driver() {
+    use fixedgl::gl::*;
+    /// COMBINE_RGB, COMBINE_ALPHA, sources, operands, RGB_SCALE, ALPHA_SCALE.
+    type Run = (u32, u32, [u32; 3], [u32; 3], f32, f32);
+    let runs: &[Run] = &[
+        (
+            MODULATE,
+            MODULATE,
+            [TEXTURE, PREVIOUS, CONSTANT],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            1.0,
+        ),
+        (
+            ADD_SIGNED,
+            ADD,
+            [TEXTURE, PRIMARY_COLOR, CONSTANT],
+            [SRC_COLOR, ONE_MINUS_SRC_COLOR, SRC_ALPHA],
+            2.0,
+            1.0,
+        ),
+        (
+            INTERPOLATE,
+            SUBTRACT,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            2.0,
+        ),
+        (
+            SUBTRACT,
+            REPLACE,
+            [CONSTANT, TEXTURE, PREVIOUS],
+            [SRC_COLOR, ONE_MINUS_SRC_ALPHA, SRC_ALPHA],
+            4.0,
+            1.0,
+        ),
+        (
+            DOT3_RGB,
+            INTERPOLATE,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            1.0,
+        ),
+        (
+            DOT3_RGBA,
+            MODULATE,
+            [TEXTURE, CONSTANT, PREVIOUS],
+            [SRC_COLOR, SRC_COLOR, SRC_ALPHA],
+            1.0,
+            2.0,
+        ),
+    ];
+    for (i, &(rgb, alpha, src, op, rs, as_)) in runs.iter().enumerate() {
+        let Some(mut gl) = backend(8, 8) else {
+            return;
+        };
+        let Ok(mut cpu) = Context::new(8, 8) else {
+            panic!("CPU context")
+        };
+        cpu.start_recording();
+        let c = &mut cpu;
+        let tex: Vec<u8> = (0..16u8)
+            .flat_map(|k| [k * 16, 255 - k * 12, 40 + k * 8, 60 + k * 10])
+            .collect();
+        c.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            RGBA as i32,
+            4,
+            4,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&tex),
+        );
+        c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+        c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+        c.enable(TEXTURE_2D);
+        c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+        c.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[0.3, 0.6, 0.9, 0.4]);
+        c.tex_envi(TEXTURE_ENV, COMBINE_RGB, rgb as i32);
+        c.tex_envi(TEXTURE_ENV, COMBINE_ALPHA, alpha as i32);
+        for k in 0..3 {
+            c.tex_envi(TEXTURE_ENV, SRC0_RGB + k as u32, src[k] as i32);
+            c.tex_envi(TEXTURE_ENV, SRC0_ALPHA + k as u32, src[k] as i32);
+            c.tex_envi(TEXTURE_ENV, OPERAND0_RGB + k as u32, op[k] as i32);
+        }
+        c.tex_envf(TEXTURE_ENV, RGB_SCALE, rs);
+        c.tex_envf(TEXTURE_ENV, ALPHA_SCALE, as_);
+        c.color4f(0.8, 0.5, 0.2, 0.7);
+        c.begin(QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            c.tex_coord2f((x + 1.0) / 2.0, (y + 1.0) / 2.0);
+            c.vertex2f(x, y);
+        }
+        c.end();
+        let calls = cpu.stop_recording();
+        assert_eq!(cpu.get_error(), gl::NO_ERROR, "run {i}");
+        gl.replay(&calls);
+        assert_eq!(gl.get_error(), gl::NO_ERROR, "run {i}");
+        let (ci, gi) = (cpu.to_image(), gl.read_image());
+        let cmp = compare(&ci, &gi, 1);
+        assert_eq!(
+            cmp.differing_pixels,
+            0,
+            "run {i}: cpu {:?} gl {:?}",
+            ci.get_pixel(1, 1),
+            gi.get_pixel(1, 1)
+        );
+    }
+}
+
+/// Records `draw` on a CPU context of `w` x `w`, replays it on the driver, and returns the number
+/// of pixels off by more than `tol`, with the first one for the message.
+fn cpu_vs_gl(w: u32, tol: u8, draw: impl FnOnce(&mut Context)) -> Option<(u64, String)> {
+    let mut gl = backend(w, w)?;
+    let Ok(mut cpu) = Context::new(w, w) else {
+        panic!("CPU context")
+    };
+    cpu.start_recording();
+    draw(&mut cpu);
+    let calls = cpu.stop_recording();
+    assert_eq!(cpu.get_error(), gl::NO_ERROR);
+    gl.replay(&calls);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    let (ci, gi) = (cpu.to_image(), gl.read_image());
+    let cmp = compare(&ci, &gi, tol);
+    let first = ci
+        .enumerate_pixels()
+        .find(|(x, y, p)| {
+            let q = gi.get_pixel(*x, *y);
+            p.0.iter().zip(q.0).any(|(a, b)| a.abs_diff(b) > tol)
+        })
+        .map(|(x, y, p)| format!("({x},{y}) cpu {:?} gl {:?}", p.0, gi.get_pixel(x, y).0))
+        .unwrap_or_default();
+    Some((cmp.differing_pixels, first))
+}
+
+#[test]
+fn wrap_modes_and_filters_match_the_driver() {
+    use fixedgl::gl::*;
+    for wrap in [
+        REPEAT,
+        CLAMP,
+        CLAMP_TO_EDGE,
+        CLAMP_TO_BORDER,
+        MIRRORED_REPEAT,
+    ] {
+        for filter in [NEAREST, LINEAR] {
+            let Some((n, first)) = cpu_vs_gl(64, 1, |c| {
+                let tex: Vec<u8> = (0..16u8)
+                    .flat_map(|k| [k * 16, 255 - k * 16, (k % 3) * 100, 255])
+                    .collect();
+                c.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    4,
+                    4,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&tex),
+                );
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, filter as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, filter as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_S, wrap as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_WRAP_T, wrap as i32);
+                c.tex_parameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, &[0.2, 0.4, 0.9, 1.0]);
+                c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+                c.enable(TEXTURE_2D);
+                c.begin(QUADS);
+                for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    c.tex_coord2f(x * 1.7 + 0.3, y * 1.3 + 0.4);
+                    c.vertex2f(x, y);
+                }
+                c.end();
+            }) else {
+                return;
+            };
+            assert_eq!(n, 0, "wrap {wrap:#x} filter {filter:#x}: first {first}");
+        }
+    }
+}
+
+#[test]
+fn mipmap_filters_match_the_driver() {
+    use fixedgl::gl::*;
+    for min in [
+        NEAREST_MIPMAP_NEAREST,
+        LINEAR_MIPMAP_NEAREST,
+        NEAREST_MIPMAP_LINEAR,
+        LINEAR_MIPMAP_LINEAR,
+    ] {
+        let Some((n, first)) = cpu_vs_gl(128, 2, |c| {
+            c.tex_parameteri(TEXTURE_2D, GENERATE_MIPMAP, 1);
+            let board = fixedgl::checkerboard(64, 8, [250, 250, 250, 255], [10, 60, 200, 255]);
+            c.tex_image_2d(
+                TEXTURE_2D,
+                0,
+                RGBA as i32,
+                64,
+                64,
+                0,
+                RGBA,
+                UNSIGNED_BYTE,
+                Some(&board),
+            );
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, min as i32);
+            // MAG NEAREST keeps the switch point c at 0 (§3.8.9), where llvmpipe has it always;
+            // with MAG LINEAR and a NEAREST_MIPMAP_* filter the spec's c = 0.5 differs.
+            c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+            c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+            c.enable(TEXTURE_2D);
+            // A floor receding in perspective: λ from about -1 to 5 across the picture.
+            c.matrix_mode(PROJECTION);
+            c.frustum(-0.1, 0.1, -0.1, 0.1, 0.1, 50.0);
+            c.matrix_mode(MODELVIEW);
+            c.begin(QUADS);
+            for (s, t, x, z) in [
+                (0.0, 0.0, -4.0, -0.2),
+                (8.0, 0.0, 4.0, -0.2),
+                (8.0, 24.0, 4.0, -40.0),
+                (0.0, 24.0, -4.0, -40.0),
+            ] {
+                c.tex_coord2f(s, t);
+                c.vertex3f(x, -1.0, z);
+            }
+            c.end();
+        }) else {
+            return;
+        };
+        // Measured, not exact: λ differs from llvmpipe's in the last bits, which moves mip-blended
+        // texels on checker edges by a few levels.
+        assert!(n <= 128 * 128 / 200, "min {min:#x}: {n} px, first {first}");
+        let _ = writeln!(
+            std::io::stderr(),
+            "min {min:#x}: {n} of {} px off by more than 2",
+            128 * 128
+        );
+    }
+}
