@@ -316,9 +316,12 @@ fn bench(
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
         let mut gl = gl_side::Bench::new(w, h, device)?;
-        let cpu_frame = || -> Result<f64, Error> {
+        // Like the GL side (one context, state restored around each frame), one CPU context
+        // reset to its initial state before each frame; its framebuffer memory is reused.
+        let mut ctx = Context::new(w, h)?;
+        let mut cpu_frame = || -> Result<f64, Error> {
             let start = Instant::now();
-            let mut ctx = Context::new(w, h)?;
+            ctx.reset();
             ctx.replay(&calls);
             let img = ctx.to_image();
             let ms = start.elapsed().as_secs_f64() * 1e3;

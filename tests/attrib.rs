@@ -330,3 +330,92 @@ fn push_attrib_is_compiled_push_client_attrib_is_not() {
     assert_eq!(get(&mut c, gl::POINT_SIZE)[0], 1.0);
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }
+
+/// The groups whose state arrived with the fragment operations, texturing and vertex arrays:
+/// each row sets a value inside a push of its group and checks the pop restores the initial one,
+/// and that popping an unrelated group does not.
+#[test]
+fn fragment_texture_and_array_state_is_saved_by_its_group() {
+    type Set = fn(&mut Context);
+    let rows: [(u32, bool, Set, u32, i32); 8] = [
+        (
+            gl::COLOR_BUFFER_BIT,
+            false,
+            |c| c.blend_func(gl::SRC_ALPHA, gl::ONE),
+            gl::BLEND_SRC,
+            gl::ONE as i32,
+        ),
+        (
+            gl::COLOR_BUFFER_BIT,
+            false,
+            |c| c.alpha_func(gl::GREATER, 0.5),
+            gl::ALPHA_TEST_FUNC,
+            gl::ALWAYS as i32,
+        ),
+        (
+            gl::COLOR_BUFFER_BIT,
+            false,
+            |c| c.logic_op(gl::XOR),
+            gl::LOGIC_OP_MODE,
+            gl::COPY as i32,
+        ),
+        (
+            gl::STENCIL_BUFFER_BIT,
+            false,
+            |c| c.stencil_func(gl::EQUAL, 3, 0xF),
+            gl::STENCIL_FUNC,
+            gl::ALWAYS as i32,
+        ),
+        (
+            gl::FOG_BIT,
+            false,
+            |c| c.fogi(gl::FOG_MODE, gl::LINEAR as i32),
+            gl::FOG_MODE,
+            gl::EXP as i32,
+        ),
+        (
+            gl::TEXTURE_BIT,
+            false,
+            |c| c.bind_texture(gl::TEXTURE_2D, 7),
+            gl::TEXTURE_BINDING_2D,
+            0,
+        ),
+        (
+            gl::CLIENT_VERTEX_ARRAY_BIT,
+            true,
+            |c| c.vertex_pointer(2, gl::FLOAT, 0, &[0.0f32; 8]),
+            gl::VERTEX_ARRAY_SIZE,
+            4,
+        ),
+        (
+            gl::CLIENT_PIXEL_STORE_BIT,
+            true,
+            |c| c.pixel_storei(gl::UNPACK_ROW_LENGTH, 5),
+            gl::UNPACK_ROW_LENGTH,
+            0,
+        ),
+    ];
+    for (bit, client, set, pname, initial) in rows {
+        for (mask, restored) in [(bit, true), (gl::HINT_BIT, false)] {
+            let mut c = Context::new(8, 8).expect("context");
+            let (push, pop): (fn(&mut Context, u32), fn(&mut Context)) = if client && restored {
+                (|c, m| c.push_client_attrib(m), |c| c.pop_client_attrib())
+            } else {
+                (|c, m| c.push_attrib(m), |c| c.pop_attrib())
+            };
+            push(&mut c, mask);
+            set(&mut c);
+            let mut v = [0];
+            c.get_integerv(pname, &mut v);
+            assert_ne!(v[0], initial, "{pname:#x}: the setter changed nothing");
+            pop(&mut c);
+            c.get_integerv(pname, &mut v);
+            assert_eq!(
+                v[0] == initial,
+                restored,
+                "{pname:#x} after popping {mask:#x}"
+            );
+            assert_eq!(c.get_error(), gl::NO_ERROR, "{pname:#x}");
+        }
+    }
+}

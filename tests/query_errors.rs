@@ -237,3 +237,36 @@ fn client_active_texture_is_not_allowed_between_begin_and_end() {
     c.get_integerv(gl::CLIENT_ACTIVE_TEXTURE, &mut unit);
     assert_eq!(unit, [(gl::TEXTURE0 + 3) as i32]);
 }
+
+/// `Context::reset` gives back exactly the initial state and a clear error flag, drops
+/// vertices batched inside an open Begin/End, and keeps what the framebuffer holds.
+#[test]
+fn reset_restores_the_initial_state_and_keeps_the_framebuffer() {
+    let fresh = Context::new(16, 16).expect("context");
+    let mut c = Context::new(16, 16).expect("context");
+    c.clear_color(0.0, 1.0, 0.0, 1.0);
+    c.clear(gl::COLOR_BUFFER_BIT);
+    c.enable(gl::LIGHTING);
+    c.translatef(1.0, 2.0, 3.0);
+    c.push_matrix();
+    c.enable(0xFFFF); // INVALID_ENUM, left unread
+    c.begin(gl::TRIANGLES); // open, with a vertex that must never be drawn
+    c.vertex2f(-1.0, -1.0);
+    c.reset();
+    assert_eq!(c.state(), fresh.state());
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    c.begin(gl::TRIANGLES); // no longer inside Begin/End: this Begin is legal
+    c.vertex2f(1.0, -1.0);
+    c.vertex2f(1.0, 1.0);
+    c.end();
+    assert_eq!(
+        c.get_error(),
+        gl::NO_ERROR,
+        "a stale vertex would have completed a triangle"
+    );
+    let img = c.to_image();
+    assert!(
+        img.pixels().all(|p| p.0 == [0, 255, 0, 255]),
+        "the cleared framebuffer is kept"
+    );
+}

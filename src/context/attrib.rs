@@ -78,6 +78,9 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         // Tables 6.15 to 6.20: the selected unit and every unit's enables.
         copy!(d, s; active_texture, enables.texture_1d, enables.texture_2d, enables.texture_3d,
             enables.texture_cube_map, enables.texture_gen);
+        // Each unit's binding, environment and TexGen (the bound objects' own parameters, which
+        // §6.1.14 also lists, are not saved yet: docs/conformance.md).
+        copy!(d, s; textures.units);
     }
     if has(gl::SCISSOR_BIT) {
         // Table 6.21.
@@ -87,16 +90,17 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         // Tables 6.21, 6.22.
         copy!(d, s; color_mask, clear_color, enables.alpha_test, enables.blend, enables.dither,
             enables.color_logic_op, enables.index_logic_op);
+        copy!(d, s; alpha, blend, logic_op);
     }
     if has(gl::DEPTH_BUFFER_BIT) {
         copy!(d, s; depth_func, depth_mask, clear_depth, enables.depth_test);
     }
     if has(gl::STENCIL_BUFFER_BIT) {
-        copy!(d, s; stencil_writemask, clear_stencil, enables.stencil_test);
+        copy!(d, s; stencil_writemask, clear_stencil, enables.stencil_test, stencil);
     }
     if has(gl::FOG_BIT) {
         // Table 6.8: fog, and COLOR_SUM.
-        copy!(d, s; enables.fog, enables.color_sum);
+        copy!(d, s; enables.fog, enables.color_sum, fog);
     }
     if has(gl::HINT_BIT) {
         copy!(d, s; hints);
@@ -119,10 +123,15 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
 pub(crate) fn copy_client_groups(mask: u32, d: &mut State, s: &State) {
     let has = |bit: u32| mask & bit != 0;
     if has(gl::CLIENT_PIXEL_STORE_BIT) {
-        copy!(d, s; pack_alignment, unpack_alignment);
+        copy!(d, s; pack_alignment, unpack_alignment, textures.unpack_row_length);
     }
     if has(gl::CLIENT_VERTEX_ARRAY_BIT) {
         copy!(d, s; client_active_texture);
+        // Tables 6.6 to 6.9: every array's enable, size, type, stride, pointer and buffer
+        // binding, and the two buffer bindings (not the buffers' contents).
+        copy!(d, s; arrays.vertex, arrays.normal, arrays.color, arrays.secondary_color,
+            arrays.fog_coord, arrays.edge_flag, arrays.tex_coords, arrays.array_buffer,
+            arrays.element_array_buffer);
     }
 }
 

@@ -93,6 +93,22 @@ impl Context {
         })
     }
 
+    /// Returns the context to GL's initial state — as `Context::new` would make it — but keeps
+    /// the framebuffer (its contents and memory) and the renderer's buffers, so a program that
+    /// draws many independent frames (a benchmark, an animation re-running its `init`) does not
+    /// pay for allocating them again. Vertices batched but not yet drawn are discarded, as is any
+    /// recording, display list and attribute stack. Not a GL entry point: never recorded.
+    pub fn reset(&mut self) {
+        let (w, h) = self.size();
+        self.renderer.discard_batch();
+        self.state = State::new(w, h);
+        self.error = gl::NO_ERROR;
+        self.begin_mode = None;
+        self.recording = None;
+        self.lists = Default::default();
+        self.attrib = Default::default();
+    }
+
     /// The state, read-only: what the `get_*` queries report, as plain data.
     pub fn state(&self) -> &State {
         &self.state

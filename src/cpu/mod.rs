@@ -137,6 +137,11 @@ impl Renderer {
         self.fb.color_rows()
     }
 
+    /// Drops the vertices batched so far without drawing them (`Context::reset`).
+    pub fn discard_batch(&mut self) {
+        self.batch.clear();
+    }
+
     /// Draws everything batched so far with `state`, leaving the batch empty.
     pub fn flush(&mut self, state: &State) {
         if self.batch.is_empty() {
