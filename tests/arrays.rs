@@ -647,19 +647,9 @@ mod on_gl {
     use super::*;
     use fixedgl::compare::compare;
     use fixedgl::glbackend::{DeviceChoice, GlBackend};
-    use std::io::Write as _;
 
     fn backend() -> Option<GlBackend> {
-        match GlBackend::new(SIZE, SIZE, &DeviceChoice::Auto) {
-            Ok(b) => Some(b),
-            Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
-                panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
-            }
-            Err(e) => {
-                let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
-                None
-            }
-        }
+        fixedgl::glbackend::test_backend(SIZE, SIZE)
     }
 
     #[test]

@@ -398,17 +398,21 @@ fn fragment_texture_and_array_state_is_saved_by_its_group() {
     for (bit, client, set, pname, initial) in rows {
         for (mask, restored) in [(bit, true), (gl::HINT_BIT, false)] {
             let mut c = Context::new(8, 8).expect("context");
-            let (push, pop): (fn(&mut Context, u32), fn(&mut Context)) = if client && restored {
-                (|c, m| c.push_client_attrib(m), |c| c.pop_client_attrib())
+            let client_group = client && restored;
+            if client_group {
+                c.push_client_attrib(mask);
             } else {
-                (|c, m| c.push_attrib(m), |c| c.pop_attrib())
-            };
-            push(&mut c, mask);
+                c.push_attrib(mask);
+            }
             set(&mut c);
             let mut v = [0];
             c.get_integerv(pname, &mut v);
             assert_ne!(v[0], initial, "{pname:#x}: the setter changed nothing");
-            pop(&mut c);
+            if client_group {
+                c.pop_client_attrib();
+            } else {
+                c.pop_attrib();
+            }
             c.get_integerv(pname, &mut v);
             assert_eq!(
                 v[0] == initial,

@@ -5,21 +5,11 @@
 #![cfg(feature = "gl")]
 
 use fixedgl::compare::compare;
-use fixedgl::glbackend::{DeviceChoice, GlBackend};
+use fixedgl::glbackend::GlBackend;
 use fixedgl::{gl, scenes, Call, Context};
-use std::io::Write as _;
 
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    match GlBackend::new(width, height, &DeviceChoice::Auto) {
-        Ok(b) => Some(b),
-        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
-            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
-        }
-        Err(e) => {
-            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
-            None
-        }
-    }
+    fixedgl::glbackend::test_backend(width, height)
 }
 
 #[test]
