@@ -192,34 +192,32 @@ impl Batch {
         let pos = position.to_array().map(f32::to_bits);
         // The front end stores the normal's components one by one (`Normal3f`); loading two of
         // them as one wider word would stall store forwarding for ~15 cycles, so each is read
-        // on its own (`black_box` keeps the compiler from merging the loads).
+        // on its own (`black_box` keeps the compiler from merging the loads), and the hash
+        // mixes 32-bit words.
         let n = &c.normal;
         let normal = [n.x, n.y, n.z].map(|v| std::hint::black_box(v).to_bits());
-        // Each word rotated on its own: the loads stay 32 bits wide, as the front end stored
-        // them (a wider load spanning two recent narrower stores stalls store forwarding).
         let [p0, p1, p2, p3] = pos;
         let [n0, n1, n2] = normal;
         let hp = p0 ^ p1.rotate_left(11) ^ p2.rotate_left(22) ^ p3.rotate_left(5);
         let hn = n0 ^ n1.rotate_left(13) ^ n2.rotate_left(26);
         let h = u64::from(hp) ^ u64::from(hn).rotate_left(29);
         let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 52) as usize & (CACHE - 1);
-        let Some(entry) = self.cache.get_mut(slot) else {
-            return;
-        };
-        // A hit: same position and normal, and a vertex of this span (same other inputs).
-        if entry.serial >= self.span
-            && entry.serial < serial
-            && entry.pos == pos
-            && entry.normal == normal
-        {
-            self.idx.push((entry.serial - self.serial0) as u32);
-            return;
+        if let Some(entry) = self.cache.get_mut(slot) {
+            // A hit: same position and normal, and a vertex of this span (same other inputs).
+            if entry.serial >= self.span
+                && entry.serial < serial
+                && entry.pos == pos
+                && entry.normal == normal
+            {
+                self.idx.push((entry.serial - self.serial0) as u32);
+                return;
+            }
+            *entry = Slot {
+                pos,
+                normal,
+                serial,
+            };
         }
-        *entry = Slot {
-            pos,
-            normal,
-            serial,
-        };
         self.idx.push(i as u32);
         self.pos.push(position);
         self.normal.push(c.normal);
