@@ -6,8 +6,13 @@
 //! one already batched (found through a small direct-mapped cache, compared bit for bit) is
 //! stored once and referenced by index, so the vertex stage lights it once: immediate-mode
 //! meshes such as one strip per grid cell send each vertex up to four times, and the vertex
-//! stage is a pure function of these inputs, so the result is exactly the same. The arrays are
-//! cleared, not freed, at each flush, so steady-state drawing allocates nothing per vertex;
+//! stage is a pure function of these inputs, so the result is exactly the same. A cache slot
+//! holds the position and normal bits themselves; the other inputs (colours, texture
+//! coordinates, fog coordinate, edge flag, material), which rarely change inside a mesh, are
+//! compared only with the previous vertex's: a run of vertices with the same such inputs forms a
+//! span, and a hit counts only inside the current span, so a hit touches one slot and no batch
+//! array. The arrays are cleared, not freed, at each flush, so steady-state drawing allocates
+//! nothing per vertex;
 //! `Material` changes inside Begin/End (§2.14.3) are rare, so they are stored as whole snapshots
 //! that vertices index.
 
@@ -27,15 +32,71 @@ pub struct Prim {
 }
 
 /// Entries in the vertex cache (a power of two).
-const CACHE: usize = 1 << 13;
+const CACHE: usize = 1 << 12;
+
+/// A vertex cache slot: the position and normal bits of a batched vertex, and its serial number
+/// (its index plus `Batch::serial0`), so that a slot left from an earlier batch is never a hit.
+#[derive(Clone, Copy, Debug)]
+struct Slot {
+    pos: [u32; 4],
+    normal: [u32; 3],
+    serial: u64,
+}
+
+const EMPTY: Slot = Slot {
+    pos: [0; 4],
+    normal: [0; 3],
+    serial: u64::MAX,
+};
+
+/// Words in [`Others`].
+const OTHERS: usize = 20;
+
+/// The batched inputs of a vertex other than position and normal, as bits (colour, secondary
+/// colour, the two units' texture coordinates, fog coordinate, edge flag, material index): equal
+/// bits, identical inputs (NaNs with equal bits are equal, -0 and 0 differ). Every batched
+/// input other than position and normal must be in here, or vertices would be wrongly shared.
+#[derive(Clone, Copy, Debug)]
+struct Others([u32; OTHERS]);
+
+impl Others {
+    #[inline(always)]
+    fn of(c: &Current, mat: u32) -> Self {
+        let mut o = [0u32; OTHERS];
+        let vecs = [c.color, c.secondary_color, c.tex_coords[0], c.tex_coords[1]];
+        for (dst, v) in o.chunks_exact_mut(4).zip(vecs) {
+            dst.copy_from_slice(&v.to_array().map(f32::to_bits));
+        }
+        o[16] = c.fog_coord.to_bits();
+        o[17] = u32::from(c.edge_flag);
+        o[18] = mat;
+        Others(o)
+    }
+
+    /// Bitwise equality without branches (a few vector instructions).
+    #[inline(always)]
+    fn same(&self, other: &Self) -> bool {
+        self.0
+            .iter()
+            .zip(&other.0)
+            .fold(0, |acc, (a, b)| acc | (a ^ b))
+            == 0
+    }
+}
 
 /// The batched vertices (object coordinates and current attributes) and primitives.
 #[derive(Debug)]
 pub struct Batch {
     /// Per vertex given, the index of its (unique) vertex in the attribute arrays.
     pub idx: Vec<u32>,
-    /// Direct-mapped cache: input hash → a vertex index (validated on use).
-    cache: Box<[u32; CACHE]>,
+    /// Direct-mapped cache: position and normal hash → a batched vertex.
+    cache: Box<[Slot; CACHE]>,
+    /// Serial number of the batch's vertex 0 (the vertices of all earlier batches).
+    serial0: u64,
+    /// Serial number of the first vertex of the current span (see the module docs).
+    span: u64,
+    /// The other inputs shared by every batched vertex from `span` on.
+    others: Others,
     /// Object-coordinate positions.
     pub pos: Vec<Vec4>,
     /// Current normal at each vertex.
@@ -73,7 +134,10 @@ impl Default for Batch {
     fn default() -> Self {
         Batch {
             idx: Vec::new(),
-            cache: Box::new([u32::MAX; CACHE]),
+            cache: Box::new([EMPTY; CACHE]),
+            serial0: 0,
+            span: 0,
+            others: Others([0; OTHERS]),
             pos: Vec::new(),
             normal: Vec::new(),
             color: Vec::new(),
@@ -89,12 +153,6 @@ impl Default for Batch {
             cur_mat: 0,
         }
     }
-}
-
-/// Bitwise equality (NaNs with equal bits are equal, -0 and 0 differ): identical inputs.
-#[inline(always)]
-fn same4(a: Vec4, b: Vec4) -> bool {
-    a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits)
 }
 
 impl Batch {
@@ -124,32 +182,42 @@ impl Batch {
             return;
         };
         p.count += 1;
-        // Hash position and normal (the attributes that vary across a mesh); a hit is then
-        // compared in full.
-        let bits = |v: f32| u64::from(v.to_bits());
-        let h = (bits(position.x) | bits(position.y) << 32)
-            ^ (bits(position.z) | bits(c.normal.x) << 32).rotate_left(17)
-            ^ (bits(c.normal.y) | bits(c.normal.z) << 32).rotate_left(41);
-        let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 51) as usize & (CACHE - 1);
-        let hit = self.cache[slot] as usize;
-        if hit < self.pos.len()
-            && same4(self.pos[hit], position)
-            && self.normal[hit].to_array().map(f32::to_bits)
-                == c.normal.to_array().map(f32::to_bits)
-            && same4(self.color[hit], c.color)
-            && same4(self.color2[hit], c.secondary_color)
-            && same4(self.tex[hit], c.tex_coords[0])
-            && same4(self.tex1[hit], c.tex_coords[1])
-            && self.edge[hit] == c.edge_flag
-            && self.mat[hit] == self.cur_mat
-            && self.fog[hit].to_bits() == c.fog_coord.to_bits()
-        // fragment ops
-        {
-            self.idx.push(hit as u32);
-            return;
-        }
         let i = self.pos.len();
-        self.cache[slot] = i as u32;
+        let serial = self.serial0 + i as u64;
+        let others = Others::of(c, self.cur_mat);
+        if !others.same(&self.others) {
+            self.others = others;
+            self.span = serial;
+        }
+        let pos = position.to_array().map(f32::to_bits);
+        // The front end stores the normal's components one by one (`Normal3f`); loading two of
+        // them as one wider word would stall store forwarding for ~15 cycles, so each is read
+        // on its own (`black_box` keeps the compiler from merging the loads), and the hash
+        // mixes 32-bit words.
+        let n = &c.normal;
+        let normal = [n.x, n.y, n.z].map(|v| std::hint::black_box(v).to_bits());
+        let [p0, p1, p2, p3] = pos;
+        let [n0, n1, n2] = normal;
+        let hp = p0 ^ p1.rotate_left(11) ^ p2.rotate_left(22) ^ p3.rotate_left(5);
+        let hn = n0 ^ n1.rotate_left(13) ^ n2.rotate_left(26);
+        let h = u64::from(hp) ^ u64::from(hn).rotate_left(29);
+        let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 52) as usize & (CACHE - 1);
+        if let Some(entry) = self.cache.get_mut(slot) {
+            // A hit: same position and normal, and a vertex of this span (same other inputs).
+            if entry.serial >= self.span
+                && entry.serial < serial
+                && entry.pos == pos
+                && entry.normal == normal
+            {
+                self.idx.push((entry.serial - self.serial0) as u32);
+                return;
+            }
+            *entry = Slot {
+                pos,
+                normal,
+                serial,
+            };
+        }
         self.idx.push(i as u32);
         self.pos.push(position);
         self.normal.push(c.normal);
@@ -196,6 +264,8 @@ impl Batch {
 
     /// Empties the batch, keeping capacity (the front end flushes only outside Begin/End).
     pub fn clear(&mut self) {
+        self.serial0 += self.pos.len() as u64;
+        self.span = self.serial0;
         self.idx.clear();
         self.pos.clear();
         self.normal.clear();
@@ -212,5 +282,63 @@ impl Batch {
         }
         self.snapshots.clear();
         self.cur_mat = 0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl;
+
+    /// Indices given to `vertices` (position, colour red) in one triangle list.
+    fn indices(b: &mut Batch, vertices: &[(f32, f32)]) -> Vec<u32> {
+        b.begin(gl::TRIANGLES);
+        let mut c = Current::default();
+        for &(x, red) in vertices {
+            c.color.x = red;
+            b.vertex(Vec4::new(x, 0.0, 0.0, 1.0), &c);
+        }
+        b.end();
+        b.idx.clone()
+    }
+
+    #[test]
+    fn a_vertex_is_shared_only_when_every_input_is_the_same() {
+        let mut b = Batch::default();
+        // Positions 0, 1, 0 (same colour: shared), then 0 with another colour (new), then 1
+        // with that colour (new: its twin has the old colour), then -0 (differs from 0 in bits).
+        let idx = indices(
+            &mut b,
+            &[
+                (0.0, 1.0),
+                (1.0, 1.0),
+                (0.0, 1.0),
+                (0.0, 0.5),
+                (1.0, 0.5),
+                (-0.0, 0.5),
+            ],
+        );
+        assert_eq!(idx, [0, 1, 0, 2, 3, 4]);
+        assert_eq!(b.len(), 5);
+        // Back to the first colour: a new span, so vertex 0 is not reused (a copy is exact).
+        b.begin(gl::TRIANGLES);
+        let c = Current::default();
+        b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
+        b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
+        assert_eq!(b.idx[6..], [5, 5]);
+    }
+
+    #[test]
+    fn nothing_is_shared_with_an_earlier_batch() {
+        let mut b = Batch::default();
+        assert_eq!(indices(&mut b, &[(3.0, 1.0), (4.0, 1.0)]), [0, 1]);
+        b.clear();
+        // Vertex 0 of the new batch is 4.0; 3.0's slot (index 0 before) must not be a hit.
+        assert_eq!(
+            indices(&mut b, &[(4.0, 1.0), (3.0, 1.0), (4.0, 1.0)]),
+            [0, 1, 0]
+        );
+        assert_eq!(b.pos.len(), 2);
+        assert_eq!(b.pos[1], Vec4::new(3.0, 0.0, 0.0, 1.0));
     }
 }

@@ -726,6 +726,7 @@ impl Geom {
 
 /// The grid placement of triangle `p` (snapped window coordinates), `None` when it has no area
 /// or no pixel of `rect`.
+#[inline(always)]
 pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     let [a, b, c] = p;
     let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
