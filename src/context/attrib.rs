@@ -8,7 +8,8 @@
 //!
 //! Design decision: a stack entry is a whole `State` (built fresh, not cloned, so no matrix stack
 //! or object store rides along) into which the pushed groups are copied, and PopAttrib copies the
-//! same groups back with the same function. Adding a field to a group is therefore one line in
+//! same groups back with the same function. The one exception to "no object store": TEXTURE_BIT
+//! puts a parameter-only stand-in (no images) of each unit's bound 2D object in the entry. Adding a field to a group is therefore one line in
 //! one table, and save and restore cannot disagree.
 
 use super::Context;
