@@ -1,4 +1,4 @@
-//! Renders the `textured-cube` scene to `textured-cube.png` (800x800): lit cube and floor, mipmapped checkerboard (gluBuild2DMipmaps, LINEAR_MIPMAP_LINEAR, REPEAT), TexEnv MODULATE.
+//! Renders the `textured-cube` scene to `textured-cube.png` (960x640): lit cube and floor, mipmapped checkerboard (gluBuild2DMipmaps, REPEAT), TexEnv MODULATE, one panel per MIN filter (NEAREST .. LINEAR_MIPMAP_LINEAR).
 //!
 //! ```text
 //! cargo run --release --example textured-cube [OUT_DIR]
@@ -16,7 +16,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(&out)?;
     let scene =
         fixedgl::scenes::find("textured-cube").ok_or("the textured-cube scene is registered")?;
-    let mut gl = Context::new(800, 800)?;
+    let mut gl = Context::new(960, 640)?;
     (scene.draw)(&mut gl);
     let path = out.join("textured-cube.png");
     gl.to_image().save(&path)?;

@@ -108,6 +108,70 @@ pub fn is_mipmap_filter(filter: u32) -> bool {
     )
 }
 
+/// A texture object's parameters without its images: what PushAttrib(TEXTURE_BIT) saves for
+/// each unit's bound object (GL 2.1 §6.1.14, table 6.16 rows whose attribute is "texture").
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub struct TexParams {
+    pub min_filter: u32,
+    pub mag_filter: u32,
+    pub wrap_s: u32,
+    pub wrap_t: u32,
+    pub wrap_r: u32,
+    pub border_color: Vec4,
+    pub priority: f32,
+    pub min_lod: f32,
+    pub max_lod: f32,
+    pub base_level: i32,
+    pub max_level: i32,
+    pub generate_mipmap: bool,
+    pub compare_mode: u32,
+    pub compare_func: u32,
+    pub depth_texture_mode: u32,
+}
+
+impl TexObject {
+    /// The parameters of table 6.16 (everything but the images).
+    pub fn params(&self) -> TexParams {
+        TexParams {
+            min_filter: self.min_filter,
+            mag_filter: self.mag_filter,
+            wrap_s: self.wrap_s,
+            wrap_t: self.wrap_t,
+            wrap_r: self.wrap_r,
+            border_color: self.border_color,
+            priority: self.priority,
+            min_lod: self.min_lod,
+            max_lod: self.max_lod,
+            base_level: self.base_level,
+            max_level: self.max_level,
+            generate_mipmap: self.generate_mipmap,
+            compare_mode: self.compare_mode,
+            compare_func: self.compare_func,
+            depth_texture_mode: self.depth_texture_mode,
+        }
+    }
+
+    /// Sets the parameters of table 6.16 from `p`, keeping the images.
+    pub fn set_params(&mut self, p: &TexParams) {
+        self.min_filter = p.min_filter;
+        self.mag_filter = p.mag_filter;
+        self.wrap_s = p.wrap_s;
+        self.wrap_t = p.wrap_t;
+        self.wrap_r = p.wrap_r;
+        self.border_color = p.border_color;
+        self.priority = p.priority;
+        self.min_lod = p.min_lod;
+        self.max_lod = p.max_lod;
+        self.base_level = p.base_level;
+        self.max_level = p.max_level;
+        self.generate_mipmap = p.generate_mipmap;
+        self.compare_mode = p.compare_mode;
+        self.compare_func = p.compare_func;
+        self.depth_texture_mode = p.depth_texture_mode;
+    }
+}
+
 impl TexObject {
     /// The level `l`, if specified.
     pub fn level(&self, l: i32) -> Option<&Level> {

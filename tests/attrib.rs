@@ -1,7 +1,7 @@
 //! Attribute stacks (GL 2.1 §6.1.14): each group PushAttrib saves is restored by PopAttrib, groups
 //! not pushed are left alone, the matrix stacks are in no group, and the stacks are 16 deep.
 
-use fixedgl::{gl, Context};
+use fixedgl::{gl, Call, Context};
 
 fn ctx() -> Context {
     Context::new(16, 16).expect("context")
@@ -421,5 +421,175 @@ fn fragment_texture_and_array_state_is_saved_by_its_group() {
             );
             assert_eq!(c.get_error(), gl::NO_ERROR, "{pname:#x}");
         }
+    }
+}
+
+/// (pname, table 6.16's initial value, a different value set inside the push) for every
+/// texture-object parameter whose attribute column says "texture" (GL 2.1 §6.1.14).
+const TEX_PARAM_ROWS: &[(u32, &[f32], &[f32])] = &[
+    (
+        gl::TEXTURE_MIN_FILTER,
+        &[gl::NEAREST_MIPMAP_LINEAR as f32],
+        &[gl::LINEAR as f32],
+    ),
+    (
+        gl::TEXTURE_MAG_FILTER,
+        &[gl::LINEAR as f32],
+        &[gl::NEAREST as f32],
+    ),
+    (
+        gl::TEXTURE_WRAP_S,
+        &[gl::REPEAT as f32],
+        &[gl::CLAMP_TO_EDGE as f32],
+    ),
+    (
+        gl::TEXTURE_WRAP_T,
+        &[gl::REPEAT as f32],
+        &[gl::MIRRORED_REPEAT as f32],
+    ),
+    (
+        gl::TEXTURE_WRAP_R,
+        &[gl::REPEAT as f32],
+        &[gl::CLAMP as f32],
+    ),
+    (
+        gl::TEXTURE_BORDER_COLOR,
+        &[0.0, 0.0, 0.0, 0.0],
+        &[0.25, 0.5, 0.75, 1.0],
+    ),
+    (gl::TEXTURE_PRIORITY, &[1.0], &[0.5]),
+    (gl::TEXTURE_MIN_LOD, &[-1000.0], &[-2.0]),
+    (gl::TEXTURE_MAX_LOD, &[1000.0], &[3.0]),
+    (gl::TEXTURE_BASE_LEVEL, &[0.0], &[1.0]),
+    (gl::TEXTURE_MAX_LEVEL, &[1000.0], &[4.0]),
+    (gl::GENERATE_MIPMAP, &[0.0], &[1.0]),
+    (
+        gl::TEXTURE_COMPARE_MODE,
+        &[gl::NONE as f32],
+        &[gl::COMPARE_R_TO_TEXTURE as f32],
+    ),
+    (
+        gl::TEXTURE_COMPARE_FUNC,
+        &[gl::LEQUAL as f32],
+        &[gl::GREATER as f32],
+    ),
+    (
+        gl::DEPTH_TEXTURE_MODE,
+        &[gl::LUMINANCE as f32],
+        &[gl::ALPHA as f32],
+    ),
+];
+
+/// The first `n` values of the bound 2D texture's `pname`.
+fn tex_param(c: &mut Context, pname: u32, n: usize) -> Vec<f32> {
+    let mut v = [f32::NAN; 4];
+    c.get_tex_parameterfv(gl::TEXTURE_2D, pname, &mut v);
+    assert_eq!(c.get_error(), gl::NO_ERROR, "query {pname:#x}");
+    v[..n].to_vec()
+}
+
+/// The calls of one row: texture 3 on unit 1, texture 0 (the default) on unit 0; the parameter
+/// changed on both inside a push of `mask`, then popped; back on unit 1 at the end.
+fn tex_param_row(c: &mut Context, mask: u32, pname: u32, set: &[f32]) {
+    c.active_texture(gl::TEXTURE1);
+    c.bind_texture(gl::TEXTURE_2D, 3);
+    c.push_attrib(mask);
+    c.tex_parameterfv(gl::TEXTURE_2D, pname, set);
+    c.active_texture(gl::TEXTURE0);
+    c.tex_parameterfv(gl::TEXTURE_2D, pname, set);
+    c.pop_attrib();
+    c.active_texture(gl::TEXTURE1);
+}
+
+#[test]
+fn texture_bit_restores_the_bound_objects_parameters() {
+    for &(pname, initial, set) in TEX_PARAM_ROWS {
+        let mut c = ctx();
+        tex_param_row(&mut c, gl::TEXTURE_BIT, pname, set);
+        assert_eq!(c.get_error(), gl::NO_ERROR, "{pname:#x}");
+        assert_eq!(
+            tex_param(&mut c, pname, set.len()),
+            initial,
+            "{pname:#x} unit 1"
+        );
+        c.active_texture(gl::TEXTURE0);
+        assert_eq!(
+            tex_param(&mut c, pname, set.len()),
+            initial,
+            "{pname:#x} unit 0"
+        );
+
+        // Another group leaves the parameter as set.
+        let mut c = ctx();
+        tex_param_row(&mut c, gl::ENABLE_BIT, pname, set);
+        assert_eq!(
+            tex_param(&mut c, pname, set.len()),
+            set,
+            "{pname:#x} not pushed"
+        );
+    }
+}
+
+#[test]
+fn texture_bit_keeps_the_images_and_other_objects() {
+    let mut c = ctx();
+    c.bind_texture(gl::TEXTURE_2D, 5);
+    c.push_attrib(gl::TEXTURE_BIT);
+    c.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        1,
+        1,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&[10, 20, 30, 40]),
+    );
+    c.bind_texture(gl::TEXTURE_2D, 6);
+    c.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    c.pop_attrib();
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    // Texture images are in no attribute group: the image specified inside the push stays.
+    let mut px = [0u8; 4];
+    c.get_tex_image(gl::TEXTURE_2D, 0, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+    assert_eq!(px, [10, 20, 30, 40]);
+    // Texture 6 was not bound at the push: its parameter stays.
+    c.bind_texture(gl::TEXTURE_2D, 6);
+    assert_eq!(
+        tex_param(&mut c, gl::TEXTURE_MAG_FILTER, 1),
+        [gl::NEAREST as f32]
+    );
+}
+
+#[cfg(feature = "gl")]
+#[test]
+fn texture_bit_parameters_match_the_driver() {
+    let Some(mut drv) = fixedgl::glbackend::test_backend(8, 8) else {
+        return;
+    };
+    for &(pname, initial, set) in TEX_PARAM_ROWS {
+        let mut c = ctx();
+        c.start_recording();
+        tex_param_row(&mut c, gl::TEXTURE_BIT, pname, set);
+        drv.replay(&c.stop_recording());
+        assert_eq!(drv.get_error(), gl::NO_ERROR, "{pname:#x}");
+        let mut v = [f32::NAN; 4];
+        // SAFETY: `v` has 4 slots, the most any of these pnames writes.
+        unsafe {
+            drv.raw()
+                .GetTexParameterfv(gl::TEXTURE_2D, pname, v.as_mut_ptr())
+        };
+        assert_eq!(&v[..initial.len()], initial, "driver {pname:#x}");
+        assert_eq!(
+            tex_param(&mut c, pname, initial.len()),
+            initial,
+            "{pname:#x}"
+        );
+        // Leave the driver as a fresh context would be for the next row.
+        drv.replay(&[
+            Call::ActiveTexture(gl::TEXTURE0),
+            Call::DeleteTextures(1, vec![3]),
+        ]);
     }
 }

@@ -544,3 +544,92 @@ fn implementation_limits_agree_with_the_cpu_state() {
     }
     assert_eq!(gl.get_error(), gl::NO_ERROR);
 }
+
+/// A lit floor receding from z = -1 to z = -40 under perspective, with PHONG_WIN and the given
+/// fog (`None`: FOG off): FOG_MODE, then whether FOG_COORD_SRC is FOG_COORD (then each vertex
+/// carries its own fog coordinate, unlike its depth).
+fn fogged_phong_floor(fog: Option<(u32, bool)>) -> Vec<Call> {
+    let Ok(mut c) = Context::new(96, 96) else {
+        panic!("CPU context")
+    };
+    c.start_recording();
+    c.clear_color(0.1, 0.2, 0.3, 1.0);
+    c.clear(gl::COLOR_BUFFER_BIT);
+    c.matrix_mode(gl::PROJECTION);
+    c.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 50.0);
+    c.matrix_mode(gl::MODELVIEW);
+    c.enable(gl::LIGHTING);
+    c.enable(gl::LIGHT0);
+    c.lightfv(gl::LIGHT0, gl::POSITION, &[0.0, 2.0, -6.0, 1.0]);
+    c.lightfv(gl::LIGHT0, gl::SPECULAR, &[1.0, 1.0, 1.0, 1.0]);
+    c.materialfv(gl::FRONT, gl::SPECULAR, &[0.6, 0.6, 0.6, 1.0]);
+    c.materialf(gl::FRONT, gl::SHININESS, 20.0);
+    c.shade_model(gl::PHONG_WIN);
+    if let Some((mode, coord)) = fog {
+        c.enable(gl::FOG);
+        c.fogi(gl::FOG_MODE, mode as i32);
+        c.fogfv(gl::FOG_COLOR, &[0.8, 0.7, 0.6, 1.0]);
+        c.fogf(gl::FOG_START, 1.0);
+        c.fogf(gl::FOG_END, 12.0);
+        c.fogf(gl::FOG_DENSITY, 0.2);
+        if coord {
+            c.fogi(gl::FOG_COORD_SRC, gl::FOG_COORD as i32);
+        }
+    }
+    c.begin(gl::QUADS);
+    c.normal3f(0.0, 1.0, 0.0);
+    for (x, z, f) in [
+        (-8.0, -1.0, 25.0),
+        (8.0, -1.0, 2.0),
+        (8.0, -40.0, 10.0),
+        (-8.0, -40.0, 0.0),
+    ] {
+        c.fog_coordf(f);
+        c.vertex3f(x, -1.0, z);
+    }
+    c.end();
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    c.stop_recording()
+}
+
+#[test]
+fn phong_win_fog_matches_the_cpu_pipeline() {
+    // GL 2.1 §3.11: with the emulation program bound the driver does no fog of its own, so the
+    // program must (§3.10); the CPU pipeline is the reference, within 2/255 everywhere.
+    let Some(mut plain) = backend(96, 96) else {
+        return;
+    };
+    plain.replay(&fogged_phong_floor(None));
+    let unfogged = plain.read_image();
+    for fog in [
+        (gl::LINEAR, false),
+        (gl::EXP, false),
+        (gl::EXP2, false),
+        (gl::LINEAR, true),
+        (gl::EXP2, true),
+    ] {
+        let calls = fogged_phong_floor(Some(fog));
+        let Ok(mut cpu) = Context::new(96, 96) else {
+            panic!("CPU context")
+        };
+        for call in &calls {
+            cpu.execute(call);
+        }
+        let Some(mut drv) = backend(96, 96) else {
+            return;
+        };
+        drv.replay(&calls);
+        assert_eq!(drv.get_error(), gl::NO_ERROR);
+        let got = drv.read_image();
+        let cmp = compare(&cpu.to_image(), &got, 2);
+        assert_eq!(cmp.differing_pixels, 0, "{fog:?}: max {:?}", cmp.max_diff);
+        // And the fog shows: the floor (about a third of the image) is not what it is unfogged.
+        let fogged = compare(&got, &unfogged, 2).differing_pixels;
+        let _ = writeln!(
+            std::io::stderr(),
+            "{fog:?}: {fogged} pixels fogged, max diff {:?}",
+            cmp.max_diff
+        );
+        assert!(fogged > 96 * 96 / 5, "{fog:?}: only {fogged} pixels fogged");
+    }
+}

@@ -8,7 +8,8 @@
 //!
 //! Design decision: a stack entry is a whole `State` (built fresh, not cloned, so no matrix stack
 //! or object store rides along) into which the pushed groups are copied, and PopAttrib copies the
-//! same groups back with the same function. Adding a field to a group is therefore one line in
+//! same groups back with the same function. The one exception to "no object store": TEXTURE_BIT
+//! puts a parameter-only stand-in (no images) of each unit's bound 2D object in the entry. Adding a field to a group is therefore one line in
 //! one table, and save and restore cannot disagree.
 
 use super::Context;
@@ -78,9 +79,9 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         // Tables 6.15 to 6.20: the selected unit and every unit's enables.
         copy!(d, s; active_texture, enables.texture_1d, enables.texture_2d, enables.texture_3d,
             enables.texture_cube_map, enables.texture_gen);
-        // Each unit's binding, environment and TexGen (the bound objects' own parameters, which
-        // §6.1.14 also lists, are not saved yet: docs/conformance.md).
+        // Each unit's binding, environment and TexGen, then the bound objects' parameters.
         copy!(d, s; textures.units);
+        copy_bound_params(d, s);
     }
     if has(gl::SCISSOR_BIT) {
         // Table 6.21.
@@ -117,6 +118,31 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     // PIXEL_MODE_BIT (read buffer, pixel transfer, zoom), POLYGON_STIPPLE_BIT and
     // ACCUM_BUFFER_BIT: no state of theirs is kept yet.
+}
+
+/// Copies the parameters (table 6.16, attribute "texture") of the 2D texture object bound on
+/// each unit of `s` to the object of the same name in `d`, as Mesa does (GL 2.1 §6.1.14 lists
+/// them in TEXTURE_BIT). Run after the bindings are copied, so `d` binds the same names. In a
+/// pushed entry (a fresh State) the object is a parameter-only stand-in; on pop, a name deleted
+/// since the push is created again, as BindTexture would (§3.8.12), with the saved parameters
+/// and no images.
+fn copy_bound_params(d: &mut State, s: &State) {
+    for (unit, u) in s.textures.units.iter().enumerate() {
+        let Some(params) = s.textures.bound_2d(unit).map(|o| o.params()) else {
+            continue;
+        };
+        let name = u.binding_2d;
+        if name != 0 && !d.textures.objects.contains_key(&name) {
+            d.textures.names.insert(name);
+            d.textures.objects.insert(name, Default::default());
+        }
+        // Only when they differ, so an object shared with a snapshot is not copied for nothing.
+        if d.textures.bound_2d(unit).map(|o| o.params()) != Some(params) {
+            if let Some(obj) = d.textures.bound_2d_mut(unit) {
+                obj.set_params(&params);
+            }
+        }
+    }
 }
 
 /// Copies the client attribute groups in `mask` from `s` to `d` (GL 2.1 tables 6.6 and 6.24).

@@ -11,8 +11,11 @@
 //! follows the driver's state exactly, whatever call (Enable, LightModel, PopAttrib...) set it.
 //! With LIGHTING disabled the program is unbound: PHONG_WIN without lighting is plain SMOOTH.
 //!
-//! What the program does not do (while it is bound, a fragment shader replaces these fixed-function
-//! stages, GL 2.1 §3.11): texturing, colour sum with a texture, and fog. The interpolated normal is
+//! While it is bound, a fragment shader replaces texturing, the colour sum and fog (GL 2.1 §3.11).
+//! Fog is done again in the program as the CPU pipeline does it (§3.10, `cpu::fragops::Fog`): the
+//! fog coordinate |z_eye| or |FOG_COORD| per vertex, interpolated, then f per fragment from the
+//! `gl_Fog` built-ins (FOG_MODE, FOG_COORD_SRC and the FOG enable are read back as uniforms).
+//! What the program does not do: texturing and the colour sum with a texture. The interpolated normal is
 //! always renormalised per fragment, i.e. NORMALIZE/RESCALE_NORMAL make no difference. User clip
 //! planes work (`gl_ClipVertex`), as do all per-fragment operations after the shader (alpha, stencil
 //! and depth tests, blending).
@@ -26,8 +29,13 @@ use crate::Error;
 const VERTEX: &str = r#"#version 110
 varying vec3 v_normal;
 varying vec4 v_eye;
+varying float v_fog;
+// FOG_COORD_SRC is FOG_COORD.
+uniform bool u_fog_coord;
 void main() {
     v_eye = gl_ModelViewMatrix * gl_Vertex;
+    // §3.10: the fog coordinate, |z_eye| for FRAGMENT_DEPTH (as Mesa), |FOG_COORD| otherwise.
+    v_fog = abs(u_fog_coord ? gl_FogCoord : v_eye.z);
     v_normal = gl_NormalMatrix * gl_Normal;
     gl_FrontColor = gl_Color;
     gl_BackColor = gl_Color;
@@ -46,8 +54,11 @@ uniform bool u_cm_front;
 uniform bool u_cm_back;
 // COLOR_MATERIAL_PARAMETER: 1 AMBIENT, 2 DIFFUSE, 3 SPECULAR, 4 EMISSION, 5 AMBIENT_AND_DIFFUSE.
 uniform int u_cm_param;
+// FOG_MODE when FOG is enabled: 0 off, 1 LINEAR, 2 EXP, 3 EXP2.
+uniform int u_fog_mode;
 varying vec3 v_normal;
 varying vec4 v_eye;
+varying float v_fog;
 
 // x^e with 0^0 = 1 (the spec's convention; GLSL leaves pow(0, 0) undefined).
 float powz(float x, float e) {
@@ -120,7 +131,24 @@ void main() {
     }
     // Colours are clamped after lighting (§2.14.1); alpha is the diffuse material's.
     vec3 rgb = u_separate_specular ? clamp(prim, 0.0, 1.0) + clamp(spec, 0.0, 1.0) : prim + spec;
-    gl_FragColor = vec4(clamp(rgb, 0.0, 1.0), clamp(diffuse.a, 0.0, 1.0));
+    rgb = clamp(rgb, 0.0, 1.0);
+    // Fog (§3.10 eqs. 3.22 to 3.25) on the clamped colour, alpha unchanged: f clamped to [0, 1],
+    // LINEAR in Mesa's form c * -scale + end * scale, the blend as C_f + f (C - C_f).
+    if (u_fog_mode != 0) {
+        float c = v_fog;
+        float f;
+        if (u_fog_mode == 1) {
+            f = c * -gl_Fog.scale + gl_Fog.end * gl_Fog.scale;
+        } else if (u_fog_mode == 2) {
+            f = exp(-gl_Fog.density * c);
+        } else {
+            float dc = gl_Fog.density * c;
+            f = exp(-dc * dc);
+        }
+        f = clamp(f, 0.0, 1.0);
+        rgb = gl_Fog.color.rgb + (rgb - gl_Fog.color.rgb) * f;
+    }
+    gl_FragColor = vec4(rgb, clamp(diffuse.a, 0.0, 1.0));
 }
 "#;
 
@@ -135,6 +163,8 @@ pub(super) struct PhongProgram {
     cm_front: Option<glow::UniformLocation>,
     cm_back: Option<glow::UniformLocation>,
     cm_param: Option<glow::UniformLocation>,
+    fog_mode: Option<glow::UniformLocation>,
+    fog_coord: Option<glow::UniformLocation>,
 }
 
 impl PhongProgram {
@@ -180,13 +210,15 @@ impl PhongProgram {
                 cm_front: loc("u_cm_front"),
                 cm_back: loc("u_cm_back"),
                 cm_param: loc("u_cm_param"),
+                fog_mode: loc("u_fog_mode"),
+                fog_coord: loc("u_fog_coord"),
                 program,
             })
         }
     }
 
-    /// Reads LIGHTING, the light enables, the light model flags and COLOR_MATERIAL from the
-    /// driver, then binds the program with matching uniforms, or unbinds it when lighting is
+    /// Reads LIGHTING, the light enables, the light model flags, COLOR_MATERIAL and the fog
+    /// enable, mode and coordinate source from the driver, then binds the program with matching uniforms, or unbinds it when lighting is
     /// off. Must be called outside Begin/End (it queries state).
     pub fn sync(&self, raw: &raw::Gl, glow: &glow::Context) {
         // SAFETY: the backend's context is current; every query writes one value into a local.
@@ -225,6 +257,20 @@ impl PhongProgram {
             set(&self.cm_front, cm_on && face != gl::BACK);
             set(&self.cm_back, cm_on && face != gl::FRONT);
             glow.uniform_1_i32(self.cm_param.as_ref(), param);
+            let fog_mode = if raw.IsEnabled(gl::FOG) == 0 {
+                0
+            } else {
+                match int(gl::FOG_MODE) as u32 {
+                    gl::LINEAR => 1,
+                    gl::EXP => 2,
+                    _ => 3, // EXP2
+                }
+            };
+            glow.uniform_1_i32(self.fog_mode.as_ref(), fog_mode);
+            set(
+                &self.fog_coord,
+                int(gl::FOG_COORD_SRC) as u32 == gl::FOG_COORD,
+            );
         }
     }
 
