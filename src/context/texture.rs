@@ -465,7 +465,7 @@ impl Context {
 
     /// Framebuffer pixels as texels of `base`: depth (as [0, 1]) for DEPTH_COMPONENT, else the
     /// colour converted as TexImage converts RGBA data.
-    fn read_fb(&self, x: i32, y: i32, w: i32, h: i32, base: u32) -> Vec<[f32; 4]> {
+    fn read_fb(&mut self, x: i32, y: i32, w: i32, h: i32, base: u32) -> Vec<[f32; 4]> {
         let fb = self.renderer.framebuffer();
         let mut out = Vec::with_capacity((w.max(0) * h.max(0)) as usize);
         for j in 0..h.max(0) {

@@ -15,7 +15,15 @@
 //! split in order across setup workers that bin their primitives per 64x64 tile; tiles are
 //! rasterised in parallel, each owning its pixels, visiting worker 0's bin, then worker 1's, ...,
 //! so every tile sees the primitives in submission order (depth ties and, later, blending
-//! depend on it). A batch is drawn at End once it holds 64k vertices, so memory stays bounded.
+//! depend on it).
+//!
+//! The front end and the drawing overlap. A batch is drawn at End once it holds 64k vertices
+//! (`flush_if_large`), so memory stays bounded; that draw is handed to the thread pool with a
+//! copy of the state (texture images are shared through `Arc`, not copied) while the front end
+//! fills the next batch. At most one draw is in flight: the next `flush_if_large`, any other
+//! flush (a state change, Clear, a read) and every framebuffer access wait for it first, so the
+//! draws happen one after the other in call order and the pixels are exactly those of drawing
+//! in place (tested in `tests/overlap.rs` under this module). A caller running on the pool itself draws in place.
 
 pub mod assembly;
 pub mod batch;
@@ -37,6 +45,8 @@ mod tests;
 
 use glam::Vec4;
 use rayon::prelude::*;
+use std::sync::mpsc::{self, Receiver};
+use std::sync::Mutex;
 
 use crate::state::{Current, Material, State};
 use assembly::Asm;
@@ -49,31 +59,49 @@ use vertex::{Layout, Lighting};
 /// Primitives below which setup stays on one thread.
 const PARALLEL_SETUP: usize = 4096;
 
-/// The CPU renderer: the vertex batch not yet drawn, scratch space reused across flushes, and the
-/// framebuffer.
+/// The CPU renderer: the vertex batch being filled, the framebuffer with the scratch space the
+/// drawing reuses, and the draw running in the background, if any.
 #[derive(Debug)]
 pub struct Renderer {
-    fb: Framebuffer,
+    /// The framebuffer and scratch buffers; `None` while a background draw owns them.
+    core: Option<Box<Core>>,
+    /// Framebuffer size (kept here so `size` never waits for a background draw).
+    size: (u32, u32),
     batch: Batch,
+    /// A drawn batch kept for its memory: the next background draw swaps it in.
+    spare: Option<Batch>,
+    /// The background draw of the previous batch: hands back the core and the batch.
+    pending: Option<Mutex<Receiver<Drawn>>>,
+    /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
+    pub(crate) count_coverage: bool,
+    /// Diagnostic: batches drawn in the background so far.
+    pub(crate) background_draws: u64,
+}
+
+/// What a background draw hands back: the core and the drawn batch, `None` if it failed.
+type Drawn = Option<(Box<Core>, Batch)>;
+
+/// What drawing a batch mutates: the framebuffer and scratch space reused across draws.
+#[derive(Debug)]
+struct Core {
+    fb: Framebuffer,
     vout: Vec<f32>,
     wins: Vec<setup::Win>,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
-    /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
-    pub(crate) count_coverage: bool,
 }
 
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     pub fn new(width: u32, height: u32) -> Self {
         Self {
-            fb: Framebuffer::new(width, height),
+            core: Some(Box::new(Core::new(width, height))),
+            size: (width, height),
             batch: Batch::default(),
-            vout: Vec::new(),
-            wins: Vec::new(),
-            asm: Vec::new(),
-            workers: Vec::new(),
+            spare: None,
+            pending: None,
             count_coverage: false,
+            background_draws: 0,
         }
     }
 
@@ -99,13 +127,70 @@ impl Renderer {
         self.batch.end();
     }
 
-    /// Draws the batch now if it holds many vertices: called after `End`, when the state the
-    /// batch was specified under is still current. Keeps the batch (and its memory) bounded and
-    /// cache-warm without changing the result.
+    /// Starts drawing the batch if it holds many vertices: called after `End`, when the state
+    /// the batch was specified under is still current. The draw runs in the background on the
+    /// thread pool while the front end fills the next batch (see the module docs); it keeps
+    /// the batch (and its memory) bounded and cache-warm without changing the result.
     pub fn flush_if_large(&mut self, state: &State) {
-        if self.batch.idx.len() >= FLUSH_AT {
-            self.flush(state);
+        if self.batch.idx.len() < FLUSH_AT {
+            return;
         }
+        // A caller running on the pool itself draws in place: blocking one of the pool's
+        // threads on a job queued behind it could wait forever.
+        if rayon::current_thread_index().is_some() {
+            return self.flush(state);
+        }
+        self.wait();
+        let mut next = self.spare.take().unwrap_or_default();
+        next.clear();
+        let batch = std::mem::replace(&mut self.batch, next);
+        let Some(mut core) = self.core.take() else {
+            return;
+        };
+        // The state is copied (texture images are shared, not copied): the front end goes on
+        // changing its own.
+        let state = Box::new(state.clone());
+        let count = self.count_coverage;
+        let (tx, rx) = mpsc::channel();
+        self.pending = Some(Mutex::new(rx));
+        self.background_draws += 1;
+        rayon::spawn(move || {
+            // A panic must not abort the process from the pool: the core is then lost and
+            // `wait` starts a new one.
+            let drawn = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || {
+                core.draw(&state, &batch, count);
+                (core, batch)
+            }));
+            let _ = tx.send(drawn.ok());
+        });
+    }
+
+    /// Waits for the background draw, if any, and takes back what it owned.
+    fn wait(&mut self) {
+        let Some(rx) = self.pending.take() else {
+            return;
+        };
+        let back = match rx.into_inner() {
+            Ok(rx) => rx.recv().ok().flatten(),
+            Err(_) => None,
+        };
+        match back {
+            Some((core, batch)) => {
+                self.core = Some(core);
+                self.spare = Some(batch);
+            }
+            None => {
+                // The draw failed (it never should): go on with a cleared framebuffer.
+                self.core = Some(Box::new(Core::new(self.size.0, self.size.1)));
+            }
+        }
+    }
+
+    /// The framebuffer and scratch space, once no background draw holds them.
+    fn core(&mut self) -> &mut Core {
+        self.wait();
+        self.core
+            .get_or_insert_with(|| Box::new(Core::new(self.size.0, self.size.1)))
     }
 
     /// `Material` called between Begin and End: `materials` are the new front and back materials,
@@ -119,22 +204,22 @@ impl Renderer {
     /// scissor test and the colour, depth and stencil write masks in `state` (GL 2.1 §4.2.3).
     pub fn clear(&mut self, state: &State, mask: u32) {
         self.flush(state);
-        self.fb.clear(state, mask);
+        self.core().fb.clear(state, mask);
     }
 
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
-        self.fb.size()
+        self.size
     }
 
-    /// The framebuffer (read access for readback).
-    pub fn framebuffer(&self) -> &Framebuffer {
-        &self.fb
+    /// The framebuffer (read access for readback), once everything drawn so far is in it.
+    pub fn framebuffer(&mut self) -> &Framebuffer {
+        &self.core().fb
     }
 
     /// The colour buffer as bottom-up rows, `width * height` pixels.
-    pub fn color(&self) -> Vec<[u8; 4]> {
-        self.fb.color_rows()
+    pub fn color(&mut self) -> Vec<[u8; 4]> {
+        self.core().fb.color_rows()
     }
 
     /// Drops the vertices batched so far without drawing them (`Context::reset`).
@@ -144,22 +229,39 @@ impl Renderer {
 
     /// Draws everything batched so far with `state`, leaving the batch empty.
     pub fn flush(&mut self, state: &State) {
+        self.wait();
         if self.batch.is_empty() {
             self.batch.clear();
             return;
         }
+        let count = self.count_coverage;
+        let Renderer {
+            core, batch, size, ..
+        } = self;
+        core.get_or_insert_with(|| Box::new(Core::new(size.0, size.1)))
+            .draw(state, batch, count);
+        batch.clear();
+    }
+}
+
+impl Core {
+    fn new(width: u32, height: u32) -> Self {
+        Core {
+            fb: Framebuffer::new(width, height),
+            vout: Vec::new(),
+            wins: Vec::new(),
+            asm: Vec::new(),
+            workers: Vec::new(),
+        }
+    }
+
+    /// Draws `batch` (not empty) with `state` into the framebuffer.
+    fn draw(&mut self, state: &State, batch: &Batch, count_coverage: bool) {
         let layout = Layout::for_state(state);
         let rect = framebuffer::scissor_rect(state);
         let mut ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
         // Vertex stage (§2.11, §2.14), parallel over large batches.
-        vertex::process(
-            state,
-            &self.batch,
-            &layout,
-            &ctx,
-            &mut self.vout,
-            &mut self.wins,
-        );
+        vertex::process(state, batch, &layout, &ctx, &mut self.vout, &mut self.wins);
         // llvmpipe splits quads along 1–3 when it shades FLAT or when any vertex of the draw
         // needs clipping (its draw module then takes the clipping path, which decomposes quads
         // provoking-vertex-last), and along 0–2 otherwise; measured in
@@ -171,14 +273,12 @@ impl Renderer {
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
         let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
         // --- end texture
-        let Renderer {
+        let Core {
             fb,
-            batch,
             vout,
             wins,
             asm,
             workers,
-            count_coverage,
         } = self;
         let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
             std::slice::from_ref(&state.materials)
@@ -194,7 +294,7 @@ impl Renderer {
             rl: ctx.rl,
             lighting: lighting.as_ref(),
             mats,
-            count: *count_coverage,
+            count: count_coverage,
             ops: fragops::Ops::new(state),
             // --- texture
             tex: sampler.as_ref(),
@@ -242,12 +342,11 @@ impl Renderer {
             }
             start = end;
         }
-        batch.clear();
     }
 }
 
 /// Given vertices after which `flush_if_large` draws the batch.
-const FLUSH_AT: usize = 1 << 16;
+const FLUSH_AT: usize = 1 << 15;
 
 /// Given vertices per piece of a flush.
 const PIECE: usize = 1 << 15;

@@ -246,7 +246,7 @@ fn quad(c: &mut Context, z: f32, cw: bool) {
     c.finish();
 }
 
-fn pixel(c: &Context) -> ([u8; 4], u8) {
+fn pixel(c: &mut Context) -> ([u8; 4], u8) {
     c.renderer
         .framebuffer()
         .pixel(1, 2)
@@ -261,35 +261,35 @@ fn stencil_through_the_pipeline() {
     c.stencil_op(gl::KEEP, gl::KEEP, gl::REPLACE);
     c.color3f(1.0, 0.0, 0.0);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c), ([255, 0, 0, 255], 7));
+    assert_eq!(pixel(&mut c), ([255, 0, 0, 255], 7));
     // 5 < 7 passes: INCR_WRAP on depth pass → 8, colour written.
     c.stencil_func(gl::LESS, 5, 0xFF);
     c.stencil_op(gl::KEEP, gl::KEEP, gl::INCR_WRAP);
     c.color3f(0.0, 1.0, 0.0);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c), ([0, 255, 0, 255], 8));
+    assert_eq!(pixel(&mut c), ([0, 255, 0, 255], 8));
     // 5 > 8 fails: the stencil-fail op DECR → 7, no colour.
     c.stencil_func(gl::GREATER, 5, 0xFF);
     c.stencil_op(gl::DECR, gl::KEEP, gl::KEEP);
     c.color3f(0.0, 0.0, 1.0);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c), ([0, 255, 0, 255], 7));
+    assert_eq!(pixel(&mut c), ([0, 255, 0, 255], 7));
     // Depth test fails (NEVER): the depth-fail op ZERO, no colour.
     c.enable(gl::DEPTH_TEST);
     c.depth_func(gl::NEVER);
     c.stencil_func(gl::ALWAYS, 0, 0xFF);
     c.stencil_op(gl::KEEP, gl::ZERO, gl::KEEP);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c), ([0, 255, 0, 255], 0));
+    assert_eq!(pixel(&mut c), ([0, 255, 0, 255], 0));
     // A back-facing polygon uses the BACK state (§4.1.5): INVERT on stencil fail → 255.
     c.disable(gl::DEPTH_TEST);
     c.stencil_func_separate(gl::BACK, gl::NEVER, 0, 0xFF);
     c.stencil_op_separate(gl::BACK, gl::INVERT, gl::KEEP, gl::KEEP);
     quad(&mut c, -1.0, true);
-    assert_eq!(pixel(&c), ([0, 255, 0, 255], 255));
+    assert_eq!(pixel(&mut c), ([0, 255, 0, 255], 255));
     // The front state was left alone: ALWAYS passes, KEEP.
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c), ([0, 0, 255, 255], 255));
+    assert_eq!(pixel(&mut c), ([0, 0, 255, 255], 255));
 }
 
 #[test]
@@ -299,14 +299,14 @@ fn alpha_test_compares_in_unorm8() {
     c.alpha_func(gl::GREATER, 0.5);
     c.color4f(1.0, 1.0, 1.0, 0.4);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c).0, [0, 0, 0, 0], "0.4 > 0.5 fails");
+    assert_eq!(pixel(&mut c).0, [0, 0, 0, 0], "0.4 > 0.5 fails");
     // 0.4 → 102 and the reference 0.4 → 102: GEQUAL passes, EQUAL passes, LESS fails.
     c.alpha_func(gl::LESS, 0.4);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c).0, [0, 0, 0, 0]);
+    assert_eq!(pixel(&mut c).0, [0, 0, 0, 0]);
     c.alpha_func(gl::EQUAL, 0.4);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c).0, [255, 255, 255, 102]);
+    assert_eq!(pixel(&mut c).0, [255, 255, 255, 102]);
 }
 
 #[test]
@@ -320,24 +320,24 @@ fn fog_through_the_pipeline_at_eye_distance_4() {
     c.color3f(1.0, 0.0, 0.0);
     quad(&mut c, -4.0, false);
     // f = 0.75: R = 0.75·255 = 191.25 → 191, B = 0.25·255 = 63.75 → 64.
-    assert_eq!(pixel(&c).0, [191, 0, 64, 255]);
+    assert_eq!(pixel(&mut c).0, [191, 0, 64, 255]);
     // EXP, density 0.25: f = e^−1 = 0.3679: R = 93.8 → 94, B = 161.2 → 161.
     c.fogi(gl::FOG_MODE, gl::EXP as i32);
     c.fogf(gl::FOG_DENSITY, 0.25);
     quad(&mut c, -4.0, false);
-    assert_eq!(pixel(&c).0, [94, 0, 161, 255]);
+    assert_eq!(pixel(&mut c).0, [94, 0, 161, 255]);
     // EXP2, density 0.125: f = e^−(0.5²) = 0.7788: R = 198.6 → 199, B = 56.4 → 56.
     c.fogi(gl::FOG_MODE, gl::EXP2 as i32);
     c.fogf(gl::FOG_DENSITY, 0.125);
     quad(&mut c, -4.0, false);
-    assert_eq!(pixel(&c).0, [199, 0, 56, 255]);
+    assert_eq!(pixel(&mut c).0, [199, 0, 56, 255]);
     c.fogi(gl::FOG_MODE, gl::EXP as i32);
     c.fogf(gl::FOG_DENSITY, 0.25);
     // FOG_COORD source: c = |−2| = 2 → EXP f = e^−0.5 = 0.6065: R = 154.7 → 155, B = 100.3 → 100.
     c.fogi(gl::FOG_COORD_SRC, gl::FOG_COORD as i32);
     c.fog_coordf(-2.0);
     quad(&mut c, -4.0, false);
-    assert_eq!(pixel(&c).0, [155, 0, 100, 255]);
+    assert_eq!(pixel(&mut c).0, [155, 0, 100, 255]);
 }
 
 #[test]
@@ -350,12 +350,12 @@ fn blending_and_logic_op_through_the_pipeline() {
     c.color4ub(255, 0, 0, 128);
     quad(&mut c, -1.0, false);
     // As `alpha_blending_over`.
-    assert_eq!(pixel(&c).0, [128, 0, 127, 191]);
+    assert_eq!(pixel(&mut c).0, [128, 0, 127, 191]);
     // COLOR_LOGIC_OP takes precedence over blending (§4.1.10): source XOR destination.
     c.enable(gl::COLOR_LOGIC_OP);
     c.logic_op(gl::XOR);
     quad(&mut c, -1.0, false);
-    assert_eq!(pixel(&c).0, [128 ^ 255, 0, 127, 191 ^ 128]);
+    assert_eq!(pixel(&mut c).0, [128 ^ 255, 0, 127, 191 ^ 128]);
 }
 
 #[test]
@@ -366,5 +366,5 @@ fn color_sum_adds_the_secondary_colour() {
     c.secondary_color3f(0.25, 0.25, 0.0);
     quad(&mut c, -1.0, false);
     // (0.75, 0.25, 0): 191.25 → 191, 63.75 → 64.
-    assert_eq!(pixel(&c).0, [191, 64, 0, 255]);
+    assert_eq!(pixel(&mut c).0, [191, 64, 0, 255]);
 }

@@ -79,7 +79,7 @@ pub(super) fn frame(r: &mut Renderer, st: &State, size: usize, g: &(Vec<Vec3>, V
     r.flush(st);
 }
 
-fn save(r: &Renderer, path: &str) {
+fn save(r: &mut Renderer, path: &str) {
     let (w, h) = r.size();
     let rows = r.color();
     let img = image::RgbaImage::from_fn(w, h, |x, y| {
@@ -94,10 +94,10 @@ fn gaussian_40_looks_right() {
     let mut r = Renderer::new(200, 200);
     let g = grid(40);
     frame(&mut r, &st, 40, &g);
-    save(&r, "/tmp/cpu-gauss-40.png");
+    save(&mut r, "/tmp/cpu-gauss-40.png");
     // Background corner white; the surface is bluish (b > r = g) where it is lit diffusely.
-    assert_eq!(px(&r, 0, 0), [255, 255, 255, 255]);
-    assert_eq!(px(&r, 199, 199), [255, 255, 255, 255]);
+    assert_eq!(px(&mut r, 0, 0), [255, 255, 255, 255]);
+    assert_eq!(px(&mut r, 199, 199), [255, 255, 255, 255]);
     let bluish = r
         .color()
         .iter()
@@ -135,7 +135,7 @@ fn gaussian_400_timing() {
         ms[0],
         ms[ms.len() / 2]
     );
-    save(&r, "/tmp/cpu-gauss-400.png");
+    save(&mut r, "/tmp/cpu-gauss-400.png");
     // Raw bottom-up RGBA, as glReadPixels returns it, for comparing with a reference render.
     let raw: Vec<u8> = r.color().iter().flatten().copied().collect();
     let _ = std::fs::write("/tmp/cpu-gauss400.rgba", raw);

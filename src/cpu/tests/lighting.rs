@@ -204,7 +204,7 @@ fn lit_point(st: &State, n: Vec3) -> [u8; 4] {
     r.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &cur(WHITE, n));
     r.end();
     r.flush(st);
-    px(&r, 2, 2)
+    px(&mut r, 2, 2)
 }
 
 #[test]
@@ -272,14 +272,14 @@ fn two_sided_lighting_uses_back_material_and_negated_normal() {
         r.flush(st);
     };
     tri(&mut r, &st, true);
-    assert_eq!(px(&r, 1, 1), [0, 255, 0, 255]);
+    assert_eq!(px(&mut r, 1, 1), [0, 255, 0, 255]);
     tri(&mut r, &st, false);
-    assert_eq!(px(&r, 1, 1), [0, 0, 0, 255]);
+    assert_eq!(px(&mut r, 1, 1), [0, 0, 0, 255]);
     // Without TWO_SIDE the back face is lit as the front: black.
     st.light_model.two_side = false;
     r.clear(&st, gl::COLOR_BUFFER_BIT);
     tri(&mut r, &st, true);
-    assert_eq!(px(&r, 1, 1), [0, 0, 0, 255]);
+    assert_eq!(px(&mut r, 1, 1), [0, 0, 0, 255]);
 }
 
 #[test]
@@ -309,6 +309,6 @@ fn material_change_inside_begin_end_applies_from_the_next_vertex() {
     r.end();
     r.flush(&st);
     // Scene ambient 1 × material ambient: the first point red, the second blue.
-    assert_eq!(px(&r, 2, 2)[..3], [255, 0, 0]);
-    assert_eq!(px(&r, 6, 6)[..3], [0, 0, 255]);
+    assert_eq!(px(&mut r, 2, 2)[..3], [255, 0, 0]);
+    assert_eq!(px(&mut r, 6, 6)[..3], [0, 0, 255]);
 }

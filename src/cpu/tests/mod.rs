@@ -4,6 +4,7 @@
 mod fragops;
 mod gauss;
 mod lighting;
+mod overlap;
 mod raster;
 mod reference;
 
@@ -39,12 +40,12 @@ pub(super) fn draw(r: &mut Renderer, st: &State, mode: u32, vs: &[([f32; 3], Vec
 }
 
 /// Colour of pixel (x, y).
-pub(super) fn px(r: &Renderer, x: i64, y: i64) -> [u8; 4] {
+pub(super) fn px(r: &mut Renderer, x: i64, y: i64) -> [u8; 4] {
     r.framebuffer().pixel(x, y).map_or([0; 4], |p| p.0)
 }
 
 /// Number of pixels whose colour is not `bg`.
-pub(super) fn count_not(r: &Renderer, bg: [u8; 4]) -> usize {
+pub(super) fn count_not(r: &mut Renderer, bg: [u8; 4]) -> usize {
     r.color().iter().filter(|&&c| c != bg).count()
 }
 
@@ -59,17 +60,17 @@ fn clear_honours_scissor_and_masks() {
     st.clear_color = Vec4::new(1.0, 0.5, 0.25, 1.0);
     r.clear(&st, gl::COLOR_BUFFER_BIT);
     // 0.5·255 + 0.5 = 128.0 → 128; 0.25·255 + 0.5 = 64.25 → 64.
-    assert_eq!(px(&r, 7, 7), [255, 128, 64, 255]);
+    assert_eq!(px(&mut r, 7, 7), [255, 128, 64, 255]);
     st.enables.scissor_test = true;
     st.scissor = [2, 2, 3, 3];
     st.color_mask = [false, true, false, true];
     st.clear_color = Vec4::ZERO;
     st.clear_depth = 0.5;
     r.clear(&st, gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
-    assert_eq!(px(&r, 2, 2), [255, 0, 64, 0]);
-    assert_eq!(px(&r, 4, 4), [255, 0, 64, 0]);
-    assert_eq!(px(&r, 5, 5), [255, 128, 64, 255]);
-    assert_eq!(px(&r, 1, 3), [255, 128, 64, 255]);
+    assert_eq!(px(&mut r, 2, 2), [255, 0, 64, 0]);
+    assert_eq!(px(&mut r, 4, 4), [255, 0, 64, 0]);
+    assert_eq!(px(&mut r, 5, 5), [255, 128, 64, 255]);
+    assert_eq!(px(&mut r, 1, 3), [255, 128, 64, 255]);
     // Depth 0.5 → 0.5·(2^24 − 1) + 0.5 = 8388608.
     assert_eq!(r.framebuffer().pixel(3, 3).map(|p| p.1), Some(8_388_608));
     assert_eq!(

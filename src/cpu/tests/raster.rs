@@ -29,7 +29,7 @@ fn draw_pal(r: &mut Renderer, st: &State, mode: u32, ps: &[[f32; 2]]) {
 }
 
 /// The red byte of every pixel (coverage counts when `count_coverage` is on).
-fn counts(r: &Renderer) -> Vec<u8> {
+fn counts(r: &mut Renderer) -> Vec<u8> {
     r.color().iter().map(|c| c[0]).collect()
 }
 
@@ -45,7 +45,7 @@ fn shared_edges_are_drawn_once() {
         gl::TRIANGLES,
         &[q[0], q[1], q[2], q[0], q[2], q[3]],
     );
-    assert!(counts(&r).iter().all(|&c| c == 1));
+    assert!(counts(&mut r).iter().all(|&c| c == 1));
     // An irregular quad: no pixel twice, and the covered set matches the quad drawn as a polygon.
     let (mut r2, _) = setup(16, 16);
     r2.count_coverage = true;
@@ -56,7 +56,7 @@ fn shared_edges_are_drawn_once() {
         gl::TRIANGLES,
         &[q[0], q[1], q[2], q[0], q[2], q[3]],
     );
-    let c = counts(&r2);
+    let c = counts(&mut r2);
     assert!(c.iter().all(|&c| c <= 1));
     assert!(c.iter().filter(|&&c| c == 1).count() > 150);
 }
@@ -76,7 +76,7 @@ fn vertical_and_horizontal_edges_through_centres() {
     for q in quads {
         draw_pal(&mut r, &st, gl::QUADS, &q);
     }
-    assert!(counts(&r).iter().all(|&c| c == 1));
+    assert!(counts(&mut r).iter().all(|&c| c == 1));
 }
 
 #[test]
@@ -96,7 +96,7 @@ fn fan_covering_the_viewport_covers_every_pixel_once() {
         [-1.0, -1.0],
     ];
     draw_pal(&mut r, &st, gl::TRIANGLE_FAN, &fan);
-    assert!(counts(&r).iter().all(|&c| c == 1));
+    assert!(counts(&mut r).iter().all(|&c| c == 1));
 }
 
 #[test]
@@ -107,7 +107,11 @@ fn provoking_vertex_for_every_mode() {
         let mut r = Renderer::new(16, 16);
         draw_pal(&mut r, &st, mode, ps);
         for &(x, y, k) in probes {
-            assert_eq!(px(&r, x, y), rgb(PALETTE[k]), "mode {mode:#x} at ({x},{y})");
+            assert_eq!(
+                px(&mut r, x, y),
+                rgb(PALETTE[k]),
+                "mode {mode:#x} at ({x},{y})"
+            );
         }
     };
     let sq = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
@@ -186,9 +190,9 @@ fn smooth_colour_is_perspective_correct() {
     // Pixel (31,0), centre (31.5, 0.5): screen barycentrics λB = 31.5/64, λC = 0.5/64, λA = 0.5.
     // red = (λB/3) / (λA/1 + λB/3 + λC/1) = 10.5/43 = 0.244186 → 62.27 + 0.5 → 62
     // (linear interpolation would give 125).
-    assert_eq!(px(&r, 31, 0)[0], 62);
+    assert_eq!(px(&mut r, 31, 0)[0], 62);
     // Pixel (0,0): λB = 0.5/64, λC = 0.5/64, λA = 63/64: (0.5/3)/(63 + 0.5/3 + 0.5) = 0.002618 → 1.
-    assert_eq!(px(&r, 0, 0)[0], 1);
+    assert_eq!(px(&mut r, 0, 0)[0], 1);
 }
 
 #[test]
@@ -214,7 +218,7 @@ fn every_depth_func() {
             draw(&mut r, &st, gl::QUADS, &sq(0.0, RED));
             st.depth_func = func;
             draw(&mut r, &st, gl::QUADS, &sq(z, GREEN));
-            let got = px(&r, 1, 2) == [0, 255, 0, 255];
+            let got = px(&mut r, 1, 2) == [0, 255, 0, 255];
             assert_eq!(got, expect[k], "func {func:#x}, z {z}");
             // Depth written only when the test passed: z = −0.5 → window 0.25.
             let d = r.framebuffer().pixel(1, 2).map(|p| p.1);
@@ -242,7 +246,7 @@ fn depth_mask_and_disabled_test_do_not_write_depth() {
     st.enables.depth_test = true;
     st.depth_mask = false;
     draw(&mut r, &st, gl::QUADS, &sq(0.0, GREEN));
-    assert_eq!(px(&r, 2, 2), [0, 255, 0, 255]);
+    assert_eq!(px(&mut r, 2, 2), [0, 255, 0, 255]);
     assert_eq!(
         r.framebuffer().pixel(2, 2).map(|p| p.1),
         Some((1 << 24) - 1)
@@ -268,7 +272,7 @@ fn culling_and_front_face() {
     let drawn = |st: &State, tri: &[[f32; 2]]| {
         let mut r = Renderer::new(8, 8);
         draw_pal(&mut r, st, gl::TRIANGLES, tri);
-        px(&r, 1, 1) != [0; 4]
+        px(&mut r, 1, 1) != [0; 4]
     };
     let mut st = State::new(8, 8);
     assert!(drawn(&st, &ccw) && drawn(&st, &cw));
@@ -291,19 +295,19 @@ fn polygon_mode_line_and_point() {
     st.polygon_mode = [gl::LINE, gl::FILL];
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::TRIANGLES, &tri);
-    assert_ne!(px(&r, 8, 1), [0; 4]); // on the bottom edge
-    assert_ne!(px(&r, 1, 8), [0; 4]); // on the left edge
-    assert_eq!(px(&r, 5, 5), [0; 4]); // interior
-                                      // The back face fills.
+    assert_ne!(px(&mut r, 8, 1), [0; 4]); // on the bottom edge
+    assert_ne!(px(&mut r, 1, 8), [0; 4]); // on the left edge
+    assert_eq!(px(&mut r, 5, 5), [0; 4]); // interior
+                                          // The back face fills.
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::TRIANGLES, &cw);
-    assert_ne!(px(&r, 5, 5), [0; 4]);
+    assert_ne!(px(&mut r, 5, 5), [0; 4]);
     // POINT: the three vertices only.
     st.polygon_mode = [gl::POINT, gl::POINT];
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::TRIANGLES, &tri);
-    assert_eq!(count_not(&r, [0; 4]), 3);
-    assert_ne!(px(&r, 14, 1), [0; 4]);
+    assert_eq!(count_not(&mut r, [0; 4]), 3);
+    assert_ne!(px(&mut r, 14, 1), [0; 4]);
     // LINE with the second vertex's edge flag off: the hypotenuse is not drawn.
     st.polygon_mode = [gl::LINE, gl::LINE];
     let mut r = Renderer::new(16, 16);
@@ -315,8 +319,8 @@ fn polygon_mode_line_and_point() {
     }
     r.end();
     r.flush(&st);
-    assert_eq!(px(&r, 8, 7), [0; 4]);
-    assert_ne!(px(&r, 8, 1), [0; 4]);
+    assert_eq!(px(&mut r, 8, 7), [0; 4]);
+    assert_ne!(px(&mut r, 8, 1), [0; 4]);
     // A quad in LINE mode: no diagonal.
     let mut r = Renderer::new(16, 16);
     draw_pal(
@@ -325,8 +329,8 @@ fn polygon_mode_line_and_point() {
         gl::QUADS,
         &[tri[0], tri[1], [0.8125, 0.8125], tri[2]],
     );
-    assert_eq!(px(&r, 8, 8), [0; 4]);
-    assert_ne!(px(&r, 14, 8), [0; 4]);
+    assert_eq!(px(&mut r, 8, 8), [0; 4]);
+    assert_ne!(px(&mut r, 14, 8), [0; 4]);
 }
 
 #[test]
@@ -339,7 +343,11 @@ fn near_plane_cut() {
     draw(&mut r, &st, gl::QUADS, &vs);
     for y in 0..16 {
         for x in 0..16 {
-            assert_eq!(px(&r, x, y) != [0; 4], (4..12).contains(&x), "({x},{y})");
+            assert_eq!(
+                px(&mut r, x, y) != [0; 4],
+                (4..12).contains(&x),
+                "({x},{y})"
+            );
         }
     }
 }
@@ -358,7 +366,7 @@ fn inside_triangle_is_not_clipped_and_boundary_vertices_are_inside() {
     // Row y has centres with x > y strictly inside, x == y on the diagonal: the edge from
     // (16,16) to (0,0) goes down (dy < 0), a left edge, so centres on it count:
     // 16 + 15 + ... + 1 = 136.
-    assert_eq!(counts(&r).iter().filter(|&&c| c == 1).count(), 136);
+    assert_eq!(counts(&mut r).iter().filter(|&&c| c == 1).count(), 136);
 }
 
 #[test]
@@ -374,7 +382,7 @@ fn user_clip_plane() {
     );
     for y in 0..16 {
         for x in 0..16 {
-            assert_eq!(px(&r, x, y) != [0; 4], x >= 8, "({x},{y})");
+            assert_eq!(px(&mut r, x, y) != [0; 4], x >= 8, "({x},{y})");
         }
     }
 }
@@ -390,8 +398,8 @@ fn flat_colour_survives_clipping() {
         gl::TRIANGLES,
         &[[-0.5, -0.5], [0.5, -0.5], [0.0, 3.0]],
     );
-    assert_eq!(px(&r, 8, 6), rgb(BLUE));
-    assert_eq!(px(&r, 8, 15), rgb(BLUE));
+    assert_eq!(px(&mut r, 8, 6), rgb(BLUE));
+    assert_eq!(px(&mut r, 8, 15), rgb(BLUE));
 }
 
 #[test]
@@ -403,7 +411,7 @@ fn nothing_behind_the_eye_is_drawn() {
     }
     r.end();
     r.flush(&st);
-    assert_eq!(count_not(&r, [0; 4]), 0);
+    assert_eq!(count_not(&mut r, [0; 4]), 0);
 }
 
 #[test]
@@ -417,26 +425,28 @@ fn lines_and_points() {
         gl::LINE_STRIP,
         &[[-1.0, 0.0625], [0.1, 0.0625], [1.0, 0.0625]],
     );
-    let c = counts(&r);
+    let c = counts(&mut r);
     assert!((0..16).all(|x| c[8 * 16 + x] == 1));
     assert_eq!(c.iter().map(|&v| usize::from(v)).sum::<usize>(), 16);
     // Width 3: three rows, 7..=9.
     st.line_width = 3.0;
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::LINES, &[[-1.0, 0.0625], [1.0, 0.0625]]);
-    assert_eq!(count_not(&r, [0; 4]), 48);
-    assert!(px(&r, 5, 7) != [0; 4] && px(&r, 5, 9) != [0; 4] && px(&r, 5, 10) == [0; 4]);
+    assert_eq!(count_not(&mut r, [0; 4]), 48);
+    assert!(
+        px(&mut r, 5, 7) != [0; 4] && px(&mut r, 5, 9) != [0; 4] && px(&mut r, 5, 10) == [0; 4]
+    );
     // Points: size 2 at window (8.3, 8.3) covers centres in [7.3, 9.3): columns/rows 7 and 8.
     st.point_size = 2.0;
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::POINTS, &[[0.3 / 8.0, 0.3 / 8.0]]);
-    assert_eq!(count_not(&r, [0; 4]), 4);
-    assert!(px(&r, 7, 7) != [0; 4] && px(&r, 8, 8) != [0; 4]);
+    assert_eq!(count_not(&mut r, [0; 4]), 4);
+    assert!(px(&mut r, 7, 7) != [0; 4] && px(&mut r, 8, 8) != [0; 4]);
     st.point_size = 3.0;
     let mut r = Renderer::new(16, 16);
     draw_pal(&mut r, &st, gl::POINTS, &[[0.3 / 8.0, 0.3 / 8.0]]);
-    assert_eq!(count_not(&r, [0; 4]), 9);
-    assert!(px(&r, 7, 7) != [0; 4] && px(&r, 9, 9) != [0; 4]);
+    assert_eq!(count_not(&mut r, [0; 4]), 9);
+    assert!(px(&mut r, 7, 7) != [0; 4] && px(&mut r, 9, 9) != [0; 4]);
 }
 
 #[test]
@@ -450,8 +460,8 @@ fn scissor_limits_drawing() {
         gl::QUADS,
         &[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]],
     );
-    assert_eq!(count_not(&r, [0; 4]), 20);
-    assert!(px(&r, 2, 3) != [0; 4] && px(&r, 5, 7) != [0; 4] && px(&r, 6, 7) == [0; 4]);
+    assert_eq!(count_not(&mut r, [0; 4]), 20);
+    assert!(px(&mut r, 2, 3) != [0; 4] && px(&mut r, 5, 7) != [0; 4] && px(&mut r, 6, 7) == [0; 4]);
 }
 
 #[test]
@@ -464,7 +474,7 @@ fn color_mask_on_draw() {
         gl::QUADS,
         &[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|p| ([p[0], p[1], 0.0], WHITE)),
     );
-    assert_eq!(px(&r, 1, 1), [255, 0, 255, 0]);
+    assert_eq!(px(&mut r, 1, 1), [255, 0, 255, 0]);
 }
 
 #[test]
@@ -488,7 +498,7 @@ fn phong_win_gives_a_sharper_highlight() {
         }
         r.end();
         r.flush(&st);
-        (0..32).map(|x| px(&r, x, 16)[0]).collect::<Vec<_>>()
+        (0..32).map(|x| px(&mut r, x, 16)[0]).collect::<Vec<_>>()
     };
     let (smooth, phong) = (render(gl::SMOOTH), render(gl::PHONG_WIN));
     // At a corner L = (1,1,1)/√3 and h ∝ (1,1,1+√3): N·h = 0.8881; 0.8881^50 ≈ 0.0027 → 1 or 0.
@@ -557,7 +567,10 @@ fn large_meshes_cover_every_pixel_once_on_every_setup_path() {
         // 32·32·6 = 6144 vertices: enough for the parallel setup paths (by primitives when
         // they are many, by triangles when one primitive holds them all).
         jittered_mesh(&mut r, &st, one);
-        assert!(counts(&r).iter().all(|&c| c == 1), "one primitive: {one}");
+        assert!(
+            counts(&mut r).iter().all(|&c| c == 1),
+            "one primitive: {one}"
+        );
     }
 }
 
@@ -623,7 +636,7 @@ fn lines_follow_the_diamond_exit_rule() {
             &[[ndc(xa), -0.3125], [ndc(xb), -0.3125]],
         );
         (0..16)
-            .filter(|&x| px(&r, x, 5) != [0; 4])
+            .filter(|&x| px(&mut r, x, 5) != [0; 4])
             .collect::<Vec<_>>()
     };
     // From 2.7: the start lies in pixel 2's diamond (|2.7 − 2.5| = 0.2 < 0.5), which the line
@@ -651,13 +664,13 @@ fn tie_rule_owns_left_and_bottom_edges() {
     );
     // A: its bottom edge (row 2) and left edge (column 2) own their centres; the hypotenuse
     // x + y = 11 does not (it goes up-left), so row 2 is columns 2..=7.
-    let row2: Vec<i64> = (0..16).filter(|&x| px(&r, x, 2) != [0; 4]).collect();
+    let row2: Vec<i64> = (0..16).filter(|&x| px(&mut r, x, 2) != [0; 4]).collect();
     assert_eq!(row2, (2..=7).collect::<Vec<_>>());
-    assert!((2..=7).all(|y| px(&r, 2, y) != [0; 4]));
+    assert!((2..=7).all(|y| px(&mut r, 2, y) != [0; 4]));
     // B: its top edge (row 13) and right edge (column 13) own nothing.
-    assert!((0..16).all(|x| px(&r, x, 13) == [0; 4]));
-    assert!((0..16).all(|y| px(&r, 13, y) == [0; 4]));
-    assert_ne!(px(&r, 12, 12), [0; 4]);
+    assert!((0..16).all(|x| px(&mut r, x, 13) == [0; 4]));
+    assert!((0..16).all(|y| px(&mut r, 13, y) == [0; 4]));
+    assert_ne!(px(&mut r, 12, 12), [0; 4]);
 }
 
 #[test]
@@ -675,6 +688,6 @@ fn edges_along_a_user_clip_plane_are_drawn_in_line_mode() {
     );
     // The cut runs along column 8 from the bottom edge up to the hypotenuse (window y from 0.8
     // to 8.3): rows 1..=7 of column 8 are drawn; nothing right of it.
-    assert!((1..=7).all(|y| px(&r, 8, y) != [0; 4]));
-    assert!((0..16).all(|y| px(&r, 9, y) == [0; 4]));
+    assert!((1..=7).all(|y| px(&mut r, 8, y) != [0; 4]));
+    assert!((0..16).all(|y| px(&mut r, 9, y) == [0; 4]));
 }

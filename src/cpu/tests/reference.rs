@@ -12,7 +12,7 @@ fn c3(r: f32, g: f32, b: f32) -> Vec4 {
     Vec4::new(r, g, b, 1.0)
 }
 
-fn dump(r: &Renderer, name: &str) {
+fn dump(r: &mut Renderer, name: &str) {
     let raw: Vec<u8> = r.color().iter().flatten().copied().collect();
     let _ = std::fs::write(format!("/tmp/cpu-{name}.rgba"), raw);
 }
@@ -39,12 +39,12 @@ fn star_and_strip(r: &mut Renderer, st: &State) {
 fn reference_scenes() {
     let (mut r, mut st) = setup(64, 64);
     star_and_strip(&mut r, &st);
-    dump(&r, "lines");
+    dump(&mut r, "lines");
 
     let mut r = Renderer::new(64, 64);
     st.line_width = 3.0;
     star_and_strip(&mut r, &st);
-    dump(&r, "wide");
+    dump(&mut r, "wide");
 
     let (mut r, mut st) = setup(64, 64);
     for sz in 1..=4 {
@@ -61,7 +61,7 @@ fn reference_scenes() {
             .collect();
         draw(&mut r, &st, gl::POINTS, &vs);
     }
-    dump(&r, "points");
+    dump(&mut r, "points");
 
     let (mut r, mut st) = setup(64, 64);
     *st.projection.top_mut() = Mat4::from_cols_array(&[
@@ -105,7 +105,7 @@ fn reference_scenes() {
             ([-0.3, 0.9, -2.5], c3(1.0, 0.0, 1.0)),
         ],
     );
-    dump(&r, "persp");
+    dump(&mut r, "persp");
 
     let (mut r, mut st) = setup(64, 64);
     st.enables.cull_face = true;
@@ -140,7 +140,7 @@ fn reference_scenes() {
             ([0.2, -0.2, 0.0], blue),
         ],
     );
-    dump(&r, "modes");
+    dump(&mut r, "modes");
 }
 
 #[test]
@@ -219,7 +219,7 @@ fn reference_lit() {
         }
     }
     r.flush(&st);
-    dump(&r, "lit");
+    dump(&mut r, "lit");
 }
 
 #[test]
@@ -252,7 +252,7 @@ fn reference_misc() {
         gl::TRIANGLES,
         &[(p[0], w), (p[1], w), (p[2], w)],
     );
-    dump(&r, "misc");
+    dump(&mut r, "misc");
 }
 
 #[test]
@@ -275,5 +275,5 @@ fn reference_ties() {
         }
     }
     draw(&mut r, &st, gl::TRIANGLES, &vs);
-    dump(&r, "ties");
+    dump(&mut r, "ties");
 }
