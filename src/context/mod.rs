@@ -247,7 +247,25 @@ impl Context {
     }
 
     /// Executes one recorded call on this context, exactly as if its method had been called.
+    ///
+    /// The calls an immediate-mode mesh is made of (Begin, End, Normal3f, Vertex3f: all but a
+    /// handful of a recorded surface) are dispatched first, by a four-arm match that replay
+    /// loops inline; every other call goes through `execute_any`, which matches every variant
+    /// (so a new entry point cannot be forgotten there).
+    #[inline]
     pub fn execute(&mut self, call: &Call) {
+        match *call {
+            Call::Vertex3f(a, b, c) => self.vertex3f(a, b, c),
+            Call::Normal3f(a, b, c) => self.normal3f(a, b, c),
+            Call::Begin(a) => self.begin(a),
+            Call::End => self.end(),
+            _ => self.execute_any(call),
+        }
+    }
+
+    /// `execute` for every call: one arm per variant.
+    #[inline(never)]
+    fn execute_any(&mut self, call: &Call) {
         match *call {
             // ---- Begin/End and capabilities (GL 2.1 §2.6, §2.12) ----
             Call::Begin(a) => self.begin(a),

@@ -160,7 +160,7 @@ fn flag1(a: [bool; 1]) -> bool {
 impl Context {
     /// The common path of every `Vertex*` form. Outside Begin/End a vertex has no effect (GL 2.1
     /// §2.6.3 leaves it undefined; no error is defined, and drivers draw nothing).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn vertex(&mut self, v: Vec4) {
         if self.begin_mode.is_some() {
             self.renderer.vertex(v, &self.state.current);

@@ -209,7 +209,7 @@ impl Batch {
     }
 
     /// Appends a vertex with the current attributes to the open primitive.
-    #[inline]
+    #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
         let Some(p) = self.prims.last_mut() else {
             return;
