@@ -249,10 +249,10 @@ impl Context {
     /// Executes one recorded call on this context, exactly as if its method had been called.
     ///
     /// The calls an immediate-mode mesh is made of (Begin, End, Normal3f, Vertex3f: all but a
-    /// handful of a recorded surface) are dispatched first, by a four-arm match that replay
-    /// loops inline; every other call goes through `execute_any`, which matches every variant
+    /// handful of a recorded surface) are dispatched first, by a four-arm match inlined into
+    /// replay loops; every other call goes through `execute_any`, which matches every variant
     /// (so a new entry point cannot be forgotten there).
-    #[inline]
+    #[inline(always)]
     pub fn execute(&mut self, call: &Call) {
         match *call {
             Call::Vertex3f(a, b, c) => self.vertex3f(a, b, c),
