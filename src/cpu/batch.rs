@@ -377,11 +377,13 @@ mod tests {
         let mut b = Batch::default();
         b.begin(gl::POINTS);
         // Every input zero: the batch's initial span, whose values must be the zeros too.
-        let mut c = Current::default();
-        c.color = Vec4::ZERO;
-        c.secondary_color = Vec4::ZERO;
-        c.tex_coords = [Vec4::ZERO; crate::state::MAX_TEXTURE_UNITS];
-        c.edge_flag = false;
+        let mut c = Current {
+            color: Vec4::ZERO,
+            secondary_color: Vec4::ZERO,
+            tex_coords: [Vec4::ZERO; crate::state::MAX_TEXTURE_UNITS],
+            edge_flag: false,
+            ..Default::default()
+        };
         b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
         c.tex_coords[0] = Vec4::new(0.25, 0.5, 0.0, 1.0);
         b.vertex(Vec4::new(1.0, 0.0, 0.0, 1.0), &c);
