@@ -247,7 +247,25 @@ impl Context {
     }
 
     /// Executes one recorded call on this context, exactly as if its method had been called.
+    ///
+    /// The calls an immediate-mode mesh is made of (Begin, End, Normal3f, Vertex3f: all but a
+    /// handful of a recorded surface) are dispatched first, by a four-arm match inlined into
+    /// replay loops; every other call goes through `execute_any`, which matches every variant
+    /// (so a new entry point cannot be forgotten there).
+    #[inline(always)]
     pub fn execute(&mut self, call: &Call) {
+        match *call {
+            Call::Vertex3f(a, b, c) => self.vertex3f(a, b, c),
+            Call::Normal3f(a, b, c) => self.normal3f(a, b, c),
+            Call::Begin(a) => self.begin(a),
+            Call::End => self.end(),
+            _ => self.execute_any(call),
+        }
+    }
+
+    /// `execute` for every call: one arm per variant.
+    #[inline(never)]
+    fn execute_any(&mut self, call: &Call) {
         match *call {
             // ---- Begin/End and capabilities (GL 2.1 §2.6, §2.12) ----
             Call::Begin(a) => self.begin(a),
@@ -575,10 +593,31 @@ impl Context {
 
     /// Executes every call of `calls` in order.
     pub fn replay(&mut self, calls: &[Call]) {
-        for call in calls {
+        for (i, call) in calls.iter().enumerate() {
+            prefetch(calls.as_ptr().wrapping_add(i + PREFETCH_CALLS));
             self.execute(call);
         }
     }
+}
+
+/// How far ahead of the call being executed `replay` asks for the stream, in calls (2.5 KiB).
+/// A frame of the 400x400 surface is 64 MB of calls: without the hint the front end waits on
+/// their loads (gauss-smooth-400 front end ~10.1 ms → ~8.8 ms with it).
+const PREFETCH_CALLS: usize = 64;
+
+/// Hints the CPU to start loading the cache line at `p` (x86-64 `prefetcht0`; nothing elsewhere).
+#[inline(always)]
+fn prefetch(p: *const Call) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: `prefetcht0` only hints the cache: it never faults and has no architectural
+    // effect, whatever the address (past the end of the slice included: `wrapping_add` made
+    // it without undefined behaviour, and it is never dereferenced).
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>(p.cast::<i8>());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
 }
 
 impl State {

@@ -116,13 +116,9 @@ impl Context {
             self.renderer.flush(&self.state);
         }
         let (w, h) = self.renderer.size();
-        let fb = self.renderer.framebuffer();
-        image::RgbaImage::from_fn(w, h, |x, y| {
-            let c = fb
-                .pixel(i64::from(x), i64::from(h) - 1 - i64::from(y))
-                .map_or([0; 4], |p| p.0);
-            image::Rgba(c)
-        })
+        let bytes = self.renderer.framebuffer().color_bytes_top_down();
+        // The buffer holds exactly w·h pixels, so `from_raw` cannot fail; a blank image if it did.
+        image::RgbaImage::from_raw(w, h, bytes).unwrap_or_else(|| image::RgbaImage::new(w, h))
     }
 }
 

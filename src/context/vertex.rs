@@ -111,12 +111,14 @@ fn normalized3<T: Component>(a: [T; 3]) -> Vec3 {
 }
 
 /// Generates `glX` and `glXv` for one attribute command: both record themselves, convert their
-/// components with `$conv` and pass the result to `$set`.
+/// components with `$conv` and pass the result to `$set`. The non-vector forms are always
+/// inlined, so a replay loop or a user's mesh loop holds the whole vertex path (batching
+/// included) with no call.
 macro_rules! attrib {
     ($set:ident, $conv:ident, $t:ty, $n:literal,
      $f:ident / $V:ident, $fv:ident / $Vv:ident, ($($a:ident),+)) => {
         #[doc = concat!("`gl", stringify!($V), "`.")]
-        #[inline]
+        #[inline(always)]
         pub fn $f(&mut self, $($a: $t),+) {
             record!(self, Call::$V($($a),+));
             self.$set($conv::<$t>([$($a),+]));
@@ -160,7 +162,7 @@ fn flag1(a: [bool; 1]) -> bool {
 impl Context {
     /// The common path of every `Vertex*` form. Outside Begin/End a vertex has no effect (GL 2.1
     /// §2.6.3 leaves it undefined; no error is defined, and drivers draw nothing).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn vertex(&mut self, v: Vec4) {
         if self.begin_mode.is_some() {
             self.renderer.vertex(v, &self.state.current);

@@ -11,8 +11,11 @@
 //! coordinates, fog coordinate, edge flag, material), which rarely change inside a mesh, are
 //! compared only with the previous vertex's: a run of vertices with the same such inputs forms a
 //! span, and a hit counts only inside the current span, so a hit touches one slot and no batch
-//! array. The arrays are cleared, not freed, at each flush, so steady-state drawing allocates
-//! nothing per vertex;
+//! array. The span is also the unit of storage: its colours, texture coordinates and fog
+//! coordinate are stored once (`spans`), and a unique vertex stores its position, normal, edge
+//! flag, material index and span index (about 40 bytes instead of 100: the batch is written at
+//! the rate calls arrive, so its size is a per-vertex cost). The arrays are cleared, not freed,
+//! at each flush, so steady-state drawing allocates nothing per vertex;
 //! `Material` changes inside Begin/End (§2.14.3) are rare, so they are stored as whole snapshots
 //! that vertices index.
 
@@ -84,6 +87,47 @@ impl Others {
     }
 }
 
+/// The inputs a span of vertices shares besides its edge flag and material (which stay per
+/// vertex for assembly and setup).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Attribs {
+    /// Current (primary) colour.
+    pub color: Vec4,
+    /// Current secondary colour.
+    pub color2: Vec4,
+    /// Texture coordinates of unit 0.
+    pub tex: Vec4,
+    // --- texture: unit 1's coordinates (multitexture)
+    /// Texture coordinates of unit 1.
+    pub tex1: Vec4,
+    // --- end texture
+    // --- fragment ops
+    /// Current fog coordinate (FOG_COORD_SRC = FOG_COORD, §3.10).
+    pub fog: f32,
+    // --- end fragment ops
+}
+
+impl Attribs {
+    /// Every input zero: what `Others` of all-zero bits stands for.
+    const ZERO: Attribs = Attribs {
+        color: Vec4::ZERO,
+        color2: Vec4::ZERO,
+        tex: Vec4::ZERO,
+        tex1: Vec4::ZERO,
+        fog: 0.0,
+    };
+
+    fn of(c: &Current) -> Self {
+        Attribs {
+            color: c.color,
+            color2: c.secondary_color,
+            tex: c.tex_coords[0],
+            tex1: c.tex_coords[1],
+            fog: c.fog_coord,
+        }
+    }
+}
+
 /// The batched vertices (object coordinates and current attributes) and primitives.
 #[derive(Debug)]
 pub struct Batch {
@@ -101,24 +145,15 @@ pub struct Batch {
     pub pos: Vec<Vec4>,
     /// Current normal at each vertex.
     pub normal: Vec<Vec3>,
-    /// Current (primary) colour.
-    pub color: Vec<Vec4>,
-    /// Current secondary colour.
-    pub color2: Vec<Vec4>,
-    /// Texture coordinates of unit 0.
-    pub tex: Vec<Vec4>,
-    // --- texture: unit 1's coordinates (multitexture)
-    /// Texture coordinates of unit 1.
-    pub tex1: Vec<Vec4>,
-    // --- end texture
+    /// Index into `spans` of each vertex's other inputs.
+    pub span_of: Vec<u32>,
+    /// The other inputs of each span (see the module docs); never empty, and its last entry is
+    /// the one `others` describes.
+    pub spans: Vec<Attribs>,
     /// Edge flag.
     pub edge: Vec<bool>,
     /// Index into `snapshots`; meaningful only when `snapshots` is not empty.
     pub mat: Vec<u32>,
-    // --- fragment ops
-    /// Current fog coordinate (FOG_COORD_SRC = FOG_COORD, §3.10).
-    pub fog: Vec<f32>,
-    // --- end fragment ops
     /// The primitives, in call order.
     pub prims: Vec<Prim>,
     /// Material snapshots; empty when no Material call happened inside Begin/End in this batch,
@@ -140,13 +175,11 @@ impl Default for Batch {
             others: Others([0; OTHERS]),
             pos: Vec::new(),
             normal: Vec::new(),
-            color: Vec::new(),
-            color2: Vec::new(),
-            tex: Vec::new(),
-            tex1: Vec::new(),
+            span_of: Vec::new(),
+            // The all-zero inputs, which `others` (all zero bits) describes.
+            spans: vec![Attribs::ZERO],
             edge: Vec::new(),
             mat: Vec::new(),
-            fog: Vec::new(), // fragment ops
             prims: Vec::new(),
             snapshots: Vec::new(),
             base: None,
@@ -176,7 +209,7 @@ impl Batch {
     }
 
     /// Appends a vertex with the current attributes to the open primitive.
-    #[inline]
+    #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
         let Some(p) = self.prims.last_mut() else {
             return;
@@ -186,8 +219,7 @@ impl Batch {
         let serial = self.serial0 + i as u64;
         let others = Others::of(c, self.cur_mat);
         if !others.same(&self.others) {
-            self.others = others;
-            self.span = serial;
+            self.new_span(others, c, serial);
         }
         let pos = position.to_array().map(f32::to_bits);
         // The front end stores the normal's components one by one (`Normal3f`); loading two of
@@ -221,13 +253,24 @@ impl Batch {
         self.idx.push(i as u32);
         self.pos.push(position);
         self.normal.push(c.normal);
-        self.color.push(c.color);
-        self.color2.push(c.secondary_color);
-        self.tex.push(c.tex_coords[0]);
-        self.tex1.push(c.tex_coords[1]);
+        self.span_of.push(self.spans.len().saturating_sub(1) as u32);
         self.edge.push(c.edge_flag);
         self.mat.push(self.cur_mat);
-        self.fog.push(c.fog_coord); // fragment ops
+    }
+
+    /// Starts a span at vertex `serial`: the inputs other than position and normal changed.
+    #[inline(never)]
+    fn new_span(&mut self, others: Others, c: &Current, serial: u64) {
+        self.others = others;
+        self.span = serial;
+        self.spans.push(Attribs::of(c));
+    }
+
+    /// The inputs other than position, normal, edge flag and material of unique vertex `i`.
+    #[inline]
+    pub fn attribs(&self, i: usize) -> Option<&Attribs> {
+        let s = *self.span_of.get(i)?;
+        self.spans.get(s as usize)
     }
 
     /// Closes the open primitive; an empty one is dropped.
@@ -269,13 +312,14 @@ impl Batch {
         self.idx.clear();
         self.pos.clear();
         self.normal.clear();
-        self.color.clear();
-        self.color2.clear();
-        self.tex.clear();
-        self.tex1.clear();
+        self.span_of.clear();
+        // The current span carries over as span 0 (it is still what `others` describes).
+        if let Some(cur) = self.spans.pop() {
+            self.spans.clear();
+            self.spans.push(cur);
+        }
         self.edge.clear();
         self.mat.clear();
-        self.fog.clear(); // fragment ops
         self.prims.clear();
         if !self.snapshots.is_empty() {
             self.base = self.snapshots.last().copied();
@@ -326,6 +370,46 @@ mod tests {
         b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
         b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
         assert_eq!(b.idx[6..], [5, 5]);
+    }
+
+    #[test]
+    fn each_vertex_has_the_inputs_current_at_its_call() {
+        let mut b = Batch::default();
+        b.begin(gl::POINTS);
+        // Every input zero: the batch's initial span, whose values must be the zeros too.
+        let mut c = Current {
+            color: Vec4::ZERO,
+            secondary_color: Vec4::ZERO,
+            tex_coords: [Vec4::ZERO; crate::state::MAX_TEXTURE_UNITS],
+            edge_flag: false,
+            ..Default::default()
+        };
+        b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
+        c.tex_coords[0] = Vec4::new(0.25, 0.5, 0.0, 1.0);
+        b.vertex(Vec4::new(1.0, 0.0, 0.0, 1.0), &c);
+        c.color = Vec4::new(0.5, 0.0, 0.0, 1.0);
+        c.fog_coord = 2.0;
+        b.vertex(Vec4::new(2.0, 0.0, 0.0, 1.0), &c);
+        b.vertex(Vec4::new(3.0, 0.0, 0.0, 1.0), &c);
+        b.end();
+        let got = |b: &Batch, i| {
+            b.attribs(i)
+                .map(|a| (a.color, a.color2, a.tex, a.tex1, a.fog))
+        };
+        let z = Vec4::ZERO;
+        let t = Vec4::new(0.25, 0.5, 0.0, 1.0);
+        let red = Vec4::new(0.5, 0.0, 0.0, 1.0);
+        assert_eq!(got(&b, 0), Some((z, z, z, z, 0.0)));
+        assert_eq!(got(&b, 1), Some((z, z, t, z, 0.0)));
+        assert_eq!(got(&b, 2), Some((red, z, t, z, 2.0)));
+        assert_eq!(got(&b, 3), Some((red, z, t, z, 2.0)));
+        assert_eq!(b.attribs(4), None);
+        // The next batch starts with the same inputs: they still read back.
+        b.clear();
+        b.begin(gl::POINTS);
+        b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
+        b.end();
+        assert_eq!(got(&b, 0), Some((red, z, t, z, 2.0)));
     }
 
     #[test]

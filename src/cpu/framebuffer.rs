@@ -83,11 +83,32 @@ impl Framebuffer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);
         for y in 0..h {
-            for x in 0..w {
-                out.push(self.color[self.index(x, y)]);
-            }
+            self.extend_with_row(y, &mut out);
         }
         out
+    }
+
+    /// The colour buffer as RGBA8 bytes, top row first (image order).
+    pub fn color_bytes_top_down(&self) -> Vec<u8> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut out = Vec::with_capacity(w * h);
+        for y in (0..h).rev() {
+            self.extend_with_row(y, &mut out);
+        }
+        out.into_flattened()
+    }
+
+    /// Appends row `y` (< height) of the colour buffer to `out`: one slice copy per tile.
+    fn extend_with_row(&self, y: usize, out: &mut Vec<[u8; 4]>) {
+        let w = self.width as usize;
+        let row = (y / TILE) * self.tiles_x * TILE_PIXELS + (y % TILE) * TILE;
+        for tx in 0..self.tiles_x {
+            let at = row + tx * TILE_PIXELS;
+            let n = (w - tx * TILE).min(TILE);
+            if let Some(px) = self.color.get(at..at + n) {
+                out.extend_from_slice(px);
+            }
+        }
     }
 
     /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask`, inside the scissor box when the
@@ -118,17 +139,29 @@ impl Framebuffer {
                 let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
                 let (tx0, ty0) = (x0.max(ox), y0.max(oy));
                 let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
-                for y in ty0..=ty1 {
+                if tx0 > tx1 || ty0 > ty1 {
+                    return;
+                }
+                // Rows inside a tile are contiguous: a span as wide as the tile covers all the
+                // rows at once.
+                let full = tx0 == ox && tx1 == ox + TILE as i32 - 1;
+                let rows = if full { ty0..=ty0 } else { ty0..=ty1 };
+                for y in rows {
                     let row = (y - oy) as usize * TILE;
-                    let (a, b) = (row + (tx0 - ox) as usize, row + (tx1 - ox) as usize);
-                    if tx0 > tx1 {
-                        continue;
-                    }
+                    let (a, b) = if full {
+                        (row, (ty1 - oy) as usize * TILE + TILE - 1)
+                    } else {
+                        (row + (tx0 - ox) as usize, row + (tx1 - ox) as usize)
+                    };
                     if let (Some(c), Some(px)) = (color, cbuf.get_mut(a..=b)) {
-                        for p in px {
-                            for k in 0..4 {
-                                if cmask[k] {
-                                    p[k] = c[k];
+                        if cmask == [true; 4] {
+                            px.fill(c);
+                        } else {
+                            for p in px {
+                                for k in 0..4 {
+                                    if cmask[k] {
+                                        p[k] = c[k];
+                                    }
                                 }
                             }
                         }
@@ -137,8 +170,12 @@ impl Framebuffer {
                         px.fill(d);
                     }
                     if let (Some(sv), Some(px)) = (stencil, sbuf.get_mut(a..=b)) {
-                        for p in px {
-                            *p = (*p & !smask) | (sv & smask);
+                        if smask == 0xFF {
+                            px.fill(sv);
+                        } else {
+                            for p in px {
+                                *p = (*p & !smask) | (sv & smask);
+                            }
                         }
                     }
                 }
@@ -179,4 +216,65 @@ pub fn unorm8(c: f32) -> u8 {
 #[inline(always)]
 pub fn depth_unorm(z: f64) -> u32 {
     (z.clamp(0.0, 1.0) * f64::from(DEPTH_MAX) + 0.5) as u32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl;
+    use glam::Vec4;
+
+    const RED: [u8; 4] = [255, 0, 0, 255];
+    const BLUE: [u8; 4] = [0, 0, 255, 255];
+
+    /// 130x70 pixels: 3x2 tiles, the right and top ones partly outside the window.
+    fn cleared() -> (Framebuffer, State) {
+        let mut fb = Framebuffer::new(130, 70);
+        let mut st = State::new(130, 70);
+        st.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
+        st.clear_depth = 0.5;
+        fb.clear(&st, gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+        (fb, st)
+    }
+
+    #[test]
+    fn clear_covers_whole_and_partial_tiles() {
+        let (mut fb, mut st) = cleared();
+        // Depth 0.5 → 0.5·(2^24 − 1) + 0.5 = 8388608, in every tile.
+        for (x, y) in [(0, 0), (63, 63), (64, 0), (129, 69), (0, 69), (128, 64)] {
+            assert_eq!(fb.pixel(x, y), Some((RED, 8_388_608, 0)), "({x}, {y})");
+        }
+        // A scissor box x 60..=69, y 60..=64 across four tiles.
+        st.enables.scissor_test = true;
+        st.scissor = [60, 60, 10, 5];
+        st.clear_color = Vec4::new(0.0, 0.0, 1.0, 1.0);
+        st.clear_stencil = 3;
+        fb.clear(&st, gl::COLOR_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
+        for (x, y) in [(60, 60), (69, 64), (63, 63), (64, 64)] {
+            assert_eq!(fb.pixel(x, y), Some((BLUE, 8_388_608, 3)), "({x}, {y})");
+        }
+        for (x, y) in [(59, 60), (70, 64), (65, 65), (64, 59)] {
+            assert_eq!(fb.pixel(x, y), Some((RED, 8_388_608, 0)), "({x}, {y})");
+        }
+    }
+
+    #[test]
+    fn colour_rows_in_both_orders() {
+        let (mut fb, mut st) = cleared();
+        // One blue pixel at (65, 64): tile (1, 1).
+        st.enables.scissor_test = true;
+        st.scissor = [65, 64, 1, 1];
+        st.clear_color = Vec4::new(0.0, 0.0, 1.0, 1.0);
+        fb.clear(&st, gl::COLOR_BUFFER_BIT);
+        let up = fb.color_rows();
+        assert_eq!(up.len(), 130 * 70);
+        assert_eq!(up[64 * 130 + 65], BLUE);
+        assert_eq!(up.iter().filter(|&&c| c == BLUE).count(), 1);
+        let down = fb.color_bytes_top_down();
+        assert_eq!(down.len(), 130 * 70 * 4);
+        // Row 64 from the bottom is row 70 − 1 − 64 = 5 from the top.
+        let at = (5 * 130 + 65) * 4;
+        assert_eq!(down[at..at + 4], BLUE);
+        assert_eq!(down.chunks(4).filter(|&c| c == BLUE).count(), 1);
+    }
 }

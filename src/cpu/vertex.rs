@@ -428,21 +428,18 @@ impl Lit<'_> {
             let mut cnt = 0;
             for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                 let i = base + k;
-                let (Some(&p), Some(&nrm), Some(&color), Some(&color2)) = (
-                    b.pos.get(i),
-                    b.normal.get(i),
-                    b.color.get(i),
-                    b.color2.get(i),
-                ) else {
+                let (Some(&p), Some(&nrm), Some(a)) = (b.pos.get(i), b.normal.get(i), b.attribs(i))
+                else {
                     return;
                 };
+                let (color, color2) = (a.color, a.color2);
                 let eye = self.tf.mv * p;
                 let clip = self.tf.proj * eye;
                 put(o, 0, clip);
                 if let Some(o_eye) = l.eye {
                     put(o, o_eye, eye);
                 }
-                if let (Some(t), Some(&tc)) = (l.tex, b.tex.get(i)) {
+                if let (Some(t), tc) = (l.tex, a.tex) {
                     // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
                     let tc = match &texgen {
                         Some(g) => {
@@ -456,7 +453,7 @@ impl Lit<'_> {
                     };
                     put(o, t, tex_matrix * tc);
                 }
-                if let (Some(t), Some(&tc)) = (l.tex1, b.tex1.get(i)) {
+                if let (Some(t), tc) = (l.tex1, a.tex1) {
                     let tc = match &texgen1 {
                         Some(g) => {
                             let mut n = self.tf.normal * nrm;
@@ -474,7 +471,7 @@ impl Lit<'_> {
                 // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
                 if let Some(f) = l.fog {
                     let c = if state.fog.coord_src == gl::FOG_COORD {
-                        b.fog.get(i).copied().unwrap_or(0.0)
+                        a.fog
                     } else {
                         eye.z
                     };
