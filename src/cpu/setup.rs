@@ -168,6 +168,59 @@ pub struct SetupCtx {
     pub tiles_x: usize,
     /// Total tiles.
     pub tiles: usize,
+    /// Unclipped triangles take `Worker::fast_tri`: FILL for both faces and no PHONG_WIN.
+    fast: bool,
+    /// Where each varying comes from, front face then back face (for `fast_tri`).
+    gather: [[Gather; MAXV]; 2],
+}
+
+/// Where one varying of a face comes from in a processed vertex.
+#[derive(Clone, Copy, Debug)]
+struct Gather {
+    /// Offset in the processed vertex; out of range (`u32::MAX`) for a varying that stays 0.
+    off: u32,
+    /// A colour: taken from the provoking vertex under FLAT.
+    colour: bool,
+}
+
+/// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN.
+fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
+    let mut t = [Gather {
+        off: u32::MAX,
+        colour: false,
+    }; MAXV];
+    let mut set = |d: usize, s: usize, n: usize, colour: bool| {
+        for i in 0..n {
+            if let Some(g) = t.get_mut(d + i) {
+                *g = Gather {
+                    off: (s + i) as u32,
+                    colour,
+                };
+            }
+        }
+    };
+    let (col, spec) = match (back, l.col_b) {
+        (true, Some(cb)) => (cb, l.spec_b),
+        _ => (l.col, l.spec),
+    };
+    set(0, col, 4, true);
+    if let (Some(d), Some(s)) = (rl.spec, spec) {
+        set(d, s, 4, true);
+    }
+    if let (Some(d), Some(s)) = (rl.tex, l.tex) {
+        set(d, s, 4, false);
+    }
+    // --- texture: unit 1's coordinates
+    if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
+        set(d, s, 4, false);
+    }
+    // --- end texture
+    // --- fragment ops
+    if let (Some(d), Some(s)) = (rl.fog, l.fog) {
+        set(d, s, 1, false);
+    }
+    // --- end fragment ops
+    t
 }
 
 impl SetupCtx {
@@ -185,9 +238,10 @@ impl SetupCtx {
     pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
         let [vx, vy, vw, vh] = state.viewport.map(f64::from);
         let [n, f] = state.depth_range;
+        let rl = RLayout::new(&layout);
         SetupCtx {
             layout,
-            rl: RLayout::new(&layout),
+            rl,
             clipper: Clipper::new(state, &layout),
             scale: [vw / 2.0, vh / 2.0, (f - n) / 2.0],
             offset: [vx + vw / 2.0, vy + vh / 2.0, (n + f) / 2.0],
@@ -209,6 +263,11 @@ impl SetupCtx {
             rect,
             tiles_x: tiles.0,
             tiles: tiles.0 * tiles.1,
+            fast: state.polygon_mode == [gl::FILL; 2] && layout.nrm.is_none(),
+            gather: [
+                gather_table(&layout, &rl, false),
+                gather_table(&layout, &rl, true),
+            ],
         }
     }
 }
@@ -329,13 +388,20 @@ impl Worker {
             let prov = vert(p.provoking);
             match p.n {
                 3 => {
-                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                    let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
-                    let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
-                    let codes = [ws[0].code, ws[1].code, ws[2].code];
+                    let w = |i: u32| wins.get(i as usize);
+                    let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
+                        continue;
+                    };
+                    let codes = [wa.code, wb.code, wc.code];
                     if codes[0] & codes[1] & codes[2] != 0 {
                         continue;
                     }
+                    if ctx.fast && codes[0] | codes[1] | codes[2] == 0 {
+                        self.fast_tri(ctx, vout, [wa, wb, wc], p.v, prov, mat);
+                        continue;
+                    }
+                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
+                    let ws = [*wa, *wb, *wc];
                     let mut edges = [false; MAX_POLY];
                     for (k, e) in edges.iter_mut().take(3).enumerate() {
                         *e = p.edges & (1 << k) != 0;
@@ -530,15 +596,102 @@ impl Worker {
             return;
         }
         let (b, c) = if g.swapped { (c, b) } else { (b, c) };
-        let (area, bbox) = (g.area, g.bbox);
         let v = [a, b, c];
+        self.emit_tri(
+            ctx,
+            &g,
+            [a.z, b.z, c.z],
+            [a.iw, b.iw, c.iw],
+            flags,
+            mat,
+            |j, k| v[j].v[k],
+        );
+    }
+
+    /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
+    /// vertex stage's output: facing, culling and the coverage reject use only the window
+    /// records `w` of vertices `ids`; varyings are read from `vout` only for a triangle that may
+    /// cover a pixel centre. Produces exactly what `polygon::<3>` and `tri` produce.
+    #[inline(always)]
+    fn fast_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        w: [&Win; 3],
+        ids: [u32; 3],
+        prov: &[f32],
+        mat: u32,
+    ) {
+        let Some(g) = geom(
+            &ctx.rect,
+            [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
+        ) else {
+            return;
+        };
+        // §3.5.1 eq. 3.6: `swapped` means a negative signed area (clockwise).
+        let front = g.swapped != ctx.ccw_front;
+        match ctx.cull {
+            Some(gl::FRONT) if front => return,
+            Some(gl::BACK) if !front => return,
+            Some(gl::FRONT_AND_BACK) => return,
+            _ => {}
+        }
+        if !g.may_cover() {
+            return;
+        }
+        let back = !front;
+        let mut flags = if back { F_BACK } else { 0 };
+        if ctx.flat {
+            flags |= F_FLAT;
+        }
+        let order = if g.swapped { [0, 2, 1] } else { [0, 1, 2] };
+        let s = ctx.layout.stride;
+        let vs = order.map(|j| {
+            let i = ids[j] as usize;
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        });
+        let ws = order.map(|j| w[j]);
+        let table = &ctx.gather[usize::from(back)];
+        let flat = ctx.flat;
+        self.emit_tri(
+            ctx,
+            &g,
+            [ws[0].z, ws[1].z, ws[2].z],
+            [ws[0].iw, ws[1].iw, ws[2].iw],
+            flags,
+            mat,
+            |j, k| {
+                let t = table[k];
+                let src = if t.colour && flat { prov } else { vs[j] };
+                src.get(t.off as usize).copied().unwrap_or(0.0)
+            },
+        );
+    }
+
+    /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
+    /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j): barycentric planes,
+    /// depth plane, one plane per varying, and the primitive.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn emit_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        g: &Geom,
+        z: [f64; 3],
+        iw: [f32; 3],
+        flags: u8,
+        mat: u32,
+        var: impl Fn(usize, usize) -> f32,
+    ) {
+        let (area, bbox) = (g.area, g.bbox);
+        let v = g.v;
         let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
         let mut lam = [[0f64; 3]; 3];
         let inv = 1.0 / area as f64;
         for k in 0..3 {
             let (p, q) = (v[k], v[(k + 1) % 3]);
-            let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
-            let e00 = dx * (128 - p.fy) - dy * (128 - p.fx);
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let e00 = dx * (128 - p[1]) - dy * (128 - p[0]);
             let (ex, ey) = (-dy * 256, dx * 256);
             // Barycentric of the vertex opposite edge k, relative to the bbox corner.
             lam[(k + 2) % 3] = [
@@ -547,14 +700,14 @@ impl Worker {
                 ey as f64 * inv,
             ];
         }
-        let mut z = [0.0f64; 3];
-        for (j, zj) in z.iter_mut().enumerate() {
-            *zj = a.z * lam[0][j] + b.z * lam[1][j] + c.z * lam[2][j];
+        let mut zp = [0.0f64; 3];
+        for (j, zj) in zp.iter_mut().enumerate() {
+            *zj = z[0] * lam[0][j] + z[1] * lam[1][j] + z[2] * lam[2][j];
         }
         if ctx.offset_on[0] {
-            z[0] += offset(ctx, z[1], z[2]);
+            zp[0] += offset(ctx, zp[1], zp[2]);
         }
-        let z = [z[0] as f32, z[1] as f32, z[2] as f32];
+        let zp = [zp[0] as f32, zp[1] as f32, zp[2] as f32];
         // Varying planes in f32: relative to the bbox corner the values stay small.
         let mut l32 = [[0.0f32; 3]; 3];
         for (r, l) in l32.iter_mut().zip(&lam) {
@@ -568,23 +721,31 @@ impl Worker {
                 f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
             ]
         }
-        let voff = self.pool.len() as u32;
-        let iw = [a.iw, b.iw, c.iw];
-        self.pool.extend(plane(&l32, iw));
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
-        for k in 0..ctx.rl.n.min(MAXV) {
-            let f = [a.v[k], b.v[k], c.v[k]];
-            if k < nflat {
-                self.pool.extend([f[0], 0.0, 0.0]);
+        let nv = ctx.rl.n.min(MAXV);
+        // The 1/w plane, then one plane per varying, written in one go.
+        let mut buf = [0.0f32; 3 * (MAXV + 1)];
+        if let Some(o) = buf.get_mut(..3) {
+            o.copy_from_slice(&plane(&l32, iw));
+        }
+        for k in 0..nv {
+            let f0 = var(0, k);
+            let o = if k < nflat {
+                [f0, 0.0, 0.0]
             } else {
-                self.pool
-                    .extend(plane(&l32, [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
+                plane(&l32, [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]])
+            };
+            if let Some(d) = buf.get_mut(3 + 3 * k..6 + 3 * k) {
+                d.copy_from_slice(&o);
             }
         }
+        let voff = self.pool.len() as u32;
+        self.pool
+            .extend_from_slice(buf.get(..3 * (nv + 1)).unwrap_or(&[]));
         self.push(RPrim {
             kind: Kind::Tri,
             flags,
@@ -592,15 +753,15 @@ impl Worker {
             mat,
             voff,
             xy: [
-                a.fx as i32,
-                a.fy as i32,
-                b.fx as i32,
-                b.fy as i32,
-                c.fx as i32,
-                c.fy as i32,
+                v[0][0] as i32,
+                v[0][1] as i32,
+                v[1][0] as i32,
+                v[1][1] as i32,
+                v[2][0] as i32,
+                v[2][1] as i32,
             ],
             owns: g.owns,
-            z,
+            z: zp,
         });
     }
 
