@@ -8,6 +8,8 @@
 //! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
 //! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
 
+use glam::Vec4;
+
 use super::assembly::Asm;
 use super::batch::{Batch, Prim};
 use super::clip::{Clipper, MAX_POLY};
@@ -371,6 +373,14 @@ impl Worker {
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
     /// coordinates, `mats` their material indices).
     pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
+        self.start(ctx);
+        for p in asm {
+            self.one(ctx, vout, wins, mats, p);
+        }
+    }
+
+    /// Empties the outputs for a new run.
+    fn start(&mut self, ctx: &SetupCtx) {
         self.prims.clear();
         self.pool.clear();
         self.bins.resize_with(ctx.tiles, Vec::new);
@@ -378,85 +388,106 @@ impl Worker {
         for b in &mut self.bins {
             b.clear();
         }
+    }
+
+    /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
+    /// out of line in `general`.
+    #[inline(always)]
+    fn one(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
+        if p.n == 3 {
+            let w = |i: u32| wins.get(i as usize);
+            let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
+                return;
+            };
+            if wa.code & wb.code & wc.code != 0 {
+                return;
+            }
+            if ctx.fast && wa.code | wb.code | wc.code == 0 {
+                let s = ctx.layout.stride;
+                let i = p.provoking as usize;
+                let prov = vout.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                let mat = mats.get(i).copied().unwrap_or(0);
+                self.fast_tri(ctx, vout, [wa, wb, wc], p.v, prov, mat);
+                return;
+            }
+        }
+        self.general(ctx, vout, wins, mats, p);
+    }
+
+    /// Sets up `p` when it is not an unclipped triangle for `fast_tri`: clipping, lines, points,
+    /// polygon modes, PHONG_WIN.
+    #[inline(never)]
+    fn general(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
         let s = ctx.layout.stride;
         let vert = |i: u32| {
             vout.get(i as usize * s..(i as usize + 1) * s)
                 .unwrap_or(&[])
         };
-        for p in asm {
-            let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
-            let prov = vert(p.provoking);
-            match p.n {
-                3 => {
-                    let w = |i: u32| wins.get(i as usize);
-                    let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
-                        continue;
-                    };
-                    let codes = [wa.code, wb.code, wc.code];
-                    if codes[0] & codes[1] & codes[2] != 0 {
-                        continue;
-                    }
-                    if ctx.fast && codes[0] | codes[1] | codes[2] == 0 {
-                        self.fast_tri(ctx, vout, [wa, wb, wc], p.v, prov, mat);
-                        continue;
-                    }
-                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                    let ws = [*wa, *wb, *wc];
-                    let mut edges = [false; MAX_POLY];
-                    for (k, e) in edges.iter_mut().take(3).enumerate() {
-                        *e = p.edges & (1 << k) != 0;
-                    }
-                    let planes = codes[0] | codes[1] | codes[2];
-                    if planes == 0 {
-                        self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
-                    } else {
-                        let mut a = std::mem::take(&mut self.a);
-                        let mut b = std::mem::take(&mut self.b);
-                        a.clear();
-                        for v in vs {
-                            a.extend_from_slice(v);
-                        }
-                        let n = ctx
-                            .clipper
-                            .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
-                        let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
-                        let mut cw = [Win::default(); MAX_POLY];
-                        for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
-                            *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
-                            *w = ctx.win(src);
-                        }
-                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
-                        self.a = a;
-                        self.b = b;
-                    }
+        let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
+        let prov = vert(p.provoking);
+        match p.n {
+            3 => {
+                let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
+                let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
+                let codes = [ws[0].code, ws[1].code, ws[2].code];
+                if codes[0] & codes[1] & codes[2] != 0 {
+                    return;
                 }
-                2 => {
-                    let vs = [vert(p.v[0]), vert(p.v[1])];
-                    let codes = vs.map(|v| ctx.clipper.code(v));
-                    if codes[0] & codes[1] != 0 {
-                        continue;
-                    }
-                    let planes = codes[0] | codes[1];
+                let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
+                let mut edges = [false; MAX_POLY];
+                for (k, e) in edges.iter_mut().take(3).enumerate() {
+                    *e = p.edges & (1 << k) != 0;
+                }
+                let planes = codes[0] | codes[1] | codes[2];
+                if planes == 0 {
+                    self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
+                } else {
                     let mut a = std::mem::take(&mut self.a);
+                    let mut b = std::mem::take(&mut self.b);
                     a.clear();
-                    a.extend_from_slice(vs[0]);
-                    a.extend_from_slice(vs[1]);
-                    if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
-                        let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
-                        let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
-                        self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
-                        self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
-                        self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                    for v in vs {
+                        a.extend_from_slice(v);
                     }
+                    let n = ctx
+                        .clipper
+                        .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
+                    let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
+                    let mut cw = [Win::default(); MAX_POLY];
+                    for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
+                        *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                        *w = ctx.win(src);
+                    }
+                    self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
                     self.a = a;
+                    self.b = b;
                 }
-                _ => {
-                    let v = vert(p.v[0]);
-                    if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
-                        let mut w = self.window(ctx, v);
-                        self.varyings(ctx, &mut w, v, false, prov);
-                        self.point(ctx, &w, 0.0, 0, mat);
-                    }
+            }
+            2 => {
+                let vs = [vert(p.v[0]), vert(p.v[1])];
+                let codes = vs.map(|v| ctx.clipper.code(v));
+                if codes[0] & codes[1] != 0 {
+                    return;
+                }
+                let planes = codes[0] | codes[1];
+                let mut a = std::mem::take(&mut self.a);
+                a.clear();
+                a.extend_from_slice(vs[0]);
+                a.extend_from_slice(vs[1]);
+                if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
+                    let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
+                    let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
+                    self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
+                    self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
+                    self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                }
+                self.a = a;
+            }
+            _ => {
+                let v = vert(p.v[0]);
+                if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
+                    let mut w = self.window(ctx, v);
+                    self.varyings(ctx, &mut w, v, false, prov);
+                    self.point(ctx, &w, 0.0, 0, mat);
                 }
             }
         }
@@ -605,6 +636,7 @@ impl Worker {
             flags,
             mat,
             |j, k| v[j].v[k],
+            None,
         );
     }
 
@@ -653,6 +685,20 @@ impl Worker {
         let ws = order.map(|j| w[j]);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
+        let quad = if ctx.rl.n == 4 && !flat {
+            let o = table[0].off as usize;
+            let c = |v: &[f32]| {
+                v.get(o..o + 4)
+                    .and_then(|c| <[f32; 4]>::try_from(c).ok())
+                    .map(Vec4::from_array)
+            };
+            match vs.map(c) {
+                [Some(a), Some(b), Some(c)] => Some([a, b, c]),
+                _ => None,
+            }
+        } else {
+            None
+        };
         self.emit_tri(
             ctx,
             &g,
@@ -665,12 +711,14 @@ impl Worker {
                 let src = if t.colour && flat { prov } else { vs[j] };
                 src.get(t.off as usize).copied().unwrap_or(0.0)
             },
+            quad,
         );
     }
 
     /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
-    /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j): barycentric planes,
-    /// depth plane, one plane per varying, and the primitive.
+    /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j, or `quad` the
+    /// vertices' four varyings when there are exactly four and none is flat): barycentric
+    /// planes, depth plane, one plane per varying, and the primitive.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn emit_tri(
@@ -682,6 +730,7 @@ impl Worker {
         flags: u8,
         mat: u32,
         var: impl Fn(usize, usize) -> f32,
+        quad: Option<[Vec4; 3]>,
     ) {
         let (area, bbox) = (g.area, g.bbox);
         let v = g.v;
@@ -726,26 +775,34 @@ impl Worker {
         } else {
             0
         };
-        let nv = ctx.rl.n.min(MAXV);
-        // The 1/w plane, then one plane per varying, written in one go.
-        let mut buf = [0.0f32; 3 * (MAXV + 1)];
-        if let Some(o) = buf.get_mut(..3) {
-            o.copy_from_slice(&plane(&l32, iw));
-        }
-        for k in 0..nv {
-            let f0 = var(0, k);
-            let o = if k < nflat {
-                [f0, 0.0, 0.0]
-            } else {
-                plane(&l32, [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]])
+        let voff = self.pool.len() as u32;
+        let pw = plane(&l32, iw);
+        if let (Some(f), 0) = (quad, nflat) {
+            // Four smooth varyings, one per SIMD lane: per lane the same multiplications and
+            // additions in the same order as `plane`, so the same bits.
+            let f = [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]];
+            let p = |c: usize| {
+                f[0] * Vec4::splat(l32[0][c])
+                    + f[1] * Vec4::splat(l32[1][c])
+                    + f[2] * Vec4::splat(l32[2][c])
             };
-            if let Some(d) = buf.get_mut(3 + 3 * k..6 + 3 * k) {
-                d.copy_from_slice(&o);
+            let (p0, px, py) = (p(0), p(1), p(2));
+            self.pool.extend_from_slice(&[
+                pw[0], pw[1], pw[2], p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w,
+                px.w, py.w,
+            ]);
+        } else {
+            self.pool.extend_from_slice(&pw);
+            for k in 0..ctx.rl.n.min(MAXV) {
+                let f0 = var(0, k);
+                if k < nflat {
+                    self.pool.extend_from_slice(&[f0, 0.0, 0.0]);
+                } else {
+                    let f = [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]];
+                    self.pool.extend_from_slice(&plane(&l32, f));
+                }
             }
         }
-        let voff = self.pool.len() as u32;
-        self.pool
-            .extend_from_slice(buf.get(..3 * (nv + 1)).unwrap_or(&[]));
         self.push(RPrim {
             kind: Kind::Tri,
             flags,
