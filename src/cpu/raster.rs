@@ -8,7 +8,7 @@
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
-use super::setup::{Kind, RPrim};
+use super::setup::{Kind, RPrim, COVER_KNOWN};
 
 /// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
 pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
@@ -36,6 +36,21 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
 
 fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
     let [x0, y0, x1, y1] = r;
+    if p.cover & COVER_KNOWN != 0 {
+        // At most 2x2 pixels whose covered centres setup already found: no edge walk.
+        let (bx, by) = (p.bbox[0], p.bbox[1]);
+        for y in y0..=y1 {
+            let row = (p.cover >> (2 * (y - by))) & 3;
+            // Columns x0..=x1 of the tile, relative to the bounding box (0 or 1).
+            let cols = row & (((2u8 << (x1 - bx)) - 1) & !((1u8 << (x0 - bx)) - 1));
+            if cols != 0 {
+                let l = bx + cols.trailing_zeros() as i32;
+                let h = bx + 7 - cols.leading_zeros() as i32;
+                ctx.tri_span(bufs, p, planes, y, l, h);
+            }
+        }
+        return;
+    }
     let edges = p.edges();
     if x1 - x0 < SMALL {
         // Narrow: test each pixel centre (additions only) instead of dividing per edge.

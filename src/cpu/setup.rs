@@ -94,6 +94,9 @@ pub const F_BACK: u8 = 2;
 /// Flag: evaluate lighting per fragment (PHONG_WIN triangle).
 pub const F_PHONG: u8 = 4;
 
+/// `RPrim::cover`: the low four bits are the covered pixel centres.
+pub const COVER_KNOWN: u8 = 0x10;
+
 /// One primitive ready for the tile rasteriser.
 #[derive(Clone, Copy, Debug)]
 pub struct RPrim {
@@ -112,6 +115,10 @@ pub struct RPrim {
     /// Triangle: bit k set when edge k (vertex k to k+1) owns the pixel centres exactly on it
     /// (the tie rule: left and bottom edges).
     pub owns: u8,
+    /// Triangle with a bounding box of at most 2x2 pixels: `COVER_KNOWN` plus bit
+    /// `2 * (y - bbox[1]) + (x - bbox[0])` for each pixel (x, y) whose centre it covers, as
+    /// setup found them; 0 when the rasteriser must walk the edges.
+    pub cover: u8,
     /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; point `[z, _, _]`. Single
     /// precision, as llvmpipe interpolates depth.
     pub z: [f32; 3],
@@ -622,7 +629,8 @@ impl Worker {
         let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
             return;
         };
-        if !g.may_cover() {
+        let cover = g.coverage();
+        if cover == COVER_KNOWN {
             // A sliver between pixel centres (common in dense meshes): nothing to draw.
             return;
         }
@@ -637,6 +645,7 @@ impl Worker {
             mat,
             |j, k| v[j].v[k],
             None,
+            cover,
         );
     }
 
@@ -668,7 +677,8 @@ impl Worker {
             Some(gl::FRONT_AND_BACK) => return,
             _ => {}
         }
-        if !g.may_cover() {
+        let cover = g.coverage();
+        if cover == COVER_KNOWN {
             return;
         }
         let back = !front;
@@ -676,13 +686,18 @@ impl Worker {
         if ctx.flat {
             flags |= F_FLAT;
         }
-        let order = if g.swapped { [0, 2, 1] } else { [0, 1, 2] };
+        // The vertices in `g.v`'s counter-clockwise order.
+        let (ids, ws) = if g.swapped {
+            ([ids[0], ids[2], ids[1]], [w[0], w[2], w[1]])
+        } else {
+            (ids, w)
+        };
         let s = ctx.layout.stride;
-        let vs = order.map(|j| {
-            let i = ids[j] as usize;
+        let vert = |i: u32| {
+            let i = i as usize;
             vout.get(i * s..(i + 1) * s).unwrap_or(&[])
-        });
-        let ws = order.map(|j| w[j]);
+        };
+        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let quad = if ctx.rl.n == 4 && !flat {
@@ -692,8 +707,8 @@ impl Worker {
                     .and_then(|c| <[f32; 4]>::try_from(c).ok())
                     .map(Vec4::from_array)
             };
-            match vs.map(c) {
-                [Some(a), Some(b), Some(c)] => Some([a, b, c]),
+            match (c(vs[0]), c(vs[1]), c(vs[2])) {
+                (Some(a), Some(b), Some(c)) => Some([a, b, c]),
                 _ => None,
             }
         } else {
@@ -712,13 +727,15 @@ impl Worker {
                 src.get(t.off as usize).copied().unwrap_or(0.0)
             },
             quad,
+            cover,
         );
     }
 
     /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
     /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j, or `quad` the
-    /// vertices' four varyings when there are exactly four and none is flat): barycentric
-    /// planes, depth plane, one plane per varying, and the primitive.
+    /// vertices' four varyings when there are exactly four and none is flat; `cover` from
+    /// `Geom::coverage`): barycentric planes, depth plane, one plane per varying, and the
+    /// primitive.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn emit_tri(
@@ -731,6 +748,7 @@ impl Worker {
         mat: u32,
         var: impl Fn(usize, usize) -> f32,
         quad: Option<[Vec4; 3]>,
+        cover: u8,
     ) {
         let (area, bbox) = (g.area, g.bbox);
         let v = g.v;
@@ -818,6 +836,7 @@ impl Worker {
                 v[2][1] as i32,
             ],
             owns: g.owns,
+            cover,
             z: zp,
         });
     }
@@ -849,6 +868,7 @@ impl Worker {
             voff,
             xy: [0; 6],
             owns: 0,
+            cover: 0,
             z: [(a.z + off) as f32, 0.0, 0.0],
         });
     }
@@ -915,30 +935,34 @@ pub(super) struct Geom {
 }
 
 impl Geom {
-    /// False when the triangle certainly covers no pixel centre: checked exactly for bounding
-    /// boxes of at most 2x2 pixels, assumed true for larger ones.
-    #[inline]
-    pub(super) fn may_cover(&self) -> bool {
+    /// For a bounding box of at most 2x2 pixels, `COVER_KNOWN` plus the covered centres (see
+    /// `RPrim::cover`), with the same edge functions and tie rule as the rasteriser; 0 for a
+    /// larger box. Exactly `COVER_KNOWN` means the triangle covers no pixel centre.
+    #[inline(always)]
+    pub(super) fn coverage(&self) -> u8 {
         let [x0, y0, x1, y1] = self.bbox;
         if x1 - x0 > 1 || y1 - y0 > 1 {
-            return true;
+            return 0;
         }
+        // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
+        // its exact integer increments; centres outside the box are masked off at the end.
         let v = self.v;
-        let e = |k: usize, px: i64, py: i64| {
+        let (px, py) = (i64::from(x0) * 256 + 128, i64::from(y0) * 256 + 128);
+        let mut inside = 0xf;
+        for k in 0..3 {
             let (p, q) = (v[k], v[(k + 1) % 3]);
             let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
             let bias = i64::from(self.owns & (1 << k) == 0);
-            dx * (py - p[1]) - dy * (px - p[0]) - bias
-        };
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let (px, py) = (i64::from(x) * 256 + 128, i64::from(y) * 256 + 128);
-                if e(0, px, py) >= 0 && e(1, px, py) >= 0 && e(2, px, py) >= 0 {
-                    return true;
-                }
-            }
+            let e = dx * (py - p[1]) - dy * (px - p[0]) - bias;
+            let (ex, ey) = (-dy * 256, dx * 256);
+            inside &= u8::from(e >= 0)
+                | u8::from(e + ex >= 0) << 1
+                | u8::from(e + ey >= 0) << 2
+                | u8::from(e + ex + ey >= 0) << 3;
         }
-        false
+        let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
+        let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
+        COVER_KNOWN | (inside & cols & rows)
     }
 }
 
