@@ -752,19 +752,15 @@ impl Worker {
     ) {
         let (area, bbox) = (g.area, g.bbox);
         let v = g.v;
-        let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
         let mut lam = [[0f64; 3]; 3];
         let inv = 1.0 / area as f64;
         for k in 0..3 {
-            let (p, q) = (v[k], v[(k + 1) % 3]);
-            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-            let e00 = dx * (128 - p[1]) - dy * (128 - p[0]);
-            let (ex, ey) = (-dy * 256, dx * 256);
+            let [dx, dy] = g.d[k];
             // Barycentric of the vertex opposite edge k, relative to the bbox corner.
             lam[(k + 2) % 3] = [
-                (e00 + ex * ox + ey * oy) as f64 * inv,
-                ex as f64 * inv,
-                ey as f64 * inv,
+                g.e[k] as f64 * inv,
+                (-dy * 256) as f64 * inv,
+                (dx * 256) as f64 * inv,
             ];
         }
         let mut zp = [0.0f64; 3];
@@ -932,6 +928,12 @@ pub(super) struct Geom {
     pub bbox: [i32; 4],
     /// Bit k: edge k (vertex k to k + 1) owns the centres on it.
     pub owns: u8,
+    /// Edge k's (dx, dy): vertex k + 1 minus vertex k.
+    pub d: [[i64; 2]; 3],
+    /// Edge k's function `dx·(py − y_k) − dy·(px − x_k)` at the centre of the bounding box's
+    /// corner pixel (without the tie-break bias): exact, shared by the coverage test and the
+    /// barycentric planes.
+    pub e: [i64; 3],
 }
 
 impl Geom {
@@ -946,14 +948,11 @@ impl Geom {
         }
         // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
         // its exact integer increments; centres outside the box are masked off at the end.
-        let v = self.v;
-        let (px, py) = (i64::from(x0) * 256 + 128, i64::from(y0) * 256 + 128);
         let mut inside = 0xf;
         for k in 0..3 {
-            let (p, q) = (v[k], v[(k + 1) % 3]);
-            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let [dx, dy] = self.d[k];
             let bias = i64::from(self.owns & (1 << k) == 0);
-            let e = dx * (py - p[1]) - dy * (px - p[0]) - bias;
+            let e = self.e[k] - bias;
             let (ex, ey) = (-dy * 256, dx * 256);
             inside &= u8::from(e >= 0)
                 | u8::from(e + ex >= 0) << 1
@@ -971,12 +970,6 @@ impl Geom {
 #[inline(always)]
 pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     let [a, b, c] = p;
-    let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
-    if area == 0 {
-        return None;
-    }
-    let swapped = area < 0;
-    let v = if swapped { [a, c, b] } else { [a, b, c] };
     let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
     let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
     // Pixels whose centre (i + 0.5) can lie inside.
@@ -991,12 +984,27 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
         return None;
     }
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    if area == 0 {
+        return None;
+    }
+    let swapped = area < 0;
+    let v = if swapped { [a, c, b] } else { [a, b, c] };
+    let (px, py) = (
+        i64::from(bbox[0]) * 256 + 128,
+        i64::from(bbox[1]) * 256 + 128,
+    );
     let mut owns = 0u8;
+    let mut d = [[0i64; 2]; 3];
+    let mut e = [0i64; 3];
     for k in 0..3 {
-        let (dx, dy) = (v[(k + 1) % 3][0] - v[k][0], v[(k + 1) % 3][1] - v[k][1]);
+        let (p, q) = (v[k], v[(k + 1) % 3]);
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
         // Tie rule, as llvmpipe applies it to a y-up window: a left edge (going down) or a
         // bottom edge (going right) owns the pixel centres exactly on it; other edges do not.
         owns |= u8::from(dy < 0 || (dy == 0 && dx > 0)) << k;
+        d[k] = [dx, dy];
+        e[k] = dx * (py - p[1]) - dy * (px - p[0]);
     }
     Some(Geom {
         v,
@@ -1004,6 +1012,8 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
         area: area.abs(),
         bbox,
         owns,
+        d,
+        e,
     })
 }
 
