@@ -771,26 +771,28 @@ impl Worker {
             zp[0] += offset(ctx, zp[1], zp[2]);
         }
         let zp = [zp[0] as f32, zp[1] as f32, zp[2] as f32];
-        // Varying planes in f32: relative to the bbox corner the values stay small.
-        let mut l32 = [[0.0f32; 3]; 3];
-        for (r, l) in l32.iter_mut().zip(&lam) {
-            *r = [l[0] as f32, l[1] as f32, l[2] as f32];
-        }
-        #[inline(always)]
-        fn plane(l: &[[f32; 3]; 3], f: [f32; 3]) -> [f32; 3] {
+        // Varying planes in f32: relative to the bbox corner the values stay small. (Kept as
+        // nine scalars: built as an array, its rows went through the stack and were reloaded
+        // as vectors, a store-forwarding stall.)
+        let l32 = [
+            [lam[0][0] as f32, lam[0][1] as f32, lam[0][2] as f32],
+            [lam[1][0] as f32, lam[1][1] as f32, lam[1][2] as f32],
+            [lam[2][0] as f32, lam[2][1] as f32, lam[2][2] as f32],
+        ];
+        let plane = |f: [f32; 3]| -> [f32; 3] {
             [
-                f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
-                f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
-                f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+                f[0] * l32[0][0] + f[1] * l32[1][0] + f[2] * l32[2][0],
+                f[0] * l32[0][1] + f[1] * l32[1][1] + f[2] * l32[2][1],
+                f[0] * l32[0][2] + f[1] * l32[1][2] + f[2] * l32[2][2],
             ]
-        }
+        };
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
         let voff = self.pool.len() as u32;
-        let pw = plane(&l32, iw);
+        let pw = plane(iw);
         if let (Some(f), 0) = (quad, nflat) {
             // Four smooth varyings, one per SIMD lane: per lane the same multiplications and
             // additions in the same order as `plane`, so the same bits.
@@ -813,7 +815,7 @@ impl Worker {
                     self.pool.extend_from_slice(&[f0, 0.0, 0.0]);
                 } else {
                     let f = [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]];
-                    self.pool.extend_from_slice(&plane(&l32, f));
+                    self.pool.extend_from_slice(&plane(f));
                 }
             }
         }
