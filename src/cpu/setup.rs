@@ -7,6 +7,11 @@
 //! (left and bottom edges own their centres, as llvmpipe in a y-up window), so two triangles sharing an edge never both cover a pixel on it. Attributes become
 //! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
 //! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
+//!
+//! The common triangle (no clipping, FILL for both faces, no PHONG_WIN) takes
+//! `Worker::fast_tri`: facing, culling and the coverage test use only the vertex stage's
+//! compact window records, and varyings are read only for triangles that cover a pixel centre
+//! (about half in a dense mesh); it computes exactly what the general path does.
 
 use glam::Vec4;
 
