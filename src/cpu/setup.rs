@@ -415,11 +415,7 @@ impl Worker {
                 return;
             }
             if ctx.fast && wa.code | wb.code | wc.code == 0 {
-                let s = ctx.layout.stride;
-                let i = p.provoking as usize;
-                let prov = vout.get(i * s..(i + 1) * s).unwrap_or(&[]);
-                let mat = mats.get(i).copied().unwrap_or(0);
-                self.fast_tri(ctx, vout, [wa, wb, wc], p.v, prov, mat);
+                self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking);
                 return;
             }
         }
@@ -663,10 +659,10 @@ impl Worker {
         &mut self,
         ctx: &SetupCtx,
         vout: &[f32],
+        mats: &[u32],
         w: [&Win; 3],
         ids: [u32; 3],
-        prov: &[f32],
-        mat: u32,
+        provoking: u32,
     ) {
         let Some(g) = geom(
             &ctx.rect,
@@ -703,6 +699,8 @@ impl Worker {
             vout.get(i * s..(i + 1) * s).unwrap_or(&[])
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
+        let prov = vert(provoking);
+        let mat = mats.get(provoking as usize).copied().unwrap_or(0);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let quad = if ctx.rl.n == 4 && !flat {
@@ -982,15 +980,18 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     // Pixels whose centre (i + 0.5) can lie inside.
     let lo = |m: i64| -((128 - m).div_euclid(256));
     let hi = |m: i64| (m - 128).div_euclid(256);
-    let bbox = [
-        clamp_i32(lo(minx)).max(rect[0]),
-        clamp_i32(lo(miny)).max(rect[1]),
-        clamp_i32(hi(maxx)).min(rect[2]),
-        clamp_i32(hi(maxy)).min(rect[3]),
+    // Cut to `rect` in i64; a non-empty result lies inside `rect`, so it fits i32.
+    let r = rect.map(i64::from);
+    let b64 = [
+        lo(minx).max(r[0]),
+        lo(miny).max(r[1]),
+        hi(maxx).min(r[2]),
+        hi(maxy).min(r[3]),
     ];
-    if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
+    if b64[0] > b64[2] || b64[1] > b64[3] {
         return None;
     }
+    let bbox = b64.map(|v| v as i32);
     let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
     if area == 0 {
         return None;
@@ -1040,10 +1041,6 @@ fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
 fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
     let m = dzdx.abs().max(dzdy.abs());
     ctx.factor * m + ctx.units / f64::from(1u32 << 24)
-}
-
-fn clamp_i32(v: i64) -> i32 {
-    v.clamp(i64::from(i32::MIN / 2), i64::from(i32::MAX / 2)) as i32
 }
 
 fn clamp_f(v: f32) -> i32 {
