@@ -271,14 +271,24 @@ impl FragCtx<'_> {
         if let Some(ops) = &self.ops {
             return self.full_span(ops, bufs, p, planes, fy, zrow, base, x0, n);
         }
-        // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits).
-        let mut mask: u64 = 0;
-        for k in 0..n.min(64) {
-            let z = zrow + p.z[1] * (x0 - ox + k as i32) as f32;
-            if self.depth(bufs, base + k, f64::from(z)) {
-                mask |= 1 << k;
+        // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits), the
+        // comparison chosen once per span.
+        let (fx0, dz) = (x0 - ox, p.z[1]);
+        let mut mask = if !self.depth_test {
+            u64::MAX >> (64 - n.clamp(1, 64))
+        } else {
+            let (b, z) = (base, zrow);
+            match self.depth_func {
+                gl::NEVER => 0,
+                gl::LESS => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d < s),
+                gl::EQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d == s),
+                gl::LEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d <= s),
+                gl::GREATER => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d > s),
+                gl::NOTEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d != s),
+                gl::GEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d >= s),
+                _ => self.depth_span(bufs, b, n, z, dz, fx0, |_, _| true),
             }
-        }
+        };
         if mask == 0 {
             return;
         }
@@ -345,6 +355,39 @@ impl FragCtx<'_> {
             let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);
         }
+    }
+
+    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
+    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
+    /// k of the result set when fragment k survives.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn depth_span(
+        &self,
+        bufs: &mut TileBufs,
+        base: usize,
+        n: usize,
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+        pass: impl Fn(u32, u32) -> bool,
+    ) -> u64 {
+        let end = (base + n.min(64)).min(bufs.depth.len());
+        let Some(row) = bufs.depth.get_mut(base..end) else {
+            return 0;
+        };
+        let mut mask = 0;
+        for (k, stored) in row.iter_mut().enumerate() {
+            let z = zrow + dz * (fx0 + k as i32) as f32;
+            let d = depth_unorm(f64::from(z));
+            if pass(d, *stored) {
+                if self.depth_mask {
+                    *stored = d;
+                }
+                mask |= 1 << k;
+            }
+        }
+        mask
     }
 
     /// Texture level of detail of both units for the 2x2 quad holding window pixel (x, y), from

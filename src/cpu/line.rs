@@ -231,6 +231,7 @@ impl Worker {
                     g.v[2][1] as i32,
                 ],
                 owns: g.owns,
+                cover: 0,
                 z: lin(za, zb),
             });
         }

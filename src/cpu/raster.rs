@@ -3,12 +3,15 @@
 //!
 //! Design decision: triangles are walked row by row; on each row the covered pixels form one run
 //! whose ends come straight from the three integer edge functions (a division per edge, no
-//! per-pixel edge test), and the run goes to the fragment stage as a span. Lines arrive as
-//! parallelograms made of two triangles (see `line`); points are `round(size)` squares.
+//! per-pixel edge test), and the run goes to the fragment stage as a span. A triangle whose
+//! bounding box is at most 2x2 pixels (most of a dense mesh) arrives with its covered centres
+//! already found by setup (`RPrim::cover`, the same integer tests) and is not walked at all.
+//! Lines arrive as parallelograms made of two triangles (see `line`); points are `round(size)`
+//! squares.
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
-use super::setup::{Kind, RPrim};
+use super::setup::{Kind, RPrim, COVER_KNOWN};
 
 /// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
 pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
@@ -36,6 +39,21 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
 
 fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
     let [x0, y0, x1, y1] = r;
+    if p.cover & COVER_KNOWN != 0 {
+        // At most 2x2 pixels whose covered centres setup already found: no edge walk.
+        let (bx, by) = (p.bbox[0], p.bbox[1]);
+        for y in y0..=y1 {
+            let row = (p.cover >> (2 * (y - by))) & 3;
+            // Columns x0..=x1 of the tile, relative to the bounding box (0 or 1).
+            let cols = row & (((2u8 << (x1 - bx)) - 1) & !((1u8 << (x0 - bx)) - 1));
+            if cols != 0 {
+                let l = bx + cols.trailing_zeros() as i32;
+                let h = bx + 7 - cols.leading_zeros() as i32;
+                ctx.tri_span(bufs, p, planes, y, l, h);
+            }
+        }
+        return;
+    }
     let edges = p.edges();
     if x1 - x0 < SMALL {
         // Narrow: test each pixel centre (additions only) instead of dividing per edge.
@@ -80,3 +98,60 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
 
 /// Bounding boxes narrower than this are scanned pixel by pixel.
 const SMALL: i32 = 12;
+
+#[cfg(test)]
+mod tests {
+    use super::super::setup::{geom, COVER_KNOWN};
+
+    const RECT: [i32; 4] = [0, 0, 99, 99];
+
+    /// Coverage of a triangle given in 1/256 pixel, as setup hands it to the rasteriser.
+    fn cover(p: [[i64; 2]; 3]) -> Option<u8> {
+        geom(&RECT, p).map(|g| g.coverage())
+    }
+
+    #[test]
+    fn one_pixel_box_covered_or_not() {
+        // Legs of 300/256 px: the centre (128, 128) has x + y = 256 < 300, inside.
+        assert_eq!(cover([[0, 0], [300, 0], [0, 300]]), Some(COVER_KNOWN | 1));
+        // Legs of 200/256 px: the same box (pixel 0), but x + y = 256 > 200, outside.
+        assert_eq!(cover([[0, 0], [200, 0], [0, 200]]), Some(COVER_KNOWN));
+        // Clockwise input gives the same answer (setup reorders it).
+        assert_eq!(cover([[0, 0], [0, 300], [300, 0]]), Some(COVER_KNOWN | 1));
+    }
+
+    #[test]
+    fn two_by_two_box_mask() {
+        // Legs of 600/256 px: centres (128|384, 128|384); x + y < 600 except (384, 384).
+        // Bits: 2·row + column.
+        assert_eq!(
+            cover([[0, 0], [600, 0], [0, 600]]),
+            Some(COVER_KNOWN | 0b0111)
+        );
+        // Shifted one pixel right and up: same mask, relative to the box corner (1, 1).
+        let s = |v: [i64; 2]| [v[0] + 256, v[1] + 256];
+        let g = geom(&RECT, [s([0, 0]), s([600, 0]), s([0, 600])]);
+        assert_eq!(g.as_ref().map(|g| g.bbox), Some([1, 1, 2, 2]));
+        assert_eq!(g.map(|g| g.coverage()), Some(COVER_KNOWN | 0b0111));
+    }
+
+    #[test]
+    fn one_row_and_one_column_boxes() {
+        // 600 wide, 380 high: box 2x1; centres (128, 128) and (384, 128) satisfy
+        // x/600 + y/380 < 1 (0.55 and 0.98): bits 0 and 1.
+        assert_eq!(
+            cover([[0, 0], [600, 0], [0, 380]]),
+            Some(COVER_KNOWN | 0b0011)
+        );
+        // Transposed: box 1x2, pixels (0, 0) and (0, 1): bits 0 and 2.
+        assert_eq!(
+            cover([[0, 0], [380, 0], [0, 600]]),
+            Some(COVER_KNOWN | 0b0101)
+        );
+    }
+
+    #[test]
+    fn larger_box_is_left_to_the_edge_walk() {
+        assert_eq!(cover([[0, 0], [900, 0], [0, 900]]), Some(0));
+    }
+}

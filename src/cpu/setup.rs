@@ -7,6 +7,13 @@
 //! (left and bottom edges own their centres, as llvmpipe in a y-up window), so two triangles sharing an edge never both cover a pixel on it. Attributes become
 //! planes of (attribute / w) and 1 / w over the pixel grid, relative to the primitive's bounding
 //! box corner, which is what perspective-correct interpolation needs (§3.5.1, eq. 3.9).
+//!
+//! The common triangle (no clipping, FILL for both faces, no PHONG_WIN) takes
+//! `Worker::fast_tri`: facing, culling and the coverage test use only the vertex stage's
+//! compact window records, and varyings are read only for triangles that cover a pixel centre
+//! (about half in a dense mesh); it computes exactly what the general path does.
+
+use glam::Vec4;
 
 use super::assembly::Asm;
 use super::batch::{Batch, Prim};
@@ -92,6 +99,9 @@ pub const F_BACK: u8 = 2;
 /// Flag: evaluate lighting per fragment (PHONG_WIN triangle).
 pub const F_PHONG: u8 = 4;
 
+/// `RPrim::cover`: the low four bits are the covered pixel centres.
+pub const COVER_KNOWN: u8 = 0x10;
+
 /// One primitive ready for the tile rasteriser.
 #[derive(Clone, Copy, Debug)]
 pub struct RPrim {
@@ -110,6 +120,10 @@ pub struct RPrim {
     /// Triangle: bit k set when edge k (vertex k to k+1) owns the pixel centres exactly on it
     /// (the tie rule: left and bottom edges).
     pub owns: u8,
+    /// Triangle with a bounding box of at most 2x2 pixels: `COVER_KNOWN` plus bit
+    /// `2 * (y - bbox[1]) + (x - bbox[0])` for each pixel (x, y) whose centre it covers, as
+    /// setup found them; 0 when the rasteriser must walk the edges.
+    pub cover: u8,
     /// Window z: triangle plane `[z at bbox corner, dz/dx, dz/dy]`; point `[z, _, _]`. Single
     /// precision, as llvmpipe interpolates depth.
     pub z: [f32; 3],
@@ -168,6 +182,59 @@ pub struct SetupCtx {
     pub tiles_x: usize,
     /// Total tiles.
     pub tiles: usize,
+    /// Unclipped triangles take `Worker::fast_tri`: FILL for both faces and no PHONG_WIN.
+    fast: bool,
+    /// Where each varying comes from, front face then back face (for `fast_tri`).
+    gather: [[Gather; MAXV]; 2],
+}
+
+/// Where one varying of a face comes from in a processed vertex.
+#[derive(Clone, Copy, Debug)]
+struct Gather {
+    /// Offset in the processed vertex; out of range (`u32::MAX`) for a varying that stays 0.
+    off: u32,
+    /// A colour: taken from the provoking vertex under FLAT.
+    colour: bool,
+}
+
+/// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN.
+fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
+    let mut t = [Gather {
+        off: u32::MAX,
+        colour: false,
+    }; MAXV];
+    let mut set = |d: usize, s: usize, n: usize, colour: bool| {
+        for i in 0..n {
+            if let Some(g) = t.get_mut(d + i) {
+                *g = Gather {
+                    off: (s + i) as u32,
+                    colour,
+                };
+            }
+        }
+    };
+    let (col, spec) = match (back, l.col_b) {
+        (true, Some(cb)) => (cb, l.spec_b),
+        _ => (l.col, l.spec),
+    };
+    set(0, col, 4, true);
+    if let (Some(d), Some(s)) = (rl.spec, spec) {
+        set(d, s, 4, true);
+    }
+    if let (Some(d), Some(s)) = (rl.tex, l.tex) {
+        set(d, s, 4, false);
+    }
+    // --- texture: unit 1's coordinates
+    if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
+        set(d, s, 4, false);
+    }
+    // --- end texture
+    // --- fragment ops
+    if let (Some(d), Some(s)) = (rl.fog, l.fog) {
+        set(d, s, 1, false);
+    }
+    // --- end fragment ops
+    t
 }
 
 impl SetupCtx {
@@ -185,9 +252,10 @@ impl SetupCtx {
     pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
         let [vx, vy, vw, vh] = state.viewport.map(f64::from);
         let [n, f] = state.depth_range;
+        let rl = RLayout::new(&layout);
         SetupCtx {
             layout,
-            rl: RLayout::new(&layout),
+            rl,
             clipper: Clipper::new(state, &layout),
             scale: [vw / 2.0, vh / 2.0, (f - n) / 2.0],
             offset: [vx + vw / 2.0, vy + vh / 2.0, (n + f) / 2.0],
@@ -209,6 +277,11 @@ impl SetupCtx {
             rect,
             tiles_x: tiles.0,
             tiles: tiles.0 * tiles.1,
+            fast: state.polygon_mode == [gl::FILL; 2] && layout.nrm.is_none(),
+            gather: [
+                gather_table(&layout, &rl, false),
+                gather_table(&layout, &rl, true),
+            ],
         }
     }
 }
@@ -312,6 +385,14 @@ impl Worker {
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
     /// coordinates, `mats` their material indices).
     pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
+        self.start(ctx);
+        for p in asm {
+            self.one(ctx, vout, wins, mats, p);
+        }
+    }
+
+    /// Empties the outputs for a new run.
+    fn start(&mut self, ctx: &SetupCtx) {
         self.prims.clear();
         self.pool.clear();
         self.bins.resize_with(ctx.tiles, Vec::new);
@@ -319,78 +400,102 @@ impl Worker {
         for b in &mut self.bins {
             b.clear();
         }
+    }
+
+    /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
+    /// out of line in `general`.
+    #[inline(always)]
+    fn one(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
+        if p.n == 3 {
+            let w = |i: u32| wins.get(i as usize);
+            let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
+                return;
+            };
+            if wa.code & wb.code & wc.code != 0 {
+                return;
+            }
+            if ctx.fast && wa.code | wb.code | wc.code == 0 {
+                self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking);
+                return;
+            }
+        }
+        self.general(ctx, vout, wins, mats, p);
+    }
+
+    /// Sets up `p` when it is not an unclipped triangle for `fast_tri`: clipping, lines, points,
+    /// polygon modes, PHONG_WIN.
+    #[inline(never)]
+    fn general(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
         let s = ctx.layout.stride;
         let vert = |i: u32| {
             vout.get(i as usize * s..(i as usize + 1) * s)
                 .unwrap_or(&[])
         };
-        for p in asm {
-            let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
-            let prov = vert(p.provoking);
-            match p.n {
-                3 => {
-                    let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                    let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
-                    let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
-                    let codes = [ws[0].code, ws[1].code, ws[2].code];
-                    if codes[0] & codes[1] & codes[2] != 0 {
-                        continue;
-                    }
-                    let mut edges = [false; MAX_POLY];
-                    for (k, e) in edges.iter_mut().take(3).enumerate() {
-                        *e = p.edges & (1 << k) != 0;
-                    }
-                    let planes = codes[0] | codes[1] | codes[2];
-                    if planes == 0 {
-                        self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
-                    } else {
-                        let mut a = std::mem::take(&mut self.a);
-                        let mut b = std::mem::take(&mut self.b);
-                        a.clear();
-                        for v in vs {
-                            a.extend_from_slice(v);
-                        }
-                        let n = ctx
-                            .clipper
-                            .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
-                        let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
-                        let mut cw = [Win::default(); MAX_POLY];
-                        for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
-                            *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
-                            *w = ctx.win(src);
-                        }
-                        self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
-                        self.a = a;
-                        self.b = b;
-                    }
+        let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
+        let prov = vert(p.provoking);
+        match p.n {
+            3 => {
+                let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
+                let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
+                let codes = [ws[0].code, ws[1].code, ws[2].code];
+                if codes[0] & codes[1] & codes[2] != 0 {
+                    return;
                 }
-                2 => {
-                    let vs = [vert(p.v[0]), vert(p.v[1])];
-                    let codes = vs.map(|v| ctx.clipper.code(v));
-                    if codes[0] & codes[1] != 0 {
-                        continue;
-                    }
-                    let planes = codes[0] | codes[1];
+                let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
+                let mut edges = [false; MAX_POLY];
+                for (k, e) in edges.iter_mut().take(3).enumerate() {
+                    *e = p.edges & (1 << k) != 0;
+                }
+                let planes = codes[0] | codes[1] | codes[2];
+                if planes == 0 {
+                    self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
+                } else {
                     let mut a = std::mem::take(&mut self.a);
+                    let mut b = std::mem::take(&mut self.b);
                     a.clear();
-                    a.extend_from_slice(vs[0]);
-                    a.extend_from_slice(vs[1]);
-                    if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
-                        let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
-                        let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
-                        self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
-                        self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
-                        self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                    for v in vs {
+                        a.extend_from_slice(v);
                     }
+                    let n = ctx
+                        .clipper
+                        .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
+                    let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
+                    let mut cw = [Win::default(); MAX_POLY];
+                    for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
+                        *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
+                        *w = ctx.win(src);
+                    }
+                    self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
                     self.a = a;
+                    self.b = b;
                 }
-                _ => {
-                    let v = vert(p.v[0]);
-                    if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
-                        let mut w = self.window(ctx, v);
-                        self.varyings(ctx, &mut w, v, false, prov);
-                        self.point(ctx, &w, 0.0, 0, mat);
-                    }
+            }
+            2 => {
+                let vs = [vert(p.v[0]), vert(p.v[1])];
+                let codes = vs.map(|v| ctx.clipper.code(v));
+                if codes[0] & codes[1] != 0 {
+                    return;
+                }
+                let planes = codes[0] | codes[1];
+                let mut a = std::mem::take(&mut self.a);
+                a.clear();
+                a.extend_from_slice(vs[0]);
+                a.extend_from_slice(vs[1]);
+                if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
+                    let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
+                    let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
+                    self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
+                    self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
+                    self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                }
+                self.a = a;
+            }
+            _ => {
+                let v = vert(p.v[0]);
+                if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
+                    let mut w = self.window(ctx, v);
+                    self.varyings(ctx, &mut w, v, false, prov);
+                    self.point(ctx, &w, 0.0, 0, mat);
                 }
             }
         }
@@ -525,64 +630,196 @@ impl Worker {
         let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
             return;
         };
-        if !g.may_cover() {
+        let cover = g.coverage();
+        if cover == COVER_KNOWN {
             // A sliver between pixel centres (common in dense meshes): nothing to draw.
             return;
         }
         let (b, c) = if g.swapped { (c, b) } else { (b, c) };
-        let (area, bbox) = (g.area, g.bbox);
         let v = [a, b, c];
-        let (ox, oy) = (i64::from(bbox[0]), i64::from(bbox[1]));
+        self.emit_tri(
+            ctx,
+            &g,
+            [a.z, b.z, c.z],
+            [a.iw, b.iw, c.iw],
+            flags,
+            mat,
+            |j, k| v[j].v[k],
+            None,
+            cover,
+        );
+    }
+
+    /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
+    /// vertex stage's output: facing, culling and the coverage reject use only the window
+    /// records `w` of vertices `ids`; varyings are read from `vout` only for a triangle that may
+    /// cover a pixel centre. Produces exactly what `polygon::<3>` and `tri` produce.
+    #[inline(always)]
+    fn fast_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        mats: &[u32],
+        w: [&Win; 3],
+        ids: [u32; 3],
+        provoking: u32,
+    ) {
+        let Some(g) = geom(
+            &ctx.rect,
+            [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
+        ) else {
+            return;
+        };
+        // §3.5.1 eq. 3.6: `swapped` means a negative signed area (clockwise).
+        let front = g.swapped != ctx.ccw_front;
+        match ctx.cull {
+            Some(gl::FRONT) if front => return,
+            Some(gl::BACK) if !front => return,
+            Some(gl::FRONT_AND_BACK) => return,
+            _ => {}
+        }
+        let cover = g.coverage();
+        if cover == COVER_KNOWN {
+            return;
+        }
+        let back = !front;
+        let mut flags = if back { F_BACK } else { 0 };
+        if ctx.flat {
+            flags |= F_FLAT;
+        }
+        // The vertices in `g.v`'s counter-clockwise order.
+        let (ids, ws) = if g.swapped {
+            ([ids[0], ids[2], ids[1]], [w[0], w[2], w[1]])
+        } else {
+            (ids, w)
+        };
+        let s = ctx.layout.stride;
+        let vert = |i: u32| {
+            let i = i as usize;
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        };
+        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
+        let prov = vert(provoking);
+        let mat = mats.get(provoking as usize).copied().unwrap_or(0);
+        let table = &ctx.gather[usize::from(back)];
+        let flat = ctx.flat;
+        let quad = if ctx.rl.n == 4 && !flat {
+            let o = table[0].off as usize;
+            let c = |v: &[f32]| {
+                v.get(o..o + 4)
+                    .and_then(|c| <[f32; 4]>::try_from(c).ok())
+                    .map(Vec4::from_array)
+            };
+            match (c(vs[0]), c(vs[1]), c(vs[2])) {
+                (Some(a), Some(b), Some(c)) => Some([a, b, c]),
+                _ => None,
+            }
+        } else {
+            None
+        };
+        self.emit_tri(
+            ctx,
+            &g,
+            [ws[0].z, ws[1].z, ws[2].z],
+            [ws[0].iw, ws[1].iw, ws[2].iw],
+            flags,
+            mat,
+            |j, k| {
+                let t = table[k];
+                let src = if t.colour && flat { prov } else { vs[j] };
+                src.get(t.off as usize).copied().unwrap_or(0.0)
+            },
+            quad,
+            cover,
+        );
+    }
+
+    /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
+    /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j, or `quad` the
+    /// vertices' four varyings when there are exactly four and none is flat; `cover` from
+    /// `Geom::coverage`): barycentric planes, depth plane, one plane per varying, and the
+    /// primitive.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn emit_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        g: &Geom,
+        z: [f64; 3],
+        iw: [f32; 3],
+        flags: u8,
+        mat: u32,
+        var: impl Fn(usize, usize) -> f32,
+        quad: Option<[Vec4; 3]>,
+        cover: u8,
+    ) {
+        let (area, bbox) = (g.area, g.bbox);
+        let v = g.v;
         let mut lam = [[0f64; 3]; 3];
         let inv = 1.0 / area as f64;
         for k in 0..3 {
-            let (p, q) = (v[k], v[(k + 1) % 3]);
-            let (dx, dy) = (q.fx - p.fx, q.fy - p.fy);
-            let e00 = dx * (128 - p.fy) - dy * (128 - p.fx);
-            let (ex, ey) = (-dy * 256, dx * 256);
+            let [dx, dy] = g.d[k];
             // Barycentric of the vertex opposite edge k, relative to the bbox corner.
             lam[(k + 2) % 3] = [
-                (e00 + ex * ox + ey * oy) as f64 * inv,
-                ex as f64 * inv,
-                ey as f64 * inv,
+                g.e[k] as f64 * inv,
+                (-dy * 256) as f64 * inv,
+                (dx * 256) as f64 * inv,
             ];
         }
-        let mut z = [0.0f64; 3];
-        for (j, zj) in z.iter_mut().enumerate() {
-            *zj = a.z * lam[0][j] + b.z * lam[1][j] + c.z * lam[2][j];
+        let mut zp = [0.0f64; 3];
+        for (j, zj) in zp.iter_mut().enumerate() {
+            *zj = z[0] * lam[0][j] + z[1] * lam[1][j] + z[2] * lam[2][j];
         }
         if ctx.offset_on[0] {
-            z[0] += offset(ctx, z[1], z[2]);
+            zp[0] += offset(ctx, zp[1], zp[2]);
         }
-        let z = [z[0] as f32, z[1] as f32, z[2] as f32];
-        // Varying planes in f32: relative to the bbox corner the values stay small.
-        let mut l32 = [[0.0f32; 3]; 3];
-        for (r, l) in l32.iter_mut().zip(&lam) {
-            *r = [l[0] as f32, l[1] as f32, l[2] as f32];
-        }
-        #[inline(always)]
-        fn plane(l: &[[f32; 3]; 3], f: [f32; 3]) -> [f32; 3] {
+        let zp = [zp[0] as f32, zp[1] as f32, zp[2] as f32];
+        // Varying planes in f32: relative to the bbox corner the values stay small. (Kept as
+        // nine scalars: built as an array, its rows went through the stack and were reloaded
+        // as vectors, a store-forwarding stall.)
+        let l32 = [
+            [lam[0][0] as f32, lam[0][1] as f32, lam[0][2] as f32],
+            [lam[1][0] as f32, lam[1][1] as f32, lam[1][2] as f32],
+            [lam[2][0] as f32, lam[2][1] as f32, lam[2][2] as f32],
+        ];
+        let plane = |f: [f32; 3]| -> [f32; 3] {
             [
-                f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
-                f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
-                f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+                f[0] * l32[0][0] + f[1] * l32[1][0] + f[2] * l32[2][0],
+                f[0] * l32[0][1] + f[1] * l32[1][1] + f[2] * l32[2][1],
+                f[0] * l32[0][2] + f[1] * l32[1][2] + f[2] * l32[2][2],
             ]
-        }
-        let voff = self.pool.len() as u32;
-        let iw = [a.iw, b.iw, c.iw];
-        self.pool.extend(plane(&l32, iw));
+        };
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
-        for k in 0..ctx.rl.n.min(MAXV) {
-            let f = [a.v[k], b.v[k], c.v[k]];
-            if k < nflat {
-                self.pool.extend([f[0], 0.0, 0.0]);
-            } else {
-                self.pool
-                    .extend(plane(&l32, [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]]));
+        let voff = self.pool.len() as u32;
+        let pw = plane(iw);
+        if let (Some(f), 0) = (quad, nflat) {
+            // Four smooth varyings, one per SIMD lane: per lane the same multiplications and
+            // additions in the same order as `plane`, so the same bits.
+            let f = [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]];
+            let p = |c: usize| {
+                f[0] * Vec4::splat(l32[0][c])
+                    + f[1] * Vec4::splat(l32[1][c])
+                    + f[2] * Vec4::splat(l32[2][c])
+            };
+            let (p0, px, py) = (p(0), p(1), p(2));
+            self.pool.extend_from_slice(&[
+                pw[0], pw[1], pw[2], p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w,
+                px.w, py.w,
+            ]);
+        } else {
+            self.pool.extend_from_slice(&pw);
+            for k in 0..ctx.rl.n.min(MAXV) {
+                let f0 = var(0, k);
+                if k < nflat {
+                    self.pool.extend_from_slice(&[f0, 0.0, 0.0]);
+                } else {
+                    let f = [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]];
+                    self.pool.extend_from_slice(&plane(f));
+                }
             }
         }
         self.push(RPrim {
@@ -592,15 +829,16 @@ impl Worker {
             mat,
             voff,
             xy: [
-                a.fx as i32,
-                a.fy as i32,
-                b.fx as i32,
-                b.fy as i32,
-                c.fx as i32,
-                c.fy as i32,
+                v[0][0] as i32,
+                v[0][1] as i32,
+                v[1][0] as i32,
+                v[1][1] as i32,
+                v[2][0] as i32,
+                v[2][1] as i32,
             ],
             owns: g.owns,
-            z,
+            cover,
+            z: zp,
         });
     }
 
@@ -631,6 +869,7 @@ impl Worker {
             voff,
             xy: [0; 6],
             owns: 0,
+            cover: 0,
             z: [(a.z + off) as f32, 0.0, 0.0],
         });
     }
@@ -694,33 +933,40 @@ pub(super) struct Geom {
     pub bbox: [i32; 4],
     /// Bit k: edge k (vertex k to k + 1) owns the centres on it.
     pub owns: u8,
+    /// Edge k's (dx, dy): vertex k + 1 minus vertex k.
+    pub d: [[i64; 2]; 3],
+    /// Edge k's function `dx·(py − y_k) − dy·(px − x_k)` at the centre of the bounding box's
+    /// corner pixel (without the tie-break bias): exact, shared by the coverage test and the
+    /// barycentric planes.
+    pub e: [i64; 3],
 }
 
 impl Geom {
-    /// False when the triangle certainly covers no pixel centre: checked exactly for bounding
-    /// boxes of at most 2x2 pixels, assumed true for larger ones.
-    #[inline]
-    pub(super) fn may_cover(&self) -> bool {
+    /// For a bounding box of at most 2x2 pixels, `COVER_KNOWN` plus the covered centres (see
+    /// `RPrim::cover`), with the same edge functions and tie rule as the rasteriser; 0 for a
+    /// larger box. Exactly `COVER_KNOWN` means the triangle covers no pixel centre.
+    #[inline(always)]
+    pub(super) fn coverage(&self) -> u8 {
         let [x0, y0, x1, y1] = self.bbox;
         if x1 - x0 > 1 || y1 - y0 > 1 {
-            return true;
+            return 0;
         }
-        let v = self.v;
-        let e = |k: usize, px: i64, py: i64| {
-            let (p, q) = (v[k], v[(k + 1) % 3]);
-            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
+        // its exact integer increments; centres outside the box are masked off at the end.
+        let mut inside = 0xf;
+        for k in 0..3 {
+            let [dx, dy] = self.d[k];
             let bias = i64::from(self.owns & (1 << k) == 0);
-            dx * (py - p[1]) - dy * (px - p[0]) - bias
-        };
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let (px, py) = (i64::from(x) * 256 + 128, i64::from(y) * 256 + 128);
-                if e(0, px, py) >= 0 && e(1, px, py) >= 0 && e(2, px, py) >= 0 {
-                    return true;
-                }
-            }
+            let e = self.e[k] - bias;
+            let (ex, ey) = (-dy * 256, dx * 256);
+            inside &= u8::from(e >= 0)
+                | u8::from(e + ex >= 0) << 1
+                | u8::from(e + ey >= 0) << 2
+                | u8::from(e + ex + ey >= 0) << 3;
         }
-        false
+        let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
+        let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
+        COVER_KNOWN | (inside & cols & rows)
     }
 }
 
@@ -729,32 +975,44 @@ impl Geom {
 #[inline(always)]
 pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     let [a, b, c] = p;
+    let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+    let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+    // Pixels whose centre (i + 0.5) can lie inside.
+    let lo = |m: i64| -((128 - m).div_euclid(256));
+    let hi = |m: i64| (m - 128).div_euclid(256);
+    // Cut to `rect` in i64; a non-empty result lies inside `rect`, so it fits i32.
+    let r = rect.map(i64::from);
+    let b64 = [
+        lo(minx).max(r[0]),
+        lo(miny).max(r[1]),
+        hi(maxx).min(r[2]),
+        hi(maxy).min(r[3]),
+    ];
+    if b64[0] > b64[2] || b64[1] > b64[3] {
+        return None;
+    }
+    let bbox = b64.map(|v| v as i32);
     let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
     if area == 0 {
         return None;
     }
     let swapped = area < 0;
     let v = if swapped { [a, c, b] } else { [a, b, c] };
-    let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
-    let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
-    // Pixels whose centre (i + 0.5) can lie inside.
-    let lo = |m: i64| -((128 - m).div_euclid(256));
-    let hi = |m: i64| (m - 128).div_euclid(256);
-    let bbox = [
-        clamp_i32(lo(minx)).max(rect[0]),
-        clamp_i32(lo(miny)).max(rect[1]),
-        clamp_i32(hi(maxx)).min(rect[2]),
-        clamp_i32(hi(maxy)).min(rect[3]),
-    ];
-    if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
-        return None;
-    }
+    let (px, py) = (
+        i64::from(bbox[0]) * 256 + 128,
+        i64::from(bbox[1]) * 256 + 128,
+    );
     let mut owns = 0u8;
+    let mut d = [[0i64; 2]; 3];
+    let mut e = [0i64; 3];
     for k in 0..3 {
-        let (dx, dy) = (v[(k + 1) % 3][0] - v[k][0], v[(k + 1) % 3][1] - v[k][1]);
+        let (p, q) = (v[k], v[(k + 1) % 3]);
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
         // Tie rule, as llvmpipe applies it to a y-up window: a left edge (going down) or a
         // bottom edge (going right) owns the pixel centres exactly on it; other edges do not.
         owns |= u8::from(dy < 0 || (dy == 0 && dx > 0)) << k;
+        d[k] = [dx, dy];
+        e[k] = dx * (py - p[1]) - dy * (px - p[0]);
     }
     Some(Geom {
         v,
@@ -762,6 +1020,8 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
         area: area.abs(),
         bbox,
         owns,
+        d,
+        e,
     })
 }
 
@@ -781,10 +1041,6 @@ fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
 fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
     let m = dzdx.abs().max(dzdy.abs());
     ctx.factor * m + ctx.units / f64::from(1u32 << 24)
-}
-
-fn clamp_i32(v: i64) -> i32 {
-    v.clamp(i64::from(i32::MIN / 2), i64::from(i32::MAX / 2)) as i32
 }
 
 fn clamp_f(v: f32) -> i32 {
