@@ -200,12 +200,12 @@ impl Lighting {
     #[inline]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
         let mut out = [(Vec4::ZERO, Vec4::ZERO)];
-        let p = Point {
-            v: v.into(),
-            n: n.into(),
-            color,
+        let p = Block {
+            v: Lanes3::splat(v),
+            n: Lanes3::splat(n),
+            color: [color],
         };
-        self.eval(m, face, &[p], &mut out);
+        self.eval(m, face, &p, &mut out);
         out[0]
     }
 
@@ -226,7 +226,7 @@ impl Lighting {
         &self,
         m: &Material,
         face: usize,
-        pts: &[Point; N],
+        pts: &Block<N>,
         out: &mut [(Vec4, Vec4); N],
     ) {
         self.eval(m, face, pts, out);
@@ -241,7 +241,7 @@ impl Lighting {
         &self,
         m: &Material,
         face: usize,
-        pts: &[Point; N],
+        pts: &Block<N>,
         out: &mut [(Vec4, Vec4); N],
     ) {
         // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
@@ -254,30 +254,25 @@ impl Lighting {
         let mut ecm = Lanes3::<N>::splat(m.emission.xyz());
         let mut alpha = [m.diffuse.w; N];
         if let Some(mode) = tracked {
-            for (i, p) in pts.iter().enumerate() {
-                let col = p.color.xyz();
+            for (i, color) in pts.color.iter().enumerate() {
+                let col = color.xyz();
                 match mode {
                     gl::AMBIENT => acm.set(i, col),
                     gl::DIFFUSE => {
                         dcm.set(i, col);
-                        alpha[i] = p.color.w;
+                        alpha[i] = color.w;
                     }
                     gl::SPECULAR => scm.set(i, col),
                     gl::EMISSION => ecm.set(i, col),
                     _ => {
                         acm.set(i, col);
                         dcm.set(i, col);
-                        alpha[i] = p.color.w;
+                        alpha[i] = color.w;
                     }
                 }
             }
         }
-        let mut v = Lanes3::<N>::splat(Vec3::ZERO);
-        let mut nrm = Lanes3::<N>::splat(Vec3::ZERO);
-        for (i, p) in pts.iter().enumerate() {
-            v.set(i, p.v.into());
-            nrm.set(i, p.n.into());
-        }
+        let (v, nrm) = (&pts.v, &pts.n);
         let sa = self.scene_ambient;
         let mut c = Lanes3::<N>::splat(Vec3::ZERO);
         for i in 0..N {
@@ -433,16 +428,20 @@ fn negligible(x: f32, srm: f32, y: [f32; 3]) -> bool {
 }
 
 /// `N` three-component vectors as a structure of arrays (one array per component).
-#[derive(Clone, Copy)]
-struct Lanes3<const N: usize> {
-    x: [f32; N],
-    y: [f32; N],
-    z: [f32; N],
+#[derive(Clone, Copy, Debug)]
+pub struct Lanes3<const N: usize> {
+    /// The x components.
+    pub x: [f32; N],
+    /// The y components.
+    pub y: [f32; N],
+    /// The z components.
+    pub z: [f32; N],
 }
 
 impl<const N: usize> Lanes3<N> {
+    /// `v` in every lane.
     #[inline(always)]
-    fn splat(v: Vec3) -> Self {
+    pub fn splat(v: Vec3) -> Self {
         Lanes3 {
             x: [v.x; N],
             y: [v.y; N],
@@ -450,12 +449,32 @@ impl<const N: usize> Lanes3<N> {
         }
     }
 
+    /// Sets lane `i` (nothing past the last lane).
     #[inline(always)]
-    fn set(&mut self, i: usize, v: Vec3) {
+    pub fn set(&mut self, i: usize, v: Vec3) {
         if let (Some(x), Some(y), Some(z)) =
             (self.x.get_mut(i), self.y.get_mut(i), self.z.get_mut(i))
         {
             (*x, *y, *z) = (v.x, v.y, v.z);
+        }
+    }
+
+    /// Lane `i` (zero past the last lane).
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Vec3 {
+        match (self.x.get(i), self.y.get(i), self.z.get(i)) {
+            (Some(&x), Some(&y), Some(&z)) => Vec3::new(x, y, z),
+            _ => Vec3::ZERO,
+        }
+    }
+
+    /// Every lane negated (exact).
+    #[inline(always)]
+    pub fn neg(&self) -> Self {
+        Lanes3 {
+            x: self.x.map(|a| -a),
+            y: self.y.map(|a| -a),
+            z: self.z.map(|a| -a),
         }
     }
 }
@@ -475,15 +494,45 @@ fn normalize_or_zero(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
 /// Points lit together by [`Lighting::shade_block`].
 pub const LANES: usize = 8;
 
-/// One point to light: eye position, unit normal (negated for a back face), vertex colour.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Point {
-    /// Eye-space position.
-    pub v: Vec3A,
-    /// Normal.
-    pub n: Vec3A,
-    /// Vertex colour (COLOR_MATERIAL).
-    pub color: Vec4,
+/// `N` points to light, one array per coordinate: eye positions, unit normals (negated for a
+/// back face), vertex colours.
+#[derive(Clone, Copy, Debug)]
+pub struct Block<const N: usize> {
+    /// Eye-space positions.
+    pub v: Lanes3<N>,
+    /// Normals.
+    pub n: Lanes3<N>,
+    /// Vertex colours (COLOR_MATERIAL).
+    pub color: [Vec4; N],
+}
+
+impl<const N: usize> Default for Block<N> {
+    fn default() -> Self {
+        Block {
+            v: Lanes3::splat(Vec3::ZERO),
+            n: Lanes3::splat(Vec3::ZERO),
+            color: [Vec4::ZERO; N],
+        }
+    }
+}
+
+impl<const N: usize> Block<N> {
+    /// Point `k` alone (zero past the last lane).
+    fn one(&self, k: usize) -> Block<1> {
+        Block {
+            v: Lanes3::splat(self.v.get(k)),
+            n: Lanes3::splat(self.n.get(k)),
+            color: [self.color.get(k).copied().unwrap_or(Vec4::ZERO)],
+        }
+    }
+
+    /// The same points with their normals negated (back faces).
+    fn back(&self) -> Self {
+        Block {
+            n: self.n.neg(),
+            ..*self
+        }
+    }
 }
 
 /// The per-flush transform state.
@@ -529,7 +578,8 @@ pub fn process(
     let n = batch.len();
     out.clear();
     out.resize(n * layout.stride, 0.0);
-    wins.clear();
+    // Every element of `wins` is overwritten below (`Lit::run` writes one per vertex), so the
+    // previous flush's elements are kept rather than cleared: only new ones are initialised.
     wins.resize(n, Win::default());
     let tf = Transform::new(state);
     let lighting = state.enables.lighting.then(|| Lighting::new(state));
@@ -582,7 +632,7 @@ impl Lit<'_> {
         // --- end texture
         for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
             let base = first + blk * LANES;
-            let mut pts = [Point::default(); LANES];
+            let mut pts = Block::<LANES>::default();
             let mut cnt = 0;
             for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                 let i = base + k;
@@ -658,11 +708,11 @@ impl Lit<'_> {
                 } else {
                     eye.xyz()
                 };
-                pts[k] = Point {
-                    v: v.into(),
-                    n: n.into(),
-                    color,
-                };
+                pts.v.set(k, v);
+                pts.n.set(k, n);
+                if let Some(c) = pts.color.get_mut(k) {
+                    *c = color;
+                }
                 cnt = k + 1;
                 if let Some(no) = l.nrm {
                     put3(o, no, n);
@@ -689,19 +739,17 @@ impl Lit<'_> {
                 let m = &state.materials;
                 lighting.shade_block(&m[FRONT], FRONT, &pts, &mut lit);
                 if two {
-                    let back = pts.map(|p| Point { n: -p.n, ..p });
-                    lighting.shade_block(&m[BACK], BACK, &back, &mut lit_b);
+                    lighting.shade_block(&m[BACK], BACK, &pts.back(), &mut lit_b);
                 }
             } else {
                 for k in 0..cnt {
                     let m = mat_of(base + k);
-                    let p = pts[k];
+                    let p = pts.one(k);
                     let mut one = [(Vec4::ZERO, Vec4::ZERO)];
-                    lighting.shade_block(&m[FRONT], FRONT, &[p], &mut one);
+                    lighting.shade_block(&m[FRONT], FRONT, &p, &mut one);
                     lit[k] = one[0];
                     if two {
-                        let q = Point { n: -p.n, ..p };
-                        lighting.shade_block(&m[BACK], BACK, &[q], &mut one);
+                        lighting.shade_block(&m[BACK], BACK, &p.back(), &mut one);
                         lit_b[k] = one[0];
                     }
                 }
