@@ -123,6 +123,10 @@ struct Src {
     vp_dir: Vec3A,
     /// The specular colour is exactly zero.
     spec_zero: bool,
+    /// The specular colour is finite.
+    spec_finite: bool,
+    /// Every specular component is at most 1 in magnitude.
+    spec_small: bool,
 }
 
 /// The lighting parameters of one flush (GL 2.1 §2.14.1), ready to evaluate at any point.
@@ -172,6 +176,8 @@ impl Lighting {
                     && l.quadratic_attenuation == 0.0,
                 vp_dir: l.position.xyz().normalize_or_zero().into(),
                 spec_zero: l.specular.xyz() == Vec3::ZERO,
+                spec_finite: l.specular.xyz().is_finite(),
+                spec_small: l.specular.xyz().abs().max_element() <= 1.0,
             };
             n += 1;
         }
@@ -292,9 +298,19 @@ impl Lighting {
             }
         }
         let shininess = m.shininess;
-        let scm_zero = (0..N).all(|i| scm.x[i] == 0.0 && scm.y[i] == 0.0 && scm.z[i] == 0.0);
-        let scm_small =
-            (0..N).all(|i| scm.x[i].abs() <= 1.0 && scm.y[i].abs() <= 1.0 && scm.z[i].abs() <= 1.0);
+        // Whether every lane's specular material colour is zero, or at most 1 in magnitude: the
+        // material's own unless COLOR_MATERIAL tracks the specular colour.
+        let (scm_zero, scm_small) = if matches!(tracked, Some(gl::SPECULAR)) {
+            (
+                (0..N).all(|i| scm.x[i] == 0.0 && scm.y[i] == 0.0 && scm.z[i] == 0.0),
+                (0..N).all(|i| {
+                    scm.x[i].abs() <= 1.0 && scm.y[i].abs() <= 1.0 && scm.z[i].abs() <= 1.0
+                }),
+            )
+        } else {
+            let sm = m.specular.xyz();
+            (sm == Vec3::ZERO, sm.abs().max_element() <= 1.0)
+        };
         for l in &self.srcs[..self.n] {
             let mut vp = Lanes3::<N>::splat(l.vp_dir.into());
             let mut kf = [1.0f32; N];
@@ -355,8 +371,8 @@ impl Lighting {
             // - the power is negligible next to a + (N·L)·d, which the addition of the specular
             //   term then returns unchanged (not under SEPARATE_SPECULAR_COLOR, where that term
             //   is summed on its own): see `negligible`.
-            let spec_zero = l.spec_zero || (scm_zero && ls.is_finite());
-            let may_neglect = !self.separate && ls.abs().max_element() <= 1.0 && scm_small;
+            let spec_zero = l.spec_zero || (scm_zero && l.spec_finite);
+            let may_neglect = !self.separate && l.spec_small && scm_small;
             let mut pw = [0.0f32; N];
             for i in 0..N {
                 let x = ndh[i];
