@@ -434,7 +434,7 @@ impl Lighting {
 ///   x^srm <= 2^(e-27) when srm·(1 - x) >= (27 - e)·(ln 2 / 2)·(1 + x); the test uses 0.36 for
 ///   ln 2 / 2 = 0.3466, a 3.9% margin far above the rounding of the test itself.
 #[inline(always)]
-fn negligible(x: f32, srm: f32, y: [f32; 3]) -> bool {
+pub(super) fn negligible(x: f32, srm: f32, y: [f32; 3]) -> bool {
     // Biased exponents: 2^(b - 127) <= |y| for normal y; 255 (NaN, infinity) is never the minimum
     // that matters, as NaN + sp and inf + sp return the NaN or infinity.
     let b = y.map(|v| (v.to_bits() >> 23) & 0xff);
