@@ -1,11 +1,13 @@
 //! The vertex stage: modelview and projection transforms, the normal transform with
 //! RESCALE_NORMAL / NORMALIZE, and the GL 1.x lighting equation (GL 2.1 §2.11, §2.14.1).
 //!
-//! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation;
-//! the vertex stage calls it for blocks of 8 vertices and the PHONG_WIN fragment path (through
-//! `Lighting::shade`) for single fragments, so the two shading modes can never disagree about the
-//! equation. Results are written to one flat `f32` array with a per-flush `Layout`, carrying only
-//! the attributes the flush needs, plus each vertex's clip code and window coordinates.
+//! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation,
+//! generic over its number of lanes and written on a structure of arrays so that the compiler
+//! vectorises it; the vertex stage calls it for blocks of 8 vertices and the PHONG_WIN fragment
+//! path (through `Lighting::shade`) for single fragments, so the two shading modes can never
+//! disagree about the equation, down to the bits. Results are written to one flat `f32` array
+//! with a per-flush `Layout`, carrying only the attributes the flush needs, plus each vertex's
+//! clip code and window coordinates.
 
 use glam::{Mat3, Mat4, Vec3, Vec3A, Vec4, Vec4Swizzles};
 use rayon::prelude::*;
@@ -119,6 +121,12 @@ struct Src {
     no_att: bool,
     /// Directional light: unit VP, the same at every point.
     vp_dir: Vec3A,
+    /// The specular colour is exactly zero.
+    spec_zero: bool,
+    /// The specular colour is finite.
+    spec_finite: bool,
+    /// Every specular component is at most 1 in magnitude.
+    spec_small: bool,
 }
 
 /// The lighting parameters of one flush (GL 2.1 §2.14.1), ready to evaluate at any point.
@@ -167,6 +175,9 @@ impl Lighting {
                     && l.linear_attenuation == 0.0
                     && l.quadratic_attenuation == 0.0,
                 vp_dir: l.position.xyz().normalize_or_zero().into(),
+                spec_zero: l.specular.xyz() == Vec3::ZERO,
+                spec_finite: l.specular.xyz().is_finite(),
+                spec_small: l.specular.xyz().abs().max_element() <= 1.0,
             };
             n += 1;
         }
@@ -192,77 +203,143 @@ impl Lighting {
     /// with unit normal `n` (already negated for a back face), material `m` of face `face`
     /// (FRONT or BACK), and vertex colour `color` for COLOR_MATERIAL (GL 2.1 §2.14.1, §2.14.3).
     /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
+    #[inline]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
         let mut out = [(Vec4::ZERO, Vec4::ZERO)];
-        let p = Point {
-            v: v.into(),
-            n: n.into(),
-            color,
+        let p = Block {
+            v: Lanes3::splat(v),
+            n: Lanes3::splat(n),
+            color: [color],
         };
-        self.shade_block(m, face, &[p], &mut out);
+        self.eval(m, face, &p, &mut out);
         out[0]
     }
 
-    /// [`Lighting::shade`] for up to [`LANES`] points at once (the rest of `pts` is ignored):
-    /// the same equation, evaluated step by step across the points so that the square roots,
-    /// divisions and `powf`s of different points overlap in the CPU.
-    pub fn shade_block(&self, m: &Material, face: usize, pts: &[Point], out: &mut [(Vec4, Vec4)]) {
-        let k = pts.len().min(out.len()).min(LANES);
-        let pts = &pts[..k];
+    /// [`Lighting::shade`] for `N` points at once ([`LANES`] for vertices, 1 for a fragment):
+    /// the same equation, evaluated step by step across the points on a structure of arrays, so
+    /// that the compiler vectorises the square roots, divisions and dot products and the `powf`s
+    /// of different points overlap in the CPU.
+    ///
+    /// Every value is computed with the operations, in the order, of the scalar formula
+    /// (`(x·x' + y·y') + z·z'` dot products, `(s·light)·material` products), so results do not
+    /// depend on `N`. Work whose result is known is skipped only where the skip is exact: `powf`
+    /// when N·L <= 0 (its result is unused), when N·H is 0 (0^srm = 0 for srm > 0), and when
+    /// the light's or the material's specular colour is zero (the term is a zero whatever the
+    /// finite power, which N·H <= 1 guarantees), and when the power is provably too small to
+    /// change any bit of the colour it is added to (see `negligible`); the specular term is then
+    /// computed from a power of 0, as where N·L <= 0.
+    pub fn shade_block<const N: usize>(
+        &self,
+        m: &Material,
+        face: usize,
+        pts: &Block<N>,
+        out: &mut [(Vec4, Vec4); N],
+    ) {
+        self.eval(m, face, pts, out);
+    }
+
+    /// The body of [`Lighting::shade_block`], inlined into [`Lighting::shade`] so that a
+    /// fragment's point stays in registers.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    fn eval<const N: usize>(
+        &self,
+        m: &Material,
+        face: usize,
+        pts: &Block<N>,
+        out: &mut [(Vec4, Vec4); N],
+    ) {
         // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
         let tracked = self
             .color_material
             .and_then(|(faces, mode)| faces.get(face).copied().unwrap_or(false).then_some(mode));
-        let mut acm = [Vec3A::ZERO; LANES];
-        let mut dcm = [Vec3A::ZERO; LANES];
-        let mut scm = [Vec3A::ZERO; LANES];
-        let mut alpha = [0.0f32; LANES];
-        let mut c = [Vec3A::ZERO; LANES];
-        let mut s = [Vec3A::ZERO; LANES];
-        let mut eye = [Vec3A::Z; LANES];
-        for (i, p) in pts.iter().enumerate() {
-            let (mut a, mut d, mut sp, mut e) = (m.ambient, m.diffuse, m.specular, m.emission);
-            match tracked {
-                None => {}
-                Some(gl::AMBIENT) => a = p.color,
-                Some(gl::DIFFUSE) => d = p.color,
-                Some(gl::SPECULAR) => sp = p.color,
-                Some(gl::EMISSION) => e = p.color,
-                Some(_) => {
-                    a = p.color;
-                    d = p.color;
+        let mut acm = Lanes3::<N>::splat(m.ambient.xyz());
+        let mut dcm = Lanes3::<N>::splat(m.diffuse.xyz());
+        let mut scm = Lanes3::<N>::splat(m.specular.xyz());
+        let mut ecm = Lanes3::<N>::splat(m.emission.xyz());
+        let mut alpha = [m.diffuse.w; N];
+        if let Some(mode) = tracked {
+            for (i, color) in pts.color.iter().enumerate() {
+                let col = color.xyz();
+                match mode {
+                    gl::AMBIENT => acm.set(i, col),
+                    gl::DIFFUSE => {
+                        dcm.set(i, col);
+                        alpha[i] = color.w;
+                    }
+                    gl::SPECULAR => scm.set(i, col),
+                    gl::EMISSION => ecm.set(i, col),
+                    _ => {
+                        acm.set(i, col);
+                        dcm.set(i, col);
+                        alpha[i] = color.w;
+                    }
                 }
             }
-            acm[i] = a.xyz().into();
-            dcm[i] = d.xyz().into();
-            scm[i] = sp.xyz().into();
-            alpha[i] = d.w;
-            c[i] = Vec3A::from(e.xyz()) + self.scene_ambient * acm[i];
-            if self.local_viewer {
-                // Local viewer: the half vector uses the direction to the eye.
-                eye[i] = (-p.v).normalize_or_zero();
+        }
+        let (v, nrm) = (&pts.v, &pts.n);
+        let sa = self.scene_ambient;
+        let mut c = Lanes3::<N>::splat(Vec3::ZERO);
+        for i in 0..N {
+            c.x[i] = ecm.x[i] + sa.x * acm.x[i];
+            c.y[i] = ecm.y[i] + sa.y * acm.y[i];
+            c.z[i] = ecm.z[i] + sa.z * acm.z[i];
+        }
+        let mut s = Lanes3::<N>::splat(Vec3::ZERO);
+        let mut eye = Lanes3::<N>::splat(Vec3::Z);
+        if self.local_viewer {
+            // Local viewer: the half vector uses the direction to the eye.
+            for i in 0..N {
+                let (x, y, z) = normalize_or_zero(-v.x[i], -v.y[i], -v.z[i]);
+                eye.x[i] = x;
+                eye.y[i] = y;
+                eye.z[i] = z;
             }
         }
+        let shininess = m.shininess;
+        // Whether every lane's specular material colour is zero, or at most 1 in magnitude: the
+        // material's own unless COLOR_MATERIAL tracks the specular colour.
+        let (scm_zero, scm_small) = if matches!(tracked, Some(gl::SPECULAR)) {
+            (
+                (0..N).all(|i| scm.x[i] == 0.0 && scm.y[i] == 0.0 && scm.z[i] == 0.0),
+                (0..N).all(|i| {
+                    scm.x[i].abs() <= 1.0 && scm.y[i].abs() <= 1.0 && scm.z[i].abs() <= 1.0
+                }),
+            )
+        } else {
+            let sm = m.specular.xyz();
+            (sm == Vec3::ZERO, sm.abs().max_element() <= 1.0)
+        };
         for l in &self.srcs[..self.n] {
-            let mut vp = [l.vp_dir; LANES];
-            let mut kf = [1.0f32; LANES];
-            let mut on = [true; LANES];
+            let mut vp = Lanes3::<N>::splat(l.vp_dir.into());
+            let mut kf = [1.0f32; N];
+            let mut on = [true; N];
             if l.positional {
-                for (i, p) in pts.iter().enumerate() {
-                    let d = l.pos - p.v;
-                    let d2 = d.length_squared();
-                    let inv = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
-                    vp[i] = d * inv;
-                    if !l.no_att {
-                        // Attenuation, positional lights only.
-                        let dist = d2 * inv;
-                        kf[i] = 1.0 / (l.att[0] + l.att[1] * dist + l.att[2] * d2);
+                let mut d2 = [0.0f32; N];
+                let mut inv = [0.0f32; N];
+                for i in 0..N {
+                    let dx = l.pos.x - v.x[i];
+                    let dy = l.pos.y - v.y[i];
+                    let dz = l.pos.z - v.z[i];
+                    d2[i] = dx * dx + dy * dy + dz * dz;
+                    inv[i] = if d2[i] > 0.0 { 1.0 / d2[i].sqrt() } else { 0.0 };
+                    vp.x[i] = dx * inv[i];
+                    vp.y[i] = dy * inv[i];
+                    vp.z[i] = dz * inv[i];
+                }
+                if !l.no_att {
+                    // Attenuation, positional lights only.
+                    for i in 0..N {
+                        let dist = d2[i] * inv[i];
+                        kf[i] = 1.0 / (l.att[0] + l.att[1] * dist + l.att[2] * d2[i]);
                     }
                 }
             }
             if let Some(cos_cut) = l.spot_cos {
-                for i in 0..k {
-                    let cosang = (-vp[i]).dot(l.spot_dir);
+                for i in 0..N {
+                    let sd = l.spot_dir;
+                    let cosang = -vp.x[i] * sd.x + -vp.y[i] * sd.y + -vp.z[i] * sd.z;
                     if cosang >= cos_cut {
                         kf[i] *= cosang.max(0.0).powf(l.spot_exp);
                     } else {
@@ -271,61 +348,207 @@ impl Lighting {
                     }
                 }
             }
-            let mut ndl = [0.0f32; LANES];
-            let mut ndh = [0.0f32; LANES];
-            for (i, p) in pts.iter().enumerate() {
-                ndl[i] = p.n.dot(vp[i]);
-                let h = (vp[i] + eye[i]).normalize_or_zero();
-                ndh[i] = p.n.dot(h).max(0.0);
+            let mut ndl = [0.0f32; N];
+            let mut ndh = [0.0f32; N];
+            for i in 0..N {
+                ndl[i] = nrm.x[i] * vp.x[i] + nrm.y[i] * vp.y[i] + nrm.z[i] * vp.z[i];
+                let (hx, hy, hz) =
+                    normalize_or_zero(vp.x[i] + eye.x[i], vp.y[i] + eye.y[i], vp.z[i] + eye.z[i]);
+                let d = nrm.x[i] * hx + nrm.y[i] * hy + nrm.z[i] * hz;
+                ndh[i] = if d > 0.0 { d } else { 0.0 };
             }
-            let mut pw = [0.0f32; LANES];
-            for i in 0..k {
+            let (la, ld, ls) = (l.ambient, l.diffuse, l.specular);
+            // The ambient and diffuse parts of the term: a + (N·L)·d.
+            let mut ad = Lanes3::<N>::splat(Vec3::ZERO);
+            for i in 0..N {
+                ad.x[i] = la.x * acm.x[i] + ndl[i] * ld.x * dcm.x[i];
+                ad.y[i] = la.y * acm.y[i] + ndl[i] * ld.y * dcm.y[i];
+                ad.z[i] = la.z * acm.z[i] + ndl[i] * ld.z * dcm.z[i];
+            }
+            // Where `powf` need not run (its lane keeps pw = 0, giving the same colour bits):
+            // - a zero specular colour times a finite power (N·H <= 1) is a zero term;
+            // - 0^srm = 0 for srm > 0;
+            // - the power is negligible next to a + (N·L)·d, which the addition of the specular
+            //   term then returns unchanged (not under SEPARATE_SPECULAR_COLOR, where that term
+            //   is summed on its own): see `negligible`.
+            let spec_zero = l.spec_zero || (scm_zero && l.spec_finite);
+            let may_neglect = !self.separate && l.spec_small && scm_small;
+            let mut pw = [0.0f32; N];
+            for i in 0..N {
+                let x = ndh[i];
+                let zero = (x == 0.0 && shininess > 0.0) || (spec_zero && x <= 1.0);
+                let small = may_neglect && negligible(x, shininess, [ad.x[i], ad.y[i], ad.z[i]]);
                 // Specular only where N·L > 0.
-                if ndl[i] > 0.0 {
-                    pw[i] = ndh[i].powf(m.shininess);
+                if ndl[i] > 0.0 && !zero && !small {
+                    pw[i] = x.powf(shininess);
                 }
             }
-            for i in 0..k {
-                if !on[i] {
-                    continue;
-                }
-                let mut term = l.ambient * acm[i];
-                if ndl[i] > 0.0 {
-                    term += ndl[i] * l.diffuse * dcm[i];
-                    let sp = pw[i] * l.specular * scm[i];
-                    if self.separate {
-                        s[i] += kf[i] * sp;
-                    } else {
-                        term += sp;
-                    }
-                }
-                c[i] += kf[i] * term;
+            // Branch-free so that it vectorises: every term is computed, then selected.
+            let sep = self.separate;
+            for i in 0..N {
+                let lit = ndl[i] > 0.0;
+                let d = pw[i];
+                let sx = d * ls.x * scm.x[i];
+                let sy = d * ls.y * scm.y[i];
+                let sz = d * ls.z * scm.z[i];
+                // term = a (+ (N·L)·d (+ s unless separate)) where N·L > 0.
+                let ax = la.x * acm.x[i];
+                let ay = la.y * acm.y[i];
+                let az = la.z * acm.z[i];
+                let (lx, ly, lz) = if sep {
+                    (ad.x[i], ad.y[i], ad.z[i])
+                } else {
+                    (ad.x[i] + sx, ad.y[i] + sy, ad.z[i] + sz)
+                };
+                let (tx, ty, tz) = if lit { (lx, ly, lz) } else { (ax, ay, az) };
+                let k = kf[i];
+                let on = on[i];
+                c.x[i] = if on { c.x[i] + k * tx } else { c.x[i] };
+                c.y[i] = if on { c.y[i] + k * ty } else { c.y[i] };
+                c.z[i] = if on { c.z[i] + k * tz } else { c.z[i] };
+                let add = on && lit && sep;
+                s.x[i] = if add { s.x[i] + k * sx } else { s.x[i] };
+                s.y[i] = if add { s.y[i] + k * sy } else { s.y[i] };
+                s.z[i] = if add { s.z[i] + k * sz } else { s.z[i] };
             }
         }
         // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
-        for (i, o) in out.iter_mut().take(k).enumerate() {
+        for (i, o) in out.iter_mut().enumerate() {
             *o = (
-                Vec3::from(c[i])
-                    .extend(alpha[i])
-                    .clamp(Vec4::ZERO, Vec4::ONE),
-                Vec3::from(s[i]).extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
+                Vec4::new(c.x[i], c.y[i], c.z[i], alpha[i]).clamp(Vec4::ZERO, Vec4::ONE),
+                Vec4::new(s.x[i], s.y[i], s.z[i], 0.0).clamp(Vec4::ZERO, Vec4::ONE),
             );
         }
+    }
+}
+
+/// Whether adding a specular term `sp = (x^srm · scl) · scm` (rounded as `f32`s), with
+/// |scl|, |scm| <= 1 and 0 <= x, to each component of `y` leaves every component's bits unchanged,
+/// so that `x.powf(srm)` need not be evaluated. Sound, not tight (x <= 1 throughout):
+/// - with 2^e <= |y| (e >= -90, from the exponent bits; NaN and infinite components stay what
+///   they are), a term with |sp| <= 2^(e-26) is below half the float spacing around y, even just
+///   under a power of two, so y + sp rounds to y;
+/// - |sp| <= x^srm·(1 + 2^-23) (products of factors at most 1 only round down in magnitude, and
+///   `powf` is within an ulp), so x^srm <= 2^(e-27) suffices;
+/// - ln x <= 2(x - 1)/(x + 1) for 0 < x <= 1 (equal at 1, and the difference grows with x), so
+///   x^srm <= 2^(e-27) when srm·(1 - x) >= (27 - e)·(ln 2 / 2)·(1 + x); the test uses 0.36 for
+///   ln 2 / 2 = 0.3466, a 3.9% margin far above the rounding of the test itself.
+#[inline(always)]
+pub(super) fn negligible(x: f32, srm: f32, y: [f32; 3]) -> bool {
+    // Biased exponents: 2^(b - 127) <= |y| for normal y; 255 (NaN, infinity) is never the minimum
+    // that matters, as NaN + sp and inf + sp return the NaN or infinity.
+    let b = y.map(|v| (v.to_bits() >> 23) & 0xff);
+    let b = b[0].min(b[1]).min(b[2]);
+    // e = b - 127 >= -90, and 27 - e = 154 - b.
+    x <= 1.0 && b >= 37 && srm * (1.0 - x) >= (154 - b as i32) as f32 * 0.36 * (1.0 + x)
+}
+
+/// `N` three-component vectors as a structure of arrays (one array per component).
+#[derive(Clone, Copy, Debug)]
+pub struct Lanes3<const N: usize> {
+    /// The x components.
+    pub x: [f32; N],
+    /// The y components.
+    pub y: [f32; N],
+    /// The z components.
+    pub z: [f32; N],
+}
+
+impl<const N: usize> Lanes3<N> {
+    /// `v` in every lane.
+    #[inline(always)]
+    pub fn splat(v: Vec3) -> Self {
+        Lanes3 {
+            x: [v.x; N],
+            y: [v.y; N],
+            z: [v.z; N],
+        }
+    }
+
+    /// Sets lane `i` (nothing past the last lane).
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, v: Vec3) {
+        if let (Some(x), Some(y), Some(z)) =
+            (self.x.get_mut(i), self.y.get_mut(i), self.z.get_mut(i))
+        {
+            (*x, *y, *z) = (v.x, v.y, v.z);
+        }
+    }
+
+    /// Lane `i` (zero past the last lane).
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Vec3 {
+        match (self.x.get(i), self.y.get(i), self.z.get(i)) {
+            (Some(&x), Some(&y), Some(&z)) => Vec3::new(x, y, z),
+            _ => Vec3::ZERO,
+        }
+    }
+
+    /// Every lane negated (exact).
+    #[inline(always)]
+    pub fn neg(&self) -> Self {
+        Lanes3 {
+            x: self.x.map(|a| -a),
+            y: self.y.map(|a| -a),
+            z: self.z.map(|a| -a),
+        }
+    }
+}
+
+/// glam's `normalize_or_zero` on one vector of a [`Lanes3`]: times the reciprocal length when
+/// that is finite and positive, else zero.
+#[inline(always)]
+fn normalize_or_zero(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
+    let rcp = 1.0 / (x * x + y * y + z * z).sqrt();
+    if rcp.is_finite() && rcp > 0.0 {
+        (x * rcp, y * rcp, z * rcp)
+    } else {
+        (0.0, 0.0, 0.0)
     }
 }
 
 /// Points lit together by [`Lighting::shade_block`].
 pub const LANES: usize = 8;
 
-/// One point to light: eye position, unit normal (negated for a back face), vertex colour.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Point {
-    /// Eye-space position.
-    pub v: Vec3A,
-    /// Normal.
-    pub n: Vec3A,
-    /// Vertex colour (COLOR_MATERIAL).
-    pub color: Vec4,
+/// `N` points to light, one array per coordinate: eye positions, unit normals (negated for a
+/// back face), vertex colours.
+#[derive(Clone, Copy, Debug)]
+pub struct Block<const N: usize> {
+    /// Eye-space positions.
+    pub v: Lanes3<N>,
+    /// Normals.
+    pub n: Lanes3<N>,
+    /// Vertex colours (COLOR_MATERIAL).
+    pub color: [Vec4; N],
+}
+
+impl<const N: usize> Default for Block<N> {
+    fn default() -> Self {
+        Block {
+            v: Lanes3::splat(Vec3::ZERO),
+            n: Lanes3::splat(Vec3::ZERO),
+            color: [Vec4::ZERO; N],
+        }
+    }
+}
+
+impl<const N: usize> Block<N> {
+    /// Point `k` alone (zero past the last lane).
+    fn one(&self, k: usize) -> Block<1> {
+        Block {
+            v: Lanes3::splat(self.v.get(k)),
+            n: Lanes3::splat(self.n.get(k)),
+            color: [self.color.get(k).copied().unwrap_or(Vec4::ZERO)],
+        }
+    }
+
+    /// The same points with their normals negated (back faces).
+    fn back(&self) -> Self {
+        Block {
+            n: self.n.neg(),
+            ..*self
+        }
+    }
 }
 
 /// The per-flush transform state.
@@ -371,7 +594,8 @@ pub fn process(
     let n = batch.len();
     out.clear();
     out.resize(n * layout.stride, 0.0);
-    wins.clear();
+    // Every element of `wins` is overwritten below (`Lit::run` writes one per vertex), so the
+    // previous flush's elements are kept rather than cleared: only new ones are initialised.
     wins.resize(n, Win::default());
     let tf = Transform::new(state);
     let lighting = state.enables.lighting.then(|| Lighting::new(state));
@@ -424,7 +648,7 @@ impl Lit<'_> {
         // --- end texture
         for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
             let base = first + blk * LANES;
-            let mut pts = [Point::default(); LANES];
+            let mut pts = Block::<LANES>::default();
             let mut cnt = 0;
             for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                 let i = base + k;
@@ -491,16 +715,17 @@ impl Lit<'_> {
                 if self.tf.normalize {
                     n = n.normalize_or_zero();
                 }
-                let v = if eye.w != 0.0 {
+                // Dividing by w = 1 is exact: skip it for the common affine modelview.
+                let v = if eye.w != 0.0 && eye.w != 1.0 {
                     eye.xyz() / eye.w
                 } else {
                     eye.xyz()
                 };
-                pts[k] = Point {
-                    v: v.into(),
-                    n: n.into(),
-                    color,
-                };
+                pts.v.set(k, v);
+                pts.n.set(k, n);
+                if let Some(c) = pts.color.get_mut(k) {
+                    *c = color;
+                }
                 cnt = k + 1;
                 if let Some(no) = l.nrm {
                     put3(o, no, n);
@@ -523,20 +748,22 @@ impl Lit<'_> {
             let mut lit_b = [(Vec4::ZERO, Vec4::ZERO); LANES];
             let two = l.col_b.is_some();
             if uniform {
+                // Lanes past `cnt` light default points; their results are not used.
                 let m = &state.materials;
-                lighting.shade_block(&m[FRONT], FRONT, &pts[..cnt], &mut lit);
+                lighting.shade_block(&m[FRONT], FRONT, &pts, &mut lit);
                 if two {
-                    let back = pts.map(|p| Point { n: -p.n, ..p });
-                    lighting.shade_block(&m[BACK], BACK, &back[..cnt], &mut lit_b);
+                    lighting.shade_block(&m[BACK], BACK, &pts.back(), &mut lit_b);
                 }
             } else {
                 for k in 0..cnt {
                     let m = mat_of(base + k);
-                    let p = pts[k];
-                    lighting.shade_block(&m[FRONT], FRONT, &[p], &mut lit[k..]);
+                    let p = pts.one(k);
+                    let mut one = [(Vec4::ZERO, Vec4::ZERO)];
+                    lighting.shade_block(&m[FRONT], FRONT, &p, &mut one);
+                    lit[k] = one[0];
                     if two {
-                        let q = Point { n: -p.n, ..p };
-                        lighting.shade_block(&m[BACK], BACK, &[q], &mut lit_b[k..]);
+                        lighting.shade_block(&m[BACK], BACK, &p.back(), &mut one);
+                        lit_b[k] = one[0];
                     }
                 }
             }

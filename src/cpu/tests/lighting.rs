@@ -1,6 +1,6 @@
 //! The lighting equation (GL 2.1 §2.14.1) term by term, and the normal transform (§2.11.3).
 
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec4, Vec4Swizzles};
 
 use super::*;
 use crate::cpu::vertex::Lighting;
@@ -311,4 +311,188 @@ fn material_change_inside_begin_end_applies_from_the_next_vertex() {
     // Scene ambient 1 × material ambient: the first point red, the second blue.
     assert_eq!(px(&mut r, 2, 2)[..3], [255, 0, 0]);
     assert_eq!(px(&mut r, 6, 6)[..3], [0, 0, 255]);
+}
+
+/// A small deterministic generator for the property tests below (xorshift32), in [0, 1).
+struct Rng(u32);
+
+impl Rng {
+    fn next(&mut self) -> f32 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 17;
+        self.0 ^= self.0 << 5;
+        (self.0 >> 8) as f32 / (1u32 << 24) as f32
+    }
+
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next()
+    }
+
+    fn vec3(&mut self, lo: f32, hi: f32) -> Vec3 {
+        Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
+    }
+}
+
+/// `negligible` may only say yes when adding the specular term really leaves every bit of the
+/// sum: checked by doing the addition, over N·H, shininess and sums of many magnitudes; and it
+/// does say yes where the power is far below the sum's precision.
+#[test]
+fn a_negligible_specular_term_changes_no_bit() {
+    use crate::cpu::vertex::negligible;
+    let mut rng = Rng(0x1234_5678);
+    let mut yes = 0;
+    for _ in 0..200_000 {
+        let x = match rng.next() {
+            r if r < 0.1 => 0.0,
+            r if r < 0.2 => 1.0,
+            _ => rng.next(),
+        };
+        let srm =
+            [0.0, 1.0, 5.0, 23.0, 24.0, 50.0, 100.0, 127.5, 128.0][(rng.next() * 9.0) as usize];
+        // Sums from 2^-100 to 2^10, either sign.
+        let mut y = [0.0f32; 3];
+        for c in &mut y {
+            let mag = 2f32.powf(rng.range(-100.0, 10.0));
+            *c = if rng.next() < 0.5 { -mag } else { mag };
+        }
+        let (scl, scm) = (rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+        if negligible(x, srm, y) {
+            yes += 1;
+            for (scl, scm) in [(1.0, 1.0), (scl, scm)] {
+                let sp = x.powf(srm) * scl * scm;
+                for c in y {
+                    assert_eq!((c + sp).to_bits(), c.to_bits(), "x {x} srm {srm} y {c}");
+                }
+            }
+        }
+    }
+    assert!(yes > 10_000, "only {yes} cases were negligible");
+    // 0.5^100 ≈ 7.9e-31 is far below half an ulp of 0.3 (≈ 1.5e-8): negligible.
+    assert!(negligible(0.5, 100.0, [0.3, 0.3, 0.3]));
+    // 0.95^100 ≈ 0.0059 is not; neither is anything added to a zero sum.
+    assert!(!negligible(0.95, 100.0, [0.3, 0.3, 0.3]));
+    assert!(!negligible(0.5, 100.0, [0.3, 0.0, 0.3]));
+}
+
+/// The §2.14.1 sum written plainly, one point at a time, `powf` evaluated wherever N·L > 0,
+/// in the operation order the pipeline documents (dot products (x·x' + y·y') + z·z', products
+/// left to right); no COLOR_MATERIAL.
+fn reference(st: &State, m: &Material, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
+    let mut c = m.emission.xyz() + st.light_model.ambient.xyz() * m.ambient.xyz();
+    let mut s = Vec3::ZERO;
+    let eye = if st.light_model.local_viewer {
+        (-v).normalize_or_zero()
+    } else {
+        Vec3::Z
+    };
+    for (l, _) in st
+        .lights
+        .iter()
+        .zip(st.enables.lights)
+        .filter(|(_, on)| *on)
+    {
+        let (vp, mut kf) = if l.position.w != 0.0 {
+            let d = l.position.xyz() / l.position.w - v;
+            let d2 = d.length_squared();
+            let inv = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
+            let dist = d2 * inv;
+            let att =
+                l.constant_attenuation + l.linear_attenuation * dist + l.quadratic_attenuation * d2;
+            (d * inv, 1.0 / att)
+        } else {
+            (l.position.xyz().normalize_or_zero(), 1.0)
+        };
+        if l.spot_cutoff != 180.0 {
+            let cosang = (-vp).dot(l.spot_direction.normalize_or_zero());
+            if cosang < l.spot_cutoff.to_radians().cos() {
+                continue;
+            }
+            kf *= cosang.max(0.0).powf(l.spot_exponent);
+        }
+        let ndl = n.dot(vp);
+        let ndh = n.dot((vp + eye).normalize_or_zero()).max(0.0);
+        let mut term = l.ambient.xyz() * m.ambient.xyz();
+        if ndl > 0.0 {
+            term += ndl * l.diffuse.xyz() * m.diffuse.xyz();
+            let sp = ndh.powf(m.shininess) * l.specular.xyz() * m.specular.xyz();
+            if st.light_model.color_control == gl::SEPARATE_SPECULAR_COLOR {
+                s += kf * sp;
+            } else {
+                term += sp;
+            }
+        }
+        c += kf * term;
+    }
+    (
+        c.extend(m.diffuse.w).clamp(Vec4::ZERO, Vec4::ONE),
+        s.extend(0.0).clamp(Vec4::ZERO, Vec4::ONE),
+    )
+}
+
+/// `shade_block` over 8 lanes, `shade` on one point and the plain sum agree bit for bit over
+/// random lights (positional with attenuation, spot, directional), materials (shininess up to
+/// 128, where most specular powers are skipped as negligible), viewer and colour-control modes.
+#[test]
+fn block_and_single_point_shading_equal_the_plain_sum_bit_for_bit() {
+    use crate::cpu::vertex::{Block, LANES};
+    let mut rng = Rng(0x9e37_79b9);
+    for case in 0..400 {
+        let mut st = State::new(4, 4);
+        st.enables.lighting = true;
+        st.light_model.local_viewer = case % 2 == 1;
+        st.light_model.color_control = if case % 3 == 0 {
+            gl::SEPARATE_SPECULAR_COLOR
+        } else {
+            gl::SINGLE_COLOR
+        };
+        st.light_model.ambient = rng.vec3(0.0, 0.3).extend(1.0);
+        for (i, l) in st.lights.iter_mut().enumerate().take(3) {
+            st.enables.lights[i] = true;
+            l.ambient = rng.vec3(0.0, 0.2).extend(1.0);
+            l.diffuse = rng.vec3(0.0, 1.0).extend(1.0);
+            l.specular = if case % 5 == 0 {
+                Vec4::ZERO
+            } else {
+                rng.vec3(0.0, 1.0).extend(1.0)
+            };
+            let w = if i == 2 { 0.0 } else { 1.0 };
+            l.position = rng.vec3(-3.0, 3.0).extend(w);
+        }
+        st.lights[1].linear_attenuation = rng.range(0.0, 0.5);
+        st.lights[1].quadratic_attenuation = rng.range(0.0, 0.2);
+        if case % 4 == 0 {
+            st.lights[0].spot_cutoff = rng.range(10.0, 90.0);
+            st.lights[0].spot_exponent = rng.range(0.0, 20.0);
+            st.lights[0].spot_direction = rng.vec3(-1.0, 1.0);
+        }
+        let m = Material {
+            ambient: rng.vec3(0.0, 1.0).extend(1.0),
+            diffuse: rng.vec3(0.0, 1.0).extend(rng.next()),
+            specular: rng.vec3(0.0, 1.0).extend(1.0),
+            emission: rng.vec3(0.0, 0.1).extend(1.0),
+            shininess: [0.0, 1.0, 10.0, 100.0, 128.0][case % 5],
+            ..Material::default()
+        };
+        let lt = Lighting::new(&st);
+        let mut blk = Block::<LANES>::default();
+        for k in 0..LANES {
+            blk.v.set(k, rng.vec3(-2.0, 2.0));
+            blk.n.set(k, rng.vec3(-1.0, 1.0).normalize_or_zero());
+        }
+        let mut out = [(Vec4::ZERO, Vec4::ZERO); LANES];
+        lt.shade_block(&m, FRONT, &blk, &mut out);
+        for (k, &(c, s)) in out.iter().enumerate() {
+            let (v, n) = (blk.v.get(k), blk.n.get(k));
+            let (rc, rs) = reference(&st, &m, v, n);
+            let (pc, ps) = lt.shade(&m, FRONT, Vec4::ONE, v, n);
+            let bits = |a: Vec4| a.to_array().map(f32::to_bits);
+            assert_eq!(bits(c), bits(rc), "case {case} lane {k}: {c} vs {rc}");
+            assert_eq!(bits(s), bits(rs), "case {case} lane {k}: {s} vs {rs}");
+            assert_eq!(
+                (bits(pc), bits(ps)),
+                (bits(c), bits(s)),
+                "case {case} lane {k}"
+            );
+        }
+    }
 }
