@@ -17,13 +17,15 @@
 //! so every tile sees the primitives in submission order (depth ties and, later, blending
 //! depend on it).
 //!
-//! The front end and the drawing overlap. A batch is drawn at End once it holds 64k vertices
-//! (`flush_if_large`), so memory stays bounded; that draw is handed to the thread pool with a
-//! copy of the state (texture images are shared through `Arc`, not copied) while the front end
-//! fills the next batch. At most one draw is in flight: the next `flush_if_large`, any other
-//! flush (a state change, Clear, a read) and every framebuffer access wait for it first, so the
-//! draws happen one after the other in call order and the pixels are exactly those of drawing
-//! in place (tested in `tests/overlap.rs` under this module). A caller running on the pool itself draws in place.
+//! The front end and the drawing overlap. A batch is drawn at End once it holds 32k vertices
+//! (`flush_if_large`), so memory stays bounded. The calling thread runs that batch's vertex
+//! stage itself (the pool is still drawing the previous batch), then hands setup and
+//! rasterisation to the pool with a copy of the state (texture images are shared through
+//! `Arc`, not copied) and goes on filling the next batch. At most one draw is in flight: the
+//! next `flush_if_large`, any other flush (a state change, Clear, a read) and every framebuffer
+//! access wait for it first, so the draws happen one after the other in call order and the
+//! pixels are exactly those of drawing in place (tested in `tests/overlap.rs` under this
+//! module). A caller running on the pool itself draws in place.
 
 pub mod assembly;
 pub mod batch;
@@ -67,10 +69,16 @@ pub struct Renderer {
     core: Option<Box<Core>>,
     /// Framebuffer size (kept here so `size` never waits for a background draw).
     size: (u32, u32),
+    /// Tiles across and down the framebuffer.
+    tiles: (usize, usize),
     batch: Batch,
-    /// A drawn batch kept for its memory: the next background draw swaps it in.
-    spare: Option<Batch>,
-    /// The background draw of the previous batch: hands back the core and the batch.
+    /// The vertex stage's output for `batch`, filled when it is drawn.
+    verts: Processed,
+    /// A drawn batch and its vertex output kept for their memory: the next background draw
+    /// swaps them in.
+    spare: Option<(Batch, Processed)>,
+    /// The background draw of the previous batch: hands back the core, the batch and its
+    /// vertex output.
     pending: Option<Mutex<Receiver<Drawn>>>,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
@@ -78,26 +86,74 @@ pub struct Renderer {
     pub(crate) background_draws: u64,
 }
 
-/// What a background draw hands back: the core and the drawn batch, `None` if it failed.
-type Drawn = Option<(Box<Core>, Batch)>;
+/// What a background draw hands back: the core, the drawn batch and its vertex output; `None`
+/// if it failed.
+type Drawn = Option<(Box<Core>, Batch, Processed)>;
 
-/// What drawing a batch mutates: the framebuffer and scratch space reused across draws.
+/// What drawing a batch mutates: the framebuffer and the setup scratch space reused across
+/// draws.
 #[derive(Debug)]
 struct Core {
     fb: Framebuffer,
-    vout: Vec<f32>,
-    wins: Vec<setup::Win>,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
+}
+
+/// The vertex stage's output for a batch: `layout.stride` floats per vertex, and each vertex's
+/// clip code and window coordinates.
+#[derive(Debug, Default)]
+struct Processed {
+    vout: Vec<f32>,
+    wins: Vec<setup::Win>,
+}
+
+/// The per-draw constants of a batch's state, and its processed vertices' layout.
+struct Plan {
+    layout: Layout,
+    ctx: SetupCtx,
+}
+
+impl Plan {
+    /// Runs the vertex stage (§2.11, §2.14) of `batch` under `state` into `out`; `parallel`
+    /// splits it across the pool.
+    fn process(
+        state: &State,
+        tiles: (usize, usize),
+        batch: &Batch,
+        out: &mut Processed,
+        parallel: bool,
+    ) -> Self {
+        let layout = Layout::for_state(state);
+        let rect = framebuffer::scissor_rect(state);
+        let mut ctx = SetupCtx::new(state, layout, rect, tiles);
+        vertex::process(
+            state,
+            batch,
+            &layout,
+            &ctx,
+            &mut out.vout,
+            &mut out.wins,
+            parallel,
+        );
+        // llvmpipe splits quads along 1–3 when it shades FLAT or when any vertex of the draw
+        // needs clipping (its draw module then takes the clipping path, which decomposes quads
+        // provoking-vertex-last), and along 0–2 otherwise; measured in
+        // tests/implementation_choices.rs. A flush is our counterpart of its draw.
+        ctx.quads_split_last |= out.wins.iter().any(|w| w.code != 0);
+        Plan { layout, ctx }
+    }
 }
 
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     pub fn new(width: u32, height: u32) -> Self {
+        let core = Box::new(Core::new(width, height));
         Self {
-            core: Some(Box::new(Core::new(width, height))),
+            tiles: core.fb.tiles(),
+            core: Some(core),
             size: (width, height),
             batch: Batch::default(),
+            verts: Processed::default(),
             spare: None,
             pending: None,
             count_coverage: false,
@@ -140,10 +196,15 @@ impl Renderer {
         if rayon::current_thread_index().is_some() {
             return self.flush(state);
         }
+        // The vertex stage runs here, on the calling thread, while the previous batch is
+        // still being drawn on the pool; the pool then only sets up and rasterises.
+        let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, false);
         self.wait();
-        let mut next = self.spare.take().unwrap_or_default();
+        let (mut next, mut next_verts) = self.spare.take().unwrap_or_default();
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
+        std::mem::swap(&mut self.verts, &mut next_verts);
+        let verts = next_verts;
         let Some(mut core) = self.core.take() else {
             return;
         };
@@ -158,8 +219,8 @@ impl Renderer {
             // A panic must not abort the process from the pool: the core is then lost and
             // `wait` starts a new one.
             let drawn = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || {
-                core.draw(&state, &batch, count);
-                (core, batch)
+                core.draw(&state, &batch, &verts, plan, count);
+                (core, batch, verts)
             }));
             let _ = tx.send(drawn.ok());
         });
@@ -175,9 +236,9 @@ impl Renderer {
             Err(_) => None,
         };
         match back {
-            Some((core, batch)) => {
+            Some((core, batch, verts)) => {
                 self.core = Some(core);
-                self.spare = Some(batch);
+                self.spare = Some((batch, verts));
             }
             None => {
                 // The draw failed (it never should): go on with a cleared framebuffer.
@@ -235,11 +296,16 @@ impl Renderer {
             return;
         }
         let count = self.count_coverage;
+        let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
-            core, batch, size, ..
+            core,
+            batch,
+            size,
+            verts,
+            ..
         } = self;
         core.get_or_insert_with(|| Box::new(Core::new(size.0, size.1)))
-            .draw(state, batch, count);
+            .draw(state, batch, verts, plan, count);
         batch.clear();
     }
 }
@@ -248,38 +314,30 @@ impl Core {
     fn new(width: u32, height: u32) -> Self {
         Core {
             fb: Framebuffer::new(width, height),
-            vout: Vec::new(),
-            wins: Vec::new(),
             asm: Vec::new(),
             workers: Vec::new(),
         }
     }
 
-    /// Draws `batch` (not empty) with `state` into the framebuffer.
-    fn draw(&mut self, state: &State, batch: &Batch, count_coverage: bool) {
-        let layout = Layout::for_state(state);
-        let rect = framebuffer::scissor_rect(state);
-        let mut ctx = SetupCtx::new(state, layout, rect, self.fb.tiles());
-        // Vertex stage (§2.11, §2.14), parallel over large batches.
-        vertex::process(state, batch, &layout, &ctx, &mut self.vout, &mut self.wins);
-        // llvmpipe splits quads along 1–3 when it shades FLAT or when any vertex of the draw
-        // needs clipping (its draw module then takes the clipping path, which decomposes quads
-        // provoking-vertex-last), and along 0–2 otherwise; measured in
-        // tests/implementation_choices.rs. A flush is our counterpart of its draw.
-        ctx.quads_split_last |= self.wins.iter().any(|w| w.code != 0);
+    /// Draws `batch` (not empty), whose vertices `verts` went through the vertex stage as
+    /// `plan` says, with `state` into the framebuffer.
+    fn draw(
+        &mut self,
+        state: &State,
+        batch: &Batch,
+        verts: &Processed,
+        plan: Plan,
+        count_coverage: bool,
+    ) {
+        let Plan { layout, ctx } = plan;
         // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
         // --- texture: unit 0, when enabled and complete (§3.8.10)
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
         let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
         // --- end texture
-        let Core {
-            fb,
-            vout,
-            wins,
-            asm,
-            workers,
-        } = self;
+        let Core { fb, asm, workers } = self;
+        let (vout, wins) = (&verts.vout[..], &verts.wins[..]);
         let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
             std::slice::from_ref(&state.materials)
         } else {

@@ -582,7 +582,8 @@ impl Transform {
 }
 
 /// Runs the vertex stage over the whole batch into `out` (`layout.stride` floats per vertex),
-/// and each vertex's clip code and window coordinates into `wins`.
+/// and each vertex's clip code and window coordinates into `wins`; `parallel` splits a large
+/// batch across the thread pool.
 pub fn process(
     state: &State,
     batch: &Batch,
@@ -590,6 +591,7 @@ pub fn process(
     setup: &SetupCtx,
     out: &mut Vec<f32>,
     wins: &mut Vec<Win>,
+    parallel: bool,
 ) {
     let n = batch.len();
     out.clear();
@@ -608,7 +610,7 @@ pub fn process(
         setup,
     };
     const CHUNK: usize = 4096;
-    if n > 2 * CHUNK {
+    if parallel && n > 2 * CHUNK {
         out.par_chunks_mut(CHUNK * layout.stride)
             .zip(wins.par_chunks_mut(CHUNK))
             .enumerate()

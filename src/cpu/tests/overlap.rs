@@ -6,7 +6,7 @@ use crate::gl;
 use crate::Context;
 
 /// Rows of the strip mesh per band, and vertices per row: each band holds well over two
-/// batches' worth of vertices (a batch is drawn once it holds 64k).
+/// batches' worth of vertices (a batch is drawn once it holds 32k).
 const ROWS: usize = 120;
 const COLS: usize = 600;
 
