@@ -495,6 +495,81 @@ impl<const N: usize> Lanes3<N> {
     }
 }
 
+/// `N` four-component vectors as a structure of arrays (one array per component).
+#[derive(Clone, Copy, Debug)]
+pub struct Lanes4<const N: usize> {
+    /// The x components.
+    pub x: [f32; N],
+    /// The y components.
+    pub y: [f32; N],
+    /// The z components.
+    pub z: [f32; N],
+    /// The w components.
+    pub w: [f32; N],
+}
+
+impl<const N: usize> Default for Lanes4<N> {
+    fn default() -> Self {
+        Lanes4 {
+            x: [0.0; N],
+            y: [0.0; N],
+            z: [0.0; N],
+            w: [0.0; N],
+        }
+    }
+}
+
+impl<const N: usize> Lanes4<N> {
+    /// Sets lane `i` (nothing past the last lane).
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, v: Vec4) {
+        if let (Some(x), Some(y), Some(z), Some(w)) = (
+            self.x.get_mut(i),
+            self.y.get_mut(i),
+            self.z.get_mut(i),
+            self.w.get_mut(i),
+        ) {
+            (*x, *y, *z, *w) = (v.x, v.y, v.z, v.w);
+        }
+    }
+
+    /// Lane `i` (zero past the last lane).
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Vec4 {
+        match (self.x.get(i), self.y.get(i), self.z.get(i), self.w.get(i)) {
+            (Some(&x), Some(&y), Some(&z), Some(&w)) => Vec4::new(x, y, z, w),
+            _ => Vec4::ZERO,
+        }
+    }
+
+    /// The x, y and z components.
+    #[inline(always)]
+    pub fn xyz(&self) -> Lanes3<N> {
+        Lanes3 {
+            x: self.x,
+            y: self.y,
+            z: self.z,
+        }
+    }
+
+    /// `m` times every lane, with glam's `Mat4 * Vec4` operations in its order
+    /// (`((c0·x + c1·y) + c2·z) + c3·w`, no fused multiply-add), so the same bits.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    pub fn transform(&self, m: &Mat4) -> Self {
+        let c = m.to_cols_array();
+        let mut r = Self::default();
+        for i in 0..N {
+            let (x, y, z, w) = (self.x[i], self.y[i], self.z[i], self.w[i]);
+            r.x[i] = c[0] * x + c[4] * y + c[8] * z + c[12] * w;
+            r.y[i] = c[1] * x + c[5] * y + c[9] * z + c[13] * w;
+            r.z[i] = c[2] * x + c[6] * y + c[10] * z + c[14] * w;
+            r.w[i] = c[3] * x + c[7] * y + c[11] * z + c[15] * w;
+        }
+        r
+    }
+}
+
 /// glam's `normalize_or_zero` on one vector of a [`Lanes3`]: times the reciprocal length when
 /// that is finite and positive, else zero.
 #[inline(always)]
@@ -594,10 +669,10 @@ pub fn process(
     parallel: bool,
 ) {
     let n = batch.len();
-    out.clear();
+    // Every float of `out` (`Lit::run` writes each attribute of the layout for every vertex) and
+    // every element of `wins` (one per vertex) is overwritten below, so the previous flush's
+    // elements are kept rather than cleared: only new ones are initialised.
     out.resize(n * layout.stride, 0.0);
-    // Every element of `wins` is overwritten below (`Lit::run` writes one per vertex), so the
-    // previous flush's elements are kept rather than cleared: only new ones are initialised.
     wins.resize(n, Win::default());
     let tf = Transform::new(state);
     let lighting = state.enables.lighting.then(|| Lighting::new(state));
@@ -630,115 +705,113 @@ struct Lit<'a> {
 }
 
 impl Lit<'_> {
+    /// Processes the vertices from `first` into `out` and `wins`, one block of [`LANES`] at a
+    /// time in a single pass: transforms on a structure of arrays, window coordinates and clip
+    /// codes from the clip positions in hand, the other attributes, then lighting.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
     fn run(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
-        self.shade_all(first, out);
-        for (o, w) in out.chunks_exact(self.layout.stride).zip(wins) {
-            *w = self.setup.win(o);
-        }
-    }
-
-    fn shade_all(&self, first: usize, out: &mut [f32]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
+        let tf = self.tf;
         let uniform = b.snapshots.is_empty();
+        // The vertex colour is read only where an output or COLOR_MATERIAL needs it.
+        let need_attribs = self.lighting.is_none_or(|g| g.color_material.is_some())
+            || l.tex.is_some()
+            || l.tex1.is_some()
+            || l.fog.is_some()
+            || l.raw.is_some();
         // --- texture
         let tex_matrix = *state.texture_matrix[0].top();
         let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
         let tex_matrix1 = *state.texture_matrix[1].top();
         let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
         // --- end texture
-        for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
+        let blocks = out.chunks_mut(l.stride * LANES).zip(wins.chunks_mut(LANES));
+        for (blk, (os, ws)) in blocks.enumerate() {
             let base = first + blk * LANES;
-            let mut pts = Block::<LANES>::default();
-            let mut cnt = 0;
+            let cnt = ws.len().min(os.len() / l.stride.max(1));
+            let (Some(pos), Some(nin)) =
+                (b.pos.get(base..base + cnt), b.normal.get(base..base + cnt))
+            else {
+                return;
+            };
+            // Lanes past `cnt` transform and light the origin; their results are not used.
+            let mut p = Lanes4::<LANES>::default();
+            let mut nr = Lanes3::<LANES>::splat(Vec3::ZERO);
+            for k in 0..cnt {
+                p.set(k, pos[k]);
+                nr.set(k, nin[k]);
+            }
+            let eye = p.transform(&tf.mv);
+            let clip = eye.transform(&tf.proj);
+            self.setup.win_block(&clip, &eye, ws);
             for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
-                let i = base + k;
-                let (Some(&p), Some(&nrm), Some(a)) = (b.pos.get(i), b.normal.get(i), b.attribs(i))
-                else {
-                    return;
-                };
-                let (color, color2) = (a.color, a.color2);
-                let eye = self.tf.mv * p;
-                let clip = self.tf.proj * eye;
-                put(o, 0, clip);
+                put(o, 0, clip.get(k));
                 if let Some(o_eye) = l.eye {
-                    put(o, o_eye, eye);
+                    put(o, o_eye, eye.get(k));
                 }
-                if let (Some(t), tc) = (l.tex, a.tex) {
-                    // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
-                    let tc = match &texgen {
-                        Some(g) => {
-                            let mut n = self.tf.normal * nrm;
-                            if g.needs_normal && self.tf.normalize {
-                                n = n.normalize_or_zero();
-                            }
-                            g.apply(tc, p, eye, n)
-                        }
-                        None => tc,
+            }
+            let mut colors = [Vec4::ZERO; LANES];
+            if need_attribs {
+                for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                    let Some(a) = b.attribs(base + k) else {
+                        return;
                     };
-                    put(o, t, tex_matrix * tc);
-                }
-                if let (Some(t), tc) = (l.tex1, a.tex1) {
-                    let tc = match &texgen1 {
-                        Some(g) => {
-                            let mut n = self.tf.normal * nrm;
-                            if g.needs_normal && self.tf.normalize {
-                                n = n.normalize_or_zero();
-                            }
-                            g.apply(tc, p, eye, n)
-                        }
-                        None => tc,
-                    };
-                    put(o, t, tex_matrix1 * tc);
-                    // --- end texture
-                }
-                // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
-                // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
-                if let Some(f) = l.fog {
-                    let c = if state.fog.coord_src == gl::FOG_COORD {
-                        a.fog
-                    } else {
-                        eye.z
-                    };
-                    if let Some(d) = o.get_mut(f) {
-                        *d = c.abs();
-                    }
-                }
-                // --- end fragment ops
-                if self.lighting.is_none() {
-                    put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
-                    if let Some(s) = l.spec {
-                        put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
-                    }
-                    continue;
-                }
-                let mut n = self.tf.normal * nrm;
-                if self.tf.normalize {
-                    n = n.normalize_or_zero();
-                }
-                // Dividing by w = 1 is exact: skip it for the common affine modelview.
-                let v = if eye.w != 0.0 && eye.w != 1.0 {
-                    eye.xyz() / eye.w
-                } else {
-                    eye.xyz()
-                };
-                pts.v.set(k, v);
-                pts.n.set(k, n);
-                if let Some(c) = pts.color.get_mut(k) {
-                    *c = color;
-                }
-                cnt = k + 1;
-                if let Some(no) = l.nrm {
-                    put3(o, no, n);
-                }
-                if let Some(r) = l.raw {
-                    put(o, r, color);
+                    colors[k] = a.color;
+                    self.extras(
+                        o,
+                        a,
+                        pos[k],
+                        nin[k],
+                        eye.get(k),
+                        &texgen,
+                        &texgen1,
+                        &[tex_matrix, tex_matrix1],
+                    );
                 }
             }
             let Some(lighting) = self.lighting else {
                 continue;
             };
+            // The normal transform (glam's Mat3 * Vec3, operation for operation), then
+            // NORMALIZE (§2.11.3); built in place, as the block is large.
+            let mut pts = Block {
+                v: eye.xyz(),
+                n: Lanes3::splat(Vec3::ZERO),
+                color: colors,
+            };
+            let m = tf.normal.to_cols_array();
+            let n = &mut pts.n;
+            for i in 0..LANES {
+                n.x[i] = m[0] * nr.x[i] + m[3] * nr.y[i] + m[6] * nr.z[i];
+                n.y[i] = m[1] * nr.x[i] + m[4] * nr.y[i] + m[7] * nr.z[i];
+                n.z[i] = m[2] * nr.x[i] + m[5] * nr.y[i] + m[8] * nr.z[i];
+            }
+            if tf.normalize {
+                for i in 0..LANES {
+                    (n.x[i], n.y[i], n.z[i]) = normalize_or_zero(n.x[i], n.y[i], n.z[i]);
+                }
+            }
+            // The eye position divided by w; dividing by w = 1 is exact (the common affine
+            // modelview skips it), and w = 0 is kept.
+            if !eye.w.iter().take(cnt).all(|&w| w == 1.0) {
+                let v = &mut pts.v;
+                for i in 0..LANES {
+                    let w = eye.w[i];
+                    if w != 0.0 && w != 1.0 {
+                        v.x[i] = eye.x[i] / w;
+                        v.y[i] = eye.y[i] / w;
+                        v.z[i] = eye.z[i] / w;
+                    }
+                }
+            }
+            if let Some(no) = l.nrm {
+                for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                    put3(o, no, pts.n.get(k));
+                }
+            }
             // Materials: the state's for the whole block, or each vertex's own snapshot.
             let mat_of = |i: usize| {
                 b.mat
@@ -750,7 +823,6 @@ impl Lit<'_> {
             let mut lit_b = [(Vec4::ZERO, Vec4::ZERO); LANES];
             let two = l.col_b.is_some();
             if uniform {
-                // Lanes past `cnt` light default points; their results are not used.
                 let m = &state.materials;
                 lighting.shade_block(&m[FRONT], FRONT, &pts, &mut lit);
                 if two {
@@ -769,7 +841,7 @@ impl Lit<'_> {
                     }
                 }
             }
-            for (k, o) in os.chunks_exact_mut(l.stride).take(cnt).enumerate() {
+            for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                 let (c, s) = lit[k];
                 put(o, l.col, c);
                 if let Some(so) = l.spec {
@@ -783,6 +855,67 @@ impl Lit<'_> {
                     }
                 }
             }
+        }
+    }
+
+    /// The outputs of one vertex other than position and lit colours: texture coordinates, fog
+    /// coordinate, the unlit colours (lighting off) or the raw colour (PHONG_WIN).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn extras(
+        &self,
+        o: &mut [f32],
+        a: &super::batch::Attribs,
+        p: Vec4,
+        nrm: Vec3,
+        eye: Vec4,
+        texgen: &Option<super::texgen::TexGen>,
+        texgen1: &Option<super::texgen::TexGen>,
+        tex_matrix: &[Mat4; 2],
+    ) {
+        let l = self.layout;
+        let tf = self.tf;
+        let (color, color2) = (a.color, a.color2);
+        // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
+        for (at, tc, g, tm) in [
+            (l.tex, a.tex, texgen, &tex_matrix[0]),
+            (l.tex1, a.tex1, texgen1, &tex_matrix[1]),
+        ] {
+            let Some(t) = at else { continue };
+            let tc = match g {
+                Some(g) => {
+                    let mut n = tf.normal * nrm;
+                    if g.needs_normal && tf.normalize {
+                        n = n.normalize_or_zero();
+                    }
+                    g.apply(tc, p, eye, n)
+                }
+                None => tc,
+            };
+            put(o, t, *tm * tc);
+        }
+        // --- end texture
+        // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
+        // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
+        if let Some(f) = l.fog {
+            let c = if self.state.fog.coord_src == gl::FOG_COORD {
+                a.fog
+            } else {
+                eye.z
+            };
+            if let Some(d) = o.get_mut(f) {
+                *d = c.abs();
+            }
+        }
+        // --- end fragment ops
+        if self.lighting.is_none() {
+            put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
+            if let Some(s) = l.spec {
+                put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
+            }
+        }
+        if let Some(r) = l.raw {
+            put(o, r, color);
         }
     }
 }
