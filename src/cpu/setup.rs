@@ -319,8 +319,8 @@ impl SetupCtx {
         Win {
             x: xw as f32,
             y: yw as f32,
-            fx: snap(xw),
-            fy: snap(yw),
+            fx: i64::from(snap(xw)),
+            fy: i64::from(snap(yw)),
             z: zw,
             iw: iw as f32,
             code: self.clipper.code(v),
@@ -342,14 +342,19 @@ impl SetupCtx {
             yw[i] = f64::from(c.y[i]) * iw[i] * self.scale[1] + self.offset[1];
             zw[i] = f64::from(c.z[i]) * iw[i] * self.scale[2] + self.offset[2];
         }
+        let (mut fx, mut fy) = ([0i32; N], [0i32; N]);
+        for i in 0..N {
+            fx[i] = snap(xw[i]);
+            fy[i] = snap(yw[i]);
+        }
         let mut code = [0u16; N];
         self.clipper.code_block(c, e, &mut code);
         for (i, w) in out.iter_mut().take(N).enumerate() {
             *w = Win {
                 x: xw[i] as f32,
                 y: yw[i] as f32,
-                fx: snap(xw[i]),
-                fy: snap(yw[i]),
+                fx: i64::from(fx[i]),
+                fy: i64::from(fy[i]),
                 z: zw[i],
                 iw: iw[i] as f32,
                 code: code[i],
@@ -361,10 +366,12 @@ impl SetupCtx {
 /// Window coordinate `x` snapped to 1/256 pixel. Rounds half away from zero with a cast
 /// (f64::round is a libm call on baseline x86-64). The clamp to ±2^29 (±2M pixels) keeps every
 /// edge-function product inside i64; only a viewport placed millions of pixels away could reach it.
+/// The clamped value plus one half is below 2^31 in magnitude (NaN gives 0), so the cast is to
+/// i32, which vectorises where a cast to i64 does not.
 #[inline(always)]
-fn snap(x: f64) -> i64 {
+fn snap(x: f64) -> i32 {
     let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
-    (t + 0.5f64.copysign(t)) as i64
+    (t + 0.5f64.copysign(t)) as i32
 }
 
 /// A vertex in window coordinates with its varyings.

@@ -429,7 +429,7 @@ fn reference(st: &State, m: &Material, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
     )
 }
 
-/// `shade_block` over 8 lanes, `shade` on one point and the plain sum agree bit for bit over
+/// `shade_block` over [`LANES`] lanes, `shade` on one point and the plain sum agree bit for bit over
 /// random lights (positional with attenuation, spot, directional), materials (shininess up to
 /// 128, where most specular powers are skipped as negligible), viewer and colour-control modes.
 #[test]
