@@ -207,14 +207,14 @@ impl Lighting {
     /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
     #[inline]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
-        let mut out = [(Vec4::ZERO, Vec4::ZERO)];
+        let mut out = Shaded::default();
         let p = Block {
             v: Lanes3::splat(v),
             n: Lanes3::splat(n),
             color: [color],
         };
         self.eval(m, face, &p, &mut out);
-        out[0]
+        out.get(0)
     }
 
     /// [`Lighting::shade`] for `N` points at once ([`LANES`] for vertices, 1 for a fragment):
@@ -237,6 +237,22 @@ impl Lighting {
         pts: &Block<N>,
         out: &mut [(Vec4, Vec4); N],
     ) {
+        let mut sh = Shaded::default();
+        self.eval(m, face, pts, &mut sh);
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = sh.get(k);
+        }
+    }
+
+    /// [`Lighting::shade_block`] with its results left on arrays (for the vertex stage).
+    #[inline(always)]
+    pub(super) fn shade_lanes<const N: usize>(
+        &self,
+        m: &Material,
+        face: usize,
+        pts: &Block<N>,
+        out: &mut Shaded<N>,
+    ) {
         self.eval(m, face, pts, out);
     }
 
@@ -245,13 +261,7 @@ impl Lighting {
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn eval<const N: usize>(
-        &self,
-        m: &Material,
-        face: usize,
-        pts: &Block<N>,
-        out: &mut [(Vec4, Vec4); N],
-    ) {
+    fn eval<const N: usize>(&self, m: &Material, face: usize, pts: &Block<N>, out: &mut Shaded<N>) {
         // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
         let tracked = self
             .color_material
@@ -415,11 +425,85 @@ impl Lighting {
             }
         }
         // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = (
-                Vec4::new(c.x[i], c.y[i], c.z[i], alpha[i]).clamp(Vec4::ZERO, Vec4::ONE),
-                Vec4::new(s.x[i], s.y[i], s.z[i], 0.0).clamp(Vec4::ZERO, Vec4::ONE),
-            );
+        for i in 0..N {
+            out.c.x[i] = clamp01(c.x[i]);
+            out.c.y[i] = clamp01(c.y[i]);
+            out.c.z[i] = clamp01(c.z[i]);
+            out.a[i] = clamp01(alpha[i]);
+            out.s.x[i] = clamp01(s.x[i]);
+            out.s.y[i] = clamp01(s.y[i]);
+            out.s.z[i] = clamp01(s.z[i]);
+        }
+    }
+}
+
+/// `x` clamped to [0, 1] exactly as glam's `Vec4::clamp(ZERO, ONE)` does it on SSE2 (`maxps`
+/// then `minps`: NaN gives 0, -0 gives +0), one lane at a time so that it vectorises on arrays.
+#[inline(always)]
+fn clamp01(x: f32) -> f32 {
+    let t = if x > 0.0 { x } else { 0.0 };
+    if t < 1.0 {
+        t
+    } else {
+        1.0
+    }
+}
+
+/// The lit colours of `N` points on arrays, clamped to [0, 1]: primary rgb and alpha, and the
+/// secondary rgb (its alpha is 0).
+#[derive(Clone, Copy, Debug)]
+pub struct Shaded<const N: usize> {
+    /// Primary colour.
+    pub c: Lanes3<N>,
+    /// Primary alpha.
+    pub a: [f32; N],
+    /// Secondary colour.
+    pub s: Lanes3<N>,
+}
+
+impl<const N: usize> Default for Shaded<N> {
+    fn default() -> Self {
+        Shaded {
+            c: Lanes3::splat(Vec3::ZERO),
+            a: [0.0; N],
+            s: Lanes3::splat(Vec3::ZERO),
+        }
+    }
+}
+
+impl<const N: usize> Shaded<N> {
+    /// Point `k`'s (primary, secondary) colours (zero past the last lane).
+    #[inline(always)]
+    pub fn get(&self, k: usize) -> (Vec4, Vec4) {
+        let a = self.a.get(k).copied().unwrap_or(0.0);
+        (self.c.get(k).extend(a), self.s.get(k).extend(0.0))
+    }
+
+    /// Sets point `k` from `one`'s only point (nothing past the last lane).
+    #[inline(always)]
+    fn set_from(&mut self, k: usize, one: &Shaded<1>) {
+        self.c.set(k, one.c.get(0));
+        self.s.set(k, one.s.get(0));
+        if let Some(a) = self.a.get_mut(k) {
+            *a = one.a[0];
+        }
+    }
+
+    /// Writes point `k`'s primary colour at `col` of `o`, and its secondary colour at `spec`.
+    #[inline(always)]
+    fn put(&self, k: usize, o: &mut [f32], col: usize, spec: Option<usize>) {
+        if let (Some(&x), Some(&y), Some(&z), Some(&a)) = (
+            self.c.x.get(k),
+            self.c.y.get(k),
+            self.c.z.get(k),
+            self.a.get(k),
+        ) {
+            put_arr(o, col, [x, y, z, a]);
+        }
+        if let (Some(at), Some(&x), Some(&y), Some(&z)) =
+            (spec, self.s.x.get(k), self.s.y.get(k), self.s.z.get(k))
+        {
+            put_arr(o, at, [x, y, z, 0.0]);
         }
     }
 }
@@ -735,7 +819,8 @@ impl Lit<'_> {
         let blocks = out.chunks_mut(l.stride * LANES).zip(wins.chunks_mut(LANES));
         for (blk, (os, ws)) in blocks.enumerate() {
             let base = first + blk * LANES;
-            let cnt = ws.len().min(os.len() / l.stride.max(1));
+            // `os` holds as many vertices as `ws`.
+            let cnt = ws.len();
             let (Some(pos), Some(nin)) =
                 (b.pos.get(base..base + cnt), b.normal.get(base..base + cnt))
             else {
@@ -744,19 +829,13 @@ impl Lit<'_> {
             // Lanes past `cnt` transform and light the origin; their results are not used.
             let mut p = Lanes4::<LANES>::default();
             let mut nr = Lanes3::<LANES>::splat(Vec3::ZERO);
-            for k in 0..cnt {
-                p.set(k, pos[k]);
-                nr.set(k, nin[k]);
+            for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
+                (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
+                (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
             }
             let eye = p.transform(&tf.mv);
             let clip = eye.transform(&tf.proj);
             self.setup.win_block(&clip, &eye, ws);
-            for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
-                put(o, 0, clip.get(k));
-                if let Some(o_eye) = l.eye {
-                    put(o, o_eye, eye.get(k));
-                }
-            }
             let mut colors = [Vec4::ZERO; LANES];
             if need_attribs {
                 for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
@@ -776,86 +855,89 @@ impl Lit<'_> {
                     );
                 }
             }
-            let Some(lighting) = self.lighting else {
-                continue;
-            };
-            // The normal transform (glam's Mat3 * Vec3, operation for operation), then
-            // NORMALIZE (§2.11.3); built in place, as the block is large.
-            let mut pts = Block {
-                v: eye.xyz(),
-                n: Lanes3::splat(Vec3::ZERO),
-                color: colors,
-            };
-            let m = tf.normal.to_cols_array();
-            let n = &mut pts.n;
-            for i in 0..LANES {
-                n.x[i] = m[0] * nr.x[i] + m[3] * nr.y[i] + m[6] * nr.z[i];
-                n.y[i] = m[1] * nr.x[i] + m[4] * nr.y[i] + m[7] * nr.z[i];
-                n.z[i] = m[2] * nr.x[i] + m[5] * nr.y[i] + m[8] * nr.z[i];
-            }
-            if tf.normalize {
+            let mut lit = Shaded::<LANES>::default();
+            let mut lit_b = Shaded::<LANES>::default();
+            if let Some(lighting) = self.lighting {
+                // The normal transform (glam's Mat3 * Vec3, operation for operation), then
+                // NORMALIZE (§2.11.3); built in place, as the block is large.
+                let mut pts = Block {
+                    v: eye.xyz(),
+                    n: Lanes3::splat(Vec3::ZERO),
+                    color: colors,
+                };
+                let m = tf.normal.to_cols_array();
+                let n = &mut pts.n;
                 for i in 0..LANES {
-                    (n.x[i], n.y[i], n.z[i]) = normalize_or_zero(n.x[i], n.y[i], n.z[i]);
+                    n.x[i] = m[0] * nr.x[i] + m[3] * nr.y[i] + m[6] * nr.z[i];
+                    n.y[i] = m[1] * nr.x[i] + m[4] * nr.y[i] + m[7] * nr.z[i];
+                    n.z[i] = m[2] * nr.x[i] + m[5] * nr.y[i] + m[8] * nr.z[i];
                 }
-            }
-            // The eye position divided by w; dividing by w = 1 is exact (the common affine
-            // modelview skips it), and w = 0 is kept.
-            if !eye.w.iter().take(cnt).all(|&w| w == 1.0) {
-                let v = &mut pts.v;
-                for i in 0..LANES {
-                    let w = eye.w[i];
-                    if w != 0.0 && w != 1.0 {
-                        v.x[i] = eye.x[i] / w;
-                        v.y[i] = eye.y[i] / w;
-                        v.z[i] = eye.z[i] / w;
+                if tf.normalize {
+                    for i in 0..LANES {
+                        (n.x[i], n.y[i], n.z[i]) = normalize_or_zero(n.x[i], n.y[i], n.z[i]);
                     }
                 }
-            }
-            if let Some(no) = l.nrm {
-                for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
-                    put3(o, no, pts.n.get(k));
+                // The eye position divided by w; dividing by w = 1 is exact (the common affine
+                // modelview skips it), and w = 0 is kept.
+                let mut affine = true;
+                for (k, &w) in eye.w.iter().enumerate() {
+                    affine &= w == 1.0 || k >= cnt;
                 }
-            }
-            // Materials: the state's for the whole block, or each vertex's own snapshot.
-            let mat_of = |i: usize| {
-                b.mat
-                    .get(i)
-                    .and_then(|&m| b.snapshots.get(m as usize))
-                    .unwrap_or(&state.materials)
-            };
-            let mut lit = [(Vec4::ZERO, Vec4::ZERO); LANES];
-            let mut lit_b = [(Vec4::ZERO, Vec4::ZERO); LANES];
-            let two = l.col_b.is_some();
-            if uniform {
-                let m = &state.materials;
-                lighting.shade_block(&m[FRONT], FRONT, &pts, &mut lit);
-                if two {
-                    lighting.shade_block(&m[BACK], BACK, &pts.back(), &mut lit_b);
+                if !affine {
+                    let v = &mut pts.v;
+                    for i in 0..LANES {
+                        let w = eye.w[i];
+                        if w != 0.0 && w != 1.0 {
+                            v.x[i] = eye.x[i] / w;
+                            v.y[i] = eye.y[i] / w;
+                            v.z[i] = eye.z[i] / w;
+                        }
+                    }
                 }
-            } else {
-                for k in 0..cnt {
-                    let m = mat_of(base + k);
-                    let p = pts.one(k);
-                    let mut one = [(Vec4::ZERO, Vec4::ZERO)];
-                    lighting.shade_block(&m[FRONT], FRONT, &p, &mut one);
-                    lit[k] = one[0];
+                if let Some(no) = l.nrm {
+                    for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                        put3(o, no, pts.n.get(k));
+                    }
+                }
+                // Materials: the state's for the whole block, or each vertex's own snapshot.
+                let mat_of = |i: usize| {
+                    b.mat
+                        .get(i)
+                        .and_then(|&m| b.snapshots.get(m as usize))
+                        .unwrap_or(&state.materials)
+                };
+                let two = l.col_b.is_some();
+                if uniform {
+                    let m = &state.materials;
+                    lighting.shade_lanes(&m[FRONT], FRONT, &pts, &mut lit);
                     if two {
-                        lighting.shade_block(&m[BACK], BACK, &p.back(), &mut one);
-                        lit_b[k] = one[0];
+                        lighting.shade_lanes(&m[BACK], BACK, &pts.back(), &mut lit_b);
+                    }
+                } else {
+                    for k in 0..cnt {
+                        let m = mat_of(base + k);
+                        let p = pts.one(k);
+                        let mut one = Shaded::<1>::default();
+                        lighting.shade_lanes(&m[FRONT], FRONT, &p, &mut one);
+                        lit.set_from(k, &one);
+                        if two {
+                            lighting.shade_lanes(&m[BACK], BACK, &p.back(), &mut one);
+                            lit_b.set_from(k, &one);
+                        }
                     }
                 }
             }
-            for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
-                let (c, s) = lit[k];
-                put(o, l.col, c);
-                if let Some(so) = l.spec {
-                    put(o, so, s);
+            // The clip (and eye) position, and the lit colours (`extras` wrote the unlit ones).
+            let lit_on = self.lighting.is_some();
+            for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
+                put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
+                if let Some(o_eye) = l.eye {
+                    put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
                 }
-                if let Some(cb) = l.col_b {
-                    let (c, s) = lit_b[k];
-                    put(o, cb, c);
-                    if let Some(sb) = l.spec_b {
-                        put(o, sb, s);
+                if lit_on {
+                    lit.put(k, o, l.col, l.spec);
+                    if let Some(cb) = l.col_b {
+                        lit_b.put(k, o, cb, l.spec_b);
                     }
                 }
             }
@@ -928,6 +1010,13 @@ impl Lit<'_> {
 fn put(o: &mut [f32], at: usize, v: Vec4) {
     if let Some(d) = o.get_mut(at..at + 4) {
         d.copy_from_slice(&v.to_array());
+    }
+}
+
+#[inline(always)]
+fn put_arr(o: &mut [f32], at: usize, v: [f32; 4]) {
+    if let Some(d) = o.get_mut(at..at + 4) {
+        d.copy_from_slice(&v);
     }
 }
 
