@@ -606,6 +606,17 @@ impl<const N: usize> Default for Lanes4<N> {
 }
 
 impl<const N: usize> Lanes4<N> {
+    /// `v` in every lane.
+    #[inline(always)]
+    pub fn splat(v: Vec4) -> Self {
+        Lanes4 {
+            x: [v.x; N],
+            y: [v.y; N],
+            z: [v.z; N],
+            w: [v.w; N],
+        }
+    }
+
     /// Sets lane `i` (nothing past the last lane).
     #[inline(always)]
     pub fn set(&mut self, i: usize, v: Vec4) {
@@ -826,9 +837,13 @@ impl Lit<'_> {
             else {
                 return;
             };
-            // Lanes past `cnt` transform and light the origin; their results are not used.
-            let mut p = Lanes4::<LANES>::default();
-            let mut nr = Lanes3::<LANES>::splat(Vec3::ZERO);
+            // Lanes past `cnt` (in a batch's last block) repeat its first vertex; their results
+            // are not used.
+            let (Some(q0), Some(m0)) = (pos.first(), nin.first()) else {
+                return;
+            };
+            let mut p = Lanes4::<LANES>::splat(*q0);
+            let mut nr = Lanes3::<LANES>::splat(*m0);
             for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
                 (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
                 (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
@@ -879,11 +894,7 @@ impl Lit<'_> {
                 }
                 // The eye position divided by w; dividing by w = 1 is exact (the common affine
                 // modelview skips it), and w = 0 is kept.
-                let mut affine = true;
-                for (k, &w) in eye.w.iter().enumerate() {
-                    affine &= w == 1.0 || k >= cnt;
-                }
-                if !affine {
+                if !eye.w.iter().fold(true, |a, &w| a & (w == 1.0)) {
                     let v = &mut pts.v;
                     for i in 0..LANES {
                         let w = eye.w[i];
