@@ -816,7 +816,7 @@ impl Lit<'_> {
         let tf = self.tf;
         let uniform = b.snapshots.is_empty();
         // The vertex colour is read only where an output or COLOR_MATERIAL needs it.
-        let need_attribs = self.lighting.is_none_or(|g| g.color_material.is_some())
+        let need_attribs = self.lighting.map_or(true, |g| g.color_material.is_some())
             || l.tex.is_some()
             || l.tex1.is_some()
             || l.fog.is_some()
