@@ -617,19 +617,6 @@ impl<const N: usize> Lanes4<N> {
         }
     }
 
-    /// Sets lane `i` (nothing past the last lane).
-    #[inline(always)]
-    pub fn set(&mut self, i: usize, v: Vec4) {
-        if let (Some(x), Some(y), Some(z), Some(w)) = (
-            self.x.get_mut(i),
-            self.y.get_mut(i),
-            self.z.get_mut(i),
-            self.w.get_mut(i),
-        ) {
-            (*x, *y, *z, *w) = (v.x, v.y, v.z, v.w);
-        }
-    }
-
     /// Lane `i` (zero past the last lane).
     #[inline(always)]
     pub fn get(&self, i: usize) -> Vec4 {
