@@ -814,6 +814,13 @@ impl Lit<'_> {
         let tex_matrix1 = *state.texture_matrix[1].top();
         let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
         // --- end texture
+        // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
+        // block, every lane that is read), so they are initialised once.
+        let mut lit = Shaded::<LANES>::default();
+        let mut lit_b = Shaded::<LANES>::default();
+        // The points to light; each block rewrites their positions and normals, and their
+        // colours where `extras` reads them (the lanes past a block's last vertex are not used).
+        let mut pts = Block::<LANES>::default();
         let blocks = out.chunks_mut(l.stride * LANES).zip(wins.chunks_mut(LANES));
         for (blk, (os, ws)) in blocks.enumerate() {
             let base = first + blk * LANES;
@@ -838,13 +845,14 @@ impl Lit<'_> {
             let eye = p.transform(&tf.mv);
             let clip = eye.transform(&tf.proj);
             self.setup.win_block(&clip, &eye, ws);
-            let mut colors = [Vec4::ZERO; LANES];
             if need_attribs {
                 for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                     let Some(a) = b.attribs(base + k) else {
                         return;
                     };
-                    colors[k] = a.color;
+                    if let Some(c) = pts.color.get_mut(k) {
+                        *c = a.color;
+                    }
                     self.extras(
                         o,
                         a,
@@ -857,16 +865,10 @@ impl Lit<'_> {
                     );
                 }
             }
-            let mut lit = Shaded::<LANES>::default();
-            let mut lit_b = Shaded::<LANES>::default();
             if let Some(lighting) = self.lighting {
+                pts.v = eye.xyz();
                 // The normal transform (glam's Mat3 * Vec3, operation for operation), then
-                // NORMALIZE (§2.11.3); built in place, as the block is large.
-                let mut pts = Block {
-                    v: eye.xyz(),
-                    n: Lanes3::splat(Vec3::ZERO),
-                    color: colors,
-                };
+                // NORMALIZE (§2.11.3), written in place.
                 let m = tf.normal.to_cols_array();
                 let n = &mut pts.n;
                 for i in 0..LANES {
