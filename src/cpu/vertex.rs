@@ -821,6 +821,9 @@ impl Lit<'_> {
         // The points to light; each block rewrites their positions and normals, and their
         // colours where `extras` reads them (the lanes past a block's last vertex are not used).
         let mut pts = Block::<LANES>::default();
+        // A block's positions and normals, every lane rewritten for each block.
+        let mut p = Lanes4::<LANES>::splat(Vec4::ZERO);
+        let mut nr = Lanes3::<LANES>::splat(Vec3::ZERO);
         let blocks = out.chunks_mut(l.stride * LANES).zip(wins.chunks_mut(LANES));
         for (blk, (os, ws)) in blocks.enumerate() {
             let base = first + blk * LANES;
@@ -836,8 +839,10 @@ impl Lit<'_> {
             let (Some(q0), Some(m0)) = (pos.first(), nin.first()) else {
                 return;
             };
-            let mut p = Lanes4::<LANES>::splat(*q0);
-            let mut nr = Lanes3::<LANES>::splat(*m0);
+            if cnt < LANES {
+                p = Lanes4::splat(*q0);
+                nr = Lanes3::splat(*m0);
+            }
             for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
                 (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
                 (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
