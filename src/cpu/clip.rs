@@ -11,7 +11,7 @@
 
 use glam::{DVec4, Vec4};
 
-use super::vertex::Layout;
+use super::vertex::{Lanes4, Layout};
 use crate::state::{State, MAX_CLIP_PLANES};
 
 /// Most vertices a clipped triangle can have: 3 plus one per plane.
@@ -80,6 +80,37 @@ impl Clipper {
             }
         }
         c
+    }
+
+    /// [`Clipper::code`] of `N` vertices at once, from their clip positions `c` and eye positions
+    /// `e` (read only under user clip planes), into `out` (its first `N` elements at most): the
+    /// same planes and tests, in a form the compiler vectorises.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    pub fn code_block<const N: usize>(&self, c: &Lanes4<N>, e: &Lanes4<N>, out: &mut [u16; N]) {
+        let o = |d: f32| u16::from(outside(d));
+        for i in 0..N {
+            let (x, y, z, w) = (c.x[i], c.y[i], c.z[i], c.w[i]);
+            out[i] = o(w + x)
+                | o(w - x) << 1
+                | o(w + y) << 2
+                | o(w - y) << 3
+                | o(w + z) << 4
+                | o(w - z) << 5
+                | o(w - W_MIN) << 6;
+        }
+        if self.any_user {
+            for (k, p) in self.user.iter().enumerate() {
+                if !self.user_on[k] {
+                    continue;
+                }
+                for i in 0..N {
+                    let d = p.x * e.x[i] + p.y * e.y[i] + p.z * e.z[i] + p.w * e.w[i];
+                    out[i] |= o(d) << (7 + k);
+                }
+            }
+        }
     }
 
     /// Clips the polygon in `a` (`n` vertices of `stride` floats, edge flag of the edge starting

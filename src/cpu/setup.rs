@@ -19,7 +19,7 @@ use super::assembly::Asm;
 use super::batch::{Batch, Prim};
 use super::clip::{Clipper, MAX_POLY};
 use super::framebuffer::TILE;
-use super::vertex::Layout;
+use super::vertex::{Lanes4, Layout};
 use crate::gl;
 use crate::state::State;
 
@@ -316,23 +316,62 @@ impl SetupCtx {
         let xw = g(0) * iw * self.scale[0] + self.offset[0];
         let yw = g(1) * iw * self.scale[1] + self.offset[1];
         let zw = g(2) * iw * self.scale[2] + self.offset[2];
-        // Round half away from zero with a cast (f64::round is a libm call on baseline x86-64).
-        // The clamp to ±2^29 (±2M pixels) keeps every edge-function product inside i64; only
-        // a viewport placed millions of pixels away could reach it.
-        let snap = |x: f64| {
-            let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
-            (t + 0.5f64.copysign(t)) as i64
-        };
         Win {
             x: xw as f32,
             y: yw as f32,
-            fx: snap(xw),
-            fy: snap(yw),
+            fx: i64::from(snap(xw)),
+            fy: i64::from(snap(yw)),
             z: zw,
             iw: iw as f32,
             code: self.clipper.code(v),
         }
     }
+
+    /// [`SetupCtx::win`] of `N` vertices at once, from their clip positions `c` and eye
+    /// positions `e` (read only under user clip planes), into `out` (its first `N` elements at
+    /// most): the same operations in the same order, so the same bits, on arrays that the
+    /// compiler vectorises (the vertex stage calls this while the positions are in hand).
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    pub fn win_block<const N: usize>(&self, c: &Lanes4<N>, e: &Lanes4<N>, out: &mut [Win]) {
+        let (mut xw, mut yw, mut zw, mut iw) = ([0.0f64; N], [0.0f64; N], [0.0f64; N], [0.0; N]);
+        for i in 0..N {
+            iw[i] = 1.0 / f64::from(c.w[i]);
+            xw[i] = f64::from(c.x[i]) * iw[i] * self.scale[0] + self.offset[0];
+            yw[i] = f64::from(c.y[i]) * iw[i] * self.scale[1] + self.offset[1];
+            zw[i] = f64::from(c.z[i]) * iw[i] * self.scale[2] + self.offset[2];
+        }
+        let (mut fx, mut fy) = ([0i32; N], [0i32; N]);
+        for i in 0..N {
+            fx[i] = snap(xw[i]);
+            fy[i] = snap(yw[i]);
+        }
+        let mut code = [0u16; N];
+        self.clipper.code_block(c, e, &mut code);
+        for (i, w) in out.iter_mut().take(N).enumerate() {
+            *w = Win {
+                x: xw[i] as f32,
+                y: yw[i] as f32,
+                fx: i64::from(fx[i]),
+                fy: i64::from(fy[i]),
+                z: zw[i],
+                iw: iw[i] as f32,
+                code: code[i],
+            };
+        }
+    }
+}
+
+/// Window coordinate `x` snapped to 1/256 pixel. Rounds half away from zero with a cast
+/// (f64::round is a libm call on baseline x86-64). The clamp to ±2^29 (±2M pixels) keeps every
+/// edge-function product inside i64; only a viewport placed millions of pixels away could reach it.
+/// The clamped value plus one half is below 2^31 in magnitude (NaN gives 0), so the cast is to
+/// i32, which vectorises where a cast to i64 does not.
+#[inline(always)]
+fn snap(x: f64) -> i32 {
+    let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
+    (t + 0.5f64.copysign(t)) as i32
 }
 
 /// A vertex in window coordinates with its varyings.

@@ -3,14 +3,22 @@
 //!
 //! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation,
 //! generic over its number of lanes and written on a structure of arrays so that the compiler
-//! vectorises it; the vertex stage calls it for blocks of 8 vertices and the PHONG_WIN fragment
-//! path (through `Lighting::shade`) for single fragments, so the two shading modes can never
-//! disagree about the equation, down to the bits. Results are written to one flat `f32` array
-//! with a per-flush `Layout`, carrying only the attributes the flush needs, plus each vertex's
-//! clip code and window coordinates.
+//! vectorises it; the vertex stage calls it for blocks of `LANES` vertices and the PHONG_WIN
+//! fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
+//! never disagree about the equation, down to the bits. The vertex stage makes one pass per block:
+//! it transforms the block's positions and normals on arrays, computes the window coordinates
+//! and clip codes (`SetupCtx::win_block`) while the clip positions are in hand, then lights the
+//! block. Results are written to one flat `f32` array with a per-flush `Layout`, carrying only
+//! the attributes the flush needs, plus each vertex's clip code and window coordinates. The
+//! structures of arrays (`Lanes3`, `Lanes4`, `Block`, `Shaded`) live in the `lanes` submodule.
 
 use glam::{Mat3, Mat4, Vec3, Vec3A, Vec4, Vec4Swizzles};
 use rayon::prelude::*;
+
+mod lanes;
+
+use lanes::{clamp01, normalize_or_zero, put_arr};
+pub use lanes::{Block, Lanes3, Lanes4, Shaded, LANES};
 
 use super::batch::Batch;
 use super::setup::{SetupCtx, Win};
@@ -205,14 +213,14 @@ impl Lighting {
     /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
     #[inline]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
-        let mut out = [(Vec4::ZERO, Vec4::ZERO)];
+        let mut out = Shaded::default();
         let p = Block {
             v: Lanes3::splat(v),
             n: Lanes3::splat(n),
             color: [color],
         };
         self.eval(m, face, &p, &mut out);
-        out[0]
+        out.get(0)
     }
 
     /// [`Lighting::shade`] for `N` points at once ([`LANES`] for vertices, 1 for a fragment):
@@ -235,6 +243,22 @@ impl Lighting {
         pts: &Block<N>,
         out: &mut [(Vec4, Vec4); N],
     ) {
+        let mut sh = Shaded::default();
+        self.eval(m, face, pts, &mut sh);
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = sh.get(k);
+        }
+    }
+
+    /// [`Lighting::shade_block`] with its results left on arrays (for the vertex stage).
+    #[inline(always)]
+    pub(super) fn shade_lanes<const N: usize>(
+        &self,
+        m: &Material,
+        face: usize,
+        pts: &Block<N>,
+        out: &mut Shaded<N>,
+    ) {
         self.eval(m, face, pts, out);
     }
 
@@ -243,13 +267,7 @@ impl Lighting {
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn eval<const N: usize>(
-        &self,
-        m: &Material,
-        face: usize,
-        pts: &Block<N>,
-        out: &mut [(Vec4, Vec4); N],
-    ) {
+    fn eval<const N: usize>(&self, m: &Material, face: usize, pts: &Block<N>, out: &mut Shaded<N>) {
         // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
         let tracked = self
             .color_material
@@ -413,11 +431,14 @@ impl Lighting {
             }
         }
         // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = (
-                Vec4::new(c.x[i], c.y[i], c.z[i], alpha[i]).clamp(Vec4::ZERO, Vec4::ONE),
-                Vec4::new(s.x[i], s.y[i], s.z[i], 0.0).clamp(Vec4::ZERO, Vec4::ONE),
-            );
+        for i in 0..N {
+            out.c.x[i] = clamp01(c.x[i]);
+            out.c.y[i] = clamp01(c.y[i]);
+            out.c.z[i] = clamp01(c.z[i]);
+            out.a[i] = clamp01(alpha[i]);
+            out.s.x[i] = clamp01(s.x[i]);
+            out.s.y[i] = clamp01(s.y[i]);
+            out.s.z[i] = clamp01(s.z[i]);
         }
     }
 }
@@ -441,114 +462,6 @@ pub(super) fn negligible(x: f32, srm: f32, y: [f32; 3]) -> bool {
     let b = b[0].min(b[1]).min(b[2]);
     // e = b - 127 >= -90, and 27 - e = 154 - b.
     x <= 1.0 && b >= 37 && srm * (1.0 - x) >= (154 - b as i32) as f32 * 0.36 * (1.0 + x)
-}
-
-/// `N` three-component vectors as a structure of arrays (one array per component).
-#[derive(Clone, Copy, Debug)]
-pub struct Lanes3<const N: usize> {
-    /// The x components.
-    pub x: [f32; N],
-    /// The y components.
-    pub y: [f32; N],
-    /// The z components.
-    pub z: [f32; N],
-}
-
-impl<const N: usize> Lanes3<N> {
-    /// `v` in every lane.
-    #[inline(always)]
-    pub fn splat(v: Vec3) -> Self {
-        Lanes3 {
-            x: [v.x; N],
-            y: [v.y; N],
-            z: [v.z; N],
-        }
-    }
-
-    /// Sets lane `i` (nothing past the last lane).
-    #[inline(always)]
-    pub fn set(&mut self, i: usize, v: Vec3) {
-        if let (Some(x), Some(y), Some(z)) =
-            (self.x.get_mut(i), self.y.get_mut(i), self.z.get_mut(i))
-        {
-            (*x, *y, *z) = (v.x, v.y, v.z);
-        }
-    }
-
-    /// Lane `i` (zero past the last lane).
-    #[inline(always)]
-    pub fn get(&self, i: usize) -> Vec3 {
-        match (self.x.get(i), self.y.get(i), self.z.get(i)) {
-            (Some(&x), Some(&y), Some(&z)) => Vec3::new(x, y, z),
-            _ => Vec3::ZERO,
-        }
-    }
-
-    /// Every lane negated (exact).
-    #[inline(always)]
-    pub fn neg(&self) -> Self {
-        Lanes3 {
-            x: self.x.map(|a| -a),
-            y: self.y.map(|a| -a),
-            z: self.z.map(|a| -a),
-        }
-    }
-}
-
-/// glam's `normalize_or_zero` on one vector of a [`Lanes3`]: times the reciprocal length when
-/// that is finite and positive, else zero.
-#[inline(always)]
-fn normalize_or_zero(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
-    let rcp = 1.0 / (x * x + y * y + z * z).sqrt();
-    if rcp.is_finite() && rcp > 0.0 {
-        (x * rcp, y * rcp, z * rcp)
-    } else {
-        (0.0, 0.0, 0.0)
-    }
-}
-
-/// Points lit together by [`Lighting::shade_block`].
-pub const LANES: usize = 8;
-
-/// `N` points to light, one array per coordinate: eye positions, unit normals (negated for a
-/// back face), vertex colours.
-#[derive(Clone, Copy, Debug)]
-pub struct Block<const N: usize> {
-    /// Eye-space positions.
-    pub v: Lanes3<N>,
-    /// Normals.
-    pub n: Lanes3<N>,
-    /// Vertex colours (COLOR_MATERIAL).
-    pub color: [Vec4; N],
-}
-
-impl<const N: usize> Default for Block<N> {
-    fn default() -> Self {
-        Block {
-            v: Lanes3::splat(Vec3::ZERO),
-            n: Lanes3::splat(Vec3::ZERO),
-            color: [Vec4::ZERO; N],
-        }
-    }
-}
-
-impl<const N: usize> Block<N> {
-    /// Point `k` alone (zero past the last lane).
-    fn one(&self, k: usize) -> Block<1> {
-        Block {
-            v: Lanes3::splat(self.v.get(k)),
-            n: Lanes3::splat(self.n.get(k)),
-            color: [self.color.get(k).copied().unwrap_or(Vec4::ZERO)],
-        }
-    }
-
-    /// The same points with their normals negated (back faces).
-    fn back(&self) -> Self {
-        Block {
-            n: self.n.neg(),
-            ..*self
-        }
-    }
 }
 
 /// The per-flush transform state.
@@ -594,10 +507,10 @@ pub fn process(
     parallel: bool,
 ) {
     let n = batch.len();
-    out.clear();
+    // Every float of `out` (`Lit::run` writes each attribute of the layout for every vertex) and
+    // every element of `wins` (one per vertex) is overwritten below, so the previous flush's
+    // elements are kept rather than cleared: only new ones are initialised.
     out.resize(n * layout.stride, 0.0);
-    // Every element of `wins` is overwritten below (`Lit::run` writes one per vertex), so the
-    // previous flush's elements are kept rather than cleared: only new ones are initialised.
     wins.resize(n, Win::default());
     let tf = Transform::new(state);
     let lighting = state.enables.lighting.then(|| Lighting::new(state));
@@ -630,159 +543,222 @@ struct Lit<'a> {
 }
 
 impl Lit<'_> {
+    /// Processes the vertices from `first` into `out` and `wins`, one block of [`LANES`] at a
+    /// time in a single pass: transforms on a structure of arrays, window coordinates and clip
+    /// codes from the clip positions in hand, the other attributes, then lighting.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
     fn run(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
-        self.shade_all(first, out);
-        for (o, w) in out.chunks_exact(self.layout.stride).zip(wins) {
-            *w = self.setup.win(o);
-        }
-    }
-
-    fn shade_all(&self, first: usize, out: &mut [f32]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
+        let tf = self.tf;
         let uniform = b.snapshots.is_empty();
+        // The vertex colour is read only where an output or COLOR_MATERIAL needs it.
+        let need_attribs = self.lighting.map_or(true, |g| g.color_material.is_some())
+            || l.tex.is_some()
+            || l.tex1.is_some()
+            || l.fog.is_some()
+            || l.raw.is_some();
         // --- texture
         let tex_matrix = *state.texture_matrix[0].top();
         let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
         let tex_matrix1 = *state.texture_matrix[1].top();
         let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
         // --- end texture
-        for (blk, os) in out.chunks_mut(l.stride * LANES).enumerate() {
+        // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
+        // block, every lane that is read), so they are initialised once.
+        let mut lit = Shaded::<LANES>::default();
+        let mut lit_b = Shaded::<LANES>::default();
+        // The points to light; each block rewrites their positions and normals, and their
+        // colours where `extras` reads them (the lanes past a block's last vertex are not used).
+        let mut pts = Block::<LANES>::default();
+        // A block's positions and normals, every lane rewritten for each block.
+        let mut p = Lanes4::<LANES>::splat(Vec4::ZERO);
+        let mut nr = Lanes3::<LANES>::splat(Vec3::ZERO);
+        let blocks = out.chunks_mut(l.stride * LANES).zip(wins.chunks_mut(LANES));
+        for (blk, (os, ws)) in blocks.enumerate() {
             let base = first + blk * LANES;
-            let mut pts = Block::<LANES>::default();
-            let mut cnt = 0;
-            for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
-                let i = base + k;
-                let (Some(&p), Some(&nrm), Some(a)) = (b.pos.get(i), b.normal.get(i), b.attribs(i))
-                else {
-                    return;
-                };
-                let (color, color2) = (a.color, a.color2);
-                let eye = self.tf.mv * p;
-                let clip = self.tf.proj * eye;
-                put(o, 0, clip);
-                if let Some(o_eye) = l.eye {
-                    put(o, o_eye, eye);
-                }
-                if let (Some(t), tc) = (l.tex, a.tex) {
-                    // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
-                    let tc = match &texgen {
-                        Some(g) => {
-                            let mut n = self.tf.normal * nrm;
-                            if g.needs_normal && self.tf.normalize {
-                                n = n.normalize_or_zero();
-                            }
-                            g.apply(tc, p, eye, n)
-                        }
-                        None => tc,
+            // `os` holds as many vertices as `ws`.
+            let cnt = ws.len();
+            let (Some(pos), Some(nin)) =
+                (b.pos.get(base..base + cnt), b.normal.get(base..base + cnt))
+            else {
+                return;
+            };
+            // Lanes past `cnt` (in a batch's last block) repeat its first vertex; their results
+            // are not used.
+            let (Some(q0), Some(m0)) = (pos.first(), nin.first()) else {
+                return;
+            };
+            if cnt < LANES {
+                p = Lanes4::splat(*q0);
+                nr = Lanes3::splat(*m0);
+            }
+            for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
+                (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
+                (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
+            }
+            let eye = p.transform(&tf.mv);
+            let clip = eye.transform(&tf.proj);
+            self.setup.win_block(&clip, &eye, ws);
+            if need_attribs {
+                for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                    let Some(a) = b.attribs(base + k) else {
+                        return;
                     };
-                    put(o, t, tex_matrix * tc);
+                    if let Some(c) = pts.color.get_mut(k) {
+                        *c = a.color;
+                    }
+                    self.extras(
+                        o,
+                        a,
+                        pos[k],
+                        nin[k],
+                        eye.get(k),
+                        &texgen,
+                        &texgen1,
+                        &[tex_matrix, tex_matrix1],
+                    );
                 }
-                if let (Some(t), tc) = (l.tex1, a.tex1) {
-                    let tc = match &texgen1 {
-                        Some(g) => {
-                            let mut n = self.tf.normal * nrm;
-                            if g.needs_normal && self.tf.normalize {
-                                n = n.normalize_or_zero();
-                            }
-                            g.apply(tc, p, eye, n)
-                        }
-                        None => tc,
-                    };
-                    put(o, t, tex_matrix1 * tc);
-                    // --- end texture
+            }
+            if let Some(lighting) = self.lighting {
+                pts.v = eye.xyz();
+                // The normal transform (glam's Mat3 * Vec3, operation for operation), then
+                // NORMALIZE (§2.11.3), written in place.
+                let m = tf.normal.to_cols_array();
+                let n = &mut pts.n;
+                for i in 0..LANES {
+                    n.x[i] = m[0] * nr.x[i] + m[3] * nr.y[i] + m[6] * nr.z[i];
+                    n.y[i] = m[1] * nr.x[i] + m[4] * nr.y[i] + m[7] * nr.z[i];
+                    n.z[i] = m[2] * nr.x[i] + m[5] * nr.y[i] + m[8] * nr.z[i];
                 }
-                // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
-                // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
-                if let Some(f) = l.fog {
-                    let c = if state.fog.coord_src == gl::FOG_COORD {
-                        a.fog
-                    } else {
-                        eye.z
-                    };
-                    if let Some(d) = o.get_mut(f) {
-                        *d = c.abs();
+                if tf.normalize {
+                    for i in 0..LANES {
+                        (n.x[i], n.y[i], n.z[i]) = normalize_or_zero(n.x[i], n.y[i], n.z[i]);
                     }
                 }
-                // --- end fragment ops
-                if self.lighting.is_none() {
-                    put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
-                    if let Some(s) = l.spec {
-                        put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
+                // The eye position divided by w; dividing by w = 1 is exact (the common affine
+                // modelview skips it), and w = 0 is kept.
+                if !eye.w.iter().fold(true, |a, &w| a & (w == 1.0)) {
+                    let v = &mut pts.v;
+                    for i in 0..LANES {
+                        let w = eye.w[i];
+                        if w != 0.0 && w != 1.0 {
+                            v.x[i] = eye.x[i] / w;
+                            v.y[i] = eye.y[i] / w;
+                            v.z[i] = eye.z[i] / w;
+                        }
                     }
-                    continue;
                 }
-                let mut n = self.tf.normal * nrm;
-                if self.tf.normalize {
-                    n = n.normalize_or_zero();
-                }
-                // Dividing by w = 1 is exact: skip it for the common affine modelview.
-                let v = if eye.w != 0.0 && eye.w != 1.0 {
-                    eye.xyz() / eye.w
-                } else {
-                    eye.xyz()
-                };
-                pts.v.set(k, v);
-                pts.n.set(k, n);
-                if let Some(c) = pts.color.get_mut(k) {
-                    *c = color;
-                }
-                cnt = k + 1;
                 if let Some(no) = l.nrm {
-                    put3(o, no, n);
+                    for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
+                        put3(o, no, pts.n.get(k));
+                    }
                 }
-                if let Some(r) = l.raw {
-                    put(o, r, color);
-                }
-            }
-            let Some(lighting) = self.lighting else {
-                continue;
-            };
-            // Materials: the state's for the whole block, or each vertex's own snapshot.
-            let mat_of = |i: usize| {
-                b.mat
-                    .get(i)
-                    .and_then(|&m| b.snapshots.get(m as usize))
-                    .unwrap_or(&state.materials)
-            };
-            let mut lit = [(Vec4::ZERO, Vec4::ZERO); LANES];
-            let mut lit_b = [(Vec4::ZERO, Vec4::ZERO); LANES];
-            let two = l.col_b.is_some();
-            if uniform {
-                // Lanes past `cnt` light default points; their results are not used.
-                let m = &state.materials;
-                lighting.shade_block(&m[FRONT], FRONT, &pts, &mut lit);
-                if two {
-                    lighting.shade_block(&m[BACK], BACK, &pts.back(), &mut lit_b);
-                }
-            } else {
-                for k in 0..cnt {
-                    let m = mat_of(base + k);
-                    let p = pts.one(k);
-                    let mut one = [(Vec4::ZERO, Vec4::ZERO)];
-                    lighting.shade_block(&m[FRONT], FRONT, &p, &mut one);
-                    lit[k] = one[0];
+                // Materials: the state's for the whole block, or each vertex's own snapshot.
+                let mat_of = |i: usize| {
+                    b.mat
+                        .get(i)
+                        .and_then(|&m| b.snapshots.get(m as usize))
+                        .unwrap_or(&state.materials)
+                };
+                let two = l.col_b.is_some();
+                if uniform {
+                    let m = &state.materials;
+                    lighting.shade_lanes(&m[FRONT], FRONT, &pts, &mut lit);
                     if two {
-                        lighting.shade_block(&m[BACK], BACK, &p.back(), &mut one);
-                        lit_b[k] = one[0];
+                        lighting.shade_lanes(&m[BACK], BACK, &pts.back(), &mut lit_b);
+                    }
+                } else {
+                    for k in 0..cnt {
+                        let m = mat_of(base + k);
+                        let p = pts.one(k);
+                        let mut one = Shaded::<1>::default();
+                        lighting.shade_lanes(&m[FRONT], FRONT, &p, &mut one);
+                        lit.set_from(k, &one);
+                        if two {
+                            lighting.shade_lanes(&m[BACK], BACK, &p.back(), &mut one);
+                            lit_b.set_from(k, &one);
+                        }
                     }
                 }
             }
-            for (k, o) in os.chunks_exact_mut(l.stride).take(cnt).enumerate() {
-                let (c, s) = lit[k];
-                put(o, l.col, c);
-                if let Some(so) = l.spec {
-                    put(o, so, s);
+            // The clip (and eye) position, and the lit colours (`extras` wrote the unlit ones).
+            let lit_on = self.lighting.is_some();
+            for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
+                put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
+                if let Some(o_eye) = l.eye {
+                    put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
                 }
-                if let Some(cb) = l.col_b {
-                    let (c, s) = lit_b[k];
-                    put(o, cb, c);
-                    if let Some(sb) = l.spec_b {
-                        put(o, sb, s);
+                if lit_on {
+                    lit.put(k, o, l.col, l.spec);
+                    if let Some(cb) = l.col_b {
+                        lit_b.put(k, o, cb, l.spec_b);
                     }
                 }
             }
+        }
+    }
+
+    /// The outputs of one vertex other than position and lit colours: texture coordinates, fog
+    /// coordinate, the unlit colours (lighting off) or the raw colour (PHONG_WIN).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn extras(
+        &self,
+        o: &mut [f32],
+        a: &super::batch::Attribs,
+        p: Vec4,
+        nrm: Vec3,
+        eye: Vec4,
+        texgen: &Option<super::texgen::TexGen>,
+        texgen1: &Option<super::texgen::TexGen>,
+        tex_matrix: &[Mat4; 2],
+    ) {
+        let l = self.layout;
+        let tf = self.tf;
+        let (color, color2) = (a.color, a.color2);
+        // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
+        for (at, tc, g, tm) in [
+            (l.tex, a.tex, texgen, &tex_matrix[0]),
+            (l.tex1, a.tex1, texgen1, &tex_matrix[1]),
+        ] {
+            let Some(t) = at else { continue };
+            let tc = match g {
+                Some(g) => {
+                    let mut n = tf.normal * nrm;
+                    if g.needs_normal && tf.normalize {
+                        n = n.normalize_or_zero();
+                    }
+                    g.apply(tc, p, eye, n)
+                }
+                None => tc,
+            };
+            put(o, t, *tm * tc);
+        }
+        // --- end texture
+        // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
+        // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
+        if let Some(f) = l.fog {
+            let c = if self.state.fog.coord_src == gl::FOG_COORD {
+                a.fog
+            } else {
+                eye.z
+            };
+            if let Some(d) = o.get_mut(f) {
+                *d = c.abs();
+            }
+        }
+        // --- end fragment ops
+        if self.lighting.is_none() {
+            put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
+            if let Some(s) = l.spec {
+                put(o, s, color2.clamp(Vec4::ZERO, Vec4::ONE));
+            }
+        }
+        if let Some(r) = l.raw {
+            put(o, r, color);
         }
     }
 }

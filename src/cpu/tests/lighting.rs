@@ -429,7 +429,7 @@ fn reference(st: &State, m: &Material, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
     )
 }
 
-/// `shade_block` over 8 lanes, `shade` on one point and the plain sum agree bit for bit over
+/// `shade_block` over [`LANES`] lanes, `shade` on one point and the plain sum agree bit for bit over
 /// random lights (positional with attenuation, spot, directional), materials (shininess up to
 /// 128, where most specular powers are skipped as negligible), viewer and colour-control modes.
 #[test]
@@ -495,4 +495,97 @@ fn block_and_single_point_shading_equal_the_plain_sum_bit_for_bit() {
             );
         }
     }
+}
+
+/// The vertex stage's window coordinates and clip codes (`SetupCtx::win_block`, 16 lanes at
+/// once) equal `SetupCtx::win` on the processed vertex, bit for bit, over random positions with
+/// infinities, NaNs, signed zeros and w of both signs, under a user clip plane; and one vertex
+/// worked by hand (§2.11.1: x_w = (p_x/w)·(w_v/2) + o_x): viewport 800 x 800 at the origin, clip
+/// position (0.5, -0.5, 0.25, 1) lands at (600, 200) = (153600, 51200)/256, z = 0.25·0.5 + 0.5.
+#[test]
+fn window_coordinates_of_a_block_equal_those_of_each_vertex() {
+    use crate::cpu::framebuffer::scissor_rect;
+    use crate::cpu::setup::{SetupCtx, Win};
+    use crate::cpu::vertex::{Lanes4, Layout};
+    use glam::DVec4;
+    let mut st = State::new(800, 800);
+    st.viewport = [0, 0, 800, 800];
+    st.enables.clip_planes[1] = true;
+    st.clip_planes[1] = DVec4::new(0.5, -1.0, 0.25, 0.125);
+    let layout = Layout::for_state(&st);
+    let eye_at = layout
+        .eye
+        .expect("a user clip plane needs the eye position");
+    let ctx = SetupCtx::new(&st, layout, scissor_rect(&st), (1, 1));
+    let special = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        1e-30,
+    ];
+    let mut rng = Rng(0x2468_ace1);
+    let pick = |rng: &mut Rng| {
+        if rng.next() < 0.15 {
+            special[(rng.next() * special.len() as f32) as usize % special.len()]
+        } else {
+            rng.range(-3.0, 3.0)
+        }
+    };
+    for _ in 0..200 {
+        let mut c = Lanes4::<16>::splat(Vec4::ZERO);
+        let mut e = c;
+        for k in 0..16 {
+            (c.x[k], c.y[k], c.z[k], c.w[k]) = (
+                pick(&mut rng),
+                pick(&mut rng),
+                pick(&mut rng),
+                pick(&mut rng),
+            );
+            (e.x[k], e.y[k], e.z[k], e.w[k]) = (
+                pick(&mut rng),
+                pick(&mut rng),
+                pick(&mut rng),
+                pick(&mut rng),
+            );
+        }
+        let mut ws = [Win::default(); 16];
+        ctx.win_block(&c, &e, &mut ws);
+        for (k, w) in ws.iter().enumerate() {
+            let mut v = vec![0.0f32; layout.stride];
+            v[..4].copy_from_slice(&c.get(k).to_array());
+            v[eye_at..eye_at + 4].copy_from_slice(&e.get(k).to_array());
+            let r = ctx.win(&v);
+            let bits = |w: &Win| {
+                (
+                    w.x.to_bits(),
+                    w.y.to_bits(),
+                    w.fx,
+                    w.fy,
+                    w.z.to_bits(),
+                    w.iw.to_bits(),
+                    w.code,
+                )
+            };
+            assert_eq!(bits(w), bits(&r), "lane {k}: {w:?} vs {r:?}");
+        }
+    }
+    let mut c = Lanes4::<1>::splat(Vec4::new(0.5, -0.5, 0.25, 1.0));
+    let e = Lanes4::<1>::splat(Vec4::new(0.0, 0.0, 0.0, 1.0)); // plane: 0.125 >= 0, inside
+    let mut w = [Win::default()];
+    ctx.win_block(&c, &e, &mut w);
+    assert_eq!(
+        (w[0].x, w[0].y, w[0].fx, w[0].fy),
+        (600.0, 200.0, 153_600, 51_200)
+    );
+    assert_eq!((w[0].z, w[0].iw, w[0].code), (0.625, 1.0, 0));
+    // x > w is outside the plane w - x >= 0 (bit 1); the eye point below the user plane sets
+    // bit 7 + 1.
+    c.x[0] = 2.0;
+    let e = Lanes4::<1>::splat(Vec4::new(0.0, 1.0, 0.0, 1.0)); // -1 + 0.125 < 0
+    ctx.win_block(&c, &e, &mut w);
+    assert_eq!(w[0].code, 1 << 1 | 1 << 8);
 }
