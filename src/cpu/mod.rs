@@ -34,6 +34,7 @@ pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
 mod line;
+mod polygon;
 pub mod raster;
 pub mod setup;
 // --- texture

@@ -11,13 +11,15 @@
 //! The common triangle (no clipping, FILL for both faces, no PHONG_WIN) takes
 //! `Worker::fast_tri`: facing, culling and the coverage test use only the vertex stage's
 //! compact window records, and varyings are read only for triangles that cover a pixel centre
-//! (about half in a dense mesh); it computes exactly what the general path does.
+//! (about half in a dense mesh); it computes exactly what the general path does. Everything
+//! else (clipping, PolygonMode LINE/POINT, PHONG_WIN, points and lines) takes the general path
+//! in `polygon.rs` (lines themselves in `line.rs`).
 
 use glam::Vec4;
 
 use super::assembly::Asm;
 use super::batch::{Batch, Prim};
-use super::clip::{Clipper, MAX_POLY};
+use super::clip::Clipper;
 use super::framebuffer::TILE;
 use super::vertex::{Lanes4, Layout};
 use crate::gl;
@@ -160,22 +162,22 @@ pub struct SetupCtx {
     pub layout: Layout,
     /// Varying layout.
     pub rl: RLayout,
-    clipper: Clipper,
+    pub(super) clipper: Clipper,
     scale: [f64; 3],
     offset: [f64; 3],
-    ccw_front: bool,
-    cull: Option<u32>,
-    poly_mode: [u32; 2],
-    offset_on: [bool; 3],
+    pub(super) ccw_front: bool,
+    pub(super) cull: Option<u32>,
+    pub(super) poly_mode: [u32; 2],
+    pub(super) offset_on: [bool; 3],
     factor: f64,
     units: f64,
-    flat: bool,
+    pub(super) flat: bool,
     /// Quads split along their 1–3 diagonal rather than 0–2 (see `assembly::assemble`); set by
     /// the flush once the vertex stage has the clip codes.
     pub(super) quads_split_last: bool,
-    phong: bool,
+    pub(super) phong: bool,
     line_width: f32,
-    point_size: f32,
+    pub(super) point_size: f32,
     /// Framebuffer ∩ scissor, inclusive.
     pub rect: [i32; 4],
     /// Tiles across.
@@ -399,8 +401,8 @@ pub struct Worker {
     pub pool: Vec<f32>,
     /// Per tile, indices into `prims`.
     pub bins: Vec<Vec<u32>>,
-    a: Vec<f32>,
-    b: Vec<f32>,
+    pub(super) a: Vec<f32>,
+    pub(super) b: Vec<f32>,
     bins_x: usize,
     asm: Vec<Asm>,
 }
@@ -459,234 +461,6 @@ impl Worker {
             }
         }
         self.general(ctx, vout, wins, mats, p);
-    }
-
-    /// Sets up `p` when it is not an unclipped triangle for `fast_tri`: clipping, lines, points,
-    /// polygon modes, PHONG_WIN.
-    #[inline(never)]
-    fn general(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
-        let s = ctx.layout.stride;
-        let vert = |i: u32| {
-            vout.get(i as usize * s..(i as usize + 1) * s)
-                .unwrap_or(&[])
-        };
-        let mat = mats.get(p.provoking as usize).copied().unwrap_or(0);
-        let prov = vert(p.provoking);
-        match p.n {
-            3 => {
-                let w = |i: u32| wins.get(i as usize).copied().unwrap_or_default();
-                let ws = [w(p.v[0]), w(p.v[1]), w(p.v[2])];
-                let codes = [ws[0].code, ws[1].code, ws[2].code];
-                if codes[0] & codes[1] & codes[2] != 0 {
-                    return;
-                }
-                let vs = [vert(p.v[0]), vert(p.v[1]), vert(p.v[2])];
-                let mut edges = [false; MAX_POLY];
-                for (k, e) in edges.iter_mut().take(3).enumerate() {
-                    *e = p.edges & (1 << k) != 0;
-                }
-                let planes = codes[0] | codes[1] | codes[2];
-                if planes == 0 {
-                    self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
-                } else {
-                    let mut a = std::mem::take(&mut self.a);
-                    let mut b = std::mem::take(&mut self.b);
-                    a.clear();
-                    for v in vs {
-                        a.extend_from_slice(v);
-                    }
-                    let n = ctx
-                        .clipper
-                        .polygon(s, planes, &mut a, &mut b, &mut edges, 3);
-                    let mut srcs: [&[f32]; MAX_POLY] = [&[]; MAX_POLY];
-                    let mut cw = [Win::default(); MAX_POLY];
-                    for (i, (src, w)) in srcs.iter_mut().zip(&mut cw).take(n).enumerate() {
-                        *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
-                        *w = ctx.win(src);
-                    }
-                    self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
-                    self.a = a;
-                    self.b = b;
-                }
-            }
-            2 => {
-                let vs = [vert(p.v[0]), vert(p.v[1])];
-                let codes = vs.map(|v| ctx.clipper.code(v));
-                if codes[0] & codes[1] != 0 {
-                    return;
-                }
-                let planes = codes[0] | codes[1];
-                let mut a = std::mem::take(&mut self.a);
-                a.clear();
-                a.extend_from_slice(vs[0]);
-                a.extend_from_slice(vs[1]);
-                if planes == 0 || ctx.clipper.line(s, planes, &mut a) {
-                    let mut w0 = self.window(ctx, a.get(..s).unwrap_or(&[]));
-                    let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
-                    self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
-                    self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
-                    self.line(ctx, &w0, &w1, 0.0, 0, mat);
-                }
-                self.a = a;
-            }
-            _ => {
-                let v = vert(p.v[0]);
-                if wins.get(p.v[0] as usize).is_some_and(|w| w.code == 0) {
-                    let mut w = self.window(ctx, v);
-                    self.varyings(ctx, &mut w, v, false, prov);
-                    self.point(ctx, &w, 0.0, 0, mat);
-                }
-            }
-        }
-    }
-
-    /// Window coordinates of processed vertex `v`; varyings are filled in later.
-    fn window(&self, ctx: &SetupCtx, v: &[f32]) -> WVert {
-        from_win(&ctx.win(v))
-    }
-
-    /// Fills `w.v` from processed vertex `v`: the face's colours (the provoking vertex's under
-    /// FLAT), then texture coordinates and the PHONG_WIN values.
-    #[inline(always)]
-    fn varyings(&self, ctx: &SetupCtx, w: &mut WVert, v: &[f32], back: bool, prov: &[f32]) {
-        let l = &ctx.layout;
-        let rl = &ctx.rl;
-        let csrc = if ctx.flat { prov } else { v };
-        let (col, spec) = match (back, l.col_b) {
-            (true, Some(cb)) => (cb, l.spec_b),
-            _ => (l.col, l.spec),
-        };
-        copy(&mut w.v, 0, csrc, col, 4);
-        if let (Some(d), Some(s)) = (rl.spec, spec) {
-            copy(&mut w.v, d, csrc, s, 4);
-        }
-        if let (Some(d), Some(s)) = (rl.tex, l.tex) {
-            copy(&mut w.v, d, v, s, 4);
-        }
-        // --- texture: unit 1's coordinates
-        if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
-            copy(&mut w.v, d, v, s, 4);
-        }
-        // --- end texture
-        if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
-            let ew = v.get(e + 3).copied().unwrap_or(1.0);
-            let ew = if ew != 0.0 { ew } else { 1.0 };
-            for k in 0..3 {
-                if let (Some(o), Some(&x)) = (w.v.get_mut(d + k), v.get(e + k)) {
-                    *o = x / ew;
-                }
-            }
-            copy(&mut w.v, d + 3, v, n, 3);
-            copy(&mut w.v, d + 6, csrc, r, 4);
-        }
-        // --- fragment ops: the fog coordinate is never flat (§3.10 interpolates it).
-        if let (Some(d), Some(s)) = (rl.fog, l.fog) {
-            copy(&mut w.v, d, v, s, 1);
-        }
-    }
-
-    /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
-    /// processed vertices in order, `edges[i]` the flag of the edge leaving vertex i.
-    /// `N` bounds the vertex count (3 on the unclipped path, so no large array is initialised).
-    fn polygon<const N: usize>(
-        &mut self,
-        ctx: &SetupCtx,
-        srcs: &[&[f32]],
-        wins: &[Win],
-        edges: &[bool],
-        prov: &[f32],
-        mat: u32,
-    ) {
-        let n = srcs.len().min(wins.len()).min(N);
-        if n < 3 {
-            return;
-        }
-        let mut w = [ZERO_W; N];
-        for (wv, win) in w.iter_mut().zip(wins) {
-            *wv = from_win(win);
-        }
-        let w = &mut w[..n];
-        // §3.5.1 eq. 3.6: the signed area in window coordinates decides the facing.
-        let mut area: i128 = 0;
-        for i in 0..n {
-            let (a, b) = (&w[i], &w[(i + 1) % n]);
-            area += i128::from(a.fx) * i128::from(b.fy) - i128::from(b.fx) * i128::from(a.fy);
-        }
-        let front = area == 0 || ((area > 0) == ctx.ccw_front);
-        match ctx.cull {
-            Some(gl::FRONT) if front => return,
-            Some(gl::BACK) if !front => return,
-            Some(gl::FRONT_AND_BACK) => return,
-            _ => {}
-        }
-        let back = !front;
-        for (wv, src) in w.iter_mut().zip(srcs) {
-            self.varyings(ctx, wv, src, back, prov);
-        }
-        let mut flags = if back { F_BACK } else { 0 };
-        if ctx.flat {
-            flags |= F_FLAT;
-        }
-        let mode = ctx.poly_mode[usize::from(back)];
-        match mode {
-            gl::POINT | gl::LINE => {
-                let which = if mode == gl::POINT { 2 } else { 1 };
-                let off = if ctx.offset_on[which] {
-                    let [_, dx, dy] = z_slopes(&w[0], &w[1], &w[2]);
-                    offset(ctx, dx, dy)
-                } else {
-                    0.0
-                };
-                for i in 0..n {
-                    if !edges.get(i).copied().unwrap_or(false) {
-                        continue;
-                    }
-                    if mode == gl::POINT {
-                        self.point(ctx, &w[i], off, flags & F_BACK, mat);
-                    } else {
-                        let (a, b) = (w[i], w[(i + 1) % n]);
-                        self.line(ctx, &a, &b, off, flags & F_BACK, mat);
-                    }
-                }
-            }
-            _ => {
-                if area == 0 {
-                    return;
-                }
-                if ctx.phong {
-                    flags |= F_PHONG;
-                }
-                for i in 1..n - 1 {
-                    self.tri(ctx, &w[0], &w[i], &w[i + 1], flags, mat);
-                }
-            }
-        }
-    }
-
-    /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
-    #[inline]
-    fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
-        let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
-            return;
-        };
-        let cover = g.coverage();
-        if cover == COVER_KNOWN {
-            // A sliver between pixel centres (common in dense meshes): nothing to draw.
-            return;
-        }
-        let (b, c) = if g.swapped { (c, b) } else { (b, c) };
-        let v = [a, b, c];
-        self.emit_tri(
-            ctx,
-            &g,
-            [a.z, b.z, c.z],
-            [a.iw, b.iw, c.iw],
-            flags,
-            mat,
-            |j, k| v[j].v[k],
-            None,
-            cover,
-        );
     }
 
     /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
@@ -780,7 +554,7 @@ impl Worker {
     /// primitive.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn emit_tri(
+    pub(super) fn emit_tri(
         &mut self,
         ctx: &SetupCtx,
         g: &Geom,
@@ -881,38 +655,6 @@ impl Worker {
         });
     }
 
-    /// A point (§3.4): a square of side round(size) centred on the vertex.
-    fn point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
-        let (x, y) = (a.fx as f32 / 256.0, a.fy as f32 / 256.0);
-        let size = ctx.point_size.round().max(1.0);
-        let x0 = clamp_f((x - size / 2.0 + 0.5).floor());
-        let y0 = clamp_f((y - size / 2.0 + 0.5).floor());
-        let s = size.min(1e6) as i32;
-        let bbox = [
-            x0.max(ctx.rect[0]),
-            y0.max(ctx.rect[1]),
-            x0.saturating_add(s - 1).min(ctx.rect[2]),
-            y0.saturating_add(s - 1).min(ctx.rect[3]),
-        ];
-        if bbox[0] > bbox[2] || bbox[1] > bbox[3] {
-            return;
-        }
-        let voff = self.pool.len() as u32;
-        self.pool.extend([x, y, size]);
-        self.pool.extend_from_slice(&a.v[..ctx.rl.n]);
-        self.push(RPrim {
-            kind: Kind::Point,
-            flags,
-            bbox,
-            mat,
-            voff,
-            xy: [0; 6],
-            owns: 0,
-            cover: 0,
-            z: [(a.z + off) as f32, 0.0, 0.0],
-        });
-    }
-
     /// Appends `p` and bins it into every tile its bounding box overlaps.
     #[inline(always)]
     pub(super) fn push(&mut self, p: RPrim) {
@@ -936,28 +678,6 @@ impl Worker {
         self.prims.push(p);
     }
 }
-
-fn from_win(w: &Win) -> WVert {
-    WVert {
-        x: w.x,
-        y: w.y,
-        fx: w.fx,
-        fy: w.fy,
-        z: w.z,
-        iw: w.iw,
-        v: [0.0; MAXV],
-    }
-}
-
-const ZERO_W: WVert = WVert {
-    x: 0.0,
-    y: 0.0,
-    fx: 0,
-    fy: 0,
-    z: 0.0,
-    iw: 0.0,
-    v: [0.0; MAXV],
-};
 
 /// A triangle's place on the pixel grid: counter-clockwise order, doubled area, the pixels whose
 /// centres can be inside (cut to `rect`), and which edges own centres exactly on them.
@@ -1064,33 +784,10 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     })
 }
 
-/// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).
-fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
-    let (x1, y1) = ((b.fx - a.fx) as f64 / 256.0, (b.fy - a.fy) as f64 / 256.0);
-    let (x2, y2) = ((c.fx - a.fx) as f64 / 256.0, (c.fy - a.fy) as f64 / 256.0);
-    let (z1, z2) = (b.z - a.z, c.z - a.z);
-    let det = x1 * y2 - x2 * y1;
-    if det == 0.0 {
-        return [0.0; 3];
-    }
-    [0.0, (z1 * y2 - z2 * y1) / det, (x1 * z2 - x2 * z1) / det]
-}
-
 /// Polygon offset (§3.5.5): factor · max slope + units · r, r = 2^-24 for a 24-bit depth buffer.
-fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
+pub(super) fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
     let m = dzdx.abs().max(dzdy.abs());
     ctx.factor * m + ctx.units / f64::from(1u32 << 24)
-}
-
-fn clamp_f(v: f32) -> i32 {
-    v.floor().clamp(-1e9, 1e9) as i32
-}
-
-#[inline(always)]
-fn copy(dst: &mut [f32; MAXV], d: usize, src: &[f32], s: usize, n: usize) {
-    if let (Some(o), Some(i)) = (dst.get_mut(d..d + n), src.get(s..s + n)) {
-        o.copy_from_slice(i);
-    }
 }
 
 /// Which tiles `bbox` overlaps: `(tx0, ty0, tx1, ty1)` inclusive.
