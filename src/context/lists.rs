@@ -223,6 +223,7 @@ impl Context {
             mode,
             calls: Vec::new(),
         });
+        self.sync_capturing();
     }
 
     /// `glEndList`: the list being defined replaces any earlier one of its name.
@@ -235,6 +236,7 @@ impl Context {
         let Some(list) = self.lists.compiling.take() else {
             return self.error(gl::INVALID_OPERATION);
         };
+        self.sync_capturing();
         let mut calls = list.calls;
         calls.shrink_to_fit();
         self.lists.max_used = self.lists.max_used.max(list.name);

@@ -44,10 +44,11 @@ mod matrix;
 /// being executed (CallList) are neither recorded nor compiled: the stream holds the CallList.
 macro_rules! record {
     ($ctx:expr, $call:expr) => {
-        if ($ctx.recording.is_some() || $ctx.lists.compiling.is_some())
-            && $ctx.lists.depth == 0
-            && $ctx.capture($call)
-        {
+        debug_assert_eq!(
+            $ctx.capturing,
+            $ctx.recording.is_some() || $ctx.lists.compiling.is_some()
+        );
+        if $ctx.capturing && $ctx.lists.depth == 0 && $ctx.capture($call) {
             return;
         }
     };
@@ -66,6 +67,9 @@ pub struct Context {
     /// The mode of the open Begin/End pair, if any.
     pub(crate) begin_mode: Option<u32>,
     pub(crate) recording: Option<Vec<Call>>,
+    /// Whether a recording runs or a display list is being compiled: `record!`'s one test on
+    /// every call. Every change of `recording` or `lists.compiling` calls `sync_capturing`.
+    pub(crate) capturing: bool,
     pub(crate) renderer: Renderer,
     // --- lists (context/lists.rs, context/attrib.rs)
     pub(crate) lists: lists::DisplayLists,
@@ -85,6 +89,7 @@ impl Context {
             error: gl::NO_ERROR,
             begin_mode: None,
             recording: None,
+            capturing: false,
             renderer: Renderer::new(width, height),
             // --- lists
             lists: Default::default(),
@@ -106,6 +111,7 @@ impl Context {
         self.begin_mode = None;
         self.recording = None;
         self.lists = Default::default();
+        self.sync_capturing();
         self.attrib = Default::default();
     }
 
@@ -166,11 +172,19 @@ impl Context {
     /// Starts recording every call made on this context (replacing any recording in progress).
     pub fn start_recording(&mut self) {
         self.recording = Some(Vec::new());
+        self.sync_capturing();
     }
 
     /// Stops recording and returns the calls recorded since `start_recording` (empty if none).
     pub fn stop_recording(&mut self) -> Vec<Call> {
-        self.recording.take().unwrap_or_default()
+        let calls = self.recording.take().unwrap_or_default();
+        self.sync_capturing();
+        calls
+    }
+
+    /// Brings `capturing` in step with `recording` and `lists.compiling`.
+    pub(crate) fn sync_capturing(&mut self) {
+        self.capturing = self.recording.is_some() || self.lists.compiling.is_some();
     }
 
     /// `glBegin`.
