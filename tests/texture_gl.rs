@@ -9,6 +9,7 @@ use std::io::Write as _;
 use fixedgl::compare::compare;
 use fixedgl::glbackend::GlBackend;
 use fixedgl::{gl, scenes, Call, Context};
+use image::RgbaImage;
 
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
     fixedgl::glbackend::test_backend(width, height)
@@ -226,22 +227,28 @@ fn texture_errors_match_the_driver() {
     }
 }
 
+/// Scene `name` at its own size (the size its tolerance is stated for): the scene, its CPU image
+/// and the driver's image of the same recorded calls; `None` when no EGL device exists.
+fn both_images(name: &str) -> Option<(&'static scenes::Scene, RgbaImage, RgbaImage)> {
+    let Some(scene) = scenes::find(name) else {
+        panic!("{name} is registered")
+    };
+    let (w, h) = scene.default_size;
+    let mut gl = backend(w, h)?;
+    let Ok((mut ctx, calls)) = scene.record(w, h) else {
+        panic!("{name} records")
+    };
+    gl.replay(&calls);
+    Some((scene, ctx.to_image(), gl.read_image()))
+}
+
 #[test]
 fn texture_scenes_hold_their_tolerance() {
     for name in ["textured-cube", "projective-texture", "shadow-map"] {
-        let Some(scene) = scenes::find(name) else {
-            panic!("{name} is registered")
-        };
-        // The scenes' own size: the tolerance is stated for it.
-        let (w, h) = scene.default_size;
-        let Some(mut gl) = backend(w, h) else {
+        let Some((scene, cpu, drv)) = both_images(name) else {
             return;
         };
-        let Ok((mut ctx, calls)) = scene.record(w, h) else {
-            panic!("{name} records")
-        };
-        gl.replay(&calls);
-        let cmp = compare(&ctx.to_image(), &gl.read_image(), scene.tolerance.channel);
+        let cmp = compare(&cpu, &drv, scene.tolerance.channel);
         assert!(cmp.passes(scene.tolerance.max_percent), "{name}: {cmp:?}");
     }
 }
@@ -253,18 +260,10 @@ fn texture_scenes_hold_their_tolerance() {
 /// channel off by more than 2/255; measured 22 Nov 2026: 0.009, 0.220, 1.979, 0, 1.979, 0.
 #[test]
 fn textured_cube_panels_hold_their_own_bounds() {
-    let Some(scene) = scenes::find("textured-cube") else {
-        panic!("textured-cube is registered")
-    };
-    let (w, h) = scene.default_size;
-    let Some(mut gl) = backend(w, h) else {
+    let Some((scene, cpu, drv)) = both_images("textured-cube") else {
         return;
     };
-    let Ok((mut ctx, calls)) = scene.record(w, h) else {
-        panic!("textured-cube records")
-    };
-    gl.replay(&calls);
-    let (cpu, drv) = (ctx.to_image(), gl.read_image());
+    let (w, h) = scene.default_size;
     // Panels in reading order (top-down image rows), one MIN filter each.
     let bounds = [
         ("NEAREST", 0.05),
@@ -278,7 +277,7 @@ fn textured_cube_panels_hold_their_own_bounds() {
     let (pw, ph) = (w / 3, h / 2);
     for (k, (filter, max_percent)) in bounds.into_iter().enumerate() {
         let (x, y) = ((k as u32 % 3) * pw, (k as u32 / 3) * ph);
-        let crop = |img: &image::RgbaImage| image::imageops::crop_imm(img, x, y, pw, ph).to_image();
+        let crop = |img: &RgbaImage| image::imageops::crop_imm(img, x, y, pw, ph).to_image();
         let cmp = compare(&crop(&cpu), &crop(&drv), scene.tolerance.channel);
         assert!(cmp.passes(max_percent), "panel {filter}: {cmp:?}");
     }
