@@ -201,14 +201,15 @@ impl Renderer {
         // still being drawn on the pool; the pool then only sets up and rasterises.
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, false);
         self.wait();
-        let (mut next, mut next_verts) = self.spare.take().unwrap_or_default();
+        let (mut next, next_verts) = self.spare.take().unwrap_or_default();
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
-        std::mem::swap(&mut self.verts, &mut next_verts);
-        let verts = next_verts;
-        let Some(mut core) = self.core.take() else {
-            return;
-        };
+        let verts = std::mem::replace(&mut self.verts, next_verts);
+        let (w, h) = self.size;
+        let mut core = self
+            .core
+            .take()
+            .unwrap_or_else(|| Box::new(Core::new(w, h)));
         // The state is copied (texture images are shared, not copied): the front end goes on
         // changing its own.
         let state = Box::new(state.clone());
