@@ -1,7 +1,9 @@
 //! Attribute stacks (GL 2.1 §6.1.14): each group PushAttrib saves is restored by PopAttrib, groups
 //! not pushed are left alone, the matrix stacks are in no group, and the stacks are 16 deep.
 
-use fixedgl::{gl, Call, Context};
+#[cfg(feature = "gl")]
+use fixedgl::Call;
+use fixedgl::{gl, Context};
 
 fn ctx() -> Context {
     Context::new(16, 16).expect("context")

@@ -53,7 +53,6 @@ macro_rules! record {
         }
     };
 }
-#[allow(unused_imports)]
 pub(crate) use record;
 
 /// A GL context: state, sticky error flag, optional recording, and the CPU framebuffer.
@@ -703,7 +702,8 @@ mod attrib;
 mod lists;
 pub use attrib::MAX_ATTRIB_STACK_DEPTH;
 pub use lists::MAX_LIST_NESTING;
-#[allow(unused_imports)] // The GL backend reads CallLists arrays as the front end does.
+// The GL backend reads CallLists arrays as the front end does.
+#[cfg(feature = "gl")]
 pub(crate) use lists::{name_offset, name_size};
 // --- end lists
 // --- fragment ops: Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)

@@ -475,7 +475,6 @@ impl GlBackend {
     /// INVALID_OPERATION first (GL 2.1 §2.6.3), short slice or not. The driver always gets a
     /// buffer of at least 16 values (the slice, zero-padded), so an unknown pname (count 0, the
     /// driver raises INVALID_ENUM) can never make it read past the caller's data.
-    #[allow(dead_code)] // Used by the pname-dependent variants as they are added.
     pub(crate) fn with_params<T: Copy + Default>(
         &mut self,
         v: &[T],
@@ -518,9 +517,8 @@ pub(super) fn phong_neutral(call: &Call) -> bool {
 }
 
 /// How many values each pname-dependent vector command reads (GL 2.1 §2.14.2, §2.14.3, §3.10,
-/// §3.8.4, §3.8.13, §2.11.4, §3.4); 0 for a pname the command does not know, which the driver
+/// §3.8.4, §3.8.13, §2.11.4); 0 for a pname the command does not know, which the driver
 /// rejects with INVALID_ENUM before reading anything.
-#[allow(dead_code)] // Used by the pname-dependent variants as they are added.
 pub(crate) mod params {
     use crate::gl;
 
@@ -631,18 +629,6 @@ pub(crate) mod params {
             _ => 0,
         }
     }
-
-    /// `PointParameter{fv,iv}` (§3.4).
-    pub fn point_parameter(pname: u32) -> usize {
-        match pname {
-            gl::POINT_DISTANCE_ATTENUATION => 3,
-            gl::POINT_SIZE_MIN
-            | gl::POINT_SIZE_MAX
-            | gl::POINT_FADE_THRESHOLD_SIZE
-            | gl::POINT_SPRITE_COORD_ORIGIN => 1,
-            _ => 0,
-        }
-    }
 }
 
 #[cfg(test)]
@@ -727,6 +713,5 @@ mod tests {
         assert_eq!(params::tex_gen(gl::EYE_PLANE), 4);
         assert_eq!(params::tex_env(gl::TEXTURE_ENV_MODE), 1);
         assert_eq!(params::tex_parameter(gl::TEXTURE_BORDER_COLOR), 4);
-        assert_eq!(params::point_parameter(gl::POINT_DISTANCE_ATTENUATION), 3);
     }
 }
