@@ -14,7 +14,7 @@
 //! test below keeps it there). Forms whose
 //! length depends on a pname (`Lightfv`) own a `Vec` holding exactly the slice the caller passed.
 //!
-//! Variants are grouped in sections by area; each area's owner edits only its own section.
+//! Variants are grouped by area of the spec, each with the module of `context` that validates it.
 
 use serde::{Deserialize, Serialize};
 
@@ -31,12 +31,11 @@ pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 #[allow(missing_docs)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Call {
-    // ---- Begin/End and capabilities (GL 2.1 §2.6, §2.12) ----
+    // Begin/End and capabilities (GL 2.1 §2.6, §2.12)
     Begin(u32),
     End,
     Enable(u32),
     Disable(u32),
-    // --- transforms (context/matrix.rs)
     MatrixMode(u32),
     LoadIdentity,
     LoadMatrixf(Box<[f32; 16]>),
@@ -64,9 +63,8 @@ pub enum Call {
     ClipPlane(u32, [f64; 4]),
     ActiveTexture(u32),
     ClientActiveTexture(u32),
-    // --- end transforms
 
-    // ---- Vertex attributes (GL 2.1 §2.7): context/vertex.rs ----
+    // Vertex attributes (GL 2.1 §2.7): context/vertex.rs
     Vertex2s(i16, i16),
     Vertex2i(i32, i32),
     Vertex2f(f32, f32),
@@ -194,7 +192,7 @@ pub enum Call {
     EdgeFlag(bool),
     EdgeFlagv([bool; 1]),
 
-    // ---- Lighting and shading (GL 2.1 §2.14): context/lighting.rs ----
+    // Lighting and shading (GL 2.1 §2.14): context/lighting.rs
     Materialf(u32, u32, f32),
     Materiali(u32, u32, i32),
     Materialfv(u32, u32, Vec<f32>),
@@ -210,7 +208,7 @@ pub enum Call {
     ColorMaterial(u32, u32),
     ShadeModel(u32),
 
-    // ---- Rasterisation (GL 2.1 §3.3 to §3.5): context/raster.rs ----
+    // Rasterisation (GL 2.1 §3.3 to §3.5): context/raster.rs
     FrontFace(u32),
     CullFace(u32),
     PolygonMode(u32, u32),
@@ -218,7 +216,7 @@ pub enum Call {
     PointSize(f32),
     LineWidth(f32),
 
-    // ---- Framebuffer and per-fragment control (GL 2.1 §4.1, §4.2): context/framebuffer.rs ----
+    // Framebuffer and per-fragment control (GL 2.1 §4.1, §4.2): context/framebuffer.rs
     ClearColor(f32, f32, f32, f32),
     ClearDepth(f64),
     ClearStencil(i32),
@@ -228,14 +226,14 @@ pub enum Call {
     ColorMask(bool, bool, bool, bool),
     Scissor(i32, i32, i32, i32),
 
-    // ---- Hints, pixel store, flush (GL 2.1 §5.6, §3.6.1, §5.5): context/control.rs ----
+    // Hints, pixel store, flush (GL 2.1 §5.6, §3.6.1, §5.5): context/control.rs
     Hint(u32, u32),
     PixelStorei(u32, i32),
     PixelStoref(u32, f32),
     Flush,
     Finish,
 
-    // --- lists: display lists, attribute stacks (GL 2.1 §5.4, §6.1.14): context/lists.rs, attrib.rs
+    // Display lists, attribute stacks (GL 2.1 §5.4, §6.1.14): context/lists.rs, attrib.rs
     GenLists(i32),
     NewList(u32, u32),
     EndList,
@@ -249,9 +247,8 @@ pub enum Call {
     PopAttrib,
     PushClientAttrib(u32),
     PopClientAttrib,
-    // --- end lists
 
-    // --- arrays (context/arrays.rs): vertex arrays (GL 2.1 §2.8) and buffer objects (§2.9).
+    // Vertex arrays (GL 2.1 §2.8) and buffer objects (§2.9).
     // A `Pointer` holds the bytes the caller handed over, or an offset into a bound buffer.
     EnableClientState(u32),
     DisableClientState(u32),
@@ -275,8 +272,7 @@ pub enum Call {
     BindBuffer(u32, u32),
     BufferData(u32, isize, Box<Pointer>, u32),
     BufferSubData(u32, isize, isize, Box<Pointer>),
-    // --- end arrays
-    // --- fragment ops (context/fragment.rs): GL 2.1 §3.10, §4.1
+    // Fog and per-fragment operations (GL 2.1 §3.10, §4.1): context/fragment.rs
     Fogf(u32, f32),
     Fogi(u32, i32),
     Fogfv(u32, Vec<f32>),
@@ -294,9 +290,7 @@ pub enum Call {
     BlendEquationSeparate(u32, u32),
     BlendColor(f32, f32, f32, f32),
     LogicOp(u32),
-    // --- end fragment ops
 
-    // --- texture (context/texture.rs, context/texture_params.rs)
     GenTextures(i32),
     DeleteTextures(i32, Vec<u32>),
     BindTexture(u32, u32),
@@ -355,7 +349,6 @@ pub enum Call {
     MultiTexCoord4fv(u32, [f32; 4]),
     MultiTexCoord4d(u32, f64, f64, f64, f64),
     MultiTexCoord4dv(u32, [f64; 4]),
-    // --- end texture
 }
 
 impl Call {
@@ -531,7 +524,7 @@ impl Call {
     }
 }
 
-// --- lists: which calls a display list does not hold (GL 2.1 §5.4)
+// Which calls a display list does not hold (GL 2.1 §5.4)
 impl Call {
     /// Whether GL 2.1 §5.4 executes this command immediately instead of compiling it into the
     /// display list being defined: GenLists, DeleteLists, NewList, EndList, PixelStore, Flush,
@@ -553,7 +546,7 @@ impl Call {
                 | Call::ClientActiveTexture(..)
                 | Call::PushClientAttrib(..)
                 | Call::PopClientAttrib
-                // --- arrays: client state and buffer objects (GL 2.1 §5.4)
+                // Client state and buffer objects (GL 2.1 §5.4)
                 | Call::EnableClientState(..)
                 | Call::DisableClientState(..)
                 | Call::VertexPointer(..)
@@ -569,13 +562,12 @@ impl Call {
                 | Call::BindBuffer(..)
                 | Call::BufferData(..)
                 | Call::BufferSubData(..)
-                // --- texture: object names (GL 2.1 §5.4)
+                // Object names (GL 2.1 §5.4)
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
         )
     }
 }
-// --- end lists
 
 #[cfg(test)]
 mod tests {

@@ -96,7 +96,7 @@ pub fn ortho_2d(ctx: &mut Context, left: f64, right: f64, bottom: f64, top: f64)
     ctx.ortho(left, right, bottom, top, -1.0, 1.0);
 }
 
-// --- texture: gluBuild2DMipmaps
+// gluBuild2DMipmaps
 /// `GLU_INVALID_VALUE`.
 pub const GLU_INVALID_VALUE: i32 = 100_901;
 /// `GLU_INVALID_ENUM`.
@@ -199,4 +199,3 @@ pub fn build_2d_mipmaps(
     ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, row_length);
     0
 }
-// --- end texture

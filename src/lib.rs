@@ -11,38 +11,32 @@
 //! [`Context::normal3f`], constants live in [`gl`]. See `docs/architecture.md`.
 #![warn(missing_docs)]
 
-pub mod call;
+// The front end: validation, state, queries (GL 2.1 chapters 2 to 6).
+pub mod arrays;
 pub mod context;
-pub mod cpu;
 mod error;
 pub mod gl;
-// --- GLU (glu.rs)
-pub mod glu;
-// --- end GLU
-// --- lists: GLUT shapes (glut.rs)
-pub mod glut;
-// --- end lists
 pub mod state;
+pub mod texture;
 
-// ---- frontend-set: the recording file format ----
+// The recorded call stream and its file format.
+pub mod call;
 pub mod recording;
 
-pub use call::Call;
-pub use context::Context;
-pub use error::Error;
-
-// ---- gl-backend branch: compare, report, scenes, real-GL backend ----
-pub mod compare;
+// Backends: the CPU pipeline and the real driver.
+pub mod cpu;
 #[cfg(feature = "gl")]
 pub mod glbackend;
+
+// Tools over both: comparison, report, the lecture scenes, GLU and GLUT helpers.
+pub mod compare;
+pub mod glu;
+pub mod glut;
 pub mod report;
 pub mod scenes;
 
-// --- arrays: vertex arrays and buffer objects (arrays.rs)
-pub mod arrays;
 pub use arrays::Pointer;
-// --- end arrays
-// --- texture: texture state, unpacking and image helpers (texture.rs)
-pub mod texture;
+pub use call::Call;
+pub use context::Context;
+pub use error::Error;
 pub use texture::{checkerboard, texture_from_image};
-// --- end texture

@@ -58,13 +58,11 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
     use Kind::{Blend, ClearBits, Enum, Plain, Prim};
     match variant {
         "Begin" | "DrawArrays" => &[Prim],
-        // --- arrays
         "DrawRangeElements" => &[Prim, Plain, Plain, Plain, Enum],
         "NormalPointer" | "FogCoordPointer" | "InterleavedArrays" | "BindBuffer"
         | "BufferSubData" => &[Enum],
         "SecondaryColorPointer" => &[Plain, Enum],
         "BufferData" => &[Enum, Plain, Plain, Enum],
-        // --- end arrays
         "DrawElements" => &[Prim, Plain, Enum],
         "Clear" => &[ClearBits],
         "BlendFunc" => &[Blend, Blend],
@@ -104,22 +102,16 @@ fn arg_kinds(variant: &str) -> &'static [Kind] {
         | "TexParameterfv" => &[Enum, Enum],
         "StencilOp" => &[Enum, Enum, Enum],
         "VertexPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
-        // --- lists
         "NewList" | "CallLists" => &[Plain, Enum],
-        // --- end lists
-        // --- fragment ops
         "BlendFuncSeparate" => &[Blend, Blend, Blend, Blend],
         "BlendEquationSeparate" => &[Enum, Enum],
         "StencilFuncSeparate" => &[Enum, Enum],
         "StencilOpSeparate" => &[Enum, Enum, Enum, Enum],
         "StencilMaskSeparate" => &[Enum],
-        // --- end fragment ops
-        // --- texture
         "TexImage2D" => &[Enum, Plain, Enum, Plain, Plain, Plain, Enum, Enum],
         "TexSubImage2D" => &[Enum, Plain, Plain, Plain, Plain, Plain, Enum, Enum],
         "CopyTexImage2D" => &[Enum, Plain, Enum],
         "CopyTexSubImage2D" => &[Enum],
-        // --- end texture
         v if v.starts_with("MultiTexCoord") => &[Enum],
         _ => &[],
     }
@@ -305,7 +297,7 @@ fn to_ron(tokens: &[Token<'_>], names: &HashMap<&str, u32>) -> Result<String, St
             Some(u64::from(v))
         } else if word.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
             && !matches!(word, "true" | "false" | "NaN" | "inf")
-            // --- arrays: the variants of a `Pointer` argument
+            // The variants of a `Pointer` argument
             && !matches!(word, "Data" | "Offset")
             && !matches!(word, "true" | "false" | "NaN" | "inf" | "Some" | "None")
         {

@@ -364,24 +364,19 @@ pub struct State {
 
     pub hints: Hints,
 
-    // --- lists: display lists (table 6.36)
+    // Display lists (table 6.36)
     /// LIST_BASE.
     pub list_base: u32,
-    // --- end lists
-    // --- arrays (src/arrays.rs): vertex arrays (tables 6.6 to 6.8), buffer objects (§2.9)
     pub arrays: crate::arrays::ArrayState,
-    // --- end arrays
-    // --- fragment ops (context/fragment.rs): their own structs, one line each for PushAttrib
+    // Their own structs, one line each for PushAttrib
     pub fog: Fog,
     pub alpha: AlphaTest,
     pub stencil: Stencil,
     pub blend: Blend,
     /// `LOGIC_OP_MODE` (table 6.21).
     pub logic_op: u32,
-    // --- end fragment ops
-    // --- texture: objects, units, UNPACK_ROW_LENGTH (tables 6.15 to 6.19, 6.24)
+    // Objects, units, UNPACK_ROW_LENGTH (tables 6.15 to 6.19, 6.24)
     pub textures: crate::texture::Textures,
-    // --- end texture
 }
 
 impl State {
@@ -432,22 +427,14 @@ impl State {
             pack_alignment: 4,
             unpack_alignment: 4,
             hints: Hints::default(),
-            // --- lists
             list_base: 0,
-            // --- end lists
-            // --- arrays
             arrays: crate::arrays::ArrayState::default(),
-            // --- end arrays
-            // --- fragment ops
             fog: Fog::default(),
             alpha: AlphaTest::default(),
             stencil: Stencil::default(),
             blend: Blend::default(),
             logic_op: gl::COPY,
-            // --- end fragment ops
-            // --- texture
             textures: crate::texture::Textures::default(),
-            // --- end texture
         }
     }
 
@@ -469,8 +456,6 @@ impl State {
         }
     }
 }
-
-// --- fragment ops (context/fragment.rs, cpu/fragment.rs)
 
 /// Fog parameters (GL 2.1 §3.10, table 6.8).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -595,4 +580,3 @@ impl Default for Blend {
         }
     }
 }
-// --- end fragment ops

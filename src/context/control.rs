@@ -53,7 +53,7 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
-        // --- texture: UNPACK_ROW_LENGTH, any value >= 0 (§3.6.1, table 3.1)
+        // UNPACK_ROW_LENGTH, any value >= 0 (§3.6.1, table 3.1)
         if pname == gl::UNPACK_ROW_LENGTH {
             if param < 0 {
                 return self.error(gl::INVALID_VALUE);
@@ -61,7 +61,6 @@ impl Context {
             self.state.textures.unpack_row_length = param;
             return;
         }
-        // --- end texture
         if !matches!(pname, gl::PACK_ALIGNMENT | gl::UNPACK_ALIGNMENT) {
             return self.error(gl::INVALID_ENUM);
         }

@@ -221,7 +221,7 @@ impl Context {
             | gl::SAMPLES => i(0),
             gl::RGBA_MODE => b(true),
             gl::INDEX_MODE | gl::DOUBLEBUFFER | gl::STEREO => b(false),
-            // --- lists: display lists, attribute stacks (table 6.36, 6.35)
+            // Display lists, attribute stacks (table 6.36, 6.35)
             gl::LIST_BASE => e(s.list_base),
             gl::LIST_INDEX => e(self.list_index_and_mode().0),
             gl::LIST_MODE => e(self.list_index_and_mode().1),
@@ -231,8 +231,7 @@ impl Context {
             gl::MAX_ATTRIB_STACK_DEPTH | gl::MAX_CLIENT_ATTRIB_STACK_DEPTH => {
                 i(super::MAX_ATTRIB_STACK_DEPTH as i32)
             }
-            // --- end lists
-            // --- arrays: client arrays (tables 6.6 to 6.8) and buffer bindings (GL 2.1 §2.9).
+            // Client arrays (tables 6.6 to 6.8) and buffer bindings (GL 2.1 §2.9).
             gl::VERTEX_ARRAY
             | gl::NORMAL_ARRAY
             | gl::COLOR_ARRAY
@@ -273,8 +272,6 @@ impl Context {
             gl::ARRAY_BUFFER_BINDING => e(s.arrays.array_buffer),
             gl::ELEMENT_ARRAY_BUFFER_BINDING => e(s.arrays.element_array_buffer),
             gl::MAX_ELEMENTS_VERTICES | gl::MAX_ELEMENTS_INDICES => i(crate::arrays::MAX_ELEMENTS),
-            // --- end arrays
-            // --- fragment ops (tables 6.8, 6.20, 6.21)
             gl::FOG_MODE => e(s.fog.mode),
             gl::FOG_DENSITY => f(s.fog.density),
             gl::FOG_START => f(s.fog.start),
@@ -305,12 +302,9 @@ impl Context {
             gl::BLEND_EQUATION_ALPHA => e(s.blend.equation_alpha),
             gl::BLEND_COLOR => norm(s.blend.color.to_array()),
             gl::LOGIC_OP_MODE => e(s.logic_op),
-            // --- end fragment ops
-            // --- texture (tables 6.15, 6.24, 6.35)
             gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.binding_2d as i32),
             gl::UNPACK_ROW_LENGTH => i(s.textures.unpack_row_length),
             gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
-            // --- end texture
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)
@@ -501,9 +495,7 @@ fn material_param(m: &Material, pname: u32) -> Option<Value> {
     })
 }
 
-// --- fragment ops
 /// STENCIL_REF as queried: the reference clamped to [0, 2^8 - 1] (GL 2.1 §4.1.5).
 fn stencil_ref(r: i32) -> i32 {
     r.clamp(0, 255)
 }
-// --- end fragment ops

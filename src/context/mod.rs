@@ -32,10 +32,8 @@ use crate::gl;
 use crate::state::{State, MAX_VIEWPORT_DIM};
 use crate::Error;
 
-// --- transforms + queries (context/matrix.rs, context/get.rs)
 mod get;
 mod matrix;
-// --- end transforms + queries
 
 /// Appends `$call` to the recording, if one is running, and to the display list being
 /// compiled, if any (GL 2.1 §5.4); builds the `Call` only then. Under NewList(COMPILE) it then
@@ -70,10 +68,8 @@ pub struct Context {
     /// every call. Every change of `recording` or `lists.compiling` calls `sync_capturing`.
     pub(crate) capturing: bool,
     pub(crate) renderer: Renderer,
-    // --- lists (context/lists.rs, context/attrib.rs)
     pub(crate) lists: lists::DisplayLists,
     pub(crate) attrib: attrib::AttribStacks,
-    // --- end lists
 }
 
 impl Context {
@@ -90,10 +86,8 @@ impl Context {
             recording: None,
             capturing: false,
             renderer: Renderer::new(width, height),
-            // --- lists
             lists: Default::default(),
             attrib: Default::default(),
-            // --- end lists
         })
     }
 
@@ -244,12 +238,11 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return false;
         }
-        // --- arrays: the client states (GL 2.1 §2.8) are IsEnabled caps, not Enable caps.
+        // The client states (GL 2.1 §2.8) are IsEnabled caps, not Enable caps.
         let unit = self.state.client_active_texture;
         if let Some(on) = self.state.arrays.enabled(cap, unit) {
             return on;
         }
-        // --- end arrays
         match self.state.cap_mut(cap) {
             Some(flag) => *flag,
             None => {
@@ -280,10 +273,9 @@ impl Context {
     #[inline(never)]
     fn execute_any(&mut self, call: &Call) {
         match *call {
-            // ---- Begin/End and capabilities (GL 2.1 §2.6, §2.12) ----
+            // Begin/End and capabilities (GL 2.1 §2.6, §2.12)
             Call::Begin(a) => self.begin(a),
             Call::End => self.end(),
-            // --- transforms (context/matrix.rs)
             Call::MatrixMode(mode) => self.matrix_mode(mode),
             Call::LoadIdentity => self.load_identity(),
             Call::LoadMatrixf(ref m) => self.load_matrixf(m),
@@ -309,10 +301,9 @@ impl Context {
             Call::ClipPlane(plane, ref eq) => self.clip_plane(plane, eq),
             Call::ActiveTexture(t) => self.active_texture(t),
             Call::ClientActiveTexture(t) => self.client_active_texture(t),
-            // --- end transforms
             Call::Enable(a) => self.enable(a),
             Call::Disable(a) => self.disable(a),
-            // ---- Vertex attributes (GL 2.1 §2.7): context/vertex.rs ----
+            // Vertex attributes (GL 2.1 §2.7): context/vertex.rs
             Call::Vertex2s(a, b) => self.vertex2s(a, b),
             Call::Vertex2i(a, b) => self.vertex2i(a, b),
             Call::Vertex2f(a, b) => self.vertex2f(a, b),
@@ -433,7 +424,7 @@ impl Context {
             Call::FogCoorddv(ref a) => self.fog_coorddv(a),
             Call::EdgeFlag(a) => self.edge_flag(a),
             Call::EdgeFlagv(ref a) => self.edge_flagv(a),
-            // ---- Lighting and shading (GL 2.1 §2.14): context/lighting.rs ----
+            // Lighting and shading (GL 2.1 §2.14): context/lighting.rs
             Call::Materialf(a, b, c) => self.materialf(a, b, c),
             Call::Materiali(a, b, c) => self.materiali(a, b, c),
             Call::Materialfv(a, b, ref c) => self.materialfv(a, b, c),
@@ -448,14 +439,14 @@ impl Context {
             Call::LightModeliv(a, ref b) => self.light_modeliv(a, b),
             Call::ColorMaterial(a, b) => self.color_material(a, b),
             Call::ShadeModel(a) => self.shade_model(a),
-            // ---- Rasterisation (GL 2.1 §3.3 to §3.5): context/raster.rs ----
+            // Rasterisation (GL 2.1 §3.3 to §3.5): context/raster.rs
             Call::FrontFace(a) => self.front_face(a),
             Call::CullFace(a) => self.cull_face(a),
             Call::PolygonMode(a, b) => self.polygon_mode(a, b),
             Call::PolygonOffset(a, b) => self.polygon_offset(a, b),
             Call::PointSize(a) => self.point_size(a),
             Call::LineWidth(a) => self.line_width(a),
-            // ---- Framebuffer and per-fragment control (GL 2.1 §4.1, §4.2): context/framebuffer.rs ----
+            // Framebuffer and per-fragment control (GL 2.1 §4.1, §4.2): context/framebuffer.rs
             Call::ClearColor(a, b, c, d) => self.clear_color(a, b, c, d),
             Call::ClearDepth(a) => self.clear_depth(a),
             Call::ClearStencil(a) => self.clear_stencil(a),
@@ -464,13 +455,13 @@ impl Context {
             Call::DepthMask(a) => self.depth_mask(a),
             Call::ColorMask(a, b, c, d) => self.color_mask(a, b, c, d),
             Call::Scissor(a, b, c, d) => self.scissor(a, b, c, d),
-            // ---- Hints, pixel store, flush (GL 2.1 §5.6, §3.6.1, §5.5): context/control.rs ----
+            // Hints, pixel store, flush (GL 2.1 §5.6, §3.6.1, §5.5): context/control.rs
             Call::Hint(a, b) => self.hint(a, b),
             Call::PixelStorei(a, b) => self.pixel_storei(a, b),
             Call::PixelStoref(a, b) => self.pixel_storef(a, b),
             Call::Flush => self.flush(),
             Call::Finish => self.finish(),
-            // --- lists: display lists, attribute stacks (context/lists.rs, context/attrib.rs)
+            // Display lists, attribute stacks (context/lists.rs, context/attrib.rs)
             Call::GenLists(a) => {
                 self.gen_lists(a);
             }
@@ -484,8 +475,6 @@ impl Context {
             Call::PopAttrib => self.pop_attrib(),
             Call::PushClientAttrib(a) => self.push_client_attrib(a),
             Call::PopClientAttrib => self.pop_client_attrib(),
-            // --- end lists
-            // --- arrays (context/arrays.rs)
             Call::EnableClientState(a) => self.enable_client_state(a),
             Call::DisableClientState(a) => self.disable_client_state(a),
             Call::VertexPointer(a, b, c, ref p) => self.vertex_pointer(a, b, c, p.clone()),
@@ -513,8 +502,6 @@ impl Context {
             Call::BindBuffer(a, b) => self.bind_buffer(a, b),
             Call::BufferData(a, b, ref p, d) => self.buffer_data(a, b, (**p).clone(), d),
             Call::BufferSubData(a, b, c, ref p) => self.buffer_sub_data(a, b, c, (**p).clone()),
-            // --- end arrays
-            // --- fragment ops (context/fragment.rs)
             Call::Fogf(p, v) => self.fogf(p, v),
             Call::Fogi(p, v) => self.fogi(p, v),
             Call::Fogfv(p, ref v) => self.fogfv(p, v),
@@ -532,8 +519,6 @@ impl Context {
             Call::BlendEquationSeparate(a, b) => self.blend_equation_separate(a, b),
             Call::BlendColor(r, g, b, a) => self.blend_color(r, g, b, a),
             Call::LogicOp(op) => self.logic_op(op),
-            // --- end fragment ops
-            // --- texture (context/texture.rs, context/texture_params.rs)
             Call::GenTextures(n) => {
                 let mut names = vec![0; n.clamp(0, texture::MAX_GEN_TEXTURES) as usize];
                 self.gen_textures(n, &mut names);
@@ -600,7 +585,6 @@ impl Context {
             Call::MultiTexCoord4fv(t, ref v) => self.multi_tex_coord4fv(t, v),
             Call::MultiTexCoord4d(t, a0, a1, a2, a3) => self.multi_tex_coord4d(t, a0, a1, a2, a3),
             Call::MultiTexCoord4dv(t, ref v) => self.multi_tex_coord4dv(t, v),
-            // --- end texture
         }
     }
 
@@ -689,15 +673,13 @@ impl State {
     }
 }
 
-// --- arrays: vertex arrays and buffer objects (context/arrays.rs)
+// Vertex arrays and buffer objects (context/arrays.rs)
 mod arrays;
-// --- end arrays
 
-// --- cpu-pipeline: glReadPixels and to_image (context/readback.rs)
+// glReadPixels and to_image (context/readback.rs)
 mod readback;
-// --- end cpu-pipeline
 
-// --- lists: display lists and attribute stacks (context/lists.rs, context/attrib.rs)
+// Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;
 mod lists;
 pub use attrib::MAX_ATTRIB_STACK_DEPTH;
@@ -705,12 +687,9 @@ pub use lists::MAX_LIST_NESTING;
 // The GL backend reads CallLists arrays as the front end does.
 #[cfg(feature = "gl")]
 pub(crate) use lists::{name_offset, name_size};
-// --- end lists
-// --- fragment ops: Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
+// Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
 mod fragment;
-// --- end fragment ops
-// --- texture: objects, images, parameters (context/texture.rs, context/texture_params.rs)
+// Objects, images, parameters (context/texture.rs, context/texture_params.rs)
 pub mod texture;
 mod texture_coords;
 mod texture_params;
-// --- end texture

@@ -124,14 +124,11 @@ pub struct Attribs {
     pub color2: Vec4,
     /// Texture coordinates of unit 0.
     pub tex: Vec4,
-    // --- texture: unit 1's coordinates (multitexture)
+    // Unit 1's coordinates (multitexture)
     /// Texture coordinates of unit 1.
     pub tex1: Vec4,
-    // --- end texture
-    // --- fragment ops
     /// Current fog coordinate (FOG_COORD_SRC = FOG_COORD, §3.10).
     pub fog: f32,
-    // --- end fragment ops
 }
 
 impl Attribs {

@@ -44,12 +44,11 @@ pub struct FragCtx<'a> {
     pub count: bool,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
-    // --- texture: unit 0's sampler when texturing is on and its texture complete (§3.8)
+    // Unit 0's sampler when texturing is on and its texture complete (§3.8)
     /// Texture unit 0 (`None`: no texturing in this flush).
     pub tex: Option<&'a super::texture::Sampler>,
     /// Texture unit 1, applied to unit 0's result (§3.8.15).
     pub tex1: Option<&'a super::texture::Sampler>,
-    // --- end texture
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -125,7 +124,7 @@ impl FragCtx<'_> {
                 }
             }
         }
-        // --- texture: §3.8.13, texturing comes before the colour sum (§3.9) and fog (§3.10,
+        // §3.8.13, texturing comes before the colour sum (§3.9) and fog (§3.10,
         // in `full`)
         let prim = c;
         if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
@@ -135,7 +134,6 @@ impl FragCtx<'_> {
         if let (Some(tx), Some(o)) = (self.tex1, self.rl.tex1) {
             c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
         }
-        // --- end texture
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
@@ -330,10 +328,9 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());
-        // --- texture: the quad whose λ is in `lambda` (none yet)
+        // The quad whose λ is in `lambda` (none yet)
         let mut quad_x = i32::MIN;
         let mut lambda = [0.0f32; 2];
-        // --- end texture
         while mask != 0 {
             let k = mask.trailing_zeros() as usize;
             mask &= mask - 1;
@@ -345,13 +342,12 @@ impl FragCtx<'_> {
                 let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
                 *vj = if j < nflat { val } else { val * inv };
             }
-            // --- texture: λ once per 2x2 quad
+            // λ once per 2x2 quad
             let qx = (x0 + k as i32) & !1;
             if qx != quad_x {
                 quad_x = qx;
                 lambda = self.quad_lambda(planes, qx, y, ox, oy);
             }
-            // --- end texture
             let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);
         }

@@ -37,10 +37,8 @@ mod line;
 mod polygon;
 pub mod raster;
 pub mod setup;
-// --- texture
 pub mod texgen;
 pub mod texture;
-// --- end texture
 pub mod vertex;
 
 #[cfg(test)]
@@ -334,10 +332,9 @@ impl Core {
         let Plan { layout, ctx } = plan;
         // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
-        // --- texture: unit 0, when enabled and complete (§3.8.10)
+        // Unit 0, when enabled and complete (§3.8.10)
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
         let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
-        // --- end texture
         let Core { fb, asm, workers } = self;
         let (vout, wins) = (&verts.vout[..], &verts.wins[..]);
         let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
@@ -356,10 +353,8 @@ impl Core {
             mats,
             count: count_coverage,
             ops: fragops::Ops::new(state),
-            // --- texture
             tex: sampler.as_ref(),
             tex1: sampler1.as_ref(),
-            // --- end texture
         };
         let nw = if batch.idx.len() >= PARALLEL_SETUP {
             // More workers than threads balances the load when other processes share the cores.

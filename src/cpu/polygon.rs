@@ -125,11 +125,10 @@ impl Worker {
         if let (Some(d), Some(s)) = (rl.tex, l.tex) {
             copy(&mut w.v, d, v, s, 4);
         }
-        // --- texture: unit 1's coordinates
+        // Unit 1's coordinates
         if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
             copy(&mut w.v, d, v, s, 4);
         }
-        // --- end texture
         if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
             let ew = v.get(e + 3).copied().unwrap_or(1.0);
             let ew = if ew != 0.0 { ew } else { 1.0 };
@@ -141,7 +140,7 @@ impl Worker {
             copy(&mut w.v, d + 3, v, n, 3);
             copy(&mut w.v, d + 6, csrc, r, 4);
         }
-        // --- fragment ops: the fog coordinate is never flat (§3.10 interpolates it).
+        // The fog coordinate is never flat (§3.10 interpolates it).
         if let (Some(d), Some(s)) = (rl.fog, l.fog) {
             copy(&mut w.v, d, v, s, 1);
         }

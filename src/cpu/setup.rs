@@ -41,10 +41,8 @@ pub struct RLayout {
     pub spec: Option<usize>,
     /// Texture coordinates.
     pub tex: Option<usize>,
-    // --- texture
     /// Texture coordinates of unit 1.
     pub tex1: Option<usize>,
-    // --- end texture
     /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
     pub phong: Option<usize>,
     /// Fog coordinate (one float; fragment ops).
@@ -65,22 +63,18 @@ impl RLayout {
             r.tex = Some(r.n);
             r.n += 4;
         }
-        // --- texture
         if l.tex1.is_some() {
             r.tex1 = Some(r.n);
             r.n += 4;
         }
-        // --- end texture
         if l.nrm.is_some() {
             r.phong = Some(r.n);
             r.n += 10;
         }
-        // --- fragment ops
         if l.fog.is_some() {
             r.fog = Some(r.n);
             r.n += 1;
         }
-        // --- end fragment ops
         r
     }
 }
@@ -226,16 +220,13 @@ fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
     if let (Some(d), Some(s)) = (rl.tex, l.tex) {
         set(d, s, 4, false);
     }
-    // --- texture: unit 1's coordinates
+    // Unit 1's coordinates
     if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
         set(d, s, 4, false);
     }
-    // --- end texture
-    // --- fragment ops
     if let (Some(d), Some(s)) = (rl.fog, l.fog) {
         set(d, s, 1, false);
     }
-    // --- end fragment ops
     t
 }
 

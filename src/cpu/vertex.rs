@@ -40,20 +40,16 @@ pub struct Layout {
     pub spec_b: Option<usize>,
     /// Texture coordinates of unit 0.
     pub tex: Option<usize>,
-    // --- texture
     /// Texture coordinates of unit 1 (when TEXTURE_2D is enabled there).
     pub tex1: Option<usize>,
-    // --- end texture
     /// Eye-space position (x, y, z, w), for user clip planes and per-fragment lighting.
     pub eye: Option<usize>,
     /// Eye-space normal (after rescale/normalize), for per-fragment lighting.
     pub nrm: Option<usize>,
     /// Unlit vertex colour, for COLOR_MATERIAL under per-fragment lighting.
     pub raw: Option<usize>,
-    // --- fragment ops
     /// Fog coordinate c (one float), when FOG is enabled (§3.10).
     pub fog: Option<usize>,
-    // --- end fragment ops
 }
 
 impl Layout {
@@ -88,11 +84,9 @@ impl Layout {
         if tex {
             l.tex = take(4);
         }
-        // --- texture
         if state.enables.texture_2d[1] {
             l.tex1 = take(4);
         }
-        // --- end texture
         if phong || user {
             l.eye = take(4);
         }
@@ -100,11 +94,9 @@ impl Layout {
             l.nrm = take(3);
             l.raw = take(4);
         }
-        // --- fragment ops
         if state.enables.fog {
             l.fog = take(1);
         }
-        // --- end fragment ops
         l.stride = n;
         l
     }
@@ -560,12 +552,10 @@ impl Lit<'_> {
             || l.tex1.is_some()
             || l.fog.is_some()
             || l.raw.is_some();
-        // --- texture
         let tex_matrix = *state.texture_matrix[0].top();
         let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
         let tex_matrix1 = *state.texture_matrix[1].top();
         let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
-        // --- end texture
         // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
         // block, every lane that is read), so they are initialised once.
         let mut lit = Shaded::<LANES>::default();
@@ -719,7 +709,7 @@ impl Lit<'_> {
         let l = self.layout;
         let tf = self.tf;
         let (color, color2) = (a.color, a.color2);
-        // --- texture: TexGen (§2.11.4), then the texture matrix (§2.11.2)
+        // TexGen (§2.11.4), then the texture matrix (§2.11.2)
         for (at, tc, g, tm) in [
             (l.tex, a.tex, texgen, &tex_matrix[0]),
             (l.tex1, a.tex1, texgen1, &tex_matrix[1]),
@@ -737,8 +727,7 @@ impl Lit<'_> {
             };
             put(o, t, *tm * tc);
         }
-        // --- end texture
-        // --- fragment ops: the fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
+        // The fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
         // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.
         if let Some(f) = l.fog {
             let c = if self.state.fog.coord_src == gl::FOG_COORD {
@@ -750,7 +739,6 @@ impl Lit<'_> {
                 *d = c.abs();
             }
         }
-        // --- end fragment ops
         if self.lighting.is_none() {
             put(o, l.col, color.clamp(Vec4::ZERO, Vec4::ONE));
             if let Some(s) = l.spec {

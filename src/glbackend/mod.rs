@@ -15,18 +15,13 @@
 //! emulated by a GLSL program (`phong.rs`).
 
 mod egl;
-// --- lists (lists.rs)
 mod lists;
-// --- end lists
 mod phong;
 pub mod raw;
 mod replay;
-// --- arrays: vertex arrays and buffer objects on the driver
+// Vertex arrays and buffer objects on the driver
 mod arrays;
-// --- end arrays
-// --- texture
 mod texture;
-// --- end texture
 
 use std::cell::Cell;
 use std::ffi::CString;
@@ -70,18 +65,16 @@ pub struct GlBackend {
     /// A call since the last Begin may have changed what the Phong program depends on.
     phong_dirty: bool,
     phong_program: Option<phong::PhongProgram>,
-    // --- lists: the mirror of the driver's display lists (lists.rs)
+    // The mirror of the driver's display lists (lists.rs)
     lists: lists::ListMirror,
-    // --- end lists
     /// Values a `get_*` may write at most (GL 2.1 §6.1.2; COMPRESSED_TEXTURE_FORMATS is the long one).
     max_get_values: usize,
     renderer: String,
     version: String,
     egl: egl::EglContext,
     _not_send: PhantomData<*const ()>,
-    // --- arrays: the shadow array state; the driver's client pointers point into it.
+    // The shadow array state; the driver's client pointers point into it.
     arrays: crate::arrays::ArrayState,
-    // --- end arrays
 }
 
 impl std::fmt::Debug for GlBackend {
@@ -212,17 +205,13 @@ impl GlBackend {
             phong: false,
             phong_dirty: true,
             phong_program: None,
-            // --- lists
             lists: Default::default(),
-            // --- end lists
             max_get_values,
             renderer,
             version,
             egl,
             _not_send: PhantomData,
-            // --- arrays
             arrays: crate::arrays::ArrayState::default(),
-            // --- end arrays
         })
     }
 
@@ -530,9 +519,8 @@ impl GlBackend {
     pub fn replay_frame(&mut self, calls: &[Call]) {
         self.make_current();
         let phong = self.phong;
-        // --- arrays: the client array state PopClientAttrib restores, for the shadow.
+        // The client array state PopClientAttrib restores, for the shadow.
         let saved_arrays = self.arrays.clone();
-        // --- end arrays
         // SAFETY: context current; no pointers.
         unsafe {
             self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
@@ -555,9 +543,7 @@ impl GlBackend {
             self.raw.PopClientAttrib();
             self.raw.PopAttrib();
         }
-        // --- arrays
         self.restore_client_arrays(saved_arrays);
-        // --- end arrays
         if !phong && self.phong {
             self.phong = false;
             // SAFETY: context current.

@@ -266,7 +266,7 @@ impl GlBackend {
             Call::PixelStoref(a, b) => unsafe { gl.PixelStoref(a, b) },
             Call::Flush => unsafe { gl.Flush() },
             Call::Finish => unsafe { gl.Finish() },
-            // --- lists: display lists, attribute stacks (glbackend/lists.rs)
+            // Display lists, attribute stacks (glbackend/lists.rs)
             Call::GenLists(range) => unsafe {
                 gl.GenLists(range);
             },
@@ -280,8 +280,6 @@ impl GlBackend {
             Call::PopAttrib => self.pop_attrib(),
             Call::PushClientAttrib(mask) => unsafe { gl.PushClientAttrib(mask) },
             Call::PopClientAttrib => unsafe { gl.PopClientAttrib() },
-            // --- end lists
-            // --- arrays (glbackend/arrays.rs: validated on a shadow state first)
             Call::EnableClientState(..)
             | Call::DisableClientState(..)
             | Call::VertexPointer(..)
@@ -301,8 +299,6 @@ impl GlBackend {
             | Call::BindBuffer(..)
             | Call::BufferData(..)
             | Call::BufferSubData(..) => self.arrays_call(call),
-            // --- end arrays
-            // --- fragment ops
             // GL 2.1 (glFog reference page) takes FOG_COLOR only through the vector forms; Mesa
             // also takes it here. Raised here as for Begin, so both backends agree.
             Call::Fogf(gl::FOG_COLOR, _) | Call::Fogi(gl::FOG_COLOR, _)
@@ -344,8 +340,6 @@ impl GlBackend {
             Call::BlendEquationSeparate(a, b) => unsafe { gl.BlendEquationSeparate(a, b) },
             Call::BlendColor(r, g, b, a) => unsafe { gl.BlendColor(r, g, b, a) },
             Call::LogicOp(op) => unsafe { gl.LogicOp(op) },
-            // --- end fragment ops
-            // --- texture (glbackend/texture.rs for the pointer-reading calls)
             Call::GenTextures(n) => self.gen_textures(n),
             Call::DeleteTextures(n, ref v) => self.delete_textures(n, v),
             Call::BindTexture(a, b) => unsafe { gl.BindTexture(a, b) },
@@ -445,7 +439,6 @@ impl GlBackend {
                 gl.MultiTexCoord4d(t, a0, a1, a2, a3)
             },
             Call::MultiTexCoord4dv(t, ref v) => unsafe { gl.MultiTexCoord4dv(t, v.as_ptr()) },
-            // --- end texture
         }
     }
 

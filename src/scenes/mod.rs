@@ -10,26 +10,19 @@
 use crate::{gl, Call, Context, Error};
 
 pub mod gaussian;
-// --- lecture scenes (scenes branch)
 pub mod lights;
 pub mod primitives;
 pub mod shapes;
 pub mod sphere;
 pub mod surface;
 pub mod transforms;
-// --- lists: display-list and glut-shapes scenes (scenes/lists.rs)
+// Display-list and glut-shapes scenes (scenes/lists.rs)
 pub mod lists;
-// --- end lists
-// --- arrays: seed 004's VBO/EBO examples
+// Seed 004's VBO/EBO examples
 pub mod arrays;
-// --- end arrays
-// --- fragment ops
 pub mod fragment;
-// --- end fragment ops
-// --- texture
 pub mod projective;
 pub mod texture;
-// --- end texture
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -89,7 +82,6 @@ static SCENES: &[Scene] = &[
     gaussian::SCENES[1],
     gaussian::SCENES[2],
     gaussian::SCENES[3],
-    // --- lecture scenes (scenes branch)
     surface::SCENES[0],
     surface::SCENES[1],
     sphere::SCENES[0],
@@ -103,25 +95,17 @@ static SCENES: &[Scene] = &[
     transforms::SCENES[0],
     primitives::SCENES[0],
     primitives::SCENES[1],
-    // --- lists
     lists::SCENES[0],
     lists::SCENES[1],
-    // --- end lists
-    // --- arrays
     arrays::SCENES[0],
     arrays::SCENES[1],
-    // --- end arrays
-    // --- fragment ops
     fragment::SCENES[0],
     fragment::SCENES[1],
     fragment::SCENES[2],
     fragment::SCENES[3],
-    // --- end fragment ops
-    // --- texture
     texture::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
-    // --- end texture
 ];
 
 /// Every registered scene, in listing order.
