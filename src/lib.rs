@@ -19,8 +19,10 @@ pub mod gl;
 pub mod state;
 pub mod texture;
 
-// The recorded call stream and its file format.
+// The command table, and the recorded call stream made from it, with its file format.
 pub mod call;
+pub mod commands;
+pub mod counts;
 pub mod recording;
 
 // Backends: the CPU pipeline and the real driver.

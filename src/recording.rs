@@ -16,9 +16,8 @@
 //!
 //! Design decision: RON does the structural work through `Call`'s serde derive, so a variant added
 //! to `Call` needs nothing here to be recorded and read back. This module only rewrites argument
-//! tokens: on writing, integers in the positions `arg_kinds` marks as enums become names; on
-//! reading, every GL name (anywhere) becomes its number. A variant missing from `arg_kinds` is
-//! written with plain numbers, which read back the same.
+//! tokens: on writing, integers in the positions the command table marks as enums become names; on
+//! reading, every GL name (anywhere) becomes its number.
 //!
 //! Hostile input: a line longer than [`MAX_LINE_BYTES`] is a parse error before it is stored, so
 //! memory stays proportional to the input and every vector is bounded by its line; RON's
@@ -35,86 +34,12 @@ use crate::Error;
 /// The longest line `read_recording` accepts, in bytes (a texture image of a few megabytes fits).
 pub const MAX_LINE_BYTES: usize = 16 << 20;
 
-/// What an argument position holds, for writing it readably.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
-    /// A number as it is (also every position past the listed ones).
-    Plain,
-    /// A GL enum: its name, or hex when it has none.
-    Enum,
-    /// A primitive mode: POINTS..POLYGON (whose values 0 and 1 also name FALSE, ZERO, ...).
-    Prim,
-    /// A blend factor: ZERO and ONE by those names.
-    Blend,
-    /// A `Clear` mask: buffer bit names joined by `|`.
-    ClearBits,
-}
+use crate::call::ArgKind as Kind;
 
-/// The kinds of the leading arguments of `variant`; positions past the slice are `Plain`.
-///
-/// Lists this crate's variants and the GL entry points other areas are expected to add; a
-/// variant not listed still round-trips, with numbers instead of names.
+/// The kinds of the arguments of the call named `variant`, from the command table (the
+/// registry's parameter types and enum groups); positions past the slice are `Plain`.
 fn arg_kinds(variant: &str) -> &'static [Kind] {
-    use Kind::{Blend, ClearBits, Enum, Plain, Prim};
-    match variant {
-        "Begin" | "DrawArrays" => &[Prim],
-        "DrawRangeElements" => &[Prim, Plain, Plain, Plain, Enum],
-        "NormalPointer" | "FogCoordPointer" | "InterleavedArrays" | "BindBuffer"
-        | "BufferSubData" => &[Enum],
-        "SecondaryColorPointer" => &[Plain, Enum],
-        "BufferData" => &[Enum, Plain, Plain, Enum],
-        "DrawElements" => &[Prim, Plain, Enum],
-        "Clear" => &[ClearBits],
-        "BlendFunc" => &[Blend, Blend],
-        "Enable"
-        | "Disable"
-        | "LightModelf"
-        | "LightModeli"
-        | "LightModelfv"
-        | "LightModeliv"
-        | "ShadeModel"
-        | "FrontFace"
-        | "CullFace"
-        | "DepthFunc"
-        | "PixelStorei"
-        | "PixelStoref"
-        | "MatrixMode"
-        | "ActiveTexture"
-        | "ClientActiveTexture"
-        | "ClipPlane"
-        | "EnableClientState"
-        | "DisableClientState"
-        | "AlphaFunc"
-        | "StencilFunc"
-        | "LogicOp"
-        | "Fogf"
-        | "Fogi"
-        | "Fogfv"
-        | "Fogiv"
-        | "BindTexture"
-        | "ReadBuffer"
-        | "DrawBuffer"
-        | "BlendEquation" => &[Enum],
-        "Materialf" | "Materiali" | "Materialfv" | "Materialiv" | "Lightf" | "Lighti"
-        | "Lightfv" | "Lightiv" | "ColorMaterial" | "PolygonMode" | "Hint" | "TexGeni"
-        | "TexGenf" | "TexGend" | "TexGeniv" | "TexGenfv" | "TexGendv" | "TexEnvi" | "TexEnvf"
-        | "TexEnviv" | "TexEnvfv" | "TexParameteri" | "TexParameterf" | "TexParameteriv"
-        | "TexParameterfv" => &[Enum, Enum],
-        "StencilOp" => &[Enum, Enum, Enum],
-        "VertexPointer" | "ColorPointer" | "TexCoordPointer" => &[Plain, Enum],
-        "NewList" | "CallLists" => &[Plain, Enum],
-        "BlendFuncSeparate" => &[Blend, Blend, Blend, Blend],
-        "BlendEquationSeparate" => &[Enum, Enum],
-        "StencilFuncSeparate" => &[Enum, Enum],
-        "StencilOpSeparate" => &[Enum, Enum, Enum, Enum],
-        "StencilMaskSeparate" => &[Enum],
-        "TexImage2D" => &[Enum, Plain, Enum, Plain, Plain, Plain, Enum, Enum],
-        "TexSubImage2D" => &[Enum, Plain, Plain, Plain, Plain, Plain, Enum, Enum],
-        "CopyTexImage2D" => &[Enum, Plain, Enum],
-        "CopyTexSubImage2D" => &[Enum],
-        v if v.starts_with("MultiTexCoord") => &[Enum],
-        _ => &[],
-    }
+    crate::call::arg_kinds(variant).unwrap_or(&[])
 }
 
 /// The buffer bits `Clear` takes, by name.

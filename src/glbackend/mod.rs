@@ -15,6 +15,7 @@
 //! emulated by a GLSL program (`phong.rs`).
 
 mod egl;
+mod generated;
 mod lists;
 mod phong;
 pub mod raw;

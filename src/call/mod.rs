@@ -1,0 +1,59 @@
+//! The recorded call stream: one `Call` variant per GL command, arguments owned.
+//!
+//! A `Vec<Call>` is what a context records, what a display list holds, what the real-GL backend
+//! replays and what a recording file stores. The enum, its names and its classifiers are
+//! generated from the command table (`crate::commands`), and so are the front end's and the GL
+//! backend's matches over it, each exhaustive (no `_ =>` arm).
+//!
+//! Variants are named as the GL function without `gl` (`glNormal3f` → `Normal3f`) and take the
+//! GL types one to one; vector forms whose length GL fixes keep their own variant with an array
+//! (`Normal3fv([f32; 3])`), so a replay calls exactly the entry point the user called. Forms whose
+//! length depends on a pname (`Lightfv`) own a `Vec` holding exactly the slice the caller passed.
+//!
+//! Size matters: a frame of the 400x400 lecture surface records 1.6M calls, and every replay
+//! streams them from memory, so `size_of::<Call>()` is a per-call cost. Rare calls with large
+//! arguments (the 16-element matrices, `Frustum`/`Ortho`, the texture image calls) keep them boxed
+//! (the `box`, `pack` and `tuple` annotations), which holds every call to 40 bytes instead of 136
+//! (the test below keeps it there).
+
+/// `TexImage2D`'s arguments: target, level, internalformat, width, height, border, format, type,
+/// pixels (`None`: a NULL pointer).
+pub type TexImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8>>);
+/// `TexSubImage2D`'s arguments: target, level, xoffset, yoffset, width, height, format, type,
+/// pixels.
+pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
+
+mod generated;
+
+pub(crate) use generated::arg_kinds;
+pub use generated::{Call, NAMES};
+
+/// What an argument of a call holds, for the recording format to write it readably (from the
+/// registry's type and enum group of the parameter).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ArgKind {
+    /// A number as it is.
+    Plain,
+    /// A GL enum: its name, or hex when it has none.
+    Enum,
+    /// A primitive mode: POINTS..POLYGON (whose values 0 and 1 also name FALSE, ZERO, ...).
+    Prim,
+    /// A blend factor: ZERO and ONE by those names.
+    Blend,
+    /// A `Clear` mask: buffer bit names joined by `|`.
+    ClearBits,
+}
+
+#[cfg(test)]
+mod tests {
+    /// A replay streams every recorded call from memory: a variant that grows `Call` (say, an
+    /// inline 16-element matrix) makes every `Vertex3f` of a 1.6M-call frame pay for it.
+    #[test]
+    fn call_stays_small() {
+        assert!(
+            std::mem::size_of::<super::Call>() <= 40,
+            "{}",
+            std::mem::size_of::<super::Call>()
+        );
+    }
+}
