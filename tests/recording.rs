@@ -514,3 +514,60 @@ fn random_and_mutated_lines_never_panic() {
         check_outcome(&bytes);
     }
 }
+
+/// `fixedgl replay`: a malformed recording exits 2 with one `file:line:col: message` line on
+/// stderr, a missing one exits 2 with one line naming it, a good one renders (exit 0).
+#[cfg(feature = "cli")]
+#[test]
+fn replay_cli_reports_malformed_recordings_in_one_line() {
+    use std::process::Command;
+    let dir = std::env::temp_dir().join(format!("fixedgl-replay-cli-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let bad = dir.join("bad.fglrec");
+    let good = dir.join("good.fglrec");
+    let missing = dir.join("missing.fglrec");
+    let png = dir.join("out.png");
+    let written = std::fs::write(&bad, "# header\nFlush\nColor3f(0.5 5, 1, 1)\n")
+        .and_then(|()| std::fs::write(&good, "Clear(COLOR_BUFFER_BIT)\nFlush\n"));
+    assert!(written.is_ok(), "{written:?}");
+    let run = |file: &std::path::Path| {
+        Command::new(env!("CARGO_BIN_EXE_fixedgl"))
+            .args(["replay", "--backend", "cpu", "--size", "4x4", "-o"])
+            .arg(&png)
+            .arg(file)
+            .output()
+    };
+    let (bad_run, missing_run, good_run) = (run(&bad), run(&missing), run(&good));
+    let _ = std::fs::remove_dir_all(&dir);
+
+    let Ok(out) = bad_run else {
+        panic!("{bad_run:?}")
+    };
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(
+        stderr,
+        format!(
+            "{}:3:13: expected `,` after argument 1 of Color3f, found `5`\n",
+            bad.display()
+        )
+    );
+    assert!(out.stdout.is_empty());
+
+    let Ok(out) = missing_run else {
+        panic!("{missing_run:?}")
+    };
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with(&format!("{}: cannot read: ", missing.display())),
+        "{stderr}"
+    );
+
+    let Ok(out) = good_run else {
+        panic!("{good_run:?}")
+    };
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+}
