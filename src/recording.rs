@@ -14,15 +14,31 @@
 //! written in Rust's shortest round-trip form, so a write → read cycle gives back the same bits
 //! (NaN aside, whose payload is not kept).
 //!
-//! Design decision: RON does the structural work through `Call`'s serde derive, so a variant added
-//! to `Call` needs nothing here to be recorded and read back. This module only rewrites argument
-//! tokens: on writing, integers in the positions `arg_kinds` marks as enums become names; on
-//! reading, every GL name (anywhere) becomes its number. A variant missing from `arg_kinds` is
-//! written with plain numbers, which read back the same.
+//! What reads: names `[A-Za-z_][A-Za-z0-9_]*` (calls, GL names anywhere a number goes, `true`,
+//! `false`, `Some`, `None`, `Data`, `Offset`); numbers as RON reads them (an optional sign, then
+//! decimal with optional fraction and exponent, `0x`/`0o`/`0b` integers, `_` after a digit,
+//! `inf` and `NaN`; RON's `f32`/`f64` type suffixes are not read, nor `nan`, `Infinity`); `A | B`
+//! of non-negative integers; `( ) [ ] ,` with an optional trailing comma; spaces and tabs
+//! between tokens, and a `\r` before the line's end. Anything else in a line before its `#` is
+//! an error: control and non-ASCII characters, strings, a run of number/name characters that is
+//! neither (`1.0f`, `LIGHT0.5`), a token after the call.
 //!
-//! Hostile input: a line longer than [`MAX_LINE_BYTES`] is a parse error before it is stored, so
-//! memory stays proportional to the input and every vector is bounded by its line; RON's
-//! recursion limit bounds nesting.
+//! Design decision: writing goes through RON and `Call`'s serde derive, and reading through the
+//! same derive with this module's own `serde::Deserializer`, so a variant added to `Call` needs
+//! nothing here to be recorded and read back. On writing, integers in the positions `arg_kinds`
+//! marks as enums become names (a variant missing from `arg_kinds` is written with plain
+//! numbers, which read back the same). Reading was RON after a token rewrite (names to
+//! numbers), which dropped the whitespace between tokens (`0.5 5` read as `0.55`), reported
+//! columns in the rewritten text and RON's messages (every variant name for an unknown call);
+//! the direct deserializer reads the user's tokens where they stand, so every error has the
+//! user's line and column, names the argument (`argument 2 of Vertex3f: expected f32, found a
+//! string`) and is one short line (an unknown call gets the nearest name by edit distance, not
+//! the list). It is driven by the types the derive asks for, so nesting is bounded by `Call`'s
+//! types, not by the input.
+//!
+//! Hostile input: a line longer than [`MAX_LINE_BYTES`] is a parse error before it is stored, and
+//! tokens are read one at a time, so memory stays proportional to the line and every vector is
+//! bounded by it.
 
 use std::collections::HashMap;
 use std::io::{BufRead, BufReader, BufWriter, Read, Write};
@@ -1234,5 +1250,32 @@ mod tests {
         assert_eq!(line.ok().as_deref(), Some("TexCoord1sv((-5))"));
         let line = format_call(&Call::ShadeModel(0x1234_5678));
         assert_eq!(line.ok().as_deref(), Some("ShadeModel(0x12345678)"));
+    }
+
+    #[test]
+    fn numbers_are_whole_tokens() {
+        for ok in [
+            "1", "-1", "+1", "1.", ".5", "1.5e-3", "1E+3", "1_000", "0x1F", "0X1f", "-0b101",
+            "0o17", "inf", "-inf", "+NaN", "-NaN",
+        ] {
+            assert!(is_number(ok), "{ok}");
+        }
+        for bad in [
+            "", "-", ".", "1.0f", "1.0.0", "1e", "1e+", "0x", "0xG", "_1", "1-2", "nan", "-Inf",
+            "1.0f32", "0b2",
+        ] {
+            assert!(!is_number(bad), "{bad}");
+        }
+    }
+
+    #[test]
+    fn suggestions_are_near_or_absent() {
+        let names = ["Lightfv", "Lightf", "Begin", "Vertex3f", "End"];
+        assert_eq!(nearest("Lightfvv", names), Some("Lightfv"));
+        assert_eq!(nearest("Begni", names), Some("Begin"));
+        assert_eq!(nearest("vertex3f", names), Some("Vertex3f"));
+        assert_eq!(nearest("Xyzzyplugh", names), None);
+        assert_eq!(edit_distance(b"abcd", b"acbd"), 1);
+        assert_eq!(edit_distance(b"", b"abc"), 3);
     }
 }
