@@ -16,11 +16,14 @@ pub enum Error {
     },
     /// Reading or writing a file failed.
     Io(std::io::Error),
-    /// A recording file could not be parsed; `line` is 1-based.
+    /// A recording file could not be parsed; `line` and `column` are 1-based and refer to the
+    /// text as the user wrote it.
     Parse {
         /// The 1-based line number.
         line: usize,
-        /// What is wrong with it.
+        /// The 1-based column (a byte offset: the parts of a line that are read are ASCII).
+        column: usize,
+        /// What is wrong with it: one short line.
         message: String,
     },
     /// Encoding or decoding an image failed.
@@ -38,7 +41,11 @@ impl fmt::Display for Error {
                 crate::state::MAX_VIEWPORT_DIM
             ),
             Error::Io(e) => write!(f, "I/O error: {e}"),
-            Error::Parse { line, message } => write!(f, "line {line}: {message}"),
+            Error::Parse {
+                line,
+                column,
+                message,
+            } => write!(f, "line {line}, column {column}: {message}"),
             Error::Image(m) => write!(f, "image error: {m}"),
             Error::Backend(m) => write!(f, "GL backend: {m}"),
         }

@@ -1,6 +1,12 @@
 //! `fixedgl`: list, render, compare and benchmark the registered scenes on the CPU pipeline and
 //! on a real GL driver, and replay recording files.
 //!
+//! Exit status: 0 on success; 1 when a command fails doing its work (a GL backend that cannot
+//! start, a PNG that cannot be written, `compare` over tolerance); 2 for input the user must fix,
+//! as clap does for a bad command line: an unknown scene, or a recording that cannot be read
+//! (`<file>: cannot read: <reason>`) or is malformed (`<file>:<line>:<col>: <message>`, one
+//! line on stderr, like a compiler's diagnostic, so editors can jump to it).
+//!
 //! Design decision: every GL-side step goes through the small `gl_side` module, which is the real
 //! backend with the `gl` feature and a clear "built without GL" error without it, so the rest of
 //! the CLI is the same in both builds.
@@ -147,6 +153,14 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(code) => code,
+        Err(CliError::Input(m)) => {
+            eprintln!("{m}");
+            ExitCode::from(2)
+        }
+        Err(e @ CliError::Usage(_)) => {
+            eprintln!("fixedgl: {e}");
+            ExitCode::from(2)
+        }
         Err(e) => {
             eprintln!("fixedgl: {e}");
             ExitCode::FAILURE
@@ -172,18 +186,20 @@ fn list() -> Result<ExitCode, CliError> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// What a command can fail with: a fixedgl error, or a bad command line.
+/// What a command can fail with: a fixedgl error, a bad command line, or an input file that
+/// cannot be used (the message is the whole diagnostic line, file name first).
 #[derive(Debug)]
 enum CliError {
     Fixedgl(Error),
     Usage(String),
+    Input(String),
 }
 
 impl std::fmt::Display for CliError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             CliError::Fixedgl(e) => e.fmt(f),
-            CliError::Usage(m) => f.write_str(m),
+            CliError::Usage(m) | CliError::Input(m) => f.write_str(m),
         }
     }
 }
@@ -357,7 +373,17 @@ fn replay(
     output: Option<PathBuf>,
     device: &str,
 ) -> Result<ExitCode, CliError> {
-    let calls = fixedgl::recording::load(file)?;
+    let calls = fixedgl::recording::load(file).map_err(|e| {
+        CliError::Input(match e {
+            Error::Parse {
+                line,
+                column,
+                message,
+            } => format!("{}:{line}:{column}: {message}", file.display()),
+            Error::Io(e) => format!("{}: cannot read: {e}", file.display()),
+            e => format!("{}: {e}", file.display()),
+        })
+    })?;
     let img = match backend {
         Backend::Cpu => {
             let mut ctx = Context::new(w, h)?;
