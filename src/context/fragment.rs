@@ -15,22 +15,9 @@ use glam::Vec4;
 
 use super::Context;
 use crate::call::Call;
+use crate::counts;
 use crate::gl;
 use crate::state::{StencilFace, BACK, FRONT};
-
-/// The values `Fog` reads for `pname` (GL 2.1 table 6.8), `None` for a pname that is not one.
-pub(crate) fn fog_len(pname: u32) -> Option<usize> {
-    match pname {
-        gl::FOG_COLOR => Some(4),
-        gl::FOG_MODE
-        | gl::FOG_DENSITY
-        | gl::FOG_START
-        | gl::FOG_END
-        | gl::FOG_INDEX
-        | gl::FOG_COORD_SRC => Some(1),
-        _ => None,
-    }
-}
 
 /// GL 2.1 table 2.9: a signed 32-bit integer colour component to [-1, 1].
 fn int_to_float(c: i32) -> f32 {
@@ -146,7 +133,7 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
-        let Some(len) = fog_len(pname) else {
+        let Some(len) = counts::fog(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
         if scalar && len != 1 {

@@ -16,6 +16,7 @@ use glam::{Vec3, Vec4};
 use super::vertex::Component;
 use super::{record, Context};
 use crate::call::Call;
+use crate::counts;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT, MAX_LIGHTS};
 
@@ -45,43 +46,6 @@ pub(crate) fn faces(face: u32) -> Option<&'static [usize]> {
         gl::FRONT => Some(&[FRONT]),
         gl::BACK => Some(&[BACK]),
         gl::FRONT_AND_BACK => Some(&[FRONT, BACK]),
-        _ => None,
-    }
-}
-
-/// The number of values a material pname takes, or `None` if it is not one.
-fn material_len(pname: u32) -> Option<usize> {
-    match pname {
-        gl::AMBIENT | gl::DIFFUSE | gl::SPECULAR | gl::EMISSION | gl::AMBIENT_AND_DIFFUSE => {
-            Some(4)
-        }
-        gl::SHININESS => Some(1),
-        gl::COLOR_INDEXES => Some(3),
-        _ => None,
-    }
-}
-
-/// The number of values a light pname takes, or `None` if it is not one.
-fn light_len(pname: u32) -> Option<usize> {
-    match pname {
-        gl::AMBIENT | gl::DIFFUSE | gl::SPECULAR | gl::POSITION => Some(4),
-        gl::SPOT_DIRECTION => Some(3),
-        gl::SPOT_EXPONENT
-        | gl::SPOT_CUTOFF
-        | gl::CONSTANT_ATTENUATION
-        | gl::LINEAR_ATTENUATION
-        | gl::QUADRATIC_ATTENUATION => Some(1),
-        _ => None,
-    }
-}
-
-/// The number of values a light-model pname takes, or `None` if it is not one.
-fn light_model_len(pname: u32) -> Option<usize> {
-    match pname {
-        gl::LIGHT_MODEL_AMBIENT => Some(4),
-        gl::LIGHT_MODEL_LOCAL_VIEWER | gl::LIGHT_MODEL_TWO_SIDE | gl::LIGHT_MODEL_COLOR_CONTROL => {
-            Some(1)
-        }
         _ => None,
     }
 }
@@ -137,7 +101,7 @@ impl Context {
         let Some(targets) = faces(face) else {
             return self.error(gl::INVALID_ENUM);
         };
-        let Some(len) = material_len(pname) else {
+        let Some(len) = counts::material(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
         if scalar && pname != gl::SHININESS {
@@ -213,7 +177,7 @@ impl Context {
         if index >= MAX_LIGHTS {
             return self.error(gl::INVALID_ENUM);
         }
-        let Some(len) = light_len(pname) else {
+        let Some(len) = counts::light(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
         if scalar && len != 1 {
@@ -286,7 +250,7 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
-        let Some(len) = light_model_len(pname) else {
+        let Some(len) = counts::light_model(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
         if scalar && len != 1 {

@@ -258,8 +258,8 @@ impl GlBackend {
             Call::BindBuffer(..) => self.arrays_call(call),
             Call::BufferData(..) => self.arrays_call(call),
             Call::BufferSubData(..) => self.arrays_call(call),
-            Call::Fogf(pname, param) => self.replay_fogf(pname, param),
-            Call::Fogi(pname, param) => self.replay_fogi(pname, param),
+            Call::Fogf(pname, param) => gl.fogf(pname, param),
+            Call::Fogi(pname, param) => gl.fogi(pname, param),
             Call::Fogfv(pname, ref params) => {
                 self.with_params(params, counts::fog(pname), false, |gl, params| {
                     gl.fogfv(pname, params)
@@ -281,9 +281,10 @@ impl GlBackend {
             }
             Call::StencilMask(mask) => gl.stencil_mask(mask),
             Call::StencilMaskSeparate(face, mask) => gl.stencil_mask_separate(face, mask),
-            Call::BlendFunc(sfactor, dfactor) => self.replay_blend_func(sfactor, dfactor),
-            Call::BlendFuncSeparate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha) => self
-                .replay_blend_func_separate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha),
+            Call::BlendFunc(sfactor, dfactor) => gl.blend_func(sfactor, dfactor),
+            Call::BlendFuncSeparate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha) => {
+                gl.blend_func_separate(sfactor_rgb, dfactor_rgb, sfactor_alpha, dfactor_alpha)
+            }
             Call::BlendEquation(mode) => gl.blend_equation(mode),
             Call::BlendEquationSeparate(mode_rgb, mode_alpha) => {
                 gl.blend_equation_separate(mode_rgb, mode_alpha)

@@ -33,6 +33,14 @@ impl GlBackend {
             self.list_needs_expansion();
             return self.raise(gl::INVALID_OPERATION);
         }
+        if let Some(code) = gl21_error(call) {
+            // The driver's list would hold the call without the error: run it from the mirror.
+            self.list_needs_expansion();
+            if self.compile_only() {
+                return;
+            }
+            return self.raise(code);
+        }
         self.dispatch(call);
     }
 
@@ -60,47 +68,6 @@ impl GlBackend {
         if !self.compile_only() {
             self.inside_begin_end = false;
         }
-    }
-
-    /// `Fogf`/`Fogi`: GL 2.1 (glFog reference page) takes FOG_COLOR only through the vector
-    /// forms; Mesa also takes it here. Raised here as for Begin, so both backends agree.
-    pub(super) fn replay_fogf(&mut self, pname: u32, param: f32) {
-        if pname == gl::FOG_COLOR && !self.inside_begin_end {
-            return self.raise(gl::INVALID_ENUM);
-        }
-        Safe(&self.raw).fogf(pname, param);
-    }
-
-    /// `Fogi`: as [`Self::replay_fogf`].
-    pub(super) fn replay_fogi(&mut self, pname: u32, param: i32) {
-        if pname == gl::FOG_COLOR && !self.inside_begin_end {
-            return self.raise(gl::INVALID_ENUM);
-        }
-        Safe(&self.raw).fogi(pname, param);
-    }
-
-    /// `BlendFunc`: SRC_ALPHA_SATURATE is a source factor only in GL 2.1 (§4.1.8); a driver
-    /// with ARB_blend_func_extended takes it as a destination too.
-    pub(super) fn replay_blend_func(&mut self, sfactor: u32, dfactor: u32) {
-        if dfactor == gl::SRC_ALPHA_SATURATE && !self.inside_begin_end {
-            return self.raise(gl::INVALID_ENUM);
-        }
-        Safe(&self.raw).blend_func(sfactor, dfactor);
-    }
-
-    /// `BlendFuncSeparate`: as [`Self::replay_blend_func`], for both destination factors.
-    pub(super) fn replay_blend_func_separate(
-        &mut self,
-        src_rgb: u32,
-        dst_rgb: u32,
-        src_a: u32,
-        dst_a: u32,
-    ) {
-        let saturate = gl::SRC_ALPHA_SATURATE;
-        if (dst_rgb == saturate || dst_a == saturate) && !self.inside_begin_end {
-            return self.raise(gl::INVALID_ENUM);
-        }
-        Safe(&self.raw).blend_func_separate(src_rgb, dst_rgb, src_a, dst_a);
     }
 
     /// `Hint`: PHONG_HINT_WIN (GL_WIN_phong_shading) is not a target the driver knows, so it is
@@ -158,6 +125,43 @@ impl GlBackend {
             call(Safe(&self.raw), &padded);
         }
     }
+}
+
+/// The GL 2.1 errors a newer driver does not raise, because a later version or an extension it
+/// implements relaxes the rule; the backend raises them itself, so that both backends give the
+/// spec's error (the error-agreement test walks every pname-taking command for this).
+fn gl21_error(call: &Call) -> Option<u32> {
+    // The f/i/d forms take single-valued pnames only (GL 2.1 §2.11.4, §2.14.2, §3.8.4, §3.8.13,
+    // §3.10); Mesa passes the value on as the first of four.
+    let vector = |count: Option<usize>| count.is_some_and(|n| n > 1);
+    // GL 2.1 table 3.21's sources; ZERO and ONE come with ATI_texture_env_combine3.
+    let zero_one_source = |pname: u32, v: f64| {
+        (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname) && (0.0..2.0).contains(&v)
+    };
+    let wrong = match *call {
+        Call::Lightf(_, p, _) | Call::Lighti(_, p, _) => vector(counts::light(p)),
+        Call::Materialf(_, p, _) | Call::Materiali(_, p, _) => vector(counts::material(p)),
+        Call::LightModelf(p, _) | Call::LightModeli(p, _) => vector(counts::light_model(p)),
+        Call::Fogf(p, _) | Call::Fogi(p, _) => vector(counts::fog(p)),
+        Call::TexParameterf(_, p, _) | Call::TexParameteri(_, p, _) => {
+            vector(counts::tex_parameter(p))
+        }
+        Call::TexGenf(_, p, _) | Call::TexGeni(_, p, _) | Call::TexGend(_, p, _) => {
+            vector(counts::tex_gen(p))
+        }
+        Call::TexEnvf(_, p, v) => vector(counts::tex_env(p)) || zero_one_source(p, f64::from(v)),
+        Call::TexEnvi(_, p, v) => vector(counts::tex_env(p)) || zero_one_source(p, f64::from(v)),
+        Call::TexEnvfv(_, p, ref v) => v.first().is_some_and(|&x| zero_one_source(p, f64::from(x))),
+        Call::TexEnviv(_, p, ref v) => v.first().is_some_and(|&x| zero_one_source(p, f64::from(x))),
+        // SRC_ALPHA_SATURATE is a source factor only (§4.1.8); ARB_blend_func_extended takes it
+        // as a destination too.
+        Call::BlendFunc(_, d) => d == gl::SRC_ALPHA_SATURATE,
+        Call::BlendFuncSeparate(_, d, _, da) => {
+            d == gl::SRC_ALPHA_SATURATE || da == gl::SRC_ALPHA_SATURATE
+        }
+        _ => false,
+    };
+    wrong.then_some(gl::INVALID_ENUM)
 }
 
 /// Calls that can never change what the PHONG_WIN program depends on (LIGHTING, the light
