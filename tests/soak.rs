@@ -14,7 +14,8 @@
 //! **Oracle**, per call: no panic (each batch runs under `catch_unwind`; a failure is reported
 //! with the batch seed, the call, and the shortest tail of the batch that still fails, as a
 //! recording); the error flag only ever holds a GL error code; a call that raised an error from a
-//! clear flag left `State` unchanged; a call compiled by NewList(COMPILE) neither changes `State`
+//! clear flag left `State` unchanged; between Begin and End a command GL 2.1 §2.6.3 does not
+//! list is INVALID_OPERATION and changes nothing; a call compiled by NewList(COMPILE) neither changes `State`
 //! nor raises an error; no call takes longer than [`CALL_LIMIT`] (a watchdog ends the process if
 //! one never returns). Per batch: the recording, written by `write_recording` and read back by
 //! `read_recording`, replayed on a fresh context, gives the same image and the same `State`.
@@ -867,7 +868,13 @@ impl Driver {
                 6 => self.push(Call::CallList(name)), // itself
                 7 => self.call_lists(),
                 8 => self.textures(),
-                _ => self.view(),
+                _ => {
+                    if self.rng().percent(50) {
+                        self.arrays()
+                    } else {
+                        self.view()
+                    }
+                }
             }
         }
         if self.rng().percent(90) {
@@ -983,7 +990,11 @@ impl Driver {
             // A buffer object holding the vertices.
             let buffer = self.rng().range(1, 3) as u32;
             let data = bytes_of_f32((0..n * 3).map(|_| self.coord()));
-            let size = data.len() as isize;
+            let size = if self.rng().percent(90) {
+                data.len() as isize
+            } else {
+                self.gen.signed(isize::MIN as i64, isize::MAX as i64) as isize
+            };
             self.push(Call::BindBuffer(gl::ARRAY_BUFFER, buffer));
             self.push(Call::BufferData(
                 gl::ARRAY_BUFFER,
@@ -1417,9 +1428,12 @@ impl Oracle {
         let runs_list = matches!(call, Call::CallList(_) | Call::CallLists(..));
         let compiled = self.compiling != 0 && !call.executes_immediately();
         let compile_only = compiled && self.compiling == gl::COMPILE;
+        // GL 2.1 §2.6.3: between Begin and End every command it does not list is
+        // INVALID_OPERATION and changes nothing.
+        let misplaced = ctx.inside_begin_end() && !call.allowed_between_begin_end();
         let e0 = ctx.pending_error();
-        let before =
-            (compile_only || (e0 == gl::NO_ERROR && !runs_list)).then(|| ctx.state().clone());
+        let before = (compile_only || misplaced || (e0 == gl::NO_ERROR && !runs_list))
+            .then(|| ctx.state().clone());
         let t0 = Instant::now();
         ctx.execute(call);
         let took = t0.elapsed();
@@ -1442,6 +1456,15 @@ impl Oracle {
             }
             if e1 != e0 {
                 return Err(format!("compiled (COMPILE) and raised {e1:#x}"));
+            }
+        } else if misplaced {
+            if e1 == gl::NO_ERROR || (e0 == gl::NO_ERROR && e1 != gl::INVALID_OPERATION) {
+                return Err(format!(
+                    "between Begin and End raised {e1:#x}, not INVALID_OPERATION"
+                ));
+            }
+            if let Some(field) = changed(before.as_ref().unwrap(), ctx.state()) {
+                return Err(format!("between Begin and End changed the state ({field})"));
             }
         } else if let Some(before) = before {
             if e1 != gl::NO_ERROR {
