@@ -1490,6 +1490,44 @@ impl Oracle {
     }
 }
 
+/// `read_pixels` with random arguments (sizes with the extremes, any format and type, a buffer
+/// of any length up to what the request needs): a GL error code, no change of state, in time.
+fn read_pixels_probe(ctx: &mut Context, gen: &mut Gen, filters: bool) -> Result<(), String> {
+    let int = |gen: &mut Gen| gen.signed(i32::MIN.into(), i32::MAX.into()) as i32;
+    let (x, y, w, h) = (int(gen), int(gen), int(gen), int(gen));
+    // Known bug KNOWN_BUG_READ_PIXELS_SIZE (context/readback.rs): the size computation overflows
+    // (a hang with overflow checks off); sizes over 4096 are skipped.
+    if filters && (w > 4096 || h > 4096) {
+        return Ok(());
+    }
+    let (format, ty) = (gen.u32_value(), gen.u32_value());
+    let need = w.clamp(0, 64) as usize * h.clamp(0, 64) as usize * 16;
+    let mut out = vec![0u8; gen.rng.below(need as u64 + 2) as usize];
+    let before = ctx.state().clone();
+    let e0 = ctx.pending_error();
+    let t0 = Instant::now();
+    ctx.read_pixels(x, y, w, h, format, ty, &mut out);
+    let took = t0.elapsed();
+    let what = format!(
+        "read_pixels({x}, {y}, {w}, {h}, {format:#x}, {ty:#x}, [{} bytes])",
+        out.len()
+    );
+    if took > CALL_LIMIT {
+        return Err(format!("{what} took {took:?}"));
+    }
+    let e1 = ctx.pending_error();
+    if !CODES.contains(&e1) || (e0 != gl::NO_ERROR && e1 != e0) {
+        return Err(format!("{what} left error flag {e1:#x}"));
+    }
+    if let Some(field) = changed(&before, ctx.state()) {
+        return Err(format!("{what} changed the state ({field})"));
+    }
+    if !ctx.inside_begin_end() {
+        ctx.get_error();
+    }
+    Ok(())
+}
+
 /// Runs `calls` on a fresh context under the oracle (no replay check): for shrinking a failure.
 fn check_calls(calls: &[Call]) -> Result<(), Failure> {
     let mut ctx = Context::new(SIDE, SIDE).expect("context");
@@ -1642,6 +1680,12 @@ fn run_batch(seed: u64, n: usize, progress: &Progress, trace: bool) -> Result<Ba
             oracle.step(&mut ctx, call)?;
             stats.slowest = stats.slowest.max(t0.elapsed());
             progress.calls.fetch_add(1, Ordering::Relaxed);
+            if driver.rng().percent(1) {
+                // glReadPixels is a query, not a `Call`: probed here, not recorded.
+                if let Err(message) = read_pixels_probe(&mut ctx, &mut driver.gen, filters) {
+                    return Err(format!("after call #{}: {message}", run.len() - 1));
+                }
+            }
             if object_names(&ctx) > MAX_NAMES {
                 // Every call clones the state: a GenTextures(65536) would make the rest of the
                 // batch slow, not more thorough.
