@@ -98,6 +98,11 @@ impl Context {
     /// The validating body of every `Material` form. `scalar`: the `f`/`i` forms, which take
     /// SHININESS only (GL 2.1 §2.14.2).
     fn material(&mut self, face: u32, pname: u32, p: (Params, usize), scalar: bool) {
+        // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the face
+        // (the GL backend checks it there, before the driver sees the call).
+        if !scalar && counts::material(pname).is_some_and(|n| p.1 < n) {
+            return self.error(gl::INVALID_VALUE);
+        }
         let Some(targets) = faces(face) else {
             return self.error(gl::INVALID_ENUM);
         };
@@ -172,6 +177,10 @@ impl Context {
     fn light(&mut self, light: u32, pname: u32, p: (Params, usize), scalar: bool) {
         if !self.outside_begin_end() {
             return;
+        }
+        // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the light.
+        if !scalar && counts::light(pname).is_some_and(|n| p.1 < n) {
+            return self.error(gl::INVALID_VALUE);
         }
         let index = light.wrapping_sub(gl::LIGHT0) as usize;
         if index >= MAX_LIGHTS {

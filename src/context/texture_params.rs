@@ -12,6 +12,7 @@ use glam::{DVec4, Vec4};
 
 use super::Context;
 use crate::call::Call;
+use crate::counts;
 use crate::gl;
 use crate::state::MAX_TEXTURE_UNITS;
 use crate::texture::{TexObject, MAX_TEXTURE_LOD_BIAS};
@@ -43,7 +44,8 @@ fn int_to_norm(i: f64) -> f64 {
     (2.0 * i + 1.0) / f64::from(u32::MAX)
 }
 
-/// The enum a parameter value names (float values convert by truncation, as Mesa does).
+/// The enum a parameter value names (a float converts by truncation, as Mesa does for TexEnv and
+/// TexGen).
 fn as_enum(v: f64) -> u32 {
     if v >= 0.0 && v <= f64::from(u32::MAX) {
         v as u32
@@ -85,6 +87,11 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
+        // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the
+        // target (the GL backend checks it there, before the driver sees the call).
+        if vector && counts::tex_parameter(pname).is_some_and(|n| v.len() < n) {
+            return self.error(gl::INVALID_VALUE);
+        }
         if target != gl::TEXTURE_2D {
             return self.error(gl::INVALID_ENUM);
         }
@@ -98,7 +105,9 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         let x = v.first().copied().unwrap_or(0.0);
-        let e = as_enum(x);
+        // TexParameterf names an enum by rounding (Mesa's IROUND: COMPARE_MODE 0.5 is ONE, not
+        // NONE); TexParameterfv, TexEnv and TexGen truncate.
+        let e = as_enum(if int || vector { x } else { x.round() });
         let ok_enum = match pname {
             gl::TEXTURE_MIN_FILTER => matches!(
                 e,
@@ -203,6 +212,11 @@ impl Context {
     fn tex_env(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         if !self.outside_begin_end() {
             return;
+        }
+        // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the
+        // target (the GL backend checks it there, before the driver sees the call).
+        if vector && counts::tex_env(pname).is_some_and(|n| v.len() < n) {
+            return self.error(gl::INVALID_VALUE);
         }
         let env_pname = matches!(
             pname,
@@ -346,6 +360,11 @@ impl Context {
     fn tex_gen(&mut self, coord: u32, pname: u32, v: &[f64], vector: bool) {
         if !self.outside_begin_end() {
             return;
+        }
+        // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the
+        // target (the GL backend checks it there, before the driver sees the call).
+        if vector && counts::tex_gen(pname).is_some_and(|n| v.len() < n) {
+            return self.error(gl::INVALID_VALUE);
         }
         let k = match coord {
             gl::S => 0,
