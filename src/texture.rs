@@ -488,7 +488,9 @@ pub fn type_size(type_: u32) -> Option<usize> {
 }
 
 /// Where an unpacked image's rows lie in client memory (§3.6.4 with UNPACK_ALIGNMENT and
-/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs.
+/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs. The products
+/// saturate: ROW_LENGTH and the sizes are the caller's, and a wrapped `need` could pass a
+/// length check; `usize::MAX` is more than any slice holds, so the caller's check fails instead.
 pub fn unpack_extent(
     width: i32,
     height: i32,
@@ -505,13 +507,20 @@ pub fn unpack_extent(
         w
     };
     let a = alignment.max(1) as usize;
-    let row = components * size * l;
+    let pixel = components.saturating_mul(size);
+    let row = pixel.saturating_mul(l);
     // k = a/s · ceil(s·n·l / a) components when s < a, else n·l (eq. 3.? of §3.6.4), in bytes.
-    let stride = if size >= a { row } else { row.div_ceil(a) * a };
+    let stride = if size >= a {
+        row
+    } else {
+        row.div_ceil(a).saturating_mul(a)
+    };
     let need = if w == 0 || h == 0 {
         0
     } else {
-        stride * (h - 1) + components * size * w
+        stride
+            .saturating_mul(h - 1)
+            .saturating_add(pixel.saturating_mul(w))
     };
     (stride, need)
 }

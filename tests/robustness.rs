@@ -127,3 +127,79 @@ mod lod {
         assert_eq!(c.get_error(), gl::NO_ERROR);
     }
 }
+
+/// ReadPixels sizes: every product of user values is checked (GL 2.1 §4.3.2).
+mod readback {
+    use super::*;
+
+    /// The repro: the size check overflowed to 0 and the loop ran ~2^60 times.
+    #[test]
+    fn huge_read_into_empty_slice_is_invalid_value_promptly() {
+        let err = within(10, || {
+            let mut c = ctx(8, 8);
+            c.read_pixels(0, 0, 1 << 30, 1 << 30, gl::RGBA, gl::FLOAT, &mut []);
+            c.get_error()
+        });
+        assert_eq!(err, gl::INVALID_VALUE);
+    }
+
+    /// Every combination of extreme sizes and types: a prompt INVALID_VALUE, never a wrap.
+    #[test]
+    fn extreme_sizes_are_invalid_value_promptly() {
+        within(10, || {
+            let mut c = ctx(8, 8);
+            for ty in [gl::UNSIGNED_BYTE, gl::UNSIGNED_SHORT, gl::FLOAT] {
+                for (w, h) in [(i32::MAX, i32::MAX), (i32::MAX, 2), (2, i32::MAX), (1 << 16, 1 << 16)]
+                {
+                    let mut out = [0u8; 64];
+                    c.read_pixels(0, 0, w, h, gl::RGBA, ty, &mut out);
+                    assert_eq!(c.get_error(), gl::INVALID_VALUE, "{w}x{h} type {ty:#x}");
+                }
+            }
+        });
+    }
+
+    /// A zero width with a huge height (or the reverse) needs no bytes, and reads nothing: it
+    /// must not walk 2^31 empty rows.
+    #[test]
+    fn empty_read_with_huge_other_side_is_prompt() {
+        within(10, || {
+            let mut c = ctx(8, 8);
+            c.read_pixels(0, 0, 0, i32::MAX, gl::RGBA, gl::UNSIGNED_BYTE, &mut []);
+            c.read_pixels(0, 0, i32::MAX, 0, gl::RGBA, gl::UNSIGNED_BYTE, &mut []);
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+        });
+    }
+
+    /// A request far outside the window, with a buffer big enough, reads (and writes) nothing
+    /// and visits only the window's pixels, not the whole rectangle.
+    #[test]
+    fn read_far_outside_the_window_is_prompt() {
+        within(10, || {
+            let mut c = ctx(8, 8);
+            let mut out = vec![7u8; 1 << 20];
+            c.read_pixels(i32::MIN, i32::MIN, 1 << 18, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+            c.read_pixels(i32::MAX, i32::MAX, 1 << 18, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+            c.read_pixels(-4, -4, 1 << 9, 1 << 9, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            // The first pixel read of the last call lies outside the window: untouched.
+            assert_eq!(out[..4], [7, 7, 7, 7]);
+        });
+    }
+}
+
+/// Pixel store arithmetic (GL 2.1 §3.6.4): sizes from the caller never wrap.
+mod pixel_store {
+    use fixedgl::texture::unpack_extent;
+
+    /// 2^31 x 2^31 pixels of 16 bytes, or ROW_LENGTH 2^31 - 1: more bytes than a usize counts.
+    /// The extent saturates, so no slice passes the length check that follows it.
+    #[test]
+    fn unpack_extent_saturates() {
+        let (_, need) = unpack_extent(i32::MAX, i32::MAX, 4, 4, 4, 0);
+        assert_eq!(need, usize::MAX);
+        let (stride, need) = unpack_extent(1, i32::MAX, 4, 4, 8, i32::MAX);
+        assert!(stride >= 16 * (i32::MAX as usize));
+        assert_eq!(need, usize::MAX);
+    }
+}
