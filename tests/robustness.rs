@@ -74,7 +74,11 @@ mod lod {
     /// NaN in either LOD bound (accepted by TexParameterf) must not panic either.
     #[test]
     fn nan_lod_bounds_draw() {
-        for (min, max) in [(f32::NAN, 1000.0), (-1000.0, f32::NAN), (f32::NAN, f32::NAN)] {
+        for (min, max) in [
+            (f32::NAN, 1000.0),
+            (-1000.0, f32::NAN),
+            (f32::NAN, f32::NAN),
+        ] {
             let mut c = ctx(16, 16);
             one_texel(&mut c);
             c.tex_parameterf(gl::TEXTURE_2D, gl::TEXTURE_MIN_LOD, min);
@@ -149,8 +153,12 @@ mod readback {
         within(10, || {
             let mut c = ctx(8, 8);
             for ty in [gl::UNSIGNED_BYTE, gl::UNSIGNED_SHORT, gl::FLOAT] {
-                for (w, h) in [(i32::MAX, i32::MAX), (i32::MAX, 2), (2, i32::MAX), (1 << 16, 1 << 16)]
-                {
+                for (w, h) in [
+                    (i32::MAX, i32::MAX),
+                    (i32::MAX, 2),
+                    (2, i32::MAX),
+                    (1 << 16, 1 << 16),
+                ] {
                     let mut out = [0u8; 64];
                     c.read_pixels(0, 0, w, h, gl::RGBA, ty, &mut out);
                     assert_eq!(c.get_error(), gl::INVALID_VALUE, "{w}x{h} type {ty:#x}");
@@ -178,9 +186,33 @@ mod readback {
         within(10, || {
             let mut c = ctx(8, 8);
             let mut out = vec![7u8; 1 << 20];
-            c.read_pixels(i32::MIN, i32::MIN, 1 << 18, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
-            c.read_pixels(i32::MAX, i32::MAX, 1 << 18, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
-            c.read_pixels(-4, -4, 1 << 9, 1 << 9, gl::RGBA, gl::UNSIGNED_BYTE, &mut out);
+            c.read_pixels(
+                i32::MIN,
+                i32::MIN,
+                1 << 18,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                &mut out,
+            );
+            c.read_pixels(
+                i32::MAX,
+                i32::MAX,
+                1 << 18,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                &mut out,
+            );
+            c.read_pixels(
+                -4,
+                -4,
+                1 << 9,
+                1 << 9,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                &mut out,
+            );
             assert_eq!(c.get_error(), gl::NO_ERROR);
             // The first pixel read of the last call lies outside the window: untouched.
             assert_eq!(out[..4], [7, 7, 7, 7]);
@@ -201,5 +233,67 @@ mod pixel_store {
         let (stride, need) = unpack_extent(1, i32::MAX, 4, 4, 8, i32::MAX);
         assert!(stride >= 16 * (i32::MAX as usize));
         assert_eq!(need, usize::MAX);
+    }
+}
+
+/// Rasterisation of extreme window coordinates (GL 2.1 §2.11.1, §3.4, §3.5): nothing may
+/// overflow an integer, whatever the vertices, viewport and mode. Run with
+/// `-C overflow-checks=on` to see a wrap as a panic.
+mod raster {
+    use super::*;
+
+    const VALUES: [f32; 10] = [
+        0.0,
+        0.5,
+        -1.0,
+        1e10,
+        -3e38,
+        3e38,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        1e-30,
+    ];
+
+    fn draw_extremes(c: &mut Context, mode: u32) {
+        for (i, &a) in VALUES.iter().enumerate() {
+            for &b in &VALUES {
+                c.begin(mode);
+                c.vertex4f(a, b, 0.0, 1.0);
+                c.vertex4f(b, -a, 0.5, VALUES[(i + 3) % VALUES.len()]);
+                c.vertex4f(0.25, 0.75, a, 1.0);
+                c.end();
+            }
+        }
+    }
+
+    /// Filled, line and point polygons, and lines and points, with huge, infinite and NaN
+    /// coordinates under ordinary and extreme viewports, wide lines and big points.
+    #[test]
+    fn extreme_coordinates_never_overflow() {
+        within(120, || {
+            let mut c = ctx(64, 64);
+            let viewports = [
+                [0, 0, 64, 64],
+                [i32::MAX, i32::MAX, 16384, 16384],
+                [i32::MIN, i32::MIN, 16384, 16384],
+                [i32::MIN / 2, -8000, i32::MAX, i32::MAX],
+                [-1_000_000_000, -1_000_000_000, 16384, 16384],
+                [-8160, -8160, 16384, 16384],
+            ];
+            for vp in viewports {
+                c.viewport(vp[0], vp[1], vp[2], vp[3]);
+                for (poly, width) in [(gl::FILL, 1.0), (gl::LINE, 1e9), (gl::POINT, f32::MAX)] {
+                    c.polygon_mode(gl::FRONT_AND_BACK, poly);
+                    c.line_width(width);
+                    c.point_size(width);
+                    for mode in [gl::TRIANGLES, gl::LINES, gl::POINTS, gl::LINE_LOOP] {
+                        draw_extremes(&mut c, mode);
+                    }
+                    let _ = c.to_image();
+                }
+            }
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+        });
     }
 }
