@@ -658,15 +658,18 @@ impl ArrayState {
         let bytes = self.bytes(eb, indices);
         let needed = count.checked_mul(size).ok_or(gl::INVALID_OPERATION)?;
         let bytes = bytes.get(..needed).ok_or(gl::INVALID_OPERATION)?;
-        Ok(bytes
-            .chunks_exact(size)
-            .map(|c| match *c {
-                [a] => u32::from(a),
-                [a, b] => u32::from(u16::from_ne_bytes([a, b])),
-                [a, b, c, d] => u32::from_ne_bytes([a, b, c, d]),
-                _ => 0,
-            })
-            .collect())
+        // Up to 4 bytes of u32 per byte of UNSIGNED_BYTE indices the caller handed over: an
+        // allocation that fails is OUT_OF_MEMORY, not an abort.
+        let mut out = Vec::new();
+        out.try_reserve_exact(count)
+            .map_err(|_| gl::OUT_OF_MEMORY)?;
+        out.extend(bytes.chunks_exact(size).map(|c| match *c {
+            [a] => u32::from(a),
+            [a, b] => u32::from(u16::from_ne_bytes([a, b])),
+            [a, b, c, d] => u32::from_ne_bytes([a, b, c, d]),
+            _ => 0,
+        }));
+        Ok(out)
     }
 
     /// DrawArrays' checks after the Begin/End phase (GL 2.1 §2.8): INVALID_ENUM for a mode,

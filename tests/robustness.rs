@@ -297,3 +297,48 @@ mod raster {
         });
     }
 }
+
+/// Draw calls whose counts nothing bounds (GL 2.1 §2.8, §5.4): no allocation or loop may be
+/// proportional to a count that no data backs.
+mod draw_counts {
+    use super::*;
+
+    /// The repro: compiling DrawArrays(POINTS, 0, i32::MAX) with no array enabled
+    /// collected 2^31 indices (16 GiB) and aborted. Nothing is drawn (VERTEX_ARRAY is
+    /// disabled), so nothing is stored, and compiling, calling and drawing it are prompt.
+    #[test]
+    fn compiled_draw_of_huge_count_without_arrays_is_prompt() {
+        let err = within(10, || {
+            let mut c = ctx(8, 8);
+            c.new_list(1, gl::COMPILE);
+            c.draw_arrays(gl::POINTS, 0, i32::MAX);
+            c.draw_arrays(gl::TRIANGLES, i32::MAX, i32::MAX);
+            c.end_list();
+            c.call_list(1);
+            c.draw_arrays(gl::POINTS, 0, i32::MAX);
+            c.new_list(2, gl::COMPILE_AND_EXECUTE);
+            c.draw_arrays(gl::POINTS, 0, i32::MAX);
+            c.end_list();
+            c.get_error()
+        });
+        assert_eq!(err, gl::NO_ERROR);
+    }
+
+    /// With a vertex array of 3 elements, a huge count is INVALID_OPERATION when the list
+    /// runs (the draw compiles as it is), and nothing is expanded at compile time.
+    #[test]
+    fn compiled_draw_past_the_array_errs_when_run() {
+        let err = within(10, || {
+            let mut c = ctx(8, 8);
+            c.enable_client_state(gl::VERTEX_ARRAY);
+            c.vertex_pointer(2, gl::FLOAT, 0, &[0.0f32, 0.0, 1.0, 0.0, 0.0, 1.0][..]);
+            c.new_list(1, gl::COMPILE);
+            c.draw_arrays(gl::POINTS, 0, i32::MAX);
+            c.end_list();
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            c.call_list(1);
+            c.get_error()
+        });
+        assert_eq!(err, gl::INVALID_OPERATION);
+    }
+}
