@@ -124,7 +124,9 @@ impl Context {
         }
         let (w, h) = self.renderer.size();
         let bytes = self.renderer.framebuffer().color_bytes_top_down();
-        // The buffer holds exactly w·h pixels, so `from_raw` cannot fail; a blank image if it did.
+        // The buffer holds exactly w·h pixels, so `from_raw` cannot fail (asserted in debug
+        // builds); a blank image if it did.
+        debug_assert_eq!(bytes.len(), w as usize * h as usize * 4);
         image::RgbaImage::from_raw(w, h, bytes).unwrap_or_else(|| image::RgbaImage::new(w, h))
     }
 }

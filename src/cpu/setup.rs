@@ -508,6 +508,7 @@ impl Worker {
         let s = ctx.layout.stride;
         let vert = |i: u32| {
             let i = i as usize;
+            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
             vout.get(i * s..(i + 1) * s).unwrap_or(&[])
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
