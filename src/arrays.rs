@@ -843,12 +843,22 @@ impl ArrayState {
         }
         let size = usize::try_from(size).map_err(|_| gl::INVALID_VALUE)?;
         self.bound(target)?;
-        let store = match data {
-            Pointer::Data(d) => d.get(..size).ok_or(gl::INVALID_VALUE)?.to_vec(),
-            Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => vec![0; size],
+        let src = match data {
+            Pointer::Data(d) => Some(d.get(..size).ok_or(gl::INVALID_VALUE)?),
+            Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => None,
             Pointer::Offset(0) => return Err(gl::OUT_OF_MEMORY),
             Pointer::Offset(_) => return Err(gl::INVALID_VALUE),
         };
+        // The store is reserved before anything changes: an allocation the machine cannot
+        // make is OUT_OF_MEMORY (GL 2.1 §2.9) with the old store kept, not an abort.
+        let mut store = Vec::new();
+        store
+            .try_reserve_exact(size)
+            .map_err(|_| gl::OUT_OF_MEMORY)?;
+        match src {
+            Some(d) => store.extend_from_slice(d),
+            None => store.resize(size, 0),
+        }
         let b = self.bound(target)?;
         b.data = store;
         b.usage = usage;

@@ -342,3 +342,267 @@ mod draw_counts {
         assert_eq!(err, gl::INVALID_OPERATION);
     }
 }
+
+/// Allocation failure is GL_OUT_OF_MEMORY (or `Err` from `Context::new`), never an abort.
+/// The real scenario runs in a child process under `ulimit -v` (see `limited`); the in-process
+/// tests use requests no allocator can meet.
+mod memory {
+    use super::*;
+
+    /// A data-less BufferData far past what any machine holds: OUT_OF_MEMORY, promptly, and the
+    /// buffer keeps its old store.
+    #[test]
+    fn impossible_buffer_is_out_of_memory() {
+        let mut c = ctx(8, 8);
+        let mut b = [0u32; 1];
+        c.gen_buffers(1, &mut b);
+        c.bind_buffer(gl::ARRAY_BUFFER, b[0]);
+        c.buffer_data(gl::ARRAY_BUFFER, 16, &[1u8; 16][..], gl::STATIC_DRAW);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+        let before = c.state().clone();
+        c.buffer_data(
+            gl::ARRAY_BUFFER,
+            isize::MAX / 2,
+            fixedgl::Pointer::NULL,
+            gl::STATIC_DRAW,
+        );
+        assert_eq!(c.get_error(), gl::OUT_OF_MEMORY);
+        assert!(
+            c.state() == &before,
+            "an OUT_OF_MEMORY call changed the state"
+        );
+    }
+
+    /// GenTextures(65536) until the namespace is spent: 2^32 - 1 names generated and never
+    /// bound cost a few bytes in all (one run), not a tree node per name (tens of GiB; the
+    /// issue measured 1.66 GB for 38 KB of such calls). Past the last name GenTextures is
+    /// OUT_OF_MEMORY.
+    #[test]
+    fn generated_names_cost_no_memory_per_name() {
+        within(60, || {
+            let mut c = ctx(8, 8);
+            let mut names = vec![0u32; 1 << 16];
+            for _ in 0..(1 << 16) - 1 {
+                c.gen_textures(1 << 16, &mut names);
+            }
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            assert_eq!(names[(1 << 16) - 1], u32::MAX - ((1 << 16) - 1));
+            c.gen_textures(1 << 16, &mut names);
+            assert_eq!(c.get_error(), gl::OUT_OF_MEMORY);
+            c.gen_textures((1 << 16) - 1, &mut names);
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            assert_eq!(names[(1 << 16) - 2], u32::MAX);
+            assert_eq!(c.state().textures.names.len(), u64::from(u32::MAX));
+            // A bound name becomes an object; a name only generated is not a texture.
+            c.bind_texture(gl::TEXTURE_2D, 7);
+            assert!(c.is_texture(7));
+            assert!(!c.is_texture(8));
+            c.delete_textures(2, &[9, 7]);
+            assert_eq!(c.state().textures.names.len(), u64::from(u32::MAX) - 2);
+            // GenTextures hands out names above every name in use (as Mesa does): with u32::MAX
+            // in use there are none left, which it must say rather than search or wrap.
+            c.gen_textures(1, &mut names);
+            assert_eq!(c.get_error(), gl::OUT_OF_MEMORY);
+        });
+    }
+}
+
+/// The issue's allocation-failure scenarios, each in a child process (this test binary, one
+/// ignored test) under an address-space limit: they must end in OUT_OF_MEMORY, not an abort.
+#[cfg(unix)]
+mod limited {
+    use super::*;
+    use std::process::Command;
+
+    /// Set by the parent, so that the child tests do nothing when run by `--ignored` without a
+    /// limit (they would then really allocate gigabytes).
+    const ENV: &str = "FIXEDGL_ROBUSTNESS_LIMITED";
+
+    /// Runs ignored test `name` of this binary under `ulimit -v kib`; true when it passed.
+    fn run_child(name: &str, kib: u64) -> bool {
+        let Ok(exe) = std::env::current_exe() else {
+            panic!("no current_exe");
+        };
+        let script = format!(
+            "ulimit -v {kib} && exec \"$0\" --exact {name} --ignored --test-threads=1 --quiet"
+        );
+        let out = Command::new("sh")
+            .arg("-c")
+            .arg(script)
+            .arg(exe)
+            .env(ENV, "1")
+            .env("RAYON_NUM_THREADS", "2")
+            .output();
+        match out {
+            Ok(o) if o.status.success() => true,
+            Ok(o) => {
+                eprintln!(
+                    "child {name} under ulimit -v {kib}: {}\n{}{}",
+                    o.status,
+                    String::from_utf8_lossy(&o.stdout),
+                    String::from_utf8_lossy(&o.stderr)
+                );
+                false
+            }
+            Err(e) => panic!("could not run the child: {e}"),
+        }
+    }
+
+    fn limited() -> bool {
+        std::env::var_os(ENV).is_some()
+    }
+
+    /// 40 x BufferData(256 MiB, NULL) under a 1 GB limit: OUT_OF_MEMORY after a few, and the
+    /// context goes on working.
+    #[test]
+    fn buffers_past_the_address_space_are_out_of_memory() {
+        assert!(run_child("limited::child_buffers", 1_000_000));
+    }
+
+    #[test]
+    #[ignore = "run by buffers_past_the_address_space_are_out_of_memory under ulimit -v"]
+    fn child_buffers() {
+        if !limited() {
+            return;
+        }
+        let mut c = ctx(8, 8);
+        let mut names = [0u32; 40];
+        c.gen_buffers(40, &mut names);
+        let mut oom = false;
+        for &b in &names {
+            c.bind_buffer(gl::ARRAY_BUFFER, b);
+            c.buffer_data(
+                gl::ARRAY_BUFFER,
+                256 << 20,
+                fixedgl::Pointer::NULL,
+                gl::STATIC_DRAW,
+            );
+            match c.get_error() {
+                gl::NO_ERROR => {}
+                gl::OUT_OF_MEMORY => oom = true,
+                e => panic!("error {e:#x}"),
+            }
+        }
+        assert!(oom, "40 x 256 MiB fitted in 1 GB?");
+        c.clear(gl::COLOR_BUFFER_BIT);
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+    }
+
+    /// 40 textures of 2048 x 2048 (64 MiB of texels each) under an 800 MB limit:
+    /// OUT_OF_MEMORY after a few, the failed call changing nothing, and drawing goes on.
+    #[test]
+    fn textures_past_the_address_space_are_out_of_memory() {
+        assert!(run_child("limited::child_textures", 800_000));
+    }
+
+    #[test]
+    #[ignore = "run by textures_past_the_address_space_are_out_of_memory under ulimit -v"]
+    fn child_textures() {
+        if !limited() {
+            return;
+        }
+        let mut c = ctx(8, 8);
+        let mut oom = false;
+        for name in 1..=40 {
+            c.bind_texture(gl::TEXTURE_2D, name);
+            let before = c.state().clone();
+            c.tex_image_2d(
+                gl::TEXTURE_2D,
+                0,
+                gl::RGBA as i32,
+                2048,
+                2048,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                None,
+            );
+            match c.get_error() {
+                gl::NO_ERROR => {}
+                gl::OUT_OF_MEMORY => {
+                    oom = true;
+                    assert!(
+                        c.state() == &before,
+                        "an OUT_OF_MEMORY call changed the state"
+                    );
+                }
+                e => panic!("error {e:#x}"),
+            }
+        }
+        assert!(oom, "40 x 64 MiB fitted in 800 MB?");
+        c.begin(gl::POINTS);
+        c.vertex2f(0.0, 0.0);
+        c.end();
+        let _ = c.to_image();
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+    }
+
+    /// A DrawElements of 64M UNSIGNED_BYTE indices compiled into a list expands to 64M calls:
+    /// under a 1 GB limit that is OUT_OF_MEMORY at compile time, not an abort.
+    #[test]
+    fn huge_compiled_draw_elements_is_out_of_memory() {
+        assert!(run_child("limited::child_compiled_elements", 1_000_000));
+    }
+
+    #[test]
+    #[ignore = "run by huge_compiled_draw_elements_is_out_of_memory under ulimit -v"]
+    fn child_compiled_elements() {
+        if !limited() {
+            return;
+        }
+        let mut c = ctx(8, 8);
+        c.enable_client_state(gl::VERTEX_ARRAY);
+        let verts = vec![0.0f32; 2 * 256];
+        c.vertex_pointer(2, gl::FLOAT, 0, &verts[..]);
+        let idx = vec![0u8; 64 << 20];
+        c.new_list(1, gl::COMPILE);
+        c.draw_elements(gl::POINTS, 64 << 20, gl::UNSIGNED_BYTE, &idx[..]);
+        assert_eq!(c.get_error(), gl::OUT_OF_MEMORY);
+        c.end_list();
+        assert_eq!(c.get_error(), gl::NO_ERROR);
+    }
+
+    /// A 16384 x 16384 context needs ~2.3 GiB: under a 1 GB limit `Context::new` is `Err`.
+    #[test]
+    fn huge_context_is_err() {
+        assert!(run_child("limited::child_context", 1_000_000));
+    }
+
+    #[test]
+    #[ignore = "run by huge_context_is_err under ulimit -v"]
+    fn child_context() {
+        if !limited() {
+            return;
+        }
+        assert!(Context::new(16384, 16384).is_err());
+        assert!(Context::new(64, 64).is_ok());
+    }
+}
+
+/// The run-length name set behind GenTextures: merging, splitting, equality by content.
+mod name_set {
+    use fixedgl::texture::NameSet;
+
+    #[test]
+    fn runs_merge_split_and_compare_by_content() {
+        let mut a = NameSet::default();
+        a.insert_range(1, 10);
+        a.insert_range(12, 20);
+        a.insert(11); // joins the two runs
+        a.remove(5); // splits one
+        a.insert_range(u32::MAX - 1, u32::MAX);
+        assert!(a.contains(4) && !a.contains(5) && a.contains(6) && a.contains(11));
+        assert!(a.contains(u32::MAX) && !a.contains(0) && !a.contains(21));
+        assert_eq!(a.len(), 19 + 2);
+        assert_eq!(a.last(), Some(u32::MAX));
+        let mut b = NameSet::default();
+        for n in (1..=20).filter(|&n| n != 5) {
+            b.insert(n);
+        }
+        b.insert(u32::MAX);
+        b.insert(u32::MAX - 1);
+        assert_eq!(a, b);
+        a.insert_range(0, u32::MAX);
+        assert_eq!(a.len(), 1 << 32);
+    }
+}
