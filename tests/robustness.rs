@@ -606,3 +606,25 @@ mod name_set {
         assert_eq!(a.len(), 1 << 32);
     }
 }
+
+/// Display-list nesting (GL 2.1 §5.4, MAX_LIST_NESTING): a list that calls itself is legal
+/// GL; once it runs MAX_LIST_NESTING deep, further CallLists are ignored. The recursion is
+/// that deep at most, and must fit an ordinary thread's stack (the test harness's 2 MiB).
+mod list_nesting {
+    use super::*;
+
+    #[test]
+    fn self_calling_list_stops_at_max_nesting() {
+        let err = within(10, || {
+            let mut c = ctx(8, 8);
+            c.new_list(1, gl::COMPILE);
+            c.color3f(1.0, 0.0, 0.0);
+            c.call_list(1);
+            c.end_list();
+            c.call_list(1);
+            c.call_lists(3, gl::UNSIGNED_BYTE, &[1, 1, 1]);
+            c.get_error()
+        });
+        assert_eq!(err, gl::NO_ERROR);
+    }
+}
