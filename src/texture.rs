@@ -395,6 +395,17 @@ impl NameSet {
         (name <= last).then_some((first, last))
     }
 
+    /// The last name of the run holding `name`, if `name` is in the set: a search for an
+    /// unused name skips a whole run in one step.
+    pub fn run_end(&self, name: u32) -> Option<u32> {
+        self.run_of(name).map(|(_, last)| last)
+    }
+
+    /// The first name of the first run starting at or after `from`.
+    pub fn next_run_start(&self, from: u32) -> Option<u32> {
+        self.runs.range(from..).next().map(|(&first, _)| first)
+    }
+
     /// Whether `name` is in the set.
     pub fn contains(&self, name: u32) -> bool {
         self.run_of(name).is_some()

@@ -628,3 +628,34 @@ mod list_nesting {
         assert_eq!(err, gl::NO_ERROR);
     }
 }
+
+/// GenBuffers names (GL 2.1 §2.9): many generated names cost nothing each, the search for
+/// unused names does not rescan them, and a spent namespace is OUT_OF_MEMORY, not a hang.
+mod buffer_names {
+    use super::*;
+
+    #[test]
+    fn gen_buffers_through_the_namespace_is_prompt() {
+        within(60, || {
+            let mut c = ctx(8, 8);
+            let mut names = vec![0u32; 1 << 16];
+            for _ in 0..(1 << 16) - 1 {
+                c.gen_buffers(1 << 16, &mut names);
+            }
+            assert_eq!(c.get_error(), gl::NO_ERROR);
+            assert_eq!(names[(1 << 16) - 1], u32::MAX - ((1 << 16) - 1));
+            let before = c.state().clone();
+            c.gen_buffers(1 << 16, &mut names);
+            assert_eq!(c.get_error(), gl::OUT_OF_MEMORY);
+            assert!(
+                c.state() == &before,
+                "an OUT_OF_MEMORY GenBuffers reserved names"
+            );
+            // Freed names are found again, lowest first.
+            c.delete_buffers(2, &[70_000, 5]);
+            let mut two = [0u32; 2];
+            c.gen_buffers(2, &mut two);
+            assert_eq!((c.get_error(), two), (gl::NO_ERROR, [5, 70_000]));
+        });
+    }
+}
