@@ -47,12 +47,13 @@
 //! # Ok::<(), fixedgl::Error>(())
 //! ```
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
 use crate::gl;
 use crate::state::MAX_TEXTURE_UNITS;
+use crate::texture::NameSet;
 
 /// The largest buffer object `BufferData` creates without data (OUT_OF_MEMORY beyond).
 pub const MAX_BUFFER_SIZE: usize = 256 << 20;
@@ -228,8 +229,9 @@ pub struct ArrayState {
     pub element_array_buffer: u32,
     /// Buffer objects that exist (bound at least once), by name.
     pub buffers: BTreeMap<u32, BufferObject>,
-    /// Names returned by GenBuffers that are not yet bound (GL 2.1 §2.9: not yet objects).
-    pub reserved: BTreeSet<u32>,
+    /// Names returned by GenBuffers that are not yet bound (GL 2.1 §2.9: not yet objects), as
+    /// runs: a name only generated costs nothing of its own.
+    pub reserved: NameSet,
 }
 
 impl Default for ArrayState {
@@ -251,7 +253,7 @@ impl Default for ArrayState {
             array_buffer: 0,
             element_array_buffer: 0,
             buffers: BTreeMap::new(),
-            reserved: BTreeSet::new(),
+            reserved: NameSet::default(),
         }
     }
 }
@@ -658,15 +660,18 @@ impl ArrayState {
         let bytes = self.bytes(eb, indices);
         let needed = count.checked_mul(size).ok_or(gl::INVALID_OPERATION)?;
         let bytes = bytes.get(..needed).ok_or(gl::INVALID_OPERATION)?;
-        Ok(bytes
-            .chunks_exact(size)
-            .map(|c| match *c {
-                [a] => u32::from(a),
-                [a, b] => u32::from(u16::from_ne_bytes([a, b])),
-                [a, b, c, d] => u32::from_ne_bytes([a, b, c, d]),
-                _ => 0,
-            })
-            .collect())
+        // Up to 4 bytes of u32 per byte of UNSIGNED_BYTE indices the caller handed over: an
+        // allocation that fails is OUT_OF_MEMORY, not an abort.
+        let mut out = Vec::new();
+        out.try_reserve_exact(count)
+            .map_err(|_| gl::OUT_OF_MEMORY)?;
+        out.extend(bytes.chunks_exact(size).map(|c| match *c {
+            [a] => u32::from(a),
+            [a, b] => u32::from(u16::from_ne_bytes([a, b])),
+            [a, b, c, d] => u32::from_ne_bytes([a, b, c, d]),
+            _ => 0,
+        }));
+        Ok(out)
     }
 
     /// DrawArrays' checks after the Begin/End phase (GL 2.1 §2.8): INVALID_ENUM for a mode,
@@ -735,17 +740,50 @@ impl ArrayState {
     }
 
     /// `GenBuffers` into `out` (GL 2.1 §2.9): the `n` lowest unused names. INVALID_VALUE for a
-    /// negative `n` or an `out` shorter than `n`.
+    /// negative `n` or an `out` shorter than `n`; OUT_OF_MEMORY (nothing reserved) when fewer
+    /// than `n` names are unused. The search skips each run of reserved names in one step, so
+    /// it costs the names written plus the buffer objects that exist, never a scan of every
+    /// name generated before (which wrapped around forever once all 2^32 - 1 were taken).
     pub fn gen_buffers(&mut self, n: i32, out: &mut [u32]) -> GlResult<()> {
         let n = usize::try_from(n).map_err(|_| gl::INVALID_VALUE)?;
         let out = out.get_mut(..n).ok_or(gl::INVALID_VALUE)?;
-        let mut name = 1u32;
-        for slot in out {
-            while self.buffers.contains_key(&name) || self.reserved.contains(&name) {
-                name = name.wrapping_add(1).max(1);
+        // Free names come in spans between reserved runs and buffer objects: each span is
+        // found with two lookups and filled without any.
+        let mut spans: Vec<(u32, u32)> = Vec::new();
+        let (mut filled, mut next) = (0usize, Some(1u32));
+        while filled < n {
+            let mut name = next.ok_or(gl::OUT_OF_MEMORY)?;
+            loop {
+                if let Some(last) = self.reserved.run_end(name) {
+                    name = last.checked_add(1).ok_or(gl::OUT_OF_MEMORY)?;
+                } else if self.buffers.contains_key(&name) {
+                    name = name.checked_add(1).ok_or(gl::OUT_OF_MEMORY)?;
+                } else {
+                    break;
+                }
             }
-            self.reserved.insert(name);
-            *slot = name;
+            // The span of free names from `name`: up to the next reserved run or buffer.
+            let stop = [
+                self.reserved.next_run_start(name),
+                self.buffers.range(name..).next().map(|(&k, _)| k),
+            ]
+            .into_iter()
+            .flatten()
+            .min();
+            let room = stop.map_or(u64::from(u32::MAX) - u64::from(name) + 1, |s| {
+                u64::from(s - name)
+            });
+            let take = (n - filled).min(usize::try_from(room).unwrap_or(usize::MAX));
+            let last = name + (take as u32 - 1);
+            for (k, slot) in out.iter_mut().skip(filled).take(take).enumerate() {
+                *slot = name + k as u32;
+            }
+            spans.push((name, last));
+            filled += take;
+            next = last.checked_add(1);
+        }
+        for (first, last) in spans {
+            self.reserved.insert_range(first, last);
         }
         Ok(())
     }
@@ -765,7 +803,7 @@ impl ArrayState {
         let n = usize::try_from(n).map_err(|_| gl::INVALID_VALUE)?;
         let names = names.get(..n).ok_or(gl::INVALID_VALUE)?;
         for &name in names {
-            self.reserved.remove(&name);
+            self.reserved.remove(name);
             if name == 0 || self.buffers.remove(&name).is_none() {
                 continue;
             }
@@ -803,7 +841,7 @@ impl ArrayState {
             return Err(gl::INVALID_ENUM);
         }
         if name != 0 {
-            self.reserved.remove(&name);
+            self.reserved.remove(name);
             self.buffers.entry(name).or_default();
         }
         if target == gl::ARRAY_BUFFER {
@@ -840,12 +878,22 @@ impl ArrayState {
         }
         let size = usize::try_from(size).map_err(|_| gl::INVALID_VALUE)?;
         self.bound(target)?;
-        let store = match data {
-            Pointer::Data(d) => d.get(..size).ok_or(gl::INVALID_VALUE)?.to_vec(),
-            Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => vec![0; size],
+        let src = match data {
+            Pointer::Data(d) => Some(d.get(..size).ok_or(gl::INVALID_VALUE)?),
+            Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => None,
             Pointer::Offset(0) => return Err(gl::OUT_OF_MEMORY),
             Pointer::Offset(_) => return Err(gl::INVALID_VALUE),
         };
+        // The store is reserved before anything changes: an allocation the machine cannot
+        // make is OUT_OF_MEMORY (GL 2.1 §2.9) with the old store kept, not an abort.
+        let mut store = Vec::new();
+        store
+            .try_reserve_exact(size)
+            .map_err(|_| gl::OUT_OF_MEMORY)?;
+        match src {
+            Some(d) => store.extend_from_slice(d),
+            None => store.resize(size, 0),
+        }
         let b = self.bound(target)?;
         b.data = store;
         b.usage = usage;

@@ -14,6 +14,14 @@ pub enum Error {
         /// The height asked for.
         height: u32,
     },
+    /// `Context::new` could not allocate the framebuffer (9 bytes a pixel): the size was valid
+    /// but the memory is not there.
+    OutOfMemory {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
     /// Reading or writing a file failed.
     Io(std::io::Error),
     /// A recording file could not be parsed; `line` and `column` are 1-based and refer to the
@@ -39,6 +47,10 @@ impl fmt::Display for Error {
                 f,
                 "invalid framebuffer size {width}x{height}: each side must be 1..={}",
                 crate::state::MAX_VIEWPORT_DIM
+            ),
+            Error::OutOfMemory { width, height } => write!(
+                f,
+                "out of memory for a {width}x{height} framebuffer (9 bytes a pixel)"
             ),
             Error::Io(e) => write!(f, "I/O error: {e}"),
             Error::Parse {

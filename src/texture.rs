@@ -10,7 +10,7 @@
 //! colour component, as llvmpipe stores them; 24 bits of depth), with the components the base
 //! format keeps (table 3.15: L in R, I in R, depth in R).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use glam::Vec4;
@@ -378,11 +378,103 @@ impl Default for TexUnit {
     }
 }
 
+/// A set of names kept as runs of consecutive names: GenTextures hands out consecutive names,
+/// so a name generated and never bound costs nothing of its own (a run is two u32 in a
+/// B-tree, whatever its length), and 2^32 names cost no more than one. Runs are disjoint and
+/// never adjacent, so equal sets are equal values (`State: PartialEq` compares them).
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct NameSet {
+    /// First name of each run to its last (inclusive).
+    runs: BTreeMap<u32, u32>,
+}
+
+impl NameSet {
+    /// The run holding `name`, as (first, last).
+    fn run_of(&self, name: u32) -> Option<(u32, u32)> {
+        let (&first, &last) = self.runs.range(..=name).next_back()?;
+        (name <= last).then_some((first, last))
+    }
+
+    /// The last name of the run holding `name`, if `name` is in the set: a search for an
+    /// unused name skips a whole run in one step.
+    pub fn run_end(&self, name: u32) -> Option<u32> {
+        self.run_of(name).map(|(_, last)| last)
+    }
+
+    /// The first name of the first run starting at or after `from`.
+    pub fn next_run_start(&self, from: u32) -> Option<u32> {
+        self.runs.range(from..).next().map(|(&first, _)| first)
+    }
+
+    /// Whether `name` is in the set.
+    pub fn contains(&self, name: u32) -> bool {
+        self.run_of(name).is_some()
+    }
+
+    /// Adds `first..=last` (first <= last), merging with the runs it touches.
+    pub fn insert_range(&mut self, first: u32, last: u32) {
+        debug_assert!(first <= last);
+        let (mut lo, mut hi) = (first, last);
+        // A run ending at or after first - 1 and starting at or before last + 1 touches it.
+        let from = self
+            .runs
+            .range(..=first)
+            .next_back()
+            .filter(|&(_, &l)| l >= first.saturating_sub(1))
+            .map_or(first, |(&f, _)| f);
+        let touching: Vec<(u32, u32)> = self
+            .runs
+            .range(from..=last.saturating_add(1))
+            .map(|(&f, &l)| (f, l))
+            .collect();
+        for (f, l) in touching {
+            self.runs.remove(&f);
+            lo = lo.min(f);
+            hi = hi.max(l);
+        }
+        self.runs.insert(lo, hi);
+    }
+
+    /// Adds `name`.
+    pub fn insert(&mut self, name: u32) {
+        self.insert_range(name, name);
+    }
+
+    /// Removes `name`, splitting its run.
+    pub fn remove(&mut self, name: u32) {
+        let Some((first, last)) = self.run_of(name) else {
+            return;
+        };
+        self.runs.remove(&first);
+        if first < name {
+            self.runs.insert(first, name - 1);
+        }
+        if name < last {
+            self.runs.insert(name + 1, last);
+        }
+    }
+
+    /// The largest name, if any.
+    pub fn last(&self) -> Option<u32> {
+        self.runs.values().next_back().copied()
+    }
+
+    /// How many names the set holds.
+    pub fn len(&self) -> u64 {
+        self.runs.iter().map(|(&f, &l)| u64::from(l - f) + 1).sum()
+    }
+
+    /// Whether the set is empty.
+    pub fn is_empty(&self) -> bool {
+        self.runs.is_empty()
+    }
+}
+
 /// Every piece of texture state: objects, names, units, and the unpack row length.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Textures {
     /// Names returned by GenTextures and not yet deleted (bound or not).
-    pub names: BTreeSet<u32>,
+    pub names: NameSet,
     /// The objects that exist (a name becomes an object when first bound), by name.
     pub objects: BTreeMap<u32, Arc<TexObject>>,
     /// Texture object 0: the default 2D texture.
@@ -488,7 +580,9 @@ pub fn type_size(type_: u32) -> Option<usize> {
 }
 
 /// Where an unpacked image's rows lie in client memory (§3.6.4 with UNPACK_ALIGNMENT and
-/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs.
+/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs. The products
+/// saturate: ROW_LENGTH and the sizes are the caller's, and a wrapped `need` could pass a
+/// length check; `usize::MAX` is more than any slice holds, so the caller's check fails instead.
 pub fn unpack_extent(
     width: i32,
     height: i32,
@@ -505,13 +599,20 @@ pub fn unpack_extent(
         w
     };
     let a = alignment.max(1) as usize;
-    let row = components * size * l;
+    let pixel = components.saturating_mul(size);
+    let row = pixel.saturating_mul(l);
     // k = a/s · ceil(s·n·l / a) components when s < a, else n·l (eq. 3.? of §3.6.4), in bytes.
-    let stride = if size >= a { row } else { row.div_ceil(a) * a };
+    let stride = if size >= a {
+        row
+    } else {
+        row.div_ceil(a).saturating_mul(a)
+    };
     let need = if w == 0 || h == 0 {
         0
     } else {
-        stride * (h - 1) + components * size * w
+        stride
+            .saturating_mul(h - 1)
+            .saturating_add(pixel.saturating_mul(w))
     };
     (stride, need)
 }
@@ -549,9 +650,25 @@ pub fn unpack(
     stride: usize,
     base: u32,
 ) -> Vec<[f32; 4]> {
+    let mut out = Vec::new();
+    unpack_into(&mut out, data, width, height, format, type_, stride, base);
+    out
+}
+
+/// [`unpack`], appending to `out` (which the caller may have reserved fallibly).
+#[allow(clippy::too_many_arguments)]
+pub fn unpack_into(
+    out: &mut Vec<[f32; 4]>,
+    data: &[u8],
+    width: i32,
+    height: i32,
+    format: u32,
+    type_: u32,
+    stride: usize,
+    base: u32,
+) {
     let n = format_components(format).unwrap_or(4);
     let s = type_size(type_).unwrap_or(1);
-    let mut out = Vec::with_capacity((width.max(0) * height.max(0)) as usize);
     for j in 0..height.max(0) as usize {
         for i in 0..width.max(0) as usize {
             let at = j * stride + i * n * s;
@@ -571,7 +688,6 @@ pub fn unpack(
             out.push(quantize(base, keep(base, rgba)));
         }
     }
-    out
 }
 
 /// The components base format `base` keeps of an RGBA colour (table 3.15), others zero, the

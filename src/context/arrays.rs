@@ -220,53 +220,66 @@ impl Context {
     /// resolved at compile time"): for a draw that is valid against the arrays current now,
     /// the immediate-mode calls it amounts to — Begin, per element the enabled arrays' attribute
     /// calls and the vertex, End — so the list keeps this data whatever the arrays hold when it
-    /// runs. `None` for any other call, and for a draw that is erroneous now: that one is
+    /// runs. `Ok(None)` for any other call, and for a draw that is erroneous now: that one is
     /// compiled as it is, to raise its error when the list runs. Texture coordinates of units
     /// other than 0 have no immediate-mode call yet (MultiTexCoord) and are not captured.
-    pub(crate) fn compile_draw(&self, call: &Call) -> Option<Vec<Call>> {
+    ///
+    /// Memory: with no array enabled nothing is drawn and nothing is stored, whatever the count
+    /// (DrawArrays' count is then bounded by nothing). Otherwise every index is checked against
+    /// the enabled arrays (or read from the caller's index bytes), so the calls are bounded by
+    /// the data handed over; they are reserved in one `try_reserve_exact`, and a failure is
+    /// `Err(OUT_OF_MEMORY)` instead of an abort.
+    pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
         let arrays = &self.state.arrays;
-        let (mode, indices): (Option<u32>, Vec<usize>) = match call {
-            Call::ArrayElement(i) => (None, vec![arrays.check_array_element(*i).ok()?]),
+        // Checked first, as the draw itself would be: an erroneous draw compiles as it is.
+        let (mode, indices) = match call {
+            Call::ArrayElement(i) => match arrays.check_array_element(*i) {
+                Ok(i) => (None, Indices::Range(i..=i)),
+                Err(_) => return Ok(None),
+            },
             Call::DrawArrays(mode, first, count) => {
-                let range = arrays.check_draw_arrays(*mode, *first, *count).ok()?;
-                (
-                    Some(*mode),
-                    range.map(Iterator::collect).unwrap_or_default(),
-                )
+                match arrays.check_draw_arrays(*mode, *first, *count) {
+                    Ok(Some(range)) => (Some(*mode), Indices::Range(range)),
+                    Ok(None) => (Some(*mode), Indices::List(Vec::new())),
+                    Err(_) => return Ok(None),
+                }
             }
             Call::DrawElements(mode, count, ty, p) => {
-                let idx = arrays
-                    .check_draw_elements(*mode, *count, *ty, p, None)
-                    .ok()?;
-                (
-                    Some(*mode),
-                    idx.unwrap_or_default()
-                        .into_iter()
-                        .map(|i| i as usize)
-                        .collect(),
-                )
+                match arrays.check_draw_elements(*mode, *count, *ty, p, None) {
+                    Ok(idx) => (Some(*mode), Indices::List(idx.unwrap_or_default())),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
             }
             Call::DrawRangeElements(mode, start, end, count, ty, p) => {
-                let idx = arrays
-                    .check_draw_elements(*mode, *count, *ty, p, Some((*start, *end)))
-                    .ok()?;
-                (
-                    Some(*mode),
-                    idx.unwrap_or_default()
-                        .into_iter()
-                        .map(|i| i as usize)
-                        .collect(),
-                )
+                match arrays.check_draw_elements(*mode, *count, *ty, p, Some((*start, *end))) {
+                    Ok(idx) => (Some(*mode), Indices::List(idx.unwrap_or_default())),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
             }
-            _ => return None,
+            _ => return Ok(None),
         };
         let sources = arrays.sources();
-        let mut calls = Vec::new();
         if sources.is_empty() {
-            return Some(calls);
+            return Ok(Some(Vec::new()));
         }
+        // One call per element per source that has an immediate-mode call, Begin and End.
+        let per_index = sources
+            .iter()
+            .filter(|s| !matches!(s.attr, Attr::TexCoord(u) if u != 0))
+            .count();
+        let total = indices
+            .len()
+            .checked_mul(per_index)
+            .and_then(|n| n.checked_add(2))
+            .ok_or(gl::OUT_OF_MEMORY)?;
+        let mut calls = Vec::new();
+        calls
+            .try_reserve_exact(total)
+            .map_err(|_| gl::OUT_OF_MEMORY)?;
         calls.extend(mode.map(Call::Begin));
-        for i in indices {
+        for i in indices.iter() {
             for s in &sources {
                 let Some([x, y, z, w]) = s.fetch(i) else {
                     continue;
@@ -284,7 +297,8 @@ impl Context {
             }
         }
         calls.extend(mode.map(|_| Call::End));
-        Some(calls)
+        debug_assert!(calls.len() <= total, "compile_draw reserved too little");
+        Ok(Some(calls))
     }
 
     /// ArrayElement's body for an index already checked against every source.
@@ -438,6 +452,29 @@ impl Context {
                 self.error(gl::INVALID_ENUM);
                 Pointer::NULL
             }
+        }
+    }
+}
+
+/// The indices a compiled draw visits: a checked range (DrawArrays, ArrayElement) is walked,
+/// never collected, so its storage does not grow with the count.
+enum Indices {
+    Range(std::ops::RangeInclusive<usize>),
+    List(Vec<u32>),
+}
+
+impl Indices {
+    fn len(&self) -> usize {
+        match self {
+            Indices::Range(r) => r.end().saturating_sub(*r.start()).saturating_add(1),
+            Indices::List(v) => v.len(),
+        }
+    }
+
+    fn iter(&self) -> Box<dyn Iterator<Item = usize> + '_> {
+        match self {
+            Indices::Range(r) => Box::new(r.clone()),
+            Indices::List(v) => Box::new(v.iter().map(|&i| i as usize)),
         }
     }
 }

@@ -160,11 +160,25 @@ impl Context {
                 let Some(list) = self.lists.compiling.as_mut() else {
                     return false;
                 };
-                match compiled {
-                    Some(calls) => list.calls.extend(calls),
-                    None => list.calls.push(call),
+                let mode = list.mode;
+                // The list grows by what the call holds; growth that cannot be allocated is
+                // OUT_OF_MEMORY (raised now, the call left out of the list: the crate's rule is
+                // that an OUT_OF_MEMORY command changes nothing) instead of an abort.
+                let stored = match compiled {
+                    Ok(Some(calls)) => list
+                        .calls
+                        .try_reserve(calls.len())
+                        .map(|()| list.calls.extend(calls)),
+                    Ok(None) => list.calls.try_reserve(1).map(|()| list.calls.push(call)),
+                    Err(code) => {
+                        self.error(code);
+                        return mode == gl::COMPILE;
+                    }
+                };
+                if stored.is_err() {
+                    self.error(gl::OUT_OF_MEMORY);
                 }
-                list.mode == gl::COMPILE
+                mode == gl::COMPILE
             }
             _ => {
                 if let Some(rec) = self.recording.as_mut() {

@@ -75,18 +75,23 @@ pub struct Context {
 
 impl Context {
     /// A context with a `width` x `height` framebuffer (RGBA8 colour, 24-bit depth, 8-bit stencil)
-    /// in GL's initial state. Each side must be between 1 and 16384.
+    /// in GL's initial state. Each side must be between 1 and 16384 (else
+    /// [`Error::InvalidSize`]); [`Error::OutOfMemory`] when the framebuffer cannot be allocated.
     pub fn new(width: u32, height: u32) -> Result<Context, Error> {
         if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(Error::InvalidSize { width, height });
         }
+        // The framebuffer is the one allocation sized by the caller here: tried, so that a size
+        // the machine cannot hold is an `Err`, not an abort.
+        let renderer =
+            Renderer::try_new(width, height).ok_or(Error::OutOfMemory { width, height })?;
         Ok(Context {
             state: State::new(width, height),
             error: gl::NO_ERROR,
             begin_mode: None,
             recording: None,
             capturing: false,
-            renderer: Renderer::new(width, height),
+            renderer,
             lists: Default::default(),
             attrib: Default::default(),
         })

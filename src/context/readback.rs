@@ -65,31 +65,38 @@ impl Context {
             _ => 1,
         };
         let (w, h) = (width as usize, height as usize);
-        let row = w * comps * size;
-        let align = self.state.pack_alignment.clamp(1, 8) as usize;
-        let stride = if size >= align {
-            row
-        } else {
-            row.div_ceil(align) * align
+        // Every product of the caller's sizes is checked: width and height up to 2^31 times 16
+        // bytes a pixel wrap a usize, and a wrapped `needed` passed the length check below while
+        // the loops then ran over the whole requested rectangle. No slice can be that long, so an
+        // overflow is the same INVALID_VALUE as a short `out`.
+        let Some(needed) = read_extent(w, h, comps, size, self.state.pack_alignment) else {
+            return self.error(gl::INVALID_VALUE);
         };
-        // §4.3.2: the last row needs no padding.
-        let needed = if h == 0 || w == 0 {
-            0
-        } else {
-            stride * (h - 1) + row
-        };
-        if out.len() < needed {
+        if out.len() < needed.total {
             return self.error(gl::INVALID_VALUE);
         }
         self.renderer.flush(&self.state);
         let fb = self.renderer.framebuffer();
-        for j in 0..h {
-            for i in 0..w {
+        // Only the part of the rectangle inside the window is visited (§4.3.2: pixels outside it
+        // are undefined; fixedgl leaves them untouched), so the work is bounded by the window,
+        // not by the requested size. The window is at most MAX_VIEWPORT_DIM square, so the
+        // offsets below fit in i64.
+        let (fw, fh) = fb.size();
+        let span = |o: i32, n: usize, limit: u32| {
+            let lo = (-i64::from(o)).clamp(0, n as i64);
+            let hi = (i64::from(limit) - i64::from(o)).clamp(lo, n as i64);
+            (lo as usize)..(hi as usize)
+        };
+        let (cols, rows) = (span(x, w, fw), span(y, h, fh));
+        let px_bytes = comps * size;
+        for j in rows {
+            for i in cols.clone() {
                 let (px, py) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
                 let Some((c, d, s)) = fb.pixel(px, py) else {
                     continue;
                 };
-                let at = j * stride + i * comps * size;
+                // j < h and i < w, so this is at most `needed.total`, which did not overflow.
+                let at = j * needed.stride + i * px_bytes;
                 for k in 0..comps {
                     let (norm, int) = match source {
                         Source::Color(idx) => {
@@ -117,9 +124,35 @@ impl Context {
         }
         let (w, h) = self.renderer.size();
         let bytes = self.renderer.framebuffer().color_bytes_top_down();
-        // The buffer holds exactly w·h pixels, so `from_raw` cannot fail; a blank image if it did.
+        // The buffer holds exactly w·h pixels, so `from_raw` cannot fail (asserted in debug
+        // builds); a blank image if it did.
+        debug_assert_eq!(bytes.len(), w as usize * h as usize * 4);
         image::RgbaImage::from_raw(w, h, bytes).unwrap_or_else(|| image::RgbaImage::new(w, h))
     }
+}
+
+/// The byte layout of a packed `w` x `h` rectangle of `comps` components of `size` bytes: the
+/// row stride (rows padded to `alignment` unless a component is at least that large, §4.3.2 and
+/// §3.6.4) and the bytes needed, the last row unpadded. `None` when a size does not fit a usize (no slice can hold it).
+struct Extent {
+    stride: usize,
+    total: usize,
+}
+
+fn read_extent(w: usize, h: usize, comps: usize, size: usize, alignment: i32) -> Option<Extent> {
+    let row = w.checked_mul(comps)?.checked_mul(size)?;
+    let align = alignment.clamp(1, 8) as usize;
+    let stride = if size >= align {
+        row
+    } else {
+        row.checked_next_multiple_of(align)?
+    };
+    let total = if h == 0 || w == 0 {
+        0
+    } else {
+        stride.checked_mul(h - 1)?.checked_add(row)?
+    };
+    Some(Extent { stride, total })
 }
 
 /// Converts one component to type `ty` into `dst`: a normalised value by c·(2^b − 1) rounded

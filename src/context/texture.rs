@@ -21,7 +21,7 @@ use crate::call::Call;
 use crate::gl;
 use crate::texture::{
     as_rgba, base_internal_format, format_components, keep, quantize, type_size, unpack,
-    unpack_extent, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    unpack_extent, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
@@ -91,18 +91,19 @@ impl Context {
         let top = t
             .names
             .last()
-            .copied()
             .max(t.objects.keys().last().copied())
             .unwrap_or(0);
         if u64::from(top) + n as u64 > u64::from(u32::MAX) {
             return self.error(gl::OUT_OF_MEMORY);
         }
-        for k in 0..n as u32 {
-            let name = top + 1 + k;
-            t.names.insert(name);
-            if let Some(o) = out.get_mut(k as usize) {
-                *o = name;
-            }
+        if n == 0 {
+            return;
+        }
+        // One run for the whole call (issue #11: a set entry per name made 38 KB of
+        // GenTextures(65536) lines cost 1.66 GB); only the caller's slice is per name.
+        t.names.insert_range(top + 1, top + n as u32);
+        for (k, o) in out.iter_mut().take(n as usize).enumerate() {
+            *o = top + 1 + k as u32;
         }
     }
 
@@ -122,7 +123,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            t.names.remove(&name);
+            t.names.remove(name);
             t.objects.remove(&name);
             for u in t.units.iter_mut() {
                 if u.binding_2d == name {
@@ -216,11 +217,21 @@ impl Context {
             type_size(type_).unwrap_or(1),
         );
         let (stride, need) = self.unpack_extent(width, height, n, s);
-        let texels = match pixels {
-            Some(p) if p.len() < need => return self.error(gl::INVALID_OPERATION),
-            Some(p) => unpack(p, width, height, format, type_, stride, base),
-            None => vec![quantize(base, [0.0; 4]); (width * height) as usize],
-        };
+        if pixels.is_some_and(|p| p.len() < need) {
+            return self.error(gl::INVALID_OPERATION);
+        }
+        // Up to MAX_TEXTURE_SIZE² texels of 16 bytes (64 MiB) per call: reserved first, so an
+        // allocation the machine cannot make is OUT_OF_MEMORY with nothing changed (GL 2.1
+        // §2.5), not an abort.
+        let texels_n = width as usize * height as usize;
+        let mut texels = Vec::new();
+        if texels.try_reserve_exact(texels_n).is_err() {
+            return self.error(gl::OUT_OF_MEMORY);
+        }
+        match pixels {
+            Some(p) => unpack_into(&mut texels, p, width, height, format, type_, stride, base),
+            None => texels.resize(texels_n, quantize(base, [0.0; 4])),
+        }
         let lv = Level {
             width,
             height,
@@ -421,7 +432,9 @@ impl Context {
         {
             return self.error(code);
         }
-        let texels = self.read_fb(x, y, width, height, base);
+        let Some(texels) = self.read_fb(x, y, width, height, base) else {
+            return self.error(gl::OUT_OF_MEMORY);
+        };
         self.store_level(
             level,
             Level {
@@ -459,15 +472,21 @@ impl Context {
         else {
             return;
         };
-        let texels = self.read_fb(x, y, width, height, base);
+        let Some(texels) = self.read_fb(x, y, width, height, base) else {
+            return self.error(gl::OUT_OF_MEMORY);
+        };
         self.write_rect(level, xoffset, yoffset, width, &texels);
     }
 
     /// Framebuffer pixels as texels of `base`: depth (as [0, 1]) for DEPTH_COMPONENT, else the
     /// colour converted as TexImage converts RGBA data.
-    fn read_fb(&mut self, x: i32, y: i32, w: i32, h: i32, base: u32) -> Vec<[f32; 4]> {
+    /// `None` when the texels cannot be allocated (w and h are validated, at most
+    /// MAX_TEXTURE_SIZE).
+    fn read_fb(&mut self, x: i32, y: i32, w: i32, h: i32, base: u32) -> Option<Vec<[f32; 4]>> {
         let fb = self.renderer.framebuffer();
-        let mut out = Vec::with_capacity((w.max(0) * h.max(0)) as usize);
+        let mut out = Vec::new();
+        out.try_reserve_exact(w.max(0) as usize * h.max(0) as usize)
+            .ok()?;
         for j in 0..h.max(0) {
             for i in 0..w.max(0) {
                 let px = fb.pixel(i64::from(x) + i64::from(i), i64::from(y) + i64::from(j));
@@ -482,7 +501,7 @@ impl Context {
                 out.push(quantize(base, t));
             }
         }
-        out
+        Some(out)
     }
 
     /// `glGetTexImage` (§6.1.4): level `level` of the bound 2D texture as `format` / `type_`,

@@ -33,10 +33,9 @@ pub struct Framebuffer {
 impl Framebuffer {
     /// A framebuffer cleared to colour 0, depth 1 and stencil 0 (GL's initial contents are
     /// undefined; this is what llvmpipe starts with too).
+    /// Aborts when the buffers cannot be allocated, as `vec!` does; see [`Framebuffer::try_new`].
     pub fn new(width: u32, height: u32) -> Self {
-        let tiles_x = (width as usize).div_ceil(TILE);
-        let tiles_y = (height as usize).div_ceil(TILE);
-        let n = tiles_x * tiles_y * TILE_PIXELS;
+        let (tiles_x, tiles_y, n) = Self::layout(width, height);
         Self {
             width,
             height,
@@ -46,6 +45,29 @@ impl Framebuffer {
             depth: vec![DEPTH_MAX; n],
             stencil: vec![0; n],
         }
+    }
+
+    /// [`Framebuffer::new`], or `None` when the buffers (9 bytes a pixel, padded to whole
+    /// tiles) cannot be allocated: the allocation is tried, never assumed.
+    pub fn try_new(width: u32, height: u32) -> Option<Self> {
+        let (tiles_x, tiles_y, n) = Self::layout(width, height);
+        Some(Self {
+            width,
+            height,
+            tiles_x,
+            tiles_y,
+            color: filled(n, [0; 4])?,
+            depth: filled(n, DEPTH_MAX)?,
+            stencil: filled(n, 0)?,
+        })
+    }
+
+    /// Tiles across, tiles up and pixels stored (whole tiles) for a `width` x `height` buffer:
+    /// at most 256 x 256 tiles of 4096 pixels for the 16384 x 16384 maximum, far below usize.
+    fn layout(width: u32, height: u32) -> (usize, usize, usize) {
+        let tiles_x = (width as usize).div_ceil(TILE);
+        let tiles_y = (height as usize).div_ceil(TILE);
+        (tiles_x, tiles_y, tiles_x * tiles_y * TILE_PIXELS)
     }
 
     /// Width and height in pixels.
@@ -196,6 +218,14 @@ pub fn scissor_rect(state: &State) -> [i32; 4] {
         r[3] = r[3].min(sy.saturating_add(sh).saturating_sub(1));
     }
     r
+}
+
+/// `n` copies of `v`, or `None` if they cannot be allocated.
+fn filled<T: Clone>(n: usize, v: T) -> Option<Vec<T>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(n).ok()?;
+    out.resize(n, v);
+    Some(out)
 }
 
 /// Float colour component to unorm8 (GL 2.1 §2.14.9), clamped to [0, 1] (NaN gives 0).

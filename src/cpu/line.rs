@@ -9,15 +9,21 @@
 //! along the major axis only (so a wide line is constant across), perspective-correct (eq. 3.10);
 //! window z linearly.
 
-use super::setup::{geom, Kind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV};
+use super::setup::{geom, Kind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV, SNAP_LIMIT};
 
 /// GL window coordinates have y up, so the fill rule's "top" edge is llvmpipe's bottom edge
 /// (its `bottom_edge_rule` for a y-up framebuffer).
 const BOTTOM_EDGE_RULE: bool = false;
 
-/// Nearest 1/256 pixel, ties to even (llvmpipe's `lrintf` in the default rounding mode).
+/// Nearest 1/256 pixel, ties to even (llvmpipe's `lrintf` in the default rounding mode),
+/// clamped to ±`SNAP_LIMIT` as triangle vertices are: the parallelogram's corners then stay
+/// under `COORD_LIMIT`, where every edge-function product of `geom` and the rasteriser fits
+/// i64 (a clamp of ±1e12 let a long diagonal overflow them). Clipped vertices lie within the
+/// viewport, so the clamp only bites on coordinates no clipped line can have; NaN gives 0.
 fn snap(v: f32) -> i64 {
-    (f64::from(v) * 256.0).round_ties_even().clamp(-1e12, 1e12) as i64
+    (f64::from(v) * 256.0)
+        .round_ties_even()
+        .clamp(-SNAP_LIMIT, SNAP_LIMIT) as i64
 }
 
 /// Offset of `v` from the centre of the pixel it lies in, in [-0.5, 0.5).
@@ -234,6 +240,52 @@ impl Worker {
                 cover: 0,
                 z: lin(za, zb),
             });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::setup::{geom, COORD_LIMIT};
+    use super::parallelogram;
+
+    /// A long diagonal from -1e38 to 1e38 (finite window coordinates; only clipping keeps them
+    /// out): each parallelogram triangle's area and edge functions are exactly what 128-bit
+    /// arithmetic gives, never a wrapped i64 (a panic under overflow checks before the fix).
+    #[test]
+    fn huge_diagonal_edge_functions_are_exact() {
+        for (x1, y1, x2, y2) in [
+            (-1e38, -1e38, 1e38, 1e38),
+            (1e38, -1e38, -1e38, 1e38),
+            (-1e9, 5.0, 1e9, 7.0),
+            (5.0, -1e9, 7.0, 1e9),
+        ] {
+            let Some(q) = parallelogram(x1, y1, x2, y2, 1e9) else {
+                panic!("no parallelogram for ({x1}, {y1}) to ({x2}, {y2})");
+            };
+            assert!(q.iter().flatten().all(|v| v.abs() < COORD_LIMIT), "{q:?}");
+            for tri in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+                let Some(g) = geom(&[0, 0, 63, 63], tri) else {
+                    continue;
+                };
+                let w = |v: i64| i128::from(v);
+                let [a, b, c] = g.v;
+                let area = (w(b[0]) - w(a[0])) * (w(c[1]) - w(a[1]))
+                    - (w(c[0]) - w(a[0])) * (w(b[1]) - w(a[1]));
+                assert_eq!(i128::from(g.area), area.abs());
+                let (px, py) = (
+                    w(i64::from(g.bbox[0])) * 256 + 128,
+                    w(i64::from(g.bbox[1])) * 256 + 128,
+                );
+                for k in 0..3 {
+                    let (p, n) = (g.v[k], g.v[(k + 1) % 3]);
+                    let (dx, dy) = (w(n[0]) - w(p[0]), w(n[1]) - w(p[1]));
+                    assert_eq!(
+                        i128::from(g.e[k]),
+                        dx * (py - w(p[1])) - dy * (px - w(p[0]))
+                    );
+                }
+            }
         }
     }
 }

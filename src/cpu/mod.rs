@@ -83,11 +83,20 @@ pub struct Renderer {
     pub(crate) count_coverage: bool,
     /// Diagnostic: batches drawn in the background so far.
     pub(crate) background_draws: u64,
+    /// Test hook: the next background draw panics (to test that the panic reaches the caller).
+    #[cfg(test)]
+    pub(crate) panic_in_background: bool,
 }
 
-/// What a background draw hands back: the core, the drawn batch and its vertex output; `None`
-/// if it failed.
-type Drawn = Option<(Box<Core>, Batch, Processed)>;
+/// What a background draw hands back: the core, the drawn batch and its vertex output, always
+/// (the job catches a panic of the draw so that nothing it owned is lost), and the panic's
+/// payload if the draw panicked, to be resumed on the caller's thread by `wait`.
+type Drawn = (
+    Box<Core>,
+    Batch,
+    Processed,
+    Option<Box<dyn std::any::Any + Send>>,
+);
 
 /// What drawing a batch mutates: the framebuffer and the setup scratch space reused across
 /// draws.
@@ -145,8 +154,19 @@ impl Plan {
 
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
+    /// Aborts if the framebuffer cannot be allocated, as `vec!` does; see [`Renderer::try_new`].
     pub fn new(width: u32, height: u32) -> Self {
-        let core = Box::new(Core::new(width, height));
+        Self::with_core(Box::new(Core::new(width, height)), width, height)
+    }
+
+    /// [`Renderer::new`], or `None` when the framebuffer cannot be allocated (what
+    /// `Context::new` reports as [`crate::Error::OutOfMemory`]).
+    pub fn try_new(width: u32, height: u32) -> Option<Self> {
+        let core = Box::new(Core::try_new(width, height)?);
+        Some(Self::with_core(core, width, height))
+    }
+
+    fn with_core(core: Box<Core>, width: u32, height: u32) -> Self {
         Self {
             tiles: core.fb.tiles(),
             core: Some(core),
@@ -157,6 +177,8 @@ impl Renderer {
             pending: None,
             count_coverage: false,
             background_draws: 0,
+            #[cfg(test)]
+            panic_in_background: false,
         }
     }
 
@@ -203,11 +225,7 @@ impl Renderer {
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
         let verts = std::mem::replace(&mut self.verts, next_verts);
-        let (w, h) = self.size;
-        let mut core = self
-            .core
-            .take()
-            .unwrap_or_else(|| Box::new(Core::new(w, h)));
+        let mut core = self.take_core();
         // The state is copied (texture images are shared, not copied): the front end goes on
         // changing its own.
         let state = Box::new(state.clone());
@@ -215,43 +233,75 @@ impl Renderer {
         let (tx, rx) = mpsc::channel();
         self.pending = Some(Mutex::new(rx));
         self.background_draws += 1;
+        #[cfg(test)]
+        let fail = std::mem::take(&mut self.panic_in_background);
         rayon::spawn(move || {
-            // A panic must not abort the process from the pool: the core is then lost and
-            // `wait` starts a new one.
-            let drawn = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || {
+            // A panic must not abort the process from the pool, nor be lost: it is caught
+            // here and handed back with everything the job owned, and `wait` resumes it on
+            // the caller's thread, as if the draw had run there.
+            let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                #[cfg(test)]
+                assert!(!fail, "test hook: background draw panics");
                 core.draw(&state, &batch, &verts, plan, count);
-                (core, batch, verts)
-            }));
-            let _ = tx.send(drawn.ok());
+            }))
+            .err();
+            // The receiver lives until `wait` takes this; a send cannot fail before that.
+            let _ = tx.send((core, batch, verts, panicked));
         });
     }
 
-    /// Waits for the background draw, if any, and takes back what it owned.
+    /// Waits for the background draw, if any, and takes back what it owned. A panic of that
+    /// draw is resumed here, on the caller's thread (`std::panic::resume_unwind`): the frame is
+    /// then wrong, and the caller must learn it, exactly as when a draw in place panics. The
+    /// framebuffer (drawn up to the panic) is kept, never replaced by a cleared one.
     fn wait(&mut self) {
         let Some(rx) = self.pending.take() else {
             return;
         };
-        let back = match rx.into_inner() {
-            Ok(rx) => rx.recv().ok().flatten(),
-            Err(_) => None,
-        };
-        match back {
-            Some((core, batch, verts)) => {
+        // The mutex only makes the receiver Sync; nothing ever locks it, so it is never
+        // poisoned, and its receiver is usable either way.
+        let rx = rx.into_inner().unwrap_or_else(|e| e.into_inner());
+        match rx.recv() {
+            Ok((core, batch, verts, panicked)) => {
                 self.core = Some(core);
                 self.spare = Some((batch, verts));
+                if let Some(payload) = panicked {
+                    std::panic::resume_unwind(payload);
+                }
             }
-            None => {
-                // The draw failed (it never should): go on with a cleared framebuffer.
-                self.core = Some(Box::new(Core::new(self.size.0, self.size.1)));
+            // The job sends whatever happens in the draw; only a job that never ran (the pool
+            // torn down, which rayon's global pool never is) could end here. The framebuffer
+            // is gone with it: say so rather than draw on a blank one.
+            Err(_) => {
+                panic!("fixedgl: a background draw ended without handing back the framebuffer")
             }
         }
+    }
+
+    /// The core, taken out (for a background draw). Only one draw holds it at a time: every
+    /// path that takes it waits first.
+    fn take_core(&mut self) -> Box<Core> {
+        self.wait();
+        match self.core.take() {
+            Some(core) => core,
+            None => Self::lost(),
+        }
+    }
+
+    /// After `wait` the core is back: it is `None` only if a background draw's job vanished,
+    /// which `wait` has already reported by panicking.
+    #[cold]
+    fn lost() -> ! {
+        panic!("fixedgl: the framebuffer was lost with a background draw that vanished")
     }
 
     /// The framebuffer and scratch space, once no background draw holds them.
     fn core(&mut self) -> &mut Core {
         self.wait();
-        self.core
-            .get_or_insert_with(|| Box::new(Core::new(self.size.0, self.size.1)))
+        match self.core.as_deref_mut() {
+            Some(core) => core,
+            None => Self::lost(),
+        }
     }
 
     /// `Material` called between Begin and End: `materials` are the new front and back materials,
@@ -298,14 +348,12 @@ impl Renderer {
         let count = self.count_coverage;
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
-            core,
-            batch,
-            size,
-            verts,
-            ..
+            core, batch, verts, ..
         } = self;
-        core.get_or_insert_with(|| Box::new(Core::new(size.0, size.1)))
-            .draw(state, batch, verts, plan, count);
+        match core.as_deref_mut() {
+            Some(core) => core.draw(state, batch, verts, plan, count),
+            None => Self::lost(),
+        }
         batch.clear();
     }
 }
@@ -317,6 +365,14 @@ impl Core {
             asm: Vec::new(),
             workers: Vec::new(),
         }
+    }
+
+    fn try_new(width: u32, height: u32) -> Option<Self> {
+        Some(Core {
+            fb: Framebuffer::try_new(width, height)?,
+            asm: Vec::new(),
+            workers: Vec::new(),
+        })
     }
 
     /// Draws `batch` (not empty), whose vertices `verts` went through the vertex stage as
@@ -382,6 +438,7 @@ impl Core {
                 count += p.count as usize;
                 end += 1;
             }
+            debug_assert!(end <= prims.len(), "piece past the primitive list");
             let piece = prims.get(start..end).unwrap_or(&[]);
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if workers.len() == 1 || largest <= count / workers.len() {
@@ -443,8 +500,13 @@ fn setup_by_primitives(
         *c = prims.len();
     }
     workers.par_iter_mut().enumerate().for_each(|(i, w)| {
+        debug_assert!(i + 1 < cuts.len(), "a worker without its cut");
         let lo = cuts.get(i).copied().unwrap_or(0);
         let hi = cuts.get(i + 1).copied().unwrap_or(lo);
+        debug_assert!(
+            lo <= hi && hi <= prims.len(),
+            "cuts out of order: {lo}..{hi}"
+        );
         let part = prims.get(lo..hi).unwrap_or(&[]);
         w.assemble_and_run(ctx, v.vout, v.wins, v.batch, part);
     });

@@ -29,6 +29,10 @@ impl Worker {
     ) {
         let s = ctx.layout.stride;
         let vert = |i: u32| {
+            debug_assert!(
+                (i as usize + 1) * s <= vout.len(),
+                "vertex {i} not processed"
+            );
             vout.get(i as usize * s..(i as usize + 1) * s)
                 .unwrap_or(&[])
         };

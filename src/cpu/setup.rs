@@ -25,8 +25,16 @@ use super::vertex::{Lanes4, Layout};
 use crate::gl;
 use crate::state::State;
 
-/// Largest snapped window coordinate magnitude (1/256 pixel units).
-const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
+/// Largest snapped window coordinate magnitude (1/256 pixel units), for triangles and lines
+/// alike: ±2^29 (±2M pixels) leaves room for a line's half width (< 2^27) and the +128 of the
+/// pixel centre under [`COORD_LIMIT`].
+pub(super) const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
+
+/// Bound on every snapped coordinate `geom` and the rasteriser see: with |v| < 2^30, an edge
+/// delta is < 2^31, each edge-function product < 2^62 and their difference fits i64; the
+/// bounding box and the vertices fit i32. Clipping (§2.12) keeps real vertices within the
+/// viewport, at most MAX_VIEWPORT_DIM wide, so only the snap clamps ever come near it.
+pub(super) const COORD_LIMIT: i64 = 1 << 30;
 
 /// Most interpolated floats per fragment: colour 4, secondary 4, two texture units 4 + 4
 /// (texture), PHONG_WIN 10.
@@ -500,6 +508,7 @@ impl Worker {
         let s = ctx.layout.stride;
         let vert = |i: u32| {
             let i = i as usize;
+            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
             vout.get(i * s..(i + 1) * s).unwrap_or(&[])
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
@@ -724,6 +733,10 @@ impl Geom {
 /// or no pixel of `rect`.
 #[inline(always)]
 pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
+    debug_assert!(
+        p.iter().flatten().all(|v| v.abs() < COORD_LIMIT),
+        "snapped coordinates past COORD_LIMIT: {p:?}"
+    );
     let [a, b, c] = p;
     let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
     let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));

@@ -256,8 +256,14 @@ impl Sampler {
     /// The filtered texel (internal components: L and I in R) at (s, t), depth compared
     /// against `r` when comparison is on (§3.8.8, §3.8.14).
     pub fn sample(&self, s: f32, t: f32, r: f32, lambda: f32) -> [f32; 4] {
-        let lambda = (lambda + self.bias).clamp(self.min_lod, self.max_lod);
+        // §3.8.8 clamps λ to [TEXTURE_MIN_LOD, TEXTURE_MAX_LOD], but TexParameter accepts any
+        // float (§3.8.4), so min > max and NaN reach here; `f32::clamp` would panic. The order is
+        // llvmpipe's (`lp_build_lod_selector`: min with MAX_LOD, then max with MIN_LOD): when
+        // min > max, MIN_LOD wins. A NaN bound does not bound (f32::min/max ignore NaN); a NaN
+        // λ (NaN coordinates or bias) is taken as 0, before the bounds, as it always was.
+        let lambda = lambda + self.bias;
         let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        let lambda = lambda.min(self.max_lod).max(self.min_lod);
         if lambda <= self.c {
             return self.filter(self.base_level, self.mag, s, t, r);
         }

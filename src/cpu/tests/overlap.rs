@@ -74,3 +74,34 @@ fn background_draws_give_the_pixels_of_drawing_in_place() {
     let distinct: std::collections::BTreeSet<&[u8]> = img_a.chunks(4).collect();
     assert!(distinct.len() > 1000, "only {} colours", distinct.len());
 }
+
+/// A background draw that panics must not be swallowed (issue #11): before, the frame went on
+/// with a cleared framebuffer. The panic reaches the caller at the next wait, and the
+/// framebuffer is the one drawn so far, not a new cleared one.
+#[test]
+fn a_panicking_background_draw_reaches_the_caller() {
+    let mut gl = Context::new(64, 64).expect("context");
+    gl.clear_color(0.0, 0.0, 1.0, 1.0);
+    gl.clear(gl::COLOR_BUFFER_BIT);
+    gl.renderer.panic_in_background = true;
+    let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        // Two batches' worth of vertices: the first full batch goes to the pool and panics
+        // there; the next full batch, or the read below, waits for it.
+        for row in 0..120 {
+            let y = -1.0 + row as f32 / 60.0;
+            gl.begin(gl::TRIANGLE_STRIP);
+            for col in 0..600 {
+                let x = -1.0 + (col / 2) as f32 / 150.0;
+                gl.vertex2f(x, if col % 2 == 0 { y } else { y + 1.0 / 60.0 });
+            }
+            gl.end();
+        }
+        gl.to_image()
+    }));
+    assert!(caught.is_err(), "the background draw's panic was swallowed");
+    assert!(gl.renderer.background_draws >= 1);
+    // The framebuffer kept what was drawn before: the blue clear, not a new zeroed buffer.
+    gl.renderer.discard_batch();
+    let px = gl.renderer.color();
+    assert_eq!(px[0], [0, 0, 255, 255]);
+}
