@@ -24,7 +24,7 @@ pub mod call;
 pub mod recording;
 
 // Backends: the CPU pipeline and the real driver.
-pub mod cpu;
+pub(crate) mod cpu;
 #[cfg(feature = "gl")]
 pub mod glbackend;
 

@@ -48,11 +48,6 @@ impl Framebuffer {
         }
     }
 
-    /// Width and height in pixels.
-    pub fn size(&self) -> (u32, u32) {
-        (self.width, self.height)
-    }
-
     /// Number of tiles across and up.
     pub fn tiles(&self) -> (usize, usize) {
         (self.tiles_x, self.tiles_y)
@@ -79,6 +74,7 @@ impl Framebuffer {
     }
 
     /// The colour buffer as bottom-up rows (GL window order), `width * height` pixels.
+    #[cfg(test)]
     pub fn color_rows(&self) -> Vec<[u8; 4]> {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);

@@ -279,6 +279,7 @@ impl Renderer {
     }
 
     /// The colour buffer as bottom-up rows, `width * height` pixels.
+    #[cfg(test)]
     pub fn color(&mut self) -> Vec<[u8; 4]> {
         self.core().fb.color_rows()
     }

@@ -1,10 +1,10 @@
 //! The vertex stage: modelview and projection transforms, the normal transform with
 //! RESCALE_NORMAL / NORMALIZE, and the GL 1.x lighting equation (GL 2.1 §2.11, §2.14.1).
 //!
-//! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation,
+//! Design decision: `Lighting::eval` is the one implementation of the lighting equation,
 //! generic over its number of lanes and written on a structure of arrays so that the compiler
-//! vectorises it; the vertex stage calls it for blocks of `LANES` vertices and the PHONG_WIN
-//! fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
+//! vectorises it; the vertex stage calls it for blocks of `LANES` vertices (`shade_lanes`) and the
+//! PHONG_WIN fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
 //! never disagree about the equation, down to the bits. The vertex stage makes one pass per block:
 //! it transforms the block's positions and normals on arrays, computes the window coordinates
 //! and clip codes (`SetupCtx::win_block`) while the clip positions are in hand, then lights the
@@ -228,6 +228,10 @@ impl Lighting {
     /// finite power, which N·H <= 1 guarantees), and when the power is provably too small to
     /// change any bit of the colour it is added to (see `negligible`); the specular term is then
     /// computed from a power of 0, as where N·L <= 0.
+    ///
+    /// The stage itself calls the same body through [`Lighting::shade_lanes`] (results left on
+    /// arrays) and [`Lighting::shade`] (one point); this form is what the tests compare them with.
+    #[cfg(test)]
     pub fn shade_block<const N: usize>(
         &self,
         m: &Material,
