@@ -26,6 +26,14 @@
 //! access wait for it first, so the draws happen one after the other in call order and the
 //! pixels are exactly those of drawing in place (tested in `tests/overlap.rs` under this
 //! module). A caller running on the pool itself draws in place.
+//!
+//! Naming: the state (`crate::state`, `crate::texture`) is named after GL's state blocks
+//! (`Fog`, `Blend`, `TexGen`, `Combine`); what this module derives from it when a batch is
+//! drawn never reuses those names. The per-flush form of one state block, ready for the
+//! per-vertex or per-fragment code, ends in `Eval` (`fragops::FogEval`, `fragops::BlendEval`,
+//! `texgen::TexGenEval`); constants gathered for a whole stage end in `Ctx` (`SetupCtx`,
+//! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
+//! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
 pub mod assembly;
 pub mod batch;

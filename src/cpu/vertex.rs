@@ -557,9 +557,11 @@ impl Lit<'_> {
             || l.fog.is_some()
             || l.raw.is_some();
         let tex_matrix = *state.texture_matrix[0].top();
-        let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
+        let texgen = l.tex.and_then(|_| super::texgen::TexGenEval::new(state, 0));
         let tex_matrix1 = *state.texture_matrix[1].top();
-        let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
+        let texgen1 = l
+            .tex1
+            .and_then(|_| super::texgen::TexGenEval::new(state, 1));
         // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
         // block, every lane that is read), so they are initialised once.
         let mut lit = Shaded::<LANES>::default();
@@ -706,8 +708,8 @@ impl Lit<'_> {
         p: Vec4,
         nrm: Vec3,
         eye: Vec4,
-        texgen: &Option<super::texgen::TexGen>,
-        texgen1: &Option<super::texgen::TexGen>,
+        texgen: &Option<super::texgen::TexGenEval>,
+        texgen1: &Option<super::texgen::TexGenEval>,
         tex_matrix: &[Mat4; 2],
     ) {
         let l = self.layout;
