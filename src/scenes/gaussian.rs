@@ -187,28 +187,28 @@ pub fn draw(gl: &mut Context, size: usize, shading: Shading) {
 pub(super) const SCENES: [Scene; 4] = [
     Scene {
         name: "gauss-flat-40",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 40x40 cells, FLAT, one normal per cell",
+        summary: "Surface rendering: flat shading — the JOGL Rendering gaussian bump, 40x40 cells, FLAT, one normal per cell",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Flat),
     },
     Scene {
         name: "gauss-smooth-40",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 40x40 cells, SMOOTH (Gouraud), normal per vertex",
+        summary: "Surface rendering: Gouraud shading — the JOGL Rendering gaussian bump, 40x40 cells, SMOOTH, normal per vertex",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Smooth),
     },
     Scene {
         name: "gauss-smooth-400",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 400x400 cells (320k triangles, 1.6M calls), SMOOTH",
+        summary: "Surface rendering: Gouraud shading on a fine mesh — the gaussian bump, 400x400 cells (320k triangles, 1.6M calls), SMOOTH",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 400, Shading::Smooth),
     },
     Scene {
         name: "gauss-phong-40",
-        summary: "seed 000: the 40x40 bump with ShadeModel(PHONG_WIN), per-fragment lighting (the seed's GLSL Phong)",
+        summary: "Surface rendering: Phong shading — the 40x40 bump with ShadeModel(PHONG_WIN), per-fragment lighting (the lecture's GLSL Phong)",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Phong),
