@@ -456,6 +456,8 @@ impl GlBackend {
         for r in pixels.chunks_exact(row.max(1)).rev() {
             top_down.extend_from_slice(r);
         }
+        // Whole rows of the w x h read-back, reversed: exactly one image's bytes.
+        debug_assert_eq!(top_down.len(), w * h * 4);
         RgbaImage::from_raw(self.width, self.height, top_down)
             .unwrap_or_else(|| RgbaImage::new(self.width, self.height))
     }
