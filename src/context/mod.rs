@@ -668,7 +668,8 @@ pub use lists::MAX_LIST_NESTING;
 pub(crate) use lists::{name_offset, name_size};
 // Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
 mod fragment;
-// Objects, images, parameters (context/texture.rs, context/texture_params.rs)
-pub mod texture;
+// Objects, images, parameters (context/texture.rs, context/texture_params.rs); the GL backend
+// shares TexImage2D's argument checks.
+pub(crate) mod texture;
 mod texture_coords;
 mod texture_params;

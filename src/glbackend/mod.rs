@@ -102,6 +102,10 @@ impl std::fmt::Debug for GlBackend {
 /// gl.replay(&[fixedgl::Call::Enable(fixedgl::gl::LIGHTING)]);
 /// assert_eq!(gl.get_error(), fixedgl::gl::NO_ERROR);
 /// ```
+///
+/// A helper for this crate's integration tests (which cannot see `pub(crate)`), hidden from the
+/// documentation; applications use [`GlBackend::new`] and handle its error.
+#[doc(hidden)]
 pub fn test_backend(width: u32, height: u32) -> Option<GlBackend> {
     use std::io::Write as _;
     match GlBackend::new(width, height, &DeviceChoice::Auto) {

@@ -80,8 +80,8 @@ fn normalize(p: [f32; 3]) -> [f32; 3] {
     [p[0] / norm, p[1] / norm, p[2] / norm]
 }
 
-/// `calculateNormal(matrix)`: at point V1 = m[i][j], with V2 = m[i][j+1] (next column) and
-/// V3 = m[i+1][j] (next row), the normal is normalize((V2 - V1) × (V1 - V3)). On the last row and
+/// `calculateNormal(matrix)`: at point V1 = `m[i][j]`, with V2 = `m[i][j+1]` (next column) and
+/// V3 = `m[i+1][j]` (next row), the normal is normalize((V2 - V1) × (V1 - V3)). On the last row and
 /// column the neighbours are taken on the other side, keeping the same orientation. The matrix
 /// is square, as [`create_matrix`] makes it; a point whose neighbours a ragged matrix lacks keeps
 /// its normal.
