@@ -116,6 +116,8 @@ impl Comparison {
     /// largest channel difference grows, magnified [`HEAT_GAIN`] times (saturating).
     pub fn heat_map(&self) -> RgbaImage {
         let w = self.area_width;
+        // `compare` pushes one value per pixel of the w x h area, row by row.
+        debug_assert!(w == 0 || self.per_pixel.len() % w as usize == 0);
         let h = if w == 0 {
             0
         } else {

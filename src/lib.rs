@@ -10,6 +10,7 @@
 //! Start with [`Context::new`], then call GL entry points as methods: `glNormal3f` is
 //! [`Context::normal3f`], constants live in [`gl`]. See `docs/architecture.md`.
 #![warn(missing_docs)]
+#![warn(clippy::undocumented_unsafe_blocks)]
 
 // The front end: validation, state, queries (GL 2.1 chapters 2 to 6).
 pub mod arrays;
@@ -26,7 +27,7 @@ pub mod counts;
 pub mod recording;
 
 // Backends: the CPU pipeline and the real driver.
-pub mod cpu;
+pub(crate) mod cpu;
 #[cfg(feature = "gl")]
 pub mod glbackend;
 

@@ -10,6 +10,8 @@
 //! a CPU `Context` and to the GL backend, and the two `get_error`s must be equal. Both sides run
 //! the same stream, so the state each call meets is the same.
 
+#![cfg(feature = "gl")]
+
 use fixedgl::commands::{Command, COMMANDS};
 use fixedgl::recording::read_recording;
 use fixedgl::{gl, Call, Context};

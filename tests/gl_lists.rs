@@ -144,9 +144,10 @@ fn attribute_stacks_restore_on_the_driver_as_on_the_cpu() {
 fn gen_lists_hands_out_the_names_the_driver_does() {
     let Some(gl) = backend(4, 4) else { return };
     let mut cpu = Context::new(4, 4).expect("context");
-    let raw = gl.raw();
-    // SAFETY: plain driver calls, no pointers.
+    // SAFETY: plain driver calls on the backend's current context, no pointers; nothing else
+    // runs between raw() and them.
     let driver = unsafe {
+        let raw = gl.raw();
         let a = raw.GenLists(3);
         raw.DeleteLists(a, 3);
         let b = raw.GenLists(2);

@@ -23,11 +23,7 @@
 //! **Runs.** `soak_ci` (in `cargo test`) runs [`CI_CALLS`] calls; `cargo test --profile ci --
 //! --ignored soak` also runs `soak_10m`, 10 million. Environment: `FIXEDGL_SOAK_SEED` (base seed),
 //! `FIXEDGL_SOAK_CALLS` (total calls), `FIXEDGL_SOAK_BATCH=<seed>` (run that one batch only),
-//! `FIXEDGL_SOAK_TRACE=1` (print every call before it runs: for a hang),
-//! `FIXEDGL_SOAK_NO_FILTERS=1` (run the calls the known-bug filters skip).
-//!
-//! **Known bugs** being fixed elsewhere are skipped by [`known_bug`], one named filter each; the
-//! run prints how many calls each filter skipped.
+//! `FIXEDGL_SOAK_TRACE=1` (print every call before it runs: for a hang).
 
 use std::collections::VecDeque;
 use std::fmt;
@@ -1184,35 +1180,6 @@ impl Driver {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Known bugs being fixed elsewhere: one narrow, named filter each
-
-/// The name of the known-bug filter that skips `call`, if one does. Each is a bug being fixed on
-/// another branch; remove its filter once that fix is merged.
-fn known_bug(call: &Call) -> Option<&'static str> {
-    // cpu/texture.rs: sampling clamps the LOD with `f32::clamp(min_lod, max_lod)`, which panics
-    // when MIN_LOD > MAX_LOD or either is NaN. Kept: MIN_LOD in [-1000, 0], MAX_LOD in [0, 1000]
-    // (the defaults are -1000 and 1000), which can never cross.
-    let lod = match *call {
-        Call::TexParameterf(_, pname, v) => Some((pname, Some(v))),
-        Call::TexParameteri(_, pname, v) => Some((pname, Some(v as f32))),
-        Call::TexParameterfv(_, pname, ref v) => Some((pname, v.first().copied())),
-        Call::TexParameteriv(_, pname, ref v) => Some((pname, v.first().map(|&v| v as f32))),
-        _ => None,
-    };
-    if let Some((pname, Some(v))) = lod {
-        let bad = match pname {
-            gl::TEXTURE_MIN_LOD => !(-1000.0..=0.0).contains(&v),
-            gl::TEXTURE_MAX_LOD => !(0.0..=1000.0).contains(&v),
-            _ => false,
-        };
-        if bad {
-            return Some("KNOWN_BUG_LOD_CLAMP");
-        }
-    }
-    None
-}
-
-// ---------------------------------------------------------------------------------------------
 // The oracle
 
 /// State equality where NaN equals NaN (a NaN a valid call stored must not fail the check).
@@ -1492,14 +1459,9 @@ impl Oracle {
 
 /// `read_pixels` with random arguments (sizes with the extremes, any format and type, a buffer
 /// of any length up to what the request needs): a GL error code, no change of state, in time.
-fn read_pixels_probe(ctx: &mut Context, gen: &mut Gen, filters: bool) -> Result<(), String> {
+fn read_pixels_probe(ctx: &mut Context, gen: &mut Gen) -> Result<(), String> {
     let int = |gen: &mut Gen| gen.signed(i32::MIN.into(), i32::MAX.into()) as i32;
     let (x, y, w, h) = (int(gen), int(gen), int(gen), int(gen));
-    // Known bug KNOWN_BUG_READ_PIXELS_SIZE (context/readback.rs): the size computation overflows
-    // (a hang with overflow checks off); sizes over 4096 are skipped.
-    if filters && (w > 4096 || h > 4096) {
-        return Ok(());
-    }
     let (format, ty) = (gen.u32_value(), gen.u32_value());
     let need = w.clamp(0, 64) as usize * h.clamp(0, 64) as usize * 16;
     let mut out = vec![0u8; gen.rng.below(need as u64 + 2) as usize];
@@ -1615,7 +1577,6 @@ fn shortest_failing_tail(calls: &[Call], panic: bool) -> Vec<Call> {
 #[derive(Default)]
 struct BatchStats {
     calls: u64,
-    skipped: Vec<(&'static str, u64)>,
     slowest: Duration,
     /// Whether the batch ended before its count (over `MAX_NAMES` object names).
     ended_early: bool,
@@ -1624,10 +1585,14 @@ struct BatchStats {
 /// Texture and buffer names the state holds.
 fn object_names(ctx: &Context) -> usize {
     let s = ctx.state();
-    s.textures.names.len()
-        + s.textures.objects.len()
-        + s.arrays.reserved.len()
-        + s.arrays.buffers.len()
+    let names = s
+        .textures
+        .names
+        .len()
+        .saturating_add(s.arrays.reserved.len());
+    usize::try_from(names)
+        .unwrap_or(usize::MAX)
+        .saturating_add(s.textures.objects.len() + s.arrays.buffers.len())
 }
 
 /// Progress the watchdog reads: the running batch's seed and its calls run so far.
@@ -1642,7 +1607,6 @@ struct Progress {
 /// failing tail.
 fn run_batch(seed: u64, n: usize, progress: &Progress, trace: bool) -> Result<BatchStats, String> {
     progress.seed.store(seed, Ordering::Relaxed);
-    let filters = std::env::var_os("FIXEDGL_SOAK_NO_FILTERS").is_none();
     let mut driver = Driver::new(seed);
     let mut ctx = Context::new(SIDE, SIDE).expect("context");
     ctx.start_recording();
@@ -1664,13 +1628,6 @@ fn run_batch(seed: u64, n: usize, progress: &Progress, trace: bool) -> Result<Ba
             if !oracle.allowed(&call) {
                 continue;
             }
-            if let Some(filter) = known_bug(&call).filter(|_| filters) {
-                match stats.skipped.iter_mut().find(|(f, _)| *f == filter) {
-                    Some((_, count)) => *count += 1,
-                    None => stats.skipped.push((filter, 1)),
-                }
-                continue;
-            }
             if trace {
                 eprintln!("soak trace: batch {seed:#x} call #{}: {call:?}", run.len());
             }
@@ -1682,7 +1639,7 @@ fn run_batch(seed: u64, n: usize, progress: &Progress, trace: bool) -> Result<Ba
             progress.calls.fetch_add(1, Ordering::Relaxed);
             if driver.rng().percent(1) {
                 // glReadPixels is a query, not a `Call`: probed here, not recorded.
-                if let Err(message) = read_pixels_probe(&mut ctx, &mut driver.gen, filters) {
+                if let Err(message) = read_pixels_probe(&mut ctx, &mut driver.gen) {
                     return Err(format!("after call #{}: {message}", run.len() - 1));
                 }
             }
@@ -1830,7 +1787,6 @@ fn soak(total: u64, default_seed: u64) {
     let rss0 = peak_rss_kib();
     let t0 = Instant::now();
     let mut done = 0u64;
-    let mut skipped: Vec<(&'static str, u64)> = Vec::new();
     let mut slowest = Duration::ZERO;
     let mut batch = 0u64;
     let mut ended_early = 0u64;
@@ -1842,12 +1798,6 @@ fn soak(total: u64, default_seed: u64) {
         done += stats.calls;
         slowest = slowest.max(stats.slowest);
         ended_early += u64::from(stats.ended_early);
-        for (filter, count) in stats.skipped {
-            match skipped.iter_mut().find(|(f, _)| *f == filter) {
-                Some((_, c)) => *c += count,
-                None => skipped.push((filter, count)),
-            }
-        }
         batch += 1;
         if only.is_some() {
             break;
@@ -1861,9 +1811,6 @@ fn soak(total: u64, default_seed: u64) {
         done as f64 / secs,
         peak_rss_kib()
     );
-    for (filter, count) in skipped {
-        eprintln!("soak: known-bug filter {filter} skipped {count} calls");
-    }
 }
 
 /// Every variant of `Call` is generated: the enumeration comes from serde, not from a list.

@@ -279,54 +279,6 @@ fn a_textured_quad_reads_back_the_texels() {
 }
 
 #[test]
-fn texgen_modes_follow_section_2_11_4() {
-    use fixedgl::cpu::texgen::TexGen;
-    use glam::{Vec3, Vec4};
-    let mut gl = ctx();
-    gl.enable(TEXTURE_GEN_S);
-    gl.enable(TEXTURE_GEN_T);
-    gl.tex_geni(S, TEXTURE_GEN_MODE, OBJECT_LINEAR as i32);
-    gl.tex_genfv(S, OBJECT_PLANE, &[1.0, 2.0, 3.0, 4.0]);
-    // EYE_LINEAR for T, the plane (0, 0, 1, 0) given under a translation by (0, 0, -5):
-    // stored as (0, 0, 1, 5), so the eye point (0, 0, -5, 1) gives t = -5 + 5 = 0.
-    gl.translatef(0.0, 0.0, -5.0);
-    gl.tex_genfv(T, EYE_PLANE, &[0.0, 0.0, 1.0, 0.0]);
-    let g = TexGen::new(gl.state(), 0).expect("texgen on");
-    let tc = Vec4::new(7.0, 7.0, 7.0, 1.0);
-    let out = g.apply(tc, Vec4::ONE, Vec4::new(0.0, 0.0, -5.0, 1.0), Vec3::Z);
-    // s = 1 + 2 + 3 + 4; t = 0; r and q not generated keep the current values.
-    assert_eq!(out, Vec4::new(10.0, 0.0, 7.0, 1.0));
-
-    // SPHERE_MAP: u = (0, 0, -1), n = (1, 0, 1)/√2: r = u - 2n(n·u) = (1, 0, 0),
-    // m = 2·sqrt(1 + 0 + 1) = 2√2, s = 1/(2√2) + 1/2, t = 0 + 1/2.
-    gl.tex_geni(S, TEXTURE_GEN_MODE, SPHERE_MAP as i32);
-    gl.tex_geni(T, TEXTURE_GEN_MODE, SPHERE_MAP as i32);
-    let g = TexGen::new(gl.state(), 0).expect("texgen on");
-    let n = Vec3::new(1.0, 0.0, 1.0).normalize();
-    let eye = Vec4::new(0.0, 0.0, -1.0, 1.0);
-    let out = g.apply(tc, Vec4::ONE, eye, n);
-    let s_want = 1.0 / (2.0 * 2f32.sqrt()) + 0.5;
-    assert!((out.x - s_want).abs() < 1e-6 && (out.y - 0.5).abs() < 1e-6);
-    // REFLECTION_MAP gives r itself, NORMAL_MAP the normal.
-    gl.enable(TEXTURE_GEN_R);
-    for c in [S, T, R] {
-        gl.tex_geni(c, TEXTURE_GEN_MODE, REFLECTION_MAP as i32);
-    }
-    let out = TexGen::new(gl.state(), 0)
-        .expect("on")
-        .apply(tc, Vec4::ONE, eye, n);
-    assert!((out - Vec4::new(1.0, 0.0, 0.0, 1.0)).abs().max_element() < 1e-6);
-    for c in [S, T, R] {
-        gl.tex_geni(c, TEXTURE_GEN_MODE, NORMAL_MAP as i32);
-    }
-    let out = TexGen::new(gl.state(), 0)
-        .expect("on")
-        .apply(tc, Vec4::ONE, eye, n);
-    assert!((out - n.extend(1.0)).abs().max_element() < 1e-6);
-    assert_eq!(gl.get_error(), NO_ERROR);
-}
-
-#[test]
 fn object_linear_texgen_textures_a_quad_like_explicit_coordinates() {
     // s = x/2 + 1/2, t = y/2 + 1/2 over the quad [-1, 1]²: the same texels as full_quad's.
     let mut gl = ctx();

@@ -38,7 +38,7 @@ pub const EXTENSIONS: &str = "GL_WIN_phong_shading";
 
 /// How a state value converts to the type a getter asks for (GL 2.1 §6.1.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
+enum Conversion {
     /// Boolean state, held as 0 or 1.
     Bool,
     /// Integer or enumerated state, held exactly.
@@ -53,14 +53,14 @@ enum Kind {
 /// One pname's answer: `len` values of one kind.
 #[derive(Clone, Copy, Debug)]
 struct Value {
-    kind: Kind,
+    kind: Conversion,
     len: usize,
     v: [f64; 16],
 }
 
 impl Value {
     /// The first (at most 16) of `values`, converted to f64 (exact from f32, i32 and u32).
-    fn new<T: Into<f64>>(kind: Kind, values: impl IntoIterator<Item = T>) -> Value {
+    fn new<T: Into<f64>>(kind: Conversion, values: impl IntoIterator<Item = T>) -> Value {
         let mut v = [0.0; 16];
         let mut len = 0;
         for (slot, x) in v.iter_mut().zip(values) {
@@ -79,25 +79,25 @@ fn b(x: bool) -> Value {
     bools([x])
 }
 fn bools<const N: usize>(x: [bool; N]) -> Value {
-    Value::new(Kind::Bool, x.map(u8::from))
+    Value::new(Conversion::Bool, x.map(u8::from))
 }
 fn i(x: i32) -> Value {
-    Value::new(Kind::Int, [x])
+    Value::new(Conversion::Int, [x])
 }
 fn ints<const N: usize>(x: [i32; N]) -> Value {
-    Value::new(Kind::Int, x)
+    Value::new(Conversion::Int, x)
 }
 fn e(x: u32) -> Value {
-    Value::new(Kind::Int, [x])
+    Value::new(Conversion::Int, [x])
 }
 fn f(x: f32) -> Value {
-    Value::new(Kind::Float, [x])
+    Value::new(Conversion::Float, [x])
 }
 fn floats<const N: usize>(x: [f32; N]) -> Value {
-    Value::new(Kind::Float, x)
+    Value::new(Conversion::Float, x)
 }
 fn norm<const N: usize>(x: [f32; N]) -> Value {
-    Value::new(Kind::Normalized, x)
+    Value::new(Conversion::Normalized, x)
 }
 fn matrix(s: &MatrixStack, transpose: bool) -> Value {
     let m = if transpose {
@@ -114,13 +114,13 @@ fn normalized_to_int(x: f64) -> i32 {
     (((u32::MAX as f64) * x - 1.0) / 2.0) as i32
 }
 
-fn to_int(kind: Kind, x: f64) -> i32 {
+fn to_int(kind: Conversion, x: f64) -> i32 {
     match kind {
         // Held exactly, from an i32 or a u32 enum below 2^31.
-        Kind::Bool | Kind::Int => x as i32,
+        Conversion::Bool | Conversion::Int => x as i32,
         // Saturating: a value too large for GLint returns the nearest one (GL 2.1 §6.1.2).
-        Kind::Float => x.round() as i32,
-        Kind::Normalized => normalized_to_int(x),
+        Conversion::Float => x.round() as i32,
+        Conversion::Normalized => normalized_to_int(x),
     }
 }
 
@@ -152,7 +152,7 @@ impl Context {
             gl::TEXTURE_STACK_DEPTH => i(tex_stack.depth() as i32),
             gl::MATRIX_MODE => e(s.matrix_mode),
             gl::VIEWPORT => ints(s.viewport),
-            gl::DEPTH_RANGE => Value::new(Kind::Normalized, s.depth_range),
+            gl::DEPTH_RANGE => Value::new(Conversion::Normalized, s.depth_range),
             gl::ACTIVE_TEXTURE => e(gl::TEXTURE0 + unit as u32),
             gl::CLIENT_ACTIVE_TEXTURE => e(gl::TEXTURE0 + s.client_active_texture as u32),
             // Colouring and lighting (tables 6.8, 6.9).
@@ -179,7 +179,7 @@ impl Context {
             // fragment ops: masks are unsigned; past i32::MAX GetIntegerv saturates (§6.1.2).
             gl::STENCIL_WRITEMASK => e(s.stencil_writemask),
             gl::COLOR_CLEAR_VALUE => norm(s.clear_color.to_array()),
-            gl::DEPTH_CLEAR_VALUE => Value::new(Kind::Normalized, [s.clear_depth]),
+            gl::DEPTH_CLEAR_VALUE => Value::new(Conversion::Normalized, [s.clear_depth]),
             gl::STENCIL_CLEAR_VALUE => i(s.clear_stencil),
             // Pixel store (table 6.24).
             gl::PACK_ALIGNMENT => i(s.pack_alignment),
@@ -312,7 +312,7 @@ impl Context {
 
     /// The shared body of the four getters: Begin/End check, table lookup, length check, and
     /// the conversion `conv` into `out`.
-    fn get_into<T>(&mut self, pname: u32, out: &mut [T], conv: impl Fn(Kind, f64) -> T) {
+    fn get_into<T>(&mut self, pname: u32, out: &mut [T], conv: impl Fn(Conversion, f64) -> T) {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
@@ -456,7 +456,7 @@ impl Context {
 
 /// Writes `value` into `out` through `conv`, or raises INVALID_VALUE and writes nothing when
 /// `out` is too short.
-fn write<T>(ctx: &mut Context, value: Value, out: &mut [T], conv: impl Fn(Kind, f64) -> T) {
+fn write<T>(ctx: &mut Context, value: Value, out: &mut [T], conv: impl Fn(Conversion, f64) -> T) {
     if out.len() < value.len {
         return ctx.error(gl::INVALID_VALUE);
     }

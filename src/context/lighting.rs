@@ -85,6 +85,9 @@ impl Context {
     /// `ColorMaterial` selected (GL 2.1 §2.14.3: they track the current colour at all times).
     pub(crate) fn track_color_material(&mut self) {
         let c = self.state.current.color.to_array();
+        // ColorMaterial validated both before storing them (and the initial values are valid).
+        debug_assert!(faces(self.state.color_material_face).is_some());
+        debug_assert!(!tracked(self.state.color_material_mode).is_empty());
         let faces = faces(self.state.color_material_face).unwrap_or(&[]);
         for &pname in tracked(self.state.color_material_mode) {
             for &f in faces {
@@ -128,6 +131,7 @@ impl Context {
         // While COLOR_MATERIAL is on, the tracked parameters follow the current colour "at all
         // times" (§2.14.3), so a Material call does not change them (as Mesa does).
         let color_material = self.state.enables.color_material;
+        debug_assert!(faces(self.state.color_material_face).is_some());
         let tracked_faces = faces(self.state.color_material_face).unwrap_or(&[]);
         let tracked_pnames = tracked(self.state.color_material_mode);
         let pnames: &[u32] = if pname == gl::AMBIENT_AND_DIFFUSE {

@@ -277,8 +277,7 @@ impl Context {
 
     /// Executes every call of `calls` in order.
     pub fn replay(&mut self, calls: &[Call]) {
-        for (i, call) in calls.iter().enumerate() {
-            prefetch(calls.as_ptr().wrapping_add(i + PREFETCH_CALLS));
+        for call in calls {
             self.execute(call);
         }
     }
@@ -295,26 +294,6 @@ impl Context {
         let mut out = vec![0; names.len()];
         self.gen_buffers(n, &mut out);
     }
-}
-
-/// How far ahead of the call being executed `replay` asks for the stream, in calls (2.5 KiB).
-/// A frame of the 400x400 surface is 64 MB of calls: without the hint the front end waits on
-/// their loads (gauss-smooth-400 front end ~10.1 ms → ~8.8 ms with it).
-const PREFETCH_CALLS: usize = 64;
-
-/// Hints the CPU to start loading the cache line at `p` (x86-64 `prefetcht0`; nothing elsewhere).
-#[inline(always)]
-fn prefetch(p: *const Call) {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: `prefetcht0` only hints the cache: it never faults and has no architectural
-    // effect, whatever the address (past the end of the slice included: `wrapping_add` made
-    // it without undefined behaviour, and it is never dereferenced).
-    unsafe {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        _mm_prefetch::<_MM_HINT_T0>(p.cast::<i8>());
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = p;
 }
 
 impl State {
@@ -389,7 +368,8 @@ pub use lists::MAX_LIST_NESTING;
 pub(crate) use lists::{name_offset, name_size};
 // Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
 mod fragment;
-// Objects, images, parameters (context/texture.rs, context/texture_params.rs)
-pub mod texture;
+// Objects, images, parameters (context/texture.rs, context/texture_params.rs); the GL backend
+// shares TexImage2D's argument checks.
+pub(crate) mod texture;
 mod texture_coords;
 mod texture_params;

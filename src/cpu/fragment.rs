@@ -13,7 +13,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::fragops::{compare, Combine, Ops};
+use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_PHONG};
 use super::vertex::Lighting;
@@ -213,13 +213,13 @@ impl FragCtx<'_> {
             return;
         }
         let src = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
-        let px = match ops.combine {
-            Combine::Replace => src,
-            Combine::Blend(b) => match bufs.color.get(i) {
+        let px = match ops.write {
+            ColorWrite::Replace => src,
+            ColorWrite::Blend(b) => match bufs.color.get(i) {
                 Some(&d) => b.apply(src, d),
                 None => return,
             },
-            Combine::Logic(op) => match bufs.color.get(i) {
+            ColorWrite::Logic(op) => match bufs.color.get(i) {
                 Some(&d) => std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k])),
                 None => return,
             },

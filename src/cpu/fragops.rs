@@ -2,6 +2,10 @@
 //! stencil test (§4.1.5), blending (§4.1.8) and the logical operation (§4.1.10), as pure
 //! functions over one fragment, plus [`Ops`], their state for one flush.
 //!
+//! Naming: the per-flush forms of GL state blocks end in `Eval` ([`FogEval`] is `state::Fog`
+//! ready for fragments, [`BlendEval`] is `state::Blend` in unorm8), so they never share a name
+//! with the state they come from; see the `cpu` module docs.
+//!
 //! Design decision: where GL leaves the arithmetic open, it is llvmpipe's, because the project's
 //! promise is agreement with that driver: the alpha test compares alpha and reference quantised
 //! to unorm8 (the colour buffer's precision), and blending runs on unorm8 values, every
@@ -17,7 +21,7 @@ use crate::state::{State, StencilFace, BACK, FRONT};
 
 /// Fog (§3.10): the mode's parameters and colour.
 #[derive(Clone, Copy, Debug)]
-pub struct Fog {
+pub struct FogEval {
     /// LINEAR, EXP or EXP2.
     pub mode: u32,
     /// FOG_DENSITY.
@@ -30,7 +34,7 @@ pub struct Fog {
     pub color: Vec3,
 }
 
-impl Fog {
+impl FogEval {
     /// The fog factor f for fog coordinate `c`, clamped to [0, 1] (§3.10 eqs. 3.22–3.24).
     #[inline]
     pub fn factor(&self, c: f32) -> f32 {
@@ -108,7 +112,7 @@ impl StencilSide {
 
 /// Blending (§4.1.8) with the constant colour already in unorm8.
 #[derive(Clone, Copy, Debug)]
-pub struct Blend {
+pub struct BlendEval {
     /// Source and destination factors for RGB and for alpha.
     pub src_rgb: u32,
     /// See `src_rgb`.
@@ -127,11 +131,11 @@ pub struct Blend {
 
 /// What the colour write does with the fragment and the stored colour.
 #[derive(Clone, Copy, Debug)]
-pub enum Combine {
+pub enum ColorWrite {
     /// Replace (no blending, no logic op).
     Replace,
     /// Blend (§4.1.8).
-    Blend(Blend),
+    Blend(BlendEval),
     /// Logical operation (§4.1.10): takes precedence over blending.
     Logic(u32),
 }
@@ -140,13 +144,13 @@ pub enum Combine {
 #[derive(Clone, Copy, Debug)]
 pub struct Ops {
     /// Fog, when FOG is enabled.
-    pub fog: Option<Fog>,
+    pub fog: Option<FogEval>,
     /// Alpha test `(func, reference in unorm8)`, when ALPHA_TEST is enabled.
     pub alpha: Option<(u32, u8)>,
     /// Stencil `[front, back]`, when STENCIL_TEST is enabled.
     pub stencil: Option<[StencilSide; 2]>,
     /// The colour write.
-    pub combine: Combine,
+    pub write: ColorWrite,
 }
 
 impl Ops {
@@ -157,7 +161,7 @@ impl Ops {
             return None;
         }
         let f = &state.fog;
-        let fog = e.fog.then_some(Fog {
+        let fog = e.fog.then_some(FogEval {
             mode: f.mode,
             density: f.density,
             start: f.start,
@@ -175,11 +179,11 @@ impl Ops {
             ]
         });
         let b = &state.blend;
-        let combine = if e.color_logic_op {
-            Combine::Logic(state.logic_op)
+        let write = if e.color_logic_op {
+            ColorWrite::Logic(state.logic_op)
         } else if e.blend {
             let c = b.color;
-            Combine::Blend(Blend {
+            ColorWrite::Blend(BlendEval {
                 src_rgb: b.src_rgb,
                 dst_rgb: b.dst_rgb,
                 src_alpha: b.src_alpha,
@@ -189,13 +193,13 @@ impl Ops {
                 constant: [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)],
             })
         } else {
-            Combine::Replace
+            ColorWrite::Replace
         };
         Some(Ops {
             fog,
             alpha,
             stencil,
-            combine,
+            write,
         })
     }
 }
@@ -280,7 +284,7 @@ pub fn equation(eq: u32, s: u8, d: u8, sf: u8, df: u8) -> u8 {
     }
 }
 
-impl Blend {
+impl BlendEval {
     /// The blended colour of source `s` over destination `d` (§4.1.8).
     #[inline]
     pub fn apply(&self, s: [u8; 4], d: [u8; 4]) -> [u8; 4] {

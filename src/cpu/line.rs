@@ -9,7 +9,7 @@
 //! along the major axis only (so a wide line is constant across), perspective-correct (eq. 3.10);
 //! window z linearly.
 
-use super::setup::{geom, Kind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV, SNAP_LIMIT};
+use super::setup::{geom, PrimKind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV, SNAP_LIMIT};
 
 /// GL window coordinates have y up, so the fill rule's "top" edge is llvmpipe's bottom edge
 /// (its `bottom_edge_rule` for a y-up framebuffer).
@@ -223,7 +223,7 @@ impl Worker {
             }
             let (za, zb) = ((a.z + off) as f32, (b.z + off) as f32);
             self.push(RPrim {
-                kind: Kind::Tri,
+                kind: PrimKind::Tri,
                 flags: flags | if flat { F_FLAT } else { 0 },
                 bbox: g.bbox,
                 mat,

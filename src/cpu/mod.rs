@@ -26,6 +26,14 @@
 //! access wait for it first, so the draws happen one after the other in call order and the
 //! pixels are exactly those of drawing in place (tested in `tests/overlap.rs` under this
 //! module). A caller running on the pool itself draws in place.
+//!
+//! Naming: the state (`crate::state`, `crate::texture`) is named after GL's state blocks
+//! (`Fog`, `Blend`, `TexGen`, `Combine`); what this module derives from it when a batch is
+//! drawn never reuses those names. The per-flush form of one state block, ready for the
+//! per-vertex or per-fragment code, ends in `Eval` (`fragops::FogEval`, `fragops::BlendEval`,
+//! `texgen::TexGenEval`); constants gathered for a whole stage end in `Ctx` (`SetupCtx`,
+//! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
+//! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
 pub mod assembly;
 pub mod batch;
@@ -155,6 +163,8 @@ impl Plan {
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     /// Aborts if the framebuffer cannot be allocated, as `vec!` does; see [`Renderer::try_new`].
+    /// For tests: the library builds renderers with `try_new`.
+    #[cfg(test)]
     pub fn new(width: u32, height: u32) -> Self {
         Self::with_core(Box::new(Core::new(width, height)), width, height)
     }
@@ -329,6 +339,7 @@ impl Renderer {
     }
 
     /// The colour buffer as bottom-up rows, `width * height` pixels.
+    #[cfg(test)]
     pub fn color(&mut self) -> Vec<[u8; 4]> {
         self.core().fb.color_rows()
     }
@@ -359,6 +370,7 @@ impl Renderer {
 }
 
 impl Core {
+    #[cfg(test)]
     fn new(width: u32, height: u32) -> Self {
         Core {
             fb: Framebuffer::new(width, height),

@@ -10,8 +10,8 @@
 use super::assembly::Asm;
 use super::clip::MAX_POLY;
 use super::setup::{
-    geom, offset, Kind, RPrim, SetupCtx, WVert, Win, Worker, COVER_KNOWN, F_BACK, F_FLAT, F_PHONG,
-    MAXV,
+    geom, offset, PrimKind, RPrim, SetupCtx, WVert, Win, Worker, COVER_KNOWN, F_BACK, F_FLAT,
+    F_PHONG, MAXV,
 };
 use crate::gl;
 
@@ -274,7 +274,7 @@ impl Worker {
         self.pool.extend([x, y, size]);
         self.pool.extend_from_slice(&a.v[..ctx.rl.n]);
         self.push(RPrim {
-            kind: Kind::Point,
+            kind: PrimKind::Point,
             flags,
             bbox,
             mat,

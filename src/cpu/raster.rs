@@ -11,7 +11,7 @@
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
-use super::setup::{Kind, RPrim, COVER_KNOWN};
+use super::setup::{PrimKind, RPrim, COVER_KNOWN};
 
 /// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
 pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
@@ -25,8 +25,8 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
     }
     let data = pool.get(p.voff as usize..).unwrap_or(&[]);
     match p.kind {
-        Kind::Tri => tri(ctx, bufs, p, data, [x0, y0, x1, y1]),
-        Kind::Point => {
+        PrimKind::Tri => tri(ctx, bufs, p, data, [x0, y0, x1, y1]),
+        PrimKind::Point => {
             let v = data.get(3..3 + ctx.rl.n).unwrap_or(&[]);
             for y in y0..=y1 {
                 for x in x0..=x1 {

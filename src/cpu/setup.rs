@@ -89,7 +89,7 @@ impl RLayout {
 
 /// What kind of rasterised primitive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
+pub enum PrimKind {
     /// A filled triangle (also half of a line's parallelogram).
     Tri,
     /// A point.
@@ -110,7 +110,7 @@ pub const COVER_KNOWN: u8 = 0x10;
 #[derive(Clone, Copy, Debug)]
 pub struct RPrim {
     /// Triangle, line or point.
-    pub kind: Kind,
+    pub kind: PrimKind,
     /// `F_*` bits.
     pub flags: u8,
     /// Pixel bounding box `[x0, y0, x1, y1]`, inclusive, inside the framebuffer and scissor.
@@ -636,7 +636,7 @@ impl Worker {
             }
         }
         self.push(RPrim {
-            kind: Kind::Tri,
+            kind: PrimKind::Tri,
             flags,
             bbox,
             mat,

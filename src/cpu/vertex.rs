@@ -1,10 +1,10 @@
 //! The vertex stage: modelview and projection transforms, the normal transform with
 //! RESCALE_NORMAL / NORMALIZE, and the GL 1.x lighting equation (GL 2.1 §2.11, §2.14.1).
 //!
-//! Design decision: `Lighting::shade_block` is the one implementation of the lighting equation,
+//! Design decision: `Lighting::eval` is the one implementation of the lighting equation,
 //! generic over its number of lanes and written on a structure of arrays so that the compiler
-//! vectorises it; the vertex stage calls it for blocks of `LANES` vertices and the PHONG_WIN
-//! fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
+//! vectorises it; the vertex stage calls it for blocks of `LANES` vertices (`shade_lanes`) and the
+//! PHONG_WIN fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
 //! never disagree about the equation, down to the bits. The vertex stage makes one pass per block:
 //! it transforms the block's positions and normals on arrays, computes the window coordinates
 //! and clip codes (`SetupCtx::win_block`) while the clip positions are in hand, then lights the
@@ -228,6 +228,10 @@ impl Lighting {
     /// finite power, which N·H <= 1 guarantees), and when the power is provably too small to
     /// change any bit of the colour it is added to (see `negligible`); the specular term is then
     /// computed from a power of 0, as where N·L <= 0.
+    ///
+    /// The stage itself calls the same body through [`Lighting::shade_lanes`] (results left on
+    /// arrays) and [`Lighting::shade`] (one point); this form is what the tests compare them with.
+    #[cfg(test)]
     pub fn shade_block<const N: usize>(
         &self,
         m: &Material,
@@ -553,9 +557,11 @@ impl Lit<'_> {
             || l.fog.is_some()
             || l.raw.is_some();
         let tex_matrix = *state.texture_matrix[0].top();
-        let texgen = l.tex.and_then(|_| super::texgen::TexGen::new(state, 0));
+        let texgen = l.tex.and_then(|_| super::texgen::TexGenEval::new(state, 0));
         let tex_matrix1 = *state.texture_matrix[1].top();
-        let texgen1 = l.tex1.and_then(|_| super::texgen::TexGen::new(state, 1));
+        let texgen1 = l
+            .tex1
+            .and_then(|_| super::texgen::TexGenEval::new(state, 1));
         // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
         // block, every lane that is read), so they are initialised once.
         let mut lit = Shaded::<LANES>::default();
@@ -702,8 +708,8 @@ impl Lit<'_> {
         p: Vec4,
         nrm: Vec3,
         eye: Vec4,
-        texgen: &Option<super::texgen::TexGen>,
-        texgen1: &Option<super::texgen::TexGen>,
+        texgen: &Option<super::texgen::TexGenEval>,
+        texgen1: &Option<super::texgen::TexGenEval>,
         tex_matrix: &[Mat4; 2],
     ) {
         let l = self.layout;

@@ -60,7 +60,7 @@ impl GlBackend {
     fn arrays_apply(&mut self, a: &mut ArrayState, call: &Call, unit: usize) -> Result<(), u32> {
         use crate::arrays::Attr;
         let gl = &self.raw;
-        // SAFETY (every block below): the context is current; the shadow has validated the call,
+        // Every unsafe block below: the context is current; the shadow has validated the call,
         // so each pointer holds at least the bytes the driver reads: client data, index data and
         // buffer data are as long as the counts and sizes it checked.
         match *call {
@@ -82,6 +82,7 @@ impl GlBackend {
             Call::InterleavedArrays(f, st, ref p) => a.interleaved_arrays(f, st, p, unit)?,
             Call::ArrayElement(i) => {
                 a.check_array_element(i)?;
+                // SAFETY: the shadow checked that index `i` lies inside every enabled array.
                 unsafe { gl.ArrayElement(i) };
                 return Ok(());
             }
@@ -89,6 +90,7 @@ impl GlBackend {
                 // With no array enabled there is nothing to read and nothing to draw.
                 if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources().is_empty() {
                     self.before_begin();
+                    // SAFETY: the shadow checked first + count against every enabled array.
                     unsafe { self.raw.DrawArrays(mode, first, count) };
                 }
                 return Ok(());
@@ -98,6 +100,8 @@ impl GlBackend {
                     && !a.sources().is_empty()
                 {
                     self.before_begin();
+                    // SAFETY: `p` holds `count` indices of `ty` (or is an offset into the bound
+                    // element buffer), each inside every enabled array, as the shadow checked.
                     unsafe { self.raw.DrawElements(mode, count, ty, ptr(p)) };
                 }
                 return Ok(());
@@ -107,6 +111,7 @@ impl GlBackend {
                     .is_some()
                 {
                     self.before_begin();
+                    // SAFETY: as DrawElements: indices and arrays checked by the shadow.
                     unsafe { self.raw.DrawRangeElements(mode, s, e, count, ty, ptr(p)) };
                 }
                 return Ok(());
@@ -118,10 +123,12 @@ impl GlBackend {
             }
             Call::DeleteBuffers(n, ref names) => {
                 a.delete_buffers(n, names)?;
+                // SAFETY: the shadow checked that `names` holds at least `n` names.
                 unsafe { gl.DeleteBuffers(n, names.as_ptr()) };
             }
             Call::BindBuffer(target, name) => {
                 a.bind_buffer(target, name)?;
+                // SAFETY: no pointers.
                 unsafe { gl.BindBuffer(target, name) };
                 return Ok(());
             }
@@ -131,11 +138,14 @@ impl GlBackend {
                     Pointer::Data(_) => ptr(p),
                     Pointer::Offset(_) => std::ptr::null(),
                 };
+                // SAFETY: `data` is null or holds `size` bytes, as the shadow checked.
                 unsafe { gl.BufferData(target, size, data, usage) };
                 return Ok(());
             }
             Call::BufferSubData(target, offset, size, ref p) => {
                 a.buffer_sub_data(target, offset, size, p)?;
+                // SAFETY: `p` holds `size` bytes, and offset + size fits the bound buffer, as
+                // the shadow checked.
                 unsafe { gl.BufferSubData(target, offset, size, ptr(p)) };
                 return Ok(());
             }
@@ -190,6 +200,7 @@ impl GlBackend {
     /// client active unit as they were.
     fn sync_arrays(&self, a: &ArrayState, unit: usize) {
         let gl = &self.raw;
+        // SAFETY: context current; no pointers.
         let enable = |cap: u32, arr: &ClientArray| unsafe {
             if arr.enabled {
                 gl.EnableClientState(cap);

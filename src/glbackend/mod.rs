@@ -99,6 +99,10 @@ impl std::fmt::Debug for GlBackend {
 /// gl.replay(&[fixedgl::Call::Enable(fixedgl::gl::LIGHTING)]);
 /// assert_eq!(gl.get_error(), fixedgl::gl::NO_ERROR);
 /// ```
+///
+/// A helper for this crate's integration tests (which cannot see `pub(crate)`), hidden from the
+/// documentation; applications use [`GlBackend::new`] and handle its error.
+#[doc(hidden)]
 pub fn test_backend(width: u32, height: u32) -> Option<GlBackend> {
     use std::io::Write as _;
     match GlBackend::new(width, height, &DeviceChoice::Auto) {
@@ -246,10 +250,27 @@ impl GlBackend {
         &self.egl.device
     }
 
-    /// The generated driver entry points, for calling the driver directly (every one is
-    /// `unsafe`: the caller vouches for pointer arguments). The backend's Begin/End and
-    /// `PHONG_WIN` tracking does not see such calls.
-    pub fn raw(&self) -> &raw::Gl {
+    /// The generated driver entry points, for calling the driver directly (each is itself
+    /// `unsafe`: the caller vouches for its pointer arguments). Makes this backend's context
+    /// current on the calling thread. The backend's Begin/End, error and `PHONG_WIN` tracking do
+    /// not see such calls.
+    ///
+    /// # Safety
+    ///
+    /// The backend's own methods call the driver with pointers they size from the state they
+    /// expect it to be in; direct calls can change that state under them. For as long as this
+    /// backend is used after calls made through the returned value, the caller guarantees that
+    /// those calls:
+    ///
+    /// - are made on this thread while this backend's context is current: no method of another
+    ///   [`GlBackend`] (which makes its own context current) runs between `raw()` and them;
+    /// - leave no client-array pointer set (`VertexPointer`, `TexCoordPointer`, ...; enabled or
+    ///   not) to memory that may be freed before the backend's next draw, and no pack state
+    ///   besides `PACK_ALIGNMENT` and `PACK_ROW_LENGTH` (which [`GlBackend::read_image`] sets
+    ///   and restores) away from its initial value, nor a buffer bound to `PIXEL_PACK_BUFFER`;
+    /// - do not delete or unbind the backend's framebuffer object or its renderbuffers, and do
+    ///   not leave a `Begin` open or a GLSL program bound.
+    pub unsafe fn raw(&self) -> &raw::Gl {
         self.make_current();
         &self.raw
     }
@@ -308,9 +329,10 @@ impl GlBackend {
     /// SHADE_MODEL reports PHONG_WIN while it is emulated.
     pub fn get_floatv(&mut self, pname: u32, out: &mut [f32]) {
         let sentinels = [f32::from_bits(0x7fc1_2345), f32::from_bits(0x7fd5_4321)];
-        // SAFETY (closure): the buffer has `max_get_values` slots, the most any pname writes.
-        let written = self.get_into(pname, out, sentinels, f32::to_bits, |gl, p, v| unsafe {
-            gl.GetFloatv(p, v)
+        let written = self.get_into(pname, out, sentinels, f32::to_bits, |gl, p, v| {
+            // SAFETY: `get_into` passes a buffer of `max_get_values` slots, the most any pname
+            // writes.
+            unsafe { gl.GetFloatv(p, v) }
         });
         if let (true, Some(first)) = (
             written && pname == gl::SHADE_MODEL && self.phong,
@@ -323,12 +345,12 @@ impl GlBackend {
     /// `glGetIntegerv` (slice rule and SHADE_MODEL as [`GlBackend::get_floatv`]).
     pub fn get_integerv(&mut self, pname: u32, out: &mut [i32]) {
         let sentinels = [0x5a5a_1234, -0x2345_6789];
-        // SAFETY (closure): as in `get_floatv`.
         let written = self.get_into(
             pname,
             out,
             sentinels,
             |v| v as u32,
+            // SAFETY: as in `get_floatv`.
             |gl, p, v| unsafe { gl.GetIntegerv(p, v) },
         );
         if let (true, Some(first)) = (
@@ -342,12 +364,12 @@ impl GlBackend {
     /// `glGetBooleanv` (slice rule as [`GlBackend::get_floatv`]).
     pub fn get_booleanv(&mut self, pname: u32, out: &mut [bool]) {
         let mut bytes = vec![0u8; out.len()];
-        // SAFETY (closure): as in `get_floatv`.
         let written = self.get_into(
             pname,
             &mut bytes,
             [0xa5, 0x5a],
             u32::from,
+            // SAFETY: as in `get_floatv`.
             |gl, p, v| unsafe { gl.GetBooleanv(p, v) },
         );
         if written {
@@ -435,6 +457,8 @@ impl GlBackend {
         for r in pixels.chunks_exact(row.max(1)).rev() {
             top_down.extend_from_slice(r);
         }
+        // Whole rows of the w x h read-back, reversed: exactly one image's bytes.
+        debug_assert_eq!(top_down.len(), w * h * 4);
         RgbaImage::from_raw(self.width, self.height, top_down)
             .unwrap_or_else(|| RgbaImage::new(self.width, self.height))
     }

@@ -12,7 +12,7 @@
 //! With LIGHTING disabled the program is unbound: PHONG_WIN without lighting is plain SMOOTH.
 //!
 //! While it is bound, a fragment shader replaces texturing, the colour sum and fog (GL 2.1 §3.11).
-//! Fog is done again in the program as the CPU pipeline does it (§3.10, `cpu::fragops::Fog`): the
+//! Fog is done again in the program as the CPU pipeline does it (§3.10, `cpu::fragops::FogEval`): the
 //! fog coordinate |z_eye| or |FOG_COORD| per vertex, interpolated, then f per fragment from the
 //! `gl_Fog` built-ins (FOG_MODE, FOG_COORD_SRC and the FOG enable are read back as uniforms).
 //! What the program does not do: texturing and the colour sum with a texture. The interpolated normal is

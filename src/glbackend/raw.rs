@@ -5,6 +5,7 @@
     missing_docs,
     clippy::all,
     clippy::pedantic,
+    clippy::undocumented_unsafe_blocks,
     non_upper_case_globals,
     non_snake_case,
     unused_qualifications,

@@ -75,8 +75,7 @@ impl GlBackend {
     /// INVALID_ENUM for a bad mode) and, having no effect on the emulation, not sent on.
     pub(super) fn hint(&mut self, target: u32, mode: u32) {
         if target != gl::PHONG_HINT_WIN {
-            // SAFETY: the context is current (see `execute`); no pointers.
-            return unsafe { self.raw.Hint(target, mode) };
+            return Safe(&self.raw).hint(target, mode);
         }
         // lists: the driver's list cannot hold this hint; its errors come when the list runs.
         self.list_needs_expansion();

@@ -20,7 +20,7 @@ use crate::{gl, glu, Context, Pointer};
 pub const SCENES: [Scene; 2] = [
     Scene {
         name: "rect-wire",
-        summary: "seed 004 rectangle: two triangles from a VBO and UNSIGNED_BYTE EBO [0,1,3, 1,2,3], \
+        summary: "Vertex arrays: buffer objects — a rectangle of two triangles from a VBO and UNSIGNED_BYTE EBO [0,1,3, 1,2,3], \
                   PolygonMode(FRONT_AND_BACK, LINE)",
         tolerance: LECTURE,
         default_size: (800, 800),
@@ -28,7 +28,7 @@ pub const SCENES: [Scene; 2] = [
     },
     Scene {
         name: "cube-colors",
-        summary: "seed 004 cube: 24 interleaved position+colour vertices in a VBO, UNSIGNED_INT \
+        summary: "Vertex arrays: interleaved arrays — a cube of 24 position+colour vertices in a VBO, UNSIGNED_INT \
                   EBO, scale 1.1, rotate -45 about x and y, gluLookAt + gluPerspective 45, depth test",
         tolerance: LECTURE,
         default_size: (800, 800),

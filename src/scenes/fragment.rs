@@ -380,28 +380,28 @@ fn planar_reflection(gl: &mut Context) {
 pub(super) const SCENES: [Scene; 4] = [
     Scene {
         name: "fog",
-        summary: "an avenue of cubes fogged LINEAR, EXP and EXP2 side by side (Fog, per-fragment |z_eye|)",
+        summary: "Fog: linear and exponential fog — an avenue of cubes fogged LINEAR, EXP and EXP2 side by side (Fog, per-fragment |z_eye|)",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: fog,
     },
     Scene {
         name: "blending",
-        summary: "translucent panels sorted back to front over a lit sphere (BlendFunc SRC_ALPHA, ONE, CONSTANT_ALPHA; DepthMask)",
+        summary: "Blending: transparency — translucent panels sorted back to front over a lit sphere (BlendFunc SRC_ALPHA, ONE, CONSTANT_ALPHA; DepthMask)",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: blending,
     },
     Scene {
         name: "planar-shadow",
-        summary: "seed 001: shadows projected onto the floor, stencil against double blending, blended darkening",
+        summary: "Shadows: planar projection — shadows projected onto the floor, stencil against double blending, blended darkening",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: planar_shadow,
     },
     Scene {
         name: "planar-reflection",
-        summary: "seed 001: objects mirrored in the floor, confined by the stencil buffer, floor blended over them",
+        summary: "Reflections: a planar mirror — objects mirrored in the floor, confined by the stencil buffer, floor blended over them",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: planar_reflection,

@@ -80,11 +80,15 @@ fn normalize(p: [f32; 3]) -> [f32; 3] {
     [p[0] / norm, p[1] / norm, p[2] / norm]
 }
 
-/// `calculateNormal(matrix)`: at point V1 = m[i][j], with V2 = m[i][j+1] (next column) and
-/// V3 = m[i+1][j] (next row), the normal is normalize((V2 - V1) × (V1 - V3)). On the last row and
-/// column the neighbours are taken on the other side, keeping the same orientation.
+/// `calculateNormal(matrix)`: at point V1 = `m[i][j]`, with V2 = `m[i][j+1]` (next column) and
+/// V3 = `m[i+1][j]` (next row), the normal is normalize((V2 - V1) × (V1 - V3)). On the last row and
+/// column the neighbours are taken on the other side, keeping the same orientation. The matrix
+/// is square, as [`create_matrix`] makes it; a point whose neighbours a ragged matrix lacks keeps
+/// its normal.
 pub fn calculate_normal(matrix: &mut [Vec<Cell>]) {
     let n = matrix.len();
+    let point =
+        |m: &[Vec<Cell>], i: usize, j: usize| m.get(i).and_then(|r| r.get(j)).map(|c| c.point);
     for i in 1..n {
         for j in 1..n {
             let (j2, flip_x) = if j + 1 < n {
@@ -97,16 +101,24 @@ pub fn calculate_normal(matrix: &mut [Vec<Cell>]) {
             } else {
                 (i - 1, true)
             };
-            let v1 = matrix[i][j].point;
-            let mut vec1 = sub(matrix[i][j2].point, v1);
-            let mut vec2 = sub(v1, matrix[i3][j].point);
+            let (Some(v1), Some(v2), Some(v3)) = (
+                point(matrix, i, j),
+                point(matrix, i, j2),
+                point(matrix, i3, j),
+            ) else {
+                continue;
+            };
+            let mut vec1 = sub(v2, v1);
+            let mut vec2 = sub(v1, v3);
             if flip_x {
                 vec1 = [-vec1[0], -vec1[1], -vec1[2]];
             }
             if flip_z {
                 vec2 = [-vec2[0], -vec2[1], -vec2[2]];
             }
-            matrix[i][j].normal = normalize(cross(vec1, vec2));
+            if let Some(c) = matrix.get_mut(i).and_then(|r| r.get_mut(j)) {
+                c.normal = normalize(cross(vec1, vec2));
+            }
         }
     }
 }
@@ -187,28 +199,28 @@ pub fn draw(gl: &mut Context, size: usize, shading: Shading) {
 pub(super) const SCENES: [Scene; 4] = [
     Scene {
         name: "gauss-flat-40",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 40x40 cells, FLAT, one normal per cell",
+        summary: "Surface rendering: flat shading — the JOGL Rendering gaussian bump, 40x40 cells, FLAT, one normal per cell",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Flat),
     },
     Scene {
         name: "gauss-smooth-40",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 40x40 cells, SMOOTH (Gouraud), normal per vertex",
+        summary: "Surface rendering: Gouraud shading — the JOGL Rendering gaussian bump, 40x40 cells, SMOOTH, normal per vertex",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Smooth),
     },
     Scene {
         name: "gauss-smooth-400",
-        summary: "seed 000 JOGL Rendering: gaussian bump, 400x400 cells (320k triangles, 1.6M calls), SMOOTH",
+        summary: "Surface rendering: Gouraud shading on a fine mesh — the gaussian bump, 400x400 cells (320k triangles, 1.6M calls), SMOOTH",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 400, Shading::Smooth),
     },
     Scene {
         name: "gauss-phong-40",
-        summary: "seed 000: the 40x40 bump with ShadeModel(PHONG_WIN), per-fragment lighting (the seed's GLSL Phong)",
+        summary: "Surface rendering: Phong shading — the 40x40 bump with ShadeModel(PHONG_WIN), per-fragment lighting (the lecture's GLSL Phong)",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Phong),

@@ -14,7 +14,7 @@ use super::{Scene, LECTURE};
 pub const SCENES: [Scene; 2] = [
     Scene {
         name: "display-list",
-        summary: "a ring of eight lit GLUT solids, each a display list, the ring one list \
+        summary: "Display lists: nested lists — a ring of eight lit GLUT solids, each a display list, the ring one list \
                   calling them through ListBase + CallLists (NewList/CallList/PushAttrib)",
         tolerance: LECTURE,
         default_size: (800, 800),
@@ -22,7 +22,7 @@ pub const SCENES: [Scene; 2] = [
     },
     Scene {
         name: "glut-shapes",
-        summary: "the GLUT solids lit side by side: sphere, cube, cone, torus, teapot",
+        summary: "Modelling: the GLUT solids — lit side by side: sphere, cube, cone, torus, teapot",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: glut_shapes,

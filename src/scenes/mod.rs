@@ -70,7 +70,7 @@ static SCENES: &[Scene] = &[
     Scene {
         name: "triangle",
         summary:
-            "one smooth-shaded triangle with red, green and blue corners (Begin/Color4f/Vertex3f/End)",
+            "Primitives: colour interpolation — one smooth-shaded triangle with red, green and blue corners (Begin/Color4f/Vertex3f/End)",
         tolerance: Tolerance {
             channel: 2,
             max_percent: 0.5,

@@ -144,7 +144,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "primitives",
         summary:
-            "all ten Begin/End modes, a colour per vertex, SMOOTH; 7-pixel points, 3-pixel lines",
+            "Primitives: the ten Begin/End modes — a colour per vertex, SMOOTH; 7-pixel points, 3-pixel lines",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| primitives(gl, SMOOTH),
@@ -152,7 +152,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "primitives-flat",
         summary:
-            "all ten Begin/End modes, a colour per vertex, FLAT: the provoking vertex's colour",
+            "Primitives: flat shading and the provoking vertex — all ten Begin/End modes, a colour per vertex, FLAT: the provoking vertex's colour",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| primitives(gl, FLAT),

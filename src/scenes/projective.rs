@@ -22,7 +22,7 @@ pub const SCENES: [Scene; 2] = [
     Scene {
         name: "projective-texture",
         summary:
-            "checkerboard projected onto spheres on a table: EYE_LINEAR TexGen on S, T, R, Q, \
+            "Texturing: projective texture mapping — checkerboard projected onto spheres on a table: EYE_LINEAR TexGen on S, T, R, Q, \
                   texture matrix = bias · projection · view · inverse camera view, \
                   CLAMP_TO_BORDER, MODULATE over lighting",
         tolerance: Tolerance {
@@ -35,7 +35,7 @@ pub const SCENES: [Scene; 2] = [
     Scene {
         name: "shadow-map",
         summary:
-            "spheres on a table lit by a spot of light, shadows by a depth texture: depth from \
+            "Shadows: shadow mapping — spheres on a table lit by a spot of light, shadows by a depth texture: depth from \
                   the light copied with CopyTexSubImage2D, COMPARE_R_TO_TEXTURE, TexEnv BLEND \
                   dimming what the light does not see",
         tolerance: Tolerance {

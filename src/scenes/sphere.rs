@@ -103,7 +103,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "sphere-subdivision",
         summary:
-            "seed 003 §6.6: tetrahedron subdivided 1, 2, 3 and 5 times (midpoints), gold, SMOOTH",
+            "Modelling: a sphere by recursive subdivision — tetrahedron subdivided 1, 2, 3 and 5 times (midpoints), gold, SMOOTH",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| sphere_subdivision(gl, &[1, 2, 3, 5], Split::Midpoint),
@@ -111,7 +111,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "sphere-param",
         summary:
-            "seed 004: parametric sphere 24x12, lit: SMOOTH, FLAT, PolygonMode LINE, and 96x48",
+            "Modelling: a parametric sphere — 24x12, lit: SMOOTH, FLAT, PolygonMode LINE, and 96x48",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| sphere_param(gl, 24, 12),

@@ -85,7 +85,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "gauss-normalize",
         summary:
-            "seed 000: the SMOOTH 40x40 bump with normals scaled by 3 and glEnable(GL_NORMALIZE)",
+            "Surface rendering: normals of the wrong length — the SMOOTH 40x40 bump with normals scaled by 3 and glEnable(GL_NORMALIZE)",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| gauss_normalize(gl, 3.0),
@@ -93,7 +93,7 @@ pub(super) const SCENES: [Scene; 2] = [
     Scene {
         name: "vertex-color",
         summary:
-            "seed 000: the bump coloured by object position, glColor3f(x, y, z) per vertex, unlit",
+            "Surface rendering: colour per vertex — the bump coloured by object position, glColor3f(x, y, z) per vertex, unlit",
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: vertex_color,

@@ -18,7 +18,7 @@ use super::{Scene, Tolerance};
 /// The scenes of this module.
 pub const SCENES: [Scene; 1] = [Scene {
     name: "textured-cube",
-    summary: "lit cube and floor, mipmapped checkerboard (gluBuild2DMipmaps, REPEAT), \
+    summary: "Texturing: mipmaps and minification filters — lit cube and floor, mipmapped checkerboard (gluBuild2DMipmaps, REPEAT), \
               TexEnv MODULATE, one panel per MIN filter (NEAREST .. LINEAR_MIPMAP_LINEAR)",
     // Not the usual 0.05%: the NEAREST_MIPMAP_NEAREST and NEAREST_MIPMAP_LINEAR panels keep
     // the spec's switch point c = 0.5 (GL 2.1 §3.8.9) where llvmpipe uses 0, 2 027 pixels each

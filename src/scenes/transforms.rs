@@ -148,7 +148,7 @@ pub fn transforms(gl: &mut Context, extras: &[Extra; 4]) {
 /// The scene, as a registry entry.
 pub(super) const SCENES: [Scene; 1] = [Scene {
     name: "transforms",
-    summary: "seed 004: a face-coloured cube, the slide's model (scale, rotate x, rotate y), then translate / scale / rotate",
+    summary: "Geometric transformations: translate, scale, rotate — a face-coloured cube, the slide's model (scale, rotate x, rotate y), then translate / scale / rotate",
     tolerance: LECTURE,
     default_size: (800, 800),
     draw: |gl| transforms(gl, &PANELS),

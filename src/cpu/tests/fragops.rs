@@ -4,7 +4,7 @@
 use glam::{Vec3, Vec4};
 
 use crate::cpu::fragops::{
-    compare, equation, factor, logic_op, mul8, stencil_op, Blend, Fog, StencilSide,
+    compare, equation, factor, logic_op, mul8, stencil_op, BlendEval, FogEval, StencilSide,
 };
 use crate::cpu::framebuffer::unorm8;
 use crate::gl;
@@ -149,7 +149,7 @@ fn every_blend_equation() {
 
 #[test]
 fn alpha_blending_over() {
-    let b = Blend {
+    let b = BlendEval {
         src_rgb: gl::SRC_ALPHA,
         dst_rgb: gl::ONE_MINUS_SRC_ALPHA,
         src_alpha: gl::SRC_ALPHA,
@@ -192,8 +192,8 @@ fn all_sixteen_logic_ops() {
     }
 }
 
-fn fog(mode: u32, density: f32) -> Fog {
-    Fog {
+fn fog(mode: u32, density: f32) -> FogEval {
+    FogEval {
         mode,
         density,
         start: 2.0,
