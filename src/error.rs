@@ -22,6 +22,9 @@ pub enum Error {
         /// The height asked for.
         height: u32,
     },
+    /// `Context::new` could not start the CPU backend's worker threads (rayon's pool): the
+    /// process is out of threads or address space. The message is the system's.
+    Threads(String),
     /// Reading or writing a file failed.
     Io(std::io::Error),
     /// A recording file could not be parsed; `line` and `column` are 1-based and refer to the
@@ -52,6 +55,7 @@ impl fmt::Display for Error {
                 f,
                 "out of memory for a {width}x{height} framebuffer (9 bytes a pixel)"
             ),
+            Error::Threads(m) => write!(f, "cannot start the CPU backend's threads: {m}"),
             Error::Io(e) => write!(f, "I/O error: {e}"),
             Error::Parse {
                 line,

@@ -81,6 +81,9 @@ impl Context {
         if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(Error::InvalidSize { width, height });
         }
+        // The pool the CPU backend draws on starts here, where failing to start threads can be
+        // an `Err`; started lazily at the first draw it could only be a panic.
+        crate::cpu::start_threads().map_err(Error::Threads)?;
         // The framebuffer is the one allocation sized by the caller here: tried, so that a size
         // the machine cannot hold is an `Err`, not an abort.
         let renderer =

@@ -160,6 +160,21 @@ impl Plan {
     }
 }
 
+/// Starts rayon's global pool, which every draw uses, if it is not running yet; `Err` with the
+/// system's message when its threads cannot be created (rayon reports that only by panicking,
+/// on this first use, and never retries: every later use would panic too).
+pub(crate) fn start_threads() -> Result<(), String> {
+    std::panic::catch_unwind(rayon::current_num_threads)
+        .map(|_| ())
+        .map_err(|payload| {
+            payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "rayon's thread pool did not start".to_string())
+        })
+}
+
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     /// Aborts if the framebuffer cannot be allocated, as `vec!` does; see [`Renderer::try_new`].

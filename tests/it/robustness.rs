@@ -423,6 +423,8 @@ mod limited {
         let Ok(exe) = std::env::current_exe() else {
             panic!("no current_exe");
         };
+        // The test's path in the one integration binary (tests/it/main.rs).
+        let name = format!("robustness::{name}");
         let script = format!(
             "ulimit -v {kib} && exec \"$0\" --exact {name} --ignored --test-threads=1 --quiet"
         );

@@ -41,7 +41,7 @@ use serde::de::{
 };
 use serde::Deserialize;
 
-mod common;
+use crate::common;
 
 /// Calls `soak_ci` runs.
 const CI_CALLS: u64 = 1_000_000;
@@ -120,7 +120,7 @@ fn batch_seed(base: u64, i: u64) -> u64 {
 
 /// The generator's error (it never fails on `Call`; serde needs the type).
 #[derive(Debug)]
-struct GenError(String);
+pub(crate) struct GenError(String);
 
 impl fmt::Display for GenError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -138,7 +138,7 @@ impl de::Error for GenError {
 
 /// Random values for any `Deserialize` type made of integers, floats, bools, tuples, sequences,
 /// options and enums: `Call::deserialize(&mut gen)` is a random call.
-struct Gen {
+pub(crate) struct Gen {
     rng: Rng,
     /// `Call`'s variant names, in declaration order, as serde's derive passes them.
     call_variants: &'static [&'static str],
@@ -395,7 +395,7 @@ const SPECIAL_F64: &[f64] = &[
 ];
 
 impl Gen {
-    fn new(seed: u64) -> Gen {
+    pub(crate) fn new(seed: u64) -> Gen {
         let mut gen = Gen {
             rng: Rng(seed),
             call_variants: &[],
@@ -408,12 +408,12 @@ impl Gen {
     }
 
     /// A random call, every variant equally likely.
-    fn any_call(&mut self) -> Call {
+    pub(crate) fn any_call(&mut self) -> Call {
         Call::deserialize(&mut *self).expect("the generator builds every Call")
     }
 
     /// A random call of the variant named `name` (arguments random).
-    fn call_named(&mut self, name: &str) -> Call {
+    pub(crate) fn call_named(&mut self, name: &str) -> Call {
         let i = self.call_variants.iter().position(|v| *v == name);
         self.forced = Some(i.unwrap_or_else(|| panic!("no Call variant {name}")) as u32);
         self.any_call()

@@ -1,0 +1,30 @@
+//! The integration tests: one test binary with a module per feature (as tiny-skia keeps its
+//! `tests/integration`), so that the suite compiles and links the crate's tests once.
+//!
+//! GL-backend modules compare with the real driver (Mesa llvmpipe through EGL): where no EGL device
+//! exists each such test prints `SKIPPED: ...` and returns, and `FIXEDGL_REQUIRE_GL=1` (set by
+//! `.ci/run`) turns that into a failure.
+
+mod common;
+
+mod arrays;
+mod attrib;
+mod error_agreement;
+mod errors;
+mod fragment_gl;
+mod fragment_state;
+mod gl_backend;
+mod gl_lists;
+mod glut;
+mod implementation_choices;
+mod lists;
+mod matrices;
+mod query_errors;
+mod recording;
+mod robustness;
+mod scenes;
+mod soak;
+mod state_initial;
+mod texture;
+mod texture_errors;
+mod texture_gl;
