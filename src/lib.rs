@@ -15,6 +15,7 @@
 // The front end: validation, state, queries (GL 2.1 chapters 2 to 6).
 pub mod arrays;
 pub mod context;
+mod convert;
 mod error;
 pub mod gl;
 pub mod state;

@@ -13,16 +13,12 @@
 
 use glam::Vec4;
 
+use super::vertex::Component;
 use super::Context;
 use crate::call::Call;
 use crate::counts;
 use crate::gl;
 use crate::state::{StencilFace, BACK, FRONT};
-
-/// GL 2.1 table 2.9: a signed 32-bit integer colour component to [-1, 1].
-fn int_to_float(c: i32) -> f32 {
-    ((2.0 * f64::from(c) + 1.0) / f64::from(u32::MAX)) as f32
-}
 
 /// The eight comparison functions (§4.1.4): NEVER..=ALWAYS.
 fn is_func(func: u32) -> bool {
@@ -120,7 +116,7 @@ impl Context {
         let mut p = [0.0; 4];
         for (o, v) in p.iter_mut().zip(params) {
             *o = if pname == gl::FOG_COLOR {
-                int_to_float(*v)
+                v.normalized()
             } else {
                 *v as f32
             };

@@ -111,7 +111,7 @@ fn matrix(s: &MatrixStack, transpose: bool) -> Value {
 /// GL 2.1 table 4.9, GLint row: c = ((2³² − 1)·f − 1) / 2, so 1.0 → 2³¹ − 1 and
 /// −1.0 → −2³¹; outside [−1, 1] the spec leaves the result undefined (here: saturated).
 fn normalized_to_int(x: f64) -> i32 {
-    (((u32::MAX as f64) * x - 1.0) / 2.0) as i32
+    crate::convert::unit_to_signed(x, f64::from(u32::MAX)) as i32
 }
 
 fn to_int(kind: Conversion, x: f64) -> i32 {

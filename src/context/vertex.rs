@@ -14,6 +14,7 @@ use glam::{Vec3, Vec4};
 
 use super::{record, Context};
 use crate::call::Call;
+use crate::convert;
 
 /// A GL component type and its conversion to float (GL 2.1 table 2.9).
 pub(crate) trait Component: Copy {
@@ -33,7 +34,7 @@ macro_rules! unsigned_component {
             /// `c / (2^b - 1)`.
             #[inline]
             fn normalized(self) -> f32 {
-                (f64::from(self) / f64::from(<$t>::MAX)) as f32
+                convert::unsigned_to_unit(f64::from(self), f64::from(<$t>::MAX)) as f32
             }
         }
     };
@@ -49,7 +50,7 @@ macro_rules! signed_component {
             /// `(2c + 1) / (2^b - 1)`.
             #[inline]
             fn normalized(self) -> f32 {
-                ((2.0 * f64::from(self) + 1.0) / f64::from(<$u>::MAX)) as f32
+                convert::signed_to_unit(f64::from(self), f64::from(<$u>::MAX)) as f32
             }
         }
     };
