@@ -89,34 +89,6 @@ impl std::fmt::Debug for GlBackend {
     }
 }
 
-/// A backend for a test, or `None` after printing `SKIPPED: GL backend unavailable: <reason>` to
-/// standard error (written to the handle, not through `eprintln!`, which libtest captures for
-/// passing tests: a skip must stay visible). With the environment variable `FIXEDGL_REQUIRE_GL`
-/// set, an unavailable backend panics instead, for CI machines that are known to have EGL.
-///
-/// ```no_run
-/// let Some(mut gl) = fixedgl::glbackend::test_backend(64, 64) else { return };
-/// gl.replay(&[fixedgl::Call::Enable(fixedgl::gl::LIGHTING)]);
-/// assert_eq!(gl.get_error(), fixedgl::gl::NO_ERROR);
-/// ```
-///
-/// A helper for this crate's integration tests (which cannot see `pub(crate)`), hidden from the
-/// documentation; applications use [`GlBackend::new`] and handle its error.
-#[doc(hidden)]
-pub fn test_backend(width: u32, height: u32) -> Option<GlBackend> {
-    use std::io::Write as _;
-    match GlBackend::new(width, height, &DeviceChoice::Auto) {
-        Ok(b) => Some(b),
-        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
-            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
-        }
-        Err(e) => {
-            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
-            None
-        }
-    }
-}
-
 /// Largest framebuffer side accepted (as [`crate::Context::new`]).
 const MAX_SIDE: u32 = crate::state::MAX_VIEWPORT_DIM;
 

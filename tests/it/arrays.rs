@@ -647,7 +647,7 @@ mod on_gl {
     use fixedgl::glbackend::{DeviceChoice, GlBackend};
 
     fn backend() -> Option<GlBackend> {
-        fixedgl::glbackend::test_backend(SIZE, SIZE)
+        crate::common::test_backend(SIZE, SIZE)
     }
 
     #[test]

@@ -567,7 +567,7 @@ fn texture_bit_keeps_the_images_and_other_objects() {
 #[cfg(feature = "gl")]
 #[test]
 fn texture_bit_parameters_match_the_driver() {
-    let Some(mut drv) = fixedgl::glbackend::test_backend(8, 8) else {
+    let Some(mut drv) = crate::common::test_backend(8, 8) else {
         return;
     };
     for &(pname, initial, set) in TEX_PARAM_ROWS {

@@ -327,7 +327,7 @@ fn lines(cmd: &Command) -> Vec<String> {
 
 #[test]
 fn cpu_and_driver_agree_on_every_pname_error() {
-    let Some(mut driver) = fixedgl::glbackend::test_backend(8, 8) else {
+    let Some(mut driver) = crate::common::test_backend(8, 8) else {
         return;
     };
     let mut cpu = Context::new(8, 8).expect("an 8x8 context");

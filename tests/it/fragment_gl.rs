@@ -7,7 +7,7 @@
 //! Skipped (with `SKIPPED:` on stderr) where no EGL device exists, as tests/gl_backend.rs.
 #![cfg(feature = "gl")]
 
-use fixedgl::glbackend::test_backend;
+use crate::common::test_backend;
 use fixedgl::{gl, Call, Context};
 
 /// Points at every pixel centre of the 256x256 grid, coloured `f(x, y)`.

@@ -15,7 +15,7 @@ use std::io::Write as _;
 
 /// A backend, or `None` after printing why the test is skipped.
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    fixedgl::glbackend::test_backend(width, height)
+    crate::common::test_backend(width, height)
 }
 
 #[test]

@@ -9,7 +9,7 @@ use fixedgl::glbackend::GlBackend;
 use fixedgl::{gl, scenes, Call, Context};
 
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    fixedgl::glbackend::test_backend(width, height)
+    crate::common::test_backend(width, height)
 }
 
 #[test]

@@ -45,7 +45,7 @@ fn quad_diagonal_matches_the_driver_under_both_shade_models() {
         ctx.end();
         let calls = ctx.stop_recording();
         let cpu = ctx.to_image();
-        let Some(mut gl) = fixedgl::glbackend::test_backend(64, 64) else {
+        let Some(mut gl) = crate::common::test_backend(64, 64) else {
             return;
         };
         gl.replay(&calls);

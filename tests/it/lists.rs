@@ -339,7 +339,7 @@ fn compiled_draw_arrays_keeps_the_arrays_of_compile_time() {
     );
 
     #[cfg(feature = "gl")]
-    if let Some(mut driver) = fixedgl::glbackend::test_backend(64, 64) {
+    if let Some(mut driver) = crate::common::test_backend(64, 64) {
         driver.replay(&calls);
         driver.finish();
         assert_eq!(driver.get_error(), gl::NO_ERROR);

@@ -16,7 +16,7 @@ use fixedgl::scenes;
 
 /// A backend, or `None` after printing why the test is skipped.
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    fixedgl::glbackend::test_backend(width, height)
+    crate::common::test_backend(width, height)
 }
 
 fn failure_dir() -> PathBuf {

@@ -12,7 +12,7 @@ use fixedgl::{gl, scenes, Call, Context};
 use image::RgbaImage;
 
 fn backend(width: u32, height: u32) -> Option<GlBackend> {
-    fixedgl::glbackend::test_backend(width, height)
+    crate::common::test_backend(width, height)
 }
 
 #[test]

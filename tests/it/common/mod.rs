@@ -1,6 +1,27 @@
-//! What several test modules share: the GL enum values worth drawing often in random calls.
+//! What several test modules share: the GL backend or a printed skip, and the GL enum values
+//! worth drawing often in random calls.
 
 use fixedgl::gl;
+
+/// A GL backend for a test, or `None` after printing `SKIPPED: GL backend unavailable: <reason>`
+/// to standard error (written to the handle, not through `eprintln!`, which libtest captures for
+/// passing tests: a skip must stay visible). With `FIXEDGL_REQUIRE_GL` set (CI), an unavailable
+/// backend fails the test instead.
+#[cfg(feature = "gl")]
+pub fn test_backend(width: u32, height: u32) -> Option<fixedgl::glbackend::GlBackend> {
+    use fixedgl::glbackend::{DeviceChoice, GlBackend};
+    use std::io::Write as _;
+    match GlBackend::new(width, height, &DeviceChoice::Auto) {
+        Ok(b) => Some(b),
+        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
+            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
+        }
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
+            None
+        }
+    }
+}
 
 /// Enums worth drawing often: every value the set-side entry points accept, and near misses.
 pub const ENUMS: &[u32] = &[
