@@ -484,15 +484,25 @@ fn every_target_has_its_binding_and_objects() {
     gl.tex_parameteri(TEXTURE_3D, TEXTURE_WRAP_R, CLAMP_TO_EDGE as i32);
     gl.tex_parameterf(TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS, 1.25);
     gl.tex_parameterf(TEXTURE_1D, TEXTURE_LOD_BIAS, -3.0);
-    assert_eq!(tex_param(&mut gl, TEXTURE_3D, TEXTURE_WRAP_R), CLAMP_TO_EDGE as f32);
-    assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_WRAP_R), REPEAT as f32);
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_3D, TEXTURE_WRAP_R),
+        CLAMP_TO_EDGE as f32
+    );
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_2D, TEXTURE_WRAP_R),
+        REPEAT as f32
+    );
     assert_eq!(tex_param(&mut gl, TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS), 1.25);
     assert_eq!(tex_param(&mut gl, TEXTURE_1D, TEXTURE_LOD_BIAS), -3.0);
     assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), 0.0);
     // Another unit has its own bindings.
     gl.active_texture(TEXTURE1);
     assert_eq!(bindings(&mut gl), [0; 4]);
-    assert_eq!(tex_param(&mut gl, TEXTURE_1D, TEXTURE_LOD_BIAS), -3.0, "default 1D object");
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_1D, TEXTURE_LOD_BIAS),
+        -3.0,
+        "default 1D object"
+    );
     gl.bind_texture(TEXTURE_3D, 2);
     gl.active_texture(TEXTURE0);
     // TEXTURE_BIT saves every target's binding and the bound objects' parameters.
@@ -548,7 +558,11 @@ fn the_object_lod_bias_adds_to_the_unit_bias() {
             Some(&data),
         );
     }
-    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST_MIPMAP_NEAREST as i32);
+    gl.tex_parameteri(
+        TEXTURE_2D,
+        TEXTURE_MIN_FILTER,
+        NEAREST_MIPMAP_NEAREST as i32,
+    );
     gl.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
     gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
     gl.enable(TEXTURE_2D);
@@ -571,7 +585,11 @@ fn the_object_lod_bias_adds_to_the_unit_bias() {
         assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), object);
         full_quad(&mut gl);
         let p = pixel(&mut gl, 1, 1);
-        assert_eq!(level_of(p), Some(level), "object {object}, unit {unit}: {p:?}");
+        assert_eq!(
+            level_of(p),
+            Some(level),
+            "object {object}, unit {unit}: {p:?}"
+        );
     }
     // The integer forms convert as numbers; the getters round.
     gl.tex_parameteri(TEXTURE_2D, TEXTURE_LOD_BIAS, 3);

@@ -292,7 +292,13 @@ fn error_rows_change_nothing() {
         ),
         (
             "TexParameteri bad target (a cube-map face is no binding target)",
-            |g| g.tex_parameteri(TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_MIN_FILTER, LINEAR as i32),
+            |g| {
+                g.tex_parameteri(
+                    TEXTURE_CUBE_MAP_POSITIVE_X,
+                    TEXTURE_MIN_FILTER,
+                    LINEAR as i32,
+                )
+            },
             INVALID_ENUM,
         ),
         (
