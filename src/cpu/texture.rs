@@ -99,9 +99,15 @@ impl Sampler {
             min_lod: obj.min_lod,
             max_lod: obj.max_lod,
             // §3.8.8 eq. 3.18: the object's and the unit's biases, their sum clamped to
-            // ±MAX_TEXTURE_LOD_BIAS (the unit's is already clamped at TexEnv; the object's is
-            // stored as given). A NaN sum stays NaN and makes λ 0 in `sample`.
-            bias: (obj.lod_bias + u.lod_bias).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
+            // ±MAX_TEXTURE_LOD_BIAS. The object's bias is clamped on its own first, as the driver
+            // does (measured in tests/texture_gl.rs: object 20 with unit -15 draws as bias 1, not
+            // the spec's 5); the unit's was clamped at TexEnv already. The two orders differ only
+            // for an object bias beyond ±16. A NaN stays NaN and makes λ 0 in `sample`.
+            bias: (obj
+                .lod_bias
+                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS)
+                + u.lod_bias)
+                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
             c,
             env: u.env_mode,
             env_color: u.env_color,
