@@ -50,10 +50,29 @@ impl Level {
     }
 }
 
+/// The texture targets of GL 1.2/1.3 (§3.8.12), in the order of their bindings
+/// (TEXTURE_BINDING_1D, _2D, _3D, _CUBE_MAP) and of §3.8.15's precedence, lowest first.
+pub const TARGETS: [u32; 4] = [
+    gl::TEXTURE_1D,
+    gl::TEXTURE_2D,
+    gl::TEXTURE_3D,
+    gl::TEXTURE_CUBE_MAP,
+];
+
+/// The index of `target` in [`TARGETS`], or None for anything else (a proxy target or a cube-map
+/// face is not a binding target: INVALID_ENUM, §3.8.12).
+pub fn target_index(target: u32) -> Option<usize> {
+    TARGETS.iter().position(|&t| t == target)
+}
+
 /// A texture object (GL 2.1 §3.8.12, table 6.16): images and sampling parameters.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct TexObject {
+    /// The target the object was first bound to (§3.8.12: fixed from then on; binding it to
+    /// another target is INVALID_OPERATION). Only TEXTURE_2D objects can hold images yet (no
+    /// TexImage1D/3D or cube-map faces: issue #14).
+    pub target: u32,
     /// Levels 0 to MAX_LEVELS - 1; `None` where no image was specified.
     pub levels: Vec<Option<Level>>,
     pub min_filter: u32,
@@ -67,16 +86,30 @@ pub struct TexObject {
     pub max_lod: f32,
     pub base_level: i32,
     pub max_level: i32,
+    /// TEXTURE_LOD_BIAS (GL 1.4, table 6.16): any float, added to the unit's bias in λ
+    /// (§3.8.8 eq. 3.18, where the sum is clamped).
+    pub lod_bias: f32,
     pub generate_mipmap: bool,
     pub compare_mode: u32,
     pub compare_func: u32,
     pub depth_texture_mode: u32,
 }
 
+impl TexObject {
+    /// A new object of `target` with table 6.16's initial values.
+    pub fn new(target: u32) -> Self {
+        Self {
+            target,
+            ..Self::default()
+        }
+    }
+}
+
 impl Default for TexObject {
-    /// Table 6.16's initial values.
+    /// Table 6.16's initial values, for a TEXTURE_2D object.
     fn default() -> Self {
         Self {
+            target: gl::TEXTURE_2D,
             levels: vec![None; MAX_LEVELS],
             min_filter: gl::NEAREST_MIPMAP_LINEAR,
             mag_filter: gl::LINEAR,
@@ -89,6 +122,7 @@ impl Default for TexObject {
             max_lod: 1000.0,
             base_level: 0,
             max_level: 1000,
+            lod_bias: 0.0,
             generate_mipmap: false,
             compare_mode: gl::NONE,
             compare_func: gl::LEQUAL,
@@ -109,7 +143,7 @@ pub fn is_mipmap_filter(filter: u32) -> bool {
 }
 
 /// A texture object's parameters without its images: what PushAttrib(TEXTURE_BIT) saves for
-/// each unit's bound object (GL 2.1 §6.1.14, table 6.16 rows whose attribute is "texture").
+/// each unit's bound object of every target (GL 2.1 §6.1.14, table 6.16 rows whose attribute is "texture").
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[allow(missing_docs)]
 pub struct TexParams {
@@ -124,6 +158,7 @@ pub struct TexParams {
     pub max_lod: f32,
     pub base_level: i32,
     pub max_level: i32,
+    pub lod_bias: f32,
     pub generate_mipmap: bool,
     pub compare_mode: u32,
     pub compare_func: u32,
@@ -145,6 +180,7 @@ impl TexObject {
             max_lod: self.max_lod,
             base_level: self.base_level,
             max_level: self.max_level,
+            lod_bias: self.lod_bias,
             generate_mipmap: self.generate_mipmap,
             compare_mode: self.compare_mode,
             compare_func: self.compare_func,
@@ -165,6 +201,7 @@ impl TexObject {
         self.max_lod = p.max_lod;
         self.base_level = p.base_level;
         self.max_level = p.max_level;
+        self.lod_bias = p.lod_bias;
         self.generate_mipmap = p.generate_mipmap;
         self.compare_mode = p.compare_mode;
         self.compare_func = p.compare_func;
@@ -304,8 +341,9 @@ pub struct TexGen {
 /// One texture unit's state other than its enables and matrix (tables 6.15, 6.18, 6.19).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexUnit {
-    /// TEXTURE_BINDING_2D (0: the default texture).
-    pub binding_2d: u32,
+    /// TEXTURE_BINDING_1D, _2D, _3D, _CUBE_MAP, in [`TARGETS`] order (0: that target's
+    /// default texture).
+    pub bindings: [u32; 4],
     /// TEXTURE_ENV_MODE.
     pub env_mode: u32,
     /// TEXTURE_ENV_COLOR.
@@ -364,7 +402,7 @@ impl Default for TexUnit {
             Vec4::from_array(p)
         };
         Self {
-            binding_2d: 0,
+            bindings: [0; 4],
             env_mode: gl::MODULATE,
             env_color: Vec4::ZERO,
             lod_bias: 0.0,
@@ -471,40 +509,65 @@ impl NameSet {
 }
 
 /// Every piece of texture state: objects, names, units, and the unpack row length.
-#[derive(Clone, Debug, PartialEq, Default)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Textures {
     /// Names returned by GenTextures and not yet deleted (bound or not).
     pub names: NameSet,
-    /// The objects that exist (a name becomes an object when first bound), by name.
+    /// The objects that exist (a name becomes an object of a target when first bound), by name.
     pub objects: BTreeMap<u32, Arc<TexObject>>,
-    /// Texture object 0: the default 2D texture.
-    pub default_2d: Arc<TexObject>,
+    /// Texture object 0 of each target, in [`TARGETS`] order: the default textures (§3.8.12:
+    /// each target has its own, with its own parameters).
+    pub defaults: [Arc<TexObject>; 4],
     /// Per-unit state.
     pub units: [TexUnit; MAX_TEXTURE_UNITS],
     /// UNPACK_ROW_LENGTH (table 6.24; 0: rows are `width` long).
     pub unpack_row_length: i32,
 }
 
+impl Default for Textures {
+    fn default() -> Self {
+        Self {
+            names: NameSet::default(),
+            objects: BTreeMap::new(),
+            defaults: TARGETS.map(|t| Arc::new(TexObject::new(t))),
+            units: Default::default(),
+            unpack_row_length: 0,
+        }
+    }
+}
+
 impl Textures {
-    /// The object bound to TEXTURE_2D on `unit`.
-    pub fn bound_2d(&self, unit: usize) -> Option<&Arc<TexObject>> {
-        let name = self.units.get(unit)?.binding_2d;
+    /// The object bound to `target` (one of [`TARGETS`]) on `unit`.
+    pub fn bound(&self, unit: usize, target: u32) -> Option<&Arc<TexObject>> {
+        let k = target_index(target)?;
+        let name = *self.units.get(unit)?.bindings.get(k)?;
         if name == 0 {
-            Some(&self.default_2d)
+            self.defaults.get(k)
         } else {
             self.objects.get(&name)
         }
     }
 
-    /// The object bound to TEXTURE_2D on `unit`, to modify (copied first if shared).
-    pub fn bound_2d_mut(&mut self, unit: usize) -> Option<&mut TexObject> {
-        let name = self.units.get(unit)?.binding_2d;
+    /// The object bound to `target` on `unit`, to modify (copied first if shared).
+    pub fn bound_mut(&mut self, unit: usize, target: u32) -> Option<&mut TexObject> {
+        let k = target_index(target)?;
+        let name = *self.units.get(unit)?.bindings.get(k)?;
         let arc = if name == 0 {
-            &mut self.default_2d
+            self.defaults.get_mut(k)?
         } else {
             self.objects.get_mut(&name)?
         };
         Some(Arc::make_mut(arc))
+    }
+
+    /// The object bound to TEXTURE_2D on `unit`.
+    pub fn bound_2d(&self, unit: usize) -> Option<&Arc<TexObject>> {
+        self.bound(unit, gl::TEXTURE_2D)
+    }
+
+    /// The object bound to TEXTURE_2D on `unit`, to modify (copied first if shared).
+    pub fn bound_2d_mut(&mut self, unit: usize) -> Option<&mut TexObject> {
+        self.bound_mut(unit, gl::TEXTURE_2D)
     }
 }
 

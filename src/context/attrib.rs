@@ -9,13 +9,17 @@
 //! Design decision: a stack entry is a whole `State` (built fresh, not cloned, so no matrix stack
 //! or object store rides along) into which the pushed groups are copied, and PopAttrib copies the
 //! same groups back with the same function. The one exception to "no object store": TEXTURE_BIT
-//! puts a parameter-only stand-in (no images) of each unit's bound 2D object in the entry. Adding a field to a group is therefore one line in
+//! puts a parameter-only stand-in (no images) of each unit's bound object of every target in the
+//! entry. Adding a field to a group is therefore one line in
 //! one table, and save and restore cannot disagree.
+
+use std::sync::Arc;
 
 use super::Context;
 use crate::call::Call;
 use crate::gl;
 use crate::state::State;
+use crate::texture::{TexObject, TARGETS};
 
 /// `MAX_ATTRIB_STACK_DEPTH` and `MAX_CLIENT_ATTRIB_STACK_DEPTH` (GL 2.1 table 6.35: at least 16).
 pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
@@ -79,7 +83,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         // Tables 6.15 to 6.20: the selected unit and every unit's enables.
         copy!(d, s; active_texture, enables.texture_1d, enables.texture_2d, enables.texture_3d,
             enables.texture_cube_map, enables.texture_gen);
-        // Each unit's binding, environment and TexGen, then the bound objects' parameters.
+        // Each unit's bindings (every target), environment and TexGen, then the bound objects'
+        // parameters.
         copy!(d, s; textures.units);
         copy_bound_params(d, s);
     }
@@ -120,26 +125,57 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     // ACCUM_BUFFER_BIT: no state of theirs is kept yet.
 }
 
-/// Copies the parameters (table 6.16, attribute "texture") of the 2D texture object bound on
-/// each unit of `s` to the object of the same name in `d`, as Mesa does (GL 2.1 §6.1.14 lists
-/// them in TEXTURE_BIT). Run after the bindings are copied, so `d` binds the same names. In a
-/// pushed entry (a fresh State) the object is a parameter-only stand-in; on pop, a name deleted
-/// since the push is created again, as BindTexture would (§3.8.12), with the saved parameters
-/// and no images.
+/// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each
+/// target (TEXTURE_1D, _2D, _3D, _CUBE_MAP) on each unit of `s` to the object of the same name in
+/// `d`, as Mesa does (GL 2.1 §6.1.14 lists the bindings and these parameters in TEXTURE_BIT). Run
+/// after the bindings are copied, so `d` binds the same names. In a pushed entry (a fresh State)
+/// the object is a parameter-only stand-in; on pop, a name deleted since the push is created
+/// again with the saved target, as BindTexture would (§3.8.12), with the saved parameters and no
+/// images. A name that meanwhile became an object of another target cannot be bound to this one
+/// (§3.8.12), so that binding reverts to the target's default texture instead.
 fn copy_bound_params(d: &mut State, s: &State) {
-    for (unit, u) in s.textures.units.iter().enumerate() {
-        let Some(params) = s.textures.bound_2d(unit).map(|o| o.params()) else {
-            continue;
-        };
-        let name = u.binding_2d;
-        if name != 0 && !d.textures.objects.contains_key(&name) {
-            d.textures.names.insert(name);
-            d.textures.objects.insert(name, Default::default());
-        }
-        // Only when they differ, so an object shared with a snapshot is not copied for nothing.
-        if d.textures.bound_2d(unit).map(|o| o.params()) != Some(params) {
-            if let Some(obj) = d.textures.bound_2d_mut(unit) {
-                obj.set_params(&params);
+    for unit in 0..s.textures.units.len() {
+        for (k, &target) in TARGETS.iter().enumerate() {
+            let Some(params) = s.textures.bound(unit, target).map(|o| o.params()) else {
+                continue;
+            };
+            let Some(name) = d
+                .textures
+                .units
+                .get(unit)
+                .and_then(|u| u.bindings.get(k))
+                .copied()
+            else {
+                continue;
+            };
+            if name != 0 {
+                match d.textures.objects.get(&name) {
+                    None => {
+                        d.textures.names.insert(name);
+                        d.textures
+                            .objects
+                            .insert(name, Arc::new(TexObject::new(target)));
+                    }
+                    Some(o) if o.target != target => {
+                        if let Some(b) = d
+                            .textures
+                            .units
+                            .get_mut(unit)
+                            .and_then(|u| u.bindings.get_mut(k))
+                        {
+                            *b = 0;
+                        }
+                        continue;
+                    }
+                    Some(_) => {}
+                }
+            }
+            // Only when they differ, so an object shared with a snapshot is not copied for
+            // nothing.
+            if d.textures.bound(unit, target).map(|o| o.params()) != Some(params) {
+                if let Some(obj) = d.textures.bound_mut(unit, target) {
+                    obj.set_params(&params);
+                }
             }
         }
     }

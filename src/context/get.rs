@@ -302,7 +302,11 @@ impl Context {
             gl::BLEND_EQUATION_ALPHA => e(s.blend.equation_alpha),
             gl::BLEND_COLOR => norm(s.blend.color.to_array()),
             gl::LOGIC_OP_MODE => e(s.logic_op),
-            gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.binding_2d as i32),
+            // Table 6.15: one binding per target on the active unit, in TARGETS order.
+            gl::TEXTURE_BINDING_1D => i(s.textures.units.get(unit)?.bindings[0] as i32),
+            gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.bindings[1] as i32),
+            gl::TEXTURE_BINDING_3D => i(s.textures.units.get(unit)?.bindings[2] as i32),
+            gl::TEXTURE_BINDING_CUBE_MAP => i(s.textures.units.get(unit)?.bindings[3] as i32),
             gl::UNPACK_ROW_LENGTH => i(s.textures.unpack_row_length),
             gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
             _ => b(*self.state.cap_mut(pname)?),

@@ -2,8 +2,10 @@
 //! `TexImage2D`, `TexSubImage2D`, `CopyTexImage2D`, `CopyTexSubImage2D`, `GetTexImage`
 //! (GL 2.1 §3.8.1, §3.8.2, §3.8.12, §6.1.4).
 //!
-//! Only the TEXTURE_2D target exists; every other target (TEXTURE_1D, _3D, _CUBE_MAP and the
-//! proxies) is INVALID_ENUM. Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
+//! Objects of every GL 1.3 target exist (TEXTURE_1D, _2D, _3D, _CUBE_MAP: BindTexture, the
+//! bindings, parameters, deletion), but images only for TEXTURE_2D: the image commands take
+//! TEXTURE_2D alone and any other target (and the proxies) is INVALID_ENUM (TexImage1D/3D and
+//! cube-map faces: issue #14). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
 //! is allocated with undefined, here zero, contents); FLOAT data is native-endian bytes
 //! (`texture::f32_bytes`).
 //!
@@ -20,8 +22,8 @@ use super::Context;
 use crate::call::Call;
 use crate::gl;
 use crate::texture::{
-    as_rgba, base_internal_format, format_components, keep, quantize, type_size, unpack,
-    unpack_extent, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    as_rgba, base_internal_format, format_components, keep, quantize, target_index, type_size,
+    unpack, unpack_extent, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
@@ -108,8 +110,8 @@ impl Context {
     }
 
     /// `glDeleteTextures`: the first `n` names of `textures`; unused names and 0 are ignored, a
-    /// bound texture reverts every unit's binding to 0 (§3.8.12). `n < 0` or a short slice is
-    /// INVALID_VALUE.
+    /// bound texture reverts every unit's binding of every target that holds it to 0 (§3.8.12).
+    /// `n < 0` or a short slice is INVALID_VALUE.
     pub fn delete_textures(&mut self, n: i32, textures: &[u32]) {
         record!(self, Call::DeleteTextures(n, textures.to_vec()));
         if !self.outside_begin_end() {
@@ -125,9 +127,9 @@ impl Context {
             }
             t.names.remove(name);
             t.objects.remove(&name);
-            for u in t.units.iter_mut() {
-                if u.binding_2d == name {
-                    u.binding_2d = 0;
+            for b in t.units.iter_mut().flat_map(|u| u.bindings.iter_mut()) {
+                if *b == name {
+                    *b = 0;
                 }
             }
         }
@@ -143,26 +145,31 @@ impl Context {
         self.state.textures.objects.contains_key(&texture)
     }
 
-    /// `glBindTexture(TEXTURE_2D, name)` on the active unit; a new name becomes a texture object
-    /// with the initial state (§3.8.12). Another target is INVALID_ENUM.
+    /// `glBindTexture(target, name)` on the active unit, for TEXTURE_1D, _2D, _3D or _CUBE_MAP
+    /// (any other target is INVALID_ENUM). A new name becomes a texture object of `target` with
+    /// the initial state; a name whose object was first bound to another target is
+    /// INVALID_OPERATION (GL 2.1 §3.8.12). Name 0 binds the target's default texture.
     pub fn bind_texture(&mut self, target: u32, texture: u32) {
         record!(self, Call::BindTexture(target, texture));
         if !self.outside_begin_end() {
             return;
         }
-        if target != gl::TEXTURE_2D {
+        let Some(k) = target_index(target) else {
             return self.error(gl::INVALID_ENUM);
-        }
+        };
         let unit = self.state.active_texture;
         let t = &mut self.state.textures;
         if texture != 0 {
+            if t.objects.get(&texture).is_some_and(|o| o.target != target) {
+                return self.error(gl::INVALID_OPERATION);
+            }
             t.names.insert(texture);
             t.objects
                 .entry(texture)
-                .or_insert_with(|| Arc::new(TexObject::default()));
+                .or_insert_with(|| Arc::new(TexObject::new(target)));
         }
-        if let Some(u) = t.units.get_mut(unit) {
-            u.binding_2d = texture;
+        if let Some(b) = t.units.get_mut(unit).and_then(|u| u.bindings.get_mut(k)) {
+            *b = texture;
         }
     }
 

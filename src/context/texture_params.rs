@@ -15,29 +15,7 @@ use crate::call::Call;
 use crate::counts;
 use crate::gl;
 use crate::state::MAX_TEXTURE_UNITS;
-use crate::texture::{TexObject, MAX_TEXTURE_LOD_BIAS};
-
-/// Values a texture parameter takes (GL 2.1 table 6.16).
-fn tex_parameter_count(pname: u32) -> Option<usize> {
-    Some(match pname {
-        gl::TEXTURE_BORDER_COLOR => 4,
-        gl::TEXTURE_MIN_FILTER
-        | gl::TEXTURE_MAG_FILTER
-        | gl::TEXTURE_WRAP_S
-        | gl::TEXTURE_WRAP_T
-        | gl::TEXTURE_WRAP_R
-        | gl::TEXTURE_PRIORITY
-        | gl::TEXTURE_MIN_LOD
-        | gl::TEXTURE_MAX_LOD
-        | gl::TEXTURE_BASE_LEVEL
-        | gl::TEXTURE_MAX_LEVEL
-        | gl::GENERATE_MIPMAP
-        | gl::TEXTURE_COMPARE_MODE
-        | gl::TEXTURE_COMPARE_FUNC
-        | gl::DEPTH_TEXTURE_MODE => 1,
-        _ => return None,
-    })
-}
+use crate::texture::{target_index, TexObject, MAX_TEXTURE_LOD_BIAS};
 
 /// An integer colour component as a float: the full range onto [-1, 1] (table 2.9).
 fn int_to_norm(i: f64) -> f64 {
@@ -82,7 +60,8 @@ impl Context {
     }
 
     /// The body of the TexParameter forms (§3.8.4, table 3.19): validate, then set on the
-    /// active unit's bound 2D texture. `vector`: BORDER_COLOR needs a vector form.
+    /// object bound to `target` (TEXTURE_1D, _2D, _3D or _CUBE_MAP) on the active unit.
+    /// `vector`: BORDER_COLOR needs a vector form.
     fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         if !self.outside_begin_end() {
             return;
@@ -92,10 +71,10 @@ impl Context {
         if vector && counts::tex_parameter(pname).is_some_and(|n| v.len() < n) {
             return self.error(gl::INVALID_VALUE);
         }
-        if target != gl::TEXTURE_2D {
+        if target_index(target).is_none() {
             return self.error(gl::INVALID_ENUM);
         }
-        let Some(count) = tex_parameter_count(pname) else {
+        let Some(count) = counts::tex_parameter(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
         if count > 1 && !vector {
@@ -139,7 +118,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         let unit = self.state.active_texture;
-        let Some(o) = self.state.textures.bound_2d_mut(unit) else {
+        let Some(o) = self.state.textures.bound_mut(unit, target) else {
             return;
         };
         let f = x as f32;
@@ -157,6 +136,9 @@ impl Context {
             }
             gl::TEXTURE_MIN_LOD => o.min_lod = f,
             gl::TEXTURE_MAX_LOD => o.max_lod = f,
+            // Any float, kept as given (an integer form converts as a number, not normalised);
+            // the clamp of §3.8.8 eq. 3.18 applies to the sum with the unit's bias, at sampling.
+            gl::TEXTURE_LOD_BIAS => o.lod_bias = f,
             gl::TEXTURE_BASE_LEVEL => o.base_level = x.min(f64::from(i32::MAX)) as i32,
             gl::TEXTURE_MAX_LEVEL => o.max_level = x.min(f64::from(i32::MAX)) as i32,
             gl::GENERATE_MIPMAP => {
@@ -440,8 +422,9 @@ impl Context {
         }
     }
 
-    /// A texture parameter's values (and whether they are a normalised colour), after the
-    /// Begin/End, target, pname and length checks (§6.1.3).
+    /// A texture parameter's values (and whether they are a normalised colour) of the object
+    /// bound to `target` on the active unit, after the Begin/End, target, pname and length
+    /// checks (§6.1.3).
     fn tex_parameter_value(
         &mut self,
         target: u32,
@@ -452,13 +435,17 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return None;
         }
-        if target != gl::TEXTURE_2D {
+        if target_index(target).is_none() {
             self.error(gl::INVALID_ENUM);
             return None;
         }
         let unit = self.state.active_texture;
-        let default = TexObject::default();
-        let o: &TexObject = self.state.textures.bound_2d(unit).map_or(&default, |a| a);
+        let default = TexObject::new(target);
+        let o: &TexObject = self
+            .state
+            .textures
+            .bound(unit, target)
+            .map_or(&default, |a| a);
         let e = |x: u32| vec![f64::from(x)];
         let v = match pname {
             gl::TEXTURE_MIN_FILTER => e(o.min_filter),
@@ -472,6 +459,7 @@ impl Context {
             gl::TEXTURE_PRIORITY => vec![f64::from(o.priority)],
             gl::TEXTURE_MIN_LOD => vec![f64::from(o.min_lod)],
             gl::TEXTURE_MAX_LOD => vec![f64::from(o.max_lod)],
+            gl::TEXTURE_LOD_BIAS => vec![f64::from(o.lod_bias)],
             gl::TEXTURE_BASE_LEVEL => vec![f64::from(o.base_level)],
             gl::TEXTURE_MAX_LEVEL => vec![f64::from(o.max_level)],
             gl::GENERATE_MIPMAP => vec![f64::from(u8::from(o.generate_mipmap))],

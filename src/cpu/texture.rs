@@ -22,7 +22,7 @@ use glam::Vec4;
 
 use crate::gl;
 use crate::state::State;
-use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject};
+use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
 
 /// Which sampling routine a flush uses (chosen once in [`Sampler::new`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,16 +67,10 @@ pub struct Sampler {
 }
 
 impl Sampler {
-    /// The sampler of texture unit `unit`, or None when TEXTURE_2D is disabled there or its
-    /// texture is not complete (§3.8.10: texturing is then disabled for the unit).
+    /// The sampler of texture unit `unit`, or None when the unit is disabled: no texture target
+    /// enabled there, or none with a complete texture (see [`unit_texture`]).
     pub fn new(state: &State, unit: usize) -> Option<Sampler> {
-        if !state.enables.texture_2d.get(unit).copied().unwrap_or(false) {
-            return None;
-        }
-        let obj = state.textures.bound_2d(unit)?;
-        if !obj.is_complete() {
-            return None;
-        }
+        let obj = unit_texture(state, unit)?;
         let u = state.textures.units.get(unit)?;
         let b = obj.level(obj.base_level)?;
         let mipmapped = is_mipmap_filter(obj.min_filter);
@@ -104,7 +98,16 @@ impl Sampler {
             border: obj.border_color.to_array(),
             min_lod: obj.min_lod,
             max_lod: obj.max_lod,
-            bias: u.lod_bias,
+            // §3.8.8 eq. 3.18: the object's and the unit's biases, their sum clamped to
+            // ±MAX_TEXTURE_LOD_BIAS. The object's bias is clamped on its own first, as the driver
+            // does (measured in tests/texture_gl.rs: object 20 with unit -15 draws as bias 1, not
+            // the spec's 5); the unit's was clamped at TexEnv already. The two orders differ only
+            // for an object bias beyond ±16. A NaN stays NaN and makes λ 0 in `sample`.
+            bias: (obj
+                .lod_bias
+                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS)
+                + u.lod_bias)
+                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
             c,
             env: u.env_mode,
             env_color: u.env_color,
@@ -429,6 +432,38 @@ impl Sampler {
         };
         Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
     }
+}
+
+/// The texture object unit `unit` samples, or None when texturing is off for the unit.
+///
+/// Of the targets enabled on the unit, taken in §3.8.15's precedence (CUBE_MAP, 3D, 2D, 1D), the
+/// first whose bound texture is complete (§3.8.10) is used. That is the driver's rule (Mesa's
+/// `update_ff_texture_state` walks the enabled targets in this order and takes the first
+/// complete one), and it is what `tests/texture_gl.rs` measures. GL 2.1 instead picks the
+/// highest enabled target and disables the unit when its texture is incomplete; the two rules
+/// differ only when a higher target's texture is incomplete, which today is always the case for
+/// 1D, 3D and cube-map textures (they can hold no images until issue #14). Following the spec
+/// would leave a unit with TEXTURE_2D and TEXTURE_3D enabled untextured where the driver
+/// textures it with the 2D texture.
+fn unit_texture(state: &State, unit: usize) -> Option<&Arc<TexObject>> {
+    let e = &state.enables;
+    let enabled = |flags: &[bool]| flags.get(unit).copied().unwrap_or(false);
+    let order = [
+        (gl::TEXTURE_CUBE_MAP, enabled(&e.texture_cube_map)),
+        (gl::TEXTURE_3D, enabled(&e.texture_3d)),
+        (gl::TEXTURE_2D, enabled(&e.texture_2d)),
+        (gl::TEXTURE_1D, enabled(&e.texture_1d)),
+    ];
+    let (target, obj) = order
+        .into_iter()
+        .filter(|&(_, on)| on)
+        .find_map(|(target, _)| {
+            let obj = state.textures.bound(unit, target)?;
+            obj.is_complete().then_some((target, obj))
+        })?;
+    // Only 2D images exist (and only they are sampled); an object of another target has no
+    // levels and so is never complete.
+    (target == gl::TEXTURE_2D).then_some(obj)
 }
 
 /// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.

@@ -351,6 +351,30 @@ impl GlBackend {
         }
     }
 
+    /// `glGetTexParameterfv` of the object bound to `target` on the active unit (slice rule as
+    /// [`GlBackend::get_floatv`]): what the front end's `get_tex_parameterfv` is compared with.
+    pub fn get_tex_parameterfv(&mut self, target: u32, pname: u32, out: &mut [f32]) {
+        let sentinels = [f32::from_bits(0x7fc1_2345), f32::from_bits(0x7fd5_4321)];
+        self.get_into(pname, out, sentinels, f32::to_bits, |gl, p, v| {
+            // SAFETY: `get_into` passes a buffer of `max_get_values` slots; a texture parameter
+            // is at most 4 values (TEXTURE_BORDER_COLOR).
+            unsafe { gl.GetTexParameterfv(target, p, v) }
+        });
+    }
+
+    /// `glGetTexParameteriv` (as [`GlBackend::get_tex_parameterfv`]).
+    pub fn get_tex_parameteriv(&mut self, target: u32, pname: u32, out: &mut [i32]) {
+        let sentinels = [0x5a5a_1234, -0x2345_6789];
+        self.get_into(
+            pname,
+            out,
+            sentinels,
+            |v| v as u32,
+            // SAFETY: as in `get_tex_parameterfv`.
+            |gl, p, v| unsafe { gl.GetTexParameteriv(target, p, v) },
+        );
+    }
+
     /// The common path of the `get_*` queries. The driver writes into a scratch buffer twice
     /// prefilled with two different sentinels; the written count is where both passes stop
     /// differing from their sentinel. This needs no table of pnames and never lets the driver

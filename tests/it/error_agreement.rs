@@ -9,6 +9,10 @@
 //! recording reader (which builds the `Call` from its text, as a user's recording would), then to
 //! a CPU `Context` and to the GL backend, and the two `get_error`s must be equal. Both sides run
 //! the same stream, so the state each call meets is the same.
+//!
+//! BindTexture takes no pname, and texture queries are no `Call`s, so a second test walks
+//! BindTexture over every target and kind of name and compares, after each call, the error and
+//! what the texture queries answer (bindings, IsEnabled, GetTexParameterfv).
 
 #![cfg(feature = "gl")]
 
@@ -168,70 +172,6 @@ const VALUES: &[&str] = &[
 /// prefix and why. Each must still disagree somewhere (the test fails when one no longer does,
 /// so the list only shrinks).
 const KNOWN: &[(&str, &str)] = &[
-    (
-        "TexParameteri(TEXTURE_1D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterf(TEXTURE_1D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteriv(TEXTURE_1D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterfv(TEXTURE_1D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteri(TEXTURE_3D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterf(TEXTURE_3D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteriv(TEXTURE_3D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterfv(TEXTURE_3D,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteri(TEXTURE_CUBE_MAP,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterf(TEXTURE_CUBE_MAP,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteriv(TEXTURE_CUBE_MAP,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameterfv(TEXTURE_CUBE_MAP,",
-        "1D, 3D and cube-map texture objects: issue #10/#14",
-    ),
-    (
-        "TexParameteri(TEXTURE_2D, TEXTURE_LOD_BIAS",
-        "the texture object's LOD bias: issue #10",
-    ),
-    (
-        "TexParameterf(TEXTURE_2D, TEXTURE_LOD_BIAS",
-        "the texture object's LOD bias: issue #10",
-    ),
-    (
-        "TexParameteriv(TEXTURE_2D, TEXTURE_LOD_BIAS",
-        "the texture object's LOD bias: issue #10",
-    ),
-    (
-        "TexParameterfv(TEXTURE_2D, TEXTURE_LOD_BIAS",
-        "the texture object's LOD bias: issue #10",
-    ),
     (
         "PixelStorei(",
         "PixelStore SKIP/SWAP_BYTES/LSB_FIRST/IMAGE_HEIGHT pnames: issue #10/#13",
@@ -394,4 +334,156 @@ fn cpu_and_driver_agree_on_every_pname_error() {
         groups.len(),
         report.join("\n")
     );
+}
+
+/// The texture queries both backends answer.
+trait TextureQueries {
+    fn binding(&mut self, pname: u32) -> i32;
+    fn enabled(&mut self, cap: u32) -> bool;
+    fn param(&mut self, target: u32, pname: u32) -> f32;
+}
+
+impl TextureQueries for Context {
+    fn binding(&mut self, pname: u32) -> i32 {
+        let mut v = [0];
+        self.get_integerv(pname, &mut v);
+        v[0]
+    }
+    fn enabled(&mut self, cap: u32) -> bool {
+        self.is_enabled(cap)
+    }
+    fn param(&mut self, target: u32, pname: u32) -> f32 {
+        let mut v = [0.0];
+        self.get_tex_parameterfv(target, pname, &mut v);
+        v[0]
+    }
+}
+
+impl TextureQueries for fixedgl::glbackend::GlBackend {
+    fn binding(&mut self, pname: u32) -> i32 {
+        let mut v = [0];
+        self.get_integerv(pname, &mut v);
+        v[0]
+    }
+    fn enabled(&mut self, cap: u32) -> bool {
+        self.is_enabled(cap)
+    }
+    fn param(&mut self, target: u32, pname: u32) -> f32 {
+        let mut v = [0.0];
+        self.get_tex_parameterfv(target, pname, &mut v);
+        v[0]
+    }
+}
+
+/// What the texture queries show of the active unit: the four bindings, each target's enable,
+/// and parameters of the object bound to each target (NaN printed as NaN, so it compares).
+fn texture_probe(q: &mut impl TextureQueries) -> String {
+    let targets = [
+        gl::TEXTURE_1D,
+        gl::TEXTURE_2D,
+        gl::TEXTURE_3D,
+        gl::TEXTURE_CUBE_MAP,
+    ];
+    let b = [
+        gl::TEXTURE_BINDING_1D,
+        gl::TEXTURE_BINDING_2D,
+        gl::TEXTURE_BINDING_3D,
+        gl::TEXTURE_BINDING_CUBE_MAP,
+    ]
+    .map(|p| q.binding(p));
+    let e = targets.map(|t| q.enabled(t));
+    let p = targets.map(|t| {
+        [
+            gl::TEXTURE_LOD_BIAS,
+            gl::TEXTURE_WRAP_R,
+            gl::TEXTURE_MIN_FILTER,
+        ]
+        .map(|p| q.param(t, p))
+    });
+    format!("bindings {b:?} enabled {e:?} params {p:?}")
+}
+
+/// BindTexture with every target (the binding targets, a proxy, a cube-map face, a non-target)
+/// and every kind of name (0, generated, never generated, bound to another target, deleted), on
+/// two units, with TexParameter, Enable, PushAttrib(TEXTURE_BIT)/PopAttrib and DeleteTextures
+/// between: after each call the error, the bindings (TEXTURE_BINDING_*), IsEnabled and the
+/// bound objects' parameters (GetTexParameterfv) are the driver's.
+#[test]
+fn texture_targets_bindings_and_parameters_agree_with_the_driver() {
+    let Some(mut driver) = crate::common::test_backend(8, 8) else {
+        return;
+    };
+    let mut cpu = Context::new(8, 8).expect("an 8x8 context");
+    let targets = [
+        gl::TEXTURE_1D,
+        gl::TEXTURE_2D,
+        gl::TEXTURE_3D,
+        gl::TEXTURE_CUBE_MAP,
+        gl::PROXY_TEXTURE_2D,
+        gl::TEXTURE_CUBE_MAP_POSITIVE_X,
+        gl::LIGHT0,
+    ];
+    let mut calls = vec![Call::GenTextures(4)];
+    let mut tag = 0.0f32;
+    for unit in [gl::TEXTURE0, gl::TEXTURE1] {
+        calls.push(Call::ActiveTexture(unit));
+        for name in [0, 1, 2, 3, 9] {
+            for &target in &targets {
+                calls.push(Call::BindTexture(target, name));
+                // Tag the bound object, to see which one later queries reach.
+                tag += 0.25;
+                calls.push(Call::TexParameterf(target, gl::TEXTURE_LOD_BIAS, tag));
+                calls.push(Call::TexParameteri(
+                    target,
+                    gl::TEXTURE_WRAP_R,
+                    gl::CLAMP_TO_EDGE as i32,
+                ));
+            }
+        }
+        for &target in &targets {
+            calls.push(Call::Enable(target));
+        }
+        calls.push(Call::PushAttrib(gl::TEXTURE_BIT));
+        for (k, &target) in targets.iter().enumerate() {
+            calls.push(Call::Disable(target));
+            calls.push(Call::BindTexture(target, 4 + k as u32));
+            calls.push(Call::TexParameteri(
+                target,
+                gl::TEXTURE_MIN_FILTER,
+                gl::LINEAR as i32,
+            ));
+        }
+        calls.push(Call::BindTexture(gl::TEXTURE_2D, 1));
+        calls.push(Call::TexParameterf(
+            gl::TEXTURE_2D,
+            gl::TEXTURE_LOD_BIAS,
+            -9.0,
+        ));
+        calls.push(Call::PopAttrib);
+    }
+    calls.push(Call::DeleteTextures(3, vec![2, 3, 5]));
+    calls.push(Call::ActiveTexture(gl::TEXTURE0));
+    calls.push(Call::BindTexture(gl::TEXTURE_CUBE_MAP, 2));
+    calls.push(Call::TexParameterf(
+        gl::TEXTURE_CUBE_MAP,
+        gl::TEXTURE_LOD_BIAS,
+        f32::NAN,
+    ));
+    calls.push(Call::DeleteTextures(2, vec![1, 9]));
+    let mut checked = 0;
+    for (i, c) in calls.iter().enumerate() {
+        cpu.execute(c);
+        driver.execute(c);
+        let (a, b) = (cpu.get_error(), driver.get_error());
+        assert_eq!(a, b, "call {i} {c:?}: CPU {a:#x}, driver {b:#x}");
+        let (cpu_probe, driver_probe) = (texture_probe(&mut cpu), texture_probe(&mut driver));
+        assert_eq!(cpu_probe, driver_probe, "after call {i} {c:?}");
+        assert_eq!(
+            (cpu.get_error(), driver.get_error()),
+            (gl::NO_ERROR, gl::NO_ERROR),
+            "the queries after call {i}"
+        );
+        checked += 1;
+    }
+    assert!(checked > 150, "{checked} calls");
 }

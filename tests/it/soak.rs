@@ -1280,8 +1280,10 @@ fn textures_diff(a: &Textures, b: &Textures) -> Option<&'static str> {
     if !same_objects {
         return Some("textures.objects");
     }
-    if let Some(field) = tex_object_diff(&a.default_2d, &b.default_2d) {
-        return Some(field);
+    for (da, db) in a.defaults.iter().zip(&b.defaults) {
+        if let Some(field) = tex_object_diff(da, db) {
+            return Some(field);
+        }
     }
     first_diff!(
         a,
@@ -1291,10 +1293,7 @@ fn textures_diff(a: &Textures, b: &Textures) -> Option<&'static str> {
             units,
             unpack_row_length
         },
-        special {
-            objects,
-            default_2d
-        }
+        special { objects, defaults }
     )
     .map(|_| "textures")
 }
@@ -1328,6 +1327,7 @@ fn tex_object_diff(a: &TexObject, b: &TexObject) -> Option<&'static str> {
         a,
         b,
         TexObject {
+            target,
             min_filter,
             mag_filter,
             wrap_s,
@@ -1339,6 +1339,7 @@ fn tex_object_diff(a: &TexObject, b: &TexObject) -> Option<&'static str> {
             max_lod,
             base_level,
             max_level,
+            lod_bias,
             generate_mipmap,
             compare_mode,
             compare_func,

@@ -439,3 +439,208 @@ fn hostile_texture_coordinates_do_not_panic() {
     let _ = pixel(&mut gl, 1, 1);
     assert_eq!(gl.get_error(), NO_ERROR);
 }
+
+/// TEXTURE_BINDING_1D/2D/3D/CUBE_MAP of the active unit, in that order.
+fn bindings(gl: &mut Context) -> [i32; 4] {
+    let mut out = [0; 4];
+    for (o, pname) in out.iter_mut().zip([
+        TEXTURE_BINDING_1D,
+        TEXTURE_BINDING_2D,
+        TEXTURE_BINDING_3D,
+        TEXTURE_BINDING_CUBE_MAP,
+    ]) {
+        let mut v = [-1];
+        gl.get_integerv(pname, &mut v);
+        *o = v[0];
+    }
+    out
+}
+
+fn tex_param(gl: &mut Context, target: u32, pname: u32) -> f32 {
+    let mut v = [f32::NAN];
+    gl.get_tex_parameterfv(target, pname, &mut v);
+    v[0]
+}
+
+/// GL 1.2/1.3 texture targets (§3.8.12): one binding per target and unit, each with its own
+/// default object; an object's target is fixed at its first bind; parameters act on the object
+/// bound to the given target; DeleteTextures unbinds every target; TEXTURE_BIT saves them all.
+#[test]
+fn every_target_has_its_binding_and_objects() {
+    let mut gl = ctx();
+    gl.bind_texture(TEXTURE_2D, 1);
+    gl.bind_texture(TEXTURE_3D, 2);
+    gl.bind_texture(TEXTURE_CUBE_MAP, 3);
+    assert_eq!(bindings(&mut gl), [0, 1, 2, 3]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+    // Name 1 is a 2D texture now: binding it to 1D changes nothing.
+    let before = gl.state().clone();
+    gl.bind_texture(TEXTURE_1D, 1);
+    assert_eq!(gl.get_error(), INVALID_OPERATION);
+    assert!(gl.state() == &before);
+    gl.bind_texture(TEXTURE_CUBE_MAP_POSITIVE_X, 3);
+    assert_eq!(gl.get_error(), INVALID_ENUM);
+    // Parameters go to the object bound to the target named.
+    gl.tex_parameteri(TEXTURE_3D, TEXTURE_WRAP_R, CLAMP_TO_EDGE as i32);
+    gl.tex_parameterf(TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS, 1.25);
+    gl.tex_parameterf(TEXTURE_1D, TEXTURE_LOD_BIAS, -3.0);
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_3D, TEXTURE_WRAP_R),
+        CLAMP_TO_EDGE as f32
+    );
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_2D, TEXTURE_WRAP_R),
+        REPEAT as f32
+    );
+    assert_eq!(tex_param(&mut gl, TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS), 1.25);
+    assert_eq!(tex_param(&mut gl, TEXTURE_1D, TEXTURE_LOD_BIAS), -3.0);
+    assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), 0.0);
+    // Another unit has its own bindings.
+    gl.active_texture(TEXTURE1);
+    assert_eq!(bindings(&mut gl), [0; 4]);
+    assert_eq!(
+        tex_param(&mut gl, TEXTURE_1D, TEXTURE_LOD_BIAS),
+        -3.0,
+        "default 1D object"
+    );
+    gl.bind_texture(TEXTURE_3D, 2);
+    gl.active_texture(TEXTURE0);
+    // TEXTURE_BIT saves every target's binding and the bound objects' parameters.
+    gl.push_attrib(TEXTURE_BIT);
+    gl.bind_texture(TEXTURE_1D, 4);
+    gl.bind_texture(TEXTURE_3D, 0);
+    gl.bind_texture(TEXTURE_CUBE_MAP, 5);
+    gl.bind_texture(TEXTURE_CUBE_MAP, 3);
+    gl.tex_parameterf(TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS, 7.0);
+    assert_eq!(bindings(&mut gl), [4, 1, 0, 3]);
+    gl.pop_attrib();
+    assert_eq!(bindings(&mut gl), [0, 1, 2, 3]);
+    assert_eq!(tex_param(&mut gl, TEXTURE_CUBE_MAP, TEXTURE_LOD_BIAS), 1.25);
+    // Deleting a texture unbinds it from its target on every unit.
+    gl.delete_textures(2, &[2, 3]);
+    assert_eq!(bindings(&mut gl), [0, 1, 0, 0]);
+    gl.active_texture(TEXTURE1);
+    assert_eq!(bindings(&mut gl), [0; 4]);
+    assert!(!gl.is_texture(2));
+    // A deleted name may come back as another target.
+    gl.bind_texture(TEXTURE_1D, 2);
+    assert_eq!(bindings(&mut gl), [2, 0, 0, 0]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+/// TEXTURE_LOD_BIAS of the object (table 6.16): any float, stored as given; in λ it adds to the
+/// unit's TEXTURE_FILTER_CONTROL bias and the sum is clamped to ±MAX_TEXTURE_LOD_BIAS (§3.8.8
+/// eq. 3.18), the object's bias clamped on its own first as the driver does. A 16x16 texture on
+/// the 4x4 window has λ = 2; each level is one colour, so the level NEAREST_MIPMAP_NEAREST picks
+/// reads back directly.
+#[test]
+fn the_object_lod_bias_adds_to_the_unit_bias() {
+    let colours: [[u8; 4]; 5] = [
+        [255, 0, 0, 255],
+        [0, 255, 0, 255],
+        [0, 0, 255, 255],
+        [255, 255, 0, 255],
+        [0, 255, 255, 255],
+    ];
+    let level_of = |p: [u8; 4]| colours.iter().position(|&c| c == p);
+    let mut gl = ctx();
+    for (level, c) in colours.iter().enumerate() {
+        let size = 16 >> level;
+        let data: Vec<u8> = c.repeat(size * size);
+        gl.tex_image_2d(
+            TEXTURE_2D,
+            level as i32,
+            RGBA as i32,
+            size as i32,
+            size as i32,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&data),
+        );
+    }
+    gl.tex_parameteri(
+        TEXTURE_2D,
+        TEXTURE_MIN_FILTER,
+        NEAREST_MIPMAP_NEAREST as i32,
+    );
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+    gl.enable(TEXTURE_2D);
+    assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), 0.0);
+    // (object bias, unit bias, level): λ = 2 + clamp(clamp(object) + unit), d = ⌈λ + ½⌉ - 1.
+    for (object, unit, level) in [
+        (0.0, 0.0, 2),
+        (-1.0, 0.0, 1),
+        (1.0, 0.0, 3),
+        (-1.0, 2.0, 3),
+        (1.5, -1.5, 2),
+        (40.0, 0.0, 4),
+        (-40.0, 0.0, 0),
+        // The object's bias is clamped before the sum (the driver's order): 16 - 15 is 1, where
+        // the spec's clamp of the sum alone would give 20 - 15 = 5 and level 4.
+        (20.0, -15.0, 3),
+        (-40.0, 16.0, 2),
+    ] {
+        gl.tex_parameterf(TEXTURE_2D, TEXTURE_LOD_BIAS, object);
+        gl.tex_envf(TEXTURE_FILTER_CONTROL, TEXTURE_LOD_BIAS, unit);
+        assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), object);
+        full_quad(&mut gl);
+        let p = pixel(&mut gl, 1, 1);
+        assert_eq!(
+            level_of(p),
+            Some(level),
+            "object {object}, unit {unit}: {p:?}"
+        );
+    }
+    // The integer forms convert as numbers; the getters round.
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_LOD_BIAS, 3);
+    assert_eq!(tex_param(&mut gl, TEXTURE_2D, TEXTURE_LOD_BIAS), 3.0);
+    gl.tex_parameterfv(TEXTURE_2D, TEXTURE_LOD_BIAS, &[-2.6]);
+    let mut i = [0];
+    gl.get_tex_parameteriv(TEXTURE_2D, TEXTURE_LOD_BIAS, &mut i);
+    assert_eq!(i, [-3]);
+    assert_eq!(gl.get_error(), NO_ERROR);
+}
+
+/// Of the enabled targets (CUBE_MAP > 3D > 2D > 1D), the first with a complete texture is used,
+/// as the driver does (tests/texture_gl.rs compares): 1D, 3D and cube-map textures hold no
+/// images yet, so with 2D enabled too the 2D texture is drawn, and alone they draw nothing.
+#[test]
+fn enabled_targets_without_images_leave_the_2d_texture() {
+    for (enables, textured) in [
+        (&[TEXTURE_2D][..], true),
+        (&[TEXTURE_2D, TEXTURE_3D][..], true),
+        (&[TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D][..], true),
+        (&[TEXTURE_1D][..], false),
+        (&[TEXTURE_3D, TEXTURE_CUBE_MAP][..], false),
+    ] {
+        let mut gl = ctx();
+        gl.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            RGBA as i32,
+            1,
+            1,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&[0, 255, 0, 255]),
+        );
+        gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+        gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+        for &e in enables {
+            gl.enable(e);
+            assert!(gl.is_enabled(e));
+        }
+        gl.color3f(0.0, 0.0, 1.0);
+        full_quad(&mut gl);
+        let want = if textured {
+            [0, 255, 0, 255]
+        } else {
+            [0, 0, 255, 255]
+        };
+        assert_eq!(pixel(&mut gl, 2, 2), want, "{enables:x?}");
+        assert_eq!(gl.get_error(), NO_ERROR);
+    }
+}

@@ -291,8 +291,14 @@ fn error_rows_change_nothing() {
             INVALID_OPERATION,
         ),
         (
-            "TexParameteri bad target",
-            |g| g.tex_parameteri(TEXTURE_3D, TEXTURE_MIN_FILTER, LINEAR as i32),
+            "TexParameteri bad target (a cube-map face is no binding target)",
+            |g| {
+                g.tex_parameteri(
+                    TEXTURE_CUBE_MAP_POSITIVE_X,
+                    TEXTURE_MIN_FILTER,
+                    LINEAR as i32,
+                )
+            },
             INVALID_ENUM,
         ),
         (
@@ -381,8 +387,8 @@ fn error_rows_change_nothing() {
             INVALID_VALUE,
         ),
         (
-            "BindTexture 1D",
-            |g| g.bind_texture(TEXTURE_1D, 1),
+            "BindTexture proxy target",
+            |g| g.bind_texture(PROXY_TEXTURE_2D, 1),
             INVALID_ENUM,
         ),
         (

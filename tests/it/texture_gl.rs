@@ -591,3 +591,141 @@ fn mipmap_filters_match_the_driver() {
         );
     }
 }
+
+/// TEXTURE_LOD_BIAS of the texture object (GL 1.4, table 6.16) with and without the unit's
+/// TEXTURE_FILTER_CONTROL bias: λ' = log2 ρ + clamp(object + unit, ±MAX_TEXTURE_LOD_BIAS)
+/// (§3.8.8 eq. 3.18), on the receding mipmapped floor of `mipmap_filters_match_the_driver`,
+/// held to the texture scenes' tolerance (textured-cube's, as registered: channel 2, 0.75% of
+/// pixels; NEAREST_MIPMAP_NEAREST with bias -1 measured 84 px of 16384 = 0.51%, level switches
+/// on checker edges as in `mipmap_filters_match_the_driver`; a bias ignored or misapplied costs
+/// thousands).
+#[test]
+fn object_lod_bias_matches_the_driver() {
+    use fixedgl::gl::*;
+    let Some(scene) = fixedgl::scenes::find("textured-cube") else {
+        panic!("textured-cube is registered")
+    };
+    let (tol, max_percent) = (scene.tolerance.channel, scene.tolerance.max_percent);
+    for min in [NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_LINEAR] {
+        // (object bias, unit bias); the last: the driver clamps the object's bias before the sum
+        // (16 - 15 = 1; the spec's 20 - 15 = 5 differs in 5096 px).
+        for (object, unit) in [
+            (1.5, 0.0),
+            (-1.0, 0.0),
+            (1.5, -0.5),
+            (-1.0, 2.0),
+            (20.0, -15.0),
+        ] {
+            let Some((n, first)) = cpu_vs_gl(128, tol, |c| {
+                c.tex_parameteri(TEXTURE_2D, GENERATE_MIPMAP, 1);
+                let board = fixedgl::checkerboard(64, 8, [250, 250, 250, 255], [10, 60, 200, 255]);
+                c.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    64,
+                    64,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&board),
+                );
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, min as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+                c.tex_parameterf(TEXTURE_2D, TEXTURE_LOD_BIAS, object);
+                c.tex_envf(TEXTURE_FILTER_CONTROL, TEXTURE_LOD_BIAS, unit);
+                c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
+                c.enable(TEXTURE_2D);
+                c.matrix_mode(PROJECTION);
+                c.frustum(-0.1, 0.1, -0.1, 0.1, 0.1, 50.0);
+                c.matrix_mode(MODELVIEW);
+                c.begin(QUADS);
+                for (s, t, x, z) in [
+                    (0.0, 0.0, -4.0, -0.2),
+                    (8.0, 0.0, 4.0, -0.2),
+                    (8.0, 24.0, 4.0, -40.0),
+                    (0.0, 24.0, -4.0, -40.0),
+                ] {
+                    c.tex_coord2f(s, t);
+                    c.vertex3f(x, -1.0, z);
+                }
+                c.end();
+            }) else {
+                return;
+            };
+            let percent = 100.0 * n as f64 / (128.0 * 128.0);
+            assert!(
+                percent <= max_percent,
+                "min {min:#x} bias {object} + {unit}: {n} px, first {first}"
+            );
+            let _ = writeln!(
+                std::io::stderr(),
+                "min {min:#x} bias {object} + {unit}: {n} of {} px off by more than {tol}",
+                128 * 128
+            );
+        }
+    }
+}
+
+/// Enabling TEXTURE_1D, _3D or _CUBE_MAP beside TEXTURE_2D (their textures have no images, so
+/// they are incomplete) draws what the driver draws: the first enabled target in the order
+/// CUBE_MAP > 3D > 2D > 1D whose texture is complete, here the 2D one; alone, nothing.
+#[test]
+fn enabled_texture_targets_draw_what_the_driver_draws() {
+    use fixedgl::gl::*;
+    let combos: &[&[u32]] = &[
+        &[TEXTURE_2D],
+        &[TEXTURE_1D],
+        &[TEXTURE_3D],
+        &[TEXTURE_CUBE_MAP],
+        &[TEXTURE_2D, TEXTURE_1D],
+        &[TEXTURE_2D, TEXTURE_3D],
+        &[TEXTURE_2D, TEXTURE_CUBE_MAP],
+        &[TEXTURE_1D, TEXTURE_3D, TEXTURE_CUBE_MAP],
+        &[TEXTURE_1D, TEXTURE_2D, TEXTURE_3D, TEXTURE_CUBE_MAP],
+    ];
+    for &enables in combos {
+        // Unit 0 and unit 1, each with its own 2D texture and objects bound to the other targets.
+        let Some((n, first)) = cpu_vs_gl(16, 1, |c| {
+            let board = fixedgl::checkerboard(4, 2, [255, 40, 0, 255], [0, 200, 90, 255]);
+            for unit in [TEXTURE0, TEXTURE1] {
+                c.active_texture(unit);
+                let base = 10 * (unit - TEXTURE0 + 1);
+                for (k, target) in [TEXTURE_1D, TEXTURE_2D, TEXTURE_3D, TEXTURE_CUBE_MAP]
+                    .into_iter()
+                    .enumerate()
+                {
+                    c.bind_texture(target, base + k as u32);
+                }
+                c.tex_image_2d(
+                    TEXTURE_2D,
+                    0,
+                    RGBA as i32,
+                    4,
+                    4,
+                    0,
+                    RGBA,
+                    UNSIGNED_BYTE,
+                    Some(&board),
+                );
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
+                c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
+                c.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, MODULATE as i32);
+                for &e in enables {
+                    c.enable(e);
+                }
+            }
+            c.color3f(0.9, 0.7, 0.5);
+            c.begin(QUADS);
+            for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                c.multi_tex_coord2f(TEXTURE0, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+                c.multi_tex_coord2f(TEXTURE1, (1.0 - y) / 2.0, (x + 1.0) / 2.0);
+                c.vertex2f(x, y);
+            }
+            c.end();
+        }) else {
+            return;
+        };
+        assert_eq!(n, 0, "enabled {enables:x?}: first {first}");
+    }
+}

@@ -30,7 +30,7 @@ fn level(w: i32, h: i32, base: u32, f: impl Fn(i32, i32) -> [f32; 4]) -> Level {
 fn sampler(obj: TexObject, env: u32) -> Sampler {
     let mut state = State::new(4, 4);
     state.enables.texture_2d[0] = true;
-    state.textures.default_2d = Arc::new(obj);
+    state.textures.defaults[1] = Arc::new(obj);
     state.textures.units[0].env_mode = env;
     state.textures.units[0].env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
     Sampler::new(&state, 0).expect("complete texture")
@@ -260,14 +260,14 @@ fn incomplete_textures_disable_the_unit() {
     state.enables.texture_2d[0] = true;
     let one = level(4, 4, gl::RGBA, |_, _| [1.0; 4]);
     let mut o = obj_with(vec![one.clone()], gl::NEAREST_MIPMAP_LINEAR, gl::LINEAR);
-    state.textures.default_2d = Arc::new(o.clone());
+    state.textures.defaults[1] = Arc::new(o.clone());
     assert!(Sampler::new(&state, 0).is_none());
     // A full chain 4, 2, 1 is complete...
     let half = level(2, 2, gl::RGBA, |_, _| [1.0; 4]);
     let quarter = level(1, 1, gl::RGBA, |_, _| [1.0; 4]);
     o.levels[1] = Some(half.clone());
     o.levels[2] = Some(quarter);
-    state.textures.default_2d = Arc::new(o.clone());
+    state.textures.defaults[1] = Arc::new(o.clone());
     assert!(Sampler::new(&state, 0).is_some());
     // ...unless a level has the wrong size, or the internal format differs...
     o.levels[2] = Some(level(2, 2, gl::RGBA, |_, _| [1.0; 4]));
@@ -285,7 +285,7 @@ fn incomplete_textures_disable_the_unit() {
     assert!(o.is_complete());
     // Disabled: no sampler even when complete.
     state.enables.texture_2d[0] = false;
-    state.textures.default_2d = Arc::new(o);
+    state.textures.defaults[1] = Arc::new(o);
     assert!(Sampler::new(&state, 0).is_none());
 }
 
