@@ -20,6 +20,7 @@ use std::sync::Arc;
 
 use super::Context;
 use crate::call::Call;
+use crate::convert;
 use crate::gl;
 use crate::texture::{
     as_rgba, base_internal_format, format_components, keep, quantize, target_index, type_size,
@@ -579,15 +580,15 @@ fn pack(dst: &mut [u8], at: usize, type_: u32, c: f32) {
     let c = f64::from(c);
     let bytes: Vec<u8> = match type_ {
         gl::UNSIGNED_BYTE => vec![(c * 255.0).round() as u8],
-        gl::BYTE => vec![((c * 255.0 - 1.0) / 2.0).round() as i8 as u8],
+        gl::BYTE => vec![convert::unit_to_signed(c, 255.0).round() as i8 as u8],
         gl::UNSIGNED_SHORT => ((c * 65535.0).round() as u16).to_ne_bytes().to_vec(),
-        gl::SHORT => (((c * 65535.0 - 1.0) / 2.0).round() as i16)
+        gl::SHORT => (convert::unit_to_signed(c, 65535.0).round() as i16)
             .to_ne_bytes()
             .to_vec(),
         gl::UNSIGNED_INT => ((c * f64::from(u32::MAX)).round() as u32)
             .to_ne_bytes()
             .to_vec(),
-        gl::INT => (((c * f64::from(u32::MAX) - 1.0) / 2.0).round() as i32)
+        gl::INT => (convert::unit_to_signed(c, f64::from(u32::MAX)).round() as i32)
             .to_ne_bytes()
             .to_vec(),
         _ => (c as f32).to_ne_bytes().to_vec(),

@@ -12,6 +12,7 @@ use glam::{DVec4, Vec4};
 
 use super::Context;
 use crate::call::Call;
+use crate::convert;
 use crate::counts;
 use crate::gl;
 use crate::state::MAX_TEXTURE_UNITS;
@@ -19,7 +20,7 @@ use crate::texture::{target_index, TexObject, MAX_TEXTURE_LOD_BIAS};
 
 /// An integer colour component as a float: the full range onto [-1, 1] (table 2.9).
 fn int_to_norm(i: f64) -> f64 {
-    (2.0 * i + 1.0) / f64::from(u32::MAX)
+    convert::signed_to_unit(i, f64::from(u32::MAX))
 }
 
 /// The enum a parameter value names (a float converts by truncation, as Mesa does for TexEnv and
@@ -703,7 +704,7 @@ impl Context {
 
 /// A [0, 1] colour component as an integer: the whole positive range (table 4.9 inverted).
 fn norm_to_int(x: f64) -> i32 {
-    ((x * f64::from(u32::MAX) - 1.0) / 2.0)
+    convert::unit_to_signed(x, f64::from(u32::MAX))
         .round()
         .clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32
 }
