@@ -14,8 +14,6 @@ use crate::state::{
     MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM,
 };
 
-/// `MAX_TEXTURE_SIZE`.
-pub const MAX_TEXTURE_SIZE: i32 = 2048;
 /// `SUBPIXEL_BITS`: window coordinates snap to 1/256 pixel, as llvmpipe's do.
 pub const SUBPIXEL_BITS: i32 = 8;
 /// `ALIASED_POINT_SIZE_RANGE` and `SMOOTH_POINT_SIZE_RANGE` (= `POINT_SIZE_RANGE`).
@@ -202,7 +200,7 @@ impl Context {
             gl::MAX_TEXTURE_STACK_DEPTH => i(MAX_TEXTURE_STACK_DEPTH as i32),
             gl::MAX_TEXTURE_UNITS => i(MAX_TEXTURE_UNITS as i32),
             gl::MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM as i32; 2]),
-            gl::MAX_TEXTURE_SIZE => i(MAX_TEXTURE_SIZE),
+            gl::MAX_TEXTURE_SIZE => i(crate::texture::MAX_TEXTURE_SIZE),
             gl::SUBPIXEL_BITS => i(SUBPIXEL_BITS),
             gl::ALIASED_POINT_SIZE_RANGE | gl::SMOOTH_POINT_SIZE_RANGE => floats(POINT_SIZE_RANGE),
             gl::SMOOTH_POINT_SIZE_GRANULARITY => f(POINT_SIZE_GRANULARITY),
