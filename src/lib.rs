@@ -17,6 +17,7 @@ pub mod arrays;
 pub mod context;
 mod error;
 pub mod gl;
+pub mod pixel_store;
 pub mod state;
 pub mod texture;
 
