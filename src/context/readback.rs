@@ -3,9 +3,10 @@
 //! Design decision: every supported format/type pair goes through one path: each pixel becomes
 //! its components as GL defines them (colour and depth normalised to [0, 1], stencil an integer
 //! index), then each component is converted to the requested type (§4.3.2, table 2.9 reversed)
-//! and placed in client memory under the PACK_ modes (§4.3.2 "Placement in Client Memory": ROW_LENGTH,
-//! SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES; `crate::pixel_store`). Pixels outside the window
-//! are left untouched, and so are the bytes the skips and the row padding pass over.
+//! and placed in client memory under the PACK_ modes (§4.3.2 "Placement in Client Memory":
+//! ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES; `crate::pixel_store`). Pixels
+//! outside the window are left untouched, and so are the bytes the skips and row padding pass
+//! over.
 
 use crate::gl;
 use crate::Context;

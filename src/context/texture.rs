@@ -514,9 +514,10 @@ impl Context {
     }
 
     /// `glGetTexImage` (§6.1.4): level `level` of the bound 2D texture as `format` / `type_`,
-    /// placed under the PACK_ modes (§4.3.2) into `pixels`. A level not specified writes nothing; a
-    /// `pixels` too short is INVALID_OPERATION (as TexImage2D's unpack); depth data from a
-    /// colour texture (or the reverse) is INVALID_OPERATION.
+    /// placed under the PACK_ modes (§4.3.2) into `pixels`. A level not specified writes
+    /// nothing; a `pixels` too short for the skips and the image is INVALID_OPERATION (as
+    /// TexImage2D's unpack); depth data from a colour texture (or the reverse) is
+    /// INVALID_OPERATION.
     pub fn get_tex_image(
         &mut self,
         target: u32,
