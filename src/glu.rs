@@ -102,11 +102,12 @@ pub const GLU_INVALID_VALUE: i32 = 100_901;
 /// `GLU_INVALID_ENUM`.
 pub const GLU_INVALID_ENUM: i32 = 100_900;
 
-/// `gluBuild2DMipmaps` (GLU 1.3 §3.2) for UNSIGNED_BYTE data: level 0 is `data` (read with the
-/// context's UNPACK_ALIGNMENT and UNPACK_ROW_LENGTH), each next level halves the previous one
-/// with a 2x2 box filter, rounding `(a + b + c + d + 2) / 4` as the reference GLU does, down
-/// to 1x1; every level goes to `tex_image_2d` with UNPACK_ALIGNMENT 1 and UNPACK_ROW_LENGTH 0,
-/// which are restored afterwards (as GLU saves and restores the pixel store state).
+/// `gluBuild2DMipmaps` (GLU 1.3 §3.2) for UNSIGNED_BYTE data: level 0 is `data` (read under
+/// the context's UNPACK_ modes: ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS; SWAP_BYTES does
+/// nothing to bytes), each next level halves the previous one with a 2x2 box filter, rounding
+/// `(a + b + c + d + 2) / 4` as the reference GLU does, down to 1x1; every level goes to
+/// `tex_image_2d` tightly packed (UNPACK_ALIGNMENT 1, ROW_LENGTH 0, no skips), and the modes
+/// are restored afterwards (as GLU saves and restores the pixel store state).
 /// Returns 0, or GLU_INVALID_VALUE for a size below 1 or data too short, GLU_INVALID_ENUM for
 /// a format or type not supported. Deviation: a size that is not a power of two is reduced to
 /// the power of two below it by nearest sampling (GLU scales to the nearest one with a box
@@ -123,7 +124,7 @@ pub fn build_2d_mipmaps(
     data: &[u8],
 ) -> i32 {
     use crate::gl;
-    use crate::texture::{format_components, unpack_extent};
+    use crate::texture::format_components;
     let Some(n) = format_components(format) else {
         return GLU_INVALID_ENUM;
     };
@@ -133,12 +134,14 @@ pub fn build_2d_mipmaps(
     if width < 1 || height < 1 || width > crate::texture::MAX_TEXTURE_SIZE * 8 {
         return GLU_INVALID_VALUE;
     }
-    let align = ctx.state().unpack_alignment;
-    let row_length = ctx.state().textures.unpack_row_length;
-    let (stride, need) = unpack_extent(width, height, n, 1, align, row_length);
-    if data.len() < need {
+    let saved = ctx.state().unpack;
+    // Checked (the row length and skips are the user's): an overflow is data too short.
+    let Some(layout) = saved
+        .layout(width, height, n, 1)
+        .filter(|l| data.len() >= l.need)
+    else {
         return GLU_INVALID_VALUE;
-    }
+    };
     let pot = |x: i32| 1i32 << (31 - x.leading_zeros());
     let (mut w, mut h) = (
         pot(width).min(crate::texture::MAX_TEXTURE_SIZE),
@@ -150,12 +153,22 @@ pub fn build_2d_mipmaps(
         let sj = j * height as usize / h as usize;
         for i in 0..w as usize {
             let si = i * width as usize / w as usize;
-            let at = sj * stride + si * n;
+            let at = layout.at(si, sj);
             img.extend_from_slice(data.get(at..at + n).unwrap_or(&[0, 0, 0, 0][..n.min(4)]));
         }
     }
+    // The skips are set (and restored) only when in use, so the usual recording is unchanged.
+    let skips = [
+        (gl::UNPACK_SKIP_ROWS, saved.skip_rows),
+        (gl::UNPACK_SKIP_PIXELS, saved.skip_pixels),
+    ];
     ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 1);
     ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
+    for &(pname, v) in &skips {
+        if v != 0 {
+            ctx.pixel_storei(pname, 0);
+        }
+    }
     let mut level = 0;
     loop {
         ctx.tex_image_2d(
@@ -195,7 +208,12 @@ pub fn build_2d_mipmaps(
         h = nh;
         level += 1;
     }
-    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, align);
-    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, row_length);
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, saved.alignment);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, saved.row_length);
+    for &(pname, v) in &skips {
+        if v != 0 {
+            ctx.pixel_storei(pname, v);
+        }
+    }
     0
 }

@@ -18,6 +18,7 @@ pub mod context;
 mod convert;
 mod error;
 pub mod gl;
+pub mod pixel_store;
 pub mod state;
 pub mod texture;
 

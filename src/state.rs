@@ -358,9 +358,10 @@ pub struct State {
     pub clear_depth: f64,
     pub clear_stencil: i32,
 
-    // Pixel store (table 6.24).
-    pub pack_alignment: i32,
-    pub unpack_alignment: i32,
+    // Pixel store (tables 6.17, 6.18; GL 2.1 §3.6.1): every client pixel read (TexImage2D,
+    // TexSubImage2D) goes through `unpack`, every write (ReadPixels, GetTexImage) through `pack`.
+    pub unpack: crate::pixel_store::PixelModes,
+    pub pack: crate::pixel_store::PixelModes,
 
     pub hints: Hints,
 
@@ -375,7 +376,7 @@ pub struct State {
     pub blend: Blend,
     /// `LOGIC_OP_MODE` (table 6.21).
     pub logic_op: u32,
-    // Objects, units, UNPACK_ROW_LENGTH (tables 6.15 to 6.19, 6.24)
+    // Objects and units (tables 6.15, 6.16, 6.19)
     pub textures: crate::texture::Textures,
 }
 
@@ -424,8 +425,8 @@ impl State {
             clear_color: Vec4::ZERO,
             clear_depth: 1.0,
             clear_stencil: 0,
-            pack_alignment: 4,
-            unpack_alignment: 4,
+            unpack: crate::pixel_store::PixelModes::default(),
+            pack: crate::pixel_store::PixelModes::default(),
             hints: Hints::default(),
             list_base: 0,
             arrays: crate::arrays::ArrayState::default(),

@@ -16,6 +16,7 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use crate::gl;
+use crate::pixel_store::Layout;
 use crate::state::MAX_TEXTURE_UNITS;
 
 /// `MAX_TEXTURE_SIZE` (as `glGet` reports it).
@@ -508,7 +509,7 @@ impl NameSet {
     }
 }
 
-/// Every piece of texture state: objects, names, units, and the unpack row length.
+/// Every piece of texture state: objects, names, units (the unpack modes are `State::unpack`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Textures {
     /// Names returned by GenTextures and not yet deleted (bound or not).
@@ -520,8 +521,6 @@ pub struct Textures {
     pub defaults: [Arc<TexObject>; 4],
     /// Per-unit state.
     pub units: [TexUnit; MAX_TEXTURE_UNITS],
-    /// UNPACK_ROW_LENGTH (table 6.24; 0: rows are `width` long).
-    pub unpack_row_length: i32,
 }
 
 impl Default for Textures {
@@ -531,7 +530,6 @@ impl Default for Textures {
             objects: BTreeMap::new(),
             defaults: TARGETS.map(|t| Arc::new(TexObject::new(t))),
             units: Default::default(),
-            unpack_row_length: 0,
         }
     }
 }
@@ -642,66 +640,31 @@ pub fn type_size(type_: u32) -> Option<usize> {
     })
 }
 
-/// Where an unpacked image's rows lie in client memory (§3.6.4 with UNPACK_ALIGNMENT and
-/// UNPACK_ROW_LENGTH): bytes between row starts, and bytes the whole image needs. The products
-/// saturate: ROW_LENGTH and the sizes are the caller's, and a wrapped `need` could pass a
-/// length check; `usize::MAX` is more than any slice holds, so the caller's check fails instead.
-pub fn unpack_extent(
-    width: i32,
-    height: i32,
-    components: usize,
-    size: usize,
-    alignment: i32,
-    row_length: i32,
-) -> (usize, usize) {
-    let w = width.max(0) as usize;
-    let h = height.max(0) as usize;
-    let l = if row_length > 0 {
-        row_length as usize
-    } else {
-        w
-    };
-    let a = alignment.max(1) as usize;
-    let pixel = components.saturating_mul(size);
-    let row = pixel.saturating_mul(l);
-    // k = a/s · ceil(s·n·l / a) components when s < a, else n·l (eq. 3.? of §3.6.4), in bytes.
-    let stride = if size >= a {
-        row
-    } else {
-        row.div_ceil(a).saturating_mul(a)
-    };
-    let need = if w == 0 || h == 0 {
-        0
-    } else {
-        stride
-            .saturating_mul(h - 1)
-            .saturating_add(pixel.saturating_mul(w))
-    };
-    (stride, need)
-}
-
 /// One component of client data as a float: unsigned and signed integers by table 2.9
-/// (c / (2^b - 1), (2c + 1) / (2^b - 1)), FLOAT as it is.
-fn component(data: &[u8], at: usize, type_: u32) -> f32 {
-    let b = |k: usize| data.get(at + k).copied().unwrap_or(0);
+/// (c / (2^b - 1), (2c + 1) / (2^b - 1)), FLOAT as it is. The element's bytes are in the
+/// client's order, reversed first when UNPACK_SWAP_BYTES is on (§3.6.4, table 3.7).
+fn component(data: &[u8], at: usize, type_: u32, layout: &Layout) -> f32 {
+    let mut e = [0u8; 4];
+    let n = layout.size.min(4);
+    for (k, slot) in e[..n].iter_mut().enumerate() {
+        *slot = data.get(at + k).copied().unwrap_or(0);
+    }
+    layout.order(&mut e[..n]);
     match type_ {
-        gl::UNSIGNED_BYTE => f32::from(b(0)) / 255.0,
-        gl::BYTE => (2.0 * f32::from(b(0) as i8) + 1.0) / 255.0,
-        gl::UNSIGNED_SHORT => f32::from(u16::from_ne_bytes([b(0), b(1)])) / 65535.0,
-        gl::SHORT => (2.0 * f32::from(i16::from_ne_bytes([b(0), b(1)])) + 1.0) / 65535.0,
-        gl::UNSIGNED_INT => {
-            (f64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])) / f64::from(u32::MAX)) as f32
-        }
-        gl::INT => {
-            ((2.0 * f64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])) + 1.0)
-                / f64::from(u32::MAX)) as f32
-        }
-        _ => f32::from_ne_bytes([b(0), b(1), b(2), b(3)]),
+        gl::UNSIGNED_BYTE => f32::from(e[0]) / 255.0,
+        gl::BYTE => (2.0 * f32::from(e[0] as i8) + 1.0) / 255.0,
+        gl::UNSIGNED_SHORT => f32::from(u16::from_ne_bytes([e[0], e[1]])) / 65535.0,
+        gl::SHORT => (2.0 * f32::from(i16::from_ne_bytes([e[0], e[1]])) + 1.0) / 65535.0,
+        gl::UNSIGNED_INT => (f64::from(u32::from_ne_bytes(e)) / f64::from(u32::MAX)) as f32,
+        gl::INT => ((2.0 * f64::from(i32::from_ne_bytes(e)) + 1.0) / f64::from(u32::MAX)) as f32,
+        _ => f32::from_ne_bytes(e),
     }
 }
 
-/// Unpacks `width` x `height` pixels of `format`/`type_` (already validated, `data` long
-/// enough) into texels of base format `base`: components to RGBA (§3.6.4 "conversion to
+/// Unpacks `width` x `height` pixels of `format`/`type_` (already validated, `data` at least
+/// `layout.need` long) into texels of base format `base`: each pixel where `layout` puts it
+/// (UNPACK_ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES: see
+/// [`crate::pixel_store::PixelModes::layout`]), components to RGBA (§3.6.4 "conversion to
 /// RGB"; a missing R, G, B is 0, a missing A is 1; L goes to R), then the components `base`
 /// keeps (table 3.15), clamped and reduced to the stored precision.
 pub fn unpack(
@@ -710,11 +673,11 @@ pub fn unpack(
     height: i32,
     format: u32,
     type_: u32,
-    stride: usize,
+    layout: &Layout,
     base: u32,
 ) -> Vec<[f32; 4]> {
     let mut out = Vec::new();
-    unpack_into(&mut out, data, width, height, format, type_, stride, base);
+    unpack_into(&mut out, data, width, height, format, type_, layout, base);
     out
 }
 
@@ -727,15 +690,14 @@ pub fn unpack_into(
     height: i32,
     format: u32,
     type_: u32,
-    stride: usize,
+    layout: &Layout,
     base: u32,
 ) {
-    let n = format_components(format).unwrap_or(4);
-    let s = type_size(type_).unwrap_or(1);
+    let s = layout.size;
     for j in 0..height.max(0) as usize {
         for i in 0..width.max(0) as usize {
-            let at = j * stride + i * n * s;
-            let c = |k: usize| component(data, at + k * s, type_);
+            let at = layout.at(i, j);
+            let c = |k: usize| component(data, at + k * s, type_, layout);
             let rgba = match format {
                 gl::RED => [c(0), 0.0, 0.0, 1.0],
                 gl::GREEN => [0.0, c(0), 0.0, 1.0],

@@ -185,7 +185,8 @@ fn copy_bound_params(d: &mut State, s: &State) {
 pub(crate) fn copy_client_groups(mask: u32, d: &mut State, s: &State) {
     let has = |bit: u32| mask & bit != 0;
     if has(gl::CLIENT_PIXEL_STORE_BIT) {
-        copy!(d, s; pack_alignment, unpack_alignment, textures.unpack_row_length);
+        // Tables 6.17, 6.18: all eight modes of each direction.
+        copy!(d, s; unpack, pack);
     }
     if has(gl::CLIENT_VERTEX_ARRAY_BIT) {
         copy!(d, s; client_active_texture);

@@ -3,12 +3,14 @@
 //!
 //! Each command is outside-Begin/End only (§2.6.3).
 //!
-//! Design decision: of the pixel storage modes only PACK_ALIGNMENT and UNPACK_ALIGNMENT are kept
-//! (the only ones `State` holds); any other pname is INVALID_ENUM, which GL would accept.
+//! Pixel storage: all sixteen modes are kept (`State::pack`, `State::unpack`, see
+//! `crate::pixel_store`); those fixedgl has no command for (LSB_FIRST, IMAGE_HEIGHT, SKIP_IMAGES)
+//! are stored and queried only.
 
 use super::{record, Context};
 use crate::call::Call;
 use crate::gl;
+use crate::pixel_store;
 
 impl Context {
     /// `glHint`: every GL 2.1 target and PHONG_HINT_WIN; mode FASTEST, NICEST or DONT_CARE.
@@ -36,41 +38,36 @@ impl Context {
         *slot = mode;
     }
 
-    /// `glPixelStorei`: PACK_ALIGNMENT or UNPACK_ALIGNMENT, each 1, 2, 4 or 8 (GL 2.1 §3.6.1).
+    /// `glPixelStorei`: any of the sixteen modes of GL 2.1 table 3.1 (else INVALID_ENUM); a
+    /// boolean is TRUE for any nonzero value, an integer must be >= 0 and an alignment 1, 2, 4
+    /// or 8 (else INVALID_VALUE, nothing changed). Executed immediately in a display list
+    /// (§5.4).
     pub fn pixel_storei(&mut self, pname: u32, param: i32) {
         record!(self, Call::PixelStorei(pname, param));
         self.pixel_store(pname, param);
     }
 
-    /// `glPixelStoref`: the value is rounded to the nearest integer (GL 2.1 §3.6.1).
+    /// `glPixelStoref`: a boolean mode is FALSE for 0.0 and TRUE otherwise, an integer mode takes
+    /// the value rounded to the nearest integer (§3.6.1); see [`pixel_store::from_float`].
     pub fn pixel_storef(&mut self, pname: u32, param: f32) {
         record!(self, Call::PixelStoref(pname, param));
-        // `as` saturates and maps NaN to 0, which no alignment accepts.
-        self.pixel_store(pname, param.round() as i32);
+        self.pixel_store(pname, pixel_store::from_float(pname, param));
     }
 
     fn pixel_store(&mut self, pname: u32, param: i32) {
         if !self.outside_begin_end() {
             return;
         }
-        // UNPACK_ROW_LENGTH, any value >= 0 (§3.6.1, table 3.1)
-        if pname == gl::UNPACK_ROW_LENGTH {
-            if param < 0 {
-                return self.error(gl::INVALID_VALUE);
-            }
-            self.state.textures.unpack_row_length = param;
-            return;
-        }
-        if !matches!(pname, gl::PACK_ALIGNMENT | gl::UNPACK_ALIGNMENT) {
+        let Some((pack, mode)) = pixel_store::pname(pname) else {
             return self.error(gl::INVALID_ENUM);
-        }
-        if !matches!(param, 1 | 2 | 4 | 8) {
-            return self.error(gl::INVALID_VALUE);
-        }
-        if pname == gl::PACK_ALIGNMENT {
-            self.state.pack_alignment = param;
+        };
+        let modes = if pack {
+            &mut self.state.pack
         } else {
-            self.state.unpack_alignment = param;
+            &mut self.state.unpack
+        };
+        if let Err(code) = modes.set(mode, param) {
+            self.error(code);
         }
     }
 

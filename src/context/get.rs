@@ -179,9 +179,16 @@ impl Context {
             gl::COLOR_CLEAR_VALUE => norm(s.clear_color.to_array()),
             gl::DEPTH_CLEAR_VALUE => Value::new(Conversion::Normalized, [s.clear_depth]),
             gl::STENCIL_CLEAR_VALUE => i(s.clear_stencil),
-            // Pixel store (table 6.24).
-            gl::PACK_ALIGNMENT => i(s.pack_alignment),
-            gl::UNPACK_ALIGNMENT => i(s.unpack_alignment),
+            // Pixel store (tables 6.17, 6.18): SWAP_BYTES and LSB_FIRST are booleans.
+            p if crate::pixel_store::pname(p).is_some() => {
+                let (pack, mode) = crate::pixel_store::pname(p)?;
+                let v = if pack { s.pack } else { s.unpack }.get(mode);
+                if mode.is_boolean() {
+                    b(v != 0)
+                } else {
+                    i(v)
+                }
+            }
             // Hints (table 6.37).
             gl::PERSPECTIVE_CORRECTION_HINT => e(s.hints.perspective_correction),
             gl::POINT_SMOOTH_HINT => e(s.hints.point_smooth),
@@ -305,7 +312,6 @@ impl Context {
             gl::TEXTURE_BINDING_2D => i(s.textures.units.get(unit)?.bindings[1] as i32),
             gl::TEXTURE_BINDING_3D => i(s.textures.units.get(unit)?.bindings[2] as i32),
             gl::TEXTURE_BINDING_CUBE_MAP => i(s.textures.units.get(unit)?.bindings[3] as i32),
-            gl::UNPACK_ROW_LENGTH => i(s.textures.unpack_row_length),
             gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
             _ => b(*self.state.cap_mut(pname)?),
         };

@@ -3,7 +3,10 @@
 //! Design decision: every supported format/type pair goes through one path: each pixel becomes
 //! its components as GL defines them (colour and depth normalised to [0, 1], stencil an integer
 //! index), then each component is converted to the requested type (§4.3.2, table 2.9 reversed)
-//! and packed with PACK_ALIGNMENT row padding. Pixels outside the window are left untouched.
+//! and placed in client memory under the PACK_ modes (§4.3.2 "Placement in Client Memory":
+//! ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES; `crate::pixel_store`). Pixels
+//! outside the window are left untouched, and so are the bytes the skips and row padding pass
+//! over.
 
 use crate::gl;
 use crate::Context;
@@ -18,11 +21,12 @@ enum Source {
 }
 
 impl Context {
-    /// `glReadPixels` into `out`, rows bottom-up from (x, y), each row padded to the pack
-    /// alignment. Formats RGBA, RGB, RED, GREEN, BLUE, ALPHA, LUMINANCE, LUMINANCE_ALPHA,
+    /// `glReadPixels` into `out`, rows bottom-up from (x, y), placed under the PACK_ modes
+    /// (row length, skipped rows and pixels, alignment, byte swapping). Formats RGBA, RGB, RED, GREEN, BLUE, ALPHA, LUMINANCE, LUMINANCE_ALPHA,
     /// DEPTH_COMPONENT and STENCIL_INDEX; types UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT and
-    /// FLOAT, multi-byte values little-endian. Errors: INVALID_ENUM for another format or type,
-    /// INVALID_VALUE for a negative size or an `out` shorter than the request,
+    /// FLOAT, multi-byte values little-endian (big-endian with PACK_SWAP_BYTES). Errors:
+    /// INVALID_ENUM for another format or type, INVALID_VALUE for a negative size or an `out`
+    /// shorter than the skips and the request need,
     /// INVALID_OPERATION between Begin and End. Flushes batched drawing first.
     #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
@@ -65,14 +69,15 @@ impl Context {
             _ => 1,
         };
         let (w, h) = (width as usize, height as usize);
-        // Every product of the caller's sizes is checked: width and height up to 2^31 times 16
-        // bytes a pixel wrap a usize, and a wrapped `needed` passed the length check below while
-        // the loops then ran over the whole requested rectangle. No slice can be that long, so an
-        // overflow is the same INVALID_VALUE as a short `out`.
-        let Some(needed) = read_extent(w, h, comps, size, self.state.pack_alignment) else {
+        // Every product of the caller's sizes is checked (`PixelModes::layout`): width, height,
+        // PACK_ROW_LENGTH and the skips up to 2^31 times 16 bytes a pixel wrap a usize, and a
+        // wrapped `need` passed the length check below while the loops then ran over the whole
+        // requested rectangle. No slice can be that long, so an overflow is the same
+        // INVALID_VALUE as a short `out`.
+        let Some(layout) = self.state.pack.layout(width, height, comps, size) else {
             return self.error(gl::INVALID_VALUE);
         };
-        if out.len() < needed.total {
+        if out.len() < layout.need {
             return self.error(gl::INVALID_VALUE);
         }
         self.renderer.flush(&self.state);
@@ -88,15 +93,14 @@ impl Context {
             (lo as usize)..(hi as usize)
         };
         let (cols, rows) = (span(x, w, fw), span(y, h, fh));
-        let px_bytes = comps * size;
         for j in rows {
             for i in cols.clone() {
                 let (px, py) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
                 let Some((c, d, s)) = fb.pixel(px, py) else {
                     continue;
                 };
-                // j < h and i < w, so this is at most `needed.total`, which did not overflow.
-                let at = j * needed.stride + i * px_bytes;
+                // j < h and i < w, so this is at most `layout.need`, which did not overflow.
+                let at = layout.at(i, j);
                 for k in 0..comps {
                     let (norm, int) = match source {
                         Source::Color(idx) => {
@@ -111,6 +115,7 @@ impl Context {
                         continue;
                     };
                     pack(dst, ty, norm, int);
+                    layout.order(dst);
                 }
             }
         }
@@ -129,30 +134,6 @@ impl Context {
         debug_assert_eq!(bytes.len(), w as usize * h as usize * 4);
         image::RgbaImage::from_raw(w, h, bytes).unwrap_or_else(|| image::RgbaImage::new(w, h))
     }
-}
-
-/// The byte layout of a packed `w` x `h` rectangle of `comps` components of `size` bytes: the
-/// row stride (rows padded to `alignment` unless a component is at least that large, §4.3.2 and
-/// §3.6.4) and the bytes needed, the last row unpadded. `None` when a size does not fit a usize (no slice can hold it).
-struct Extent {
-    stride: usize,
-    total: usize,
-}
-
-fn read_extent(w: usize, h: usize, comps: usize, size: usize, alignment: i32) -> Option<Extent> {
-    let row = w.checked_mul(comps)?.checked_mul(size)?;
-    let align = alignment.clamp(1, 8) as usize;
-    let stride = if size >= align {
-        row
-    } else {
-        row.checked_next_multiple_of(align)?
-    };
-    let total = if h == 0 || w == 0 {
-        0
-    } else {
-        stride.checked_mul(h - 1)?.checked_add(row)?
-    };
-    Some(Extent { stride, total })
 }
 
 /// Converts one component to type `ty` into `dst`: a normalised value by c·(2^b − 1) rounded
@@ -229,7 +210,7 @@ mod tests {
         assert_eq!(c.get_error(), gl::INVALID_VALUE);
         assert!(short.iter().all(|&b| b == 7));
         // Alignment 1: rows packed back to back.
-        c.state.pack_alignment = 1;
+        c.state.pack.alignment = 1;
         let mut out = [0u8; 18];
         c.read_pixels(0, 0, 3, 2, gl::RGB, gl::UNSIGNED_BYTE, &mut out);
         assert_eq!(out[9..12], [51, 102, 153]);

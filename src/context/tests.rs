@@ -249,7 +249,7 @@ fn raster_framebuffer_and_control_state() {
         (s.hints.phong, s.hints.generate_mipmap),
         (gl::NICEST, gl::FASTEST)
     );
-    assert_eq!((s.unpack_alignment, s.pack_alignment), (2, 8));
+    assert_eq!((s.unpack.alignment, s.pack.alignment), (2, 8));
     assert_eq!(s.shade_model, gl::PHONG_WIN);
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }

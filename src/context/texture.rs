@@ -24,7 +24,7 @@ use crate::convert;
 use crate::gl;
 use crate::texture::{
     as_rgba, base_internal_format, format_components, keep, quantize, target_index, type_size,
-    unpack, unpack_extent, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    unpack, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
@@ -175,8 +175,9 @@ impl Context {
     }
 
     /// `glTexImage2D` (§3.8.1): specifies level `level` of the bound 2D texture from client
-    /// pixels of `format` / `type_` (unpacked with UNPACK_ALIGNMENT and UNPACK_ROW_LENGTH).
-    /// Errors: see [`tex_image_args_error`]; `pixels` shorter than needed is INVALID_OPERATION.
+    /// pixels of `format` / `type_` (unpacked under the UNPACK_ modes: ROW_LENGTH, SKIP_ROWS,
+    /// SKIP_PIXELS, ALIGNMENT, SWAP_BYTES, §3.6.4). Errors: see [`tex_image_args_error`];
+    /// `pixels` shorter than the skips and the image need is INVALID_OPERATION.
     #[allow(clippy::too_many_arguments)]
     pub fn tex_image_2d(
         &mut self,
@@ -224,10 +225,14 @@ impl Context {
             format_components(format).unwrap_or(4),
             type_size(type_).unwrap_or(1),
         );
-        let (stride, need) = self.unpack_extent(width, height, n, s);
-        if pixels.is_some_and(|p| p.len() < need) {
-            return self.error(gl::INVALID_OPERATION);
-        }
+        // With no data (NULL) nothing is read, whatever the skips.
+        let data = match pixels {
+            Some(p) => match self.unpack_layout(width, height, n, s, p.len()) {
+                Some(layout) => Some((p, layout)),
+                None => return self.error(gl::INVALID_OPERATION),
+            },
+            None => None,
+        };
         // Up to MAX_TEXTURE_SIZE² texels of 16 bytes (64 MiB) per call: reserved first, so an
         // allocation the machine cannot make is OUT_OF_MEMORY with nothing changed (GL 2.1
         // §2.5), not an abort.
@@ -236,8 +241,8 @@ impl Context {
         if texels.try_reserve_exact(texels_n).is_err() {
             return self.error(gl::OUT_OF_MEMORY);
         }
-        match pixels {
-            Some(p) => unpack_into(&mut texels, p, width, height, format, type_, stride, base),
+        match data {
+            Some((p, l)) => unpack_into(&mut texels, p, width, height, format, type_, &l, base),
             None => texels.resize(texels_n, quantize(base, [0.0; 4])),
         }
         let lv = Level {
@@ -263,16 +268,21 @@ impl Context {
         }
     }
 
-    /// Bytes between rows and bytes needed for an unpacked image under the pixel store state.
-    fn unpack_extent(&self, w: i32, h: i32, n: usize, s: usize) -> (usize, usize) {
-        unpack_extent(
-            w,
-            h,
-            n,
-            s,
-            self.state.unpack_alignment,
-            self.state.textures.unpack_row_length,
-        )
+    /// Where a `w` x `h` image of `n` components of `s` bytes lies in client data of `len`
+    /// bytes under the UNPACK_ modes (§3.6.4), or None when `len` is shorter than the skips and
+    /// the image need (or the need overflows a usize).
+    fn unpack_layout(
+        &self,
+        w: i32,
+        h: i32,
+        n: usize,
+        s: usize,
+        len: usize,
+    ) -> Option<crate::pixel_store::Layout> {
+        self.state
+            .unpack
+            .layout(w, h, n, s)
+            .filter(|l| len >= l.need)
     }
 
     /// `glTexSubImage2D` (§3.8.2): replaces a rectangle of an existing level. A level not
@@ -318,11 +328,10 @@ impl Context {
         if (format == gl::DEPTH_COMPONENT) != (base == gl::DEPTH_COMPONENT) {
             return self.error(gl::INVALID_OPERATION);
         }
-        let (stride, need) = self.unpack_extent(width, height, n, s);
-        if pixels.len() < need {
+        let Some(layout) = self.unpack_layout(width, height, n, s, pixels.len()) else {
             return self.error(gl::INVALID_OPERATION);
-        }
-        let texels = unpack(pixels, width, height, format, type_, stride, base);
+        };
+        let texels = unpack(pixels, width, height, format, type_, &layout, base);
         self.write_rect(level, xoffset, yoffset, width, &texels);
     }
 
@@ -513,9 +522,10 @@ impl Context {
     }
 
     /// `glGetTexImage` (§6.1.4): level `level` of the bound 2D texture as `format` / `type_`,
-    /// rows padded to PACK_ALIGNMENT, into `pixels`. A level not specified writes nothing; a
-    /// `pixels` too short is INVALID_OPERATION (as TexImage2D's unpack); depth data from a
-    /// colour texture (or the reverse) is INVALID_OPERATION.
+    /// placed under the PACK_ modes (§4.3.2) into `pixels`. A level not specified writes
+    /// nothing; a `pixels` too short for the skips and the image is INVALID_OPERATION (as
+    /// TexImage2D's unpack); depth data from a colour texture (or the reverse) is
+    /// INVALID_OPERATION.
     pub fn get_tex_image(
         &mut self,
         target: u32,
@@ -549,10 +559,15 @@ impl Context {
         if (format == gl::DEPTH_COMPONENT) != (lv.base == gl::DEPTH_COMPONENT) {
             return self.error(gl::INVALID_OPERATION);
         }
-        let (stride, need) = unpack_extent(lv.width, lv.height, n, s, self.state.pack_alignment, 0);
-        if pixels.len() < need {
+        // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).
+        let Some(layout) = self
+            .state
+            .pack
+            .layout(lv.width, lv.height, n, s)
+            .filter(|l| pixels.len() >= l.need)
+        else {
             return self.error(gl::INVALID_OPERATION);
-        }
+        };
         for j in 0..lv.height {
             for i in 0..lv.width {
                 let [r, g, b, a] = as_rgba(lv.base, lv.texel(i, j));
@@ -566,9 +581,13 @@ impl Context {
                     gl::BGR | gl::BGRA => [b, g, r, a],
                     _ => [r, g, b, a],
                 };
-                let at = j as usize * stride + i as usize * n * s;
+                let at = layout.at(i as usize, j as usize);
                 for (k, &c) in comps.iter().take(n).enumerate() {
                     pack(pixels, at + k * s, type_, c);
+                    // PACK_SWAP_BYTES: each element's bytes reversed (§4.3.2).
+                    if let Some(e) = pixels.get_mut(at + k * s..at + (k + 1) * s) {
+                        layout.order(e);
+                    }
                 }
             }
         }

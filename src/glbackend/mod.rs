@@ -237,9 +237,10 @@ impl GlBackend {
     /// - are made on this thread while this backend's context is current: no method of another
     ///   [`GlBackend`] (which makes its own context current) runs between `raw()` and them;
     /// - leave no client-array pointer set (`VertexPointer`, `TexCoordPointer`, ...; enabled or
-    ///   not) to memory that may be freed before the backend's next draw, and no pack state
-    ///   besides `PACK_ALIGNMENT` and `PACK_ROW_LENGTH` (which [`GlBackend::read_image`] sets
-    ///   and restores) away from its initial value, nor a buffer bound to `PIXEL_PACK_BUFFER`;
+    ///   not) to memory that may be freed before the backend's next draw, no pack state that
+    ///   [`GlBackend::read_image`] does not set and restore (it does ALIGNMENT, ROW_LENGTH,
+    ///   SKIP_ROWS, SKIP_PIXELS and SWAP_BYTES; LSB_FIRST, IMAGE_HEIGHT and SKIP_IMAGES do not
+    ///   affect its read) away from its initial value, nor a buffer bound to `PIXEL_PACK_BUFFER`;
     /// - do not delete or unbind the backend's framebuffer object or its renderbuffers, and do
     ///   not leave a `Begin` open or a GLSL program bound.
     pub unsafe fn raw(&self) -> &raw::Gl {
@@ -423,17 +424,30 @@ impl GlBackend {
     }
 
     /// The colour buffer as an image with the top row first (glReadPixels returns rows bottom-up,
-    /// GL 2.1 §4.3.2). Reads with PACK_ALIGNMENT 1 from the FBO and restores the pack state.
+    /// GL 2.1 §4.3.2). Reads from the FBO with the pack modes at their initial values except
+    /// PACK_ALIGNMENT 1 (whatever PACK_ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS or SWAP_BYTES the
+    /// recorded calls set, which would shift the image or write past `pixels`), then restores
+    /// them.
     pub fn read_image(&mut self) -> RgbaImage {
         self.make_current();
         let (w, h) = (self.width as usize, self.height as usize);
         let mut pixels = vec![0u8; w * h * 4];
-        // SAFETY: context current; `pixels` holds exactly w*h RGBA8 texels with alignment 1.
+        // Every pack mode that moves where ReadPixels writes (GL 2.1 §4.3.2), and the value it
+        // must have for `pixels` to be read tightly packed from its first byte.
+        const RESET: [(u32, i32); 5] = [
+            (glow::PACK_ALIGNMENT, 1),
+            (glow::PACK_ROW_LENGTH, 0),
+            (glow::PACK_SKIP_ROWS, 0),
+            (glow::PACK_SKIP_PIXELS, 0),
+            (glow::PACK_SWAP_BYTES, 0),
+        ];
+        // SAFETY: context current; `pixels` holds exactly w*h RGBA8 texels with alignment 1,
+        // no row length and no skips.
         unsafe {
-            let alignment = self.glow.get_parameter_i32(glow::PACK_ALIGNMENT);
-            let row_length = self.glow.get_parameter_i32(glow::PACK_ROW_LENGTH);
-            self.glow.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
-            self.glow.pixel_store_i32(glow::PACK_ROW_LENGTH, 0);
+            let saved = RESET.map(|(pname, _)| self.glow.get_parameter_i32(pname));
+            for (pname, v) in RESET {
+                self.glow.pixel_store_i32(pname, v);
+            }
             self.glow
                 .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
             self.glow.read_pixels(
@@ -445,8 +459,9 @@ impl GlBackend {
                 glow::UNSIGNED_BYTE,
                 glow::PixelPackData::Slice(Some(&mut pixels)),
             );
-            self.glow.pixel_store_i32(glow::PACK_ALIGNMENT, alignment);
-            self.glow.pixel_store_i32(glow::PACK_ROW_LENGTH, row_length);
+            for ((pname, _), v) in RESET.iter().zip(saved) {
+                self.glow.pixel_store_i32(*pname, v);
+            }
         }
         let row = w * 4;
         let mut top_down = Vec::with_capacity(pixels.len());

@@ -15,6 +15,7 @@ use super::generated::Safe;
 use super::GlBackend;
 use crate::counts;
 use crate::gl;
+use crate::pixel_store;
 use crate::Call;
 
 impl GlBackend {
@@ -41,7 +42,32 @@ impl GlBackend {
             }
             return self.raise(code);
         }
-        self.dispatch(call);
+        match *call {
+            Call::PixelStorei(pname, param) => self.pixel_store(pname, param),
+            Call::PixelStoref(pname, param) => {
+                self.pixel_store(pname, pixel_store::from_float(pname, param))
+            }
+            _ => self.dispatch(call),
+        }
+    }
+
+    /// `PixelStore{i,f}` (executed immediately, never compiled: GL 2.1 §5.4), with `param`
+    /// already converted as §3.6.1 says (`pixel_store::from_float` for the f form, the one
+    /// conversion the front end uses too). A pname outside GL 2.1 table 3.1 is INVALID_ENUM
+    /// raised here (Mesa also takes PACK_INVERT_MESA and GL 4.2's compressed-block pnames); a
+    /// boolean goes to the driver as 0 or 1, so that it stores the spec's TRUE for any nonzero
+    /// value whatever it makes of other integers. The driver then holds exactly the modes the
+    /// CPU `State` does, and raises INVALID_VALUE itself.
+    fn pixel_store(&mut self, pname: u32, param: i32) {
+        let Some((_, mode)) = pixel_store::pname(pname) else {
+            return self.raise(gl::INVALID_ENUM);
+        };
+        let param = if mode.is_boolean() {
+            i32::from(param != 0)
+        } else {
+            param
+        };
+        Safe(&self.raw).pixel_storei(pname, param);
     }
 
     /// `Begin`: under NewList(COMPILE) the driver only stores it. Otherwise GL 2.1 §2.6.1 has

@@ -11,11 +11,15 @@
 use super::GlBackend;
 use crate::context::texture::{tex_image_args_error, MAX_GEN_TEXTURES};
 use crate::gl;
-use crate::texture::{format_components, type_size, unpack_extent};
+use crate::pixel_store::PixelModes;
+use crate::texture::{format_components, type_size};
 
 impl GlBackend {
     /// The bytes the driver reads for a `width` x `height` image of `format` / `type_` under
-    /// its current unpack state, or None for a format or type this crate does not unpack.
+    /// its current unpack state (the same `PixelModes::layout` the CPU front end uses, from the
+    /// driver's own values), or None for a format or type this crate does not unpack or a
+    /// layout whose size overflows (no recording holds that many bytes). SWAP_BYTES, LSB_FIRST,
+    /// IMAGE_HEIGHT and SKIP_IMAGES change nothing a 2D image reads.
     fn driver_unpack_need(
         &self,
         width: i32,
@@ -34,12 +38,14 @@ impl GlBackend {
             // SAFETY: context current (execute made it so); GetIntegerv writes one value.
             unsafe { self.raw.GetIntegerv(pname, slot) };
         }
-        let (stride, need) = unpack_extent(width, height, n, s, v[0], v[1]);
-        if need == 0 {
-            return Some(0);
-        }
-        let skip = stride * v[2].max(0) as usize + n * s * v[3].max(0) as usize;
-        Some(need + skip)
+        let modes = PixelModes {
+            alignment: v[0],
+            row_length: v[1],
+            skip_rows: v[2],
+            skip_pixels: v[3],
+            ..PixelModes::default()
+        };
+        modes.layout(width, height, n, s).map(|l| l.need)
     }
 
     /// `glGenTextures(n)` with a scratch buffer for the names (the front end's bound on n).

@@ -109,12 +109,23 @@ const PNAMES: &[&str] = &[
     "TEXTURE_COMPARE_MODE",
     "TEXTURE_COMPARE_FUNC",
     "GENERATE_MIPMAP",
-    // PixelStore (table 6.17)
-    "UNPACK_ALIGNMENT",
+    // PixelStore (tables 3.1, 6.17, 6.18): all sixteen
+    "UNPACK_SWAP_BYTES",
+    "UNPACK_LSB_FIRST",
     "UNPACK_ROW_LENGTH",
     "UNPACK_SKIP_ROWS",
-    "PACK_ALIGNMENT",
+    "UNPACK_SKIP_PIXELS",
+    "UNPACK_ALIGNMENT",
+    "UNPACK_IMAGE_HEIGHT",
+    "UNPACK_SKIP_IMAGES",
     "PACK_SWAP_BYTES",
+    "PACK_LSB_FIRST",
+    "PACK_ROW_LENGTH",
+    "PACK_SKIP_ROWS",
+    "PACK_SKIP_PIXELS",
+    "PACK_ALIGNMENT",
+    "PACK_IMAGE_HEIGHT",
+    "PACK_SKIP_IMAGES",
     // No command takes these.
     "0x1234",
     "LIGHT0",
@@ -172,14 +183,6 @@ const VALUES: &[&str] = &[
 /// prefix and why. Each must still disagree somewhere (the test fails when one no longer does,
 /// so the list only shrinks).
 const KNOWN: &[(&str, &str)] = &[
-    (
-        "PixelStorei(",
-        "PixelStore SKIP/SWAP_BYTES/LSB_FIRST/IMAGE_HEIGHT pnames: issue #10/#13",
-    ),
-    (
-        "PixelStoref(",
-        "PixelStore SKIP/SWAP_BYTES/LSB_FIRST/IMAGE_HEIGHT pnames: issue #10/#13",
-    ),
     (
         "TexEnvi(POINT_SPRITE,",
         "point sprites (GL 2.0) are not implemented yet: issue #14",

@@ -19,6 +19,8 @@ mod glut;
 mod implementation_choices;
 mod lists;
 mod matrices;
+mod pixel_store;
+mod pixel_store_gl;
 mod query_errors;
 mod recording;
 mod robustness;

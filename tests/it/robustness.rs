@@ -222,17 +222,32 @@ mod readback {
 
 /// Pixel store arithmetic (GL 2.1 §3.6.4): sizes from the caller never wrap.
 mod pixel_store {
-    use fixedgl::texture::unpack_extent;
+    use fixedgl::pixel_store::PixelModes;
 
-    /// 2^31 x 2^31 pixels of 16 bytes, or ROW_LENGTH 2^31 - 1: more bytes than a usize counts.
-    /// The extent saturates, so no slice passes the length check that follows it.
+    /// 2^31 x 2^31 pixels of 16 bytes, ROW_LENGTH 2^31 - 1, or SKIP_ROWS 2^31 - 1 rows of
+    /// 2^31 - 1 pixels: more bytes than a usize counts. The layout is None (every caller's
+    /// short-data error), never a wrapped size a slice could pass.
     #[test]
-    fn unpack_extent_saturates() {
-        let (_, need) = unpack_extent(i32::MAX, i32::MAX, 4, 4, 4, 0);
-        assert_eq!(need, usize::MAX);
-        let (stride, need) = unpack_extent(1, i32::MAX, 4, 4, 8, i32::MAX);
-        assert!(stride >= 16 * (i32::MAX as usize));
-        assert_eq!(need, usize::MAX);
+    fn layout_overflow_is_none() {
+        let modes = PixelModes::default();
+        assert_eq!(modes.layout(i32::MAX, i32::MAX, 4, 4), None);
+        let long_rows = PixelModes {
+            row_length: i32::MAX,
+            alignment: 8,
+            ..modes
+        };
+        assert_eq!(long_rows.layout(1, i32::MAX, 4, 4), None);
+        let skips = PixelModes {
+            row_length: i32::MAX,
+            skip_rows: i32::MAX,
+            skip_pixels: i32::MAX,
+            ..modes
+        };
+        assert_eq!(skips.layout(1, 1, 4, 4), None);
+        // The same skips with one-byte pixels fit 64 bits, and need all of them.
+        let l = skips.layout(1, 1, 1, 1).map(|l| l.need);
+        let (r, p) = (i32::MAX as usize, i32::MAX as usize);
+        assert_eq!(l, Some(r.next_multiple_of(4) * r + p + 1));
     }
 }
 

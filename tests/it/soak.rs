@@ -1252,8 +1252,8 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             clear_color,
             clear_depth,
             clear_stencil,
-            pack_alignment,
-            unpack_alignment,
+            unpack,
+            pack,
             hints,
             list_base,
             arrays,
@@ -1288,11 +1288,7 @@ fn textures_diff(a: &Textures, b: &Textures) -> Option<&'static str> {
     first_diff!(
         a,
         b,
-        Textures {
-            names,
-            units,
-            unpack_row_length
-        },
+        Textures { names, units },
         special { objects, defaults }
     )
     .map(|_| "textures")
