@@ -15,6 +15,7 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
+use crate::convert;
 use crate::gl;
 use crate::pixel_store::Layout;
 use crate::state::MAX_TEXTURE_UNITS;
@@ -650,15 +651,19 @@ fn component(data: &[u8], at: usize, type_: u32, layout: &Layout) -> f32 {
         *slot = data.get(at + k).copied().unwrap_or(0);
     }
     layout.order(&mut e[..n]);
-    match type_ {
-        gl::UNSIGNED_BYTE => f32::from(e[0]) / 255.0,
-        gl::BYTE => (2.0 * f32::from(e[0] as i8) + 1.0) / 255.0,
-        gl::UNSIGNED_SHORT => f32::from(u16::from_ne_bytes([e[0], e[1]])) / 65535.0,
-        gl::SHORT => (2.0 * f32::from(i16::from_ne_bytes([e[0], e[1]])) + 1.0) / 65535.0,
-        gl::UNSIGNED_INT => (f64::from(u32::from_ne_bytes(e)) / f64::from(u32::MAX)) as f32,
-        gl::INT => ((2.0 * f64::from(i32::from_ne_bytes(e)) + 1.0) / f64::from(u32::MAX)) as f32,
-        _ => f32::from_ne_bytes(e),
-    }
+    let (u8max, u16max, u32max) = (f64::from(u8::MAX), f64::from(u16::MAX), f64::from(u32::MAX));
+    let c = match type_ {
+        gl::UNSIGNED_BYTE => convert::unsigned_to_unit(f64::from(e[0]), u8max),
+        gl::BYTE => convert::signed_to_unit(f64::from(e[0] as i8), u8max),
+        gl::UNSIGNED_SHORT => {
+            convert::unsigned_to_unit(f64::from(u16::from_ne_bytes([e[0], e[1]])), u16max)
+        }
+        gl::SHORT => convert::signed_to_unit(f64::from(i16::from_ne_bytes([e[0], e[1]])), u16max),
+        gl::UNSIGNED_INT => convert::unsigned_to_unit(f64::from(u32::from_ne_bytes(e)), u32max),
+        gl::INT => convert::signed_to_unit(f64::from(i32::from_ne_bytes(e)), u32max),
+        _ => return f32::from_ne_bytes(e),
+    };
+    c as f32
 }
 
 /// Unpacks `width` x `height` pixels of `format`/`type_` (already validated, `data` at least
