@@ -308,6 +308,8 @@ fn cpu_and_driver_agree_on_every_pname_error() {
         }
     }
     assert!(cases > 10_000, "{cases} cases");
+    let known: usize = known_seen.iter().sum();
+    eprintln!("error agreement: {cases} calls, {known} in KNOWN differences, the rest agree");
     for ((prefix, why), seen) in KNOWN.iter().zip(&known_seen) {
         assert!(
             *seen > 0,
