@@ -663,18 +663,18 @@ fn gen_replay(cmds: &[Implemented]) -> String {
          let gl = Safe(&self.raw);\n        match *call {\n",
     );
     for c in cmds {
-        if let Replay::Whole(f) = &c.ann.replay {
-            let pat = if c.fields.is_empty() {
-                format!("Call::{}", c.ann.name)
-            } else {
-                format!("Call::{}(..)", c.ann.name)
-            };
-            let _ = writeln!(s, "            {pat} => self.{f}(call),");
-            continue;
-        }
         let args: Vec<String> = c.fields.iter().map(Field::method_arg).collect();
         let body = match &c.ann.replay {
-            Replay::Whole(_) => unreachable!(),
+            Replay::Whole(f) => {
+                // The whole call goes to the method: no bindings.
+                let pat = if c.fields.is_empty() {
+                    format!("Call::{}", c.ann.name)
+                } else {
+                    format!("Call::{}(..)", c.ann.name)
+                };
+                let _ = writeln!(s, "            {pat} => self.{f}(call),");
+                continue;
+            }
             Replay::Fields(f) => format!("self.{f}({})", args.join(", ")),
             Replay::Driver => {
                 let wrapper = &c.ann.method;
