@@ -29,4 +29,10 @@
     th.addEventListener('click', go);
     th.addEventListener('keydown', function (e) { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); go(); } });
   });
+  // For the browser test: whether the page fits the window without horizontal scrolling.
+  var fits = function () {
+    document.body.setAttribute('data-fits', String(document.documentElement.scrollWidth <= window.innerWidth));
+  };
+  fits();
+  window.addEventListener('resize', fits);
 })();

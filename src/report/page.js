@@ -184,7 +184,8 @@
       ready: st.ready, mode: st.mode, show: st.show, zoom: st.zoom, center: [st.cx, st.cy], gain: st.gain,
       cursor: st.cur, values: values, tol: F.tol, width: W, height: H, over_tolerance: overTol,
       regions: regions.length, regions_over_tolerance: regionsOverTol, region: st.region,
-      region_box: st.region >= 0 ? regions[st.region] : null, split: st.split
+      region_box: st.region >= 0 ? regions[st.region] : null, split: st.split,
+      fits: document.documentElement.scrollWidth <= window.innerWidth
     });
   }
 

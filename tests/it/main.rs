@@ -21,6 +21,8 @@ mod lists;
 mod matrices;
 mod query_errors;
 mod recording;
+mod report;
+mod report_browser;
 mod robustness;
 mod scenes;
 mod soak;
