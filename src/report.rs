@@ -438,7 +438,7 @@ fn index_html(renderers: &Renderers, results: &[SceneResult]) -> String {
          <th data-type=\"num\" title=\"the most that may be over tolerance\">allowed</th>\
          <th data-type=\"num\" title=\"largest channel difference (of 255); tooltip: R G B A\">max &Delta;</th>\
          <th data-type=\"num\" class=\"opt\" title=\"mean difference over R, G and B; tooltip: R G B A\">mean &Delta;</th>\
-         <th data-type=\"num\" title=\"PSNR over RGB\">PSNR dB</th>\
+         <th data-type=\"num\" class=\"opt\" title=\"PSNR over RGB\">PSNR dB</th>\
          <th data-type=\"num\" class=\"opt\" title=\"one frame on fixedgl's CPU pipeline (fixedgl bench measures properly)\">CPU ms</th>\
          <th data-type=\"num\" class=\"opt\" title=\"the driver replaying the frame, up to glFinish\">GL ms</th>\
          </tr></thead>\n<tbody>\n",
@@ -487,7 +487,7 @@ fn index_html(renderers: &Renderers, results: &[SceneResult]) -> String {
              <td data-key=\"{}\">{:.3}%</td>\
              <td data-key=\"{max}\" title=\"R {} G {} B {} A {}\">{max}</td>\
              <td class=\"opt\" data-key=\"{}\" title=\"R {:.3} G {:.3} B {:.3} A {:.3}\">{:.3}</td>\
-             <td data-key=\"{}\">{}</td>{}{}</tr>",
+             <td class=\"opt\" data-key=\"{}\">{}</td>{}{}</tr>",
             esc(&r.name),
             esc(&r.name),
             esc(&r.summary),
