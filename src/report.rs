@@ -16,8 +16,10 @@
 //! metrics), so that frames of an animation can get the same pages as scenes.
 //!
 //! Test hook: a detail page reads its URL fragment on load (`#mode=flip&show=gl&zoom=8&next=1&
-//! at=x,y&gain=4&split=0.5`) and writes its resulting state as JSON into `<pre id="state">`, so
-//! a headless browser's `--dump-dom` shows what a user would see (tests/it/report_browser.rs).
+//! at=x,y&gain=4&split=0.5`, and `do=click:ID,key:K,tap:CANVAS,hover:CANVAS@fx/fy`, user actions
+//! dispatched to its own event handlers) and writes its resulting state as JSON into
+//! `<pre id="state">`, so a headless browser's `--dump-dom` shows what a user would see
+//! (tests/it/report_browser.rs).
 
 use std::fmt::Write as _;
 use std::fs;

@@ -223,7 +223,7 @@
     c.style.maxWidth = W + 'px';
     c.addEventListener('pointerdown', function (e) {
       drag = { x: e.clientX, y: e.clientY, cx: st.cx, cy: st.cy, moved: false };
-      c.setPointerCapture(e.pointerId);
+      try { c.setPointerCapture(e.pointerId); } catch (err) { /* a synthetic pointer */ }
     });
     c.addEventListener('pointermove', function (e) {
       var p = imagePoint(c, e);
@@ -265,6 +265,22 @@
     if (h.at) {
       var p = h.at.split(',').map(Number);
       if (p.length === 2 && p.every(isFinite)) { st.cur = [p[0] | 0, p[1] | 0]; st.cx = p[0] + 0.5; st.cy = p[1] + 0.5; }
+    }
+    // do=click:ID,key:K,tap:CANVAS,hover:CANVAS@fx/fy: user actions replayed through the page's
+    // own event handlers (the browser test drives the page with them).
+    if (h.do) h.do.split(',').forEach(act);
+  }
+  function act(a) {
+    var i = a.indexOf(':'), what = a.slice(0, i), arg = a.slice(i + 1);
+    if (what === 'click' && $(arg)) $(arg).click();
+    else if (what === 'key') document.dispatchEvent(new KeyboardEvent('keydown', { key: arg, bubbles: true }));
+    else if (what === 'tap' || what === 'hover') {
+      var parts = arg.split('@'), c = $(parts[0]);
+      if (!c) return;
+      var f = (parts[1] || '0.5/0.5').split('/').map(Number), b = c.getBoundingClientRect();
+      var at = { clientX: b.left + f[0] * b.width, clientY: b.top + f[1] * b.height, pointerId: 1, bubbles: true };
+      if (what === 'tap') { c.dispatchEvent(new PointerEvent('pointerdown', at)); c.dispatchEvent(new PointerEvent('pointerup', at)); }
+      else c.dispatchEvent(new PointerEvent('pointermove', at));
     }
   }
 

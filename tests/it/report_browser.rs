@@ -5,10 +5,10 @@
 //! the difference its script computes agrees with `compare`'s count. Screenshots of the summary
 //! and of a zoomed scene page go to `target/report-screenshots/` for a person to look at.
 //!
-//! How: `chromium --headless --dump-dom` on `file://` URLs whose fragment drives the page
-//! (`#flip&show=gl&zoom=8&at=x,y`, `#next=1`: the page applies it on load, as its buttons and
-//! keys would) and which writes its state as JSON into `<pre id="state">`; `--screenshot` for
-//! the pictures. No DevTools-protocol crate: its dependency tree (websocket, TLS, async
+//! How: `chromium --headless --dump-dom` on `file://` URLs whose fragment drives the page: state
+//! set directly (`#flip&show=gl&zoom=8&at=x,y`, `#next=1`) or user actions dispatched to the
+//! page's own click, key and pointer handlers (`#do=click:mode-flip,tap:canvas-a,key:+`); the page
+//! writes its state as JSON into `<pre id="state">`. `--screenshot` for the pictures. No DevTools-protocol crate: its dependency tree (websocket, TLS, async
 //! runtime) would cost more to build than this whole test needs.
 //!
 //! Skips with `SKIPPED: ...` when no Chromium is found (`FIXEDGL_CHROMIUM`, else `chromium`,
@@ -264,6 +264,34 @@ fn report_reads_in_a_real_browser_summary_flip_zoom_values_next_difference() {
     let want = [bx, by, bx + bw - 1, by + bh - 1].map(u64::from);
     assert_eq!(got, [&want[..], &[differing]].concat(), "{s}");
     assert!(s["zoom"].as_u64() >= Some(8), "{s}");
+    assert_eq!(s["values"]["worst"], 64, "{s}");
+    // The same as a user does it, through the page's own handlers: the flip button, a click on
+    // the image (now GL), + three times (8x), the pointer over the middle of the image.
+    let s = state(&dump(
+        &page,
+        "#do=click:mode-flip,tap:canvas-a,key:+,key:+,key:+,hover:canvas-a@0.5/0.5",
+        (1280, 900),
+    ));
+    assert_eq!(
+        (&s["mode"], &s["show"], &s["zoom"]),
+        (&"flip".into(), &"gl".into(), &8.into()),
+        "{s}"
+    );
+    let (w, h) = cpu.dimensions();
+    assert_eq!(s["cursor"], Value::from(vec![w / 2, h / 2]), "{s}");
+    assert_eq!(s["values"]["cpu"], px(&cpu, w / 2, h / 2), "{s}");
+    assert_eq!(s["values"]["gl"], px(&gl, w / 2, h / 2), "{s}");
+    // Key F in flip mode flips back to CPU; the "next difference" button selects the block.
+    let s = state(&dump(
+        &page,
+        "#do=click:mode-flip,key:f,key:f,click:next-diff",
+        (1280, 900),
+    ));
+    assert_eq!(
+        (&s["show"], &s["region"]),
+        (&"cpu".into(), &0.into()),
+        "{s}"
+    );
     assert_eq!(s["values"]["worst"], 64, "{s}");
     // Slider mode from the fragment.
     let s = state(&dump(&page, "#mode=slider&split=0.25", (1280, 900)));
