@@ -29,6 +29,9 @@
     th.addEventListener('click', go);
     th.addEventListener('keydown', function (e) { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); go(); } });
   });
+  // For the browser test: #sort=5,5 clicks those column headings in turn, as a user would.
+  var m = /sort=([0-9,]+)/.exec(location.hash);
+  if (m) m[1].split(',').forEach(function (c) { if (heads[+c]) heads[+c].click(); });
   // For the browser test: whether the page fits the window without horizontal scrolling.
   var fits = function () {
     document.body.setAttribute('data-fits', String(document.documentElement.scrollWidth <= window.innerWidth));

@@ -1,6 +1,6 @@
 //! The HTML report in a real browser: headless Chromium opens a report as a user would, and the
 //! pages' own state (not the HTML we wrote) is checked: the summary is there, fits a 1280-pixel
-//! and a phone-sized window, lists the worst scene first; a scene page flips to GL, zooms, reads
+//! and a phone-sized window, lists the worst scene first and sorts by a clicked heading; a scene page flips to GL, zooms, reads
 //! the RGBA values under the cursor and jumps to the differing pixels with "next difference";
 //! the difference its script computes agrees with `compare`'s count. Screenshots of the summary
 //! and of a zoomed scene page go to `target/report-screenshots/` for a person to look at.
@@ -228,6 +228,17 @@ fn report_reads_in_a_real_browser_summary_flip_zoom_values_next_difference() {
             "not worst first:\n{dom}"
         );
     }
+
+    // Sorting: "max Δ" clicked twice is ascending, so the identical triangle comes first.
+    let dom = dump(&index, "#sort=5,5", (1280, 900));
+    let rows = dom.split("<tbody>").nth(1).unwrap_or_default();
+    let cube = rows.find("href=\"textured-cube.html\"");
+    let tri = rows.find("href=\"triangle.html\"");
+    assert!(
+        cube.is_some() && tri.is_some() && tri < cube,
+        "not sorted:\n{dom}"
+    );
+    assert!(dom.contains("aria-sort=\"ascending\""), "{dom}");
 
     // A scene page: the script's difference agrees with compare's count; it fits 1280 px.
     let s = state(&dump(&page, "", (1280, 900)));
