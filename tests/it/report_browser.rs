@@ -1,8 +1,9 @@
 //! The HTML report in a real browser: headless Chromium opens a report as a user would, and the
 //! pages' own state (not the HTML we wrote) is checked: the summary is there, fits a 1280-pixel
-//! and a phone-sized window, lists the worst scene first and sorts by a clicked heading; a scene page flips to GL, zooms, reads
-//! the RGBA values under the cursor and jumps to the differing pixels with "next difference";
-//! the difference its script computes agrees with `compare`'s count. Screenshots of the summary
+//! and a phone-sized window, lists the worst scene first and sorts by a clicked heading; a scene
+//! page flips to GL, zooms, reads the RGBA values under the cursor and jumps to the differing
+//! pixels with "next difference"; the difference its script computes agrees with `compare`'s
+//! count. Screenshots of the summary
 //! and of a zoomed scene page go to `target/report-screenshots/` for a person to look at.
 //!
 //! How: `chromium --headless --dump-dom` on `file://` URLs whose fragment drives the page: state
