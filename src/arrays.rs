@@ -396,18 +396,10 @@ impl Source<'_> {
 fn decode(b: &[u8], ty: u32, normalized: bool) -> Option<f32> {
     // GL 2.1 table 2.9: unsigned c/(2^b-1), signed (2c+1)/(2^b-1).
     fn u(x: f64, max: f64, n: bool) -> f32 {
-        (if n {
-            convert::unsigned_to_unit(x, max)
-        } else {
-            x
-        }) as f32
+        (if n { convert::unsigned_to_unit(x, max) } else { x }) as f32
     }
     fn s(x: f64, max: f64, n: bool) -> f32 {
-        (if n {
-            convert::signed_to_unit(x, max)
-        } else {
-            x
-        }) as f32
+        (if n { convert::signed_to_unit(x, max) } else { x }) as f32
     }
     Some(match ty {
         gl::UNSIGNED_BYTE => u(f64::from(*b.first()?), 255.0, normalized),
