@@ -62,9 +62,15 @@ enum Command {
         /// Framebuffer size WxH for every scene (default: each scene's).
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
-        /// Report folder.
+        /// Report folder (index.html, a page per scene, results.json, the PNGs).
         #[arg(long, default_value = "report")]
         out: PathBuf,
+        /// Print results.json to stdout (the per-scene lines then go to stderr).
+        #[arg(long)]
+        json: bool,
+        /// Also write the results as JUnit XML to this file, for CI systems.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
     },
     /// Median milliseconds per frame on the CPU and GL pipelines, measured interleaved.
     Bench {
@@ -138,7 +144,13 @@ fn main() -> ExitCode {
             size,
             output,
         } => render(&scene, backend, size, output, device),
-        Command::Compare { scenes, size, out } => compare_scenes(&scenes, size, &out, device),
+        Command::Compare {
+            scenes,
+            size,
+            out,
+            json,
+            junit,
+        } => compare_scenes(&scenes, size, &out, json, junit.as_deref(), device),
         Command::Bench {
             scenes,
             size,
@@ -259,6 +271,8 @@ fn compare_scenes(
     names: &[String],
     size: Option<(u32, u32)>,
     out: &Path,
+    json: bool,
+    junit: Option<&Path>,
     device: &str,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, false)?;
@@ -273,9 +287,13 @@ fn compare_scenes(
             eprintln!("[{}/{}] {}", i + 1, selected.len(), scene.name);
         }
         let (w, h) = size.unwrap_or(scene.default_size);
+        // One frame each, for the report's ms columns (the CPU figure includes recording the
+        // calls; `fixedgl bench` measures properly).
+        let start = Instant::now();
         let (mut ctx, calls) = scene.record(w, h)?;
         let cpu = ctx.to_image();
-        let (gl, info) = gl_side::render(&calls, w, h, device)?;
+        let cpu_ms = start.elapsed().as_secs_f64() * 1e3;
+        let (gl, info, gl_ms) = gl_side::render_timed(&calls, w, h, device)?;
         renderers.gl = info.0;
         renderers.gl_version = info.1;
         let comparison = compare(&cpu, &gl, scene.tolerance.channel);
@@ -286,17 +304,32 @@ fn compare_scenes(
             comparison,
             cpu,
             gl,
+            cpu_ms: Some(cpu_ms),
+            gl_ms: Some(gl_ms),
         };
-        println!(
+        let line = format!(
             "{:<20} {} {}",
             scene.name,
             if result.passed() { "PASS" } else { "FAIL" },
             result.comparison
         );
+        if json {
+            eprintln!("{line}");
+        } else {
+            println!("{line}");
+        }
         results.push(result);
     }
     let index = report::write(out, &renderers, &results)?;
-    println!("report: {}", index.display());
+    if let Some(file) = junit {
+        std::fs::write(file, report::junit(&renderers, &results)).map_err(Error::from)?;
+    }
+    if json {
+        print!("{}", report::results_json(&renderers, &results)?);
+        eprintln!("report: {}", index.display());
+    } else {
+        println!("report: {}", index.display());
+    }
     let failed = results.iter().filter(|r| !r.passed()).count();
     if failed > 0 {
         eprintln!(
@@ -425,11 +458,25 @@ mod gl_side {
         h: u32,
         device: &str,
     ) -> Result<(RgbaImage, (String, String)), Error> {
+        let (img, info, _) = render_timed(calls, w, h, device)?;
+        Ok((img, info))
+    }
+
+    /// Like [`render`], with the milliseconds the replay took up to glFinish (context creation
+    /// and read-back not included).
+    pub fn render_timed(
+        calls: &[Call],
+        w: u32,
+        h: u32,
+        device: &str,
+    ) -> Result<(RgbaImage, (String, String), f64), Error> {
         let mut gl = backend(w, h, device)?;
+        let start = Instant::now();
         gl.replay(calls);
         gl.finish();
+        let ms = start.elapsed().as_secs_f64() * 1e3;
         let info = (gl.renderer().to_owned(), gl.version().to_owned());
-        Ok((gl.read_image(), info))
+        Ok((gl.read_image(), info, ms))
     }
 
     /// One backend reused across benchmark frames.
@@ -476,6 +523,16 @@ mod gl_side {
         _h: u32,
         _device: &str,
     ) -> Result<(RgbaImage, (String, String)), Error> {
+        Err(unavailable())
+    }
+
+    /// Always an error.
+    pub fn render_timed(
+        _calls: &[Call],
+        _w: u32,
+        _h: u32,
+        _device: &str,
+    ) -> Result<(RgbaImage, (String, String), f64), Error> {
         Err(unavailable())
     }
 

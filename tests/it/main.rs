@@ -23,6 +23,8 @@ mod pixel_store;
 mod pixel_store_gl;
 mod query_errors;
 mod recording;
+mod report;
+mod report_browser;
 mod robustness;
 mod scenes;
 mod soak;
