@@ -140,7 +140,9 @@ fn embedded(size: usize, m: Unpack) -> Vec<u8> {
                 let k = (j * 4 + i) * 4 + c;
                 let hi = (k * 53 % 256) as u8;
                 // Most significant byte first.
-                let mut e: Vec<u8> = (0..size).map(|b| hi ^ (b as u8).wrapping_mul(0x5A)).collect();
+                let mut e: Vec<u8> = (0..size)
+                    .map(|b| hi ^ (b as u8).wrapping_mul(0x5A))
+                    .collect();
                 if !m.swap {
                     e.reverse();
                 }

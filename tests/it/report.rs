@@ -128,7 +128,7 @@ fn schema_errors(v: &Value) -> Vec<String> {
 
 #[test]
 fn compare_writes_results_json_matching_the_schema_prints_it_and_writes_junit() {
-    if fixedgl::glbackend::test_backend(8, 8).is_none() {
+    if crate::common::test_backend(8, 8).is_none() {
         return;
     }
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report-cli");
