@@ -543,6 +543,11 @@ impl Drop for GlBackend {
                 self.glow.delete_renderbuffer(rb);
             }
         }
+        // Released from this thread, so that dropping the context destroys it now: EGL defers
+        // destroying a context that is still current, and a thread that ends without releasing
+        // it (every test thread) would leak it with its driver resources.
+        use glutin::context::PossiblyCurrentGlContext as _;
+        let _ = self.egl.context.make_not_current_in_place();
         CURRENT.with(|c| c.set(0));
     }
 }
