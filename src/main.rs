@@ -82,6 +82,12 @@ enum Command {
         /// Frames measured per backend (after one warm-up frame).
         #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100_000))]
         frames: u32,
+        /// Threads of the CPU backend's pool (default: one per core).
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+        threads: Option<u32>,
+        /// Print the results as one JSON object instead of the table.
+        #[arg(long)]
+        json: bool,
     },
     /// Replay a recording file on one pipeline and write the image.
     Replay {
@@ -155,7 +161,9 @@ fn main() -> ExitCode {
             scenes,
             size,
             frames,
-        } => bench(&scenes, size, frames, device),
+            threads,
+            json,
+        } => bench(&scenes, size, frames, threads, json, device),
         Command::Replay {
             file,
             backend,
@@ -350,17 +358,37 @@ fn median_ms(times: &mut [f64]) -> f64 {
     }
 }
 
+/// One scene's medians.
+struct BenchRow {
+    name: &'static str,
+    size: (u32, u32),
+    cpu_ms: f64,
+    gl_ms: f64,
+}
+
 fn bench(
     names: &[String],
     size: Option<(u32, u32)>,
     frames: u32,
+    threads: Option<u32>,
+    json: bool,
     device: &str,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
-    println!(
-        "{:<20} {:>11} {:>10} {:>10} {:>8}",
-        "scene", "size", "cpu ms", "gl ms", "cpu/gl"
-    );
+    if let Some(n) = threads {
+        // Before the first Context, which would start the pool with one thread per core.
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n as usize)
+            .build_global()
+            .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
+    }
+    if !json {
+        println!(
+            "{:<20} {:>11} {:>10} {:>10} {:>8}",
+            "scene", "size", "cpu ms", "gl ms", "cpu/gl"
+        );
+    }
+    let mut rows = Vec::new();
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
@@ -386,14 +414,62 @@ fn bench(
             cpu_times.push(cpu_frame()?);
             gl_times.push(gl.frame(&calls));
         }
-        let (c, g) = (median_ms(&mut cpu_times), median_ms(&mut gl_times));
+        let row = BenchRow {
+            name: scene.name,
+            size: (w, h),
+            cpu_ms: median_ms(&mut cpu_times),
+            gl_ms: median_ms(&mut gl_times),
+        };
+        if !json {
+            println!(
+                "{:<20} {:>11} {:>10.3} {:>10.3} {:>8.2}",
+                row.name,
+                format!("{w}x{h}"),
+                row.cpu_ms,
+                row.gl_ms,
+                row.cpu_ms / row.gl_ms
+            );
+        }
+        rows.push(row);
+    }
+    let ratio = |r: &BenchRow| r.cpu_ms / r.gl_ms;
+    // The geometric mean, as ratios are: 2x slower and 2x faster average to 1.
+    let geomean =
+        (rows.iter().map(|r| ratio(r).ln()).sum::<f64>() / rows.len().max(1) as f64).exp();
+    let worst = rows.iter().max_by(|a, b| ratio(a).total_cmp(&ratio(b)));
+    let cpu_threads = rayon::current_num_threads();
+    // llvmpipe rasterises on LP_NUM_THREADS threads, one per core when it is unset.
+    let gl_threads = std::env::var("LP_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.parse::<usize>().ok())
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    if json {
+        let scenes: Vec<serde_json::Value> = rows
+            .iter()
+            .map(|r| {
+                serde_json::json!({
+                    "scene": r.name,
+                    "width": r.size.0,
+                    "height": r.size.1,
+                    "cpu_ms": r.cpu_ms,
+                    "gl_ms": r.gl_ms,
+                    "ratio": ratio(r),
+                })
+            })
+            .collect();
+        let out = serde_json::json!({
+            "frames": frames,
+            "cpu_threads": cpu_threads,
+            "gl_threads": gl_threads,
+            "geomean_ratio": geomean,
+            "worst": worst.map(|r| r.name),
+            "scenes": scenes,
+        });
+        println!("{out}");
+    } else {
         println!(
-            "{:<20} {:>11} {:>10.3} {:>10.3} {:>8.2}",
-            scene.name,
-            format!("{w}x{h}"),
-            c,
-            g,
-            c / g
+            "geometric mean cpu/gl {geomean:.2}; worst {}; threads: cpu {cpu_threads}, gl {gl_threads}",
+            worst.map_or_else(|| "-".to_string(), |r| format!("{} ({:.2})", r.name, ratio(r)))
         );
     }
     Ok(ExitCode::SUCCESS)

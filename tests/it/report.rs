@@ -227,3 +227,53 @@ fn the_schema_check_catches_a_broken_document() {
         assert!(errors.contains(expected), "{expected:?} not in:\n{errors}");
     }
 }
+
+/// `fixedgl bench --json`: one object with each scene's medians and ratio, their geometric mean,
+/// the worst scene and both sides' thread counts; `--threads` sets the CPU side's.
+#[test]
+fn bench_json_gives_ratios_their_geometric_mean_the_worst_scene_and_threads() {
+    if crate::common::test_backend(8, 8).is_none() {
+        return;
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_fixedgl"))
+        .args([
+            "bench",
+            "triangle",
+            "rect-wire",
+            "--frames",
+            "1",
+            "--threads",
+            "1",
+            "--json",
+        ])
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run fixedgl: {e}"));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "fixedgl bench failed: {stderr}");
+    let v: Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("--json printed no JSON ({e}); stderr: {stderr}"));
+    assert_eq!(v["cpu_threads"], 1);
+    assert!(v["gl_threads"].as_u64().is_some_and(|n| n >= 1));
+    let scenes = v["scenes"].as_array().map_or(&[][..], |a| a.as_slice());
+    let names: Vec<&str> = scenes.iter().filter_map(|s| s["scene"].as_str()).collect();
+    assert_eq!(names, ["triangle", "rect-wire"]);
+    let ratios: Vec<f64> = scenes.iter().filter_map(|s| s["ratio"].as_f64()).collect();
+    for s in scenes {
+        let (c, g, r) = (
+            s["cpu_ms"].as_f64(),
+            s["gl_ms"].as_f64(),
+            s["ratio"].as_f64(),
+        );
+        assert!(
+            matches!((c, g, r), (Some(c), Some(g), Some(r)) if c > 0.0 && g > 0.0 && (r - c / g).abs() < 1e-9)
+        );
+    }
+    let geomean = (ratios.iter().map(|r| r.ln()).sum::<f64>() / ratios.len() as f64).exp();
+    assert!((v["geomean_ratio"].as_f64().unwrap_or(f64::NAN) - geomean).abs() < 1e-9);
+    let worst = if ratios[0] >= ratios[1] {
+        "triangle"
+    } else {
+        "rect-wire"
+    };
+    assert_eq!(v["worst"], worst);
+}
