@@ -26,7 +26,7 @@
 //! Design decision: writing goes through RON and `Call`'s serde derive, and reading through the
 //! same derive with this module's own `serde::Deserializer`, so a variant added to `Call` needs
 //! nothing here to be recorded and read back. On writing, integers in the positions the command
-//! table marks as enums (`call::arg_kinds`, from the registry's types and enum groups) become
+//! table marks as enums (`Call::arg_kinds`, from the registry's types and enum groups) become
 //! names. Reading was RON after a token rewrite (names to
 //! numbers), which dropped the whitespace between tokens (`0.5 5` read as `0.55`), reported
 //! columns in the rewritten text and RON's messages (every variant name for an unknown call);
@@ -52,12 +52,6 @@ use crate::Error;
 pub const MAX_LINE_BYTES: usize = 16 << 20;
 
 use crate::call::ArgKind as Kind;
-
-/// The kinds of the arguments of the call named `variant`, from the command table (the
-/// registry's parameter types and enum groups); positions past the slice are `Plain`.
-fn arg_kinds(variant: &str) -> &'static [Kind] {
-    crate::call::arg_kinds(variant).unwrap_or(&[])
-}
 
 /// The buffer bits `Clear` takes, by name.
 const CLEAR_BITS: [(&str, u32); 4] = [
@@ -365,7 +359,7 @@ fn format_call(call: &Call) -> Result<String, Error> {
     let (mut depth, mut arg) = (0usize, 0usize);
     loop {
         let tok = lexer.next_token().map_err(|e| invalid(e.msg))?;
-        let kinds = arg_kinds(variant.unwrap_or(""));
+        let kinds = call.arg_kinds();
         match tok.lex {
             Lex::End => break,
             Lex::Punct(c) => {

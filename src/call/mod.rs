@@ -25,7 +25,6 @@ pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
 mod generated;
 
-pub(crate) use generated::arg_kinds;
 pub use generated::{Call, NAMES};
 
 /// What an argument of a call holds, for the recording format to write it readably (from the

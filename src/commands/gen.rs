@@ -576,13 +576,15 @@ fn gen_call(cmds: &[Implemented]) -> String {
         "executes_immediately",
         &|a| a.immediate,
     );
-    s.push_str("}\n\n");
+    s.push('\n');
     s.push_str(
-        "/// What each argument of the call named `name` holds, for writing it readably; `None` for\n\
-         /// a name that is no call.\n",
+        "    /// What each argument holds, for the recording format to write it readably (from the\n    \
+         /// registry's types and enum groups); arguments past the slice are plain numbers.\n",
     );
-    s.push_str("pub(crate) fn arg_kinds(name: &str) -> Option<&'static [ArgKind]> {\n");
-    s.push_str("    use ArgKind::{Blend, ClearBits, Enum, Plain, Prim};\n    Some(match name {\n");
+    s.push_str("    pub(crate) fn arg_kinds(&self) -> &'static [ArgKind] {\n");
+    s.push_str(
+        "        use ArgKind::{Blend, ClearBits, Enum, Plain, Prim};\n        match self {\n",
+    );
     for c in cmds {
         let kinds: Vec<&str> = if c.ann.pack || c.ann.tuple.is_some() {
             vec![]
@@ -593,9 +595,14 @@ fn gen_call(cmds: &[Implemented]) -> String {
             }
             k
         };
-        let _ = writeln!(s, "        \"{}\" => &[{}],", c.ann.name, kinds.join(", "));
+        let pat = if c.fields.is_empty() {
+            format!("Call::{}", c.ann.name)
+        } else {
+            format!("Call::{}(..)", c.ann.name)
+        };
+        let _ = writeln!(s, "            {pat} => &[{}],", kinds.join(", "));
     }
-    s.push_str("        _ => return None,\n    })\n}\n");
+    s.push_str("        }\n    }\n}\n");
     s
 }
 
