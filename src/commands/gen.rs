@@ -276,6 +276,8 @@ enum Shape {
     OptBytes,
     /// Object names the caller passes (or, `out`, the names the call returned).
     Names,
+    /// Values whose count another parameter gives (PixelMap's `mapsize`): the caller's slice.
+    Values(&'static str),
 }
 
 /// One field of a `Call` variant.
@@ -298,6 +300,7 @@ impl Field {
             Shape::Bytes => "Vec<u8>".to_string(),
             Shape::OptBytes => "Option<Vec<u8>>".to_string(),
             Shape::Names => "Vec<u32>".to_string(),
+            Shape::Values(t) => format!("Vec<{t}>"),
         };
         if self.boxed {
             format!("Box<{inner}>")
@@ -393,6 +396,23 @@ impl Implemented {
                 Shape::Params(rust_scalar(&p.ptype))
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {
                 Shape::Names
+            } else if p.ptype != "void"
+                && p
+                    .len
+                    .as_deref()
+                    .is_some_and(|l| xml.params.iter().any(|q| q.name == l))
+            {
+                // A vector whose length another parameter gives (PixelMap's `mapsize`).
+                Shape::Values(rust_scalar(&p.ptype))
+            } else if p.ptype == "GLubyte"
+                && p.len.as_deref().is_some_and(|l| l.starts_with("COMPSIZE("))
+            {
+                // Bitmap's bits: bytes whose length the unpack modes give.
+                if ann.null {
+                    Shape::OptBytes
+                } else {
+                    Shape::Bytes
+                }
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")
             {
                 Shape::Pointer

@@ -44,8 +44,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     let has = |bit: u32| mask & bit != 0;
     if has(gl::CURRENT_BIT) {
         // Table 6.5: current colour, secondary colour, normal, texture coordinates, fog
-        // coordinate, edge flag.
-        copy!(d, s; current);
+        // coordinate, edge flag; the raster position and its associated data.
+        copy!(d, s; current, raster_pos);
     }
     if has(gl::ENABLE_BIT) {
         // Every Enable flag is in the enable group as well as in its own.
@@ -121,8 +121,13 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     if has(gl::LIST_BIT) {
         copy!(d, s; list_base);
     }
-    // PIXEL_MODE_BIT (read buffer, pixel transfer, zoom), POLYGON_STIPPLE_BIT and
-    // ACCUM_BUFFER_BIT: no state of theirs is kept yet.
+    if has(gl::PIXEL_MODE_BIT) {
+        // Table 6.23: the pixel transfer parameters and the zoom (the pixel maps are in no
+        // group).
+        copy!(d, s; pixel);
+    }
+    // POLYGON_STIPPLE_BIT and ACCUM_BUFFER_BIT, and PIXEL_MODE_BIT's read buffer: no state of
+    // theirs is kept yet.
 }
 
 /// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each

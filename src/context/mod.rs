@@ -361,6 +361,10 @@ mod arrays;
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
 
+// Raster position, rectangles, pixel rectangles, bitmaps (context/rasterpos.rs, context/pixels.rs)
+mod pixels;
+mod rasterpos;
+
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;
 mod lists;

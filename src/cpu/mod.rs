@@ -43,6 +43,7 @@ pub mod fragops;
 pub mod framebuffer;
 mod line;
 mod polygon;
+pub mod pixels;
 pub mod raster;
 pub mod setup;
 pub mod texgen;

@@ -184,6 +184,11 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::BlendFuncSeparate(_, d, _, da) => {
             d == gl::SRC_ALPHA_SATURATE || da == gl::SRC_ALPHA_SATURATE
         }
+        // GL 2.1 §4.3.3: COLOR, DEPTH or STENCIL; a newer driver also takes DEPTH_STENCIL (after
+        // its INVALID_VALUE for a negative size, which stays the driver's).
+        Call::CopyPixels(_, _, w, h, t) => {
+            w >= 0 && h >= 0 && !matches!(t, gl::COLOR | gl::DEPTH | gl::STENCIL)
+        }
         _ => false,
     };
     wrong.then_some(gl::INVALID_ENUM)

@@ -1261,7 +1261,10 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             alpha,
             stencil,
             blend,
-            logic_op
+            logic_op,
+            raster_pos,
+            pixel,
+            pixel_maps
         },
         special { textures }
     )
