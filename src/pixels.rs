@@ -251,7 +251,11 @@ impl BitLayout {
             return false;
         };
         let k = (b % 8) as u32;
-        let mask = if self.lsb_first { 1u8 << k } else { 0x80u8 >> k };
+        let mask = if self.lsb_first {
+            1u8 << k
+        } else {
+            0x80u8 >> k
+        };
         byte & mask != 0
     }
 }
@@ -719,7 +723,10 @@ mod tests {
             check(gl::TRIANGLES, gl::UNSIGNED_BYTE_3_3_2),
             Err(gl::INVALID_OPERATION)
         );
-        assert_eq!(check(gl::TRIANGLES, gl::UNSIGNED_BYTE), Err(gl::INVALID_ENUM));
+        assert_eq!(
+            check(gl::TRIANGLES, gl::UNSIGNED_BYTE),
+            Err(gl::INVALID_ENUM)
+        );
         assert_eq!(check(gl::RGBA, 0x140B), Err(gl::INVALID_ENUM)); // HALF_FLOAT
         assert_eq!(check(gl::RGBA, gl::RGBA), Err(gl::INVALID_ENUM));
     }
@@ -797,7 +804,10 @@ mod tests {
     fn transfer_scale_bias_maps_and_indices() {
         let mut maps = PixelMaps::default();
         let mut t = PixelTransfer::default();
-        assert_eq!(t.color(&maps, [0.5, 2.0, -1.0, 0.25]), [0.5, 1.0, 0.0, 0.25]);
+        assert_eq!(
+            t.color(&maps, [0.5, 2.0, -1.0, 0.25]),
+            [0.5, 1.0, 0.0, 0.25]
+        );
         t.set(TransferParam::Scale(0), 0.5);
         t.set(TransferParam::Bias(1), 0.25);
         assert_eq!(t.color(&maps, [1.0, 0.5, 0.0, 1.0]), [0.5, 0.75, 0.0, 1.0]);

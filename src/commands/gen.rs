@@ -397,8 +397,7 @@ impl Implemented {
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {
                 Shape::Names
             } else if p.ptype != "void"
-                && p
-                    .len
+                && p.len
                     .as_deref()
                     .is_some_and(|l| xml.params.iter().any(|q| q.name == l))
             {

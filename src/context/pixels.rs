@@ -500,7 +500,15 @@ impl Context {
                     ty: Ty::Bitmap,
                 };
                 let tight = repack(&self.state.unpack, f, *w, *h, bits).unwrap_or_default();
-                Some(Call::Bitmap(*w, *h, *xo, *yo, *xm, *ym, Box::new(Some(tight))))
+                Some(Call::Bitmap(
+                    *w,
+                    *h,
+                    *xo,
+                    *yo,
+                    *xm,
+                    *ym,
+                    Box::new(Some(tight)),
+                ))
             }
             _ => None,
         }
@@ -528,7 +536,13 @@ fn compact_span(span: Span) -> (Vec<usize>, Span) {
         .map(|g| keys.binary_search(g).unwrap_or(0) as u32)
         .collect();
     let keys = keys.into_iter().map(|k| k as usize).collect();
-    (keys, Span { lo: span.lo, groups })
+    (
+        keys,
+        Span {
+            lo: span.lo,
+            groups,
+        },
+    )
 }
 
 /// [`compact_span`] of the columns and of the rows.
@@ -542,7 +556,8 @@ fn compact(cols: Span, rows: Span) -> (Vec<usize>, Vec<usize>, Span, Span) {
 /// the values cannot be allocated (at most one per covered window pixel).
 fn gather<T>(gi: &[usize], gj: &[usize], mut f: impl FnMut(usize, usize) -> T) -> Option<Vec<T>> {
     let mut out = Vec::new();
-    out.try_reserve_exact(gi.len().checked_mul(gj.len())?).ok()?;
+    out.try_reserve_exact(gi.len().checked_mul(gj.len())?)
+        .ok()?;
     for &j in gj {
         for &i in gi {
             out.push(f(i, j));
@@ -555,7 +570,9 @@ fn gather<T>(gi: &[usize], gj: &[usize], mut f: impl FnMut(usize, usize) -> T) -
 /// skips, host byte order, bits most significant first), or None when `data` is shorter than
 /// the image spans.
 fn repack(modes: &PixelModes, f: pixels::Format, w: i32, h: i32, data: &[u8]) -> Option<Vec<u8>> {
-    let from = modes.image_layout(f, w, h).filter(|l| data.len() >= l.need())?;
+    let from = modes
+        .image_layout(f, w, h)
+        .filter(|l| data.len() >= l.need())?;
     let to = TIGHT.image_layout(f, w, h)?;
     let mut out = Vec::new();
     out.try_reserve_exact(to.need()).ok()?;

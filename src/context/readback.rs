@@ -91,7 +91,8 @@ impl Context {
                         let rgba: [f64; 4] = if color_identity {
                             c.map(|v| f64::from(v) / 255.0)
                         } else {
-                            t.color(&maps, c.map(|v| f32::from(v) / 255.0)).map(f64::from)
+                            t.color(&maps, c.map(|v| f32::from(v) / 255.0))
+                                .map(f64::from)
                         };
                         for (k, slot) in slots.iter().enumerate() {
                             comps[k] = Value::Norm(match slot {

@@ -5,15 +5,16 @@
 //! primitives do (`FragCtx::pixel`). Stencil groups are written to the stencil buffer through the
 //! scissor test and the stencil write mask only (§4.3.1).
 //!
-//! Design decision: which window pixels a zoomed rectangle covers, and which group each takes, is
-//! llvmpipe's, because Mesa draws a pixel rectangle as a textured quad: the quad spans x .. x +
-//! width · ZOOM_X from the rounded raster position, its vertical span is shifted so that its far
-//! edge lies on trunc(y + height · ZOOM_Y) (Mesa's `draw_textured_quad` into a framebuffer
-//! object), its corners are snapped to 1/256 pixel, a pixel is covered when its centre is inside
-//! (left and bottom edges included, as for triangles), and it takes the group floor((centre −
-//! start) / zoom), the nearest texel. With integer zooms and integer raster positions this is
-//! exactly §3.6.5's rule. Each window row and column is mapped to its group once per call (two
-//! small tables), and the tiles are filled in parallel, each by one thread, as the rasteriser does.
+//! Design decision: which window pixels a zoomed rectangle covers, and which group each takes,
+//! is GL 2.1 §3.6.5's rule taken literally: group (i, j) covers the rectangle from (x + i·zx,
+//! y + j·zy) to (x + (i + 1)·zx, y + (j + 1)·zy), (x, y) the raster position rounded as Mesa rounds
+//! it, and a pixel whose centre lies inside, or on the rectangle's left or bottom boundary, takes
+//! that group. The far edges are computed in single precision and snapped to 1/256 pixel, as
+//! llvmpipe's rasteriser takes the quad it draws a pixel rectangle with; wherever no pixel centre
+//! lies exactly on an edge or a group boundary (integer zooms, fractions with odd denominators)
+//! the pixels are the driver's. Each window row and column is mapped to its group once per call
+//! (two small tables), and the tiles are filled in parallel, each by one thread, as the
+//! rasteriser does.
 
 use glam::{Vec3, Vec4};
 use rayon::prelude::*;
@@ -220,7 +221,16 @@ impl Renderer {
                         };
                         let g = row + gi as usize;
                         let i = base + (x - ox) as usize;
-                        fragment(&fctx, &shared, &mut bufs, d.groups, g, i, plain, stencil_mask);
+                        fragment(
+                            &fctx,
+                            &shared,
+                            &mut bufs,
+                            d.groups,
+                            g,
+                            i,
+                            plain,
+                            stencil_mask,
+                        );
                     }
                 }
             });
@@ -282,17 +292,22 @@ fn fragment(
 
 /// The columns and rows a pixel rectangle of `width` x `height` groups covers with its lower-left
 /// corner at window (`x`, `y`) (the rounded raster position) and zoom factors `zoom`, cut to the
-/// framebuffer and the scissor box, as llvmpipe draws it (see the module docs).
-pub fn spans(state: &State, x: i32, y: i32, width: usize, height: usize, zoom: [f32; 2]) -> (Span, Span) {
+/// framebuffer and the scissor box (see the module docs).
+pub fn spans(
+    state: &State,
+    x: i32,
+    y: i32,
+    width: usize,
+    height: usize,
+    zoom: [f32; 2],
+) -> (Span, Span) {
     let [sx0, sy0, sx1, sy1] = scissor_rect(state);
     let (zx, zy) = (zoom[0], zoom[1]);
-    // Mesa computes the far edges in single precision: x + width · ZOOM_X, and, into a
-    // framebuffer object, the vertical span shifted to end at trunc(y + height · ZOOM_Y).
+    // The far edges in single precision, x + width · ZOOM_X, as Mesa computes them.
     let x_end = f64::from(x as f32 + width as f32 * zx);
-    let y_far = (y as f32 + height as f32 * zy).trunc();
-    let y_start = f64::from(y_far) - f64::from(height as f32 * zy);
+    let y_end = f64::from(y as f32 + height as f32 * zy);
     let cols = Span::new(f64::from(x), x_end, width, zx, sx0, sx1);
-    let rows = Span::new(y_start, f64::from(y_far), height, zy, sy0, sy1);
+    let rows = Span::new(f64::from(y), y_end, height, zy, sy0, sy1);
     (cols, rows)
 }
 
@@ -318,7 +333,14 @@ mod tests {
         assert!(Span::new(10.0, 10.0, 3, 0.0, 0, 100).is_empty());
         assert!(Span::new(10.0, 10.0, 0, 1.0, 0, 100).is_empty());
         // Zoom 4/3: 4 groups span 5.33 pixels, centres 10.5 .. 14.5 (15.5 is past the edge).
-        let s = Span::new(10.0, 10.0 + 4.0 * (4.0f32 / 3.0) as f64, 4, 4.0 / 3.0, 0, 100);
+        let s = Span::new(
+            10.0,
+            10.0 + 4.0 * (4.0f32 / 3.0) as f64,
+            4,
+            4.0 / 3.0,
+            0,
+            100,
+        );
         assert_eq!((s.lo, s.groups.clone()), (10, vec![0, 1, 1, 2, 3]));
     }
 }

@@ -73,7 +73,11 @@ impl GlBackend {
     pub(super) fn pixel_mapfv(&mut self, map: u32, mapsize: i32, values: &[f32]) {
         if self.pixel_map_check(map, mapsize, values.len()) {
             let one = [0.0f32];
-            let p = if values.is_empty() { one.as_ptr() } else { values.as_ptr() };
+            let p = if values.is_empty() {
+                one.as_ptr()
+            } else {
+                values.as_ptr()
+            };
             // SAFETY: context current; the driver reads `mapsize` values only when it is in
             // 1..=MAX_PIXEL_MAP_TABLE, and then `values` holds at least that many (checked).
             unsafe { self.raw.PixelMapfv(map, mapsize, p) };
@@ -84,7 +88,11 @@ impl GlBackend {
     pub(super) fn pixel_mapuiv(&mut self, map: u32, mapsize: i32, values: &[u32]) {
         if self.pixel_map_check(map, mapsize, values.len()) {
             let one = [0u32];
-            let p = if values.is_empty() { one.as_ptr() } else { values.as_ptr() };
+            let p = if values.is_empty() {
+                one.as_ptr()
+            } else {
+                values.as_ptr()
+            };
             // SAFETY: as in `pixel_mapfv`.
             unsafe { self.raw.PixelMapuiv(map, mapsize, p) };
         }
@@ -94,7 +102,11 @@ impl GlBackend {
     pub(super) fn pixel_mapusv(&mut self, map: u32, mapsize: i32, values: &[u16]) {
         if self.pixel_map_check(map, mapsize, values.len()) {
             let one = [0u16];
-            let p = if values.is_empty() { one.as_ptr() } else { values.as_ptr() };
+            let p = if values.is_empty() {
+                one.as_ptr()
+            } else {
+                values.as_ptr()
+            };
             // SAFETY: as in `pixel_mapfv`.
             unsafe { self.raw.PixelMapusv(map, mapsize, p) };
         }
@@ -114,7 +126,10 @@ impl GlBackend {
     ) {
         let p = match bitmap {
             Some(data) if width > 0 && height > 0 => {
-                let need = self.driver_unpack().bitmap_layout(width, height).map(|l| l.need);
+                let need = self
+                    .driver_unpack()
+                    .bitmap_layout(width, height)
+                    .map(|l| l.need);
                 if need.is_none_or(|n| data.len() < n) {
                     return self.own_error(gl::INVALID_OPERATION);
                 }
@@ -127,7 +142,10 @@ impl GlBackend {
         // SAFETY: context current; `p` is NULL, or the driver reads nothing (a size of 0 or an
         // INVALID_VALUE), or it reads the bitmap's `need` bytes under its own unpack state,
         // which `data` holds (checked above).
-        unsafe { self.raw.Bitmap(width, height, xorig, yorig, xmove, ymove, p) };
+        unsafe {
+            self.raw
+                .Bitmap(width, height, xorig, yorig, xmove, ymove, p)
+        };
     }
 
     /// `glDrawPixels` with the recorded bytes.
