@@ -332,6 +332,23 @@ fn element(data: &[u8], at: usize, size: usize, layout: &Layout) -> u32 {
     }
 }
 
+/// Each unsigned byte c as c / 255 (table 2.9), rounded once from double precision as
+/// [`normalized`] computes it.
+const U8_UNIT: [f32; 256] = {
+    let mut t = [0.0f32; 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = (i as f64 / 255.0) as f32;
+        i += 1;
+    }
+    t
+};
+
+/// The unsigned byte `c` as c / 255, exactly as an UNSIGNED_BYTE component unpacks.
+pub fn unit_u8(c: u8) -> f32 {
+    U8_UNIT[usize::from(c)]
+}
+
 /// An element's bits as a normalised float (table 2.9 for integers; FLOAT as it is).
 #[inline]
 fn normalized(s: Scalar, bits: u32) -> f32 {
@@ -399,8 +416,19 @@ impl Image<'_> {
     pub fn color(&self, i: usize, j: usize) -> [f32; 4] {
         let mut c = [0.0, 0.0, 0.0, 1.0];
         if let Group::Color(slots) = self.format.group {
+            // UNSIGNED_BYTE, the common case, by table: the group's bytes in one slice.
+            let bytes = match (&self.layout, self.format.ty) {
+                (ImageLayout::Bytes(l), Ty::Scalar(Scalar::U8)) => {
+                    let at = l.at(i, j);
+                    self.data.get(at..at + slots.len())
+                }
+                _ => None,
+            };
             for (k, s) in slots.iter().enumerate() {
-                let v = self.norm(i, j, k);
+                let v = match bytes {
+                    Some(b) => U8_UNIT[usize::from(b[k])],
+                    None => self.norm(i, j, k),
+                };
                 match s {
                     Slot::R => c[0] = v,
                     Slot::G => c[1] = v,
@@ -415,6 +443,88 @@ impl Image<'_> {
             }
         }
         c
+    }
+
+    /// [`Image::color`] of the groups (i, j) for every `j` of `rows` and `i` of `cols`, rows
+    /// first, into `out` (which the caller reserved): the same values, with the format's
+    /// components decoded once per image rather than per group for UNSIGNED_BYTE data.
+    pub fn colors(&self, cols: &[usize], rows: &[usize], out: &mut Vec<[f32; 4]>) {
+        let (ImageLayout::Bytes(l), Ty::Scalar(Scalar::U8), Group::Color(slots)) =
+            (&self.layout, self.format.ty, self.format.group)
+        else {
+            for &j in rows {
+                out.extend(cols.iter().map(|&i| self.color(i, j)));
+            }
+            return;
+        };
+        // Each component's destination channels.
+        let dest: Vec<(usize, usize)> = slots
+            .iter()
+            .map(|s| match s {
+                Slot::R => (0, 1),
+                Slot::G => (1, 2),
+                Slot::B => (2, 3),
+                Slot::A => (3, 4),
+                Slot::L => (0, 3),
+            })
+            .collect();
+        let n = slots.len();
+        for &j in rows {
+            for &i in cols {
+                let at = l.at(i, j);
+                let mut c = [0.0, 0.0, 0.0, 1.0];
+                if let Some(b) = self.data.get(at..at + n) {
+                    for (&byte, &(lo, hi)) in b.iter().zip(&dest) {
+                        let v = U8_UNIT[usize::from(byte)];
+                        for slot in c.iter_mut().take(hi).skip(lo) {
+                            *slot = v;
+                        }
+                    }
+                }
+                out.push(c);
+            }
+        }
+    }
+
+    /// For UNSIGNED_BYTE colour data only (None otherwise): the groups (i, j) for every `j` of
+    /// `rows` and `i` of `cols`, rows first, as the 8-bit colours [`Image::color`] converts to
+    /// with no transfer (c/255 back to 8 bits is c: the bytes themselves, in their channels, a
+    /// missing R, G, B 0 and A 255), appended to `out`.
+    pub fn bytes(&self, cols: &[usize], rows: &[usize], out: &mut Vec<[u8; 4]>) -> Option<()> {
+        let (ImageLayout::Bytes(l), Ty::Scalar(Scalar::U8), Group::Color(slots)) =
+            (&self.layout, self.format.ty, self.format.group)
+        else {
+            return None;
+        };
+        let n = slots.len();
+        let rgba = slots == [Slot::R, Slot::G, Slot::B, Slot::A];
+        for &j in rows {
+            for &i in cols {
+                let at = l.at(i, j);
+                let mut c = [0, 0, 0, 255];
+                if let Some(b) = self.data.get(at..at + n) {
+                    if rgba {
+                        c.copy_from_slice(b);
+                    } else {
+                        for (&byte, s) in b.iter().zip(slots) {
+                            match s {
+                                Slot::R => c[0] = byte,
+                                Slot::G => c[1] = byte,
+                                Slot::B => c[2] = byte,
+                                Slot::A => c[3] = byte,
+                                Slot::L => {
+                                    c[0] = byte;
+                                    c[1] = byte;
+                                    c[2] = byte;
+                                }
+                            }
+                        }
+                    }
+                }
+                out.push(c);
+            }
+        }
+        Some(())
     }
 
     /// The depth of group (`i`, `j`) of a DEPTH_COMPONENT image, before any transfer (unsigned
@@ -798,6 +908,13 @@ mod tests {
             layout,
         };
         assert_eq!(img.color(0, 0), [0.2, 0.2, 0.2, 1.0]);
+        // The table is the conversion.
+        for c in 0..=255u8 {
+            assert_eq!(
+                U8_UNIT[usize::from(c)],
+                normalized(Scalar::U8, u32::from(c))
+            );
+        }
     }
 
     #[test]

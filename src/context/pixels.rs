@@ -22,6 +22,7 @@
 
 use super::Context;
 use crate::call::Call;
+use crate::cpu::framebuffer::unorm8;
 use crate::cpu::pixels::{spans, Groups, PixelDraw, Span};
 use crate::gl;
 use crate::pixel_store::PixelModes;
@@ -376,17 +377,67 @@ impl Context {
         let (gi, gj, cols, rows) = compact(cols, rows);
         let n = gi.len();
         let drawn = match f.group {
+            // Straight to the buffer's 8 bits when nothing but the colour write follows: the
+            // bytes themselves for UNSIGNED_BYTE with no transfer, the 8-bit conversion of the
+            // transferred colour otherwise (one less float image to hold).
+            Group::Color(_) if self.renderer.pixels_plain(&self.state) => {
+                let mut out = Vec::new();
+                gi.len()
+                    .checked_mul(gj.len())
+                    .and_then(|len| out.try_reserve_exact(len).ok())
+                    .map(|()| {
+                        let direct = img.bytes(&gi, &gj, &mut out).is_some();
+                        if direct && !t.color_is_identity() {
+                            // The transfer works on each component alone: one table per
+                            // channel of the 256 bytes' results.
+                            let mut lut = [[0u8; 256]; 4];
+                            for v in 0..=255u8 {
+                                let x = crate::pixels::unit_u8(v);
+                                let c = t.color(&maps, [x; 4]).map(unorm8);
+                                for (ch, table) in lut.iter_mut().enumerate() {
+                                    table[usize::from(v)] = c[ch];
+                                }
+                            }
+                            for px in &mut out {
+                                *px = std::array::from_fn(|ch| lut[ch][usize::from(px[ch])]);
+                            }
+                        }
+                        if !direct {
+                            out.clear();
+                            for &j in &gj {
+                                for &i in &gi {
+                                    let c = img.color(i, j);
+                                    let c = if t.color_is_identity() {
+                                        c.map(clamp01)
+                                    } else {
+                                        t.color(&maps, c)
+                                    };
+                                    out.push(c.map(unorm8));
+                                }
+                            }
+                        }
+                        self.draw_groups(cols, rows, n, Groups::Bytes(&out))
+                    })
+            }
             Group::Color(_) => {
-                let identity = t.color_is_identity();
-                gather(&gi, &gj, |i, j| {
-                    let c = img.color(i, j);
-                    if identity {
-                        c.map(clamp01)
-                    } else {
-                        t.color(&maps, c)
-                    }
-                })
-                .map(|out| self.draw_groups(cols, rows, n, Groups::Color(&out)))
+                let mut out = Vec::new();
+                gi.len()
+                    .checked_mul(gj.len())
+                    .and_then(|len| out.try_reserve_exact(len).ok())
+                    .map(|()| {
+                        img.colors(&gi, &gj, &mut out);
+                        // The final conversion clamps (§3.6.5); the transfer clamps itself.
+                        if t.color_is_identity() {
+                            for c in &mut out {
+                                *c = c.map(clamp01);
+                            }
+                        } else {
+                            for c in &mut out {
+                                *c = t.color(&maps, *c);
+                            }
+                        }
+                        self.draw_groups(cols, rows, n, Groups::Color(&out))
+                    })
             }
             Group::Index => gather(&gi, &gj, |i, j| t.index_to_rgba(&maps, img.index(i, j)))
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Color(&out))),

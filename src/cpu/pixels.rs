@@ -31,6 +31,9 @@ pub enum Groups<'a> {
     /// RGBA colours, clamped to [0, 1] (DrawPixels of a colour or colour-index format,
     /// CopyPixels COLOR).
     Color(&'a [[f32; 4]]),
+    /// Colours already in the colour buffer's 8 bits: only where [`Renderer::pixels_plain`]
+    /// says the fragments reach the buffer unchanged.
+    Bytes(&'a [[u8; 4]]),
     /// Depths in [0, 1] (DEPTH_COMPONENT, CopyPixels DEPTH); the colour is the raster colour.
     Depth(&'a [f64]),
     /// Stencil indices (STENCIL_INDEX, CopyPixels STENCIL): written to the stencil buffer only.
@@ -138,6 +141,21 @@ impl Shared<'_> {
 }
 
 impl Renderer {
+    /// Whether the fragments of a pixel rectangle drawn under `state` reach the colour buffer as
+    /// they are, through ColorMask only: no texturing, depth test, fog, alpha or stencil test,
+    /// blending or logic op. The front end then converts the groups to the buffer's 8 bits
+    /// itself ([`Groups::Bytes`]).
+    pub fn pixels_plain(&self, state: &State) -> bool {
+        let e = &state.enables;
+        let textured = (0..2).any(|u| {
+            e.texture_1d[u] || e.texture_2d[u] || e.texture_3d[u] || e.texture_cube_map[u]
+        });
+        !self.count_coverage
+            && !e.depth_test
+            && !textured
+            && super::fragops::Ops::new(state).is_none()
+    }
+
     /// Draws the pixel rectangle or bitmap `d` with `state` (the raster position, texturing,
     /// fog and the per-fragment operations it enables), after everything batched before it.
     /// `secondary`: whether the raster secondary colour is the fragments' secondary colour
@@ -266,6 +284,16 @@ fn fragment(
                 return;
             }
             (c, shared.z)
+        }
+        Groups::Bytes(c) => {
+            if let (Some(&px), Some(dst)) = (c.get(g), bufs.color.get_mut(i)) {
+                for k in 0..4 {
+                    if fctx.color_mask[k] {
+                        dst[k] = px[k];
+                    }
+                }
+            }
+            return;
         }
         Groups::Depth(d) => {
             let Some(&z) = d.get(g) else { return };

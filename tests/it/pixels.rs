@@ -331,3 +331,60 @@ fn work_is_bounded_by_the_window() {
     assert_eq!(c.get_error(), gl::NO_ERROR);
     assert_eq!(px(&mut c, 15, 15), [50, 50, 50, 255]);
 }
+
+#[test]
+fn the_plain_and_full_fragment_paths_agree() {
+    // With nothing but the colour write after it, DrawPixels converts the groups to 8 bits
+    // itself; with a depth test that always passes and writes nothing, every fragment takes the
+    // full sequence. The pixels must be the same for every transfer and format.
+    let data: Vec<u8> = (0..24 * 10 * 8)
+        .map(|k: usize| (k * 37 + k / 3) as u8)
+        .collect();
+    type Setup = fn(&mut Context);
+    let transfers: [Setup; 4] = [
+        |_| {},
+        |c| {
+            c.pixel_transferf(gl::RED_SCALE, 0.6);
+            c.pixel_transferf(gl::BLUE_BIAS, 0.3);
+            c.pixel_transferf(gl::ALPHA_SCALE, -1.0);
+            c.pixel_transferf(gl::ALPHA_BIAS, 1.0);
+        },
+        |c| {
+            c.pixel_mapfv(gl::PIXEL_MAP_G_TO_G, 4, &[0.9, 0.1, 0.6, 0.3]);
+            c.pixel_transferi(gl::MAP_COLOR, 1);
+        },
+        |c| c.pixel_zoom(-1.5, 2.0),
+    ];
+    for (k, transfer) in transfers.iter().enumerate() {
+        for (format, ty) in [
+            (gl::RGBA, gl::UNSIGNED_BYTE),
+            (gl::LUMINANCE_ALPHA, gl::UNSIGNED_BYTE),
+            (gl::BGR, gl::UNSIGNED_BYTE),
+            (gl::RGBA, gl::UNSIGNED_SHORT),
+            (gl::RGB, gl::UNSIGNED_SHORT_5_6_5),
+        ] {
+            let draw = |full: bool| {
+                let mut c = ctx(64, 32);
+                transfer(&mut c);
+                if full {
+                    c.enable(gl::DEPTH_TEST);
+                    c.depth_func(gl::ALWAYS);
+                    c.depth_mask(false);
+                }
+                c.window_pos2i(40, 4);
+                c.draw_pixels(24, 10, format, ty, &data);
+                // The read must not go through the transfer under test.
+                c.pixel_transferi(gl::MAP_COLOR, 0);
+                for p in [gl::RED_SCALE, gl::ALPHA_SCALE] {
+                    c.pixel_transferf(p, 1.0);
+                }
+                for p in [gl::BLUE_BIAS, gl::ALPHA_BIAS] {
+                    c.pixel_transferf(p, 0.0);
+                }
+                assert_eq!(c.get_error(), gl::NO_ERROR);
+                c.to_image()
+            };
+            assert_eq!(draw(false), draw(true), "transfer {k}, {format:#x}/{ty:#x}");
+        }
+    }
+}
