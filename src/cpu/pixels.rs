@@ -61,7 +61,7 @@ impl Span {
         let snap = |v: f64| (v * 256.0).round() / 256.0;
         let (a, b) = (snap(start), snap(end));
         let (low, high) = if a <= b { (a, b) } else { (b, a) };
-        if n == 0 || zoom == 0.0 || !zoom.is_finite() || !(low < high) || min > max {
+        if n == 0 || zoom == 0.0 || !zoom.is_finite() || low >= high || low.is_nan() || min > max {
             return Span::default();
         }
         // First pixel whose centre is >= low, last whose centre is < high, inside [min, max].

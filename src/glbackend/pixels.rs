@@ -130,7 +130,7 @@ impl GlBackend {
                     .driver_unpack()
                     .bitmap_layout(width, height)
                     .map(|l| l.need);
-                if need.is_none_or(|n| data.len() < n) {
+                if need.map_or(true, |n| data.len() < n) {
                     return self.own_error(gl::INVALID_OPERATION);
                 }
                 data.as_ptr()
@@ -166,7 +166,7 @@ impl GlBackend {
                 .driver_unpack()
                 .image_layout(f, width, height)
                 .map(|l: ImageLayout| l.need());
-            if need.is_none_or(|n| pixels.len() < n) {
+            if need.map_or(true, |n| pixels.len() < n) {
                 return self.own_error(gl::INVALID_OPERATION);
             }
         }

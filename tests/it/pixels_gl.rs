@@ -15,6 +15,9 @@
 use crate::common::test_backend;
 use fixedgl::{gl, Context};
 
+/// A labelled sequence of calls.
+type Named = (&'static str, fn(&mut Context));
+
 /// Draws `f` on both backends under a pixel-aligned ortho projection and returns the pixels
 /// whose largest channel difference exceeds `tol`, the largest difference and both errors; None
 /// when GL is unavailable.
@@ -56,7 +59,7 @@ fn image(w: usize, h: usize) -> Vec<u8> {
         for i in 0..w {
             v.extend_from_slice(&[
                 (i * 7 + j * 3) as u8,
-                (i * 13 ^ j * 5) as u8,
+                ((i * 13) ^ (j * 5)) as u8,
                 (200 - i - j) as u8,
                 (255 - (i * j) % 256) as u8,
             ]);
@@ -792,7 +795,7 @@ fn errors_match_the_driver() {
         assert_eq!(a, b, "GetPixelMapfv({map:#x})");
     }
     // Inside Begin/End, every command here is INVALID_OPERATION.
-    let calls: [(&str, fn(&mut Context)); 8] = [
+    let calls: [Named; 8] = [
         ("DrawPixels", |c| {
             c.draw_pixels(1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &[0; 4])
         }),

@@ -9,7 +9,11 @@
 
 use fixedgl::{gl, Context};
 
+/// A labelled sequence of calls.
+type Named = (&'static str, fn(&mut Context));
+
 /// The raster queries compared, with their value counts.
+#[cfg(feature = "gl")]
 const QUERIES: &[(&str, u32, usize)] = &[
     ("POSITION", gl::CURRENT_RASTER_POSITION, 4),
     ("VALID", gl::CURRENT_RASTER_POSITION_VALID, 1),
@@ -21,6 +25,7 @@ const QUERIES: &[(&str, u32, usize)] = &[
 ];
 
 /// Every raster query of `c`, as floats.
+#[cfg(feature = "gl")]
 fn raster(c: &mut Context) -> Vec<f32> {
     let mut out = Vec::new();
     for &(_, pname, n) in QUERIES {
@@ -32,9 +37,8 @@ fn raster(c: &mut Context) -> Vec<f32> {
 }
 
 /// The steps of the sequence: each a label and the calls it makes.
-type Step = (&'static str, fn(&mut Context));
-
-const STEPS: &[Step] = &[
+#[cfg(feature = "gl")]
+const STEPS: &[Named] = &[
     ("initial state", |_| {}),
     ("perspective, rotated", |c| {
         c.matrix_mode(gl::PROJECTION);
@@ -244,7 +248,7 @@ fn every_form_converts_its_coordinates() {
         v
     };
     // z = 0 → window z 0.5 with this ortho; w is the clip w (1).
-    let forms: [(&str, fn(&mut Context)); 12] = [
+    let forms: [Named; 12] = [
         ("2s", |c| c.raster_pos2s(10, 20)),
         ("2i", |c| c.raster_pos2i(10, 20)),
         ("2f", |c| c.raster_pos2f(10.0, 20.0)),
@@ -267,7 +271,7 @@ fn every_form_converts_its_coordinates() {
         let close = p.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-4);
         assert!(close, "RasterPos{name}: {p:?}");
     }
-    let forms: [(&str, fn(&mut Context)); 8] = [
+    let forms: [Named; 8] = [
         ("2s", |c| c.window_pos2s(3, 4)),
         ("2fv", |c| c.window_pos2fv(&[3.0, 4.0])),
         ("2dv", |c| c.window_pos2dv(&[3.0, 4.0])),
