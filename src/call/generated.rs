@@ -728,7 +728,7 @@ pub enum Call {
     PixelMapusv(u32, i32, Vec<u16>),
     /// `glBitmap(width, height, xorig, yorig, xmove, ymove, bitmap)`.
     ///
-    /// width, height, xorig, yorig, xmove, ymove, and the bytes the unpack modes say the bitmap spans (None: NULL, no bits; boxed to keep `Call` at 40 bytes).
+    /// width, height, xorig, yorig, xmove, ymove, and the bytes as the caller passed them (None: NULL, no bits; boxed to keep `Call` at 40 bytes).
     Bitmap(i32, i32, f32, f32, f32, f32, Box<Option<Vec<u8>>>),
     /// `glDrawPixels(width, height, format, type, pixels)`.
     ///
