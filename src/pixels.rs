@@ -556,6 +556,103 @@ impl Image<'_> {
     }
 }
 
+/// The unpack modes of the tightly packed images a display list holds (§5.4): alignment 1, no
+/// row length or skips, the host's byte order, bits most significant first.
+pub const TIGHT: PixelModes = PixelModes {
+    swap_bytes: false,
+    lsb_first: false,
+    row_length: 0,
+    image_height: 0,
+    skip_rows: 0,
+    skip_pixels: 0,
+    skip_images: 0,
+    alignment: 1,
+};
+
+/// The image `data` of `f` unpacked under `modes`, repacked in the [`TIGHT`] layout, or None
+/// when `data` is shorter than the image spans.
+pub fn repack(modes: &PixelModes, f: Format, w: i32, h: i32, data: &[u8]) -> Option<Vec<u8>> {
+    let from = modes
+        .image_layout(f, w, h)
+        .filter(|l| data.len() >= l.need())?;
+    let to = TIGHT.image_layout(f, w, h)?;
+    let mut out = Vec::new();
+    out.try_reserve_exact(to.need()).ok()?;
+    out.resize(to.need(), 0);
+    let (w, h) = (w.max(0) as usize, h.max(0) as usize);
+    match (from, to) {
+        (ImageLayout::Bits(a), ImageLayout::Bits(b)) => {
+            for j in 0..h {
+                for i in 0..w {
+                    if a.bit(data, i, j) {
+                        let at = b.offset + j * b.stride + i / 8;
+                        if let Some(byte) = out.get_mut(at) {
+                            *byte |= 0x80 >> (i % 8);
+                        }
+                    }
+                }
+            }
+        }
+        (ImageLayout::Bytes(a), ImageLayout::Bytes(b)) => {
+            let elem = a.size.max(1);
+            for j in 0..h {
+                for i in 0..w {
+                    let (s, d) = (a.at(i, j), b.at(i, j));
+                    for k in 0..a.pixel / elem {
+                        let (s, d) = (s + k * elem, d + k * elem);
+                        let (Some(src), Some(dst)) =
+                            (data.get(s..s + elem), out.get_mut(d..d + elem))
+                        else {
+                            continue;
+                        };
+                        dst.copy_from_slice(src);
+                        a.order(dst);
+                    }
+                }
+            }
+        }
+        _ => return None,
+    }
+    Some(out)
+}
+
+/// The call a display list stores for `call` (GL 2.1 §5.4): DrawPixels and Bitmap with their
+/// groups unpacked under `modes` (the unpack modes at compile time) into the [`TIGHT`] layout,
+/// which a call executed from a list is read under; None for every other call (stored as it
+/// is). A DrawPixels whose format, type or size is in error is stored as it is, to raise its
+/// error when the list runs; one whose data is short is stored with none, for the same reason.
+pub fn compile_unpacked(modes: &PixelModes, call: &crate::Call) -> Option<crate::Call> {
+    use crate::Call;
+    match call {
+        Call::DrawPixels(w, h, format, ty, data) => {
+            let f = check(*format, *ty).ok().filter(|_| *w >= 0 && *h >= 0)?;
+            let tight = repack(modes, f, *w, *h, data).unwrap_or_default();
+            Some(Call::DrawPixels(*w, *h, *format, *ty, Box::new(tight)))
+        }
+        Call::Bitmap(w, h, xo, yo, xm, ym, data) => {
+            let bits = data.as_deref()?;
+            if *w < 0 || *h < 0 {
+                return None;
+            }
+            let f = Format {
+                group: Group::Index,
+                ty: Ty::Bitmap,
+            };
+            let tight = repack(modes, f, *w, *h, bits).unwrap_or_default();
+            Some(Call::Bitmap(
+                *w,
+                *h,
+                *xo,
+                *yo,
+                *xm,
+                *ym,
+                Box::new(Some(tight)),
+            ))
+        }
+        _ => None,
+    }
+}
+
 /// The pixel maps (GL 2.1 §3.6.3, table 6.24), in the order of their enums from
 /// PIXEL_MAP_I_TO_I: I_TO_I, S_TO_S, I_TO_R, I_TO_G, I_TO_B, I_TO_A, R_TO_R, G_TO_G, B_TO_B,
 /// A_TO_A. Each holds 1 to MAX_PIXEL_MAP_TABLE entries, initially one 0 (table 6.24). In no

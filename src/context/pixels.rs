@@ -27,20 +27,7 @@ use crate::cpu::pixels::{spans, Groups, PixelDraw, Span};
 use crate::gl;
 use crate::pixel_store::PixelModes;
 use crate::pixels::{
-    self, check, is_index_map, map_index, Group, Image, ImageLayout, TransferParam, Ty,
-    MAX_PIXEL_MAP_TABLE,
-};
-
-/// The unpack modes of a list's tightly packed images.
-const TIGHT: PixelModes = PixelModes {
-    swap_bytes: false,
-    lsb_first: false,
-    row_length: 0,
-    image_height: 0,
-    skip_rows: 0,
-    skip_pixels: 0,
-    skip_images: 0,
-    alignment: 1,
+    self, check, is_index_map, map_index, Group, Image, TransferParam, MAX_PIXEL_MAP_TABLE, TIGHT,
 };
 
 /// Rounds half away from zero, as C's `lroundf` (saturating).
@@ -529,40 +516,10 @@ impl Context {
         }
     }
 
-    /// The call a display list stores for `call` (GL 2.1 §5.4): DrawPixels and Bitmap with their
-    /// groups unpacked now, under the current unpack modes, into the tight layout a call
-    /// executed from a list reads; None for every other call (stored as it is). A call whose
-    /// arguments are in error, or whose data is short, is stored with no data, so that it
-    /// raises its error when the list runs.
+    /// The call a display list stores for `call` (GL 2.1 §5.4): see
+    /// [`pixels::compile_unpacked`], under the current unpack modes.
     pub(crate) fn compile_pixels(&self, call: &Call) -> Option<Call> {
-        match call {
-            Call::DrawPixels(w, h, format, ty, data) => {
-                let f = check(*format, *ty).ok().filter(|_| *w >= 0 && *h >= 0)?;
-                let tight = repack(&self.state.unpack, f, *w, *h, data).unwrap_or_default();
-                Some(Call::DrawPixels(*w, *h, *format, *ty, Box::new(tight)))
-            }
-            Call::Bitmap(w, h, xo, yo, xm, ym, data) => {
-                let bits = data.as_deref()?;
-                if *w < 0 || *h < 0 {
-                    return None;
-                }
-                let f = pixels::Format {
-                    group: Group::Index,
-                    ty: Ty::Bitmap,
-                };
-                let tight = repack(&self.state.unpack, f, *w, *h, bits).unwrap_or_default();
-                Some(Call::Bitmap(
-                    *w,
-                    *h,
-                    *xo,
-                    *yo,
-                    *xm,
-                    *ym,
-                    Box::new(Some(tight)),
-                ))
-            }
-            _ => None,
-        }
+        pixels::compile_unpacked(&self.state.unpack, call)
     }
 }
 
@@ -613,54 +570,6 @@ fn gather<T>(gi: &[usize], gj: &[usize], mut f: impl FnMut(usize, usize) -> T) -
         for &i in gi {
             out.push(f(i, j));
         }
-    }
-    Some(out)
-}
-
-/// The image `data` of `f` unpacked under `modes`, repacked in the tight layout (alignment 1, no
-/// skips, host byte order, bits most significant first), or None when `data` is shorter than
-/// the image spans.
-fn repack(modes: &PixelModes, f: pixels::Format, w: i32, h: i32, data: &[u8]) -> Option<Vec<u8>> {
-    let from = modes
-        .image_layout(f, w, h)
-        .filter(|l| data.len() >= l.need())?;
-    let to = TIGHT.image_layout(f, w, h)?;
-    let mut out = Vec::new();
-    out.try_reserve_exact(to.need()).ok()?;
-    out.resize(to.need(), 0);
-    let (w, h) = (w.max(0) as usize, h.max(0) as usize);
-    match (from, to) {
-        (ImageLayout::Bits(a), ImageLayout::Bits(b)) => {
-            for j in 0..h {
-                for i in 0..w {
-                    if a.bit(data, i, j) {
-                        let at = b.offset + j * b.stride + i / 8;
-                        if let Some(byte) = out.get_mut(at) {
-                            *byte |= 0x80 >> (i % 8);
-                        }
-                    }
-                }
-            }
-        }
-        (ImageLayout::Bytes(a), ImageLayout::Bytes(b)) => {
-            let elem = a.size;
-            for j in 0..h {
-                for i in 0..w {
-                    let (s, d) = (a.at(i, j), b.at(i, j));
-                    for k in 0..a.pixel / elem.max(1) {
-                        let (s, d) = (s + k * elem, d + k * elem);
-                        let (Some(src), Some(dst)) =
-                            (data.get(s..s + elem), out.get_mut(d..d + elem))
-                        else {
-                            continue;
-                        };
-                        dst.copy_from_slice(src);
-                        a.order(dst);
-                    }
-                }
-            }
-        }
-        _ => return None,
     }
     Some(out)
 }

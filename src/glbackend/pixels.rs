@@ -17,7 +17,7 @@ use crate::pixels::{check, ImageLayout, MAX_PIXEL_MAP_TABLE};
 
 impl GlBackend {
     /// The driver's unpack modes (those that move where an image's bytes lie).
-    fn driver_unpack(&self) -> PixelModes {
+    pub(super) fn driver_unpack(&self) -> PixelModes {
         let mut v = [0i32; 6];
         for (slot, pname) in v.iter_mut().zip([
             gl::UNPACK_ALIGNMENT,
@@ -39,6 +39,29 @@ impl GlBackend {
             swap_bytes: v[5] != 0,
             ..PixelModes::default()
         }
+    }
+
+    /// Runs `f` with the driver's unpack modes set to `pixels::TIGHT` (the layout of a list's
+    /// unpacked images), then restores them.
+    pub(super) fn with_tight_unpack(&mut self, f: impl FnOnce(&mut Self)) {
+        let saved = self.driver_unpack();
+        let set = |b: &Self, m: &PixelModes| {
+            for (pname, v) in [
+                (gl::UNPACK_ALIGNMENT, m.alignment),
+                (gl::UNPACK_ROW_LENGTH, m.row_length),
+                (gl::UNPACK_SKIP_ROWS, m.skip_rows),
+                (gl::UNPACK_SKIP_PIXELS, m.skip_pixels),
+                (gl::UNPACK_LSB_FIRST, i32::from(m.lsb_first)),
+                (gl::UNPACK_SWAP_BYTES, i32::from(m.swap_bytes)),
+            ] {
+                // SAFETY: context current; no pointers. PixelStore executes immediately, even
+                // while a list is being compiled (§5.4).
+                unsafe { b.raw.PixelStorei(pname, v) };
+            }
+        };
+        set(self, &crate::pixels::TIGHT);
+        f(self);
+        set(self, &saved);
     }
 
     /// An error the backend raises itself for a call the driver does not see: when a list is

@@ -500,14 +500,25 @@ fn pixel_rectangles_take_the_fragment_operations() {
 
 #[test]
 fn display_lists_hold_pixels_unpacked_at_compile_time() {
+    // Run by the driver's own lists, and (under PHONG_WIN, whose emulation makes the backend
+    // replay every list call by call from its mirror) expanded by the backend.
+    for expanded in [false, true] {
+        lists_of_pixels(expanded);
+    }
+}
+
+fn lists_of_pixels(expanded: bool) {
     let img = image(16, 8);
     let bits: Vec<u8> = (0..64).map(|k: usize| (k * 77 + 5) as u8).collect();
     same(
-        "DrawPixels and Bitmap compiled under skips, run under other modes",
+        &format!("DrawPixels and Bitmap compiled under skips, run under other modes ({expanded})"),
         64,
         32,
         0,
         move |c| {
+            if expanded {
+                c.shade_model(gl::PHONG_WIN);
+            }
             c.pixel_storei(gl::UNPACK_SKIP_PIXELS, 2);
             c.pixel_storei(gl::UNPACK_ROW_LENGTH, 16);
             c.pixel_storei(gl::UNPACK_LSB_FIRST, 1);
