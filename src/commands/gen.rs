@@ -841,7 +841,290 @@ fn gen_table(all: &[XmlCommand], anns: &HashMap<&str, &Annotation>) -> String {
     s
 }
 
-/// The four generated files and their contents.
+/// The Rust FFI type of a C scalar type (GLboolean as the byte it is in C).
+fn ffi_scalar(ptype: &str) -> &'static str {
+    match ptype {
+        "GLboolean" => "u8",
+        "void" | "GLvoid" => "c_void",
+        other => rust_scalar(other),
+    }
+}
+
+/// The Rust FFI type of a C parameter or return type: `const GLfloat *` → `*const f32`,
+/// `const void *const*` → `*const *const c_void`, `void **` → `*mut *mut c_void`.
+fn ffi_type(c_type: &str) -> String {
+    let parts: Vec<&str> = c_type.split('*').collect();
+    let base_decl = parts[0];
+    let base_name = base_decl
+        .split_whitespace()
+        .rfind(|w| *w != "const")
+        .unwrap_or("void");
+    let mut out = ffi_scalar(base_name).to_string();
+    if parts.len() == 1 {
+        return out;
+    }
+    let mut constant = base_decl.split_whitespace().any(|w| w == "const");
+    for qualifier in &parts[1..] {
+        out = format!("*{} {out}", if constant { "const" } else { "mut" });
+        constant = qualifier.contains("const");
+    }
+    out
+}
+
+/// What a C function of this return type returns when it cannot do its work.
+fn ffi_default(ret: &str) -> Option<&'static str> {
+    let t = ffi_type(ret);
+    if t == "c_void" {
+        None
+    } else if t.starts_with("*const") {
+        Some("std::ptr::null()")
+    } else if t.starts_with("*mut") {
+        Some("std::ptr::null_mut()")
+    } else {
+        Some("0")
+    }
+}
+
+/// The `gl*` functions written by hand in capi/src (every `extern "C" fn gl...` outside
+/// generated.rs, and every `macro!(gl...` that defines one): the generator leaves those to them.
+fn manual_capi(root: &std::path::Path) -> std::collections::BTreeSet<String> {
+    let mut out = std::collections::BTreeSet::new();
+    let Ok(dir) = std::fs::read_dir(root.join("capi/src")) else {
+        return out;
+    };
+    let mut files: Vec<PathBuf> = dir.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    files.sort();
+    for path in files {
+        if path.file_name().is_some_and(|n| n == "generated.rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap_or_default();
+        // Functions, and those a macro defines (`getter!(glGetLightfv, ...)`).
+        let pieces = text.split("extern \"C\" fn ").skip(1);
+        for piece in pieces.chain(text.split("!(").skip(1)) {
+            let name: String = piece
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            let command = name.strip_prefix("gl").unwrap_or("");
+            if command.starts_with(|c: char| c.is_ascii_uppercase()) && !name.starts_with("glX") {
+                out.insert(name);
+            }
+        }
+    }
+    out
+}
+
+/// The extension names (`glActiveTextureARB`) gl.xml gives as aliases of the core commands.
+fn aliases() -> Vec<(String, String)> {
+    let text = std::str::from_utf8(khronos_api::GL_XML).expect("gl.xml is UTF-8");
+    let doc = roxmltree::Document::parse(text).expect("gl.xml parses");
+    let mut out = Vec::new();
+    for cmd in doc.descendants().filter(|n| n.has_tag_name("command")) {
+        let Some(alias) = cmd.children().find(|n| n.has_tag_name("alias")) else {
+            continue;
+        };
+        let name = cmd
+            .children()
+            .find(|n| n.has_tag_name("proto"))
+            .and_then(|p| p.children().find(|n| n.has_tag_name("name")))
+            .and_then(|n| n.text())
+            .unwrap_or_default();
+        if let Some(core) = alias.attribute("name") {
+            out.push((name.to_string(), core.to_string()));
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The expression converting C argument `f` into the `Call` field (`None`: a pointer argument
+/// the command's function in capi/src/args.rs converts).
+fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
+    let b = &f.bind;
+    let value = match f.shape {
+        Shape::Scalar("bool") => format!("{b} != 0"),
+        Shape::Scalar(_) => b.clone(),
+        Shape::Array("bool", n) => format!(
+            "match read::array::<u8, {n}>({b}) {{\n Some(a) => a.map(|x| x != 0),\n None => return gl.null_pointer(),\n }}"
+        ),
+        Shape::Array(t, n) => format!(
+            "match read::array::<{t}, {n}>({b}) {{\n Some(a) => a,\n None => return gl.null_pointer(),\n }}"
+        ),
+        Shape::Params(_) => format!(
+            "read::params({b}, counts::{}({}))",
+            c.ann.count.as_deref().expect("count"),
+            c.pname()
+        ),
+        Shape::Names => {
+            let n = ident(f.param.len.as_deref().expect("names have a length"));
+            format!("read::names({b}, {n})")
+        }
+        Shape::Pointer | Shape::Bytes | Shape::OptBytes => return None,
+    };
+    Some(if f.boxed {
+        format!("Box::new({value})")
+    } else {
+        value
+    })
+}
+
+/// capi/src/generated.rs: one `extern "C"` function per GL 1.0-1.5 command (and implemented
+/// later ones) not written by hand, the aliases, and the GetProcAddress table.
+fn gen_capi(
+    all: &[XmlCommand],
+    cmds: &[Implemented],
+    manual: &std::collections::BTreeSet<String>,
+) -> String {
+    let by_name: HashMap<&str, &Implemented> =
+        cmds.iter().map(|c| (c.xml.name.as_str(), c)).collect();
+    let mut s = String::from(HEADER);
+    s.push_str(
+        "// Every function takes C's arguments as they are: the names and count are gl.xml's.\n\
+         #![allow(clippy::too_many_arguments, unused_variables, clippy::missing_safety_doc)]\n\n\
+         use std::ffi::c_void;\n\n\
+         use fixedgl::{counts, Call};\n\n\
+         use crate::current::with_gl;\n\
+         use crate::manual::*;\n\
+         use crate::{args, read, unimplemented};\n\n",
+    );
+    let mut implemented: Vec<String> = manual.iter().cloned().collect();
+    for x in all {
+        let fname = format!("gl{}", x.name);
+        if manual.contains(&fname) {
+            continue;
+        }
+        let params: Vec<String> = x
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), ffi_type(&p.c_type)))
+            .collect();
+        let ret = match ffi_type(&x.ret).as_str() {
+            "c_void" => String::new(),
+            t => format!(" -> {t}"),
+        };
+        let _ = writeln!(s, "/// {}.", prototype_doc(x));
+        s.push_str("#[no_mangle]\n");
+        let _ = writeln!(
+            s,
+            "pub unsafe extern \"C\" fn {fname}({}){ret} {{",
+            params.join(", ")
+        );
+        let Some(c) = by_name.get(x.name.as_str()) else {
+            // Not implemented: present for programs linked with BIND_NOW, NULL from
+            // GetProcAddress, one line on stderr at the first call.
+            let _ = writeln!(s, "    unimplemented(\"{fname}\");");
+            if let Some(d) = ffi_default(&x.ret) {
+                let _ = writeln!(s, "    {d}");
+            }
+            s.push_str("}\n\n");
+            continue;
+        };
+        assert!(
+            c.ann.exec.is_none() && !c.ann.out,
+            "{fname}: write it by hand in capi/src (exec= or out)"
+        );
+        implemented.push(fname.clone());
+        let direct = !c.ann.pack
+            && c.ann.tuple.is_none()
+            && c.fields.len() == x.params.len()
+            && c.fields.iter().all(|f| matches!(f.shape, Shape::Scalar(_)));
+        let _ = writeln!(s, "    with_gl(\"{fname}\", |gl| {{");
+        let mut binds = Vec::new();
+        for f in &c.fields {
+            let value = capi_field(c, f).unwrap_or_else(|| {
+                let all_args: Vec<String> = x.params.iter().map(|p| ident(&p.name)).collect();
+                let v = format!("args::{}(gl, {})", c.ann.method, all_args.join(", "));
+                if f.boxed {
+                    format!("Box::new({v})")
+                } else {
+                    v
+                }
+            });
+            if value != f.bind {
+                let _ = writeln!(s, "        let {} = {value};", f.bind);
+            }
+            binds.push(f.bind.clone());
+        }
+        if direct {
+            let call = format!("gl.ctx.{}({})", c.ann.method, binds.join(", "));
+            match x.ret.as_str() {
+                "void" => {
+                    let _ = writeln!(s, "        {call};");
+                }
+                "GLboolean" => {
+                    let _ = writeln!(s, "        u8::from({call})");
+                }
+                _ => {
+                    let _ = writeln!(s, "        {call}");
+                }
+            }
+        } else {
+            assert_eq!(
+                x.ret, "void",
+                "{fname}: a value to return: write it by hand"
+            );
+            let name = &c.ann.name;
+            let value = if binds.is_empty() {
+                format!("Call::{name}")
+            } else if c.ann.pack {
+                format!("Call::{name}(Box::new([{}]))", binds.join(", "))
+            } else if c.ann.tuple.is_some() {
+                format!("Call::{name}(Box::new(({})))", binds.join(", "))
+            } else {
+                format!("Call::{name}({})", binds.join(", "))
+            };
+            let _ = writeln!(s, "        gl.ctx.execute(&{value});");
+        }
+        s.push_str("    })\n}\n\n");
+    }
+    // The extension names of implemented commands, exported as well (programs built against
+    // glext.h with prototypes call them by those names).
+    let known: std::collections::HashSet<String> = implemented.iter().cloned().collect();
+    let full: HashMap<String, &XmlCommand> =
+        all.iter().map(|x| (format!("gl{}", x.name), x)).collect();
+    let mut procs: Vec<(String, String)> =
+        implemented.iter().map(|n| (n.clone(), n.clone())).collect();
+    for (alias, core) in aliases() {
+        if !known.contains(&core) || known.contains(&alias) || full.contains_key(&alias) {
+            continue;
+        }
+        let x = full[&core];
+        let params: Vec<String> = x
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), ffi_type(&p.c_type)))
+            .collect();
+        let names: Vec<String> = x.params.iter().map(|p| ident(&p.name)).collect();
+        let ret = match ffi_type(&x.ret).as_str() {
+            "c_void" => String::new(),
+            t => format!(" -> {t}"),
+        };
+        let _ = writeln!(s, "/// `{alias}`: [`{core}`].\n#[no_mangle]");
+        let _ = writeln!(
+            s,
+            "pub unsafe extern \"C\" fn {alias}({}){ret} {{\n    {core}({})\n}}\n",
+            params.join(", "),
+            names.join(", ")
+        );
+        procs.push((alias, core));
+    }
+    procs.sort();
+    s.push_str(
+        "/// `GetProcAddress`: the entry point of an implemented command (or an alias of one);\n\
+         /// `None` for one fixedgl does not implement, so that a program can tell.\n\
+         pub fn proc_address(name: &[u8]) -> Option<*const c_void> {\n    \
+         let f: *const c_void = match name {\n",
+    );
+    for (name, target) in &procs {
+        let _ = writeln!(s, "        b\"{name}\" => {target} as *const c_void,");
+    }
+    s.push_str("        _ => return None,\n    };\n    Some(f)\n}\n");
+    s
+}
+
+/// The generated files and their contents.
 fn generate() -> Vec<(&'static str, String)> {
     let all = registry();
     let anns = annotations();
@@ -859,7 +1142,17 @@ fn generate() -> Vec<(&'static str, String)> {
         .collect();
     let ann_by_name: HashMap<&str, &Annotation> =
         anns.iter().map(|a| (a.name.as_str(), a)).collect();
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let manual = manual_capi(&root);
+    let exported: Vec<XmlCommand> = all
+        .iter()
+        .filter(|x| {
+            FULL_VERSIONS.contains(&x.version.as_str()) || ann_by_name.contains_key(x.name.as_str())
+        })
+        .cloned()
+        .collect();
     vec![
+        ("capi/src/generated.rs", gen_capi(&exported, &cmds, &manual)),
         ("src/call/generated.rs", gen_call(&cmds)),
         ("src/context/dispatch.rs", gen_dispatch(&cmds)),
         ("src/glbackend/generated.rs", gen_replay(&cmds)),

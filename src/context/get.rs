@@ -330,6 +330,13 @@ impl Context {
         write(self, value, out, conv);
     }
 
+    /// How many values `get_*v(pname)` writes; `None` for a pname it does not know (which it
+    /// answers with INVALID_ENUM). Not a GL entry point: what a C caller's buffer must hold,
+    /// for the C ABI, which gets a bare pointer. Raises no error.
+    pub fn get_count(&mut self, pname: u32) -> Option<usize> {
+        self.query(pname).map(|v| v.len)
+    }
+
     /// `glGetBooleanv`: a number converts to `false` exactly when it is zero (GL 2.1 §6.1.2).
     /// INVALID_ENUM for an unknown `pname`; INVALID_VALUE, nothing written, if `params` is
     /// shorter than the pname's value count.

@@ -117,6 +117,26 @@ impl Context {
         self.attrib = Default::default();
     }
 
+    /// Gives the framebuffer a new size (a window was resized). Its contents are undefined
+    /// afterwards (here: cleared to zero); the state, viewport and scissor included, is kept, as
+    /// GL keeps them when a drawable changes size. Sides as [`Context::new`]; on `Err` nothing
+    /// changes. Not a GL entry point: never recorded.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), Error> {
+        if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
+            return Err(Error::InvalidSize { width, height });
+        }
+        if (width, height) == self.size() {
+            return Ok(());
+        }
+        let renderer =
+            Renderer::try_new(width, height).ok_or(Error::OutOfMemory { width, height })?;
+        self.renderer.discard_batch();
+        self.renderer = renderer;
+        self.state.width = width;
+        self.state.height = height;
+        Ok(())
+    }
+
     /// The state, read-only: what the `get_*` queries report, as plain data.
     pub fn state(&self) -> &State {
         &self.state
@@ -125,6 +145,13 @@ impl Context {
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
         (self.state.width, self.state.height)
+    }
+
+    /// Raises `code` as a command would: it becomes the sticky error unless an earlier one is
+    /// still unread. Not a GL entry point: for layers that embed a context and meet an error
+    /// of their own (the C ABI raises OUT_OF_MEMORY when a command could not complete).
+    pub fn raise_error(&mut self, code: u32) {
+        self.error(code);
     }
 
     /// Records `code` unless an earlier error is still unread: the first error sticks until

@@ -25,6 +25,8 @@ fn ptr(p: &Pointer) -> *const c_void {
     match p {
         Pointer::Data(d) => d.as_ptr().cast(),
         Pointer::Offset(o) => *o as *const c_void,
+        // Never recorded (a recording holds the bytes a draw read), so never replayed.
+        Pointer::Client(_) => std::ptr::null(),
     }
 }
 
@@ -88,7 +90,7 @@ impl GlBackend {
             }
             Call::DrawArrays(mode, first, count) => {
                 // With no array enabled there is nothing to read and nothing to draw.
-                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources().is_empty() {
+                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: the shadow checked first + count against every enabled array.
                     unsafe { self.raw.DrawArrays(mode, first, count) };
@@ -97,7 +99,7 @@ impl GlBackend {
             }
             Call::DrawElements(mode, count, ty, ref p) => {
                 if a.check_draw_elements(mode, count, ty, p, None)?.is_some()
-                    && !a.sources().is_empty()
+                    && !a.sources(0).is_empty()
                 {
                     self.before_begin();
                     // SAFETY: `p` holds `count` indices of `ty` (or is an offset into the bound
@@ -136,7 +138,7 @@ impl GlBackend {
                 a.buffer_data(target, size, p, usage)?;
                 let data = match **p {
                     Pointer::Data(_) => ptr(p),
-                    Pointer::Offset(_) => std::ptr::null(),
+                    Pointer::Offset(_) | Pointer::Client(_) => std::ptr::null(),
                 };
                 // SAFETY: `data` is null or holds `size` bytes, as the shadow checked.
                 unsafe { gl.BufferData(target, size, data, usage) };
