@@ -23,12 +23,18 @@ use fixedgl::{Call, Error};
 
 use crate::CliError;
 
-/// The names the dynamic loader looks for, all pointing at the one library.
-const DROP_IN_NAMES: [&str; 4] = [
+/// The names the dynamic loader looks for, all pointing at the one library: the sonames
+/// programs are linked against, and the unversioned names that loaders opening libraries by hand
+/// try first (PyOpenGL opens `libOSMesa.so` before `libOSMesa.so.8`).
+const DROP_IN_NAMES: [&str; 8] = [
     "libGL.so.1",
     "libEGL.so.1",
     "libOpenGL.so.0",
     "libOSMesa.so.8",
+    "libGL.so",
+    "libEGL.so",
+    "libOpenGL.so",
+    "libOSMesa.so",
 ];
 const LIBRARY: &str = "libfixedgl_capi.so";
 /// A frame passes when at most this share of its pixels differ by more than 2/255 (the
