@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{ArgKind, TexImage2DArgs, TexSubImage2DArgs};
+use super::{ArgKind, MapWrites, TexImage2DArgs, TexSubImage2DArgs};
 use crate::arrays::Pointer;
 
 /// One GL call with its arguments: one variant per command of the table.
@@ -613,6 +613,15 @@ pub enum Call {
     MultiTexCoord4d(u32, f64, f64, f64, f64),
     /// `glMultiTexCoord4dv(target, v)`.
     MultiTexCoord4dv(u32, [f64; 4]),
+
+    // Buffer mapping (GL 1.5, GL 2.1 §2.9): context/arrays.rs. `written`: the variant also carries
+    // the bytes the program wrote through the mapping (`MapWrites`), recorded at UnmapBuffer.
+    /// `glMapBuffer(target, access)`.
+    MapBuffer(u32, u32),
+    /// `glUnmapBuffer(target)`.
+    ///
+    /// `UnmapBuffer(target, written)`: the bytes written through the mapping (see `MapWrites`), so a replay writes them into its own mapping before unmapping.
+    UnmapBuffer(u32, Box<MapWrites>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -899,6 +908,8 @@ pub const NAMES: &[&str] = &[
     "MultiTexCoord4fv",
     "MultiTexCoord4d",
     "MultiTexCoord4dv",
+    "MapBuffer",
+    "UnmapBuffer",
 ];
 
 impl Call {
@@ -1187,6 +1198,8 @@ impl Call {
             Call::MultiTexCoord4fv(..) => "MultiTexCoord4fv",
             Call::MultiTexCoord4d(..) => "MultiTexCoord4d",
             Call::MultiTexCoord4dv(..) => "MultiTexCoord4dv",
+            Call::MapBuffer(..) => "MapBuffer",
+            Call::UnmapBuffer(..) => "UnmapBuffer",
         }
     }
 
@@ -1393,6 +1406,8 @@ impl Call {
                 | Call::BufferSubData(..)
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
+                | Call::MapBuffer(..)
+                | Call::UnmapBuffer(..)
         )
     }
 
@@ -1683,6 +1698,8 @@ impl Call {
             Call::MultiTexCoord4fv(..) => &[Enum],
             Call::MultiTexCoord4d(..) => &[Enum],
             Call::MultiTexCoord4dv(..) => &[Enum],
+            Call::MapBuffer(..) => &[Enum, Enum],
+            Call::UnmapBuffer(..) => &[Enum],
         }
     }
 }

@@ -368,6 +368,10 @@ impl Context {
             Call::MultiTexCoord4fv(target, ref v) => self.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => self.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => self.multi_tex_coord4dv(target, v),
+            Call::MapBuffer(target, access) => {
+                self.map_buffer(target, access);
+            }
+            Call::UnmapBuffer(target, ref written) => self.replay_unmap_buffer(target, written),
         }
     }
 }

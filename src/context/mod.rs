@@ -71,6 +71,9 @@ pub struct Context {
     pub(crate) renderer: Renderer,
     pub(crate) lists: lists::DisplayLists,
     pub(crate) attrib: attrib::AttribStacks,
+    /// For each buffer mapped while recording: its store at MapBuffer, so that UnmapBuffer can
+    /// record the bytes written through the mapping (context/arrays.rs).
+    pub(crate) map_snapshots: std::collections::BTreeMap<u32, Vec<u8>>,
 }
 
 impl Context {
@@ -97,6 +100,7 @@ impl Context {
             renderer,
             lists: Default::default(),
             attrib: Default::default(),
+            map_snapshots: Default::default(),
         })
     }
 
@@ -115,6 +119,7 @@ impl Context {
         self.lists = Default::default();
         self.sync_capturing();
         self.attrib = Default::default();
+        self.map_snapshots = Default::default();
     }
 
     /// The state, read-only: what the `get_*` queries report, as plain data.
@@ -355,8 +360,11 @@ impl State {
     }
 }
 
-// Vertex arrays and buffer objects (context/arrays.rs)
+// Vertex arrays and buffer objects (context/arrays.rs); the GL backend writes a recorded
+// UnmapBuffer's bytes as the front end does.
 mod arrays;
+#[cfg(feature = "gl")]
+pub(crate) use arrays::write_into;
 
 // glReadPixels and to_image (context/readback.rs)
 mod readback;

@@ -142,6 +142,34 @@ impl GlBackend {
                 unsafe { gl.BufferData(target, size, data, usage) };
                 return Ok(());
             }
+            Call::MapBuffer(target, access) => {
+                a.map_buffer(target, access)?;
+                // SAFETY: no pointer is passed; the returned one is not kept (UnmapBuffer asks
+                // the driver for it again).
+                unsafe { gl.MapBuffer(target, access) };
+                return Ok(());
+            }
+            Call::UnmapBuffer(target, ref written) => {
+                let size = a.mapped_mut(target).map_or(0, |store| {
+                    crate::context::write_into(store, written);
+                    store.len()
+                });
+                a.unmap_buffer(target)?;
+                let mut mapped: *mut c_void = std::ptr::null_mut();
+                // SAFETY: BUFFER_MAP_POINTER writes one pointer.
+                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, &mut mapped) };
+                if !mapped.is_null() {
+                    // SAFETY: the driver maps the whole store of the buffer bound to `target`,
+                    // whose size the shadow holds (`size`: the same BufferData made both), and
+                    // `driver` is that mapping; no other reference to it exists.
+                    let driver =
+                        unsafe { std::slice::from_raw_parts_mut(mapped.cast::<u8>(), size) };
+                    crate::context::write_into(driver, written);
+                }
+                // SAFETY: no pointers.
+                unsafe { gl.UnmapBuffer(target) };
+                return Ok(());
+            }
             Call::BufferSubData(target, offset, size, ref p) => {
                 a.buffer_sub_data(target, offset, size, p)?;
                 // SAFETY: `p` holds `size` bytes, and offset + size fits the bound buffer, as

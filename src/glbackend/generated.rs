@@ -405,6 +405,8 @@ impl GlBackend {
             Call::MultiTexCoord4fv(target, ref v) => gl.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => gl.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => gl.multi_tex_coord4dv(target, v),
+            Call::MapBuffer(..) => self.arrays_call(call),
+            Call::UnmapBuffer(..) => self.arrays_call(call),
         }
     }
 }

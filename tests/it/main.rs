@@ -9,6 +9,7 @@ mod common;
 
 mod arrays;
 mod attrib;
+mod buffer_map;
 mod error_agreement;
 mod errors;
 mod fragment_gl;
