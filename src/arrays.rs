@@ -756,6 +756,85 @@ impl ArrayState {
         Ok(Some(idx))
     }
 
+    /// MultiDrawArrays' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode, INVALID_VALUE for a negative count; then each draw as DrawArrays checks it,
+    /// except that a negative `first` is no error of its own (Mesa raises none): with an array
+    /// enabled it reads before the data, INVALID_OPERATION as any read outside it. The ranges
+    /// to draw, one per draw with a positive count; nothing is drawn unless all pass.
+    pub fn check_multi_draw_arrays(
+        &self,
+        mode: u32,
+        first: &[i32],
+        count: &[i32],
+        drawcount: i32,
+    ) -> GlResult<Vec<std::ops::RangeInclusive<usize>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(first), Some(count)) = (first.get(..n), count.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode) {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let enabled = !self.sources().is_empty();
+        let mut ranges = Vec::new();
+        for (&f, &c) in first.iter().zip(count) {
+            if c == 0 {
+                continue;
+            }
+            if f < 0 {
+                if enabled {
+                    return Err(gl::INVALID_OPERATION);
+                }
+                continue;
+            }
+            if let Some(r) = self.check_draw_arrays(mode, f, c)? {
+                ranges.push(r);
+            }
+        }
+        Ok(ranges)
+    }
+
+    /// MultiDrawElements' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode or type, INVALID_VALUE for a negative count; then each draw as DrawElements
+    /// checks it. The indices of each draw with a positive count; nothing is drawn unless all
+    /// pass.
+    pub fn check_multi_draw_elements(
+        &self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) -> GlResult<Vec<Vec<u32>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(count), Some(indices)) = (count.get(..n), indices.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode)
+            || !matches!(
+                ty,
+                gl::UNSIGNED_BYTE | gl::UNSIGNED_SHORT | gl::UNSIGNED_INT
+            )
+        {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let mut draws = Vec::new();
+        for (&c, p) in count.iter().zip(indices) {
+            if let Some(idx) = self.check_draw_elements(mode, c, ty, p, None)? {
+                draws.push(idx);
+            }
+        }
+        Ok(draws)
+    }
+
     /// ArrayElement's check: INVALID_VALUE for a negative index, INVALID_OPERATION when an
     /// enabled array lacks the element.
     pub fn check_array_element(&self, i: i32) -> GlResult<usize> {

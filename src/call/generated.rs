@@ -3,7 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{ArgKind, MapWrites, TexImage2DArgs, TexSubImage2DArgs};
+use super::{
+    ArgKind, MapWrites, MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs,
+    TexSubImage2DArgs,
+};
 use crate::arrays::Pointer;
 
 /// One GL call with its arguments: one variant per command of the table.
@@ -622,6 +625,16 @@ pub enum Call {
     ///
     /// `UnmapBuffer(target, written)`: the bytes written through the mapping (see `MapWrites`), so a replay writes them into its own mapping before unmapping.
     UnmapBuffer(u32, Box<MapWrites>),
+
+    // Multiple draws (GL 1.4, GL 2.1 §2.8): context/arrays.rs
+    /// `glMultiDrawArrays(mode, first, count, drawcount)`.
+    ///
+    /// mode, first, count, drawcount (boxed: two vectors would grow every call).
+    MultiDrawArrays(Box<MultiDrawArraysArgs>),
+    /// `glMultiDrawElements(mode, count, type, indices, drawcount)`.
+    ///
+    /// mode, count, type, indices, drawcount.
+    MultiDrawElements(Box<MultiDrawElementsArgs>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -910,6 +923,8 @@ pub const NAMES: &[&str] = &[
     "MultiTexCoord4dv",
     "MapBuffer",
     "UnmapBuffer",
+    "MultiDrawArrays",
+    "MultiDrawElements",
 ];
 
 impl Call {
@@ -1200,6 +1215,8 @@ impl Call {
             Call::MultiTexCoord4dv(..) => "MultiTexCoord4dv",
             Call::MapBuffer(..) => "MapBuffer",
             Call::UnmapBuffer(..) => "UnmapBuffer",
+            Call::MultiDrawArrays(..) => "MultiDrawArrays",
+            Call::MultiDrawElements(..) => "MultiDrawElements",
         }
     }
 
@@ -1700,6 +1717,8 @@ impl Call {
             Call::MultiTexCoord4dv(..) => &[Enum],
             Call::MapBuffer(..) => &[Enum, Enum],
             Call::UnmapBuffer(..) => &[Enum],
+            Call::MultiDrawArrays(..) => &[],
+            Call::MultiDrawElements(..) => &[],
         }
     }
 }

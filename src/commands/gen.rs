@@ -282,6 +282,10 @@ enum Shape {
     Names,
     /// The bytes written through a buffer mapping (`written`): not a C parameter.
     Written,
+    /// An integer array whose length another parameter gives (MultiDrawArrays' first, count).
+    Ints,
+    /// An array of index pointers (MultiDrawElements' indices).
+    Pointers,
 }
 
 /// One field of a `Call` variant.
@@ -305,6 +309,8 @@ impl Field {
             Shape::OptBytes => "Option<Vec<u8>>".to_string(),
             Shape::Names => "Vec<u32>".to_string(),
             Shape::Written => "MapWrites".to_string(),
+            Shape::Ints => "Vec<i32>".to_string(),
+            Shape::Pointers => "Vec<Pointer>".to_string(),
         };
         if self.boxed {
             format!("Box<{inner}>")
@@ -400,6 +406,10 @@ impl Implemented {
                 Shape::Params(rust_scalar(&p.ptype))
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {
                 Shape::Names
+            } else if matches!(p.ptype.as_str(), "GLint" | "GLsizei") && p.len.is_some() {
+                Shape::Ints
+            } else if p.ptype == "void" && p.c_type.contains("*const*") {
+                Shape::Pointers
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")
             {
                 Shape::Pointer
@@ -519,7 +529,7 @@ fn gen_call(cmds: &[Implemented]) -> String {
     let mut s = String::from(HEADER);
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
-         TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
+         MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
     s.push_str("#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]\npub enum Call {\n");

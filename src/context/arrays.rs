@@ -181,6 +181,75 @@ impl Context {
         self.draw_indexed(mode, count, ty, &p, Some((start, end)));
     }
 
+    /// `glMultiDrawArrays` (GL 1.4, GL 2.1 §2.8): DrawArrays(mode, first[i], count[i]) for each
+    /// of the first `drawcount` entries. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION between Begin and End or when a draw would read outside an enabled
+    /// array (a negative `first` with an array enabled, too: Mesa raises nothing there and reads
+    /// before the array) or from a mapped buffer. Every draw is checked before any is drawn.
+    pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32], drawcount: i32) {
+        record!(
+            self,
+            Call::MultiDrawArrays(Box::new((mode, first.to_vec(), count.to_vec(), drawcount)))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_arrays(mode, first, count, drawcount)
+        {
+            Ok(ranges) => {
+                for r in ranges {
+                    self.draw(Some(mode), r);
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glMultiDrawElements` (GL 1.4, GL 2.1 §2.8): DrawElements(mode, count[i], type,
+    /// indices[i]) for each of the first `drawcount` entries; each pointer is client data or an
+    /// offset into the ELEMENT_ARRAY_BUFFER. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode or type, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION as DrawElements raises it for any of the draws. Every draw is checked
+    /// before any is drawn.
+    pub fn multi_draw_elements(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) {
+        record!(
+            self,
+            Call::MultiDrawElements(Box::new((
+                mode,
+                count.to_vec(),
+                ty,
+                indices.to_vec(),
+                drawcount
+            )))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_elements(mode, count, ty, indices, drawcount)
+        {
+            Ok(draws) => {
+                for idx in draws {
+                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize));
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
     fn draw_indexed(&mut self, mode: u32, count: i32, ty: u32, p: &Pointer, r: Option<(u32, u32)>) {
         if !self.outside_begin_end() {
             return;
@@ -231,6 +300,53 @@ impl Context {
     /// `Err(OUT_OF_MEMORY)` instead of an abort.
     pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
         let arrays = &self.state.arrays;
+        // A multiple draw compiles into its draws, one after the other (Mesa: DrawArrays and
+        // DrawElements each), when it is valid as a whole now.
+        let parts: Option<Vec<Call>> = match call {
+            Call::MultiDrawArrays(args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                match arrays.check_multi_draw_arrays(mode, first, count, drawcount) {
+                    Ok(ranges) => Some(
+                        ranges
+                            .into_iter()
+                            .map(|r| {
+                                let n = r.end() - r.start() + 1;
+                                Call::DrawArrays(mode, *r.start() as i32, n as i32)
+                            })
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            Call::MultiDrawElements(args) => {
+                let (mode, ref count, ty, ref indices, drawcount) = **args;
+                match arrays.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                    Ok(_) => Some(
+                        count
+                            .iter()
+                            .zip(indices)
+                            .take(drawcount.max(0) as usize)
+                            .filter(|(&c, _)| c > 0)
+                            .map(|(&c, p)| Call::DrawElements(mode, c, ty, p.clone()))
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            _ => None,
+        };
+        if let Some(parts) = parts {
+            let mut calls = Vec::new();
+            for part in &parts {
+                if let Some(mut c) = self.compile_draw(part)? {
+                    calls.try_reserve(c.len()).map_err(|_| gl::OUT_OF_MEMORY)?;
+                    calls.append(&mut c);
+                }
+            }
+            return Ok(Some(calls));
+        }
         // Checked first, as the draw itself would be: an erroneous draw compiles as it is.
         let (mode, indices) = match call {
             Call::ArrayElement(i) => match arrays.check_array_element(*i) {

@@ -372,6 +372,14 @@ impl Context {
                 self.map_buffer(target, access);
             }
             Call::UnmapBuffer(target, ref written) => self.replay_unmap_buffer(target, written),
+            Call::MultiDrawArrays(ref args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                self.multi_draw_arrays(mode, first, count, drawcount)
+            }
+            Call::MultiDrawElements(ref args) => {
+                let (mode, ref count, type_, ref indices, drawcount) = **args;
+                self.multi_draw_elements(mode, count, type_, indices, drawcount)
+            }
         }
     }
 }

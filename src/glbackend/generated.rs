@@ -407,6 +407,8 @@ impl GlBackend {
             Call::MultiTexCoord4dv(target, ref v) => gl.multi_tex_coord4dv(target, v),
             Call::MapBuffer(..) => self.arrays_call(call),
             Call::UnmapBuffer(..) => self.arrays_call(call),
+            Call::MultiDrawArrays(..) => self.arrays_call(call),
+            Call::MultiDrawElements(..) => self.arrays_call(call),
         }
     }
 }

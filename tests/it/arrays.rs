@@ -743,7 +743,7 @@ mod random_on_gl {
     use proptest::prelude::*;
 
     /// The array and buffer commands, whose errors the test compares.
-    const ARRAY_CALLS: [&str; 21] = [
+    const ARRAY_CALLS: [&str; 23] = [
         "EnableClientState",
         "DisableClientState",
         "VertexPointer",
@@ -765,6 +765,8 @@ mod random_on_gl {
         "BufferSubData",
         "MapBuffer",
         "UnmapBuffer",
+        "MultiDrawArrays",
+        "MultiDrawElements",
     ];
 
     fn any_array_call() -> impl Strategy<Value = Call> {

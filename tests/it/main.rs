@@ -20,6 +20,7 @@ mod glut;
 mod implementation_choices;
 mod lists;
 mod matrices;
+mod multi_draw;
 mod pixel_store;
 mod pixel_store_gl;
 mod query_errors;
