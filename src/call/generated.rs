@@ -635,6 +635,18 @@ pub enum Call {
     ///
     /// mode, count, type, indices, drawcount.
     MultiDrawElements(Box<MultiDrawElementsArgs>),
+
+    // Occlusion queries (GL 1.5, GL 2.1 §4.1.7): context/query.rs
+    /// `glGenQueries(n, ids)`.
+    ///
+    /// `GenQueries(n, names)`: the names the call returned (empty when it failed), as GenBuffers.
+    GenQueries(i32, Vec<u32>),
+    /// `glDeleteQueries(n, ids)`.
+    DeleteQueries(i32, Vec<u32>),
+    /// `glBeginQuery(target, id)`.
+    BeginQuery(u32, u32),
+    /// `glEndQuery(target)`.
+    EndQuery(u32),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -925,6 +937,10 @@ pub const NAMES: &[&str] = &[
     "UnmapBuffer",
     "MultiDrawArrays",
     "MultiDrawElements",
+    "GenQueries",
+    "DeleteQueries",
+    "BeginQuery",
+    "EndQuery",
 ];
 
 impl Call {
@@ -1217,6 +1233,10 @@ impl Call {
             Call::UnmapBuffer(..) => "UnmapBuffer",
             Call::MultiDrawArrays(..) => "MultiDrawArrays",
             Call::MultiDrawElements(..) => "MultiDrawElements",
+            Call::GenQueries(..) => "GenQueries",
+            Call::DeleteQueries(..) => "DeleteQueries",
+            Call::BeginQuery(..) => "BeginQuery",
+            Call::EndQuery(..) => "EndQuery",
         }
     }
 
@@ -1425,6 +1445,8 @@ impl Call {
                 | Call::DeleteTextures(..)
                 | Call::MapBuffer(..)
                 | Call::UnmapBuffer(..)
+                | Call::GenQueries(..)
+                | Call::DeleteQueries(..)
         )
     }
 
@@ -1719,6 +1741,10 @@ impl Call {
             Call::UnmapBuffer(..) => &[Enum],
             Call::MultiDrawArrays(..) => &[],
             Call::MultiDrawElements(..) => &[],
+            Call::GenQueries(..) => &[],
+            Call::DeleteQueries(..) => &[],
+            Call::BeginQuery(..) => &[Enum],
+            Call::EndQuery(..) => &[Enum],
         }
     }
 }

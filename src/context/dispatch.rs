@@ -380,6 +380,10 @@ impl Context {
                 let (mode, ref count, type_, ref indices, drawcount) = **args;
                 self.multi_draw_elements(mode, count, type_, indices, drawcount)
             }
+            Call::GenQueries(n, ref ids) => self.replay_gen_queries(n, ids),
+            Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
+            Call::BeginQuery(target, id) => self.begin_query(target, id),
+            Call::EndQuery(target) => self.end_query(target),
         }
     }
 }

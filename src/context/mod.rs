@@ -74,6 +74,8 @@ pub struct Context {
     /// For each buffer mapped while recording: its store at MapBuffer, so that UnmapBuffer can
     /// record the bytes written through the mapping (context/arrays.rs).
     pub(crate) map_snapshots: std::collections::BTreeMap<u32, Vec<u8>>,
+    /// Query objects and the active query (context/query.rs).
+    pub(crate) queries: query::Queries,
 }
 
 impl Context {
@@ -101,6 +103,7 @@ impl Context {
             lists: Default::default(),
             attrib: Default::default(),
             map_snapshots: Default::default(),
+            queries: Default::default(),
         })
     }
 
@@ -120,6 +123,9 @@ impl Context {
         self.sync_capturing();
         self.attrib = Default::default();
         self.map_snapshots = Default::default();
+        if std::mem::take(&mut self.queries).active.is_some() {
+            self.renderer.stop_counting_samples(&self.state);
+        }
     }
 
     /// The state, read-only: what the `get_*` queries report, as plain data.
@@ -368,6 +374,10 @@ pub(crate) use arrays::write_into;
 
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
+
+// Occlusion queries (context/query.rs)
+mod query;
+pub use query::QUERY_COUNTER_BITS;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;

@@ -23,6 +23,7 @@ mod matrices;
 mod multi_draw;
 mod pixel_store;
 mod pixel_store_gl;
+mod query;
 mod query_errors;
 mod recording;
 mod report;
