@@ -267,12 +267,24 @@ impl ClientArray {
 
 /// A buffer object (GL 2.1 table 6.9 of §2.9: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS,
 /// BUFFER_MAPPED) and its data store.
+///
+/// While the object is mapped (`mapped`), its store is never reallocated: BufferSubData is
+/// refused, and the only commands that replace or free the store (BufferData, DeleteBuffers)
+/// unmap it first, as GL 2.1 §2.9 says. So the address of `data` stays valid from MapBuffer
+/// until the object is unmapped by UnmapBuffer, BufferData or DeleteBuffers (or the context is
+/// reset or dropped), which is what a C caller holding MapBuffer's pointer relies on.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BufferObject {
     /// The data store (its length is BUFFER_SIZE).
     pub data: Vec<u8>,
     /// `BUFFER_USAGE`.
     pub usage: u32,
+    /// `BUFFER_ACCESS`: the access of the mapping; READ_WRITE when not mapped, as llvmpipe
+    /// reports it after UnmapBuffer (GL 2.1 table 2.7 sets it at MapBuffer and says nothing of
+    /// UnmapBuffer; Mesa derives it from the mapping's flags, which UnmapBuffer clears).
+    pub access: u32,
+    /// `BUFFER_MAPPED`.
+    pub mapped: bool,
 }
 
 impl Default for BufferObject {
@@ -281,6 +293,8 @@ impl Default for BufferObject {
         Self {
             data: Vec::new(),
             usage: gl::STATIC_DRAW,
+            access: gl::READ_WRITE,
+            mapped: false,
         }
     }
 }
@@ -801,7 +815,7 @@ impl ArrayState {
 
     /// DrawArrays' checks after the Begin/End phase (GL 2.1 §2.8): INVALID_ENUM for a mode,
     /// INVALID_VALUE for a negative `first` or `count`, INVALID_OPERATION when an enabled array
-    /// lacks an element. The index range to draw; `None` when there is nothing to draw.
+    /// lives in a mapped buffer (§2.9) or lacks an element. The index range to draw; `None` when there is nothing to draw.
     pub fn check_draw_arrays(
         &self,
         mode: u32,
@@ -817,6 +831,7 @@ impl ArrayState {
         if count == 0 {
             return Ok(None);
         }
+        self.check_unmapped(None)?;
         let last = first.checked_add(count - 1).ok_or(gl::INVALID_OPERATION)?;
         self.check_reads(last)?;
         Ok(Some(first..=last))
@@ -850,16 +865,97 @@ impl ArrayState {
         if count == 0 {
             return Ok(None);
         }
+        self.check_unmapped(Some(indices))?;
         let idx = self.indices(count, ty, indices)?;
         let max = idx.iter().copied().max().unwrap_or(0) as usize;
         self.check_reads(max)?;
         Ok(Some(idx))
     }
 
+    /// MultiDrawArrays' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode, INVALID_VALUE for a negative count; then each draw as DrawArrays checks it,
+    /// except that a negative `first` is no error of its own (Mesa raises none): with an array
+    /// enabled it reads before the data, INVALID_OPERATION as any read outside it. The ranges
+    /// to draw, one per draw with a positive count; nothing is drawn unless all pass.
+    pub fn check_multi_draw_arrays(
+        &self,
+        mode: u32,
+        first: &[i32],
+        count: &[i32],
+        drawcount: i32,
+    ) -> GlResult<Vec<std::ops::RangeInclusive<usize>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(first), Some(count)) = (first.get(..n), count.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode) {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let enabled = !self.sources().is_empty();
+        let mut ranges = Vec::new();
+        for (&f, &c) in first.iter().zip(count) {
+            if c == 0 {
+                continue;
+            }
+            if f < 0 {
+                if enabled {
+                    return Err(gl::INVALID_OPERATION);
+                }
+                continue;
+            }
+            if let Some(r) = self.check_draw_arrays(mode, f, c)? {
+                ranges.push(r);
+            }
+        }
+        Ok(ranges)
+    }
+
+    /// MultiDrawElements' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode or type, INVALID_VALUE for a negative count; then each draw as DrawElements
+    /// checks it. The indices of each draw with a positive count; nothing is drawn unless all
+    /// pass.
+    pub fn check_multi_draw_elements(
+        &self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) -> GlResult<Vec<Vec<u32>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(count), Some(indices)) = (count.get(..n), indices.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode)
+            || !matches!(
+                ty,
+                gl::UNSIGNED_BYTE | gl::UNSIGNED_SHORT | gl::UNSIGNED_INT
+            )
+        {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let mut draws = Vec::new();
+        for (&c, p) in count.iter().zip(indices) {
+            if let Some(idx) = self.check_draw_elements(mode, c, ty, p, None)? {
+                draws.push(idx);
+            }
+        }
+        Ok(draws)
+    }
+
     /// ArrayElement's check: INVALID_VALUE for a negative index, INVALID_OPERATION when an
     /// enabled array lacks the element.
     pub fn check_array_element(&self, i: i32) -> GlResult<usize> {
         let i = usize::try_from(i).map_err(|_| gl::INVALID_VALUE)?;
+        self.check_unmapped(None)?;
         self.check_reads(i)?;
         Ok(i)
     }
@@ -1023,13 +1119,17 @@ impl ArrayState {
             None => store.resize(size, 0),
         }
         let b = self.bound(target)?;
-        b.data = store;
-        b.usage = usage;
+        // A mapped store is unmapped first, not an error (GL 2.1 §2.9, and Mesa).
+        *b = BufferObject {
+            data: store,
+            usage,
+            ..BufferObject::default()
+        };
         Ok(())
     }
 
     /// The byte range `offset..offset+size` of the buffer bound to `target`: errors of
-    /// BufferSubData / GetBufferSubData (GL 2.1 §2.9).
+    /// BufferSubData / GetBufferSubData (GL 2.1 §2.9), INVALID_OPERATION while it is mapped.
     fn range(
         &mut self,
         target: u32,
@@ -1046,6 +1146,11 @@ impl ArrayState {
         let end = o.checked_add(s).ok_or(gl::INVALID_VALUE)?;
         if end > b.data.len() {
             return Err(gl::INVALID_VALUE);
+        }
+        // The store of a mapped buffer belongs to the mapping (GL 2.1 §2.9); checked after the
+        // range, as Mesa does.
+        if b.mapped {
+            return Err(gl::INVALID_OPERATION);
         }
         Ok((b, o..end))
     }
@@ -1081,8 +1186,7 @@ impl ArrayState {
         Ok(())
     }
 
-    /// `GetBufferParameteriv`'s value: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS (always
-    /// READ_WRITE: MapBuffer is not provided), BUFFER_MAPPED (always false).
+    /// `GetBufferParameteriv`'s value: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS, BUFFER_MAPPED.
     pub fn buffer_parameter(&mut self, target: u32, pname: u32) -> GlResult<i32> {
         if !valid_target(target) {
             return Err(gl::INVALID_ENUM);
@@ -1097,9 +1201,101 @@ impl ArrayState {
         Ok(match pname {
             gl::BUFFER_SIZE => i32::try_from(b.data.len()).unwrap_or(i32::MAX),
             gl::BUFFER_USAGE => b.usage as i32,
-            gl::BUFFER_ACCESS => gl::READ_WRITE as i32,
-            _ => 0,
+            gl::BUFFER_ACCESS => b.access as i32,
+            _ => i32::from(b.mapped),
         })
+    }
+
+    /// `MapBuffer`'s checks and state change (GL 2.1 §2.9): INVALID_ENUM for an access (checked
+    /// first, as Mesa does) or a target; INVALID_OPERATION with no buffer bound, for a buffer
+    /// already mapped and, as llvmpipe, for an empty one. Returns the name of the buffer now
+    /// mapped.
+    pub fn map_buffer(&mut self, target: u32, access: u32) -> GlResult<u32> {
+        if !matches!(access, gl::READ_ONLY | gl::WRITE_ONLY | gl::READ_WRITE) {
+            return Err(gl::INVALID_ENUM);
+        }
+        let name = self.binding(target)?;
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        if b.mapped || b.data.is_empty() {
+            return Err(gl::INVALID_OPERATION);
+        }
+        b.mapped = true;
+        b.access = access;
+        Ok(name)
+    }
+
+    /// `UnmapBuffer` (GL 2.1 §2.9): INVALID_ENUM for a target, INVALID_OPERATION with no buffer
+    /// bound or one not mapped. Returns the name of the buffer unmapped.
+    pub fn unmap_buffer(&mut self, target: u32) -> GlResult<u32> {
+        let name = self.binding(target)?;
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        if !b.mapped {
+            return Err(gl::INVALID_OPERATION);
+        }
+        b.mapped = false;
+        b.access = gl::READ_WRITE;
+        Ok(name)
+    }
+
+    /// The store of the buffer bound to `target`, if it is mapped: what the mapping reads and
+    /// writes (see [`BufferObject`] on why its address is stable while mapped).
+    pub fn mapped_mut(&mut self, target: u32) -> Option<&mut [u8]> {
+        let name = self.binding(target).ok()?;
+        let b = self.buffers.get_mut(&name)?;
+        b.mapped.then_some(&mut b.data[..])
+    }
+
+    /// `GetBufferPointerv`'s checks (GL 2.1 §6.1.13): INVALID_ENUM for a target or a pname other
+    /// than BUFFER_MAP_POINTER, INVALID_OPERATION with no buffer bound. The mapped store, or
+    /// `None` when the buffer is not mapped (GL's NULL).
+    pub fn buffer_pointer(&mut self, target: u32, pname: u32) -> GlResult<Option<&mut [u8]>> {
+        let name = self.binding(target)?;
+        if pname != gl::BUFFER_MAP_POINTER {
+            return Err(gl::INVALID_ENUM);
+        }
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        Ok(b.mapped.then_some(&mut b.data[..]))
+    }
+
+    /// The name bound to `target` (0 for none): INVALID_ENUM for a target.
+    fn binding(&self, target: u32) -> GlResult<u32> {
+        match target {
+            gl::ARRAY_BUFFER => Ok(self.array_buffer),
+            gl::ELEMENT_ARRAY_BUFFER => Ok(self.element_array_buffer),
+            _ => Err(gl::INVALID_ENUM),
+        }
+    }
+
+    /// Whether buffer `name` exists and is mapped.
+    pub fn is_mapped(&self, name: u32) -> bool {
+        self.buffers.get(&name).is_some_and(|b| b.mapped)
+    }
+
+    /// GL 2.1 §2.9: a command that dereferences a mapped buffer's store is INVALID_OPERATION.
+    /// For a draw: an enabled array whose data lies in a mapped buffer, or (`indices`) index data
+    /// in a mapped ELEMENT_ARRAY_BUFFER. Mesa's llvmpipe lets such draws read the store
+    /// (`AllowMappedBuffersDuringExecution`); fixedgl gives the spec's error, and its GL backend
+    /// raises it before the driver sees the draw.
+    fn check_unmapped(&self, indices: Option<&Pointer>) -> GlResult<()> {
+        let arrays = [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.secondary_color,
+            &self.fog_coord,
+            &self.edge_flag,
+        ];
+        let array_mapped = arrays
+            .into_iter()
+            .chain(self.tex_coords.iter())
+            .any(|a| a.enabled && a.buffer != 0 && self.is_mapped(a.buffer));
+        let index_mapped = matches!(indices, Some(Pointer::Offset(_)))
+            && self.element_array_buffer != 0
+            && self.is_mapped(self.element_array_buffer);
+        if array_mapped || index_mapped {
+            return Err(gl::INVALID_OPERATION);
+        }
+        Ok(())
     }
 }
 

@@ -3,7 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{ArgKind, TexImage2DArgs, TexSubImage2DArgs};
+use super::{
+    ArgKind, MapWrites, MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs,
+    TexSubImage2DArgs,
+};
 use crate::arrays::Pointer;
 
 /// One GL call with its arguments: one variant per command of the table.
@@ -613,6 +616,37 @@ pub enum Call {
     MultiTexCoord4d(u32, f64, f64, f64, f64),
     /// `glMultiTexCoord4dv(target, v)`.
     MultiTexCoord4dv(u32, [f64; 4]),
+
+    // Buffer mapping (GL 1.5, GL 2.1 §2.9): context/arrays.rs. `written`: the variant also carries
+    // the bytes the program wrote through the mapping (`MapWrites`), recorded at UnmapBuffer.
+    /// `glMapBuffer(target, access)`.
+    MapBuffer(u32, u32),
+    /// `glUnmapBuffer(target)`.
+    ///
+    /// `UnmapBuffer(target, written)`: the bytes written through the mapping (see `MapWrites`), so a replay writes them into its own mapping before unmapping.
+    UnmapBuffer(u32, Box<MapWrites>),
+
+    // Multiple draws (GL 1.4, GL 2.1 §2.8): context/arrays.rs
+    /// `glMultiDrawArrays(mode, first, count, drawcount)`.
+    ///
+    /// mode, first, count, drawcount (boxed: two vectors would grow every call).
+    MultiDrawArrays(Box<MultiDrawArraysArgs>),
+    /// `glMultiDrawElements(mode, count, type, indices, drawcount)`.
+    ///
+    /// mode, count, type, indices, drawcount.
+    MultiDrawElements(Box<MultiDrawElementsArgs>),
+
+    // Occlusion queries (GL 1.5, GL 2.1 §4.1.7): context/query.rs
+    /// `glGenQueries(n, ids)`.
+    ///
+    /// `GenQueries(n, names)`: the names the call returned (empty when it failed), as GenBuffers.
+    GenQueries(i32, Vec<u32>),
+    /// `glDeleteQueries(n, ids)`.
+    DeleteQueries(i32, Vec<u32>),
+    /// `glBeginQuery(target, id)`.
+    BeginQuery(u32, u32),
+    /// `glEndQuery(target)`.
+    EndQuery(u32),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -899,6 +933,14 @@ pub const NAMES: &[&str] = &[
     "MultiTexCoord4fv",
     "MultiTexCoord4d",
     "MultiTexCoord4dv",
+    "MapBuffer",
+    "UnmapBuffer",
+    "MultiDrawArrays",
+    "MultiDrawElements",
+    "GenQueries",
+    "DeleteQueries",
+    "BeginQuery",
+    "EndQuery",
 ];
 
 impl Call {
@@ -1187,6 +1229,14 @@ impl Call {
             Call::MultiTexCoord4fv(..) => "MultiTexCoord4fv",
             Call::MultiTexCoord4d(..) => "MultiTexCoord4d",
             Call::MultiTexCoord4dv(..) => "MultiTexCoord4dv",
+            Call::MapBuffer(..) => "MapBuffer",
+            Call::UnmapBuffer(..) => "UnmapBuffer",
+            Call::MultiDrawArrays(..) => "MultiDrawArrays",
+            Call::MultiDrawElements(..) => "MultiDrawElements",
+            Call::GenQueries(..) => "GenQueries",
+            Call::DeleteQueries(..) => "DeleteQueries",
+            Call::BeginQuery(..) => "BeginQuery",
+            Call::EndQuery(..) => "EndQuery",
         }
     }
 
@@ -1393,6 +1443,10 @@ impl Call {
                 | Call::BufferSubData(..)
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
+                | Call::MapBuffer(..)
+                | Call::UnmapBuffer(..)
+                | Call::GenQueries(..)
+                | Call::DeleteQueries(..)
         )
     }
 
@@ -1683,6 +1737,14 @@ impl Call {
             Call::MultiTexCoord4fv(..) => &[Enum],
             Call::MultiTexCoord4d(..) => &[Enum],
             Call::MultiTexCoord4dv(..) => &[Enum],
+            Call::MapBuffer(..) => &[Enum, Enum],
+            Call::UnmapBuffer(..) => &[Enum],
+            Call::MultiDrawArrays(..) => &[],
+            Call::MultiDrawElements(..) => &[],
+            Call::GenQueries(..) => &[],
+            Call::DeleteQueries(..) => &[],
+            Call::BeginQuery(..) => &[Enum],
+            Call::EndQuery(..) => &[Enum],
         }
     }
 }

@@ -166,6 +166,8 @@ struct Annotation {
     tuple: Option<String>,
     null: bool,
     out: bool,
+    /// The variant carries the bytes written through a buffer mapping (`MapWrites`).
+    written: bool,
     exec: Option<String>,
     replay: Replay,
     doc: Option<String>,
@@ -204,6 +206,7 @@ fn annotations() -> Vec<Annotation> {
             tuple: None,
             null: false,
             out: false,
+            written: false,
             exec: None,
             replay: Replay::Driver,
             doc,
@@ -217,6 +220,7 @@ fn annotations() -> Vec<Annotation> {
                 None if flag == "pack" => a.pack = true,
                 None if flag == "null" => a.null = true,
                 None if flag == "out" => a.out = true,
+                None if flag == "written" => a.written = true,
                 Some(("count", f)) => a.count = Some(f.to_string()),
                 Some(("tuple", t)) => a.tuple = Some(t.to_string()),
                 Some(("exec", f)) => a.exec = Some(f.to_string()),
@@ -276,6 +280,12 @@ enum Shape {
     OptBytes,
     /// Object names the caller passes (or, `out`, the names the call returned).
     Names,
+    /// The bytes written through a buffer mapping (`written`): not a C parameter.
+    Written,
+    /// An integer array whose length another parameter gives (MultiDrawArrays' first, count).
+    Ints,
+    /// An array of index pointers (MultiDrawElements' indices).
+    Pointers,
 }
 
 /// One field of a `Call` variant.
@@ -298,6 +308,9 @@ impl Field {
             Shape::Bytes => "Vec<u8>".to_string(),
             Shape::OptBytes => "Option<Vec<u8>>".to_string(),
             Shape::Names => "Vec<u32>".to_string(),
+            Shape::Written => "MapWrites".to_string(),
+            Shape::Ints => "Vec<i32>".to_string(),
+            Shape::Pointers => "Vec<Pointer>".to_string(),
         };
         if self.boxed {
             format!("Box<{inner}>")
@@ -393,6 +406,10 @@ impl Implemented {
                 Shape::Params(rust_scalar(&p.ptype))
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {
                 Shape::Names
+            } else if matches!(p.ptype.as_str(), "GLint" | "GLsizei") && p.len.is_some() {
+                Shape::Ints
+            } else if p.ptype == "void" && p.c_type.contains("*const*") {
+                Shape::Pointers
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")
             {
                 Shape::Pointer
@@ -408,6 +425,22 @@ impl Implemented {
                 shape,
                 boxed: false,
                 param: p.clone(),
+            });
+        }
+        if ann.written {
+            fields.push(Field {
+                bind: "written".to_string(),
+                shape: Shape::Written,
+                boxed: true,
+                param: XmlParam {
+                    name: "written".to_string(),
+                    c_type: String::new(),
+                    ptype: "MapWrites".to_string(),
+                    pointer: false,
+                    constant: false,
+                    len: None,
+                    group: None,
+                },
             });
         }
         if ann.boxed {
@@ -495,8 +528,8 @@ fn prototype_doc(xml: &XmlCommand) -> String {
 fn gen_call(cmds: &[Implemented]) -> String {
     let mut s = String::from(HEADER);
     s.push_str(
-        "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, TexImage2DArgs, \
-         TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
+        "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
+         MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
     s.push_str("#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]\npub enum Call {\n");
@@ -724,7 +757,9 @@ fn gen_replay(cmds: &[Implemented]) -> String {
          #[allow(dead_code)]\nimpl Safe<'_> {\n",
     );
     let wrappable = |c: &&Implemented| {
-        c.fields.len() == c.xml.params.len()
+        // A returned pointer (MapBuffer's) is the backend's own business, never a wrapper's.
+        !c.xml.ret.contains('*')
+            && c.fields.len() == c.xml.params.len()
             && c.fields.iter().all(|f| {
                 matches!(
                     f.shape,

@@ -15,7 +15,7 @@ use glam::{Vec3, Vec4};
 
 use super::Context;
 use crate::arrays::{ArrayState, Attr, GlResult, Pointer, Source};
-use crate::call::Call;
+use crate::call::{Call, MapWrites};
 use crate::gl;
 
 impl Context {
@@ -210,6 +210,75 @@ impl Context {
         self.draw_indexed(mode, count, ty, &p, Some((start, end)));
     }
 
+    /// `glMultiDrawArrays` (GL 1.4, GL 2.1 §2.8): DrawArrays(mode, first[i], count[i]) for each
+    /// of the first `drawcount` entries. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION between Begin and End or when a draw would read outside an enabled
+    /// array (a negative `first` with an array enabled, too: Mesa raises nothing there and reads
+    /// before the array) or from a mapped buffer. Every draw is checked before any is drawn.
+    pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32], drawcount: i32) {
+        record!(
+            self,
+            Call::MultiDrawArrays(Box::new((mode, first.to_vec(), count.to_vec(), drawcount)))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_arrays(mode, first, count, drawcount)
+        {
+            Ok(ranges) => {
+                for r in ranges {
+                    self.draw(Some(mode), r);
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glMultiDrawElements` (GL 1.4, GL 2.1 §2.8): DrawElements(mode, count[i], type,
+    /// indices[i]) for each of the first `drawcount` entries; each pointer is client data or an
+    /// offset into the ELEMENT_ARRAY_BUFFER. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode or type, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION as DrawElements raises it for any of the draws. Every draw is checked
+    /// before any is drawn.
+    pub fn multi_draw_elements(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) {
+        record!(
+            self,
+            Call::MultiDrawElements(Box::new((
+                mode,
+                count.to_vec(),
+                ty,
+                indices.to_vec(),
+                drawcount
+            )))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_elements(mode, count, ty, indices, drawcount)
+        {
+            Ok(draws) => {
+                for idx in draws {
+                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize));
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
     fn draw_indexed(&mut self, mode: u32, count: i32, ty: u32, p: &Pointer, r: Option<(u32, u32)>) {
         if !self.outside_begin_end() {
             return;
@@ -366,6 +435,53 @@ impl Context {
     /// `Err(OUT_OF_MEMORY)` instead of an abort.
     pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
         let arrays = &self.state.arrays;
+        // A multiple draw compiles into its draws, one after the other (Mesa: DrawArrays and
+        // DrawElements each), when it is valid as a whole now.
+        let parts: Option<Vec<Call>> = match call {
+            Call::MultiDrawArrays(args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                match arrays.check_multi_draw_arrays(mode, first, count, drawcount) {
+                    Ok(ranges) => Some(
+                        ranges
+                            .into_iter()
+                            .map(|r| {
+                                let n = r.end() - r.start() + 1;
+                                Call::DrawArrays(mode, *r.start() as i32, n as i32)
+                            })
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            Call::MultiDrawElements(args) => {
+                let (mode, ref count, ty, ref indices, drawcount) = **args;
+                match arrays.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                    Ok(_) => Some(
+                        count
+                            .iter()
+                            .zip(indices)
+                            .take(drawcount.max(0) as usize)
+                            .filter(|(&c, _)| c > 0)
+                            .map(|(&c, p)| Call::DrawElements(mode, c, ty, p.clone()))
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            _ => None,
+        };
+        if let Some(parts) = parts {
+            let mut calls = Vec::new();
+            for part in &parts {
+                if let Some(mut c) = self.compile_draw(part)? {
+                    calls.try_reserve(c.len()).map_err(|_| gl::OUT_OF_MEMORY)?;
+                    calls.append(&mut c);
+                }
+            }
+            return Ok(Some(calls));
+        }
         // Checked first, as the draw itself would be: an erroneous draw compiles as it is.
         let (mode, indices) = match call {
             Call::ArrayElement(i) => match arrays.check_array_element(*i) {
@@ -564,6 +680,132 @@ impl Context {
         }
     }
 
+    /// `glMapBuffer` (GL 1.5, GL 2.1 §2.9): maps the store of the buffer bound to `target`
+    /// (ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER) for `access` (READ_ONLY, WRITE_ONLY or
+    /// READ_WRITE) and returns it. INVALID_ENUM for an access or a target; INVALID_OPERATION
+    /// between Begin and End, with no buffer bound, for a buffer already mapped, and (as
+    /// llvmpipe) for an empty one; `None` on any error.
+    ///
+    /// While mapped, BufferSubData and GetBufferSubData on the buffer, and every draw that reads
+    /// it (an enabled array or the index data in it), are INVALID_OPERATION (§2.9). The store
+    /// does not move until UnmapBuffer, BufferData or DeleteBuffers ends the mapping (or the
+    /// context is reset or dropped): [`Context::mapped_buffer_mut`] hands it out again, and a C
+    /// caller may keep its address until then. Not compiled into display lists (§5.4).
+    ///
+    /// Recording: the bytes written through the mapping are recorded with the `UnmapBuffer`
+    /// that ends it (`Call::UnmapBuffer(target, written)`), so a replay — on another context or
+    /// on the driver — writes the same bytes into its own mapping before unmapping.
+    pub fn map_buffer(&mut self, target: u32, access: u32) -> Option<&mut [u8]> {
+        // Executed immediately, never compiled (GL 2.1 §5.4): recorded only.
+        if let (Some(rec), 0) = (self.recording.as_mut(), self.lists.depth) {
+            rec.push(Call::MapBuffer(target, access));
+        }
+        if !self.outside_begin_end() {
+            return None;
+        }
+        match self.state.arrays.map_buffer(target, access) {
+            Ok(name) => {
+                if self.recording.is_some() {
+                    let store = self.state.arrays.buffers.get(&name).map(|b| b.data.clone());
+                    self.map_snapshots.insert(name, store.unwrap_or_default());
+                }
+                self.state.arrays.mapped_mut(target)
+            }
+            Err(code) => {
+                self.error(code);
+                None
+            }
+        }
+    }
+
+    /// The store of the buffer bound to `target` while it is mapped (`None` otherwise): what
+    /// `map_buffer` returned, again. Not a GL command (GetBufferPointerv is its GL form); it
+    /// raises no error and is not recorded.
+    pub fn mapped_buffer_mut(&mut self, target: u32) -> Option<&mut [u8]> {
+        self.state.arrays.mapped_mut(target)
+    }
+
+    /// `glUnmapBuffer` (GL 2.1 §2.9): ends the mapping of the buffer bound to `target`; true
+    /// on success (fixedgl's store cannot be lost while mapped). INVALID_ENUM for a target,
+    /// INVALID_OPERATION between Begin and End, with no buffer bound or one not mapped (false).
+    pub fn unmap_buffer(&mut self, target: u32) -> bool {
+        // Executed immediately, never compiled (GL 2.1 §5.4): recorded only.
+        if self.recording.is_some() && self.lists.depth == 0 {
+            let written = Box::new(self.map_writes(target));
+            if let Some(rec) = self.recording.as_mut() {
+                rec.push(Call::UnmapBuffer(target, written));
+            }
+        }
+        if !self.outside_begin_end() {
+            return false;
+        }
+        match self.state.arrays.unmap_buffer(target) {
+            Ok(name) => {
+                self.map_snapshots.remove(&name);
+                true
+            }
+            Err(code) => {
+                self.error(code);
+                false
+            }
+        }
+    }
+
+    /// What UnmapBuffer records: the bytes of the mapped store from its first to its last byte
+    /// that differ from the store at MapBuffer (the whole store if the mapping began before the
+    /// recording did); `(0, [])` when nothing changed or nothing is mapped.
+    fn map_writes(&self, target: u32) -> MapWrites {
+        let arrays = &self.state.arrays;
+        let name = match target {
+            gl::ARRAY_BUFFER => arrays.array_buffer,
+            gl::ELEMENT_ARRAY_BUFFER => arrays.element_array_buffer,
+            _ => 0,
+        };
+        let Some(b) = arrays.buffers.get(&name).filter(|b| b.mapped) else {
+            return (0, Vec::new());
+        };
+        let Some(before) = self.map_snapshots.get(&name) else {
+            return (0, b.data.clone());
+        };
+        let differs = |(a, b): (&u8, &u8)| a != b;
+        let first = b.data.iter().zip(before).position(differs);
+        let last = b.data.iter().zip(before).rposition(differs);
+        match (first, last) {
+            (Some(f), Some(l)) => (f, b.data.get(f..=l).unwrap_or(&[]).to_vec()),
+            _ => (0, Vec::new()),
+        }
+    }
+
+    /// A recorded `UnmapBuffer(target, written)`: when the buffer bound to `target` is mapped,
+    /// the bytes the recorded program wrote through its mapping are written into this one (the
+    /// part that fits), then `unmap_buffer` runs as the program called it.
+    pub(super) fn replay_unmap_buffer(&mut self, target: u32, written: &MapWrites) {
+        if self.begin_mode.is_none() {
+            if let Some(store) = self.state.arrays.mapped_mut(target) {
+                write_into(store, written);
+            }
+        }
+        self.unmap_buffer(target);
+    }
+
+    /// `glGetBufferPointerv(target, BUFFER_MAP_POINTER)`: the address of the mapped store of the
+    /// buffer bound to `target`, null when it is not mapped. INVALID_ENUM for a target or another
+    /// pname, INVALID_OPERATION between Begin and End or with no buffer bound (null then).
+    pub fn get_buffer_pointerv(&mut self, target: u32, pname: u32) -> *mut std::ffi::c_void {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        match self.state.arrays.buffer_pointer(target, pname) {
+            Ok(Some(store)) => store.as_mut_ptr().cast(),
+            Ok(None) => std::ptr::null_mut(),
+            Err(code) => {
+                self.error(code);
+                std::ptr::null_mut()
+            }
+        }
+    }
+
     /// `glGetPointerv`: the pointer of VERTEX_ARRAY_POINTER, NORMAL_ARRAY_POINTER,
     /// COLOR_ARRAY_POINTER, SECONDARY_COLOR_ARRAY_POINTER, FOG_COORD_ARRAY_POINTER,
     /// EDGE_FLAG_ARRAY_POINTER or TEXTURE_COORD_ARRAY_POINTER (client active unit): the bytes
@@ -590,6 +832,17 @@ impl Context {
                 self.error(gl::INVALID_ENUM);
                 Pointer::NULL
             }
+        }
+    }
+}
+
+/// Writes a recorded UnmapBuffer's bytes into a mapped store, the part that fits (all of it,
+/// for a recording of the same program).
+pub(crate) fn write_into(store: &mut [u8], (offset, bytes): &MapWrites) {
+    if let Some(dst) = store.get_mut(*offset..) {
+        let n = dst.len().min(bytes.len());
+        if let (Some(d), Some(s)) = (dst.get_mut(..n), bytes.get(..n)) {
+            d.copy_from_slice(s);
         }
     }
 }

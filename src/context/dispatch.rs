@@ -368,6 +368,22 @@ impl Context {
             Call::MultiTexCoord4fv(target, ref v) => self.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => self.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => self.multi_tex_coord4dv(target, v),
+            Call::MapBuffer(target, access) => {
+                self.map_buffer(target, access);
+            }
+            Call::UnmapBuffer(target, ref written) => self.replay_unmap_buffer(target, written),
+            Call::MultiDrawArrays(ref args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                self.multi_draw_arrays(mode, first, count, drawcount)
+            }
+            Call::MultiDrawElements(ref args) => {
+                let (mode, ref count, type_, ref indices, drawcount) = **args;
+                self.multi_draw_elements(mode, count, type_, indices, drawcount)
+            }
+            Call::GenQueries(n, ref ids) => self.replay_gen_queries(n, ids),
+            Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
+            Call::BeginQuery(target, id) => self.begin_query(target, id),
+            Call::EndQuery(target) => self.end_query(target),
         }
     }
 }

@@ -71,6 +71,11 @@ pub struct Context {
     pub(crate) renderer: Renderer,
     pub(crate) lists: lists::DisplayLists,
     pub(crate) attrib: attrib::AttribStacks,
+    /// For each buffer mapped while recording: its store at MapBuffer, so that UnmapBuffer can
+    /// record the bytes written through the mapping (context/arrays.rs).
+    pub(crate) map_snapshots: std::collections::BTreeMap<u32, Vec<u8>>,
+    /// Query objects and the active query (context/query.rs).
+    pub(crate) queries: query::Queries,
 }
 
 impl Context {
@@ -97,6 +102,8 @@ impl Context {
             renderer,
             lists: Default::default(),
             attrib: Default::default(),
+            map_snapshots: Default::default(),
+            queries: Default::default(),
         })
     }
 
@@ -115,6 +122,10 @@ impl Context {
         self.lists = Default::default();
         self.sync_capturing();
         self.attrib = Default::default();
+        self.map_snapshots = Default::default();
+        if std::mem::take(&mut self.queries).active.is_some() {
+            self.renderer.stop_counting_samples(&self.state);
+        }
     }
 
     /// Gives the framebuffer a new size (a window was resized). Its contents are undefined
@@ -382,11 +393,18 @@ impl State {
     }
 }
 
-// Vertex arrays and buffer objects (context/arrays.rs)
+// Vertex arrays and buffer objects (context/arrays.rs); the GL backend writes a recorded
+// UnmapBuffer's bytes as the front end does.
 mod arrays;
+#[cfg(feature = "gl")]
+pub(crate) use arrays::write_into;
 
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
+
+// Occlusion queries (context/query.rs)
+mod query;
+pub use query::QUERY_COUNTER_BITS;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;

@@ -42,6 +42,10 @@ pub struct FragCtx<'a> {
     /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
     /// reaches the colour write (tests count coverage with it).
     pub count: bool,
+    /// An occlusion query is active: count each fragment that passes the depth test (and the
+    /// tests before it) in `TileBufs::samples`, as llvmpipe counts after its depth/stencil
+    /// stage, whatever the masks then write.
+    pub samples: bool,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
     // Unit 0's sampler when texturing is on and its texture complete (§3.8)
@@ -63,6 +67,8 @@ pub struct TileBufs<'a> {
     pub x: i32,
     /// Tile origin y.
     pub y: i32,
+    /// Fragments counted for an occlusion query (`FragCtx::samples`).
+    pub samples: u64,
 }
 
 impl FragCtx<'_> {
@@ -169,6 +175,7 @@ impl FragCtx<'_> {
     /// The full sequence for one fragment with colour `c` (before clamping) and fog coordinate
     /// `fogc` at tile index `i`: clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil and
     /// depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write.
+    /// A fragment that passes the depth test counts for an occlusion query.
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn full(
@@ -212,6 +219,9 @@ impl FragCtx<'_> {
         } else if !self.depth(bufs, i, z) {
             return;
         }
+        if self.samples {
+            bufs.samples += 1;
+        }
         let src = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
         let px = match ops.write {
             ColorWrite::Replace => src,
@@ -243,6 +253,9 @@ impl FragCtx<'_> {
             return;
         }
         if self.depth(bufs, i, z) {
+            if self.samples {
+                bufs.samples += 1;
+            }
             // A point has no derivatives: λ = 0 (the base level, magnification).
             let c = self.color(p, v, [0.0; 2]);
             self.write(bufs, i, c);
@@ -289,6 +302,9 @@ impl FragCtx<'_> {
         };
         if mask == 0 {
             return;
+        }
+        if self.samples {
+            bufs.samples += u64::from(mask.count_ones());
         }
         // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
         let nv = self.rl.n;

@@ -89,6 +89,9 @@ pub struct Renderer {
     pending: Option<Mutex<Receiver<Drawn>>>,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
+    /// An occlusion query is active: draws count the fragments that pass the depth test (and
+    /// every test before it) into `Core::samples_passed`. Off, no draw counts anything.
+    count_samples: bool,
     /// Diagnostic: batches drawn in the background so far.
     pub(crate) background_draws: u64,
     /// Test hook: the next background draw panics (to test that the panic reaches the caller).
@@ -113,6 +116,8 @@ struct Core {
     fb: Framebuffer,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
+    /// Fragments counted since `start_counting_samples` (GL 2.1 §4.1.7's SAMPLES_PASSED).
+    samples_passed: u64,
 }
 
 /// The vertex stage's output for a batch: `layout.stride` floats per vertex, and each vertex's
@@ -201,6 +206,7 @@ impl Renderer {
             spare: None,
             pending: None,
             count_coverage: false,
+            count_samples: false,
             background_draws: 0,
             #[cfg(test)]
             panic_in_background: false,
@@ -255,6 +261,7 @@ impl Renderer {
         // changing its own.
         let state = Box::new(state.clone());
         let count = self.count_coverage;
+        let samples = self.count_samples;
         let (tx, rx) = mpsc::channel();
         self.pending = Some(Mutex::new(rx));
         self.background_draws += 1;
@@ -267,7 +274,7 @@ impl Renderer {
             let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                 #[cfg(test)]
                 assert!(!fail, "test hook: background draw panics");
-                core.draw(&state, &batch, &verts, plan, count);
+                core.draw(&state, &batch, &verts, plan, count, samples);
             }))
             .err();
             // The receiver lives until `wait` takes this; a send cannot fail before that.
@@ -359,6 +366,22 @@ impl Renderer {
         self.core().fb.color_rows()
     }
 
+    /// Starts an occlusion query's count (GL 2.1 §4.1.7): everything batched so far is drawn
+    /// uncounted, then every fragment that passes the depth test (after scissor, alpha and
+    /// stencil tests) counts, until `stop_counting_samples`.
+    pub fn start_counting_samples(&mut self, state: &State) {
+        self.flush(state);
+        self.core().samples_passed = 0;
+        self.count_samples = true;
+    }
+
+    /// Ends the count: draws what is batched (counted), and returns the fragments counted.
+    pub fn stop_counting_samples(&mut self, state: &State) -> u64 {
+        self.flush(state);
+        self.count_samples = false;
+        std::mem::take(&mut self.core().samples_passed)
+    }
+
     /// Drops the vertices batched so far without drawing them (`Context::reset`).
     pub fn discard_batch(&mut self) {
         self.batch.clear();
@@ -372,12 +395,13 @@ impl Renderer {
             return;
         }
         let count = self.count_coverage;
+        let samples = self.count_samples;
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
             core, batch, verts, ..
         } = self;
         match core.as_deref_mut() {
-            Some(core) => core.draw(state, batch, verts, plan, count),
+            Some(core) => core.draw(state, batch, verts, plan, count, samples),
             None => Self::lost(),
         }
         batch.clear();
@@ -391,6 +415,7 @@ impl Core {
             fb: Framebuffer::new(width, height),
             asm: Vec::new(),
             workers: Vec::new(),
+            samples_passed: 0,
         }
     }
 
@@ -399,6 +424,7 @@ impl Core {
             fb: Framebuffer::try_new(width, height)?,
             asm: Vec::new(),
             workers: Vec::new(),
+            samples_passed: 0,
         })
     }
 
@@ -411,6 +437,7 @@ impl Core {
         verts: &Processed,
         plan: Plan,
         count_coverage: bool,
+        count_samples: bool,
     ) {
         let Plan { layout, ctx } = plan;
         // Fragment-stage constants.
@@ -418,7 +445,12 @@ impl Core {
         // Unit 0, when enabled and complete (§3.8.10)
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
         let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
-        let Core { fb, asm, workers } = self;
+        let Core {
+            fb,
+            asm,
+            workers,
+            samples_passed,
+        } = self;
         let (vout, wins) = (&verts.vout[..], &verts.wins[..]);
         let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
             std::slice::from_ref(&state.materials)
@@ -435,6 +467,7 @@ impl Core {
             lighting: lighting.as_ref(),
             mats,
             count: count_coverage,
+            samples: count_samples,
             ops: fragops::Ops::new(state),
             tex: sampler.as_ref(),
             tex1: sampler1.as_ref(),
@@ -470,13 +503,13 @@ impl Core {
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if workers.len() == 1 || largest <= count / workers.len() {
                 setup_by_primitives(workers, &ctx, &v, piece, count);
-                rasterise(fb, workers, &fctx, ctx.tiles_x);
+                *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
                 assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
-                    rasterise(fb, workers, &fctx, ctx.tiles_x);
+                    *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x);
                 }
             }
             start = end;
@@ -556,19 +589,20 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
 }
 
 /// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
-/// primitives first, then worker 1's, ..., which is submission order.
-fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) {
+/// primitives first, then worker 1's, ..., which is submission order. Returns the fragments
+/// counted for an occlusion query (0 unless `fctx.samples`).
+fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) -> u64 {
     fb.color
         .par_chunks_mut(TILE_PIXELS)
         .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
         .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
         .enumerate()
-        .for_each(|(t, ((color, depth), stencil))| {
+        .map(|(t, ((color, depth), stencil))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
             {
-                return;
+                return 0;
             }
             let mut bufs = TileBufs {
                 color,
@@ -576,6 +610,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
                 stencil,
                 x: ((t % tiles_x) * TILE) as i32,
                 y: ((t / tiles_x) * TILE) as i32,
+                samples: 0,
             };
             for w in workers {
                 for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
@@ -584,5 +619,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
                     }
                 }
             }
-        });
+            bufs.samples
+        })
+        .sum()
 }

@@ -405,6 +405,14 @@ impl GlBackend {
             Call::MultiTexCoord4fv(target, ref v) => gl.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => gl.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => gl.multi_tex_coord4dv(target, v),
+            Call::MapBuffer(..) => self.arrays_call(call),
+            Call::UnmapBuffer(..) => self.arrays_call(call),
+            Call::MultiDrawArrays(..) => self.arrays_call(call),
+            Call::MultiDrawElements(..) => self.arrays_call(call),
+            Call::GenQueries(n, ref ids) => self.gen_queries(n, ids),
+            Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
+            Call::BeginQuery(target, id) => gl.begin_query(target, id),
+            Call::EndQuery(target) => gl.end_query(target),
         }
     }
 }
@@ -2159,5 +2167,17 @@ impl Safe<'_> {
     pub(super) fn multi_tex_coord4dv(self, target: u32, v: &[f64; 4]) {
         // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
         unsafe { self.0.MultiTexCoord4dv(target, v.as_ptr()) }
+    }
+
+    /// `glBeginQuery(target, id)`.
+    pub(super) fn begin_query(self, target: u32, id: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.BeginQuery(target, id) }
+    }
+
+    /// `glEndQuery(target)`.
+    pub(super) fn end_query(self, target: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EndQuery(target) }
     }
 }

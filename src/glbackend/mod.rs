@@ -22,6 +22,7 @@ pub mod raw;
 mod replay;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
+mod query;
 mod texture;
 
 use std::cell::Cell;

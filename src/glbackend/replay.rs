@@ -184,6 +184,8 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::BlendFuncSeparate(_, d, _, da) => {
             d == gl::SRC_ALPHA_SATURATE || da == gl::SRC_ALPHA_SATURATE
         }
+        // SAMPLES_PASSED is GL 2.1's only query target (§4.1.7); a 4.5 driver takes more.
+        Call::BeginQuery(t, _) | Call::EndQuery(t) => t != gl::SAMPLES_PASSED,
         _ => false,
     };
     wrong.then_some(gl::INVALID_ENUM)

@@ -9,6 +9,7 @@ mod common;
 
 mod arrays;
 mod attrib;
+mod buffer_map;
 mod error_agreement;
 mod errors;
 mod fragment_gl;
@@ -19,8 +20,10 @@ mod glut;
 mod implementation_choices;
 mod lists;
 mod matrices;
+mod multi_draw;
 mod pixel_store;
 mod pixel_store_gl;
+mod query;
 mod query_errors;
 mod recording;
 mod report;
