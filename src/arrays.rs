@@ -895,7 +895,7 @@ impl ArrayState {
         if count.iter().any(|&c| c < 0) {
             return Err(gl::INVALID_VALUE);
         }
-        let enabled = !self.sources().is_empty();
+        let enabled = !self.sources(0).is_empty();
         let mut ranges = Vec::new();
         for (&f, &c) in first.iter().zip(count) {
             if c == 0 {

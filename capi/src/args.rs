@@ -288,3 +288,24 @@ pub unsafe fn tex_sub_image_2d(
     // SAFETY: as `unpack`.
     unsafe { unpack(gl, width, height, format, ty, p) }.unwrap_or_default()
 }
+
+/// MultiDrawElements' index arrays: each an offset into the ELEMENT_ARRAY_BUFFER or
+/// `count[i]` indices read now; none for NULL or a negative `drawcount` (the command answers).
+pub unsafe fn multi_draw_elements(
+    gl: &mut Gl,
+    _mode: u32,
+    count: *const i32,
+    ty: u32,
+    indices: *const *const c_void,
+    drawcount: i32,
+) -> Vec<Pointer> {
+    let n = usize::try_from(drawcount).unwrap_or(0);
+    // SAFETY: `drawcount` counts and pointers (the caller's promise).
+    let (counts, pointers) = unsafe { (read::slice(count, n), read::slice(indices, n)) };
+    counts
+        .iter()
+        .zip(pointers)
+        // SAFETY: as `indices`.
+        .map(|(&c, &p)| unsafe { self::indices(gl, c, ty, p) })
+        .collect()
+}

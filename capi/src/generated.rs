@@ -3296,7 +3296,13 @@ pub unsafe extern "C" fn glMultiDrawArrays(
     count: *const i32,
     drawcount: i32,
 ) {
-    unimplemented("glMultiDrawArrays");
+    with_gl("glMultiDrawArrays", |gl| {
+        let first = read::ints(first, drawcount);
+        let count = read::ints(count, drawcount);
+        gl.ctx.execute(&Call::MultiDrawArrays(Box::new((
+            mode, first, count, drawcount,
+        ))));
+    })
 }
 
 /// `glMultiDrawElements(mode, count, type, indices, drawcount)`.
@@ -3308,7 +3314,13 @@ pub unsafe extern "C" fn glMultiDrawElements(
     indices: *const *const c_void,
     drawcount: i32,
 ) {
-    unimplemented("glMultiDrawElements");
+    with_gl("glMultiDrawElements", |gl| {
+        let indices = args::multi_draw_elements(gl, mode, count, type_, indices, drawcount);
+        let count = read::ints(count, drawcount);
+        gl.ctx.execute(&Call::MultiDrawElements(Box::new((
+            mode, count, type_, indices, drawcount,
+        ))));
+    })
 }
 
 /// `glPointParameterf(pname, param)`.
@@ -3672,53 +3684,29 @@ pub unsafe extern "C" fn glBlendEquation(mode: u32) {
     })
 }
 
-/// `glGenQueries(n, ids)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGenQueries(n: i32, ids: *mut u32) {
-    unimplemented("glGenQueries");
-}
-
 /// `glDeleteQueries(n, ids)`.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteQueries(n: i32, ids: *const u32) {
-    unimplemented("glDeleteQueries");
-}
-
-/// `glIsQuery(id)`.
-#[no_mangle]
-pub unsafe extern "C" fn glIsQuery(id: u32) -> u8 {
-    unimplemented("glIsQuery");
-    0
+    with_gl("glDeleteQueries", |gl| {
+        let ids = read::names(ids, n);
+        gl.ctx.execute(&Call::DeleteQueries(n, ids));
+    })
 }
 
 /// `glBeginQuery(target, id)`.
 #[no_mangle]
 pub unsafe extern "C" fn glBeginQuery(target: u32, id: u32) {
-    unimplemented("glBeginQuery");
+    with_gl("glBeginQuery", |gl| {
+        gl.ctx.begin_query(target, id);
+    })
 }
 
 /// `glEndQuery(target)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEndQuery(target: u32) {
-    unimplemented("glEndQuery");
-}
-
-/// `glGetQueryiv(target, pname, params)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryiv(target: u32, pname: u32, params: *mut i32) {
-    unimplemented("glGetQueryiv");
-}
-
-/// `glGetQueryObjectiv(id, pname, params)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryObjectiv(id: u32, pname: u32, params: *mut i32) {
-    unimplemented("glGetQueryObjectiv");
-}
-
-/// `glGetQueryObjectuiv(id, pname, params)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetQueryObjectuiv(id: u32, pname: u32, params: *mut u32) {
-    unimplemented("glGetQueryObjectuiv");
+    with_gl("glEndQuery", |gl| {
+        gl.ctx.end_query(target);
+    })
 }
 
 /// `glBindBuffer(target, buffer)`.
@@ -3760,26 +3748,6 @@ pub unsafe extern "C" fn glBufferSubData(
         gl.ctx
             .execute(&Call::BufferSubData(target, offset, size, data));
     })
-}
-
-/// `glMapBuffer(target, access)`.
-#[no_mangle]
-pub unsafe extern "C" fn glMapBuffer(target: u32, access: u32) -> *mut c_void {
-    unimplemented("glMapBuffer");
-    std::ptr::null_mut()
-}
-
-/// `glUnmapBuffer(target)`.
-#[no_mangle]
-pub unsafe extern "C" fn glUnmapBuffer(target: u32) -> u8 {
-    unimplemented("glUnmapBuffer");
-    0
-}
-
-/// `glGetBufferPointerv(target, pname, params)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetBufferPointerv(target: u32, pname: u32, params: *mut *mut c_void) {
-    unimplemented("glGetBufferPointerv");
 }
 
 /// `glBlendEquationSeparate(modeRGB, modeAlpha)`.
@@ -3824,6 +3792,12 @@ pub unsafe extern "C" fn glActiveTextureARB(texture: u32) {
 #[no_mangle]
 pub unsafe extern "C" fn glArrayElementEXT(i: i32) {
     glArrayElement(i)
+}
+
+/// `glBeginQueryARB`: [`glBeginQuery`].
+#[no_mangle]
+pub unsafe extern "C" fn glBeginQueryARB(target: u32, id: u32) {
+    glBeginQuery(target, id)
 }
 
 /// `glBindBufferARB`: [`glBindBuffer`].
@@ -3942,6 +3916,12 @@ pub unsafe extern "C" fn glDeleteBuffersARB(n: i32, buffers: *const u32) {
     glDeleteBuffers(n, buffers)
 }
 
+/// `glDeleteQueriesARB`: [`glDeleteQueries`].
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteQueriesARB(n: i32, ids: *const u32) {
+    glDeleteQueries(n, ids)
+}
+
 /// `glDrawArraysEXT`: [`glDrawArrays`].
 #[no_mangle]
 pub unsafe extern "C" fn glDrawArraysEXT(mode: u32, first: i32, count: i32) {
@@ -3959,6 +3939,12 @@ pub unsafe extern "C" fn glDrawRangeElementsEXT(
     indices: *const c_void,
 ) {
     glDrawRangeElements(mode, start, end, count, type_, indices)
+}
+
+/// `glEndQueryARB`: [`glEndQuery`].
+#[no_mangle]
+pub unsafe extern "C" fn glEndQueryARB(target: u32) {
+    glEndQuery(target)
 }
 
 /// `glFogCoordPointerEXT`: [`glFogCoordPointer`].
@@ -3997,10 +3983,28 @@ pub unsafe extern "C" fn glGenBuffersARB(n: i32, buffers: *mut u32) {
     glGenBuffers(n, buffers)
 }
 
+/// `glGenQueriesARB`: [`glGenQueries`].
+#[no_mangle]
+pub unsafe extern "C" fn glGenQueriesARB(n: i32, ids: *mut u32) {
+    glGenQueries(n, ids)
+}
+
 /// `glGetBufferParameterivARB`: [`glGetBufferParameteriv`].
 #[no_mangle]
 pub unsafe extern "C" fn glGetBufferParameterivARB(target: u32, pname: u32, params: *mut i32) {
     glGetBufferParameteriv(target, pname, params)
+}
+
+/// `glGetBufferPointervARB`: [`glGetBufferPointerv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetBufferPointervARB(target: u32, pname: u32, params: *mut *mut c_void) {
+    glGetBufferPointerv(target, pname, params)
+}
+
+/// `glGetBufferPointervOES`: [`glGetBufferPointerv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetBufferPointervOES(target: u32, pname: u32, params: *mut *mut c_void) {
+    glGetBufferPointerv(target, pname, params)
 }
 
 /// `glGetBufferSubDataARB`: [`glGetBufferSubData`].
@@ -4026,10 +4030,40 @@ pub unsafe extern "C" fn glGetPointervKHR(pname: u32, params: *mut *mut c_void) 
     glGetPointerv(pname, params)
 }
 
+/// `glGetQueryObjectivARB`: [`glGetQueryObjectiv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetQueryObjectivARB(id: u32, pname: u32, params: *mut i32) {
+    glGetQueryObjectiv(id, pname, params)
+}
+
+/// `glGetQueryObjectivEXT`: [`glGetQueryObjectiv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetQueryObjectivEXT(id: u32, pname: u32, params: *mut i32) {
+    glGetQueryObjectiv(id, pname, params)
+}
+
+/// `glGetQueryObjectuivARB`: [`glGetQueryObjectuiv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetQueryObjectuivARB(id: u32, pname: u32, params: *mut u32) {
+    glGetQueryObjectuiv(id, pname, params)
+}
+
+/// `glGetQueryivARB`: [`glGetQueryiv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetQueryivARB(target: u32, pname: u32, params: *mut i32) {
+    glGetQueryiv(target, pname, params)
+}
+
 /// `glIsBufferARB`: [`glIsBuffer`].
 #[no_mangle]
 pub unsafe extern "C" fn glIsBufferARB(buffer: u32) -> u8 {
     glIsBuffer(buffer)
+}
+
+/// `glIsQueryARB`: [`glIsQuery`].
+#[no_mangle]
+pub unsafe extern "C" fn glIsQueryARB(id: u32) -> u8 {
+    glIsQuery(id)
 }
 
 /// `glLoadTransposeMatrixdARB`: [`glLoadTransposeMatrixd`].
@@ -4044,6 +4078,18 @@ pub unsafe extern "C" fn glLoadTransposeMatrixfARB(m: *const f32) {
     glLoadTransposeMatrixf(m)
 }
 
+/// `glMapBufferARB`: [`glMapBuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glMapBufferARB(target: u32, access: u32) -> *mut c_void {
+    glMapBuffer(target, access)
+}
+
+/// `glMapBufferOES`: [`glMapBuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glMapBufferOES(target: u32, access: u32) -> *mut c_void {
+    glMapBuffer(target, access)
+}
+
 /// `glMultTransposeMatrixdARB`: [`glMultTransposeMatrixd`].
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixdARB(m: *const f64) {
@@ -4054,6 +4100,29 @@ pub unsafe extern "C" fn glMultTransposeMatrixdARB(m: *const f64) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixfARB(m: *const f32) {
     glMultTransposeMatrixf(m)
+}
+
+/// `glMultiDrawArraysEXT`: [`glMultiDrawArrays`].
+#[no_mangle]
+pub unsafe extern "C" fn glMultiDrawArraysEXT(
+    mode: u32,
+    first: *const i32,
+    count: *const i32,
+    drawcount: i32,
+) {
+    glMultiDrawArrays(mode, first, count, drawcount)
+}
+
+/// `glMultiDrawElementsEXT`: [`glMultiDrawElements`].
+#[no_mangle]
+pub unsafe extern "C" fn glMultiDrawElementsEXT(
+    mode: u32,
+    count: *const i32,
+    type_: u32,
+    indices: *const *const c_void,
+    drawcount: i32,
+) {
+    glMultiDrawElements(mode, count, type_, indices, drawcount)
 }
 
 /// `glMultiTexCoord1dARB`: [`glMultiTexCoord1d`].
@@ -4385,6 +4454,18 @@ pub unsafe extern "C" fn glTexSubImage2DEXT(
     )
 }
 
+/// `glUnmapBufferARB`: [`glUnmapBuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glUnmapBufferARB(target: u32) -> u8 {
+    glUnmapBuffer(target)
+}
+
+/// `glUnmapBufferOES`: [`glUnmapBuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glUnmapBufferOES(target: u32) -> u8 {
+    glUnmapBuffer(target)
+}
+
 /// `GetProcAddress`: the entry point of an implemented command (or an alias of one);
 /// `None` for one fixedgl does not implement, so that a program can tell.
 pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
@@ -4395,6 +4476,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glArrayElement" => glArrayElement as *const c_void,
         b"glArrayElementEXT" => glArrayElement as *const c_void,
         b"glBegin" => glBegin as *const c_void,
+        b"glBeginQuery" => glBeginQuery as *const c_void,
+        b"glBeginQueryARB" => glBeginQuery as *const c_void,
         b"glBindBuffer" => glBindBuffer as *const c_void,
         b"glBindBufferARB" => glBindBuffer as *const c_void,
         b"glBindTexture" => glBindTexture as *const c_void,
@@ -4465,6 +4548,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glDeleteBuffers" => glDeleteBuffers as *const c_void,
         b"glDeleteBuffersARB" => glDeleteBuffers as *const c_void,
         b"glDeleteLists" => glDeleteLists as *const c_void,
+        b"glDeleteQueries" => glDeleteQueries as *const c_void,
+        b"glDeleteQueriesARB" => glDeleteQueries as *const c_void,
         b"glDeleteTextures" => glDeleteTextures as *const c_void,
         b"glDepthFunc" => glDepthFunc as *const c_void,
         b"glDepthMask" => glDepthMask as *const c_void,
@@ -4483,6 +4568,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glEnableClientState" => glEnableClientState as *const c_void,
         b"glEnd" => glEnd as *const c_void,
         b"glEndList" => glEndList as *const c_void,
+        b"glEndQuery" => glEndQuery as *const c_void,
+        b"glEndQueryARB" => glEndQuery as *const c_void,
         b"glFinish" => glFinish as *const c_void,
         b"glFlush" => glFlush as *const c_void,
         b"glFogCoordPointer" => glFogCoordPointer as *const c_void,
@@ -4504,10 +4591,15 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGenBuffers" => glGenBuffers as *const c_void,
         b"glGenBuffersARB" => glGenBuffers as *const c_void,
         b"glGenLists" => glGenLists as *const c_void,
+        b"glGenQueries" => glGenQueries as *const c_void,
+        b"glGenQueriesARB" => glGenQueries as *const c_void,
         b"glGenTextures" => glGenTextures as *const c_void,
         b"glGetBooleanv" => glGetBooleanv as *const c_void,
         b"glGetBufferParameteriv" => glGetBufferParameteriv as *const c_void,
         b"glGetBufferParameterivARB" => glGetBufferParameteriv as *const c_void,
+        b"glGetBufferPointerv" => glGetBufferPointerv as *const c_void,
+        b"glGetBufferPointervARB" => glGetBufferPointerv as *const c_void,
+        b"glGetBufferPointervOES" => glGetBufferPointerv as *const c_void,
         b"glGetBufferSubData" => glGetBufferSubData as *const c_void,
         b"glGetBufferSubDataARB" => glGetBufferSubData as *const c_void,
         b"glGetClipPlane" => glGetClipPlane as *const c_void,
@@ -4522,6 +4614,13 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetPointerv" => glGetPointerv as *const c_void,
         b"glGetPointervEXT" => glGetPointerv as *const c_void,
         b"glGetPointervKHR" => glGetPointerv as *const c_void,
+        b"glGetQueryObjectiv" => glGetQueryObjectiv as *const c_void,
+        b"glGetQueryObjectivARB" => glGetQueryObjectiv as *const c_void,
+        b"glGetQueryObjectivEXT" => glGetQueryObjectiv as *const c_void,
+        b"glGetQueryObjectuiv" => glGetQueryObjectuiv as *const c_void,
+        b"glGetQueryObjectuivARB" => glGetQueryObjectuiv as *const c_void,
+        b"glGetQueryiv" => glGetQueryiv as *const c_void,
+        b"glGetQueryivARB" => glGetQueryiv as *const c_void,
         b"glGetString" => glGetString as *const c_void,
         b"glGetTexEnvfv" => glGetTexEnvfv as *const c_void,
         b"glGetTexEnviv" => glGetTexEnviv as *const c_void,
@@ -4539,6 +4638,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glIsBufferARB" => glIsBuffer as *const c_void,
         b"glIsEnabled" => glIsEnabled as *const c_void,
         b"glIsList" => glIsList as *const c_void,
+        b"glIsQuery" => glIsQuery as *const c_void,
+        b"glIsQueryARB" => glIsQuery as *const c_void,
         b"glIsTexture" => glIsTexture as *const c_void,
         b"glLightModelf" => glLightModelf as *const c_void,
         b"glLightModelfv" => glLightModelfv as *const c_void,
@@ -4558,6 +4659,9 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glLoadTransposeMatrixf" => glLoadTransposeMatrixf as *const c_void,
         b"glLoadTransposeMatrixfARB" => glLoadTransposeMatrixf as *const c_void,
         b"glLogicOp" => glLogicOp as *const c_void,
+        b"glMapBuffer" => glMapBuffer as *const c_void,
+        b"glMapBufferARB" => glMapBuffer as *const c_void,
+        b"glMapBufferOES" => glMapBuffer as *const c_void,
         b"glMaterialf" => glMaterialf as *const c_void,
         b"glMaterialfv" => glMaterialfv as *const c_void,
         b"glMateriali" => glMateriali as *const c_void,
@@ -4569,6 +4673,10 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glMultTransposeMatrixdARB" => glMultTransposeMatrixd as *const c_void,
         b"glMultTransposeMatrixf" => glMultTransposeMatrixf as *const c_void,
         b"glMultTransposeMatrixfARB" => glMultTransposeMatrixf as *const c_void,
+        b"glMultiDrawArrays" => glMultiDrawArrays as *const c_void,
+        b"glMultiDrawArraysEXT" => glMultiDrawArrays as *const c_void,
+        b"glMultiDrawElements" => glMultiDrawElements as *const c_void,
+        b"glMultiDrawElementsEXT" => glMultiDrawElements as *const c_void,
         b"glMultiTexCoord1d" => glMultiTexCoord1d as *const c_void,
         b"glMultiTexCoord1dARB" => glMultiTexCoord1d as *const c_void,
         b"glMultiTexCoord1dv" => glMultiTexCoord1dv as *const c_void,
@@ -4758,6 +4866,9 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glTexSubImage2DEXT" => glTexSubImage2D as *const c_void,
         b"glTranslated" => glTranslated as *const c_void,
         b"glTranslatef" => glTranslatef as *const c_void,
+        b"glUnmapBuffer" => glUnmapBuffer as *const c_void,
+        b"glUnmapBufferARB" => glUnmapBuffer as *const c_void,
+        b"glUnmapBufferOES" => glUnmapBuffer as *const c_void,
         b"glVertex2d" => glVertex2d as *const c_void,
         b"glVertex2dv" => glVertex2dv as *const c_void,
         b"glVertex2f" => glVertex2f as *const c_void,

@@ -317,3 +317,49 @@ pub unsafe extern "C" fn glFinish() {
         gl.flushed();
     })
 }
+
+#[no_mangle]
+pub unsafe extern "C" fn glMapBuffer(target: u32, access: u32) -> *mut c_void {
+    with_gl("glMapBuffer", |gl| {
+        // The store does not move while it is mapped (see `Context::map_buffer`), so its
+        // address stays valid for the program until UnmapBuffer, DeleteBuffers or BufferData.
+        match gl.ctx.map_buffer(target, access) {
+            Some(bytes) => bytes.as_mut_ptr().cast(),
+            None => std::ptr::null_mut(),
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glUnmapBuffer(target: u32) -> u8 {
+    with_gl("glUnmapBuffer", |gl| u8::from(gl.ctx.unmap_buffer(target)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetBufferPointerv(target: u32, pname: u32, params: *mut *mut c_void) {
+    with_gl("glGetBufferPointerv", |gl| {
+        let p = gl.ctx.get_buffer_pointerv(target, pname);
+        // SAFETY: one pointer.
+        if let Some(slot) = unsafe { read::slice_mut(params, 1) }.first_mut() {
+            *slot = p;
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenQueries(n: i32, ids: *mut u32) {
+    with_gl("glGenQueries", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(ids, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_queries(n, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsQuery(id: u32) -> u8 {
+    with_gl("glIsQuery", |gl| u8::from(gl.ctx.is_query(id)))
+}
+
+getter!(glGetQueryiv, get_queryiv, i32, |_| Some(1));
+getter!(glGetQueryObjectiv, get_query_objectiv, i32, |_| Some(1));
+getter!(glGetQueryObjectuiv, get_query_objectuiv, u32, |_| Some(1));

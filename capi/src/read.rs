@@ -59,3 +59,10 @@ pub unsafe fn bytes<'a>(p: *const std::ffi::c_void, len: usize) -> &'a [u8] {
     // SAFETY: as `slice`; bytes have no alignment.
     unsafe { slice(p.cast::<u8>(), len) }
 }
+
+/// `n` integers (none for NULL or a negative `n`, which the command answers).
+pub unsafe fn ints(p: *const i32, n: i32) -> Vec<i32> {
+    let n = usize::try_from(n).unwrap_or(0);
+    // SAFETY: as `slice`.
+    unsafe { slice(p, n) }.to_vec()
+}

@@ -996,7 +996,15 @@ fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
             let n = ident(f.param.len.as_deref().expect("names have a length"));
             format!("read::names({b}, {n})")
         }
-        Shape::Pointer | Shape::Bytes | Shape::OptBytes => return None,
+        Shape::Ints => {
+            // gl.xml says COMPSIZE(count) for MultiDrawArrays' first: both hold drawcount.
+            format!("read::ints({b}, drawcount)")
+        }
+        Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers => return None,
+        Shape::Written => panic!(
+            "gl{}: a field that is not a C parameter: write it by hand in capi/src",
+            c.xml.name
+        ),
     };
     Some(if f.boxed {
         format!("Box::new({value})")
@@ -1067,7 +1075,10 @@ fn gen_capi(
             && c.fields.iter().all(|f| matches!(f.shape, Shape::Scalar(_)));
         let _ = writeln!(s, "    with_gl(\"{fname}\", |gl| {{");
         let mut binds = Vec::new();
-        for f in &c.fields {
+        // Pointer data first: its function takes the C arguments before any is converted.
+        let mut ordered: Vec<&Field> = c.fields.iter().collect();
+        ordered.sort_by_key(|f| capi_field(c, f).is_some());
+        for f in ordered {
             let value = capi_field(c, f).unwrap_or_else(|| {
                 let all_args: Vec<String> = x.params.iter().map(|p| ident(&p.name)).collect();
                 let v = format!("args::{}(gl, {})", c.ann.method, all_args.join(", "));
@@ -1080,8 +1091,8 @@ fn gen_capi(
             if value != f.bind {
                 let _ = writeln!(s, "        let {} = {value};", f.bind);
             }
-            binds.push(f.bind.clone());
         }
+        binds.extend(c.fields.iter().map(|f| f.bind.clone()));
         if direct {
             let call = format!("gl.ctx.{}({})", c.ann.method, binds.join(", "));
             match x.ret.as_str() {

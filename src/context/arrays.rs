@@ -217,6 +217,13 @@ impl Context {
     /// array (a negative `first` with an array enabled, too: Mesa raises nothing there and reads
     /// before the array) or from a mapped buffer. Every draw is checked before any is drawn.
     pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32], drawcount: i32) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(ranges) = a.check_multi_draw_arrays(mode, first, count, drawcount) {
+                let reach = ranges.iter().map(|r| r.end() + 1).max().unwrap_or(0);
+                self.record_client_arrays(reach);
+            }
+        }
         record!(
             self,
             Call::MultiDrawArrays(Box::new((mode, first.to_vec(), count.to_vec(), drawcount)))
@@ -231,7 +238,8 @@ impl Context {
         {
             Ok(ranges) => {
                 for r in ranges {
-                    self.draw(Some(mode), r);
+                    let reach = r.end() + 1;
+                    self.draw(Some(mode), r, reach);
                 }
             }
             Err(code) => self.error(code),
@@ -252,6 +260,17 @@ impl Context {
         indices: &[Pointer],
         drawcount: i32,
     ) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(draws) = a.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                let reach = draws
+                    .iter()
+                    .flat_map(|d| d.iter().max())
+                    .max()
+                    .map_or(0, |&m| m as usize + 1);
+                self.record_client_arrays(reach);
+            }
+        }
         record!(
             self,
             Call::MultiDrawElements(Box::new((
@@ -272,7 +291,8 @@ impl Context {
         {
             Ok(draws) => {
                 for idx in draws {
-                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize));
+                    let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize), reach);
                 }
             }
             Err(code) => self.error(code),

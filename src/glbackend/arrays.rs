@@ -128,7 +128,7 @@ impl GlBackend {
                     .iter()
                     .map(|r| (r.end() - r.start() + 1) as i32)
                     .collect();
-                if !firsts.is_empty() && !a.sources().is_empty() {
+                if !firsts.is_empty() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: `firsts` and `counts` hold `firsts.len()` values each, and every
                     // range lies inside every enabled array, as the shadow checked.
@@ -153,7 +153,7 @@ impl GlBackend {
                     .filter(|(&c, _)| c > 0)
                     .map(|(&c, p)| (c, ptr(p)))
                     .unzip();
-                if !counts.is_empty() && !a.sources().is_empty() {
+                if !counts.is_empty() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: one count and one pointer per draw; each pointer holds its count
                     // of indices of `ty` (or is an offset into the bound element buffer), each
@@ -210,8 +210,11 @@ impl GlBackend {
                 });
                 a.unmap_buffer(target)?;
                 let mut mapped: *mut c_void = std::ptr::null_mut();
-                // SAFETY: BUFFER_MAP_POINTER writes one pointer.
-                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, &mut mapped) };
+                // The generated binding declares the output `*const *mut c_void`; the driver
+                // writes one pointer through it.
+                let out: *const *mut c_void = std::ptr::addr_of_mut!(mapped);
+                // SAFETY: BUFFER_MAP_POINTER writes one pointer, into `mapped`.
+                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, out) };
                 if !mapped.is_null() {
                     // SAFETY: the driver maps the whole store of the buffer bound to `target`,
                     // whose size the shadow holds (`size`: the same BufferData made both), and

@@ -387,15 +387,22 @@ mod on_gl {
                         "get sub data: mapped" => {
                             raw.GetBufferSubData(gl::ARRAY_BUFFER, 0, 4, out.as_mut_ptr().cast())
                         }
-                        "pointer: bad pname" | "pointer: bad pname, none bound" => {
-                            raw.GetBufferPointerv(gl::ARRAY_BUFFER, gl::BUFFER_SIZE, &mut p)
-                        }
-                        "pointer: bad target" => {
-                            raw.GetBufferPointerv(gl::TEXTURE_2D, gl::BUFFER_MAP_POINTER, &mut p)
-                        }
-                        _ => {
-                            raw.GetBufferPointerv(gl::ARRAY_BUFFER, gl::BUFFER_MAP_POINTER, &mut p)
-                        }
+                        "pointer: bad pname" | "pointer: bad pname, none bound" => raw
+                            .GetBufferPointerv(
+                                gl::ARRAY_BUFFER,
+                                gl::BUFFER_SIZE,
+                                std::ptr::addr_of_mut!(p),
+                            ),
+                        "pointer: bad target" => raw.GetBufferPointerv(
+                            gl::TEXTURE_2D,
+                            gl::BUFFER_MAP_POINTER,
+                            std::ptr::addr_of_mut!(p),
+                        ),
+                        _ => raw.GetBufferPointerv(
+                            gl::ARRAY_BUFFER,
+                            gl::BUFFER_MAP_POINTER,
+                            std::ptr::addr_of_mut!(p),
+                        ),
                     }
                     if at == At::InsideBegin {
                         raw.End();
