@@ -17,8 +17,11 @@ use fixedgl::{gl, Context};
 
 /// Where a context's frames go when it presents.
 pub trait Surface: Send {
-    /// The drawable's size now (a window may have been resized).
+    /// The drawable's size, as last read (see `refresh`).
     fn size(&self) -> (u32, u32);
+    /// Reads the drawable's size again where it can change (a window: one round trip to the X
+    /// server). Called at MakeCurrent and glViewport; a window also reads it after each present.
+    fn refresh(&mut self) {}
     /// Whether the drawable is double-buffered (presents at SwapBuffers) or single-buffered
     /// (presents at glFlush/glFinish).
     fn double_buffered(&self) -> bool;
@@ -62,6 +65,24 @@ impl Gl {
     /// A NULL pointer where the command reads values: INVALID_VALUE (GL would crash).
     pub fn null_pointer(&mut self) {
         self.ctx.raise_error(gl::INVALID_VALUE);
+    }
+
+    /// Reads the surface's size again and gives the framebuffer that size if it changed (a
+    /// window was resized): at MakeCurrent and glViewport. The surface's size; `None` without
+    /// one. Not between Begin and End, where the batched vertices must survive.
+    pub(crate) fn fit_surface(&mut self) -> Option<(u32, u32)> {
+        let s = self.surface.as_mut()?;
+        if self.ctx.inside_begin_end() {
+            return Some(s.size());
+        }
+        s.refresh();
+        let (w, h) = s.size();
+        if self.ctx.size() != (w.max(1), h.max(1)) {
+            if let Err(e) = self.ctx.resize(w.max(1), h.max(1)) {
+                eprintln!("fixedgl: cannot resize the framebuffer to {w}x{h}: {e}");
+            }
+        }
+        Some((w, h))
     }
 
     /// Presents to the surface if it is single-buffered (glFlush, glFinish).
@@ -125,20 +146,14 @@ pub(crate) fn make_current(p: *mut Gl, surface: Option<Box<dyn Surface>>) -> Res
     // SAFETY: checked above.
     let gl = unsafe { &mut *p };
     gl.thread = Some(me);
-    if let Some(s) = &surface {
-        let (w, h) = s.size();
-        if gl.ctx.size() != (w.max(1), h.max(1)) {
-            if let Err(e) = gl.ctx.resize(w.max(1), h.max(1)) {
-                eprintln!("fixedgl: cannot resize the framebuffer to {w}x{h}: {e}");
-            }
-        }
+    gl.surface = surface;
+    if let Some((w, h)) = gl.fit_surface() {
         if !gl.bound_once {
             gl.ctx.viewport(0, 0, w as i32, h as i32);
             gl.ctx.scissor(0, 0, w as i32, h as i32);
         }
         gl.bound_once = true;
     }
-    gl.surface = surface;
     let _ = CURRENT.try_with(|c| c.set(p));
     Ok(())
 }
