@@ -536,19 +536,18 @@ impl XDrawable {
             Image::Plain { .. } => unsafe {
                 // SAFETY: an open display, its drawable and GC, and a complete image.
                 (x.XPutImage)(dpy, xid, gc, im, 0, 0, 0, 0, w, h);
-                (x.XFlush)(dpy);
             },
             Image::Shm { .. } => {
                 if let Some(ext) = xext() {
-                    // SAFETY: as above, with the attached segment; XSync: the server has read
-                    // the segment before fixedgl writes the next frame into it.
-                    unsafe {
-                        (ext.XShmPutImage)(dpy, xid, gc, im, 0, 0, 0, 0, w, h, xlib::False);
-                        (x.XSync)(dpy, xlib::False);
-                    }
+                    // SAFETY: as above, with the attached segment.
+                    unsafe { (ext.XShmPutImage)(dpy, xid, gc, im, 0, 0, 0, 0, w, h, xlib::False) };
                 }
             }
         }
+        // The frame is on the server when SwapBuffers (or glFlush) returns: another client
+        // reading the window sees it, and the shared segment is free for the next frame.
+        // SAFETY: an open display.
+        unsafe { (x.XSync)(dpy, xlib::False) };
         if self.query(x).is_some() {
             let (nw, nh) = (self.size.0.max(1), self.size.1.max(1));
             if (nw, nh) != ctx.size() {

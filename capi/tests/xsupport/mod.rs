@@ -390,7 +390,11 @@ impl Connection {
                 xlib::ZPixmap,
             );
             assert!(!im.is_null(), "XGetImage of {drawable:#x} failed");
-            let (rm, gm, bm) = ((*im).red_mask, (*im).green_mask, (*im).blue_mask);
+            let (mut rm, mut gm, mut bm) = ((*im).red_mask, (*im).green_mask, (*im).blue_mask);
+            if rm | gm | bm == 0 {
+                // A pixmap has no visual: the server's usual 24-bit layout.
+                (rm, gm, bm) = (0xff0000, 0xff00, 0xff);
+            }
             let comp = |v: c_ulong, m: c_ulong| -> u8 {
                 if m == 0 {
                     return 0;
