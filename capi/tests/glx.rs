@@ -69,22 +69,22 @@ fn proc(name: &str) -> *const c_void {
 
 fn gl() -> Gl {
     macro_rules! f {
-        ($name:literal) => {{
+        ($name:literal: $t:ty) => {{
             let p = proc($name);
             assert!(!p.is_null(), "{} is NULL", $name);
             // SAFETY: the address of the GL command of that name and C signature.
-            unsafe { std::mem::transmute::<*const c_void, _>(p) }
+            unsafe { std::mem::transmute::<*const c_void, $t>(p) }
         }};
     }
     Gl {
-        clear_color: f!("glClearColor"),
-        clear: f!("glClear"),
-        viewport: f!("glViewport"),
-        flush: f!("glFlush"),
-        finish: f!("glFinish"),
-        get_integerv: f!("glGetIntegerv"),
-        read_pixels: f!("glReadPixels"),
-        pixel_storei: f!("glPixelStorei"),
+        clear_color: f!("glClearColor": extern "C" fn(f32, f32, f32, f32)),
+        clear: f!("glClear": extern "C" fn(u32)),
+        viewport: f!("glViewport": extern "C" fn(i32, i32, i32, i32)),
+        flush: f!("glFlush": extern "C" fn()),
+        finish: f!("glFinish": extern "C" fn()),
+        get_integerv: f!("glGetIntegerv": unsafe extern "C" fn(u32, *mut i32)),
+        read_pixels: f!("glReadPixels": unsafe extern "C" fn(i32, i32, i32, i32, u32, u32, *mut c_void)),
+        pixel_storei: f!("glPixelStorei": extern "C" fn(u32, i32)),
     }
 }
 
