@@ -458,7 +458,7 @@ fn drawable_for(
         let reused = {
             let mut g = xwin::lock(&d);
             // A window fixedgl met by itself may have been destroyed and its XID reused.
-            g.kind == Kind::Window && g.config.is_none() && !g.refresh()
+            g.kind == Kind::Window && g.config.is_none() && !g.exists()
         };
         if !reused {
             return Some(d);

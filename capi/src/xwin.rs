@@ -196,6 +196,11 @@ pub(crate) struct XDrawable {
     pub event_mask: c_ulong,
     /// Destroyed by the program (glXDestroyWindow/Pixmap/Pbuffer): nothing more is sent.
     gone: bool,
+    /// The size has been read since the last present (see `refresh`).
+    checked: bool,
+    /// The server said it has no such drawable (destroyed without glXDestroy*): nothing more
+    /// is sent to it.
+    lost: bool,
 }
 
 // SAFETY: the raw pointers are the program's Xlib display and visual, and Xlib images fixedgl
@@ -294,6 +299,8 @@ impl XDrawable {
             last_swap: None,
             event_mask: 0,
             gone: false,
+            checked: false,
+            lost: false,
         }
     }
 
@@ -322,18 +329,29 @@ impl XDrawable {
             )
         });
         if !matches!(ok, Ok(s) if s != 0) {
+            self.lost = true;
             return None;
         }
+        self.lost = false;
         self.size = (w, h);
         Some(depth as c_int)
     }
 
-    /// Re-reads the size; `false` when the drawable no longer exists on the server.
+    /// Re-reads the size, once per frame: the first call after a present (or ever) asks the
+    /// server, later ones in the same frame answer from the cache (a program may call
+    /// glViewport many times a frame; each answer from the server is a round trip). `false`
+    /// when the drawable no longer exists on the server.
     pub fn refresh(&mut self) -> bool {
-        match xlib() {
-            Some(x) => self.query(x).is_some(),
-            None => false,
+        if self.checked {
+            return !self.gone && !self.lost;
         }
+        self.exists()
+    }
+
+    /// Asks the server now (uncached): whether the drawable exists, its size read on the way.
+    pub fn exists(&mut self) -> bool {
+        self.checked = true;
+        xlib().is_some_and(|x| self.query(x).is_some())
     }
 
     /// The program destroyed the drawable (glXDestroyWindow ...): frees what fixedgl made on
@@ -504,7 +522,7 @@ impl XDrawable {
     /// then reads the drawable's size again and gives the framebuffer the new size if the
     /// window was resized (a new frame is drawn after this; its contents are undefined anyway).
     pub fn present(&mut self, ctx: &mut Context) {
-        if self.kind == Kind::Pbuffer || self.gone {
+        if self.kind == Kind::Pbuffer || self.gone || self.lost {
             return;
         }
         let Some(x) = xlib() else { return };
@@ -548,6 +566,11 @@ impl XDrawable {
         // reading the window sees it, and the shared segment is free for the next frame.
         // SAFETY: an open display.
         unsafe { (x.XSync)(dpy, xlib::False) };
+        // A new frame starts: the size is read now (a program that never calls glViewport
+        // again still gets a framebuffer of the window's size) and once more at its first
+        // MakeCurrent or glViewport (a reshape handler running on a ConfigureNotify that arrived
+        // after this).
+        self.checked = false;
         if self.query(x).is_some() {
             let (nw, nh) = (self.size.0.max(1), self.size.1.max(1));
             if (nw, nh) != ctx.size() {
