@@ -617,10 +617,12 @@ pub unsafe extern "C" fn glXQueryVersion(
 
 #[no_mangle]
 pub extern "C" fn glXQueryExtensionsString(dpy: *mut Display, _screen: c_int) -> *const c_char {
-    if dpy.is_null() {
-        return std::ptr::null();
-    }
-    EXTENSIONS.as_ptr()
+    guard("glXQueryExtensionsString", std::ptr::null(), || {
+        if dpy.is_null() {
+            return std::ptr::null();
+        }
+        EXTENSIONS.as_ptr()
+    })
 }
 
 fn string(name: c_int) -> *const c_char {
@@ -634,7 +636,7 @@ fn string(name: c_int) -> *const c_char {
 
 #[no_mangle]
 pub extern "C" fn glXGetClientString(_dpy: *mut Display, name: c_int) -> *const c_char {
-    string(name)
+    guard("glXGetClientString", std::ptr::null(), || string(name))
 }
 
 #[no_mangle]
@@ -643,10 +645,12 @@ pub extern "C" fn glXQueryServerString(
     _screen: c_int,
     name: c_int,
 ) -> *const c_char {
-    if dpy.is_null() {
-        return std::ptr::null();
-    }
-    string(name)
+    guard("glXQueryServerString", std::ptr::null(), || {
+        if dpy.is_null() {
+            return std::ptr::null();
+        }
+        string(name)
+    })
 }
 
 #[no_mangle]
@@ -776,7 +780,8 @@ pub unsafe extern "C" fn glXChooseFBConfig(
         let Some(x) = xwin::xlib() else {
             return std::ptr::null_mut();
         };
-        if dpy.is_null() || xwin::true_color(x, dpy, screen).is_none() && screen != 0 {
+        // SAFETY: an open display.
+        if dpy.is_null() || screen < 0 || screen >= unsafe { (x.XScreenCount)(dpy) } {
             return std::ptr::null_mut();
         }
         // SAFETY: GLX's attribute list.
@@ -1465,12 +1470,14 @@ pub extern "C" fn glXCopyContext(
     _dst: *mut c_void,
     _mask: c_ulong,
 ) {
-    crate::unimplemented("glXCopyContext");
+    guard("glXCopyContext", (), || {
+        crate::unimplemented("glXCopyContext")
+    });
 }
 
 #[no_mangle]
 pub extern "C" fn glXUseXFont(_font: c_ulong, _first: c_int, _count: c_int, _list_base: c_int) {
-    crate::unimplemented("glXUseXFont");
+    guard("glXUseXFont", (), || crate::unimplemented("glXUseXFont"));
 }
 
 /// The GLX functions GetProcAddress answers (those that work).
@@ -1532,7 +1539,7 @@ macro_rules! absent {
     ($($name:ident)*) => {$(
         #[no_mangle]
         pub extern "C" fn $name() -> usize {
-            crate::unimplemented(stringify!($name));
+            guard(stringify!($name), (), || crate::unimplemented(stringify!($name)));
             0
         }
     )*};

@@ -60,8 +60,18 @@ pub fn profile_dir() -> PathBuf {
 /// versioned sonames, and the bare `.so` names PyOpenGL tries first).
 pub fn dropin() -> PathBuf {
     let dir = profile_dir().join("dropin-tests");
-    let lib = profile_dir().join("libfixedgl_capi.so");
-    assert!(lib.is_file(), "{} is missing", lib.display());
+    // `cargo test` builds the cdylib next to the test binaries (deps/) without copying it up to
+    // target/<profile>/ as `cargo build` does: the one in deps/ is the one built with this test.
+    let lib = [profile_dir().join("deps"), profile_dir()]
+        .map(|d| d.join("libfixedgl_capi.so"))
+        .into_iter()
+        .find(|l| l.is_file())
+        .unwrap_or_else(|| {
+            panic!(
+                "libfixedgl_capi.so is missing from {}",
+                profile_dir().display()
+            )
+        });
     std::fs::create_dir_all(&dir).expect("the drop-in directory");
     for name in [
         "libGL.so.1",
