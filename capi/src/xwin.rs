@@ -76,11 +76,24 @@ unsafe extern "C" fn trap_handler(dpy: *mut Display, event: *mut XErrorEvent) ->
     unsafe { previous(dpy, event) }
 }
 
+/// How `trapped` knows the server has answered `f`'s requests.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Wait {
+    /// `f` ends with a request that has a reply (XGetGeometry): its errors came before it.
+    Reply,
+    /// `f`'s requests have no reply (XShmAttach): an XSync after them.
+    Sync,
+}
+
 /// Runs the X requests of `f` on `dpy` with X errors caught instead of reaching the program's
-/// handler (whose default ends the program): `Err(code)` when one of them failed. `XSync` makes
-/// sure asynchronous requests have been answered. Errors of the program's own earlier requests
-/// still go to its handler.
-pub(crate) fn trapped<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R) -> Result<R, u8> {
+/// handler (whose default ends the program): `Err(code)` when one of them failed. Errors of the
+/// program's own earlier requests still go to its handler.
+pub(crate) fn trapped<R>(
+    x: &Xlib,
+    dpy: *mut Display,
+    wait: Wait,
+    f: impl FnOnce() -> R,
+) -> Result<R, u8> {
     let _lock = TRAP_LOCK.lock().unwrap_or_else(|e| e.into_inner());
     // SAFETY: `dpy` is the program's open display (GLX's contract); these are plain Xlib calls.
     unsafe {
@@ -90,7 +103,9 @@ pub(crate) fn trapped<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R) -> 
         let previous = (x.XSetErrorHandler)(Some(trap_handler));
         TRAP_PREVIOUS.store(previous.map_or(0, |p| p as usize), Ordering::SeqCst);
         let r = f();
-        (x.XSync)(dpy, xlib::False);
+        if wait == Wait::Sync {
+            (x.XSync)(dpy, xlib::False);
+        }
         (x.XSetErrorHandler)(previous);
         TRAP_DISPLAY.store(0, Ordering::SeqCst);
         match TRAP_CAUGHT.swap(0, Ordering::SeqCst) {
@@ -222,7 +237,7 @@ impl XDrawable {
         }
         // SAFETY: an open display; XGetWindowAttributes fills the struct.
         let mut wa: xlib::XWindowAttributes = unsafe { std::mem::zeroed() };
-        let ok = trapped(x, dpy, || unsafe {
+        let ok = trapped(x, dpy, Wait::Reply, || unsafe {
             (x.XGetWindowAttributes)(dpy, xid, &mut wa)
         });
         if !matches!(ok, Ok(s) if s != 0) {
@@ -314,7 +329,7 @@ impl XDrawable {
             return None;
         }
         let (mut root, mut px, mut py, mut w, mut h, mut border, mut depth) = (0, 0, 0, 0, 0, 0, 0);
-        let ok = trapped(x, self.dpy, || unsafe {
+        let ok = trapped(x, self.dpy, Wait::Reply, || unsafe {
             // SAFETY: an open display; the out-pointers are locals.
             (x.XGetGeometry)(
                 self.dpy,
@@ -507,7 +522,9 @@ impl XDrawable {
             }
             info.shmaddr = addr.cast();
             im.data = info.shmaddr;
-            let attached = trapped(x, self.dpy, || (ext.XShmAttach)(self.dpy, &mut *info));
+            let attached = trapped(x, self.dpy, Wait::Sync, || {
+                (ext.XShmAttach)(self.dpy, &mut *info)
+            });
             // Marked for removal now: it goes when both sides have detached (or exited).
             libc::shmctl(info.shmid, libc::IPC_RMID, std::ptr::null_mut());
             if !matches!(attached, Ok(s) if s != 0) {
