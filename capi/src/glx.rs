@@ -115,10 +115,14 @@ const EXTENSIONS: &CStr = c"GLX_ARB_create_context GLX_ARB_create_context_profil
 const VENDOR: &CStr = c"fixedgl";
 const VERSION: &CStr = c"1.4";
 
-/// Says `message` on stderr the first time `key` fails.
-fn say(key: &'static str, message: impl FnOnce() -> String) {
-    if crate::say_once(key) {
-        eprintln!("fixedgl: {key}: {}", message());
+/// Says on stderr why a GLX call failed, once for each call and reason (at most 256 lines).
+fn say(call: &'static str, message: impl FnOnce() -> String) {
+    static SAID: Mutex<Vec<String>> = Mutex::new(Vec::new());
+    let line = format!("fixedgl: {call}: {}", message());
+    let mut said = SAID.lock().unwrap_or_else(|e| e.into_inner());
+    if said.len() < 256 && !said.contains(&line) {
+        eprintln!("{line}");
+        said.push(line);
     }
 }
 
