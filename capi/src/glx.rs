@@ -541,9 +541,7 @@ fn make_current(dpy: *mut Display, draw: c_ulong, read: c_ulong, ctx: *mut c_voi
 /// what the context drew is presented as it is. When `Context::swap_buffers()` arrives (with
 /// DRAW_BUFFER/READ_BUFFER), this becomes: present the back buffer, then `gl.ctx.swap_buffers()`.
 fn swap_buffers(gl: &mut Gl) {
-    if let Some(s) = gl.surface.as_mut() {
-        s.present(&mut gl.ctx);
-    }
+    gl.present_frame();
 }
 
 // ----- Entry points ---------------------------------------------------------------------------

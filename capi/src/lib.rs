@@ -30,6 +30,7 @@ pub mod glx;
 pub mod manual;
 pub mod osmesa;
 mod read;
+mod record;
 mod xwin;
 
 pub use generated::proc_address;
