@@ -17,12 +17,16 @@ use fixedgl::{gl, Context};
 
 /// Where a context's frames go when it presents.
 pub trait Surface: Send {
-    /// The drawable's size now (a window may have been resized).
+    /// The drawable's size, as last read (see `refresh`).
     fn size(&self) -> (u32, u32);
+    /// Reads the drawable's size again where it can change (a window: one round trip to the X
+    /// server). Called at MakeCurrent and glViewport; a window also reads it after each present.
+    fn refresh(&mut self) {}
     /// Whether the drawable is double-buffered (presents at SwapBuffers) or single-buffered
     /// (presents at glFlush/glFinish).
     fn double_buffered(&self) -> bool;
-    /// Shows the frame: `ctx`'s colour buffer, read bottom-up as RGBA8.
+    /// Shows the frame: `ctx`'s colour buffer, read bottom-up as RGBA8. A window then reads its
+    /// size and resizes `ctx`'s framebuffer if it changed (for the next frame).
     fn present(&mut self, ctx: &mut Context);
 }
 
@@ -67,6 +71,24 @@ impl Gl {
         self.ctx.raise_error(gl::INVALID_VALUE);
     }
 
+    /// Reads the surface's size again and gives the framebuffer that size if it changed (a
+    /// window was resized): at MakeCurrent and glViewport. The surface's size; `None` without
+    /// one. Not between Begin and End, where the batched vertices must survive.
+    pub(crate) fn fit_surface(&mut self) -> Option<(u32, u32)> {
+        let s = self.surface.as_mut()?;
+        if self.ctx.inside_begin_end() {
+            return Some(s.size());
+        }
+        s.refresh();
+        let (w, h) = s.size();
+        if self.ctx.size() != (w.max(1), h.max(1)) {
+            if let Err(e) = self.ctx.resize(w.max(1), h.max(1)) {
+                eprintln!("fixedgl: cannot resize the framebuffer to {w}x{h}: {e}");
+            }
+        }
+        Some((w, h))
+    }
+
     /// Presents to the surface if it is single-buffered (glFlush, glFinish).
     pub(crate) fn flushed(&mut self) {
         if self.surface.as_ref().is_some_and(|s| !s.double_buffered()) {
@@ -74,14 +96,15 @@ impl Gl {
         }
     }
 
-    /// A frame is done (SwapBuffers, or a flush of a single-buffered drawable): shown on the
-    /// surface, and recorded when `fixedgl run` asks.
+    /// A frame is done (SwapBuffers, or a flush of a single-buffered drawable): recorded when
+    /// `fixedgl run` asks, then shown on the surface (which may then give the framebuffer a
+    /// resized window's new size, so the recording comes first).
     pub(crate) fn present_frame(&mut self) {
-        if let Some(s) = self.surface.as_mut() {
-            s.present(&mut self.ctx);
-        }
         if let Some(r) = self.recorder.as_mut() {
             r.presented(&mut self.ctx);
+        }
+        if let Some(s) = self.surface.as_mut() {
+            s.present(&mut self.ctx);
         }
     }
 }
@@ -137,20 +160,14 @@ pub(crate) fn make_current(p: *mut Gl, surface: Option<Box<dyn Surface>>) -> Res
     // SAFETY: checked above.
     let gl = unsafe { &mut *p };
     gl.thread = Some(me);
-    if let Some(s) = &surface {
-        let (w, h) = s.size();
-        if gl.ctx.size() != (w.max(1), h.max(1)) {
-            if let Err(e) = gl.ctx.resize(w.max(1), h.max(1)) {
-                eprintln!("fixedgl: cannot resize the framebuffer to {w}x{h}: {e}");
-            }
-        }
+    gl.surface = surface;
+    if let Some((w, h)) = gl.fit_surface() {
         if !gl.bound_once {
             gl.ctx.viewport(0, 0, w as i32, h as i32);
             gl.ctx.scissor(0, 0, w as i32, h as i32);
         }
         gl.bound_once = true;
     }
-    gl.surface = surface;
     let _ = CURRENT.try_with(|c| c.set(p));
     Ok(())
 }

@@ -313,14 +313,6 @@ pub unsafe extern "C" fn glDepthRange(n: f64, f: f64) {
     })
 }
 
-/// `glViewport(x, y, width, height)`.
-#[no_mangle]
-pub unsafe extern "C" fn glViewport(x: i32, y: i32, width: i32, height: i32) {
-    with_gl("glViewport", |gl| {
-        gl.ctx.viewport(x, y, width, height);
-    })
-}
-
 /// `glNewList(list, mode)`.
 #[no_mangle]
 pub unsafe extern "C" fn glNewList(list: u32, mode: u32) {

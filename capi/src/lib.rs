@@ -11,7 +11,8 @@
 //!   with BIND_NOW load), does nothing, says so once on stderr, and is NULL from GetProcAddress.
 //! - `manual.rs`: the commands that answer through pointers or return values (queries, names).
 //! - `current.rs`: contexts, the current one per thread, and the panic boundary.
-//! - `egl.rs`, `osmesa.rs`: the window-system APIs that make contexts current on surfaces.
+//! - `egl.rs`, `osmesa.rs`, `glx.rs`: the window-system APIs that make contexts current on
+//!   surfaces; `xwin.rs`: Xlib (loaded at run time) and the X drawables GLX presents into.
 //!
 //! Safety: every entry point trusts its pointers exactly as a GL implementation does (a C
 //! caller promises that each points at what the command reads or writes); NULL is checked
@@ -30,6 +31,7 @@ pub mod manual;
 pub mod osmesa;
 mod read;
 mod record;
+mod xwin;
 
 pub use generated::proc_address;
 

@@ -1,7 +1,8 @@
 //! The GL commands that answer through the caller's memory or a return value: queries, object
-//! names, pixel reads, strings, errors; and Flush/Finish, which also present single-buffered
-//! drawables. Written by hand because each needs the size of what it writes (the generator
-//! leaves every `extern "C" fn gl*` defined here to this file).
+//! names, pixel reads, strings, errors; Flush/Finish, which also present single-buffered
+//! drawables; Viewport, where the framebuffer follows a resized window. Written by hand because
+//! each needs the size of what it writes or does more than the command (the generator leaves
+//! every `extern "C" fn gl*` defined here to this file).
 //!
 //! A query first copies the caller's values into a buffer of the size the pname has, runs the
 //! `Context` method on it, and copies it back: on an error nothing changes, as GL requires. NULL
@@ -299,6 +300,17 @@ pub unsafe extern "C" fn glGetString(name: u32) -> *const u8 {
             strings()[i].as_ptr().cast()
         }
         None => std::ptr::null(),
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glViewport(x: i32, y: i32, width: i32, height: i32) {
+    with_gl("glViewport", |gl| {
+        // A program's reshape handler calls glViewport with the window's new size, and a GLX
+        // program with its own event loop (glxgears) makes no other call then: the framebuffer
+        // follows the window here.
+        gl.fit_surface();
+        gl.ctx.viewport(x, y, width, height);
     })
 }
 
