@@ -152,6 +152,16 @@ impl Pointer {
     /// The null pointer: offset 0 (no data for `BufferData`).
     pub const NULL: Pointer = Pointer::Offset(0);
 
+    /// The pointer as a recording holds it: memory read at draw time ([`Pointer::Client`]) has
+    /// no bytes yet and is recorded empty (its `*Pointer` call replays its errors; each draw
+    /// that reads it records the bytes it read, see [`crate::Context::draw_arrays`]).
+    pub fn recorded(&self) -> Pointer {
+        match self {
+            Pointer::Client(_) => Pointer::Data(Vec::new()),
+            other => other.clone(),
+        }
+    }
+
     /// Whether it names client memory (bytes or a [`ClientPointer`]) rather than an offset.
     pub fn is_client(&self) -> bool {
         !matches!(self, Pointer::Offset(_))

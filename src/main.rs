@@ -16,6 +16,8 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::{Parser, Subcommand, ValueEnum};
+
+mod run;
 use image::RgbaImage;
 
 use fixedgl::compare::compare;
@@ -89,6 +91,24 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run a C or Python program unmodified on fixedgl: its libGL, libEGL, libOpenGL and
+    /// libOSMesa are fixedgl's C ABI library (see docs/c-abi.md).
+    Run {
+        /// Save every context's calls, with a marker at each presented frame (FILE, FILE.2, ...
+        /// for the first, second, ... context).
+        #[arg(long, value_name = "FILE")]
+        record: Option<PathBuf>,
+        /// Replay every presented frame on the real driver and write DIR/index.html comparing
+        /// it with what fixedgl showed; exits non-zero when a frame is over tolerance.
+        #[arg(long, value_name = "DIR")]
+        compare: Option<PathBuf>,
+        /// The program and its arguments, after `--`.
+        #[arg(last = true, required = true, value_name = "PROGRAM")]
+        program: Vec<std::ffi::OsString>,
+    },
+    /// Print the `export LD_LIBRARY_PATH=...` line that makes programs started from a shell use
+    /// fixedgl (`eval "$(fixedgl env)"`).
+    Env,
     /// Replay a recording file on one pipeline and write the image.
     Replay {
         /// The recording.
@@ -123,7 +143,7 @@ impl Backend {
 }
 
 /// `WxH` with both sides in 1..=16384.
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
+pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("size must be WxH, e.g. 256x256, not {s:?}"))?;
@@ -170,6 +190,12 @@ fn main() -> ExitCode {
             size,
             output,
         } => replay(&file, backend, size, output, device),
+        Command::Run {
+            record,
+            compare,
+            program,
+        } => run::run(&program, record.as_deref(), compare.as_deref(), device),
+        Command::Env => run::env(),
     };
     match result {
         Ok(code) => code,
@@ -209,7 +235,7 @@ fn list() -> Result<ExitCode, CliError> {
 /// What a command can fail with: a fixedgl error, a bad command line, or an input file that
 /// cannot be used (the message is the whole diagnostic line, file name first).
 #[derive(Debug)]
-enum CliError {
+pub(crate) enum CliError {
     Fixedgl(Error),
     Usage(String),
     Input(String),
@@ -555,6 +581,38 @@ mod gl_side {
         Ok((gl.read_image(), info, ms))
     }
 
+    /// Replays a program's frames one after the other on one backend (a fresh one when the
+    /// drawable's size changes, replaying the frames before at the new size).
+    #[derive(Default)]
+    pub struct Replayer {
+        backend: Option<((u32, u32), GlBackend)>,
+        history: Vec<Call>,
+    }
+
+    impl Replayer {
+        /// The image after `calls`, which follow the calls of the frames before.
+        pub fn frame(
+            &mut self,
+            size: (u32, u32),
+            calls: &[Call],
+            device: &str,
+        ) -> Result<(RgbaImage, (String, String)), Error> {
+            if self.backend.as_ref().map(|(s, _)| *s) != Some(size) {
+                let mut gl = backend(size.0, size.1, device)?;
+                gl.replay(&self.history);
+                self.backend = Some((size, gl));
+            }
+            self.history.extend_from_slice(calls);
+            let Some((_, gl)) = self.backend.as_mut() else {
+                unreachable!("made above")
+            };
+            gl.replay(calls);
+            gl.finish();
+            let info = (gl.renderer().to_owned(), gl.version().to_owned());
+            Ok((gl.read_image(), info))
+        }
+    }
+
     /// One backend reused across benchmark frames.
     pub struct Bench(GlBackend);
 
@@ -610,6 +668,22 @@ mod gl_side {
         _device: &str,
     ) -> Result<(RgbaImage, (String, String), f64), Error> {
         Err(unavailable())
+    }
+
+    /// Never makes an image.
+    #[derive(Default)]
+    pub struct Replayer;
+
+    impl Replayer {
+        /// Always an error.
+        pub fn frame(
+            &mut self,
+            _size: (u32, u32),
+            _calls: &[Call],
+            _device: &str,
+        ) -> Result<(RgbaImage, (String, String)), Error> {
+            Err(unavailable())
+        }
     }
 
     /// Never constructed.

@@ -39,13 +39,16 @@ pub struct Gl {
     /// Whether the context has been made current before: GL sets the viewport and scissor to
     /// the drawable's size at the first MakeCurrent only.
     pub(crate) bound_once: bool,
+    /// `fixedgl run --record/--compare`'s output, when asked for.
+    recorder: Option<crate::record::Recorder>,
 }
 
 impl Gl {
     /// A context of `width` x `height`, or `None` when it cannot be made (the reason on stderr).
     pub fn new(width: u32, height: u32) -> Option<Gl> {
         match Context::new(width.max(1), height.max(1)) {
-            Ok(ctx) => Some(Gl {
+            Ok(mut ctx) => Some(Gl {
+                recorder: crate::record::Recorder::from_env(&mut ctx),
                 ctx,
                 surface: None,
                 thread: None,
@@ -66,10 +69,19 @@ impl Gl {
 
     /// Presents to the surface if it is single-buffered (glFlush, glFinish).
     pub(crate) fn flushed(&mut self) {
+        if self.surface.as_ref().is_some_and(|s| !s.double_buffered()) {
+            self.present_frame();
+        }
+    }
+
+    /// A frame is done (SwapBuffers, or a flush of a single-buffered drawable): shown on the
+    /// surface, and recorded when `fixedgl run` asks.
+    pub(crate) fn present_frame(&mut self) {
         if let Some(s) = self.surface.as_mut() {
-            if !s.double_buffered() {
-                s.present(&mut self.ctx);
-            }
+            s.present(&mut self.ctx);
+        }
+        if let Some(r) = self.recorder.as_mut() {
+            r.presented(&mut self.ctx);
         }
     }
 }

@@ -722,9 +722,9 @@ pub extern "C" fn eglSwapBuffers(dpy: Handle, surface: Handle) -> EGLBoolean {
         if surface_size(surface).is_none() {
             return fail(EGL_BAD_SURFACE, EGL_FALSE);
         }
-        // A pbuffer has no back buffer: SwapBuffers does nothing (EGL 1.4 §3.9.3), but it
-        // finishes the frame, which a recording marks.
-        crate::current::with_gl("eglSwapBuffers", |gl| gl.ctx.flush());
+        // A pbuffer has no back buffer: SwapBuffers does nothing to it (EGL 1.4 §3.9.3), but it
+        // ends a frame, which `fixedgl run` records.
+        crate::current::with_gl("eglSwapBuffers", |gl| gl.present_frame());
         fail(EGL_SUCCESS, EGL_TRUE)
     })
 }

@@ -29,6 +29,7 @@ pub mod glx;
 pub mod manual;
 pub mod osmesa;
 mod read;
+mod record;
 
 pub use generated::proc_address;
 

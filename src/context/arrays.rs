@@ -52,14 +52,14 @@ impl Context {
     /// INVALID_OPERATION.
     pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::VertexPointer(size, ty, stride, p.clone()));
+        record!(self, Call::VertexPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Vertex, size, ty, stride, &p));
     }
 
     /// `glNormalPointer`: BYTE, SHORT, INT, FLOAT or DOUBLE; otherwise as `vertex_pointer`.
     pub fn normal_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::NormalPointer(ty, stride, p.clone()));
+        record!(self, Call::NormalPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Normal, 3, ty, stride, &p));
     }
 
@@ -67,7 +67,7 @@ impl Context {
     /// normalised by GL 2.1 table 2.9); otherwise as `vertex_pointer`.
     pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::ColorPointer(size, ty, stride, p.clone()));
+        record!(self, Call::ColorPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Color, size, ty, stride, &p));
     }
 
@@ -82,7 +82,7 @@ impl Context {
         let p = pointer.into();
         record!(
             self,
-            Call::SecondaryColorPointer(size, ty, stride, p.clone())
+            Call::SecondaryColorPointer(size, ty, stride, p.recorded())
         );
         self.arrays_do(|a, _| a.pointer(Attr::SecondaryColor, size, ty, stride, &p));
     }
@@ -97,21 +97,21 @@ impl Context {
         pointer: impl Into<Pointer>,
     ) {
         let p = pointer.into();
-        record!(self, Call::TexCoordPointer(size, ty, stride, p.clone()));
+        record!(self, Call::TexCoordPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, u| a.pointer(Attr::TexCoord(u), size, ty, stride, &p));
     }
 
     /// `glFogCoordPointer`: FLOAT or DOUBLE.
     pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::FogCoordPointer(ty, stride, p.clone()));
+        record!(self, Call::FogCoordPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::FogCoord, 1, ty, stride, &p));
     }
 
     /// `glEdgeFlagPointer`: one GLboolean (byte) per element (`&[bool]` or `&[u8]`).
     pub fn edge_flag_pointer(&mut self, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::EdgeFlagPointer(stride, p.clone()));
+        record!(self, Call::EdgeFlagPointer(stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
     }
 
@@ -120,7 +120,7 @@ impl Context {
     /// (texture coordinates on the client active unit) and disables the others.
     pub fn interleaved_arrays(&mut self, format: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::InterleavedArrays(format, stride, p.clone()));
+        record!(self, Call::InterleavedArrays(format, stride, p.recorded()));
         self.arrays_do(|a, u| a.interleaved_arrays(format, stride, &p, u));
     }
 
