@@ -184,7 +184,8 @@ pub fn find_piglit(root: &Path) -> Option<Piglit> {
     Some(Piglit { dir, libs })
 }
 
-/// The four names the C ABI library answers to, as symlinks in `dir` (made afresh).
+/// The names the C ABI library answers to, as symlinks in `dir` (made afresh): those
+/// `fixedgl run` makes (docs/c-abi.md).
 pub fn make_dropin(dir: &Path, lib: &Path) -> std::io::Result<()> {
     let _ = fs::remove_dir_all(dir);
     fs::create_dir_all(dir)?;
@@ -194,6 +195,10 @@ pub fn make_dropin(dir: &Path, lib: &Path) -> std::io::Result<()> {
         "libEGL.so.1",
         "libOpenGL.so.0",
         "libOSMesa.so.8",
+        "libGL.so",
+        "libEGL.so",
+        "libOpenGL.so",
+        "libOSMesa.so",
     ] {
         std::os::unix::fs::symlink(&lib, dir.join(name))?;
     }
