@@ -82,7 +82,10 @@ const SIZE_NAMES: &[&str] = &[
 /// past their end, which a C caller never asks for), and buffer data (which may be used as
 /// indices later).
 fn small_ints(command: &str, param: &str) -> bool {
+    // MultiDraw*'s first and count arrays are sizes in memory: GL reads count[i] elements or
+    // indices, so they must be small, as the scalar sizes of a BOUNDED command are.
     param == "indices"
+        || (command.starts_with("glMultiDraw") && matches!(param, "first" | "count"))
         || command == "glCallLists"
         || (matches!(command, "glBufferData" | "glBufferSubData") && param == "data")
 }

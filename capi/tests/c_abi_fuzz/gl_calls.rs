@@ -3971,8 +3971,8 @@ pub unsafe fn call(i: usize, fz: &mut Fuzz) {
             let _ = glBlendFuncSeparate(sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha);
         }
         387 => {
-            let first: *const i32 = fz.input::<i32>();
-            let count: *const i32 = fz.input::<i32>();
+            let first: *const i32 = fz.indices::<i32>();
+            let count: *const i32 = fz.indices::<i32>();
             fz.bounded = true;
             let mode: u32 = fz.enum_(G_PRIMITIVE_TYPE);
             let drawcount: i32 = fz.int(true) as i32;
@@ -3980,7 +3980,7 @@ pub unsafe fn call(i: usize, fz: &mut Fuzz) {
             let _ = glMultiDrawArrays(mode, first, count, drawcount);
         }
         388 => {
-            let count: *const i32 = fz.input::<i32>();
+            let count: *const i32 = fz.indices::<i32>();
             let indices: *const *const c_void = fz.pointers();
             fz.bounded = true;
             let mode: u32 = fz.enum_(G_PRIMITIVE_TYPE);
