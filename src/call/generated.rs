@@ -613,6 +613,20 @@ pub enum Call {
     MultiTexCoord4d(u32, f64, f64, f64, f64),
     /// `glMultiTexCoord4dv(target, v)`.
     MultiTexCoord4dv(u32, [f64; 4]),
+
+    // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
+    /// `glDrawBuffer(buf)`.
+    DrawBuffer(u32),
+    /// `glReadBuffer(src)`.
+    ReadBuffer(u32),
+    /// `glClearAccum(red, green, blue, alpha)`.
+    ClearAccum(f32, f32, f32, f32),
+    /// `glAccum(op, value)`.
+    Accum(u32, f32),
+    /// `SwapBuffers`, a window-system call (not a GL command).
+    ///
+    /// A window system's buffer swap (glXSwapBuffers, glutSwapBuffers): not a GL command; recorded so that a replay shows the same frames.
+    SwapBuffers,
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -899,7 +913,16 @@ pub const NAMES: &[&str] = &[
     "MultiTexCoord4fv",
     "MultiTexCoord4d",
     "MultiTexCoord4dv",
+    "DrawBuffer",
+    "ReadBuffer",
+    "ClearAccum",
+    "Accum",
+    "SwapBuffers",
 ];
+
+/// The variants that are window-system calls, not GL commands (no row in the command
+/// table, no C entry point of GL's).
+pub const WINSYS: &[&str] = &["SwapBuffers"];
 
 impl Call {
     /// The variant's name: the GL command without `gl`.
@@ -1187,6 +1210,11 @@ impl Call {
             Call::MultiTexCoord4fv(..) => "MultiTexCoord4fv",
             Call::MultiTexCoord4d(..) => "MultiTexCoord4d",
             Call::MultiTexCoord4dv(..) => "MultiTexCoord4dv",
+            Call::DrawBuffer(..) => "DrawBuffer",
+            Call::ReadBuffer(..) => "ReadBuffer",
+            Call::ClearAccum(..) => "ClearAccum",
+            Call::Accum(..) => "Accum",
+            Call::SwapBuffers => "SwapBuffers",
         }
     }
 
@@ -1393,6 +1421,7 @@ impl Call {
                 | Call::BufferSubData(..)
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
+                | Call::SwapBuffers
         )
     }
 
@@ -1683,6 +1712,11 @@ impl Call {
             Call::MultiTexCoord4fv(..) => &[Enum],
             Call::MultiTexCoord4d(..) => &[Enum],
             Call::MultiTexCoord4dv(..) => &[Enum],
+            Call::DrawBuffer(..) => &[Enum],
+            Call::ReadBuffer(..) => &[Enum],
+            Call::ClearAccum(..) => &[],
+            Call::Accum(..) => &[Enum],
+            Call::SwapBuffers => &[],
         }
     }
 }

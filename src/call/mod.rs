@@ -25,7 +25,7 @@ pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
 mod generated;
 
-pub use generated::{Call, NAMES};
+pub use generated::{Call, NAMES, WINSYS};
 
 /// What an argument of a call holds, for the recording format to write it readably (from the
 /// registry's type and enum group of the parameter).

@@ -368,6 +368,11 @@ impl Context {
             Call::MultiTexCoord4fv(target, ref v) => self.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => self.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => self.multi_tex_coord4dv(target, v),
+            Call::DrawBuffer(buf) => self.draw_buffer(buf),
+            Call::ReadBuffer(src) => self.read_buffer(src),
+            Call::ClearAccum(red, green, blue, alpha) => self.clear_accum(red, green, blue, alpha),
+            Call::Accum(op, value) => self.accum(op, value),
+            Call::SwapBuffers => self.swap_buffers(),
         }
     }
 }

@@ -35,6 +35,7 @@
 //! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
 //! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
+pub mod accum;
 pub mod assembly;
 pub mod batch;
 pub mod clip;
@@ -57,11 +58,11 @@ use rayon::prelude::*;
 use std::sync::mpsc::{self, Receiver};
 use std::sync::Mutex;
 
-use crate::state::{Current, Material, State};
+use crate::state::{ContextConfig, Current, Material, State};
 use assembly::Asm;
 use batch::Batch;
 use fragment::{FragCtx, TileBufs};
-use framebuffer::{Framebuffer, TILE, TILE_PIXELS};
+use framebuffer::{Framebuffer, Targets, TILE, TILE_PIXELS};
 use setup::{SetupCtx, Worker};
 use vertex::{Layout, Lighting};
 
@@ -186,9 +187,32 @@ impl Renderer {
 
     /// [`Renderer::new`], or `None` when the framebuffer cannot be allocated (what
     /// `Context::new` reports as [`crate::Error::OutOfMemory`]).
-    pub fn try_new(width: u32, height: u32) -> Option<Self> {
-        let core = Box::new(Core::try_new(width, height)?);
+    /// The framebuffer has the buffers `config` names.
+    pub fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
+        let core = Box::new(Core::try_new(width, height, config)?);
         Some(Self::with_core(core, width, height))
+    }
+
+    /// Resizes the framebuffer to `width` x `height` (drawing what is batched first unless
+    /// `open`: a primitive is open, its vertices are then drawn into the new framebuffer),
+    /// keeping what fits (`Framebuffer::resized`); false, with nothing changed, when the new
+    /// buffers cannot be allocated.
+    pub fn resize(&mut self, state: &State, width: u32, height: u32, open: bool) -> bool {
+        if !open {
+            self.flush(state);
+        }
+        let Some(fb) = self.core().fb.resized(width, height) else {
+            return false;
+        };
+        self.tiles = fb.tiles();
+        self.size = (width, height);
+        self.core().fb = fb;
+        true
+    }
+
+    /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        &mut self.core().fb
     }
 
     fn with_core(core: Box<Core>, width: u32, height: u32) -> Self {
@@ -394,9 +418,9 @@ impl Core {
         }
     }
 
-    fn try_new(width: u32, height: u32) -> Option<Self> {
+    fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
         Some(Core {
-            fb: Framebuffer::try_new(width, height)?,
+            fb: Framebuffer::try_new(width, height, config)?,
             asm: Vec::new(),
             workers: Vec::new(),
         })
@@ -425,11 +449,18 @@ impl Core {
         } else {
             &batch.snapshots
         };
+        let targets = Targets::of(state);
         let fctx = FragCtx {
-            depth_test: state.enables.depth_test,
+            // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
+            depth_test: state.enables.depth_test && fb.config().depth,
             depth_func: state.depth_func,
             depth_mask: state.depth_mask,
-            color_mask: state.color_mask,
+            // DrawBuffer(NONE): fragments go through every test and write no colour.
+            color_mask: if targets.none() {
+                [false; 4]
+            } else {
+                state.color_mask
+            },
             color_sum: layout.spec.is_some(),
             rl: ctx.rl,
             lighting: lighting.as_ref(),
@@ -470,13 +501,13 @@ impl Core {
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if workers.len() == 1 || largest <= count / workers.len() {
                 setup_by_primitives(workers, &ctx, &v, piece, count);
-                rasterise(fb, workers, &fctx, ctx.tiles_x);
+                rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
                 assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
-                    rasterise(fb, workers, &fctx, ctx.tiles_x);
+                    rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
                 }
             }
             start = end;
@@ -556,14 +587,38 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
 }
 
 /// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
-/// primitives first, then worker 1's, ..., which is submission order.
-fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) {
-    fb.color
+/// primitives first, then worker 1's, ..., which is submission order. Colour goes to the
+/// buffers `targets` names: the main buffer, the front buffer, or both (the front one as each
+/// tile's second colour slice).
+fn rasterise(
+    fb: &mut Framebuffer,
+    workers: &[Worker],
+    fctx: &FragCtx,
+    tiles_x: usize,
+    targets: Targets,
+) {
+    let (tx, ty) = fb.tiles();
+    let Framebuffer {
+        color,
+        front,
+        depth,
+        stencil,
+        ..
+    } = fb;
+    // The first target is each tile's colour slice, a second one its `color2`.
+    let (primary, secondary) = match (targets.front, front.as_mut()) {
+        (true, Some(f)) if !targets.main => (f, None),
+        (true, Some(f)) => (color, Some(f)),
+        _ => (color, None),
+    };
+    let seconds = framebuffer::tile_slices(secondary, tx * ty);
+    primary
         .par_chunks_mut(TILE_PIXELS)
-        .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
-        .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
+        .zip(seconds)
+        .zip(depth.par_chunks_mut(TILE_PIXELS))
+        .zip(stencil.par_chunks_mut(TILE_PIXELS))
         .enumerate()
-        .for_each(|(t, ((color, depth), stencil))| {
+        .for_each(|(t, (((color, color2), depth), stencil))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
@@ -572,6 +627,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
             }
             let mut bufs = TileBufs {
                 color,
+                color2,
                 depth,
                 stencil,
                 x: ((t % tiles_x) * TILE) as i32,

@@ -216,7 +216,7 @@ impl GlBackend {
             Call::ClearColor(red, green, blue, alpha) => gl.clear_color(red, green, blue, alpha),
             Call::ClearDepth(depth) => gl.clear_depth(depth),
             Call::ClearStencil(s) => gl.clear_stencil(s),
-            Call::Clear(mask) => gl.clear(mask),
+            Call::Clear(mask) => self.clear(mask),
             Call::DepthFunc(func) => gl.depth_func(func),
             Call::DepthMask(flag) => gl.depth_mask(flag),
             Call::ColorMask(red, green, blue, alpha) => gl.color_mask(red, green, blue, alpha),
@@ -405,6 +405,11 @@ impl GlBackend {
             Call::MultiTexCoord4fv(target, ref v) => gl.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => gl.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => gl.multi_tex_coord4dv(target, v),
+            Call::DrawBuffer(buf) => self.draw_buffer(buf),
+            Call::ReadBuffer(src) => self.read_buffer(src),
+            Call::ClearAccum(red, green, blue, alpha) => gl.clear_accum(red, green, blue, alpha),
+            Call::Accum(op, value) => self.accum(op, value),
+            Call::SwapBuffers => self.swap_buffers(),
         }
     }
 }
@@ -2159,5 +2164,29 @@ impl Safe<'_> {
     pub(super) fn multi_tex_coord4dv(self, target: u32, v: &[f64; 4]) {
         // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
         unsafe { self.0.MultiTexCoord4dv(target, v.as_ptr()) }
+    }
+
+    /// `glDrawBuffer(buf)`.
+    pub(super) fn draw_buffer(self, buf: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.DrawBuffer(buf) }
+    }
+
+    /// `glReadBuffer(src)`.
+    pub(super) fn read_buffer(self, src: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.ReadBuffer(src) }
+    }
+
+    /// `glClearAccum(red, green, blue, alpha)`.
+    pub(super) fn clear_accum(self, red: f32, green: f32, blue: f32, alpha: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.ClearAccum(red, green, blue, alpha) }
+    }
+
+    /// `glAccum(op, value)`.
+    pub(super) fn accum(self, op: u32, value: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Accum(op, value) }
     }
 }

@@ -9,6 +9,7 @@ mod common;
 
 mod arrays;
 mod attrib;
+mod buffers;
 mod error_agreement;
 mod errors;
 mod fragment_gl;
