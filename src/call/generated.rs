@@ -627,6 +627,28 @@ pub enum Call {
     ///
     /// A window system's buffer swap (glXSwapBuffers, glutSwapBuffers): not a GL command; recorded so that a replay shows the same frames.
     SwapBuffers,
+
+    // Selection and feedback (GL 2.1 §5.2, §5.3): context/select.rs
+    /// `glRenderMode(mode)`.
+    RenderMode(u32),
+    /// `glSelectBuffer(size, buffer)`.
+    ///
+    /// The size only: the buffer is the context's (`Context::selection_buffer`).
+    SelectBuffer(i32),
+    /// `glFeedbackBuffer(size, type, buffer)`.
+    ///
+    /// The size and type only: the buffer is the context's (`Context::feedback_values`).
+    FeedbackBuffer(i32, u32),
+    /// `glInitNames()`.
+    InitNames,
+    /// `glLoadName(name)`.
+    LoadName(u32),
+    /// `glPushName(name)`.
+    PushName(u32),
+    /// `glPopName()`.
+    PopName,
+    /// `glPassThrough(token)`.
+    PassThrough(f32),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -918,6 +940,14 @@ pub const NAMES: &[&str] = &[
     "ClearAccum",
     "Accum",
     "SwapBuffers",
+    "RenderMode",
+    "SelectBuffer",
+    "FeedbackBuffer",
+    "InitNames",
+    "LoadName",
+    "PushName",
+    "PopName",
+    "PassThrough",
 ];
 
 /// The variants that are window-system calls, not GL commands (no row in the command
@@ -1215,6 +1245,14 @@ impl Call {
             Call::ClearAccum(..) => "ClearAccum",
             Call::Accum(..) => "Accum",
             Call::SwapBuffers => "SwapBuffers",
+            Call::RenderMode(..) => "RenderMode",
+            Call::SelectBuffer(..) => "SelectBuffer",
+            Call::FeedbackBuffer(..) => "FeedbackBuffer",
+            Call::InitNames => "InitNames",
+            Call::LoadName(..) => "LoadName",
+            Call::PushName(..) => "PushName",
+            Call::PopName => "PopName",
+            Call::PassThrough(..) => "PassThrough",
         }
     }
 
@@ -1422,6 +1460,9 @@ impl Call {
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
                 | Call::SwapBuffers
+                | Call::RenderMode(..)
+                | Call::SelectBuffer(..)
+                | Call::FeedbackBuffer(..)
         )
     }
 
@@ -1717,6 +1758,14 @@ impl Call {
             Call::ClearAccum(..) => &[],
             Call::Accum(..) => &[Enum],
             Call::SwapBuffers => &[],
+            Call::RenderMode(..) => &[Enum],
+            Call::SelectBuffer(..) => &[],
+            Call::FeedbackBuffer(..) => &[Plain, Enum],
+            Call::InitNames => &[],
+            Call::LoadName(..) => &[],
+            Call::PushName(..) => &[],
+            Call::PopName => &[],
+            Call::PassThrough(..) => &[],
         }
     }
 }

@@ -230,6 +230,12 @@ impl Context {
             gl::READ_BUFFER => e(s.read_buffer),
             gl::ACCUM_CLEAR_VALUE => norm(s.accum_clear.to_array()),
             gl::RENDER_MODE => e(s.render_mode),
+            // Selection and feedback (GL 2.1 table 6.31 and GL 1.1's sizes).
+            gl::NAME_STACK_DEPTH => i(self.renderer.sink.name_stack_depth() as i32),
+            gl::MAX_NAME_STACK_DEPTH => i(crate::cpu::feedback::MAX_NAME_STACK_DEPTH as i32),
+            gl::SELECTION_BUFFER_SIZE => i(self.renderer.sink.select_size.unwrap_or(0) as i32),
+            gl::FEEDBACK_BUFFER_SIZE => i(self.renderer.sink.feedback_size.unwrap_or(0) as i32),
+            gl::FEEDBACK_BUFFER_TYPE => e(self.renderer.sink.feedback_type),
             // Display lists, attribute stacks (table 6.36, 6.35)
             gl::LIST_BASE => e(s.list_base),
             gl::LIST_INDEX => e(self.list_index_and_mode().0),

@@ -24,6 +24,7 @@ mod dispatch;
 mod framebuffer;
 mod lighting;
 mod raster;
+mod select;
 #[cfg(test)]
 mod tests;
 mod vertex;
@@ -119,6 +120,7 @@ impl Context {
     pub fn reset(&mut self) {
         let (w, h) = self.size();
         self.renderer.discard_batch();
+        self.renderer.sink = Default::default();
         self.state = State::with_config(w, h, self.state.config);
         self.error = gl::NO_ERROR;
         self.begin_mode = None;

@@ -39,6 +39,7 @@ pub mod accum;
 pub mod assembly;
 pub mod batch;
 pub mod clip;
+pub mod feedback;
 pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
@@ -88,6 +89,9 @@ pub struct Renderer {
     /// The background draw of the previous batch: hands back the core, the batch and its
     /// vertex output.
     pending: Option<Mutex<Receiver<Drawn>>>,
+    /// Selection and feedback (GL 2.1 §5.2, §5.3): where batches go in SELECT and FEEDBACK
+    /// render modes.
+    pub(crate) sink: feedback::Sink,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
     /// Diagnostic: batches drawn in the background so far.
@@ -224,6 +228,7 @@ impl Renderer {
             verts: Processed::default(),
             spare: None,
             pending: None,
+            sink: feedback::Sink::default(),
             count_coverage: false,
             background_draws: 0,
             #[cfg(test)]
@@ -260,6 +265,9 @@ impl Renderer {
     pub fn flush_if_large(&mut self, state: &State) {
         if self.batch.idx.len() < FLUSH_AT {
             return;
+        }
+        if state.render_mode != crate::gl::RENDER {
+            return self.flush(state);
         }
         // A caller running on the pool itself draws in place: blocking one of the pool's
         // threads on a job queued behind it could wait forever.
@@ -393,6 +401,19 @@ impl Renderer {
         self.wait();
         if self.batch.is_empty() {
             self.batch.clear();
+            return;
+        }
+        if state.render_mode != crate::gl::RENDER {
+            // Hit records or feedback tokens instead of fragments.
+            let Renderer {
+                batch,
+                verts,
+                sink,
+                tiles,
+                ..
+            } = self;
+            sink.process(state, batch, &mut verts.vout, &mut verts.wins, *tiles);
+            batch.clear();
             return;
         }
         let count = self.count_coverage;

@@ -234,13 +234,18 @@ impl GlBackend {
     }
 
     /// What a value of DRAW_BUFFER, READ_BUFFER, DOUBLEBUFFER or ACCUM_*_BITS is for the
-    /// framebuffer this backend stands in for (the driver answers for its FBO).
+    /// framebuffer this backend stands in for (the driver answers for its FBO), and
+    /// SELECTION_BUFFER_SIZE and FEEDBACK_BUFFER_SIZE as given.
     pub(super) fn winsys_value(&self, pname: u32) -> Option<f64> {
         let c = &self.config;
         Some(match pname {
             gl::DRAW_BUFFER => f64::from(self.draw_buffer),
             gl::READ_BUFFER => f64::from(self.read_buffer),
             gl::DOUBLEBUFFER => f64::from(u8::from(c.double_buffered)),
+            // The sizes given, where the driver got room for at least one value (select.rs).
+            gl::SELECTION_BUFFER_SIZE | gl::FEEDBACK_BUFFER_SIZE => {
+                self.given_buffer_size(pname)? as f64
+            }
             gl::ACCUM_RED_BITS
             | gl::ACCUM_GREEN_BITS
             | gl::ACCUM_BLUE_BITS
@@ -444,7 +449,7 @@ impl GlBackend {
             || !valid
             || self.accum.is_none()
             || self.inside_begin_end
-            || self.render_mode() != gl::RENDER
+            || self.current_render_mode() != gl::RENDER
         {
             return;
         }
@@ -463,14 +468,6 @@ impl GlBackend {
                 }
             }
         }
-    }
-
-    /// The driver's RENDER_MODE.
-    pub(super) fn render_mode(&self) -> u32 {
-        let mut m = 0;
-        // SAFETY: RENDER_MODE is one integer.
-        unsafe { self.raw.GetIntegerv(gl::RENDER_MODE, &mut m) };
-        m as u32
     }
 
     /// The window cut by the scissor box as the driver holds it, inclusive `[x0, y0, x1, y1]`
@@ -650,7 +647,7 @@ impl GlBackend {
         if self.accum.is_none() {
             return self.raise(gl::INVALID_OPERATION);
         }
-        if self.render_mode() != gl::RENDER {
+        if self.current_render_mode() != gl::RENDER {
             return;
         }
         let r = self.scissor_rect();

@@ -410,6 +410,14 @@ impl GlBackend {
             Call::ClearAccum(red, green, blue, alpha) => gl.clear_accum(red, green, blue, alpha),
             Call::Accum(op, value) => self.accum(op, value),
             Call::SwapBuffers => self.swap_buffers(),
+            Call::RenderMode(mode) => self.render_mode(mode),
+            Call::SelectBuffer(size) => self.select_buffer(size),
+            Call::FeedbackBuffer(size, type_) => self.feedback_buffer(size, type_),
+            Call::InitNames => gl.init_names(),
+            Call::LoadName(name) => gl.load_name(name),
+            Call::PushName(name) => gl.push_name(name),
+            Call::PopName => gl.pop_name(),
+            Call::PassThrough(token) => gl.pass_through(token),
         }
     }
 }
@@ -2188,5 +2196,41 @@ impl Safe<'_> {
     pub(super) fn accum(self, op: u32, value: f32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.Accum(op, value) }
+    }
+
+    /// `glRenderMode(mode)`.
+    pub(super) fn render_mode(self, mode: u32) -> i32 {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RenderMode(mode) }
+    }
+
+    /// `glInitNames()`.
+    pub(super) fn init_names(self) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.InitNames() }
+    }
+
+    /// `glLoadName(name)`.
+    pub(super) fn load_name(self, name: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.LoadName(name) }
+    }
+
+    /// `glPushName(name)`.
+    pub(super) fn push_name(self, name: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PushName(name) }
+    }
+
+    /// `glPopName()`.
+    pub(super) fn pop_name(self) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PopName() }
+    }
+
+    /// `glPassThrough(token)`.
+    pub(super) fn pass_through(self, token: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PassThrough(token) }
     }
 }

@@ -22,6 +22,7 @@ mod osmesa;
 mod phong;
 pub mod raw;
 mod replay;
+mod select;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
 mod texture;
@@ -73,6 +74,8 @@ pub struct GlBackend {
     /// The emulated accumulation buffer, bottom-up rows of `accum_size` (buffers.rs).
     accum: Option<Vec<[i16; 4]>>,
     accum_size: (u32, u32),
+    /// The selection and feedback buffers the driver writes (select.rs).
+    select: select::Buffers,
     /// The backend's own sticky error (a slice too short), merged with the driver's flag.
     error: u32,
     /// A Begin is open (mirrors the front end's Begin/End phase, GL 2.1 §2.6.3).
@@ -271,6 +274,7 @@ impl GlBackend {
             // Emulated on an FBO only: OSMesa's framebuffer has the driver's own.
             accum: (config.accum && on_fbo).then(|| vec![[0; 4]; width as usize * height as usize]),
             accum_size: (width, height),
+            select: select::Buffers::default(),
             error: gl::NO_ERROR,
             inside_begin_end: false,
             phong: false,

@@ -28,6 +28,7 @@ mod report;
 mod report_browser;
 mod robustness;
 mod scenes;
+mod select;
 mod soak;
 mod state_initial;
 mod texture;
