@@ -542,3 +542,38 @@ fn selection_and_feedback_errors_match_the_driver() {
         }
     }
 }
+
+#[test]
+fn the_picking_scene_s_hits_match_the_driver() {
+    use fixedgl::scenes::picking;
+    let Some(scene) = fixedgl::scenes::find("picking") else {
+        panic!("the picking scene is registered")
+    };
+    let (w, h) = scene.default_size;
+    let (cpu, calls) = scene.record(w, h).expect("recorded");
+    let Some(mut drv) = crate::common::test_backend(w, h) else {
+        return;
+    };
+    drv.replay(&calls);
+    assert_eq!(drv.get_error(), gl::NO_ERROR);
+    let ours = cpu.selection_buffer().to_vec();
+    let theirs = drv.selection_buffer().to_vec();
+    let count = drv.render_mode_result();
+    let (a, b) = (picking::hits(&ours, count), picking::hits(&theirs, count));
+    assert!(a.len() >= 2, "the pick box covers two objects: {b:?}");
+    assert_eq!(ours.len(), theirs.len(), "{a:?} vs {b:?}");
+    // The same objects, in the same order, and the same one nearest.
+    let names = |h: &[picking::Hit]| h.iter().map(|x| x.names.clone()).collect::<Vec<_>>();
+    assert_eq!(names(&a), names(&b));
+    assert_eq!(picking::nearest(&a), picking::nearest(&b));
+    // Depths: the window z of perspective-transformed vertices, scaled to 2^32. fixedgl
+    // transforms by the modelview, then the projection, Mesa by their product (with fused
+    // multiply-adds), so the single-precision z can differ in its last bits, each of which is
+    // 2^32 · 2^-24 = 256 here (z in [0.5, 1)).
+    for (x, y) in a.iter().zip(&b) {
+        for (p, q) in [(x.z_min, y.z_min), (x.z_max, y.z_max)] {
+            let d = p.abs_diff(q);
+            assert!(d <= 4 * 256, "{a:?} vs {b:?}");
+        }
+    }
+}
