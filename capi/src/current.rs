@@ -45,6 +45,10 @@ pub struct Gl {
     pub(crate) bound_once: bool,
     /// `fixedgl run --record/--compare`'s output, when asked for.
     recorder: Option<crate::record::Recorder>,
+    /// The program's selection and feedback buffers (address, size in values), filled from
+    /// the context's own when RenderMode leaves SELECT or FEEDBACK.
+    pub(crate) select_out: (usize, usize),
+    pub(crate) feedback_out: (usize, usize),
 }
 
 impl Gl {
@@ -58,6 +62,8 @@ impl Gl {
                 thread: None,
                 doomed: false,
                 bound_once: false,
+                select_out: (0, 0),
+                feedback_out: (0, 0),
             }),
             Err(e) => {
                 eprintln!("fixedgl: cannot create a context: {e}");

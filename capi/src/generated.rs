@@ -163,7 +163,9 @@ pub unsafe extern "C" fn glTexImage2D(
 /// `glDrawBuffer(buf)`.
 #[no_mangle]
 pub unsafe extern "C" fn glDrawBuffer(buf: u32) {
-    unimplemented("glDrawBuffer");
+    with_gl("glDrawBuffer", |gl| {
+        gl.ctx.draw_buffer(buf);
+    })
 }
 
 /// `glClear(mask)`.
@@ -302,7 +304,9 @@ pub unsafe extern "C" fn glPixelStorei(pname: u32, param: i32) {
 /// `glReadBuffer(src)`.
 #[no_mangle]
 pub unsafe extern "C" fn glReadBuffer(src: u32) {
-    unimplemented("glReadBuffer");
+    with_gl("glReadBuffer", |gl| {
+        gl.ctx.read_buffer(src);
+    })
 }
 
 /// `glDepthRange(n, f)`.
@@ -1900,59 +1904,52 @@ pub unsafe extern "C" fn glTexGeniv(coord: u32, pname: u32, params: *const i32) 
     })
 }
 
-/// `glFeedbackBuffer(size, type, buffer)`.
-#[no_mangle]
-pub unsafe extern "C" fn glFeedbackBuffer(size: i32, type_: u32, buffer: *mut f32) {
-    unimplemented("glFeedbackBuffer");
-}
-
-/// `glSelectBuffer(size, buffer)`.
-#[no_mangle]
-pub unsafe extern "C" fn glSelectBuffer(size: i32, buffer: *mut u32) {
-    unimplemented("glSelectBuffer");
-}
-
-/// `glRenderMode(mode)`.
-#[no_mangle]
-pub unsafe extern "C" fn glRenderMode(mode: u32) -> i32 {
-    unimplemented("glRenderMode");
-    0
-}
-
 /// `glInitNames()`.
 #[no_mangle]
 pub unsafe extern "C" fn glInitNames() {
-    unimplemented("glInitNames");
+    with_gl("glInitNames", |gl| {
+        gl.ctx.init_names();
+    })
 }
 
 /// `glLoadName(name)`.
 #[no_mangle]
 pub unsafe extern "C" fn glLoadName(name: u32) {
-    unimplemented("glLoadName");
+    with_gl("glLoadName", |gl| {
+        gl.ctx.load_name(name);
+    })
 }
 
 /// `glPassThrough(token)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPassThrough(token: f32) {
-    unimplemented("glPassThrough");
+    with_gl("glPassThrough", |gl| {
+        gl.ctx.pass_through(token);
+    })
 }
 
 /// `glPopName()`.
 #[no_mangle]
 pub unsafe extern "C" fn glPopName() {
-    unimplemented("glPopName");
+    with_gl("glPopName", |gl| {
+        gl.ctx.pop_name();
+    })
 }
 
 /// `glPushName(name)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPushName(name: u32) {
-    unimplemented("glPushName");
+    with_gl("glPushName", |gl| {
+        gl.ctx.push_name(name);
+    })
 }
 
 /// `glClearAccum(red, green, blue, alpha)`.
 #[no_mangle]
 pub unsafe extern "C" fn glClearAccum(red: f32, green: f32, blue: f32, alpha: f32) {
-    unimplemented("glClearAccum");
+    with_gl("glClearAccum", |gl| {
+        gl.ctx.clear_accum(red, green, blue, alpha);
+    })
 }
 
 /// `glClearIndex(c)`.
@@ -1970,7 +1967,9 @@ pub unsafe extern "C" fn glIndexMask(mask: u32) {
 /// `glAccum(op, value)`.
 #[no_mangle]
 pub unsafe extern "C" fn glAccum(op: u32, value: f32) {
-    unimplemented("glAccum");
+    with_gl("glAccum", |gl| {
+        gl.ctx.accum(op, value);
+    })
 }
 
 /// `glPopAttrib()`.
@@ -4462,6 +4461,7 @@ pub unsafe extern "C" fn glUnmapBufferOES(target: u32) -> u8 {
 /// `None` for one fixedgl does not implement, so that a program can tell.
 pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
     let f: *const c_void = match name {
+        b"glAccum" => glAccum as *const c_void,
         b"glActiveTexture" => glActiveTexture as *const c_void,
         b"glActiveTextureARB" => glActiveTexture as *const c_void,
         b"glAlphaFunc" => glAlphaFunc as *const c_void,
@@ -4491,6 +4491,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glCallList" => glCallList as *const c_void,
         b"glCallLists" => glCallLists as *const c_void,
         b"glClear" => glClear as *const c_void,
+        b"glClearAccum" => glClearAccum as *const c_void,
         b"glClearColor" => glClearColor as *const c_void,
         b"glClearDepth" => glClearDepth as *const c_void,
         b"glClearStencil" => glClearStencil as *const c_void,
@@ -4550,6 +4551,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glDisableClientState" => glDisableClientState as *const c_void,
         b"glDrawArrays" => glDrawArrays as *const c_void,
         b"glDrawArraysEXT" => glDrawArrays as *const c_void,
+        b"glDrawBuffer" => glDrawBuffer as *const c_void,
         b"glDrawElements" => glDrawElements as *const c_void,
         b"glDrawRangeElements" => glDrawRangeElements as *const c_void,
         b"glDrawRangeElementsEXT" => glDrawRangeElements as *const c_void,
@@ -4562,6 +4564,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glEndList" => glEndList as *const c_void,
         b"glEndQuery" => glEndQuery as *const c_void,
         b"glEndQueryARB" => glEndQuery as *const c_void,
+        b"glFeedbackBuffer" => glFeedbackBuffer as *const c_void,
         b"glFinish" => glFinish as *const c_void,
         b"glFlush" => glFlush as *const c_void,
         b"glFogCoordPointer" => glFogCoordPointer as *const c_void,
@@ -4625,6 +4628,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetTexParameterfv" => glGetTexParameterfv as *const c_void,
         b"glGetTexParameteriv" => glGetTexParameteriv as *const c_void,
         b"glHint" => glHint as *const c_void,
+        b"glInitNames" => glInitNames as *const c_void,
         b"glInterleavedArrays" => glInterleavedArrays as *const c_void,
         b"glIsBuffer" => glIsBuffer as *const c_void,
         b"glIsBufferARB" => glIsBuffer as *const c_void,
@@ -4646,6 +4650,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glLoadIdentity" => glLoadIdentity as *const c_void,
         b"glLoadMatrixd" => glLoadMatrixd as *const c_void,
         b"glLoadMatrixf" => glLoadMatrixf as *const c_void,
+        b"glLoadName" => glLoadName as *const c_void,
         b"glLoadTransposeMatrixd" => glLoadTransposeMatrixd as *const c_void,
         b"glLoadTransposeMatrixdARB" => glLoadTransposeMatrixd as *const c_void,
         b"glLoadTransposeMatrixf" => glLoadTransposeMatrixf as *const c_void,
@@ -4746,6 +4751,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glNormal3sv" => glNormal3sv as *const c_void,
         b"glNormalPointer" => glNormalPointer as *const c_void,
         b"glOrtho" => glOrtho as *const c_void,
+        b"glPassThrough" => glPassThrough as *const c_void,
         b"glPixelStoref" => glPixelStoref as *const c_void,
         b"glPixelStorei" => glPixelStorei as *const c_void,
         b"glPointSize" => glPointSize as *const c_void,
@@ -4755,10 +4761,14 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glPopAttrib" => glPopAttrib as *const c_void,
         b"glPopClientAttrib" => glPopClientAttrib as *const c_void,
         b"glPopMatrix" => glPopMatrix as *const c_void,
+        b"glPopName" => glPopName as *const c_void,
         b"glPushAttrib" => glPushAttrib as *const c_void,
         b"glPushClientAttrib" => glPushClientAttrib as *const c_void,
         b"glPushMatrix" => glPushMatrix as *const c_void,
+        b"glPushName" => glPushName as *const c_void,
+        b"glReadBuffer" => glReadBuffer as *const c_void,
         b"glReadPixels" => glReadPixels as *const c_void,
+        b"glRenderMode" => glRenderMode as *const c_void,
         b"glRotated" => glRotated as *const c_void,
         b"glRotatef" => glRotatef as *const c_void,
         b"glScaled" => glScaled as *const c_void,
@@ -4798,6 +4808,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glSecondaryColor3usvEXT" => glSecondaryColor3usv as *const c_void,
         b"glSecondaryColorPointer" => glSecondaryColorPointer as *const c_void,
         b"glSecondaryColorPointerEXT" => glSecondaryColorPointer as *const c_void,
+        b"glSelectBuffer" => glSelectBuffer as *const c_void,
         b"glShadeModel" => glShadeModel as *const c_void,
         b"glStencilFunc" => glStencilFunc as *const c_void,
         b"glStencilFuncSeparate" => glStencilFuncSeparate as *const c_void,

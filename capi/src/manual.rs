@@ -375,3 +375,59 @@ pub unsafe extern "C" fn glIsQuery(id: u32) -> u8 {
 getter!(glGetQueryiv, get_queryiv, i32, |_| Some(1));
 getter!(glGetQueryObjectiv, get_query_objectiv, i32, |_| Some(1));
 getter!(glGetQueryObjectuiv, get_query_objectuiv, u32, |_| Some(1));
+
+#[no_mangle]
+pub unsafe extern "C" fn glSelectBuffer(size: i32, buffer: *mut u32) {
+    with_gl("glSelectBuffer", |gl| {
+        let before = gl.ctx.state().render_mode;
+        gl.ctx.select_buffer(size);
+        // Taken only when the command is (SELECT mode and a negative size are its errors).
+        if before != gl::SELECT && size >= 0 {
+            gl.select_out = (buffer as usize, size as usize);
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glFeedbackBuffer(size: i32, ty: u32, buffer: *mut f32) {
+    with_gl("glFeedbackBuffer", |gl| {
+        let before = gl.ctx.state().render_mode;
+        gl.ctx.feedback_buffer(size, ty);
+        if before != gl::FEEDBACK && size >= 0 {
+            gl.feedback_out = (buffer as usize, size as usize);
+        }
+    })
+}
+
+/// `glRenderMode`: the context keeps the hit records and feedback values; when the mode ends
+/// they are copied into the program's buffer (as many as it holds).
+#[no_mangle]
+pub unsafe extern "C" fn glRenderMode(mode: u32) -> i32 {
+    with_gl("glRenderMode", |gl| {
+        let before = gl.ctx.state().render_mode;
+        let result = gl.ctx.render_mode(mode);
+        if gl.ctx.state().render_mode == before && before != mode {
+            return result; // refused: nothing ended
+        }
+        match before {
+            gl::SELECT => {
+                let (at, size) = gl.select_out;
+                // SAFETY: the buffer SelectBuffer was given holds `size` values.
+                let out = unsafe { read::slice_mut(at as *mut u32, size) };
+                let src = gl.ctx.selection_buffer();
+                let n = src.len().min(out.len());
+                out[..n].copy_from_slice(&src[..n]);
+            }
+            gl::FEEDBACK => {
+                let (at, size) = gl.feedback_out;
+                // SAFETY: the buffer FeedbackBuffer was given holds `size` values.
+                let out = unsafe { read::slice_mut(at as *mut f32, size) };
+                let src = gl.ctx.feedback_values();
+                let n = src.len().min(out.len());
+                out[..n].copy_from_slice(&src[..n]);
+            }
+            _ => {}
+        }
+        result
+    })
+}

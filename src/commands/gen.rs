@@ -16,6 +16,8 @@ use std::path::PathBuf;
 
 /// GL versions whose commands the table lists in full (the C ABI exports each of them).
 const FULL_VERSIONS: [&str; 6] = ["1.0", "1.1", "1.2", "1.3", "1.4", "1.5"];
+/// The `version` of an annotated window-system call (`winsys`), which gl.xml does not have.
+const WINSYS: &str = "winsys";
 /// Later versions whose commands the table lists when fixedgl implements them.
 const LATER_VERSIONS: [&str; 2] = ["2.0", "2.1"];
 
@@ -168,6 +170,9 @@ struct Annotation {
     out: bool,
     /// The variant carries the bytes written through a buffer mapping (`MapWrites`).
     written: bool,
+    /// Not a GL command but a window-system call recorded with the GL ones (SwapBuffers): no
+    /// registry entry, no parameters, never in the command table.
+    winsys: bool,
     exec: Option<String>,
     replay: Replay,
     doc: Option<String>,
@@ -207,6 +212,7 @@ fn annotations() -> Vec<Annotation> {
             null: false,
             out: false,
             written: false,
+            winsys: false,
             exec: None,
             replay: Replay::Driver,
             doc,
@@ -221,6 +227,7 @@ fn annotations() -> Vec<Annotation> {
                 None if flag == "null" => a.null = true,
                 None if flag == "out" => a.out = true,
                 None if flag == "written" => a.written = true,
+                None if flag == "winsys" => a.winsys = true,
                 Some(("count", f)) => a.count = Some(f.to_string()),
                 Some(("tuple", t)) => a.tuple = Some(t.to_string()),
                 Some(("exec", f)) => a.exec = Some(f.to_string()),
@@ -520,6 +527,9 @@ fn arm(out: &mut String, c: &Implemented, body: &str) {
 }
 
 fn prototype_doc(xml: &XmlCommand) -> String {
+    if xml.version == WINSYS {
+        return format!("`{}`, a window-system call (not a GL command)", xml.name);
+    }
     let params: Vec<&str> = xml.params.iter().map(|p| p.name.as_str()).collect();
     format!("`gl{}({})`", xml.name, params.join(", "))
 }
@@ -557,6 +567,15 @@ fn gen_call(cmds: &[Implemented]) -> String {
     );
     s.push_str("pub const NAMES: &[&str] = &[\n");
     for c in cmds {
+        let _ = writeln!(s, "    \"{}\",", c.ann.name);
+    }
+    s.push_str("];\n\n");
+    s.push_str(
+        "/// The variants that are window-system calls, not GL commands (no row in the command\n\
+         /// table, no C entry point of GL's).\n",
+    );
+    s.push_str("pub const WINSYS: &[&str] = &[\n");
+    for c in cmds.iter().filter(|c| c.ann.winsys) {
         let _ = writeln!(s, "    \"{}\",", c.ann.name);
     }
     s.push_str("];\n\nimpl Call {\n");
@@ -759,6 +778,7 @@ fn gen_replay(cmds: &[Implemented]) -> String {
     let wrappable = |c: &&Implemented| {
         // A returned pointer (MapBuffer's) is the backend's own business, never a wrapper's.
         !c.xml.ret.contains('*')
+            && c.xml.version != WINSYS
             && c.fields.len() == c.xml.params.len()
             && c.fields.iter().all(|f| {
                 matches!(
@@ -1180,10 +1200,22 @@ fn generate() -> Vec<(&'static str, String)> {
         .iter()
         .map(|a| {
             assert!(seen.insert(a.name.clone()), "{} annotated twice", a.name);
-            let xml = by_name
-                .get(a.name.as_str())
-                .unwrap_or_else(|| panic!("gl{} is not a GL 1.0 to 2.1 command", a.name));
-            Implemented::new((*xml).clone(), a.clone())
+            let xml = match by_name.get(a.name.as_str()) {
+                Some(xml) => (*xml).clone(),
+                None if a.winsys => XmlCommand {
+                    name: a.name.clone(),
+                    ret: "void".to_string(),
+                    params: Vec::new(),
+                    version: WINSYS.to_string(),
+                },
+                None => panic!("gl{} is not a GL 1.0 to 2.1 command", a.name),
+            };
+            assert!(
+                !a.winsys || matches!(a.replay, Replay::Fields(_)),
+                "{}: a window-system call needs replay=",
+                a.name
+            );
+            Implemented::new(xml, a.clone())
         })
         .collect();
     let ann_by_name: HashMap<&str, &Annotation> =
@@ -1193,7 +1225,9 @@ fn generate() -> Vec<(&'static str, String)> {
     let exported: Vec<XmlCommand> = all
         .iter()
         .filter(|x| {
-            FULL_VERSIONS.contains(&x.version.as_str()) || ann_by_name.contains_key(x.name.as_str())
+            x.version != WINSYS
+                && (FULL_VERSIONS.contains(&x.version.as_str())
+                    || ann_by_name.contains_key(x.name.as_str()))
         })
         .cloned()
         .collect();
