@@ -1422,6 +1422,7 @@ impl Call {
                 | Call::MultiTexCoord4fv(..)
                 | Call::MultiTexCoord4d(..)
                 | Call::MultiTexCoord4dv(..)
+                | Call::SwapBuffers
         )
     }
 
