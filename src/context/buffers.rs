@@ -98,7 +98,7 @@ impl Context {
     /// contents afterwards undefined; fixedgl keeps them, as llvmpipe's software window system
     /// does (measured under GLX: the back buffer reads the same after a swap). Nothing on a
     /// single-buffered context, and nothing between Begin and End (GLX leaves that undefined;
-    /// it raises no GL error).
+    /// Mesa's swap raises no GL error there, so the command table lists it as allowed inside).
     pub fn swap_buffers(&mut self) {
         record!(self, Call::SwapBuffers);
         if self.begin_mode.is_some() {

@@ -8,7 +8,7 @@
 //! and NaN value is i32::MIN, then its low 16 bits), and sums wrapping in 16 bits. GL leaves
 //! overflow undefined; Mesa neither clamps nor saturates, and neither does fixedgl. RETURN
 //! converts with `unorm8` (Mesa's `float_to_ubyte`). Measured against Mesa's own glAccum on
-//! llvmpipe through OSMesa, value for value (`tests/it/accum.rs`). The GL backend's emulation
+//! llvmpipe through OSMesa, value for value (`tests/it/buffers.rs`). The GL backend's emulation
 //! of the accumulation buffer uses these same functions.
 
 use crate::gl;

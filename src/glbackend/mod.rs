@@ -701,8 +701,10 @@ impl GlBackend {
     pub fn replay_frame(&mut self, calls: &[Call]) {
         self.make_current();
         let phong = self.phong;
-        // The client array state PopClientAttrib restores, for the shadow.
+        // The client array state PopClientAttrib restores, for the shadow, and the draw and
+        // read buffers PopAttrib restores on the driver.
         let saved_arrays = self.arrays.clone();
+        let saved_buffers = (self.draw_buffer, self.read_buffer);
         // SAFETY: context current; no pointers.
         unsafe {
             self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
@@ -726,6 +728,7 @@ impl GlBackend {
             self.raw.PopAttrib();
         }
         self.restore_client_arrays(saved_arrays);
+        (self.draw_buffer, self.read_buffer) = saved_buffers;
         if !phong && self.phong {
             self.phong = false;
             // SAFETY: context current.
