@@ -32,3 +32,4 @@ mod state_initial;
 mod texture;
 mod texture_errors;
 mod texture_gl;
+mod window;
