@@ -19,7 +19,8 @@ use crate::{gl, Call, Context, Error};
 
 /// The keys of the viewer, as printed by `h`.
 pub const KEYS: &str = "\
-keys:  1 CPU  2 GL  3 difference  0 or Tab all side by side  (--compare)
+keys:  1 CPU  2 GL  3 difference at full size, 0 all three  (--compare)
+       Tab  the next of these
        Space or F  flip CPU and GL in place                   (--compare)
        + or =  / -  difference amplification x2 / /2          (--compare)
        N Right PageDown  next scene    P Left PageUp  previous scene
@@ -158,25 +159,36 @@ pub fn run(scenes: &[&'static Scene], config: ViewConfig) -> Result<RunStats, Er
     }
 }
 
-/// The GL side of the comparison: the real backend with the `gl` feature.
+/// The GL side of the comparison: the real backend with the `gl` feature (`None` only in unit
+/// tests, which check sizes without a driver).
 #[cfg(feature = "gl")]
-struct GlSide(crate::glbackend::GlBackend);
+struct GlSide(Option<crate::glbackend::GlBackend>);
 
 #[cfg(feature = "gl")]
 impl GlSide {
     fn new(w: u32, h: u32, device: &str) -> Result<Self, Error> {
         let choice: crate::glbackend::DeviceChoice = device.parse().unwrap_or_default();
-        crate::glbackend::GlBackend::new(w, h, &choice).map(GlSide)
+        crate::glbackend::GlBackend::new(w, h, &choice).map(|b| GlSide(Some(b)))
+    }
+
+    #[cfg(test)]
+    fn unavailable() -> Self {
+        GlSide(None)
     }
 
     fn size(&self) -> (u32, u32) {
-        self.0.size()
+        self.0.as_ref().map_or((0, 0), |b| b.size())
     }
 
     /// The frame's calls on the driver, from the state the backend started in.
     fn render(&mut self, calls: &[Call]) -> RgbaImage {
-        self.0.replay_frame(calls);
-        self.0.read_image()
+        match self.0.as_mut() {
+            Some(b) => {
+                b.replay_frame(calls);
+                b.read_image()
+            }
+            None => RgbaImage::new(1, 1),
+        }
     }
 }
 
@@ -192,6 +204,11 @@ impl GlSide {
              to compare with; rebuild with default features"
                 .into(),
         ))
+    }
+
+    #[cfg(test)]
+    fn unavailable() -> Self {
+        GlSide
     }
 
     fn size(&self) -> (u32, u32) {
@@ -282,10 +299,16 @@ impl SceneViewer {
         self.scenes[self.current]
     }
 
-    /// The size a scene is rendered at when its window opens.
+    /// The layout shown (side by side until a key picks one panel).
+    fn layout(&self) -> Layout {
+        self.compare.as_ref().map_or(Layout::All, |c| c.layout)
+    }
+
+    /// The size a scene is rendered at when its window opens or the layout changes: `--size`,
+    /// else the scene's own size, scaled down to fit three across when three are shown.
     fn panel_for(&self, scene: &Scene) -> (u32, u32) {
         let (w, h) = self.size.unwrap_or(scene.default_size);
-        if self.size.is_some() || !self.comparing {
+        if self.size.is_some() || !self.comparing || self.layout() != Layout::All {
             return (w, h);
         }
         let s = (f64::from(MAX_PANEL.0) / f64::from(w))
@@ -297,10 +320,10 @@ impl SceneViewer {
 
     fn window_size(&self, scene: &Scene) -> (u32, u32) {
         let panel = self.panel_for(scene);
-        match (&self.compare, self.comparing) {
-            (Some(c), _) => c.layout.window_size(panel),
-            (None, true) => Layout::All.window_size(panel),
-            (None, false) => panel,
+        if self.comparing {
+            self.layout().window_size(panel)
+        } else {
+            panel
         }
     }
 
@@ -435,8 +458,13 @@ impl SceneViewer {
             _ => None,
         };
         if let Some(layout) = layout {
-            // The window keeps its size; the panels take it.
+            // One panel is shown at the scene's full size, three scaled to fit across: the
+            // window is asked for that size, and the panels follow whatever it gets.
             c.layout = layout;
+            let size = self.window_size(self.scene());
+            if size != d.size() {
+                d.set_size(size.0, size.1);
+            }
         } else {
             match key {
                 Key::Space | Key::Char('f') => c.flipped = !c.flipped,
@@ -559,6 +587,21 @@ mod tests {
         v.comparing = true;
         assert_eq!(v.panel_for(scene), (400, 400));
         assert_eq!(v.window_size(scene), (1216, 400 + BAR));
+        v.compare = Some(Compare {
+            cpu: Context::new(1, 1).unwrap(),
+            gl: GlSide::unavailable(),
+            layout: Layout::Gl,
+            flipped: false,
+            gain: HEAT_GAIN,
+            cpu_ms: None,
+            gl_ms: None,
+            percent_off: 0.0,
+        });
+        assert_eq!(
+            v.window_size(scene),
+            (800, 800 + BAR),
+            "one panel at full size"
+        );
         v.size = Some((123, 45));
         assert_eq!(v.panel_for(scene), (123, 45), "--size is taken as it is");
     }
