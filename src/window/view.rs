@@ -243,6 +243,9 @@ struct SceneViewer {
     frames_in_scene: u64,
     /// The drawable's clock when the current scene's animation started.
     started: f64,
+    /// The scene time the next frame shows, from which the clock goes on (after a scene switch,
+    /// a restart or a resume): `started` is set from it at that frame.
+    pending: Option<f64>,
     /// The scene time shown while paused.
     paused: Option<f64>,
     compare: Option<Compare>,
@@ -274,6 +277,7 @@ impl SceneViewer {
             frames_per_scene: config.options.frames,
             frames_in_scene: 0,
             started: 0.0,
+            pending: None,
             paused: None,
             compare: None,
             error: None,
@@ -366,12 +370,12 @@ impl SceneViewer {
         t
     }
 
-    /// Switches to scene `index` (wrapping), restarting its clock at `now`, and asks for its
-    /// window size.
+    /// Switches to scene `index` (wrapping), its clock at 0 from the next frame, and asks for
+    /// its window size.
     fn show_scene(&mut self, index: usize, d: &mut Drawable) {
         self.current = index % self.scenes.len();
         self.frames_in_scene = 0;
-        self.started = d.time();
+        self.pending = Some(0.0);
         if self.paused.is_some() {
             self.paused = Some(0.0);
         }
@@ -480,12 +484,8 @@ impl SceneViewer {
 
 impl GlEventListener for SceneViewer {
     fn display(&mut self, gl: &mut Context, d: &mut Drawable) {
-        if self
-            .frames_per_scene
-            .is_some_and(|n| self.frames_in_scene >= n)
-            && self.current + 1 < self.scenes.len()
-        {
-            self.show_scene(self.current + 1, d);
+        if let Some(t0) = self.pending.take() {
+            self.started = d.time() - t0;
         }
         let t = self.scene_time(d) as f32;
         if self.compare.is_some() {
@@ -502,6 +502,15 @@ impl GlEventListener for SceneViewer {
         }
         self.frames_in_scene += 1;
         d.set_title(self.title(d.fps()));
+        // `--frames N` with several scenes: N of each, the next one asked for now so that its
+        // window size is granted before its first frame.
+        if self
+            .frames_per_scene
+            .is_some_and(|n| self.frames_in_scene >= n)
+            && self.current + 1 < self.scenes.len()
+        {
+            self.show_scene(self.current + 1, d);
+        }
     }
 
     fn key_pressed(&mut self, e: &KeyEvent, d: &mut Drawable) {
@@ -518,7 +527,7 @@ impl GlEventListener for SceneViewer {
             Key::Char('a') => {
                 self.paused = match self.paused {
                     Some(t) => {
-                        self.started = d.time() - t;
+                        self.pending = Some(t);
                         None
                     }
                     None => Some(self.scene_time(d)),
@@ -526,7 +535,7 @@ impl GlEventListener for SceneViewer {
                 d.repaint();
             }
             Key::Char('r') => {
-                self.started = d.time();
+                self.pending = Some(0.0);
                 if self.paused.is_some() {
                     self.paused = Some(0.0);
                 }

@@ -857,6 +857,40 @@ fn view_presents_the_scene_frames() {
         );
     }
 
+    // Two scenes, two frames each: the second starts its clock at 0 (its still picture).
+    let two = view(
+        &[
+            "triangle",
+            "cube-colors",
+            "--size",
+            "200x160",
+            "--frames",
+            "2",
+        ],
+        "two",
+    );
+    assert!(
+        !two.join("frame-00004.png").exists(),
+        "2 frames of each, not more"
+    );
+    let triangle = fixedgl::scenes::find("triangle").unwrap();
+    let (mut still, _) = triangle.record(200, 160).unwrap();
+    assert_same("first scene", &frame(&two, 1), &opaque(still.to_image()));
+    let (mut still, _) = scene.record(200, 160).unwrap();
+    assert_same(
+        "second scene, frame 0",
+        &frame(&two, 2),
+        &opaque(still.to_image()),
+    );
+    let step = 1.0 / 60.0;
+    let t = (3.0 * step - 2.0 * step) as f32;
+    let (mut next, _) = scene.record_at(200, 160, t).unwrap();
+    assert_same(
+        "second scene, frame 1",
+        &frame(&two, 3),
+        &opaque(next.to_image()),
+    );
+
     #[cfg(feature = "gl")]
     {
         use fixedgl::window::view::{BAR, GUTTER};
