@@ -26,7 +26,7 @@
 //! - **Order of calls.** As JOGL's `GLDrawableHelper`: `init` once, then `reshape(0, 0, w, h)`
 //!   with `glViewport(0, 0, w, h)` already made, then `display` for every frame; `reshape` again
 //!   (viewport first) whenever the window's size changes; `dispose` when the window closes.
-//! - **Resizing.** The context's framebuffer follows the window ([`follow_size`]). Until
+//! - **Resizing.** The context's framebuffer follows the window (`follow_size`). Until
 //!   `Context::resize` exists this makes a new context, whose GL state is that of a new context:
 //!   `init` then runs again before `reshape`, exactly as JOGL calls `init` again when a drawable's
 //!   context is recreated (a JOGL listener must already tolerate that).
