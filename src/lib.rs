@@ -40,6 +40,9 @@ pub mod glu;
 pub mod glut;
 pub mod report;
 pub mod scenes;
+// Windows and animation: a Context in a window, JOGL-style listeners, `fixedgl view`.
+#[cfg(feature = "window")]
+pub mod window;
 
 pub use arrays::Pointer;
 pub use call::Call;

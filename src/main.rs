@@ -109,6 +109,31 @@ enum Command {
     /// Print the `export LD_LIBRARY_PATH=...` line that makes programs started from a shell use
     /// fixedgl (`eval "$(fixedgl env)"`).
     Env,
+    /// Show scenes in a window, animated where the scene moves; with --compare, the CPU
+    /// rendering, the driver's and their difference side by side, live. Press H in the window for
+    /// the keys.
+    View {
+        /// Scene names, or `all` (N / P switch between them).
+        #[arg(required = true)]
+        scenes: Vec<String>,
+        /// Show CPU | GL | difference (keys 1 2 3 0 choose, Space flips CPU and GL, + and -
+        /// change the difference amplification).
+        #[arg(long)]
+        compare: bool,
+        /// Size WxH each scene is rendered at (default: the scene's; with --compare scaled to fit
+        /// three across).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Frames a second for animated scenes (default 60).
+        #[arg(long, value_parser = parse_fps)]
+        fps: Option<f64>,
+        /// Present N frames of each scene, then exit.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+        frames: Option<u64>,
+        /// Write every presented frame to DIR as frame-00000.png, frame-00001.png, ...
+        #[arg(long, value_name = "DIR")]
+        record_frames: Option<PathBuf>,
+    },
     /// Replay a recording file on one pipeline and write the image.
     Replay {
         /// The recording.
@@ -159,6 +184,14 @@ pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
+/// A frame rate in (0, 1000].
+fn parse_fps(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(f) if f > 0.0 && f <= 1000.0 => Ok(f),
+        _ => Err(format!("frames a second must be in (0, 1000], got {s:?}")),
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let device = cli.device.as_str();
@@ -184,6 +217,16 @@ fn main() -> ExitCode {
             threads,
             json,
         } => bench(&scenes, size, frames, threads, json, device),
+        Command::View {
+            scenes,
+            compare,
+            size,
+            fps,
+            frames,
+            record_frames,
+        } => select(&scenes, false).and_then(|selected| {
+            view(&selected, compare, size, fps, frames, record_frames, device)
+        }),
         Command::Replay {
             file,
             backend,
@@ -535,6 +578,57 @@ fn replay(
     img.save(&out)?;
     println!("{}", out.display());
     Ok(ExitCode::SUCCESS)
+}
+
+/// `fixedgl view`: the scenes in a window (fixedgl::window::view).
+#[cfg(feature = "window")]
+fn view(
+    selected: &[&'static Scene],
+    compare: bool,
+    size: Option<(u32, u32)>,
+    fps: Option<f64>,
+    frames: Option<u64>,
+    record_frames: Option<PathBuf>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    use fixedgl::window::{view, Options};
+    let config = view::ViewConfig {
+        compare,
+        size,
+        device: device.to_owned(),
+        fps,
+        options: Options {
+            frames,
+            record_frames,
+        },
+    };
+    let stats = view::run(selected, config)?;
+    if frames.is_some() {
+        println!(
+            "{} frames in {:.2} s ({:.1} fps)",
+            stats.frames, stats.seconds, stats.fps
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Without the `window` feature there is no window to open.
+#[cfg(not(feature = "window"))]
+fn view(
+    _selected: &[&'static Scene],
+    _compare: bool,
+    _size: Option<(u32, u32)>,
+    _fps: Option<f64>,
+    _frames: Option<u64>,
+    _record_frames: Option<PathBuf>,
+    _device: &str,
+) -> Result<ExitCode, CliError> {
+    Err(Error::Window(
+        "this fixedgl was built without the `window` feature; rebuild with default features \
+         (cargo build --features window) to open windows"
+            .into(),
+    )
+    .into())
 }
 
 /// The GL side of every command: the real backend with the `gl` feature.

@@ -21,6 +21,7 @@ pub const SCENES: [Scene; 1] = [Scene {
     tolerance: LECTURE,
     default_size: (800, 800),
     draw: picking,
+    animate: None,
 }];
 
 /// The cursor, in window coordinates (y up, as GLUT programs compute `height - mouse_y`), at

@@ -37,3 +37,4 @@ mod state_initial;
 mod texture;
 mod texture_errors;
 mod texture_gl;
+mod window;
