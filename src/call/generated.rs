@@ -647,6 +647,14 @@ pub enum Call {
     BeginQuery(u32, u32),
     /// `glEndQuery(target)`.
     EndQuery(u32),
+
+    // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
+    /// `glLineStipple(factor, pattern)`.
+    LineStipple(i32, u16),
+    /// `glPolygonStipple(mask)`.
+    ///
+    /// The mask as the caller passed it: the unpack modes in effect say how it is read.
+    PolygonStipple(Vec<u8>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -941,6 +949,8 @@ pub const NAMES: &[&str] = &[
     "DeleteQueries",
     "BeginQuery",
     "EndQuery",
+    "LineStipple",
+    "PolygonStipple",
 ];
 
 impl Call {
@@ -1237,6 +1247,8 @@ impl Call {
             Call::DeleteQueries(..) => "DeleteQueries",
             Call::BeginQuery(..) => "BeginQuery",
             Call::EndQuery(..) => "EndQuery",
+            Call::LineStipple(..) => "LineStipple",
+            Call::PolygonStipple(..) => "PolygonStipple",
         }
     }
 
@@ -1745,6 +1757,8 @@ impl Call {
             Call::DeleteQueries(..) => &[],
             Call::BeginQuery(..) => &[Enum],
             Call::EndQuery(..) => &[Enum],
+            Call::LineStipple(..) => &[],
+            Call::PolygonStipple(..) => &[],
         }
     }
 }

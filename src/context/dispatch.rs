@@ -384,6 +384,8 @@ impl Context {
             Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
             Call::BeginQuery(target, id) => self.begin_query(target, id),
             Call::EndQuery(target) => self.end_query(target),
+            Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }

@@ -413,6 +413,8 @@ impl GlBackend {
             Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
             Call::BeginQuery(target, id) => gl.begin_query(target, id),
             Call::EndQuery(target) => gl.end_query(target),
+            Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }
@@ -2179,5 +2181,11 @@ impl Safe<'_> {
     pub(super) fn end_query(self, target: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.EndQuery(target) }
+    }
+
+    /// `glLineStipple(factor, pattern)`.
+    pub(super) fn line_stipple(self, factor: i32, pattern: u16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.LineStipple(factor, pattern) }
     }
 }

@@ -23,6 +23,7 @@ mod replay;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
 mod query;
+mod stipple;
 mod texture;
 
 use std::cell::Cell;

@@ -23,6 +23,8 @@ pub mod arrays;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
+// Line and polygon stipple (scenes/stipple.rs)
+pub mod stipple;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -106,6 +108,7 @@ static SCENES: &[Scene] = &[
     texture::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    stipple::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

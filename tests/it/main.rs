@@ -32,6 +32,7 @@ mod robustness;
 mod scenes;
 mod soak;
 mod state_initial;
+mod stipple;
 mod texture;
 mod texture_errors;
 mod texture_gl;
