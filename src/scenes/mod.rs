@@ -25,6 +25,8 @@ pub mod projective;
 pub mod texture;
 // Line and polygon stipple (scenes/stipple.rs)
 pub mod stipple;
+// GLU quadrics (scenes/quadrics.rs)
+pub mod quadrics;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -109,6 +111,7 @@ static SCENES: &[Scene] = &[
     projective::SCENES[0],
     projective::SCENES[1],
     stipple::SCENES[0],
+    quadrics::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
