@@ -69,7 +69,9 @@ pub(crate) fn unpack_polygon_stipple(modes: &PixelModes, data: &[u8]) -> Option<
     Some(rows)
 }
 
-/// The bytes a stipple unpacks from or packs into under `modes` (`None`: more than `usize`).
+/// The bytes a stipple unpacks from or packs into under `modes` (`None`: more than `usize`);
+/// the GL backend checks a recorded mask with it.
+#[cfg(any(test, feature = "gl"))]
 pub(crate) fn polygon_stipple_bytes(modes: &PixelModes) -> Option<usize> {
     bitmap_layout(modes).map(|l| l.3)
 }

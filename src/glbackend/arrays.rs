@@ -208,8 +208,11 @@ impl GlBackend {
                 });
                 a.unmap_buffer(target)?;
                 let mut mapped: *mut c_void = std::ptr::null_mut();
-                // SAFETY: BUFFER_MAP_POINTER writes one pointer.
-                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, &mut mapped) };
+                // The binding takes `*const *mut`; the driver writes through it, so the pointer
+                // comes from a mutable borrow.
+                let out = std::ptr::addr_of_mut!(mapped).cast_const();
+                // SAFETY: BUFFER_MAP_POINTER writes one pointer, into `mapped`.
+                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, out) };
                 if !mapped.is_null() {
                     // SAFETY: the driver maps the whole store of the buffer bound to `target`,
                     // whose size the shadow holds (`size`: the same BufferData made both), and

@@ -182,6 +182,9 @@ mod with_libglu {
     const RTLD_NOW: c_int = 2;
 
     type Q = *mut c_void;
+    type Callback = unsafe extern "C" fn(Q, u32, Option<unsafe extern "C" fn(u32)>);
+    type Cylinder = unsafe extern "C" fn(Q, f64, f64, f64, i32, i32);
+    type PartialDisk = unsafe extern "C" fn(Q, f64, f64, i32, i32, f64, f64);
 
     /// The libGLU entry points the tests call.
     struct LibGlu {
@@ -191,11 +194,11 @@ mod with_libglu {
         normals: unsafe extern "C" fn(Q, u32),
         orientation: unsafe extern "C" fn(Q, u32),
         texture: unsafe extern "C" fn(Q, u8),
-        callback: unsafe extern "C" fn(Q, u32, Option<unsafe extern "C" fn(u32)>),
+        callback: Callback,
         sphere: unsafe extern "C" fn(Q, f64, i32, i32),
-        cylinder: unsafe extern "C" fn(Q, f64, f64, f64, i32, i32),
+        cylinder: Cylinder,
         disk: unsafe extern "C" fn(Q, f64, f64, i32, i32),
-        partial_disk: unsafe extern "C" fn(Q, f64, f64, i32, i32, f64, f64),
+        partial_disk: PartialDisk,
         error_string: unsafe extern "C" fn(u32) -> *const c_char,
     }
 
@@ -210,27 +213,31 @@ mod with_libglu {
                 return None;
             }
             macro_rules! sym {
-                ($name:literal) => {{
+                ($name:literal, $ty:ty) => {{
                     let p = dlsym(h, $name.as_ptr());
                     if p.is_null() {
                         return None;
                     }
-                    std::mem::transmute::<*mut c_void, _>(p)
+                    std::mem::transmute::<*mut c_void, $ty>(p)
                 }};
             }
+            type Set = unsafe extern "C" fn(Q, u32);
             Some(LibGlu {
-                new_quadric: sym!(c"gluNewQuadric"),
-                delete_quadric: sym!(c"gluDeleteQuadric"),
-                draw_style: sym!(c"gluQuadricDrawStyle"),
-                normals: sym!(c"gluQuadricNormals"),
-                orientation: sym!(c"gluQuadricOrientation"),
-                texture: sym!(c"gluQuadricTexture"),
-                callback: sym!(c"gluQuadricCallback"),
-                sphere: sym!(c"gluSphere"),
-                cylinder: sym!(c"gluCylinder"),
-                disk: sym!(c"gluDisk"),
-                partial_disk: sym!(c"gluPartialDisk"),
-                error_string: sym!(c"gluErrorString"),
+                new_quadric: sym!(c"gluNewQuadric", unsafe extern "C" fn() -> Q),
+                delete_quadric: sym!(c"gluDeleteQuadric", unsafe extern "C" fn(Q)),
+                draw_style: sym!(c"gluQuadricDrawStyle", Set),
+                normals: sym!(c"gluQuadricNormals", Set),
+                orientation: sym!(c"gluQuadricOrientation", Set),
+                texture: sym!(c"gluQuadricTexture", unsafe extern "C" fn(Q, u8)),
+                callback: sym!(c"gluQuadricCallback", Callback),
+                sphere: sym!(c"gluSphere", unsafe extern "C" fn(Q, f64, i32, i32)),
+                cylinder: sym!(c"gluCylinder", Cylinder),
+                disk: sym!(c"gluDisk", unsafe extern "C" fn(Q, f64, f64, i32, i32)),
+                partial_disk: sym!(c"gluPartialDisk", PartialDisk),
+                error_string: sym!(
+                    c"gluErrorString",
+                    unsafe extern "C" fn(u32) -> *const c_char
+                ),
             })
         }
     }

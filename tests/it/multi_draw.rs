@@ -178,7 +178,7 @@ fn recorded_calls_round_trip_the_text_format() {
         2,
     )));
     let mut text = Vec::new();
-    if let Err(e) = fixedgl::recording::write_recording(&[call.clone()], &mut text) {
+    if let Err(e) = fixedgl::recording::write_recording(std::slice::from_ref(&call), &mut text) {
         panic!("{e}");
     }
     match fixedgl::recording::read_recording(&text[..]) {

@@ -151,8 +151,11 @@ fn attribute_groups_save_the_stipples() {
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }
 
+/// A named drawing.
+type Picture = (&'static str, fn(&mut Context));
+
 /// Pictures whose every pixel is compared with the driver's.
-fn pictures() -> Vec<(&'static str, fn(&mut Context))> {
+fn pictures() -> Vec<Picture> {
     vec![
         ("lines restart, strips run on", |c| {
             c.ortho(0.0, 96.0, 0.0, 96.0, -1.0, 1.0);
