@@ -421,6 +421,8 @@ pub struct State {
     pub logic_op: u32,
     // Objects and units (tables 6.15, 6.16, 6.19)
     pub textures: crate::texture::Textures,
+    /// Line and polygon stipple (tables 6.12, 6.13; context/stipple.rs).
+    pub stipple: Stipple,
 }
 
 impl State {
@@ -497,6 +499,7 @@ impl State {
             blend: Blend::default(),
             logic_op: gl::COPY,
             textures: crate::texture::Textures::default(),
+            stipple: Stipple::default(),
         }
     }
 
@@ -639,6 +642,29 @@ impl Default for Blend {
             equation_rgb: gl::FUNC_ADD,
             equation_alpha: gl::FUNC_ADD,
             color: Vec4::ZERO,
+        }
+    }
+}
+
+/// Line stipple (GL 2.1 §3.4.2, table 6.12) and polygon stipple (§3.5.6, table 6.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stipple {
+    /// `LINE_STIPPLE_PATTERN`: bit i (from the least significant) is the i-th pixel of 16.
+    pub line_pattern: u16,
+    /// `LINE_STIPPLE_REPEAT`: the factor, clamped to [1, 256] when specified.
+    pub line_repeat: i32,
+    /// `POLYGON_STIPPLE`: row r is window rows y with y mod 32 = r; bit x (from the least
+    /// significant) is window columns with x mod 32 = x.
+    pub polygon: [u32; 32],
+}
+
+impl Default for Stipple {
+    /// Tables 6.12, 6.13: pattern all ones, repeat 1, polygon stipple all ones.
+    fn default() -> Self {
+        Self {
+            line_pattern: 0xFFFF,
+            line_repeat: 1,
+            polygon: [u32::MAX; 32],
         }
     }
 }

@@ -289,6 +289,13 @@ pub unsafe fn tex_sub_image_2d(
     unsafe { unpack(gl, width, height, format, ty, p) }.unwrap_or_default()
 }
 
+/// PolygonStipple's 32x32 mask, a bitmap read as the unpack modes lay it out; none for NULL
+/// (the command then answers INVALID_OPERATION, as for a short mask).
+pub unsafe fn polygon_stipple(gl: &mut Gl, p: *const u8) -> Vec<u8> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, 32, 32, gl::COLOR_INDEX, gl::BITMAP, p.cast()) }.unwrap_or_default()
+}
+
 /// MultiDrawElements' index arrays: each an offset into the ELEMENT_ARRAY_BUFFER or
 /// `count[i]` indices read now; none for NULL or a negative `drawcount` (the command answers).
 pub unsafe fn multi_draw_elements(

@@ -1768,7 +1768,9 @@ pub unsafe extern "C" fn glLightModeliv(pname: u32, params: *const i32) {
 /// `glLineStipple(factor, pattern)`.
 #[no_mangle]
 pub unsafe extern "C" fn glLineStipple(factor: i32, pattern: u16) {
-    unimplemented("glLineStipple");
+    with_gl("glLineStipple", |gl| {
+        gl.ctx.line_stipple(factor, pattern);
+    })
 }
 
 /// `glMaterialf(face, pname, param)`.
@@ -1808,7 +1810,10 @@ pub unsafe extern "C" fn glMaterialiv(face: u32, pname: u32, params: *const i32)
 /// `glPolygonStipple(mask)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const u8) {
-    unimplemented("glPolygonStipple");
+    with_gl("glPolygonStipple", |gl| {
+        let mask = args::polygon_stipple(gl, mask);
+        gl.ctx.execute(&Call::PolygonStipple(mask));
+    })
 }
 
 /// `glShadeModel(mode)`.
@@ -2240,12 +2245,6 @@ pub unsafe extern "C" fn glGetPixelMapuiv(map: u32, values: *mut u32) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetPixelMapusv(map: u32, values: *mut u16) {
     unimplemented("glGetPixelMapusv");
-}
-
-/// `glGetPolygonStipple(mask)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut u8) {
-    unimplemented("glGetPolygonStipple");
 }
 
 /// `glFrustum(left, right, bottom, top, zNear, zFar)`.
@@ -4609,6 +4608,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetPointerv" => glGetPointerv as *const c_void,
         b"glGetPointervEXT" => glGetPointerv as *const c_void,
         b"glGetPointervKHR" => glGetPointerv as *const c_void,
+        b"glGetPolygonStipple" => glGetPolygonStipple as *const c_void,
         b"glGetQueryObjectiv" => glGetQueryObjectiv as *const c_void,
         b"glGetQueryObjectivARB" => glGetQueryObjectiv as *const c_void,
         b"glGetQueryObjectivEXT" => glGetQueryObjectiv as *const c_void,
@@ -4645,6 +4645,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glLightfv" => glLightfv as *const c_void,
         b"glLighti" => glLighti as *const c_void,
         b"glLightiv" => glLightiv as *const c_void,
+        b"glLineStipple" => glLineStipple as *const c_void,
         b"glLineWidth" => glLineWidth as *const c_void,
         b"glListBase" => glListBase as *const c_void,
         b"glLoadIdentity" => glLoadIdentity as *const c_void,
@@ -4758,6 +4759,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glPolygonMode" => glPolygonMode as *const c_void,
         b"glPolygonModeNV" => glPolygonMode as *const c_void,
         b"glPolygonOffset" => glPolygonOffset as *const c_void,
+        b"glPolygonStipple" => glPolygonStipple as *const c_void,
         b"glPopAttrib" => glPopAttrib as *const c_void,
         b"glPopClientAttrib" => glPopClientAttrib as *const c_void,
         b"glPopMatrix" => glPopMatrix as *const c_void,

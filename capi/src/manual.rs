@@ -211,6 +211,16 @@ pub unsafe extern "C" fn glReadPixels(
 }
 
 #[no_mangle]
+pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut u8) {
+    with_gl("glGetPolygonStipple", |gl| {
+        let n = image_bytes(&gl.ctx.state().pack, 32, 32, gl::COLOR_INDEX, gl::BITMAP);
+        // SAFETY: the 32x32 bitmap as the pack modes lay it out.
+        let out = unsafe { read::slice_mut(mask, n) };
+        gl.ctx.get_polygon_stipple(out);
+    })
+}
+
+#[no_mangle]
 pub unsafe extern "C" fn glGetTexImage(
     target: u32,
     level: i32,

@@ -683,6 +683,14 @@ pub enum Call {
     PopName,
     /// `glPassThrough(token)`.
     PassThrough(f32),
+
+    // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
+    /// `glLineStipple(factor, pattern)`.
+    LineStipple(i32, u16),
+    /// `glPolygonStipple(mask)`.
+    ///
+    /// The mask as the caller passed it: the unpack modes in effect say how it is read.
+    PolygonStipple(Vec<u8>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -990,6 +998,8 @@ pub const NAMES: &[&str] = &[
     "PushName",
     "PopName",
     "PassThrough",
+    "LineStipple",
+    "PolygonStipple",
 ];
 
 /// The variants that are window-system calls, not GL commands (no row in the command
@@ -1303,6 +1313,8 @@ impl Call {
             Call::PushName(..) => "PushName",
             Call::PopName => "PopName",
             Call::PassThrough(..) => "PassThrough",
+            Call::LineStipple(..) => "LineStipple",
+            Call::PolygonStipple(..) => "PolygonStipple",
         }
     }
 
@@ -1829,6 +1841,8 @@ impl Call {
             Call::PushName(..) => &[],
             Call::PopName => &[],
             Call::PassThrough(..) => &[],
+            Call::LineStipple(..) => &[],
+            Call::PolygonStipple(..) => &[],
         }
     }
 }

@@ -415,6 +415,9 @@ impl Implemented {
                 Shape::Names
             } else if matches!(p.ptype.as_str(), "GLint" | "GLsizei") && p.len.is_some() {
                 Shape::Ints
+            } else if p.ptype == "GLubyte" && p.len.as_deref() == Some("COMPSIZE()") {
+                // A bitmap whose size the pixel store modes give (PolygonStipple's mask).
+                Shape::Bytes
             } else if p.ptype == "void" && p.c_type.contains("*const*") {
                 Shape::Pointers
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")

@@ -399,6 +399,8 @@ impl Context {
             Call::PushName(name) => self.push_name(name),
             Call::PopName => self.pop_name(),
             Call::PassThrough(token) => self.pass_through(token),
+            Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }

@@ -164,6 +164,8 @@ impl Context {
             // Rasterisation (tables 6.11 to 6.13).
             gl::POINT_SIZE => f(s.point_size),
             gl::LINE_WIDTH => f(s.line_width),
+            gl::LINE_STIPPLE_PATTERN => i(i32::from(s.stipple.line_pattern)),
+            gl::LINE_STIPPLE_REPEAT => i(s.stipple.line_repeat),
             gl::FRONT_FACE => e(s.front_face),
             gl::CULL_FACE_MODE => e(s.cull_face_mode),
             gl::POLYGON_MODE => ints(s.polygon_mode.map(|m| m as i32)),

@@ -395,6 +395,9 @@ pub(crate) use arrays::write_into;
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
 
+// Line and polygon stipple (context/stipple.rs)
+pub(crate) mod stipple;
+
 // Occlusion queries (context/query.rs)
 mod query;
 pub use query::QUERY_COUNTER_BITS;

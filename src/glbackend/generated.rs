@@ -426,6 +426,8 @@ impl GlBackend {
             Call::PushName(name) => gl.push_name(name),
             Call::PopName => gl.pop_name(),
             Call::PassThrough(token) => gl.pass_through(token),
+            Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }
@@ -2252,5 +2254,11 @@ impl Safe<'_> {
     pub(super) fn pass_through(self, token: f32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.PassThrough(token) }
+    }
+
+    /// `glLineStipple(factor, pattern)`.
+    pub(super) fn line_stipple(self, factor: i32, pattern: u16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.LineStipple(factor, pattern) }
     }
 }

@@ -26,6 +26,7 @@ mod select;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
 mod query;
+mod stipple;
 mod texture;
 
 use std::cell::Cell;

@@ -25,6 +25,10 @@ pub mod projective;
 pub mod texture;
 // Selection: scenes/picking.rs
 pub mod picking;
+// Line and polygon stipple (scenes/stipple.rs)
+pub mod stipple;
+// GLU quadrics (scenes/quadrics.rs)
+pub mod quadrics;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -135,6 +139,8 @@ static SCENES: &[Scene] = &[
     projective::SCENES[0],
     projective::SCENES[1],
     picking::SCENES[0],
+    stipple::SCENES[0],
+    quadrics::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

@@ -1266,7 +1266,8 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             alpha,
             stencil,
             blend,
-            logic_op
+            logic_op,
+            stipple
         },
         special { textures }
     )

@@ -121,6 +121,8 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(LINE_WIDTH, D(&[1.0])),
     row!(LINE_SMOOTH, B(&[false])),
     row!(LINE_STIPPLE, B(&[false])),
+    row!(LINE_STIPPLE_PATTERN, I(&[0xFFFF])),
+    row!(LINE_STIPPLE_REPEAT, I(&[1])),
     row!(CULL_FACE, B(&[false])),
     row!(CULL_FACE_MODE, I(&[gl::BACK as i32])),
     row!(FRONT_FACE, I(&[gl::CCW as i32])),
