@@ -79,11 +79,102 @@ pub enum Pointer {
     /// A byte offset into the buffer object bound to the target (or, with none bound, an
     /// address with nothing behind it: a draw that reads it is INVALID_OPERATION).
     Offset(usize),
+    /// Memory the caller keeps owning, read when a draw happens rather than copied at the
+    /// `*Pointer` call: the C ABI's client arrays (a C program may fill its array after
+    /// glVertexPointer). Never part of a recording: a recorded draw is preceded by the
+    /// `*Pointer` calls with the bytes it read (see `Context::draw_arrays`), so streams stay
+    /// self-contained; serialising one is an error.
+    #[serde(skip)]
+    Client(Box<ClientPointer>),
+}
+
+/// Memory a caller outside Rust owns, read by GL at draw time (see [`Pointer::Client`]).
+///
+/// The implementor vouches for the reads: a C caller promises, as GL requires, that the memory
+/// behind its pointer holds what the draw reads until the draw returns.
+pub trait ClientMemory: Send + Sync {
+    /// The address, as `GetPointerv` reports it.
+    fn address(&self) -> usize;
+    /// The first `len` bytes, or fewer (none for a null pointer): a draw that needs more is
+    /// INVALID_OPERATION.
+    fn read(&self, len: usize) -> &[u8];
+}
+
+/// A [`ClientMemory`] with a byte offset into it (InterleavedArrays' parts).
+#[derive(Clone)]
+pub struct ClientPointer {
+    memory: std::sync::Arc<dyn ClientMemory>,
+    offset: usize,
+}
+
+impl ClientPointer {
+    /// A pointer to the start of `memory`.
+    pub fn new(memory: std::sync::Arc<dyn ClientMemory>) -> ClientPointer {
+        ClientPointer { memory, offset: 0 }
+    }
+
+    /// The address GL reports for it.
+    pub fn address(&self) -> usize {
+        self.memory.address().wrapping_add(self.offset)
+    }
+
+    /// The first `len` bytes from the pointer on (fewer where the memory says so).
+    pub fn read(&self, len: usize) -> &[u8] {
+        let Some(end) = self.offset.checked_add(len) else {
+            return &[];
+        };
+        self.memory.read(end).get(self.offset..).unwrap_or(&[])
+    }
+
+    fn offset_by(&self, bytes: usize) -> ClientPointer {
+        ClientPointer {
+            memory: self.memory.clone(),
+            offset: self.offset.saturating_add(bytes),
+        }
+    }
+}
+
+impl PartialEq for ClientPointer {
+    fn eq(&self, other: &ClientPointer) -> bool {
+        self.address() == other.address()
+    }
+}
+
+impl Eq for ClientPointer {}
+
+impl std::fmt::Debug for ClientPointer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ClientPointer({:#x})", self.address())
+    }
 }
 
 impl Pointer {
     /// The null pointer: offset 0 (no data for `BufferData`).
     pub const NULL: Pointer = Pointer::Offset(0);
+
+    /// The pointer as a recording holds it: memory read at draw time ([`Pointer::Client`]) has
+    /// no bytes yet and is recorded empty (its `*Pointer` call replays its errors; each draw
+    /// that reads it records the bytes it read, see [`crate::Context::draw_arrays`]).
+    pub fn recorded(&self) -> Pointer {
+        match self {
+            Pointer::Client(_) => Pointer::Data(Vec::new()),
+            other => other.clone(),
+        }
+    }
+
+    /// Whether it names client memory (bytes or a [`ClientPointer`]) rather than an offset.
+    pub fn is_client(&self) -> bool {
+        !matches!(self, Pointer::Offset(_))
+    }
+
+    /// The first `len` client bytes (fewer where there are fewer); `None` for an offset.
+    pub fn client_bytes(&self, len: usize) -> Option<&[u8]> {
+        match self {
+            Pointer::Data(d) => Some(d.get(..len).unwrap_or(d)),
+            Pointer::Client(c) => Some(c.read(len)),
+            Pointer::Offset(_) => None,
+        }
+    }
 }
 
 /// A GL component type that can be handed over as client memory.
@@ -176,12 +267,24 @@ impl ClientArray {
 
 /// A buffer object (GL 2.1 table 6.9 of §2.9: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS,
 /// BUFFER_MAPPED) and its data store.
+///
+/// While the object is mapped (`mapped`), its store is never reallocated: BufferSubData is
+/// refused, and the only commands that replace or free the store (BufferData, DeleteBuffers)
+/// unmap it first, as GL 2.1 §2.9 says. So the address of `data` stays valid from MapBuffer
+/// until the object is unmapped by UnmapBuffer, BufferData or DeleteBuffers (or the context is
+/// reset or dropped), which is what a C caller holding MapBuffer's pointer relies on.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BufferObject {
     /// The data store (its length is BUFFER_SIZE).
     pub data: Vec<u8>,
     /// `BUFFER_USAGE`.
     pub usage: u32,
+    /// `BUFFER_ACCESS`: the access of the mapping; READ_WRITE when not mapped, as llvmpipe
+    /// reports it after UnmapBuffer (GL 2.1 table 2.7 sets it at MapBuffer and says nothing of
+    /// UnmapBuffer; Mesa derives it from the mapping's flags, which UnmapBuffer clears).
+    pub access: u32,
+    /// `BUFFER_MAPPED`.
+    pub mapped: bool,
 }
 
 impl Default for BufferObject {
@@ -190,6 +293,8 @@ impl Default for BufferObject {
         Self {
             data: Vec::new(),
             usage: gl::STATIC_DRAW,
+            access: gl::READ_WRITE,
+            mapped: false,
         }
     }
 }
@@ -263,7 +368,7 @@ impl Default for ArrayState {
 pub type GlResult<T> = Result<T, u32>;
 
 /// Bytes of one component of `ty`, for the types arrays accept.
-fn type_size(ty: u32) -> usize {
+pub(crate) fn type_size(ty: u32) -> usize {
     match ty {
         gl::BYTE | gl::UNSIGNED_BYTE => 1,
         gl::SHORT | gl::UNSIGNED_SHORT => 2,
@@ -526,7 +631,7 @@ impl ArrayState {
     ) -> GlResult<()> {
         check_format(attr, size, ty, stride)?;
         let buffer = self.array_buffer;
-        if buffer != 0 && matches!(pointer, Pointer::Data(_)) {
+        if buffer != 0 && pointer.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
         let a = self.attr_mut(attr).ok_or(gl::INVALID_ENUM)?;
@@ -551,7 +656,7 @@ impl ArrayState {
         if !(0..=MAX_VERTEX_ATTRIB_STRIDE).contains(&stride) {
             return Err(gl::INVALID_VALUE);
         }
-        if self.array_buffer != 0 && matches!(pointer, Pointer::Data(_)) {
+        if self.array_buffer != 0 && pointer.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
         let f = std::mem::size_of::<f32>();
@@ -563,6 +668,7 @@ impl ArrayState {
         let at = |floats: usize| match pointer {
             Pointer::Data(d) => Pointer::Data(d.get(floats * f..).unwrap_or(&[]).to_vec()),
             Pointer::Offset(o) => Pointer::Offset(o.saturating_add(floats * f)),
+            Pointer::Client(c) => Pointer::Client(Box::new(c.offset_by(floats * f))),
         };
         let buffer = self.array_buffer;
         let set = |a: &mut ClientArray, part: Part| {
@@ -588,10 +694,12 @@ impl ArrayState {
     }
 
     /// The bytes behind an array's pointer: its client bytes, or its buffer's data from the
-    /// offset on (empty when the offset is past the end or no buffer is behind it).
-    fn bytes<'a>(&'a self, buffer: u32, pointer: &'a Pointer) -> &'a [u8] {
+    /// offset on (empty when the offset is past the end or no buffer is behind it). Memory read
+    /// at draw time ([`Pointer::Client`]) is read for the `need` bytes the draw reaches.
+    fn bytes<'a>(&'a self, buffer: u32, pointer: &'a Pointer, need: usize) -> &'a [u8] {
         match pointer {
             Pointer::Data(d) if buffer == 0 => d,
+            Pointer::Client(c) if buffer == 0 => c.read(need),
             Pointer::Offset(o) if buffer != 0 => self
                 .buffers
                 .get(&buffer)
@@ -602,8 +710,9 @@ impl ArrayState {
     }
 
     /// Every enabled array, in ArrayElement's order (GL 2.1 §2.8), with the number of whole
-    /// elements its data holds.
-    pub fn sources(&self) -> Vec<Source<'_>> {
+    /// elements its data holds; memory read at draw time ([`Pointer::Client`]) is read for the
+    /// first `reach` elements.
+    pub fn sources(&self, reach: usize) -> Vec<Source<'_>> {
         let mut list: Vec<(Attr, &ClientArray)> = vec![(Attr::EdgeFlag, &self.edge_flag)];
         for (u, a) in self.tex_coords.iter().enumerate() {
             list.push((Attr::TexCoord(u), a));
@@ -625,7 +734,12 @@ impl ArrayState {
                 } else {
                     a.stride as usize
                 };
-                let bytes = self.bytes(a.buffer, &a.pointer);
+                let need = reach
+                    .checked_sub(1)
+                    .and_then(|last| last.checked_mul(stride))
+                    .and_then(|n| n.checked_add(elem))
+                    .unwrap_or(0);
+                let bytes = self.bytes(a.buffer, &a.pointer, need);
                 let count = if elem == 0 || bytes.len() < elem {
                     0
                 } else {
@@ -643,9 +757,25 @@ impl ArrayState {
             .collect()
     }
 
+    /// Whether an enabled array is memory read at draw time ([`Pointer::Client`]).
+    pub fn reads_client(&self) -> bool {
+        let all = [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.secondary_color,
+            &self.fog_coord,
+            &self.edge_flag,
+        ];
+        all.into_iter()
+            .chain(self.tex_coords.iter())
+            .any(|a| a.enabled && a.buffer == 0 && matches!(a.pointer, Pointer::Client(_)))
+    }
+
     /// INVALID_OPERATION unless every enabled array holds element `max_index`.
     pub fn check_reads(&self, max_index: usize) -> GlResult<()> {
-        if self.sources().iter().all(|s| max_index < s.count) {
+        let reach = max_index.saturating_add(1);
+        if self.sources(reach).iter().all(|s| max_index < s.count) {
             Ok(())
         } else {
             Err(gl::INVALID_OPERATION)
@@ -663,11 +793,11 @@ impl ArrayState {
             _ => return Err(gl::INVALID_ENUM),
         };
         let eb = self.element_array_buffer;
-        if eb != 0 && matches!(indices, Pointer::Data(_)) {
+        if eb != 0 && indices.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
-        let bytes = self.bytes(eb, indices);
         let needed = count.checked_mul(size).ok_or(gl::INVALID_OPERATION)?;
+        let bytes = self.bytes(eb, indices, needed);
         let bytes = bytes.get(..needed).ok_or(gl::INVALID_OPERATION)?;
         // Up to 4 bytes of u32 per byte of UNSIGNED_BYTE indices the caller handed over: an
         // allocation that fails is OUT_OF_MEMORY, not an abort.
@@ -685,7 +815,7 @@ impl ArrayState {
 
     /// DrawArrays' checks after the Begin/End phase (GL 2.1 §2.8): INVALID_ENUM for a mode,
     /// INVALID_VALUE for a negative `first` or `count`, INVALID_OPERATION when an enabled array
-    /// lacks an element. The index range to draw; `None` when there is nothing to draw.
+    /// lives in a mapped buffer (§2.9) or lacks an element. The index range to draw; `None` when there is nothing to draw.
     pub fn check_draw_arrays(
         &self,
         mode: u32,
@@ -701,6 +831,7 @@ impl ArrayState {
         if count == 0 {
             return Ok(None);
         }
+        self.check_unmapped(None)?;
         let last = first.checked_add(count - 1).ok_or(gl::INVALID_OPERATION)?;
         self.check_reads(last)?;
         Ok(Some(first..=last))
@@ -734,16 +865,97 @@ impl ArrayState {
         if count == 0 {
             return Ok(None);
         }
+        self.check_unmapped(Some(indices))?;
         let idx = self.indices(count, ty, indices)?;
         let max = idx.iter().copied().max().unwrap_or(0) as usize;
         self.check_reads(max)?;
         Ok(Some(idx))
     }
 
+    /// MultiDrawArrays' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode, INVALID_VALUE for a negative count; then each draw as DrawArrays checks it,
+    /// except that a negative `first` is no error of its own (Mesa raises none): with an array
+    /// enabled it reads before the data, INVALID_OPERATION as any read outside it. The ranges
+    /// to draw, one per draw with a positive count; nothing is drawn unless all pass.
+    pub fn check_multi_draw_arrays(
+        &self,
+        mode: u32,
+        first: &[i32],
+        count: &[i32],
+        drawcount: i32,
+    ) -> GlResult<Vec<std::ops::RangeInclusive<usize>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(first), Some(count)) = (first.get(..n), count.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode) {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let enabled = !self.sources(0).is_empty();
+        let mut ranges = Vec::new();
+        for (&f, &c) in first.iter().zip(count) {
+            if c == 0 {
+                continue;
+            }
+            if f < 0 {
+                if enabled {
+                    return Err(gl::INVALID_OPERATION);
+                }
+                continue;
+            }
+            if let Some(r) = self.check_draw_arrays(mode, f, c)? {
+                ranges.push(r);
+            }
+        }
+        Ok(ranges)
+    }
+
+    /// MultiDrawElements' checks after the Begin/End phase (GL 2.1 §2.8, Mesa's order):
+    /// INVALID_VALUE for a negative `drawcount` or (ours) slices shorter than it, INVALID_ENUM
+    /// for a mode or type, INVALID_VALUE for a negative count; then each draw as DrawElements
+    /// checks it. The indices of each draw with a positive count; nothing is drawn unless all
+    /// pass.
+    pub fn check_multi_draw_elements(
+        &self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) -> GlResult<Vec<Vec<u32>>> {
+        let n = usize::try_from(drawcount).map_err(|_| gl::INVALID_VALUE)?;
+        let (Some(count), Some(indices)) = (count.get(..n), indices.get(..n)) else {
+            return Err(gl::INVALID_VALUE);
+        };
+        if !valid_mode(mode)
+            || !matches!(
+                ty,
+                gl::UNSIGNED_BYTE | gl::UNSIGNED_SHORT | gl::UNSIGNED_INT
+            )
+        {
+            return Err(gl::INVALID_ENUM);
+        }
+        if count.iter().any(|&c| c < 0) {
+            return Err(gl::INVALID_VALUE);
+        }
+        let mut draws = Vec::new();
+        for (&c, p) in count.iter().zip(indices) {
+            if let Some(idx) = self.check_draw_elements(mode, c, ty, p, None)? {
+                draws.push(idx);
+            }
+        }
+        Ok(draws)
+    }
+
     /// ArrayElement's check: INVALID_VALUE for a negative index, INVALID_OPERATION when an
     /// enabled array lacks the element.
     pub fn check_array_element(&self, i: i32) -> GlResult<usize> {
         let i = usize::try_from(i).map_err(|_| gl::INVALID_VALUE)?;
+        self.check_unmapped(None)?;
         self.check_reads(i)?;
         Ok(i)
     }
@@ -888,7 +1100,10 @@ impl ArrayState {
         let size = usize::try_from(size).map_err(|_| gl::INVALID_VALUE)?;
         self.bound(target)?;
         let src = match data {
-            Pointer::Data(d) => Some(d.get(..size).ok_or(gl::INVALID_VALUE)?),
+            Pointer::Data(_) | Pointer::Client(_) => {
+                let d = data.client_bytes(size).unwrap_or(&[]);
+                Some(d.get(..size).ok_or(gl::INVALID_VALUE)?)
+            }
             Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => None,
             Pointer::Offset(0) => return Err(gl::OUT_OF_MEMORY),
             Pointer::Offset(_) => return Err(gl::INVALID_VALUE),
@@ -904,13 +1119,17 @@ impl ArrayState {
             None => store.resize(size, 0),
         }
         let b = self.bound(target)?;
-        b.data = store;
-        b.usage = usage;
+        // A mapped store is unmapped first, not an error (GL 2.1 §2.9, and Mesa).
+        *b = BufferObject {
+            data: store,
+            usage,
+            ..BufferObject::default()
+        };
         Ok(())
     }
 
     /// The byte range `offset..offset+size` of the buffer bound to `target`: errors of
-    /// BufferSubData / GetBufferSubData (GL 2.1 §2.9).
+    /// BufferSubData / GetBufferSubData (GL 2.1 §2.9), INVALID_OPERATION while it is mapped.
     fn range(
         &mut self,
         target: u32,
@@ -928,6 +1147,11 @@ impl ArrayState {
         if end > b.data.len() {
             return Err(gl::INVALID_VALUE);
         }
+        // The store of a mapped buffer belongs to the mapping (GL 2.1 §2.9); checked after the
+        // range, as Mesa does.
+        if b.mapped {
+            return Err(gl::INVALID_OPERATION);
+        }
         Ok((b, o..end))
     }
 
@@ -940,9 +1164,7 @@ impl ArrayState {
         data: &Pointer,
     ) -> GlResult<()> {
         let (b, r) = self.range(target, offset, size)?;
-        let Pointer::Data(d) = data else {
-            return Err(gl::INVALID_VALUE);
-        };
+        let d = data.client_bytes(r.len()).ok_or(gl::INVALID_VALUE)?;
         let src = d.get(..r.len()).ok_or(gl::INVALID_VALUE)?;
         if let Some(dst) = b.data.get_mut(r) {
             dst.copy_from_slice(src);
@@ -964,8 +1186,7 @@ impl ArrayState {
         Ok(())
     }
 
-    /// `GetBufferParameteriv`'s value: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS (always
-    /// READ_WRITE: MapBuffer is not provided), BUFFER_MAPPED (always false).
+    /// `GetBufferParameteriv`'s value: BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS, BUFFER_MAPPED.
     pub fn buffer_parameter(&mut self, target: u32, pname: u32) -> GlResult<i32> {
         if !valid_target(target) {
             return Err(gl::INVALID_ENUM);
@@ -980,9 +1201,101 @@ impl ArrayState {
         Ok(match pname {
             gl::BUFFER_SIZE => i32::try_from(b.data.len()).unwrap_or(i32::MAX),
             gl::BUFFER_USAGE => b.usage as i32,
-            gl::BUFFER_ACCESS => gl::READ_WRITE as i32,
-            _ => 0,
+            gl::BUFFER_ACCESS => b.access as i32,
+            _ => i32::from(b.mapped),
         })
+    }
+
+    /// `MapBuffer`'s checks and state change (GL 2.1 §2.9): INVALID_ENUM for an access (checked
+    /// first, as Mesa does) or a target; INVALID_OPERATION with no buffer bound, for a buffer
+    /// already mapped and, as llvmpipe, for an empty one. Returns the name of the buffer now
+    /// mapped.
+    pub fn map_buffer(&mut self, target: u32, access: u32) -> GlResult<u32> {
+        if !matches!(access, gl::READ_ONLY | gl::WRITE_ONLY | gl::READ_WRITE) {
+            return Err(gl::INVALID_ENUM);
+        }
+        let name = self.binding(target)?;
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        if b.mapped || b.data.is_empty() {
+            return Err(gl::INVALID_OPERATION);
+        }
+        b.mapped = true;
+        b.access = access;
+        Ok(name)
+    }
+
+    /// `UnmapBuffer` (GL 2.1 §2.9): INVALID_ENUM for a target, INVALID_OPERATION with no buffer
+    /// bound or one not mapped. Returns the name of the buffer unmapped.
+    pub fn unmap_buffer(&mut self, target: u32) -> GlResult<u32> {
+        let name = self.binding(target)?;
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        if !b.mapped {
+            return Err(gl::INVALID_OPERATION);
+        }
+        b.mapped = false;
+        b.access = gl::READ_WRITE;
+        Ok(name)
+    }
+
+    /// The store of the buffer bound to `target`, if it is mapped: what the mapping reads and
+    /// writes (see [`BufferObject`] on why its address is stable while mapped).
+    pub fn mapped_mut(&mut self, target: u32) -> Option<&mut [u8]> {
+        let name = self.binding(target).ok()?;
+        let b = self.buffers.get_mut(&name)?;
+        b.mapped.then_some(&mut b.data[..])
+    }
+
+    /// `GetBufferPointerv`'s checks (GL 2.1 §6.1.13): INVALID_ENUM for a target or a pname other
+    /// than BUFFER_MAP_POINTER, INVALID_OPERATION with no buffer bound. The mapped store, or
+    /// `None` when the buffer is not mapped (GL's NULL).
+    pub fn buffer_pointer(&mut self, target: u32, pname: u32) -> GlResult<Option<&mut [u8]>> {
+        let name = self.binding(target)?;
+        if pname != gl::BUFFER_MAP_POINTER {
+            return Err(gl::INVALID_ENUM);
+        }
+        let b = self.buffers.get_mut(&name).ok_or(gl::INVALID_OPERATION)?;
+        Ok(b.mapped.then_some(&mut b.data[..]))
+    }
+
+    /// The name bound to `target` (0 for none): INVALID_ENUM for a target.
+    fn binding(&self, target: u32) -> GlResult<u32> {
+        match target {
+            gl::ARRAY_BUFFER => Ok(self.array_buffer),
+            gl::ELEMENT_ARRAY_BUFFER => Ok(self.element_array_buffer),
+            _ => Err(gl::INVALID_ENUM),
+        }
+    }
+
+    /// Whether buffer `name` exists and is mapped.
+    pub fn is_mapped(&self, name: u32) -> bool {
+        self.buffers.get(&name).is_some_and(|b| b.mapped)
+    }
+
+    /// GL 2.1 §2.9: a command that dereferences a mapped buffer's store is INVALID_OPERATION.
+    /// For a draw: an enabled array whose data lies in a mapped buffer, or (`indices`) index data
+    /// in a mapped ELEMENT_ARRAY_BUFFER. Mesa's llvmpipe lets such draws read the store
+    /// (`AllowMappedBuffersDuringExecution`); fixedgl gives the spec's error, and its GL backend
+    /// raises it before the driver sees the draw.
+    fn check_unmapped(&self, indices: Option<&Pointer>) -> GlResult<()> {
+        let arrays = [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.secondary_color,
+            &self.fog_coord,
+            &self.edge_flag,
+        ];
+        let array_mapped = arrays
+            .into_iter()
+            .chain(self.tex_coords.iter())
+            .any(|a| a.enabled && a.buffer != 0 && self.is_mapped(a.buffer));
+        let index_mapped = matches!(indices, Some(Pointer::Offset(_)))
+            && self.element_array_buffer != 0
+            && self.is_mapped(self.element_array_buffer);
+        if array_mapped || index_mapped {
+            return Err(gl::INVALID_OPERATION);
+        }
+        Ok(())
     }
 }
 
@@ -1000,7 +1313,7 @@ mod tests {
             Ok(())
         );
         a.color.enabled = true;
-        let s = a.sources();
+        let s = a.sources(usize::MAX);
         let src = s.first().copied();
         // 4 bytes, element size 3, stride 4: one whole element.
         assert_eq!(src.map(|s| s.count), Some(1));
@@ -1014,7 +1327,7 @@ mod tests {
         assert_eq!(a.pointer(Attr::Vertex, 2, gl::INT, 0, &v), Ok(()));
         a.normal.enabled = true;
         a.vertex.enabled = true;
-        let s = a.sources();
+        let s = a.sources(usize::MAX);
         let got: Vec<_> = s.iter().map(|s| (s.attr, s.fetch(0))).collect();
         assert_eq!(
             got,
@@ -1043,7 +1356,7 @@ mod tests {
             Ok(())
         );
         a.vertex.enabled = true;
-        assert_eq!(a.sources().first().map(|s| s.count), Some(5));
+        assert_eq!(a.sources(5).first().map(|s| s.count), Some(5));
         assert_eq!(a.check_reads(4), Ok(()));
         assert_eq!(a.check_reads(5), Err(gl::INVALID_OPERATION));
         // An offset past the end holds nothing.
@@ -1051,7 +1364,7 @@ mod tests {
             a.pointer(Attr::Vertex, 3, gl::FLOAT, 0, &Pointer::Offset(usize::MAX)),
             Ok(())
         );
-        assert_eq!(a.sources().first().map(|s| s.count), Some(0));
+        assert_eq!(a.sources(5).first().map(|s| s.count), Some(0));
         assert_eq!(
             a.check_draw_arrays(gl::POINTS, i32::MAX, i32::MAX),
             Err(gl::INVALID_OPERATION)

@@ -3,7 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{ArgKind, TexImage2DArgs, TexSubImage2DArgs};
+use super::{
+    ArgKind, MapWrites, MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs,
+    TexSubImage2DArgs,
+};
 use crate::arrays::Pointer;
 
 /// One GL call with its arguments: one variant per command of the table.
@@ -736,6 +739,81 @@ pub enum Call {
     DrawPixels(i32, i32, u32, u32, Box<Vec<u8>>),
     /// `glCopyPixels(x, y, width, height, type)`.
     CopyPixels(i32, i32, i32, i32, u32),
+
+    // Buffer mapping (GL 1.5, GL 2.1 §2.9): context/arrays.rs. `written`: the variant also carries
+    // the bytes the program wrote through the mapping (`MapWrites`), recorded at UnmapBuffer.
+    /// `glMapBuffer(target, access)`.
+    MapBuffer(u32, u32),
+    /// `glUnmapBuffer(target)`.
+    ///
+    /// `UnmapBuffer(target, written)`: the bytes written through the mapping (see `MapWrites`), so a replay writes them into its own mapping before unmapping.
+    UnmapBuffer(u32, Box<MapWrites>),
+
+    // Multiple draws (GL 1.4, GL 2.1 §2.8): context/arrays.rs
+    /// `glMultiDrawArrays(mode, first, count, drawcount)`.
+    ///
+    /// mode, first, count, drawcount (boxed: two vectors would grow every call).
+    MultiDrawArrays(Box<MultiDrawArraysArgs>),
+    /// `glMultiDrawElements(mode, count, type, indices, drawcount)`.
+    ///
+    /// mode, count, type, indices, drawcount.
+    MultiDrawElements(Box<MultiDrawElementsArgs>),
+
+    // Occlusion queries (GL 1.5, GL 2.1 §4.1.7): context/query.rs
+    /// `glGenQueries(n, ids)`.
+    ///
+    /// `GenQueries(n, names)`: the names the call returned (empty when it failed), as GenBuffers.
+    GenQueries(i32, Vec<u32>),
+    /// `glDeleteQueries(n, ids)`.
+    DeleteQueries(i32, Vec<u32>),
+    /// `glBeginQuery(target, id)`.
+    BeginQuery(u32, u32),
+    /// `glEndQuery(target)`.
+    EndQuery(u32),
+
+    // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
+    /// `glDrawBuffer(buf)`.
+    DrawBuffer(u32),
+    /// `glReadBuffer(src)`.
+    ReadBuffer(u32),
+    /// `glClearAccum(red, green, blue, alpha)`.
+    ClearAccum(f32, f32, f32, f32),
+    /// `glAccum(op, value)`.
+    Accum(u32, f32),
+    /// `SwapBuffers`, a window-system call (not a GL command).
+    ///
+    /// A window system's buffer swap (glXSwapBuffers, glutSwapBuffers): not a GL command; recorded so that a replay shows the same frames.
+    SwapBuffers,
+
+    // Selection and feedback (GL 2.1 §5.2, §5.3): context/select.rs
+    /// `glRenderMode(mode)`.
+    RenderMode(u32),
+    /// `glSelectBuffer(size, buffer)`.
+    ///
+    /// The size only: the buffer is the context's (`Context::selection_buffer`).
+    SelectBuffer(i32),
+    /// `glFeedbackBuffer(size, type, buffer)`.
+    ///
+    /// The size and type only: the buffer is the context's (`Context::feedback_values`).
+    FeedbackBuffer(i32, u32),
+    /// `glInitNames()`.
+    InitNames,
+    /// `glLoadName(name)`.
+    LoadName(u32),
+    /// `glPushName(name)`.
+    PushName(u32),
+    /// `glPopName()`.
+    PopName,
+    /// `glPassThrough(token)`.
+    PassThrough(f32),
+
+    // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
+    /// `glLineStipple(factor, pattern)`.
+    LineStipple(i32, u16),
+    /// `glPolygonStipple(mask)`.
+    ///
+    /// The mask as the caller passed it: the unpack modes in effect say how it is read.
+    PolygonStipple(Vec<u8>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -1079,7 +1157,34 @@ pub const NAMES: &[&str] = &[
     "Bitmap",
     "DrawPixels",
     "CopyPixels",
+    "MapBuffer",
+    "UnmapBuffer",
+    "MultiDrawArrays",
+    "MultiDrawElements",
+    "GenQueries",
+    "DeleteQueries",
+    "BeginQuery",
+    "EndQuery",
+    "DrawBuffer",
+    "ReadBuffer",
+    "ClearAccum",
+    "Accum",
+    "SwapBuffers",
+    "RenderMode",
+    "SelectBuffer",
+    "FeedbackBuffer",
+    "InitNames",
+    "LoadName",
+    "PushName",
+    "PopName",
+    "PassThrough",
+    "LineStipple",
+    "PolygonStipple",
 ];
+
+/// The variants that are window-system calls, not GL commands (no row in the command
+/// table, no C entry point of GL's).
+pub const WINSYS: &[&str] = &["SwapBuffers"];
 
 impl Call {
     /// The variant's name: the GL command without `gl`.
@@ -1424,6 +1529,29 @@ impl Call {
             Call::Bitmap(..) => "Bitmap",
             Call::DrawPixels(..) => "DrawPixels",
             Call::CopyPixels(..) => "CopyPixels",
+            Call::MapBuffer(..) => "MapBuffer",
+            Call::UnmapBuffer(..) => "UnmapBuffer",
+            Call::MultiDrawArrays(..) => "MultiDrawArrays",
+            Call::MultiDrawElements(..) => "MultiDrawElements",
+            Call::GenQueries(..) => "GenQueries",
+            Call::DeleteQueries(..) => "DeleteQueries",
+            Call::BeginQuery(..) => "BeginQuery",
+            Call::EndQuery(..) => "EndQuery",
+            Call::DrawBuffer(..) => "DrawBuffer",
+            Call::ReadBuffer(..) => "ReadBuffer",
+            Call::ClearAccum(..) => "ClearAccum",
+            Call::Accum(..) => "Accum",
+            Call::SwapBuffers => "SwapBuffers",
+            Call::RenderMode(..) => "RenderMode",
+            Call::SelectBuffer(..) => "SelectBuffer",
+            Call::FeedbackBuffer(..) => "FeedbackBuffer",
+            Call::InitNames => "InitNames",
+            Call::LoadName(..) => "LoadName",
+            Call::PushName(..) => "PushName",
+            Call::PopName => "PopName",
+            Call::PassThrough(..) => "PassThrough",
+            Call::LineStipple(..) => "LineStipple",
+            Call::PolygonStipple(..) => "PolygonStipple",
         }
     }
 
@@ -1593,6 +1721,7 @@ impl Call {
                 | Call::MultiTexCoord4fv(..)
                 | Call::MultiTexCoord4d(..)
                 | Call::MultiTexCoord4dv(..)
+                | Call::SwapBuffers
         )
     }
 
@@ -1630,6 +1759,14 @@ impl Call {
                 | Call::BufferSubData(..)
                 | Call::GenTextures(..)
                 | Call::DeleteTextures(..)
+                | Call::MapBuffer(..)
+                | Call::UnmapBuffer(..)
+                | Call::GenQueries(..)
+                | Call::DeleteQueries(..)
+                | Call::SwapBuffers
+                | Call::RenderMode(..)
+                | Call::SelectBuffer(..)
+                | Call::FeedbackBuffer(..)
         )
     }
 
@@ -1977,6 +2114,29 @@ impl Call {
             Call::Bitmap(..) => &[],
             Call::DrawPixels(..) => &[Plain, Plain, Enum, Enum],
             Call::CopyPixels(..) => &[Plain, Plain, Plain, Plain, Enum],
+            Call::MapBuffer(..) => &[Enum, Enum],
+            Call::UnmapBuffer(..) => &[Enum],
+            Call::MultiDrawArrays(..) => &[],
+            Call::MultiDrawElements(..) => &[],
+            Call::GenQueries(..) => &[],
+            Call::DeleteQueries(..) => &[],
+            Call::BeginQuery(..) => &[Enum],
+            Call::EndQuery(..) => &[Enum],
+            Call::DrawBuffer(..) => &[Enum],
+            Call::ReadBuffer(..) => &[Enum],
+            Call::ClearAccum(..) => &[],
+            Call::Accum(..) => &[Enum],
+            Call::SwapBuffers => &[],
+            Call::RenderMode(..) => &[Enum],
+            Call::SelectBuffer(..) => &[],
+            Call::FeedbackBuffer(..) => &[Plain, Enum],
+            Call::InitNames => &[],
+            Call::LoadName(..) => &[],
+            Call::PushName(..) => &[],
+            Call::PopName => &[],
+            Call::PassThrough(..) => &[],
+            Call::LineStipple(..) => &[],
+            Call::PolygonStipple(..) => &[],
         }
     }
 }

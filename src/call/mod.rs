@@ -23,9 +23,21 @@ pub type TexImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8
 /// pixels.
 pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
+/// `MultiDrawArrays`' arguments: mode, first, count, drawcount (the slices as the caller passed
+/// them, however long).
+pub type MultiDrawArraysArgs = (u32, Vec<i32>, Vec<i32>, i32);
+/// `MultiDrawElements`' arguments: mode, count, type, indices (one pointer per draw: client
+/// bytes or an offset into the element buffer), drawcount.
+pub type MultiDrawElementsArgs = (u32, Vec<i32>, u32, Vec<crate::arrays::Pointer>, i32);
+
+/// What a program wrote through a MapBuffer mapping, recorded with the `UnmapBuffer` that ends
+/// it: the offset of the first byte that changed and the bytes from there to the last one that
+/// changed (`(0, [])`: nothing written). See `Context::map_buffer`.
+pub type MapWrites = (usize, Vec<u8>);
+
 mod generated;
 
-pub use generated::{Call, NAMES};
+pub use generated::{Call, NAMES, WINSYS};
 
 /// What an argument of a call holds, for the recording format to write it readably (from the
 /// registry's type and enum group of the parameter).

@@ -15,7 +15,7 @@ use glam::{Vec3, Vec4};
 
 use super::Context;
 use crate::arrays::{ArrayState, Attr, GlResult, Pointer, Source};
-use crate::call::Call;
+use crate::call::{Call, MapWrites};
 use crate::gl;
 
 impl Context {
@@ -52,14 +52,14 @@ impl Context {
     /// INVALID_OPERATION.
     pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::VertexPointer(size, ty, stride, p.clone()));
+        record!(self, Call::VertexPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Vertex, size, ty, stride, &p));
     }
 
     /// `glNormalPointer`: BYTE, SHORT, INT, FLOAT or DOUBLE; otherwise as `vertex_pointer`.
     pub fn normal_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::NormalPointer(ty, stride, p.clone()));
+        record!(self, Call::NormalPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Normal, 3, ty, stride, &p));
     }
 
@@ -67,7 +67,7 @@ impl Context {
     /// normalised by GL 2.1 table 2.9); otherwise as `vertex_pointer`.
     pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::ColorPointer(size, ty, stride, p.clone()));
+        record!(self, Call::ColorPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Color, size, ty, stride, &p));
     }
 
@@ -82,7 +82,7 @@ impl Context {
         let p = pointer.into();
         record!(
             self,
-            Call::SecondaryColorPointer(size, ty, stride, p.clone())
+            Call::SecondaryColorPointer(size, ty, stride, p.recorded())
         );
         self.arrays_do(|a, _| a.pointer(Attr::SecondaryColor, size, ty, stride, &p));
     }
@@ -97,21 +97,21 @@ impl Context {
         pointer: impl Into<Pointer>,
     ) {
         let p = pointer.into();
-        record!(self, Call::TexCoordPointer(size, ty, stride, p.clone()));
+        record!(self, Call::TexCoordPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, u| a.pointer(Attr::TexCoord(u), size, ty, stride, &p));
     }
 
     /// `glFogCoordPointer`: FLOAT or DOUBLE.
     pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::FogCoordPointer(ty, stride, p.clone()));
+        record!(self, Call::FogCoordPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::FogCoord, 1, ty, stride, &p));
     }
 
     /// `glEdgeFlagPointer`: one GLboolean (byte) per element (`&[bool]` or `&[u8]`).
     pub fn edge_flag_pointer(&mut self, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::EdgeFlagPointer(stride, p.clone()));
+        record!(self, Call::EdgeFlagPointer(stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
     }
 
@@ -120,7 +120,7 @@ impl Context {
     /// (texture coordinates on the client active unit) and disables the others.
     pub fn interleaved_arrays(&mut self, format: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::InterleavedArrays(format, stride, p.clone()));
+        record!(self, Call::InterleavedArrays(format, stride, p.recorded()));
         self.arrays_do(|a, u| a.interleaved_arrays(format, stride, &p, u));
     }
 
@@ -129,9 +129,28 @@ impl Context {
     /// End. INVALID_VALUE for a negative `i` and INVALID_OPERATION when an enabled array has no
     /// element `i` (GL leaves both undefined); nothing changes then.
     pub fn array_element(&mut self, i: i32) {
+        // Memory read at draw time cannot be recorded as a pointer inside Begin/End: the
+        // recording gets the attribute calls this element amounts to instead.
+        if self.recording.is_some() && self.lists.depth == 0 && self.state.arrays.reads_client() {
+            if let Ok(Some(calls)) = self.compile_draw(&Call::ArrayElement(i)) {
+                let mut recording = self.recording.take();
+                self.sync_capturing();
+                self.array_element_now(i);
+                if let Some(rec) = recording.as_mut() {
+                    rec.extend(calls);
+                }
+                self.recording = recording;
+                self.sync_capturing();
+                return;
+            }
+        }
+        self.array_element_now(i);
+    }
+
+    fn array_element_now(&mut self, i: i32) {
         record!(self, Call::ArrayElement(i));
         match self.state.arrays.check_array_element(i) {
-            Ok(i) => self.draw(None, [i]),
+            Ok(i) => self.draw(None, [i], i + 1),
             Err(code) => self.error(code),
         }
     }
@@ -140,12 +159,20 @@ impl Context {
     /// INVALID_VALUE for a negative `first` or `count`, INVALID_OPERATION between Begin and End
     /// or when an enabled array is shorter than `first + count` elements.
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
+        if self.begin_mode.is_none() {
+            if let Ok(Some(range)) = self.state.arrays.check_draw_arrays(mode, first, count) {
+                self.record_client_arrays(range.end() + 1);
+            }
+        }
         record!(self, Call::DrawArrays(mode, first, count));
         if !self.outside_begin_end() {
             return;
         }
         match self.state.arrays.check_draw_arrays(mode, first, count) {
-            Ok(Some(range)) => self.draw(Some(mode), range),
+            Ok(Some(range)) => {
+                let reach = range.end() + 1;
+                self.draw(Some(mode), range, reach)
+            }
             Ok(None) => {}
             Err(code) => self.error(code),
         }
@@ -158,6 +185,7 @@ impl Context {
     /// data while an element buffer is bound), or when an enabled array lacks an indexed element.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: impl Into<Pointer>) {
         let p = indices.into();
+        self.record_client_arrays_indexed(mode, count, ty, &p, None);
         record!(self, Call::DrawElements(mode, count, ty, p.clone()));
         self.draw_indexed(mode, count, ty, &p, None);
     }
@@ -174,6 +202,7 @@ impl Context {
         indices: impl Into<Pointer>,
     ) {
         let p = indices.into();
+        self.record_client_arrays_indexed(mode, count, ty, &p, Some((start, end)));
         record!(
             self,
             Call::DrawRangeElements(mode, start, end, count, ty, Box::new(p.clone()))
@@ -181,22 +210,217 @@ impl Context {
         self.draw_indexed(mode, count, ty, &p, Some((start, end)));
     }
 
+    /// `glMultiDrawArrays` (GL 1.4, GL 2.1 §2.8): DrawArrays(mode, first[i], count[i]) for each
+    /// of the first `drawcount` entries. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION between Begin and End or when a draw would read outside an enabled
+    /// array (a negative `first` with an array enabled, too: Mesa raises nothing there and reads
+    /// before the array) or from a mapped buffer. Every draw is checked before any is drawn.
+    pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32], drawcount: i32) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(ranges) = a.check_multi_draw_arrays(mode, first, count, drawcount) {
+                let reach = ranges.iter().map(|r| r.end() + 1).max().unwrap_or(0);
+                self.record_client_arrays(reach);
+            }
+        }
+        record!(
+            self,
+            Call::MultiDrawArrays(Box::new((mode, first.to_vec(), count.to_vec(), drawcount)))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_arrays(mode, first, count, drawcount)
+        {
+            Ok(ranges) => {
+                for r in ranges {
+                    let reach = r.end() + 1;
+                    self.draw(Some(mode), r, reach);
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
+    /// `glMultiDrawElements` (GL 1.4, GL 2.1 §2.8): DrawElements(mode, count[i], type,
+    /// indices[i]) for each of the first `drawcount` entries; each pointer is client data or an
+    /// offset into the ELEMENT_ARRAY_BUFFER. INVALID_VALUE for a negative `drawcount` or slices
+    /// shorter than it, INVALID_ENUM for a mode or type, INVALID_VALUE for a negative count,
+    /// INVALID_OPERATION as DrawElements raises it for any of the draws. Every draw is checked
+    /// before any is drawn.
+    pub fn multi_draw_elements(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[Pointer],
+        drawcount: i32,
+    ) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(draws) = a.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                let reach = draws
+                    .iter()
+                    .flat_map(|d| d.iter().max())
+                    .max()
+                    .map_or(0, |&m| m as usize + 1);
+                self.record_client_arrays(reach);
+            }
+        }
+        record!(
+            self,
+            Call::MultiDrawElements(Box::new((
+                mode,
+                count.to_vec(),
+                ty,
+                indices.to_vec(),
+                drawcount
+            )))
+        );
+        if !self.outside_begin_end() {
+            return;
+        }
+        match self
+            .state
+            .arrays
+            .check_multi_draw_elements(mode, count, ty, indices, drawcount)
+        {
+            Ok(draws) => {
+                for idx in draws {
+                    let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize), reach);
+                }
+            }
+            Err(code) => self.error(code),
+        }
+    }
+
     fn draw_indexed(&mut self, mode: u32, count: i32, ty: u32, p: &Pointer, r: Option<(u32, u32)>) {
         if !self.outside_begin_end() {
             return;
         }
         match self.state.arrays.check_draw_elements(mode, count, ty, p, r) {
-            Ok(Some(idx)) => self.draw(Some(mode), idx.into_iter().map(|i| i as usize)),
+            Ok(Some(idx)) => {
+                let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+                self.draw(Some(mode), idx.into_iter().map(|i| i as usize), reach)
+            }
             Ok(None) => {}
             Err(code) => self.error(code),
         }
     }
 
+    /// Before a valid draw of DrawElements/DrawRangeElements is recorded: the client arrays
+    /// it reads (see [`Context::record_client_arrays`]).
+    fn record_client_arrays_indexed(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        p: &Pointer,
+        range: Option<(u32, u32)>,
+    ) {
+        if self.recording.is_none() || self.lists.depth > 0 || self.begin_mode.is_some() {
+            return;
+        }
+        if let Ok(Some(idx)) = self
+            .state
+            .arrays
+            .check_draw_elements(mode, count, ty, p, range)
+        {
+            let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+            self.record_client_arrays(reach);
+        }
+    }
+
+    /// A recorded stream holds bytes, never memory read at draw time ([`Pointer::Client`], the
+    /// C ABI's client arrays): before a valid draw that reads `reach` elements is recorded,
+    /// each enabled array backed by such memory is recorded as its `*Pointer` call with the
+    /// bytes the draw reads (with ARRAY_BUFFER unbound around it, and the array's texture unit
+    /// made the client active one), so that a replay draws what this draw drew.
+    fn record_client_arrays(&mut self, reach: usize) {
+        if self.recording.is_none() || self.lists.depth > 0 {
+            return;
+        }
+        let a = &self.state.arrays;
+        let mut calls = Vec::new();
+        let mut tex_units = Vec::new();
+        let lists: Vec<(Attr, &crate::arrays::ClientArray)> = [
+            (Attr::Vertex, &a.vertex),
+            (Attr::Normal, &a.normal),
+            (Attr::Color, &a.color),
+            (Attr::SecondaryColor, &a.secondary_color),
+            (Attr::FogCoord, &a.fog_coord),
+            (Attr::EdgeFlag, &a.edge_flag),
+        ]
+        .into_iter()
+        .chain(
+            a.tex_coords
+                .iter()
+                .enumerate()
+                .map(|(u, t)| (Attr::TexCoord(u), t)),
+        )
+        .collect();
+        for (attr, arr) in lists {
+            let Pointer::Client(c) = &arr.pointer else {
+                continue;
+            };
+            if !arr.enabled || arr.buffer != 0 {
+                continue;
+            }
+            let elem = arr.size.max(0) as usize * crate::arrays::type_size(arr.ty);
+            let stride = if arr.stride == 0 {
+                elem
+            } else {
+                arr.stride as usize
+            };
+            let need = reach
+                .checked_sub(1)
+                .and_then(|l| l.checked_mul(stride))
+                .and_then(|n| n.checked_add(elem))
+                .unwrap_or(0);
+            let data = Pointer::Data(c.read(need).to_vec());
+            let (size, ty, stride) = (arr.size, arr.ty, arr.stride);
+            if let Attr::TexCoord(u) = attr {
+                tex_units.push(u);
+                calls.push(Call::ClientActiveTexture(gl::TEXTURE0 + u as u32));
+            }
+            calls.push(match attr {
+                Attr::Vertex => Call::VertexPointer(size, ty, stride, data),
+                Attr::Normal => Call::NormalPointer(ty, stride, data),
+                Attr::Color => Call::ColorPointer(size, ty, stride, data),
+                Attr::SecondaryColor => Call::SecondaryColorPointer(size, ty, stride, data),
+                Attr::FogCoord => Call::FogCoordPointer(ty, stride, data),
+                Attr::EdgeFlag => Call::EdgeFlagPointer(stride, data),
+                Attr::TexCoord(_) => Call::TexCoordPointer(size, ty, stride, data),
+            });
+        }
+        if calls.is_empty() {
+            return;
+        }
+        if !tex_units.is_empty() {
+            let unit = gl::TEXTURE0 + self.state.client_active_texture as u32;
+            calls.push(Call::ClientActiveTexture(unit));
+        }
+        let bound = a.array_buffer;
+        let rec = self.recording.as_mut().expect("checked above");
+        if bound != 0 {
+            rec.push(Call::BindBuffer(gl::ARRAY_BUFFER, 0));
+        }
+        rec.extend(calls);
+        if bound != 0 {
+            rec.push(Call::BindBuffer(gl::ARRAY_BUFFER, bound));
+        }
+    }
+
     /// `Begin(mode)` (when given), ArrayElement(i) for each index, `End`; the indices are
-    /// already checked against every enabled array.
-    fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>) {
+    /// already checked against every enabled array, and the largest is below `reach`.
+    fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>, reach: usize) {
         let arrays = std::mem::take(&mut self.state.arrays);
-        let sources = arrays.sources();
+        let sources = arrays.sources(reach);
         if !sources.is_empty() {
             if let Some(mode) = mode {
                 self.begin_mode = Some(mode);
@@ -222,7 +446,7 @@ impl Context {
     /// calls and the vertex, End — so the list keeps this data whatever the arrays hold when it
     /// runs. `Ok(None)` for any other call, and for a draw that is erroneous now: that one is
     /// compiled as it is, to raise its error when the list runs. Texture coordinates of units
-    /// other than 0 have no immediate-mode call yet (MultiTexCoord) and are not captured.
+    /// other than 0 become MultiTexCoord calls.
     ///
     /// Memory: with no array enabled nothing is drawn and nothing is stored, whatever the count
     /// (DrawArrays' count is then bounded by nothing). Otherwise every index is checked against
@@ -230,7 +454,58 @@ impl Context {
     /// the data handed over; they are reserved in one `try_reserve_exact`, and a failure is
     /// `Err(OUT_OF_MEMORY)` instead of an abort.
     pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
+        // Not a draw, but resolved at compile time too: the stipple unpacked now (stipple.rs).
+        if let Call::PolygonStipple(mask) = call {
+            return Ok(self.compile_polygon_stipple(mask));
+        }
         let arrays = &self.state.arrays;
+        // A multiple draw compiles into its draws, one after the other (Mesa: DrawArrays and
+        // DrawElements each), when it is valid as a whole now.
+        let parts: Option<Vec<Call>> = match call {
+            Call::MultiDrawArrays(args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                match arrays.check_multi_draw_arrays(mode, first, count, drawcount) {
+                    Ok(ranges) => Some(
+                        ranges
+                            .into_iter()
+                            .map(|r| {
+                                let n = r.end() - r.start() + 1;
+                                Call::DrawArrays(mode, *r.start() as i32, n as i32)
+                            })
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            Call::MultiDrawElements(args) => {
+                let (mode, ref count, ty, ref indices, drawcount) = **args;
+                match arrays.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                    Ok(_) => Some(
+                        count
+                            .iter()
+                            .zip(indices)
+                            .take(drawcount.max(0) as usize)
+                            .filter(|(&c, _)| c > 0)
+                            .map(|(&c, p)| Call::DrawElements(mode, c, ty, p.clone()))
+                            .collect(),
+                    ),
+                    Err(gl::OUT_OF_MEMORY) => return Err(gl::OUT_OF_MEMORY),
+                    Err(_) => return Ok(None),
+                }
+            }
+            _ => None,
+        };
+        if let Some(parts) = parts {
+            let mut calls = Vec::new();
+            for part in &parts {
+                if let Some(mut c) = self.compile_draw(part)? {
+                    calls.try_reserve(c.len()).map_err(|_| gl::OUT_OF_MEMORY)?;
+                    calls.append(&mut c);
+                }
+            }
+            return Ok(Some(calls));
+        }
         // Checked first, as the draw itself would be: an erroneous draw compiles as it is.
         let (mode, indices) = match call {
             Call::ArrayElement(i) => match arrays.check_array_element(*i) {
@@ -260,15 +535,16 @@ impl Context {
             }
             _ => return Ok(None),
         };
-        let sources = arrays.sources();
+        let reach = match &indices {
+            Indices::Range(r) => r.end().saturating_add(1),
+            Indices::List(v) => v.iter().max().map_or(0, |&m| m as usize + 1),
+        };
+        let sources = arrays.sources(reach);
         if sources.is_empty() {
             return Ok(Some(Vec::new()));
         }
         // One call per element per source that has an immediate-mode call, Begin and End.
-        let per_index = sources
-            .iter()
-            .filter(|s| !matches!(s.attr, Attr::TexCoord(u) if u != 0))
-            .count();
+        let per_index = sources.len();
         let total = indices
             .len()
             .checked_mul(per_index)
@@ -287,7 +563,9 @@ impl Context {
                 calls.extend(match s.attr {
                     Attr::EdgeFlag => Some(Call::EdgeFlag(x != 0.0)),
                     Attr::TexCoord(0) => Some(Call::TexCoord4f(x, y, z, w)),
-                    Attr::TexCoord(_) => None,
+                    Attr::TexCoord(u) => {
+                        Some(Call::MultiTexCoord4f(gl::TEXTURE0 + u as u32, x, y, z, w))
+                    }
                     Attr::Color => Some(Call::Color4f(x, y, z, w)),
                     Attr::SecondaryColor => Some(Call::SecondaryColor3f(x, y, z)),
                     Attr::FogCoord => Some(Call::FogCoordf(x)),
@@ -426,6 +704,132 @@ impl Context {
         }
     }
 
+    /// `glMapBuffer` (GL 1.5, GL 2.1 §2.9): maps the store of the buffer bound to `target`
+    /// (ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER) for `access` (READ_ONLY, WRITE_ONLY or
+    /// READ_WRITE) and returns it. INVALID_ENUM for an access or a target; INVALID_OPERATION
+    /// between Begin and End, with no buffer bound, for a buffer already mapped, and (as
+    /// llvmpipe) for an empty one; `None` on any error.
+    ///
+    /// While mapped, BufferSubData and GetBufferSubData on the buffer, and every draw that reads
+    /// it (an enabled array or the index data in it), are INVALID_OPERATION (§2.9). The store
+    /// does not move until UnmapBuffer, BufferData or DeleteBuffers ends the mapping (or the
+    /// context is reset or dropped): [`Context::mapped_buffer_mut`] hands it out again, and a C
+    /// caller may keep its address until then. Not compiled into display lists (§5.4).
+    ///
+    /// Recording: the bytes written through the mapping are recorded with the `UnmapBuffer`
+    /// that ends it (`Call::UnmapBuffer(target, written)`), so a replay — on another context or
+    /// on the driver — writes the same bytes into its own mapping before unmapping.
+    pub fn map_buffer(&mut self, target: u32, access: u32) -> Option<&mut [u8]> {
+        // Executed immediately, never compiled (GL 2.1 §5.4): recorded only.
+        if let (Some(rec), 0) = (self.recording.as_mut(), self.lists.depth) {
+            rec.push(Call::MapBuffer(target, access));
+        }
+        if !self.outside_begin_end() {
+            return None;
+        }
+        match self.state.arrays.map_buffer(target, access) {
+            Ok(name) => {
+                if self.recording.is_some() {
+                    let store = self.state.arrays.buffers.get(&name).map(|b| b.data.clone());
+                    self.map_snapshots.insert(name, store.unwrap_or_default());
+                }
+                self.state.arrays.mapped_mut(target)
+            }
+            Err(code) => {
+                self.error(code);
+                None
+            }
+        }
+    }
+
+    /// The store of the buffer bound to `target` while it is mapped (`None` otherwise): what
+    /// `map_buffer` returned, again. Not a GL command (GetBufferPointerv is its GL form); it
+    /// raises no error and is not recorded.
+    pub fn mapped_buffer_mut(&mut self, target: u32) -> Option<&mut [u8]> {
+        self.state.arrays.mapped_mut(target)
+    }
+
+    /// `glUnmapBuffer` (GL 2.1 §2.9): ends the mapping of the buffer bound to `target`; true
+    /// on success (fixedgl's store cannot be lost while mapped). INVALID_ENUM for a target,
+    /// INVALID_OPERATION between Begin and End, with no buffer bound or one not mapped (false).
+    pub fn unmap_buffer(&mut self, target: u32) -> bool {
+        // Executed immediately, never compiled (GL 2.1 §5.4): recorded only.
+        if self.recording.is_some() && self.lists.depth == 0 {
+            let written = Box::new(self.map_writes(target));
+            if let Some(rec) = self.recording.as_mut() {
+                rec.push(Call::UnmapBuffer(target, written));
+            }
+        }
+        if !self.outside_begin_end() {
+            return false;
+        }
+        match self.state.arrays.unmap_buffer(target) {
+            Ok(name) => {
+                self.map_snapshots.remove(&name);
+                true
+            }
+            Err(code) => {
+                self.error(code);
+                false
+            }
+        }
+    }
+
+    /// What UnmapBuffer records: the bytes of the mapped store from its first to its last byte
+    /// that differ from the store at MapBuffer (the whole store if the mapping began before the
+    /// recording did); `(0, [])` when nothing changed or nothing is mapped.
+    fn map_writes(&self, target: u32) -> MapWrites {
+        let arrays = &self.state.arrays;
+        let name = match target {
+            gl::ARRAY_BUFFER => arrays.array_buffer,
+            gl::ELEMENT_ARRAY_BUFFER => arrays.element_array_buffer,
+            _ => 0,
+        };
+        let Some(b) = arrays.buffers.get(&name).filter(|b| b.mapped) else {
+            return (0, Vec::new());
+        };
+        let Some(before) = self.map_snapshots.get(&name) else {
+            return (0, b.data.clone());
+        };
+        let differs = |(a, b): (&u8, &u8)| a != b;
+        let first = b.data.iter().zip(before).position(differs);
+        let last = b.data.iter().zip(before).rposition(differs);
+        match (first, last) {
+            (Some(f), Some(l)) => (f, b.data.get(f..=l).unwrap_or(&[]).to_vec()),
+            _ => (0, Vec::new()),
+        }
+    }
+
+    /// A recorded `UnmapBuffer(target, written)`: when the buffer bound to `target` is mapped,
+    /// the bytes the recorded program wrote through its mapping are written into this one (the
+    /// part that fits), then `unmap_buffer` runs as the program called it.
+    pub(super) fn replay_unmap_buffer(&mut self, target: u32, written: &MapWrites) {
+        if self.begin_mode.is_none() {
+            if let Some(store) = self.state.arrays.mapped_mut(target) {
+                write_into(store, written);
+            }
+        }
+        self.unmap_buffer(target);
+    }
+
+    /// `glGetBufferPointerv(target, BUFFER_MAP_POINTER)`: the address of the mapped store of the
+    /// buffer bound to `target`, null when it is not mapped. INVALID_ENUM for a target or another
+    /// pname, INVALID_OPERATION between Begin and End or with no buffer bound (null then).
+    pub fn get_buffer_pointerv(&mut self, target: u32, pname: u32) -> *mut std::ffi::c_void {
+        if self.begin_mode.is_some() {
+            self.error(gl::INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        match self.state.arrays.buffer_pointer(target, pname) {
+            Ok(Some(store)) => store.as_mut_ptr().cast(),
+            Ok(None) => std::ptr::null_mut(),
+            Err(code) => {
+                self.error(code);
+                std::ptr::null_mut()
+            }
+        }
+    }
+
     /// `glGetPointerv`: the pointer of VERTEX_ARRAY_POINTER, NORMAL_ARRAY_POINTER,
     /// COLOR_ARRAY_POINTER, SECONDARY_COLOR_ARRAY_POINTER, FOG_COORD_ARRAY_POINTER,
     /// EDGE_FLAG_ARRAY_POINTER or TEXTURE_COORD_ARRAY_POINTER (client active unit): the bytes
@@ -452,6 +856,17 @@ impl Context {
                 self.error(gl::INVALID_ENUM);
                 Pointer::NULL
             }
+        }
+    }
+}
+
+/// Writes a recorded UnmapBuffer's bytes into a mapped store, the part that fits (all of it,
+/// for a recording of the same program).
+pub(crate) fn write_into(store: &mut [u8], (offset, bytes): &MapWrites) {
+    if let Some(dst) = store.get_mut(*offset..) {
+        let n = dst.len().min(bytes.len());
+        if let (Some(d), Some(s)) = (dst.get_mut(..n), bytes.get(..n)) {
+            d.copy_from_slice(s);
         }
     }
 }

@@ -70,7 +70,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     if has(gl::LINE_BIT) {
         // Table 6.12.
-        copy!(d, s; line_width, enables.line_smooth, enables.line_stipple);
+        copy!(d, s; line_width, enables.line_smooth, enables.line_stipple,
+            stipple.line_pattern, stipple.line_repeat);
     }
     if has(gl::POLYGON_BIT) {
         // Table 6.13.
@@ -78,6 +79,10 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
             polygon_offset_units, enables.cull_face, enables.polygon_smooth,
             enables.polygon_stipple, enables.polygon_offset_fill, enables.polygon_offset_line,
             enables.polygon_offset_point);
+    }
+    if has(gl::POLYGON_STIPPLE_BIT) {
+        // Table 6.13: the stipple pattern (its enable is in POLYGON_BIT and ENABLE_BIT).
+        copy!(d, s; stipple.polygon);
     }
     if has(gl::TEXTURE_BIT) {
         // Tables 6.15 to 6.20: the selected unit and every unit's enables.
@@ -97,6 +102,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; color_mask, clear_color, enables.alpha_test, enables.blend, enables.dither,
             enables.color_logic_op, enables.index_logic_op);
         copy!(d, s; alpha, blend, logic_op);
+        // Table 6.22: DRAW_BUFFER.
+        copy!(d, s; draw_buffer);
     }
     if has(gl::DEPTH_BUFFER_BIT) {
         copy!(d, s; depth_func, depth_mask, clear_depth, enables.depth_test);
@@ -123,11 +130,13 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     if has(gl::PIXEL_MODE_BIT) {
         // Table 6.23: the pixel transfer parameters and the zoom (the pixel maps are in no
-        // group).
-        copy!(d, s; pixel);
+        // group); table 6.26: READ_BUFFER.
+        copy!(d, s; pixel, read_buffer);
     }
-    // POLYGON_STIPPLE_BIT and ACCUM_BUFFER_BIT, and PIXEL_MODE_BIT's read buffer: no state of
-    // theirs is kept yet.
+    if has(gl::ACCUM_BUFFER_BIT) {
+        // Table 6.22: ACCUM_CLEAR_VALUE.
+        copy!(d, s; accum_clear);
+    }
 }
 
 /// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each
@@ -214,7 +223,11 @@ impl Context {
         if self.attrib.server.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.error(gl::STACK_OVERFLOW);
         }
-        let mut saved = Box::new(State::new(self.state.width, self.state.height));
+        let mut saved = Box::new(State::with_config(
+            self.state.width,
+            self.state.height,
+            self.state.config,
+        ));
         copy_groups(mask, &mut saved, &self.state);
         self.attrib.server.push((mask, saved));
     }

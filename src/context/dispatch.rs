@@ -431,6 +431,39 @@ impl Context {
             Call::CopyPixels(x, y, width, height, type_) => {
                 self.copy_pixels(x, y, width, height, type_)
             }
+            Call::MapBuffer(target, access) => {
+                self.map_buffer(target, access);
+            }
+            Call::UnmapBuffer(target, ref written) => self.replay_unmap_buffer(target, written),
+            Call::MultiDrawArrays(ref args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                self.multi_draw_arrays(mode, first, count, drawcount)
+            }
+            Call::MultiDrawElements(ref args) => {
+                let (mode, ref count, type_, ref indices, drawcount) = **args;
+                self.multi_draw_elements(mode, count, type_, indices, drawcount)
+            }
+            Call::GenQueries(n, ref ids) => self.replay_gen_queries(n, ids),
+            Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
+            Call::BeginQuery(target, id) => self.begin_query(target, id),
+            Call::EndQuery(target) => self.end_query(target),
+            Call::DrawBuffer(buf) => self.draw_buffer(buf),
+            Call::ReadBuffer(src) => self.read_buffer(src),
+            Call::ClearAccum(red, green, blue, alpha) => self.clear_accum(red, green, blue, alpha),
+            Call::Accum(op, value) => self.accum(op, value),
+            Call::SwapBuffers => self.swap_buffers(),
+            Call::RenderMode(mode) => {
+                self.render_mode(mode);
+            }
+            Call::SelectBuffer(size) => self.select_buffer(size),
+            Call::FeedbackBuffer(size, type_) => self.feedback_buffer(size, type_),
+            Call::InitNames => self.init_names(),
+            Call::LoadName(name) => self.load_name(name),
+            Call::PushName(name) => self.push_name(name),
+            Call::PopName => self.pop_name(),
+            Call::PassThrough(token) => self.pass_through(token),
+            Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }

@@ -18,11 +18,13 @@
 //! `framebuffer` (Clear*, DepthFunc, masks, Scissor) and `control` (Hint, PixelStore, Flush,
 //! Finish). Begin/End, Enable/Disable, the error flag and [`Context::execute`] live here.
 
+mod buffers;
 mod control;
 mod dispatch;
 mod framebuffer;
 mod lighting;
 mod raster;
+mod select;
 #[cfg(test)]
 mod tests;
 mod vertex;
@@ -30,7 +32,7 @@ mod vertex;
 use crate::call::Call;
 use crate::cpu::Renderer;
 use crate::gl;
-use crate::state::{State, MAX_VIEWPORT_DIM};
+use crate::state::{ContextConfig, State, MAX_VIEWPORT_DIM};
 use crate::Error;
 
 mod get;
@@ -71,6 +73,11 @@ pub struct Context {
     pub(crate) renderer: Renderer,
     pub(crate) lists: lists::DisplayLists,
     pub(crate) attrib: attrib::AttribStacks,
+    /// For each buffer mapped while recording: its store at MapBuffer, so that UnmapBuffer can
+    /// record the bytes written through the mapping (context/arrays.rs).
+    pub(crate) map_snapshots: std::collections::BTreeMap<u32, Vec<u8>>,
+    /// Query objects and the active query (context/query.rs).
+    pub(crate) queries: query::Queries,
 }
 
 impl Context {
@@ -78,6 +85,16 @@ impl Context {
     /// in GL's initial state. Each side must be between 1 and 16384 (else
     /// [`Error::InvalidSize`]); [`Error::OutOfMemory`] when the framebuffer cannot be allocated.
     pub fn new(width: u32, height: u32) -> Result<Context, Error> {
+        Self::with_config(width, height, ContextConfig::default())
+    }
+
+    /// A context with a `width` x `height` framebuffer holding the buffers `config` names
+    /// (front and back colour buffers, depth, stencil, accumulation), in GL's initial state:
+    /// DRAW_BUFFER and READ_BUFFER are BACK when double-buffered, FRONT otherwise.
+    /// [`Context::new`] is `with_config(width, height, ContextConfig::default())`: one RGBA8
+    /// colour buffer, 24-bit depth, 8-bit stencil, no accumulation buffer. Errors as
+    /// [`Context::new`].
+    pub fn with_config(width: u32, height: u32, config: ContextConfig) -> Result<Context, Error> {
         if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(Error::InvalidSize { width, height });
         }
@@ -87,9 +104,9 @@ impl Context {
         // The framebuffer is the one allocation sized by the caller here: tried, so that a size
         // the machine cannot hold is an `Err`, not an abort.
         let renderer =
-            Renderer::try_new(width, height).ok_or(Error::OutOfMemory { width, height })?;
+            Renderer::try_new(width, height, config).ok_or(Error::OutOfMemory { width, height })?;
         Ok(Context {
-            state: State::new(width, height),
+            state: State::with_config(width, height, config),
             error: gl::NO_ERROR,
             begin_mode: None,
             recording: None,
@@ -97,6 +114,8 @@ impl Context {
             renderer,
             lists: Default::default(),
             attrib: Default::default(),
+            map_snapshots: Default::default(),
+            queries: Default::default(),
         })
     }
 
@@ -108,13 +127,18 @@ impl Context {
     pub fn reset(&mut self) {
         let (w, h) = self.size();
         self.renderer.discard_batch();
-        self.state = State::new(w, h);
+        self.renderer.sink = Default::default();
+        self.state = State::with_config(w, h, self.state.config);
         self.error = gl::NO_ERROR;
         self.begin_mode = None;
         self.recording = None;
         self.lists = Default::default();
         self.sync_capturing();
         self.attrib = Default::default();
+        self.map_snapshots = Default::default();
+        if std::mem::take(&mut self.queries).active.is_some() {
+            self.renderer.stop_counting_samples(&self.state);
+        }
     }
 
     /// The state, read-only: what the `get_*` queries report, as plain data.
@@ -125,6 +149,13 @@ impl Context {
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
         (self.state.width, self.state.height)
+    }
+
+    /// Raises `code` as a command would: it becomes the sticky error unless an earlier one is
+    /// still unread. Not a GL entry point: for layers that embed a context and meet an error
+    /// of their own (the C ABI raises OUT_OF_MEMORY when a command could not complete).
+    pub fn raise_error(&mut self, code: u32) {
+        self.error(code);
     }
 
     /// Records `code` unless an earlier error is still unread: the first error sticks until
@@ -355,8 +386,11 @@ impl State {
     }
 }
 
-// Vertex arrays and buffer objects (context/arrays.rs)
+// Vertex arrays and buffer objects (context/arrays.rs); the GL backend writes a recorded
+// UnmapBuffer's bytes as the front end does.
 mod arrays;
+#[cfg(feature = "gl")]
+pub(crate) use arrays::write_into;
 
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
@@ -364,6 +398,12 @@ mod readback;
 // Raster position, rectangles, pixel rectangles, bitmaps (context/rasterpos.rs, context/pixels.rs)
 mod pixels;
 mod rasterpos;
+// Line and polygon stipple (context/stipple.rs)
+pub(crate) mod stipple;
+
+// Occlusion queries (context/query.rs)
+mod query;
+pub use query::QUERY_COUNTER_BITS;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;

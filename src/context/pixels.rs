@@ -485,7 +485,10 @@ impl Context {
         let (gi, gj, cols, rows) = compact(cols, rows);
         let n = gi.len();
         let fb = self.renderer.framebuffer();
-        let at = |i: usize, j: usize| fb.pixel(i64::from(x) + i as i64, i64::from(y) + j as i64);
+        // Colour comes from the buffer READ_BUFFER names (§4.3.3).
+        let buf = crate::cpu::framebuffer::read_buf(&self.state);
+        let at =
+            |i: usize, j: usize| fb.pixel_in(buf, i64::from(x) + i as i64, i64::from(y) + j as i64);
         let drawn = match type_ {
             gl::COLOR => {
                 let identity = t.color_is_identity();

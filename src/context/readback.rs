@@ -24,8 +24,9 @@ impl Context {
     /// PACK_SWAP_BYTES). The pixel transfer applies. Errors: INVALID_OPERATION between Begin and
     /// End, INVALID_VALUE for a negative size, INVALID_ENUM or INVALID_OPERATION for the format and
     /// type as DrawPixels (`pixels::check`), INVALID_OPERATION for COLOR_INDEX (no colour-index
-    /// buffer), INVALID_VALUE for an `out` shorter than the skips and the request need. Flushes
-    /// batched drawing first.
+    /// buffer), INVALID_VALUE for an `out` shorter than the skips and the request need,
+    /// INVALID_OPERATION for DEPTH_COMPONENT (STENCIL_INDEX) without a depth (stencil) buffer.
+    /// Colour comes from the buffer READ_BUFFER names. Flushes batched drawing first.
     #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
         &mut self,
@@ -50,6 +51,16 @@ impl Context {
         if f.group == Group::Index {
             return self.error(gl::INVALID_OPERATION);
         }
+        // §4.3.2: DEPTH_COMPONENT without a depth buffer, STENCIL_INDEX without a stencil
+        // buffer.
+        let missing = match f.group {
+            Group::Depth => !self.state.config.depth,
+            Group::Stencil => !self.state.config.stencil,
+            _ => false,
+        };
+        if missing {
+            return self.error(gl::INVALID_OPERATION);
+        }
         // Every product of the caller's sizes is checked (`PixelModes::layout`): width, height,
         // PACK_ROW_LENGTH and the skips up to 2^31 times 16 bytes a pixel wrap a usize, and a
         // wrapped `need` passed the length check below while the loops then ran over the whole
@@ -64,6 +75,7 @@ impl Context {
         self.renderer.flush(&self.state);
         let t = self.state.pixel;
         let maps = std::sync::Arc::clone(&self.state.pixel_maps);
+        let buf = crate::cpu::framebuffer::read_buf(&self.state);
         let fb = self.renderer.framebuffer();
         // Only the part of the rectangle inside the window is visited (§4.3.2: pixels outside it
         // are undefined; fixedgl leaves them untouched), so the work is bounded by the window,
@@ -81,7 +93,7 @@ impl Context {
         for j in rows {
             for i in cols.clone() {
                 let (px, py) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
-                let Some((c, d, s)) = fb.pixel(px, py) else {
+                let Some((c, d, s)) = fb.pixel_in(buf, px, py) else {
                     continue;
                 };
                 // The pixel's components, in the format's order, normalised (or an index).
@@ -128,7 +140,9 @@ impl Context {
     }
 
     /// The colour buffer as an image, top row first (flushes batched drawing first; between
-    /// Begin and End it returns what is drawn so far).
+    /// Begin and End it returns what is drawn so far): the back buffer of a double-buffered
+    /// context (where drawing goes unless DrawBuffer says otherwise), the only colour buffer of
+    /// a single-buffered one; [`Context::front_rgba`] reads the front buffer.
     pub fn to_image(&mut self) -> image::RgbaImage {
         if self.begin_mode.is_none() {
             self.renderer.flush(&self.state);

@@ -15,7 +15,7 @@ use glam::{Vec3, Vec4};
 
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
-use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_PHONG};
+use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_LINE, F_PHONG};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT};
@@ -42,6 +42,13 @@ pub struct FragCtx<'a> {
     /// Diagnostic: instead of writing colour, add 1 to the red byte of every fragment that
     /// reaches the colour write (tests count coverage with it).
     pub count: bool,
+    /// An occlusion query is active: count each fragment that passes the depth test (and the
+    /// tests before it) in `TileBufs::samples`, as llvmpipe counts after its depth/stencil
+    /// stage, whatever the masks then write.
+    pub samples: bool,
+    /// POLYGON_STIPPLE enabled: each window row's stipple bits (`stipple_rows`), applied to
+    /// filled polygons only (not to a line's parallelogram, `F_LINE`, nor to points).
+    pub stipple: Option<[u32; 32]>,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
     // Unit 0's sampler when texturing is on and its texture complete (§3.8)
@@ -65,10 +72,27 @@ const PIXEL_PRIM: RPrim = RPrim {
     z: [0.0; 3],
 };
 
+/// The polygon stipple of `state` (GL 2.1 §3.5.6) as `FragCtx::stipple` wants it: row r for
+/// window rows y ≡ r (mod 32), bit x set when window columns x' ≡ x (mod 32) are drawn.
+pub fn stipple_rows(state: &crate::state::State) -> [u32; 32] {
+    state.stipple.polygon
+}
+
+/// The stipple bits of window row `y` for the 64 pixels from column `x0` on: bit k for pixel
+/// x0 + k.
+#[inline(always)]
+fn stipple_mask(rows: &[u32; 32], x0: i32, y: i32) -> u64 {
+    let row = rows[(y & 31) as usize].rotate_right((x0 & 31) as u32);
+    u64::from(row) | u64::from(row) << 32
+}
+
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
 pub struct TileBufs<'a> {
     /// RGBA8, `TILE * TILE`.
     pub color: &'a mut [[u8; 4]],
+    /// A second colour buffer written with the same fragments (DrawBuffer FRONT_AND_BACK or
+    /// LEFT on a double-buffered framebuffer), blended against its own contents.
+    pub color2: Option<&'a mut [[u8; 4]]>,
     /// Depth, `TILE * TILE`.
     pub depth: &'a mut [u32],
     /// Stencil, `TILE * TILE`.
@@ -77,6 +101,8 @@ pub struct TileBufs<'a> {
     pub x: i32,
     /// Tile origin y.
     pub y: i32,
+    /// Fragments counted for an occlusion query (`FragCtx::samples`).
+    pub samples: u64,
 }
 
 impl FragCtx<'_> {
@@ -161,12 +187,21 @@ impl FragCtx<'_> {
         self.store(bufs, i, px);
     }
 
-    /// Writes unorm8 colour `px` at tile index `i` through ColorMask (§4.2.2).
+    /// Writes unorm8 colour `px` at tile index `i` through ColorMask (§4.2.2), to each colour
+    /// buffer being drawn.
     #[inline(always)]
     fn store(&self, bufs: &mut TileBufs, i: usize, px: [u8; 4]) {
-        let Some(dst) = bufs.color.get_mut(i) else {
-            return;
-        };
+        if let Some(dst) = bufs.color.get_mut(i) {
+            self.store_one(dst, px);
+        }
+        if let Some(dst) = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i)) {
+            self.store_one(dst, px);
+        }
+    }
+
+    /// Writes `px` over `dst` through ColorMask.
+    #[inline(always)]
+    fn store_one(&self, dst: &mut [u8; 4], px: [u8; 4]) {
         if self.count {
             dst[0] = dst[0].wrapping_add(1);
         } else if self.color_mask == [true; 4] {
@@ -183,6 +218,7 @@ impl FragCtx<'_> {
     /// The full sequence for one fragment with colour `c` (before clamping) and fog coordinate
     /// `fogc` at tile index `i`: clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil and
     /// depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write.
+    /// A fragment that passes the depth test counts for an occlusion query.
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn full(
@@ -226,19 +262,24 @@ impl FragCtx<'_> {
         } else if !self.depth(bufs, i, z) {
             return;
         }
+        if self.samples {
+            bufs.samples += 1;
+        }
         let src = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
-        let px = match ops.write {
+        // Blending and the logic op read each colour buffer's own contents (§4.1.8, §4.1.10).
+        let combine = |d: [u8; 4]| match ops.write {
             ColorWrite::Replace => src,
-            ColorWrite::Blend(b) => match bufs.color.get(i) {
-                Some(&d) => b.apply(src, d),
-                None => return,
-            },
-            ColorWrite::Logic(op) => match bufs.color.get(i) {
-                Some(&d) => std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k])),
-                None => return,
-            },
+            ColorWrite::Blend(b) => b.apply(src, d),
+            ColorWrite::Logic(op) => {
+                std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k]))
+            }
         };
-        self.store(bufs, i, px);
+        if let Some(dst) = bufs.color.get_mut(i) {
+            self.store_one(dst, combine(*dst));
+        }
+        if let Some(dst) = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i)) {
+            self.store_one(dst, combine(*dst));
+        }
     }
 
     /// The fog coordinate among varyings `v` (0 when fog is off).
@@ -272,6 +313,9 @@ impl FragCtx<'_> {
             return;
         }
         if self.depth(bufs, i, z) {
+            if self.samples {
+                bufs.samples += 1;
+            }
             // A point has no derivatives: λ = 0 (the base level, magnification).
             let c = self.color(p, v, [0.0; 2]);
             self.write(bufs, i, c);
@@ -299,25 +343,24 @@ impl FragCtx<'_> {
             return self.full_span(ops, bufs, p, planes, fy, zrow, base, x0, n);
         }
         // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits), the
-        // comparison chosen once per span.
+        // comparison chosen once per span; a polygon stipple (§3.5.6) removes fragments first.
         let (fx0, dz) = (x0 - ox, p.z[1]);
-        let mut mask = if !self.depth_test {
-            u64::MAX >> (64 - n.clamp(1, 64))
-        } else {
-            let (b, z) = (base, zrow);
-            match self.depth_func {
-                gl::NEVER => 0,
-                gl::LESS => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d < s),
-                gl::EQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d == s),
-                gl::LEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d <= s),
-                gl::GREATER => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d > s),
-                gl::NOTEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d != s),
-                gl::GEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d >= s),
-                _ => self.depth_span(bufs, b, n, z, dz, fx0, |_, _| true),
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
+        let mut mask = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => {
+                let live = all & stipple_mask(&rows, x0, y);
+                if live == 0 {
+                    return;
+                }
+                self.depth_mask_span::<true>(bufs, base, n, zrow, dz, fx0, live)
             }
+            _ => self.depth_mask_span::<false>(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
+        }
+        if self.samples {
+            bufs.samples += u64::from(mask.count_ones());
         }
         // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
         let nv = self.rl.n;
@@ -382,12 +425,44 @@ impl FragCtx<'_> {
         }
     }
 
-    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
-    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
-    /// k of the result set when fragment k survives.
+    /// The coverage mask of a span after the depth test: `live` (the fragments the span has)
+    /// when the test is off, else what `depth_span` leaves of it with DepthFunc's comparison.
+    /// `MASKED`: `live` may lack fragments inside the span (a polygon stipple).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_span(
+    fn depth_mask_span<const MASKED: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        b: usize,
+        n: usize,
+        z: f32,
+        dz: f32,
+        fx0: i32,
+        live: u64,
+    ) -> u64 {
+        if !self.depth_test {
+            return live;
+        }
+        let l = live;
+        match self.depth_func {
+            gl::NEVER => 0,
+            gl::LESS => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d < s),
+            gl::EQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d == s),
+            gl::LEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d <= s),
+            gl::GREATER => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d > s),
+            gl::NOTEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d != s),
+            gl::GEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d >= s),
+            _ => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |_, _| true),
+        }
+    }
+
+    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
+    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
+    /// k of the result set when fragment k survives. With `MASKED`, only the fragments whose
+    /// bit is set in `live` are tested (the others are gone); without, `live` is ignored.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn depth_span<const MASKED: bool>(
         &self,
         bufs: &mut TileBufs,
         base: usize,
@@ -395,6 +470,7 @@ impl FragCtx<'_> {
         zrow: f32,
         dz: f32,
         fx0: i32,
+        live: u64,
         pass: impl Fn(u32, u32) -> bool,
     ) -> u64 {
         let end = (base + n.min(64)).min(bufs.depth.len());
@@ -403,6 +479,9 @@ impl FragCtx<'_> {
         };
         let mut mask = 0;
         for (k, stored) in row.iter_mut().enumerate() {
+            if MASKED && live & (1 << k) == 0 {
+                continue;
+            }
             let z = zrow + dz * (fx0 + k as i32) as f32;
             let d = depth_unorm(f64::from(z));
             if pass(d, *stored) {
@@ -453,7 +532,16 @@ impl FragCtx<'_> {
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = self.rl.n.min(v.len());
         let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
+        // A polygon stipple (§3.5.6) removes fragments before any test.
+        let y = p.bbox[1] + fy as i32;
+        let live = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
+            _ => u64::MAX,
+        };
         for k in 0..n.min(TILE) {
+            if live & (1 << k) == 0 {
+                continue;
+            }
             let fx = (x0 - ox + k as i32) as f32;
             let z = zrow + p.z[1] * fx;
             let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);

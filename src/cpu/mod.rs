@@ -35,9 +35,11 @@
 //! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
 //! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
+pub mod accum;
 pub mod assembly;
 pub mod batch;
 pub mod clip;
+pub mod feedback;
 pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
@@ -58,11 +60,11 @@ use rayon::prelude::*;
 use std::sync::mpsc::{self, Receiver};
 use std::sync::Mutex;
 
-use crate::state::{Current, Material, State};
+use crate::state::{ContextConfig, Current, Material, State};
 use assembly::Asm;
 use batch::Batch;
 use fragment::{FragCtx, TileBufs};
-use framebuffer::{Framebuffer, TILE, TILE_PIXELS};
+use framebuffer::{Framebuffer, Targets, TILE, TILE_PIXELS};
 use setup::{SetupCtx, Worker};
 use vertex::{Layout, Lighting};
 
@@ -88,8 +90,14 @@ pub struct Renderer {
     /// The background draw of the previous batch: hands back the core, the batch and its
     /// vertex output.
     pending: Option<Mutex<Receiver<Drawn>>>,
+    /// Selection and feedback (GL 2.1 §5.2, §5.3): where batches go in SELECT and FEEDBACK
+    /// render modes.
+    pub(crate) sink: feedback::Sink,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
+    /// An occlusion query is active: draws count the fragments that pass the depth test (and
+    /// every test before it) into `Core::samples_passed`. Off, no draw counts anything.
+    count_samples: bool,
     /// Diagnostic: batches drawn in the background so far.
     pub(crate) background_draws: u64,
     /// Test hook: the next background draw panics (to test that the panic reaches the caller).
@@ -114,6 +122,8 @@ struct Core {
     fb: Framebuffer,
     asm: Vec<Asm>,
     workers: Vec<Worker>,
+    /// Fragments counted since `start_counting_samples` (GL 2.1 §4.1.7's SAMPLES_PASSED).
+    samples_passed: u64,
 }
 
 /// The vertex stage's output for a batch: `layout.stride` floats per vertex, and each vertex's
@@ -187,9 +197,32 @@ impl Renderer {
 
     /// [`Renderer::new`], or `None` when the framebuffer cannot be allocated (what
     /// `Context::new` reports as [`crate::Error::OutOfMemory`]).
-    pub fn try_new(width: u32, height: u32) -> Option<Self> {
-        let core = Box::new(Core::try_new(width, height)?);
+    /// The framebuffer has the buffers `config` names.
+    pub fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
+        let core = Box::new(Core::try_new(width, height, config)?);
         Some(Self::with_core(core, width, height))
+    }
+
+    /// Resizes the framebuffer to `width` x `height` (drawing what is batched first unless
+    /// `open`: a primitive is open, its vertices are then drawn into the new framebuffer),
+    /// keeping what fits (`Framebuffer::resized`); false, with nothing changed, when the new
+    /// buffers cannot be allocated.
+    pub fn resize(&mut self, state: &State, width: u32, height: u32, open: bool) -> bool {
+        if !open {
+            self.flush(state);
+        }
+        let Some(fb) = self.core().fb.resized(width, height) else {
+            return false;
+        };
+        self.tiles = fb.tiles();
+        self.size = (width, height);
+        self.core().fb = fb;
+        true
+    }
+
+    /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        &mut self.core().fb
     }
 
     fn with_core(core: Box<Core>, width: u32, height: u32) -> Self {
@@ -201,7 +234,9 @@ impl Renderer {
             verts: Processed::default(),
             spare: None,
             pending: None,
+            sink: feedback::Sink::default(),
             count_coverage: false,
+            count_samples: false,
             background_draws: 0,
             #[cfg(test)]
             panic_in_background: false,
@@ -238,6 +273,9 @@ impl Renderer {
         if self.batch.idx.len() < FLUSH_AT {
             return;
         }
+        if state.render_mode != crate::gl::RENDER {
+            return self.flush(state);
+        }
         // A caller running on the pool itself draws in place: blocking one of the pool's
         // threads on a job queued behind it could wait forever.
         if rayon::current_thread_index().is_some() {
@@ -256,6 +294,7 @@ impl Renderer {
         // changing its own.
         let state = Box::new(state.clone());
         let count = self.count_coverage;
+        let samples = self.count_samples;
         let (tx, rx) = mpsc::channel();
         self.pending = Some(Mutex::new(rx));
         self.background_draws += 1;
@@ -268,7 +307,7 @@ impl Renderer {
             let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                 #[cfg(test)]
                 assert!(!fail, "test hook: background draw panics");
-                core.draw(&state, &batch, &verts, plan, count);
+                core.draw(&state, &batch, &verts, plan, count, samples);
             }))
             .err();
             // The receiver lives until `wait` takes this; a send cannot fail before that.
@@ -360,6 +399,22 @@ impl Renderer {
         self.core().fb.color_rows()
     }
 
+    /// Starts an occlusion query's count (GL 2.1 §4.1.7): everything batched so far is drawn
+    /// uncounted, then every fragment that passes the depth test (after scissor, alpha and
+    /// stencil tests) counts, until `stop_counting_samples`.
+    pub fn start_counting_samples(&mut self, state: &State) {
+        self.flush(state);
+        self.core().samples_passed = 0;
+        self.count_samples = true;
+    }
+
+    /// Ends the count: draws what is batched (counted), and returns the fragments counted.
+    pub fn stop_counting_samples(&mut self, state: &State) -> u64 {
+        self.flush(state);
+        self.count_samples = false;
+        std::mem::take(&mut self.core().samples_passed)
+    }
+
     /// Drops the vertices batched so far without drawing them (`Context::reset`).
     pub fn discard_batch(&mut self) {
         self.batch.clear();
@@ -372,13 +427,27 @@ impl Renderer {
             self.batch.clear();
             return;
         }
+        if state.render_mode != crate::gl::RENDER {
+            // Hit records or feedback tokens instead of fragments.
+            let Renderer {
+                batch,
+                verts,
+                sink,
+                tiles,
+                ..
+            } = self;
+            sink.process(state, batch, &mut verts.vout, &mut verts.wins, *tiles);
+            batch.clear();
+            return;
+        }
         let count = self.count_coverage;
+        let samples = self.count_samples;
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
             core, batch, verts, ..
         } = self;
         match core.as_deref_mut() {
-            Some(core) => core.draw(state, batch, verts, plan, count),
+            Some(core) => core.draw(state, batch, verts, plan, count, samples),
             None => Self::lost(),
         }
         batch.clear();
@@ -392,14 +461,16 @@ impl Core {
             fb: Framebuffer::new(width, height),
             asm: Vec::new(),
             workers: Vec::new(),
+            samples_passed: 0,
         }
     }
 
-    fn try_new(width: u32, height: u32) -> Option<Self> {
+    fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
         Some(Core {
-            fb: Framebuffer::try_new(width, height)?,
+            fb: Framebuffer::try_new(width, height, config)?,
             asm: Vec::new(),
             workers: Vec::new(),
+            samples_passed: 0,
         })
     }
 
@@ -412,6 +483,7 @@ impl Core {
         verts: &Processed,
         plan: Plan,
         count_coverage: bool,
+        count_samples: bool,
     ) {
         let Plan { layout, ctx } = plan;
         // Fragment-stage constants.
@@ -419,28 +491,47 @@ impl Core {
         // Unit 0, when enabled and complete (§3.8.10)
         let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
         let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
-        let Core { fb, asm, workers } = self;
+        let Core {
+            fb,
+            asm,
+            workers,
+            samples_passed,
+        } = self;
         let (vout, wins) = (&verts.vout[..], &verts.wins[..]);
         let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
             std::slice::from_ref(&state.materials)
         } else {
             &batch.snapshots
         };
+        let targets = Targets::of(state);
         let fctx = FragCtx {
-            depth_test: state.enables.depth_test,
+            // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
+            depth_test: state.enables.depth_test && fb.config().depth,
             depth_func: state.depth_func,
             depth_mask: state.depth_mask,
-            color_mask: state.color_mask,
+            // DrawBuffer(NONE): fragments go through every test and write no colour.
+            color_mask: if targets.none() {
+                [false; 4]
+            } else {
+                state.color_mask
+            },
             color_sum: layout.spec.is_some(),
             rl: ctx.rl,
             lighting: lighting.as_ref(),
             mats,
             count: count_coverage,
+            samples: count_samples,
+            stipple: state
+                .enables
+                .polygon_stipple
+                .then(|| fragment::stipple_rows(state)),
             ops: fragops::Ops::new(state),
             tex: sampler.as_ref(),
             tex1: sampler1.as_ref(),
         };
-        let nw = if batch.idx.len() >= PARALLEL_SETUP {
+        // The line stipple counter runs from segment to segment in submission order: one
+        // worker sets up everything while LINE_STIPPLE is on.
+        let nw = if batch.idx.len() >= PARALLEL_SETUP && ctx.line_stipple.is_none() {
             // More workers than threads balances the load when other processes share the cores.
             (4 * rayon::current_num_threads()).clamp(1, 32)
         } else {
@@ -471,13 +562,13 @@ impl Core {
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if workers.len() == 1 || largest <= count / workers.len() {
                 setup_by_primitives(workers, &ctx, &v, piece, count);
-                rasterise(fb, workers, &fctx, ctx.tiles_x);
+                *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
                 assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
-                    rasterise(fb, workers, &fctx, ctx.tiles_x);
+                    *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
                 }
             }
             start = end;
@@ -557,26 +648,53 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
 }
 
 /// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
-/// primitives first, then worker 1's, ..., which is submission order.
-fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) {
-    fb.color
+/// primitives first, then worker 1's, ..., which is submission order. Colour goes to the
+/// buffers `targets` names: the main buffer, the front buffer, or both (the front one as each
+/// tile's second colour slice). Returns the fragments counted for an occlusion query (0 unless
+/// `fctx.samples`).
+fn rasterise(
+    fb: &mut Framebuffer,
+    workers: &[Worker],
+    fctx: &FragCtx,
+    tiles_x: usize,
+    targets: Targets,
+) -> u64 {
+    let (tx, ty) = fb.tiles();
+    let Framebuffer {
+        color,
+        front,
+        depth,
+        stencil,
+        ..
+    } = fb;
+    // The first target is each tile's colour slice, a second one its `color2`.
+    let (primary, secondary) = match (targets.front, front.as_mut()) {
+        (true, Some(f)) if !targets.main => (f, None),
+        (true, Some(f)) => (color, Some(f)),
+        _ => (color, None),
+    };
+    let seconds = framebuffer::tile_slices(secondary, tx * ty);
+    primary
         .par_chunks_mut(TILE_PIXELS)
-        .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
-        .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
+        .zip(seconds)
+        .zip(depth.par_chunks_mut(TILE_PIXELS))
+        .zip(stencil.par_chunks_mut(TILE_PIXELS))
         .enumerate()
-        .for_each(|(t, ((color, depth), stencil))| {
+        .map(|(t, (((color, color2), depth), stencil))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
             {
-                return;
+                return 0;
             }
             let mut bufs = TileBufs {
                 color,
+                color2,
                 depth,
                 stencil,
                 x: ((t % tiles_x) * TILE) as i32,
                 y: ((t / tiles_x) * TILE) as i32,
+                samples: 0,
             };
             for w in workers {
                 for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
@@ -585,5 +703,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
                     }
                 }
             }
-        });
+            bufs.samples
+        })
+        .sum()
 }

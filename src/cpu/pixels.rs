@@ -20,7 +20,9 @@ use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::fragment::{FragCtx, TileBufs};
-use super::framebuffer::{scissor_rect, unorm8, TILE, TILE_PIXELS};
+use super::framebuffer::{
+    scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
+};
 use super::texture::Sampler;
 use super::Renderer;
 use crate::state::State;
@@ -182,16 +184,27 @@ impl Renderer {
             }),
             fogc: rp.distance,
         };
+        let targets = Targets::of(state);
+        let has_depth = self.core().fb.config().depth;
         let fctx = FragCtx {
-            depth_test: state.enables.depth_test,
+            // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
+            depth_test: state.enables.depth_test && has_depth,
             depth_func: state.depth_func,
             depth_mask: state.depth_mask,
-            color_mask: state.color_mask,
+            // DrawBuffer(NONE): fragments go through every test and write no colour.
+            color_mask: if targets.none() {
+                [false; 4]
+            } else {
+                state.color_mask
+            },
             color_sum: false,
             rl: Default::default(),
             lighting: None,
             mats: &[],
             count: self.count_coverage,
+            samples: self.count_samples,
+            // Polygon stipple applies to polygons only (§3.5.6).
+            stipple: None,
             ops: super::fragops::Ops::new(state),
             tex: None,
             tex1: None,
@@ -202,30 +215,50 @@ impl Renderer {
             && !fctx.depth_test
             && shared.tex.iter().all(Option::is_none)
             && shared.secondary.is_none()
-            && !fctx.count;
+            && !fctx.count
+            && !fctx.samples;
         let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
-        let fb = &mut self.core().fb;
-        let tiles_x = fb.tiles().0;
+        let core = self.core();
+        let fb = &mut core.fb;
+        let (tiles_x, tiles_y) = fb.tiles();
         let (x0, y0) = (d.cols.lo, d.rows.lo);
         let (x1, y1) = (x0 + d.cols.len() as i32 - 1, y0 + d.rows.len() as i32 - 1);
-        fb.color
+        let Framebuffer {
+            color,
+            front,
+            depth,
+            stencil,
+            ..
+        } = fb;
+        // The first colour target is each tile's colour slice, a second one its `color2`
+        // (DrawBuffer(FRONT_AND_BACK)), as for primitives.
+        let (primary, secondary) = match (targets.front, front.as_mut()) {
+            (true, Some(f)) if !targets.main => (f, None),
+            (true, Some(f)) => (color, Some(f)),
+            _ => (color, None),
+        };
+        let seconds = tile_slices(secondary, tiles_x * tiles_y);
+        let counted: u64 = primary
             .par_chunks_mut(TILE_PIXELS)
-            .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
-            .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
+            .zip(seconds)
+            .zip(depth.par_chunks_mut(TILE_PIXELS))
+            .zip(stencil.par_chunks_mut(TILE_PIXELS))
             .enumerate()
-            .for_each(|(t, ((color, depth), stencil))| {
+            .map(|(t, (((color, color2), depth), stencil))| {
                 let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
                 let (tx0, ty0) = (x0.max(ox), y0.max(oy));
                 let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
                 if tx0 > tx1 || ty0 > ty1 {
-                    return;
+                    return 0;
                 }
                 let mut bufs = TileBufs {
                     color,
+                    color2,
                     depth,
                     stencil,
                     x: ox,
                     y: oy,
+                    samples: 0,
                 };
                 for y in ty0..=ty1 {
                     let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
@@ -251,7 +284,23 @@ impl Renderer {
                         );
                     }
                 }
-            });
+                bufs.samples
+            })
+            .sum();
+        core.samples_passed += counted;
+    }
+}
+
+/// Writes `px` through `mask` to the pixel at tile index `i` of each colour buffer drawn.
+#[inline(always)]
+fn put(bufs: &mut TileBufs, i: usize, px: [u8; 4], mask: [bool; 4]) {
+    let second = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i));
+    for dst in bufs.color.get_mut(i).into_iter().chain(second) {
+        for k in 0..4 {
+            if mask[k] {
+                dst[k] = px[k];
+            }
+        }
     }
 }
 
@@ -273,25 +322,15 @@ fn fragment(
             let Some(&c) = c.get(g) else { return };
             let c = Vec4::from_array(c);
             if plain {
-                if let Some(dst) = bufs.color.get_mut(i) {
-                    let px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
-                    for k in 0..4 {
-                        if fctx.color_mask[k] {
-                            dst[k] = px[k];
-                        }
-                    }
-                }
+                let px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
+                put(bufs, i, px, fctx.color_mask);
                 return;
             }
             (c, shared.z)
         }
         Groups::Bytes(c) => {
-            if let (Some(&px), Some(dst)) = (c.get(g), bufs.color.get_mut(i)) {
-                for k in 0..4 {
-                    if fctx.color_mask[k] {
-                        dst[k] = px[k];
-                    }
-                }
+            if let Some(&px) = c.get(g) {
+                put(bufs, i, px, fctx.color_mask);
             }
             return;
         }

@@ -25,6 +25,8 @@ fn ptr(p: &Pointer) -> *const c_void {
     match p {
         Pointer::Data(d) => d.as_ptr().cast(),
         Pointer::Offset(o) => *o as *const c_void,
+        // Never recorded (a recording holds the bytes a draw read), so never replayed.
+        Pointer::Client(_) => std::ptr::null(),
     }
 }
 
@@ -88,7 +90,7 @@ impl GlBackend {
             }
             Call::DrawArrays(mode, first, count) => {
                 // With no array enabled there is nothing to read and nothing to draw.
-                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources().is_empty() {
+                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: the shadow checked first + count against every enabled array.
                     unsafe { self.raw.DrawArrays(mode, first, count) };
@@ -97,7 +99,7 @@ impl GlBackend {
             }
             Call::DrawElements(mode, count, ty, ref p) => {
                 if a.check_draw_elements(mode, count, ty, p, None)?.is_some()
-                    && !a.sources().is_empty()
+                    && !a.sources(0).is_empty()
                 {
                     self.before_begin();
                     // SAFETY: `p` holds `count` indices of `ty` (or is an offset into the bound
@@ -113,6 +115,58 @@ impl GlBackend {
                     self.before_begin();
                     // SAFETY: as DrawElements: indices and arrays checked by the shadow.
                     unsafe { self.raw.DrawRangeElements(mode, s, e, count, ty, ptr(p)) };
+                }
+                return Ok(());
+            }
+            Call::MultiDrawArrays(ref args) => {
+                let (mode, ref first, ref count, drawcount) = **args;
+                let ranges = a.check_multi_draw_arrays(mode, first, count, drawcount)?;
+                // The draws the shadow checked, each as (first, count): the call's own minus
+                // those that draw nothing.
+                let firsts: Vec<i32> = ranges.iter().map(|r| *r.start() as i32).collect();
+                let counts: Vec<i32> = ranges
+                    .iter()
+                    .map(|r| (r.end() - r.start() + 1) as i32)
+                    .collect();
+                if !firsts.is_empty() && !a.sources(0).is_empty() {
+                    self.before_begin();
+                    // SAFETY: `firsts` and `counts` hold `firsts.len()` values each, and every
+                    // range lies inside every enabled array, as the shadow checked.
+                    unsafe {
+                        self.raw.MultiDrawArrays(
+                            mode,
+                            firsts.as_ptr(),
+                            counts.as_ptr(),
+                            firsts.len() as i32,
+                        )
+                    };
+                }
+                return Ok(());
+            }
+            Call::MultiDrawElements(ref args) => {
+                let (mode, ref count, ty, ref indices, drawcount) = **args;
+                a.check_multi_draw_elements(mode, count, ty, indices, drawcount)?;
+                let (counts, pointers): (Vec<i32>, Vec<*const c_void>) = count
+                    .iter()
+                    .zip(indices)
+                    .take(drawcount.max(0) as usize)
+                    .filter(|(&c, _)| c > 0)
+                    .map(|(&c, p)| (c, ptr(p)))
+                    .unzip();
+                if !counts.is_empty() && !a.sources(0).is_empty() {
+                    self.before_begin();
+                    // SAFETY: one count and one pointer per draw; each pointer holds its count
+                    // of indices of `ty` (or is an offset into the bound element buffer), each
+                    // inside every enabled array, as the shadow checked.
+                    unsafe {
+                        self.raw.MultiDrawElements(
+                            mode,
+                            counts.as_ptr(),
+                            ty,
+                            pointers.as_ptr(),
+                            counts.len() as i32,
+                        )
+                    };
                 }
                 return Ok(());
             }
@@ -136,10 +190,41 @@ impl GlBackend {
                 a.buffer_data(target, size, p, usage)?;
                 let data = match **p {
                     Pointer::Data(_) => ptr(p),
-                    Pointer::Offset(_) => std::ptr::null(),
+                    Pointer::Offset(_) | Pointer::Client(_) => std::ptr::null(),
                 };
                 // SAFETY: `data` is null or holds `size` bytes, as the shadow checked.
                 unsafe { gl.BufferData(target, size, data, usage) };
+                return Ok(());
+            }
+            Call::MapBuffer(target, access) => {
+                a.map_buffer(target, access)?;
+                // SAFETY: no pointer is passed; the returned one is not kept (UnmapBuffer asks
+                // the driver for it again).
+                unsafe { gl.MapBuffer(target, access) };
+                return Ok(());
+            }
+            Call::UnmapBuffer(target, ref written) => {
+                let size = a.mapped_mut(target).map_or(0, |store| {
+                    crate::context::write_into(store, written);
+                    store.len()
+                });
+                a.unmap_buffer(target)?;
+                let mut mapped: *mut c_void = std::ptr::null_mut();
+                // The generated binding declares the output `*const *mut c_void`; the driver
+                // writes one pointer through it.
+                let out: *const *mut c_void = std::ptr::addr_of_mut!(mapped);
+                // SAFETY: BUFFER_MAP_POINTER writes one pointer, into `mapped`.
+                unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, out) };
+                if !mapped.is_null() {
+                    // SAFETY: the driver maps the whole store of the buffer bound to `target`,
+                    // whose size the shadow holds (`size`: the same BufferData made both), and
+                    // `driver` is that mapping; no other reference to it exists.
+                    let driver =
+                        unsafe { std::slice::from_raw_parts_mut(mapped.cast::<u8>(), size) };
+                    crate::context::write_into(driver, written);
+                }
+                // SAFETY: no pointers.
+                unsafe { gl.UnmapBuffer(target) };
                 return Ok(());
             }
             Call::BufferSubData(target, offset, size, ref p) => {

@@ -189,6 +189,8 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::CopyPixels(_, _, w, h, t) => {
             w >= 0 && h >= 0 && !matches!(t, gl::COLOR | gl::DEPTH | gl::STENCIL)
         }
+        // SAMPLES_PASSED is GL 2.1's only query target (§4.1.7); a 4.5 driver takes more.
+        Call::BeginQuery(t, _) | Call::EndQuery(t) => t != gl::SAMPLES_PASSED,
         _ => false,
     };
     wrong.then_some(gl::INVALID_ENUM)

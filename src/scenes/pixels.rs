@@ -25,6 +25,7 @@ pub const SCENES: [Scene; 1] = [Scene {
     tolerance: LECTURE,
     default_size: (800, 800),
     draw: draw_pixels,
+    animate: None,
 }];
 
 /// The photograph's size.

@@ -743,7 +743,7 @@ mod random_on_gl {
     use proptest::prelude::*;
 
     /// The array and buffer commands, whose errors the test compares.
-    const ARRAY_CALLS: [&str; 19] = [
+    const ARRAY_CALLS: [&str; 23] = [
         "EnableClientState",
         "DisableClientState",
         "VertexPointer",
@@ -763,6 +763,10 @@ mod random_on_gl {
         "BindBuffer",
         "BufferData",
         "BufferSubData",
+        "MapBuffer",
+        "UnmapBuffer",
+        "MultiDrawArrays",
+        "MultiDrawElements",
     ];
 
     fn any_array_call() -> impl Strategy<Value = Call> {

@@ -131,6 +131,21 @@ const ROWS: &[(u32, Setter, u32)] = &[
         gl::LINE_STIPPLE,
     ),
     (
+        gl::LINE_BIT,
+        |c| c.line_stipple(3, 0x00FF),
+        gl::LINE_STIPPLE_PATTERN,
+    ),
+    (
+        gl::LINE_BIT,
+        |c| c.line_stipple(3, 0x00FF),
+        gl::LINE_STIPPLE_REPEAT,
+    ),
+    (
+        gl::POLYGON_BIT,
+        |c| c.enable(gl::POLYGON_STIPPLE),
+        gl::POLYGON_STIPPLE,
+    ),
+    (
         gl::POLYGON_BIT,
         |c| c.cull_face(gl::FRONT),
         gl::CULL_FACE_MODE,
