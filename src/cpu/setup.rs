@@ -798,10 +798,14 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     })
 }
 
-/// Polygon offset (§3.5.5): factor · max slope + units · r, r = 2^-24 for a 24-bit depth buffer.
+/// Polygon offset (§3.5.5): factor · max slope + units · r. GL leaves r to the implementation
+/// ("the smallest value guaranteed to produce a resolvable difference"); llvmpipe's is twice
+/// one step of the 24-bit depth buffer (Mesa's state tracker passes units · 2 to gallium, which
+/// scales by 2^-24), and with half that one unit does not lift a filled polygon off its own
+/// outline (piglit's polygon-mode-offset and gl-1.4-polygon-offset).
 pub(super) fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
     let m = dzdx.abs().max(dzdy.abs());
-    ctx.factor * m + ctx.units / f64::from(1u32 << 24)
+    ctx.factor * m + ctx.units * 2.0 / f64::from(1u32 << 24)
 }
 
 /// Which tiles `bbox` overlaps: `(tx0, ty0, tx1, ty1)` inclusive.
