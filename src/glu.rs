@@ -18,6 +18,12 @@ pub use quadric::{
     GLU_SILHOUETTE, GLU_SMOOTH,
 };
 
+// Tessellator (glu/tess.rs, the sweep in glu/tess_sweep.rs over the mesh of glu/tess_mesh.rs)
+mod tess;
+mod tess_mesh;
+mod tess_sweep;
+pub use tess::*;
+
 /// `v / |v|`, or `v` unchanged when it has zero length (as the reference GLU does).
 fn normalize(v: [f64; 3]) -> [f64; 3] {
     let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();

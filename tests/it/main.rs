@@ -17,6 +17,7 @@ mod fragment_state;
 mod gl_backend;
 mod gl_lists;
 mod glu_quadric;
+mod glu_tess;
 mod glut;
 mod implementation_choices;
 mod lists;
