@@ -565,3 +565,66 @@ fn tess_error_strings() {
         Some("need combine callback")
     );
 }
+
+/// Hostile input never panics or hangs: huge, tiny, infinite and NaN coordinates, many
+/// coincident points, thousands of vertices, callbacks missing.
+#[test]
+fn tess_hostile_input() {
+    let mut g = Lcg(7);
+    let specials = [
+        0.0,
+        -0.0,
+        1e150,
+        -1e150,
+        1e300,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        1e-300,
+        f64::MIN_POSITIVE,
+        1e149,
+        -3e149,
+    ];
+    for i in 0..300 {
+        let contours: Vec<Vec<[f64; 3]>> = (0..1 + g.below(4))
+            .map(|_| {
+                (0..g.below(12))
+                    .map(|_| {
+                        let mut p = [0.0; 3];
+                        for c in p.iter_mut().take(if i % 4 == 0 { 3 } else { 2 }) {
+                            *c = if g.below(3) == 0 {
+                                specials[g.below(specials.len() as u64) as usize]
+                            } else {
+                                g.below(5) as f64
+                            };
+                        }
+                        p
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut c = case(contours);
+        c.rule = RULES[i % 5];
+        c.boundary_only = i % 6 == 1;
+        c.edge_flag = i % 5 == 2;
+        c.combine = i % 9 != 0;
+        let _ = run_fixedgl(&c);
+    }
+    // A long contour: 20000 vertices of a zigzag.
+    let big: Vec<[f64; 3]> = (0..20_000)
+        .map(|k| {
+            [
+                k as f64,
+                if k % 2 == 0 {
+                    0.0
+                } else {
+                    1.0 + (k % 7) as f64
+                },
+                0.0,
+            ]
+        })
+        .chain([[20_000.0, -5.0, 0.0], [0.0, -5.0, 0.0]])
+        .collect();
+    let out = run_fixedgl(&case(vec![big]));
+    assert!(out.len() > 20_000);
+}
