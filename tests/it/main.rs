@@ -16,6 +16,7 @@ mod fragment_gl;
 mod fragment_state;
 mod gl_backend;
 mod gl_lists;
+mod glu_mipmap;
 mod glu_quadric;
 mod glu_tess;
 mod glut;
