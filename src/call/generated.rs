@@ -648,6 +648,42 @@ pub enum Call {
     /// `glEndQuery(target)`.
     EndQuery(u32),
 
+    // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
+    /// `glDrawBuffer(buf)`.
+    DrawBuffer(u32),
+    /// `glReadBuffer(src)`.
+    ReadBuffer(u32),
+    /// `glClearAccum(red, green, blue, alpha)`.
+    ClearAccum(f32, f32, f32, f32),
+    /// `glAccum(op, value)`.
+    Accum(u32, f32),
+    /// `SwapBuffers`, a window-system call (not a GL command).
+    ///
+    /// A window system's buffer swap (glXSwapBuffers, glutSwapBuffers): not a GL command; recorded so that a replay shows the same frames.
+    SwapBuffers,
+
+    // Selection and feedback (GL 2.1 §5.2, §5.3): context/select.rs
+    /// `glRenderMode(mode)`.
+    RenderMode(u32),
+    /// `glSelectBuffer(size, buffer)`.
+    ///
+    /// The size only: the buffer is the context's (`Context::selection_buffer`).
+    SelectBuffer(i32),
+    /// `glFeedbackBuffer(size, type, buffer)`.
+    ///
+    /// The size and type only: the buffer is the context's (`Context::feedback_values`).
+    FeedbackBuffer(i32, u32),
+    /// `glInitNames()`.
+    InitNames,
+    /// `glLoadName(name)`.
+    LoadName(u32),
+    /// `glPushName(name)`.
+    PushName(u32),
+    /// `glPopName()`.
+    PopName,
+    /// `glPassThrough(token)`.
+    PassThrough(f32),
+
     // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
     /// `glLineStipple(factor, pattern)`.
     LineStipple(i32, u16),
@@ -949,9 +985,26 @@ pub const NAMES: &[&str] = &[
     "DeleteQueries",
     "BeginQuery",
     "EndQuery",
+    "DrawBuffer",
+    "ReadBuffer",
+    "ClearAccum",
+    "Accum",
+    "SwapBuffers",
+    "RenderMode",
+    "SelectBuffer",
+    "FeedbackBuffer",
+    "InitNames",
+    "LoadName",
+    "PushName",
+    "PopName",
+    "PassThrough",
     "LineStipple",
     "PolygonStipple",
 ];
+
+/// The variants that are window-system calls, not GL commands (no row in the command
+/// table, no C entry point of GL's).
+pub const WINSYS: &[&str] = &["SwapBuffers"];
 
 impl Call {
     /// The variant's name: the GL command without `gl`.
@@ -1247,6 +1300,19 @@ impl Call {
             Call::DeleteQueries(..) => "DeleteQueries",
             Call::BeginQuery(..) => "BeginQuery",
             Call::EndQuery(..) => "EndQuery",
+            Call::DrawBuffer(..) => "DrawBuffer",
+            Call::ReadBuffer(..) => "ReadBuffer",
+            Call::ClearAccum(..) => "ClearAccum",
+            Call::Accum(..) => "Accum",
+            Call::SwapBuffers => "SwapBuffers",
+            Call::RenderMode(..) => "RenderMode",
+            Call::SelectBuffer(..) => "SelectBuffer",
+            Call::FeedbackBuffer(..) => "FeedbackBuffer",
+            Call::InitNames => "InitNames",
+            Call::LoadName(..) => "LoadName",
+            Call::PushName(..) => "PushName",
+            Call::PopName => "PopName",
+            Call::PassThrough(..) => "PassThrough",
             Call::LineStipple(..) => "LineStipple",
             Call::PolygonStipple(..) => "PolygonStipple",
         }
@@ -1418,6 +1484,7 @@ impl Call {
                 | Call::MultiTexCoord4fv(..)
                 | Call::MultiTexCoord4d(..)
                 | Call::MultiTexCoord4dv(..)
+                | Call::SwapBuffers
         )
     }
 
@@ -1459,6 +1526,10 @@ impl Call {
                 | Call::UnmapBuffer(..)
                 | Call::GenQueries(..)
                 | Call::DeleteQueries(..)
+                | Call::SwapBuffers
+                | Call::RenderMode(..)
+                | Call::SelectBuffer(..)
+                | Call::FeedbackBuffer(..)
         )
     }
 
@@ -1757,6 +1828,19 @@ impl Call {
             Call::DeleteQueries(..) => &[],
             Call::BeginQuery(..) => &[Enum],
             Call::EndQuery(..) => &[Enum],
+            Call::DrawBuffer(..) => &[Enum],
+            Call::ReadBuffer(..) => &[Enum],
+            Call::ClearAccum(..) => &[],
+            Call::Accum(..) => &[Enum],
+            Call::SwapBuffers => &[],
+            Call::RenderMode(..) => &[Enum],
+            Call::SelectBuffer(..) => &[],
+            Call::FeedbackBuffer(..) => &[Plain, Enum],
+            Call::InitNames => &[],
+            Call::LoadName(..) => &[],
+            Call::PushName(..) => &[],
+            Call::PopName => &[],
+            Call::PassThrough(..) => &[],
             Call::LineStipple(..) => &[],
             Call::PolygonStipple(..) => &[],
         }
