@@ -23,6 +23,8 @@ pub mod arrays;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
+// Pixel rectangles, bitmaps, CopyPixels (scenes/pixels.rs)
+pub mod pixels;
 // Selection: scenes/picking.rs
 pub mod picking;
 // Line and polygon stipple (scenes/stipple.rs)
@@ -140,6 +142,7 @@ static SCENES: &[Scene] = &[
     texture::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    pixels::SCENES[0],
     picking::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
