@@ -79,11 +79,102 @@ pub enum Pointer {
     /// A byte offset into the buffer object bound to the target (or, with none bound, an
     /// address with nothing behind it: a draw that reads it is INVALID_OPERATION).
     Offset(usize),
+    /// Memory the caller keeps owning, read when a draw happens rather than copied at the
+    /// `*Pointer` call: the C ABI's client arrays (a C program may fill its array after
+    /// glVertexPointer). Never part of a recording: a recorded draw is preceded by the
+    /// `*Pointer` calls with the bytes it read (see `Context::draw_arrays`), so streams stay
+    /// self-contained; serialising one is an error.
+    #[serde(skip)]
+    Client(Box<ClientPointer>),
+}
+
+/// Memory a caller outside Rust owns, read by GL at draw time (see [`Pointer::Client`]).
+///
+/// The implementor vouches for the reads: a C caller promises, as GL requires, that the memory
+/// behind its pointer holds what the draw reads until the draw returns.
+pub trait ClientMemory: Send + Sync {
+    /// The address, as `GetPointerv` reports it.
+    fn address(&self) -> usize;
+    /// The first `len` bytes, or fewer (none for a null pointer): a draw that needs more is
+    /// INVALID_OPERATION.
+    fn read(&self, len: usize) -> &[u8];
+}
+
+/// A [`ClientMemory`] with a byte offset into it (InterleavedArrays' parts).
+#[derive(Clone)]
+pub struct ClientPointer {
+    memory: std::sync::Arc<dyn ClientMemory>,
+    offset: usize,
+}
+
+impl ClientPointer {
+    /// A pointer to the start of `memory`.
+    pub fn new(memory: std::sync::Arc<dyn ClientMemory>) -> ClientPointer {
+        ClientPointer { memory, offset: 0 }
+    }
+
+    /// The address GL reports for it.
+    pub fn address(&self) -> usize {
+        self.memory.address().wrapping_add(self.offset)
+    }
+
+    /// The first `len` bytes from the pointer on (fewer where the memory says so).
+    pub fn read(&self, len: usize) -> &[u8] {
+        let Some(end) = self.offset.checked_add(len) else {
+            return &[];
+        };
+        self.memory.read(end).get(self.offset..).unwrap_or(&[])
+    }
+
+    fn offset_by(&self, bytes: usize) -> ClientPointer {
+        ClientPointer {
+            memory: self.memory.clone(),
+            offset: self.offset.saturating_add(bytes),
+        }
+    }
+}
+
+impl PartialEq for ClientPointer {
+    fn eq(&self, other: &ClientPointer) -> bool {
+        self.address() == other.address()
+    }
+}
+
+impl Eq for ClientPointer {}
+
+impl std::fmt::Debug for ClientPointer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ClientPointer({:#x})", self.address())
+    }
 }
 
 impl Pointer {
     /// The null pointer: offset 0 (no data for `BufferData`).
     pub const NULL: Pointer = Pointer::Offset(0);
+
+    /// The pointer as a recording holds it: memory read at draw time ([`Pointer::Client`]) has
+    /// no bytes yet and is recorded empty (its `*Pointer` call replays its errors; each draw
+    /// that reads it records the bytes it read, see [`crate::Context::draw_arrays`]).
+    pub fn recorded(&self) -> Pointer {
+        match self {
+            Pointer::Client(_) => Pointer::Data(Vec::new()),
+            other => other.clone(),
+        }
+    }
+
+    /// Whether it names client memory (bytes or a [`ClientPointer`]) rather than an offset.
+    pub fn is_client(&self) -> bool {
+        !matches!(self, Pointer::Offset(_))
+    }
+
+    /// The first `len` client bytes (fewer where there are fewer); `None` for an offset.
+    pub fn client_bytes(&self, len: usize) -> Option<&[u8]> {
+        match self {
+            Pointer::Data(d) => Some(d.get(..len).unwrap_or(d)),
+            Pointer::Client(c) => Some(c.read(len)),
+            Pointer::Offset(_) => None,
+        }
+    }
 }
 
 /// A GL component type that can be handed over as client memory.
@@ -277,7 +368,7 @@ impl Default for ArrayState {
 pub type GlResult<T> = Result<T, u32>;
 
 /// Bytes of one component of `ty`, for the types arrays accept.
-fn type_size(ty: u32) -> usize {
+pub(crate) fn type_size(ty: u32) -> usize {
     match ty {
         gl::BYTE | gl::UNSIGNED_BYTE => 1,
         gl::SHORT | gl::UNSIGNED_SHORT => 2,
@@ -540,7 +631,7 @@ impl ArrayState {
     ) -> GlResult<()> {
         check_format(attr, size, ty, stride)?;
         let buffer = self.array_buffer;
-        if buffer != 0 && matches!(pointer, Pointer::Data(_)) {
+        if buffer != 0 && pointer.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
         let a = self.attr_mut(attr).ok_or(gl::INVALID_ENUM)?;
@@ -565,7 +656,7 @@ impl ArrayState {
         if !(0..=MAX_VERTEX_ATTRIB_STRIDE).contains(&stride) {
             return Err(gl::INVALID_VALUE);
         }
-        if self.array_buffer != 0 && matches!(pointer, Pointer::Data(_)) {
+        if self.array_buffer != 0 && pointer.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
         let f = std::mem::size_of::<f32>();
@@ -577,6 +668,7 @@ impl ArrayState {
         let at = |floats: usize| match pointer {
             Pointer::Data(d) => Pointer::Data(d.get(floats * f..).unwrap_or(&[]).to_vec()),
             Pointer::Offset(o) => Pointer::Offset(o.saturating_add(floats * f)),
+            Pointer::Client(c) => Pointer::Client(Box::new(c.offset_by(floats * f))),
         };
         let buffer = self.array_buffer;
         let set = |a: &mut ClientArray, part: Part| {
@@ -602,10 +694,12 @@ impl ArrayState {
     }
 
     /// The bytes behind an array's pointer: its client bytes, or its buffer's data from the
-    /// offset on (empty when the offset is past the end or no buffer is behind it).
-    fn bytes<'a>(&'a self, buffer: u32, pointer: &'a Pointer) -> &'a [u8] {
+    /// offset on (empty when the offset is past the end or no buffer is behind it). Memory read
+    /// at draw time ([`Pointer::Client`]) is read for the `need` bytes the draw reaches.
+    fn bytes<'a>(&'a self, buffer: u32, pointer: &'a Pointer, need: usize) -> &'a [u8] {
         match pointer {
             Pointer::Data(d) if buffer == 0 => d,
+            Pointer::Client(c) if buffer == 0 => c.read(need),
             Pointer::Offset(o) if buffer != 0 => self
                 .buffers
                 .get(&buffer)
@@ -616,8 +710,9 @@ impl ArrayState {
     }
 
     /// Every enabled array, in ArrayElement's order (GL 2.1 §2.8), with the number of whole
-    /// elements its data holds.
-    pub fn sources(&self) -> Vec<Source<'_>> {
+    /// elements its data holds; memory read at draw time ([`Pointer::Client`]) is read for the
+    /// first `reach` elements.
+    pub fn sources(&self, reach: usize) -> Vec<Source<'_>> {
         let mut list: Vec<(Attr, &ClientArray)> = vec![(Attr::EdgeFlag, &self.edge_flag)];
         for (u, a) in self.tex_coords.iter().enumerate() {
             list.push((Attr::TexCoord(u), a));
@@ -639,7 +734,12 @@ impl ArrayState {
                 } else {
                     a.stride as usize
                 };
-                let bytes = self.bytes(a.buffer, &a.pointer);
+                let need = reach
+                    .checked_sub(1)
+                    .and_then(|last| last.checked_mul(stride))
+                    .and_then(|n| n.checked_add(elem))
+                    .unwrap_or(0);
+                let bytes = self.bytes(a.buffer, &a.pointer, need);
                 let count = if elem == 0 || bytes.len() < elem {
                     0
                 } else {
@@ -657,9 +757,25 @@ impl ArrayState {
             .collect()
     }
 
+    /// Whether an enabled array is memory read at draw time ([`Pointer::Client`]).
+    pub fn reads_client(&self) -> bool {
+        let all = [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.secondary_color,
+            &self.fog_coord,
+            &self.edge_flag,
+        ];
+        all.into_iter()
+            .chain(self.tex_coords.iter())
+            .any(|a| a.enabled && a.buffer == 0 && matches!(a.pointer, Pointer::Client(_)))
+    }
+
     /// INVALID_OPERATION unless every enabled array holds element `max_index`.
     pub fn check_reads(&self, max_index: usize) -> GlResult<()> {
-        if self.sources().iter().all(|s| max_index < s.count) {
+        let reach = max_index.saturating_add(1);
+        if self.sources(reach).iter().all(|s| max_index < s.count) {
             Ok(())
         } else {
             Err(gl::INVALID_OPERATION)
@@ -677,11 +793,11 @@ impl ArrayState {
             _ => return Err(gl::INVALID_ENUM),
         };
         let eb = self.element_array_buffer;
-        if eb != 0 && matches!(indices, Pointer::Data(_)) {
+        if eb != 0 && indices.is_client() {
             return Err(gl::INVALID_OPERATION);
         }
-        let bytes = self.bytes(eb, indices);
         let needed = count.checked_mul(size).ok_or(gl::INVALID_OPERATION)?;
+        let bytes = self.bytes(eb, indices, needed);
         let bytes = bytes.get(..needed).ok_or(gl::INVALID_OPERATION)?;
         // Up to 4 bytes of u32 per byte of UNSIGNED_BYTE indices the caller handed over: an
         // allocation that fails is OUT_OF_MEMORY, not an abort.
@@ -779,7 +895,7 @@ impl ArrayState {
         if count.iter().any(|&c| c < 0) {
             return Err(gl::INVALID_VALUE);
         }
-        let enabled = !self.sources().is_empty();
+        let enabled = !self.sources(0).is_empty();
         let mut ranges = Vec::new();
         for (&f, &c) in first.iter().zip(count) {
             if c == 0 {
@@ -984,7 +1100,10 @@ impl ArrayState {
         let size = usize::try_from(size).map_err(|_| gl::INVALID_VALUE)?;
         self.bound(target)?;
         let src = match data {
-            Pointer::Data(d) => Some(d.get(..size).ok_or(gl::INVALID_VALUE)?),
+            Pointer::Data(_) | Pointer::Client(_) => {
+                let d = data.client_bytes(size).unwrap_or(&[]);
+                Some(d.get(..size).ok_or(gl::INVALID_VALUE)?)
+            }
             Pointer::Offset(0) if size <= MAX_BUFFER_SIZE => None,
             Pointer::Offset(0) => return Err(gl::OUT_OF_MEMORY),
             Pointer::Offset(_) => return Err(gl::INVALID_VALUE),
@@ -1045,9 +1164,7 @@ impl ArrayState {
         data: &Pointer,
     ) -> GlResult<()> {
         let (b, r) = self.range(target, offset, size)?;
-        let Pointer::Data(d) = data else {
-            return Err(gl::INVALID_VALUE);
-        };
+        let d = data.client_bytes(r.len()).ok_or(gl::INVALID_VALUE)?;
         let src = d.get(..r.len()).ok_or(gl::INVALID_VALUE)?;
         if let Some(dst) = b.data.get_mut(r) {
             dst.copy_from_slice(src);
@@ -1196,7 +1313,7 @@ mod tests {
             Ok(())
         );
         a.color.enabled = true;
-        let s = a.sources();
+        let s = a.sources(usize::MAX);
         let src = s.first().copied();
         // 4 bytes, element size 3, stride 4: one whole element.
         assert_eq!(src.map(|s| s.count), Some(1));
@@ -1210,7 +1327,7 @@ mod tests {
         assert_eq!(a.pointer(Attr::Vertex, 2, gl::INT, 0, &v), Ok(()));
         a.normal.enabled = true;
         a.vertex.enabled = true;
-        let s = a.sources();
+        let s = a.sources(usize::MAX);
         let got: Vec<_> = s.iter().map(|s| (s.attr, s.fetch(0))).collect();
         assert_eq!(
             got,
@@ -1239,7 +1356,7 @@ mod tests {
             Ok(())
         );
         a.vertex.enabled = true;
-        assert_eq!(a.sources().first().map(|s| s.count), Some(5));
+        assert_eq!(a.sources(5).first().map(|s| s.count), Some(5));
         assert_eq!(a.check_reads(4), Ok(()));
         assert_eq!(a.check_reads(5), Err(gl::INVALID_OPERATION));
         // An offset past the end holds nothing.
@@ -1247,7 +1364,7 @@ mod tests {
             a.pointer(Attr::Vertex, 3, gl::FLOAT, 0, &Pointer::Offset(usize::MAX)),
             Ok(())
         );
-        assert_eq!(a.sources().first().map(|s| s.count), Some(0));
+        assert_eq!(a.sources(5).first().map(|s| s.count), Some(0));
         assert_eq!(
             a.check_draw_arrays(gl::POINTS, i32::MAX, i32::MAX),
             Err(gl::INVALID_OPERATION)

@@ -115,6 +115,12 @@ impl Comparison {
     /// The difference image: black where equal, then dark red → red → yellow → white as the
     /// largest channel difference grows, magnified [`HEAT_GAIN`] times (saturating).
     pub fn heat_map(&self) -> RgbaImage {
+        self.heat_map_with_gain(HEAT_GAIN)
+    }
+
+    /// [`Comparison::heat_map`] magnified `gain` times instead of [`HEAT_GAIN`] (`fixedgl view
+    /// --compare` changes it with keys); 0 counts as 1.
+    pub fn heat_map_with_gain(&self, gain: u32) -> RgbaImage {
         let w = self.area_width;
         // `compare` pushes one value per pixel of the w x h area, row by row.
         debug_assert!(w == 0 || self.per_pixel.len() % w as usize == 0);
@@ -125,7 +131,7 @@ impl Comparison {
         };
         let mut img = RgbaImage::new(w, h);
         for (px, &d) in img.pixels_mut().zip(&self.per_pixel) {
-            *px = heat_colour(d);
+            *px = heat_colour(d, gain.max(1));
         }
         img
     }
@@ -188,13 +194,14 @@ fn over_checker(px: Rgba<u8>, x: u32, y: u32) -> Rgba<u8> {
     Rgba([mix(px.0[0]), mix(px.0[1]), mix(px.0[2]), 255])
 }
 
-/// The heat colour of a largest-channel difference `d` (see [`Comparison::heat_map`]).
-fn heat_colour(d: u8) -> Rgba<u8> {
+/// The heat colour of a largest-channel difference `d` magnified `gain` times (see
+/// [`Comparison::heat_map`]).
+fn heat_colour(d: u8, gain: u32) -> Rgba<u8> {
     if d == 0 {
         return Rgba([0, 0, 0, 255]);
     }
     // t in (0, 765]: three ramps of 255, red first, then green, then blue.
-    let t = (u32::from(d) * HEAT_GAIN * 3).min(765);
+    let t = (u32::from(d).saturating_mul(gain).saturating_mul(3)).min(765);
     let ramp = |start: u32| (t.saturating_sub(start)).min(255) as u8;
     Rgba([ramp(0).max(64), ramp(255), ramp(510), 255])
 }
@@ -358,18 +365,29 @@ mod tests {
     fn heat_map_colours() {
         // d=0 black; d=1: t = 48 -> red max(48,64)=64; d=5: t=240 -> (240,0,0);
         // d=10: t=480 -> (255,225,0); d=16: t=765 (capped) -> white.
-        assert_eq!(heat_colour(0), Rgba([0, 0, 0, 255]));
-        assert_eq!(heat_colour(1), Rgba([64, 0, 0, 255]));
-        assert_eq!(heat_colour(5), Rgba([240, 0, 0, 255]));
-        assert_eq!(heat_colour(10), Rgba([255, 225, 0, 255]));
-        assert_eq!(heat_colour(16), Rgba([255, 255, 255, 255]));
-        assert_eq!(heat_colour(255), Rgba([255, 255, 255, 255]));
+        assert_eq!(heat_colour(0, HEAT_GAIN), Rgba([0, 0, 0, 255]));
+        assert_eq!(heat_colour(1, HEAT_GAIN), Rgba([64, 0, 0, 255]));
+        assert_eq!(heat_colour(5, HEAT_GAIN), Rgba([240, 0, 0, 255]));
+        assert_eq!(heat_colour(10, HEAT_GAIN), Rgba([255, 225, 0, 255]));
+        assert_eq!(heat_colour(16, HEAT_GAIN), Rgba([255, 255, 255, 255]));
+        assert_eq!(heat_colour(255, HEAT_GAIN), Rgba([255, 255, 255, 255]));
         let a = solid(2, 1, [0, 0, 0, 255]);
         let mut b = a.clone();
         b.put_pixel(1, 0, Rgba([5, 0, 0, 255]));
         let heat = compare(&a, &b, 0).heat_map();
         assert_eq!(*heat.get_pixel(0, 0), Rgba([0, 0, 0, 255]));
         assert_eq!(*heat.get_pixel(1, 0), Rgba([240, 0, 0, 255]));
+        // The gain scales the ramp: d=5 at gain 1 is t=15, the dark-red floor; at gain 64 white.
+        let c = compare(&a, &b, 0);
+        assert_eq!(
+            *c.heat_map_with_gain(1).get_pixel(1, 0),
+            Rgba([64, 0, 0, 255])
+        );
+        assert_eq!(
+            *c.heat_map_with_gain(64).get_pixel(1, 0),
+            Rgba([255, 255, 255, 255])
+        );
+        assert_eq!(c.heat_map_with_gain(HEAT_GAIN), heat);
     }
 
     #[test]

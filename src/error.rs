@@ -41,6 +41,10 @@ pub enum Error {
     Image(String),
     /// The real-GL backend could not be set up; the message says what is missing and what to install.
     Backend(String),
+    /// A window could not be opened or shown (`fixedgl::window`): no display to open it on, a
+    /// window system that refused it, or a build without the `window` feature. The message says
+    /// which, and what to do.
+    Window(String),
 }
 
 impl fmt::Display for Error {
@@ -64,6 +68,7 @@ impl fmt::Display for Error {
             } => write!(f, "line {line}, column {column}: {message}"),
             Error::Image(m) => write!(f, "image error: {m}"),
             Error::Backend(m) => write!(f, "GL backend: {m}"),
+            Error::Window(m) => write!(f, "window: {m}"),
         }
     }
 }

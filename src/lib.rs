@@ -14,6 +14,7 @@
 
 // The front end: validation, state, queries (GL 2.1 chapters 2 to 6).
 pub mod arrays;
+pub(crate) mod buffers;
 pub mod context;
 mod convert;
 mod error;
@@ -39,9 +40,13 @@ pub mod glu;
 pub mod glut;
 pub mod report;
 pub mod scenes;
+// Windows and animation: a Context in a window, JOGL-style listeners, `fixedgl view`.
+#[cfg(feature = "window")]
+pub mod window;
 
 pub use arrays::Pointer;
 pub use call::Call;
 pub use context::Context;
 pub use error::Error;
+pub use state::ContextConfig;
 pub use texture::{checkerboard, texture_from_image};

@@ -16,6 +16,8 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::{Parser, Subcommand, ValueEnum};
+
+mod run;
 use image::RgbaImage;
 
 use fixedgl::compare::compare;
@@ -89,6 +91,49 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run a C or Python program unmodified on fixedgl: its libGL, libEGL, libOpenGL and
+    /// libOSMesa are fixedgl's C ABI library (see docs/c-abi.md).
+    Run {
+        /// Save every context's calls, with a marker at each presented frame (FILE, FILE.2, ...
+        /// for the first, second, ... context).
+        #[arg(long, value_name = "FILE")]
+        record: Option<PathBuf>,
+        /// Replay every presented frame on the real driver and write DIR/index.html comparing
+        /// it with what fixedgl showed; exits non-zero when a frame is over tolerance.
+        #[arg(long, value_name = "DIR")]
+        compare: Option<PathBuf>,
+        /// The program and its arguments, after `--`.
+        #[arg(last = true, required = true, value_name = "PROGRAM")]
+        program: Vec<std::ffi::OsString>,
+    },
+    /// Print the `export LD_LIBRARY_PATH=...` line that makes programs started from a shell use
+    /// fixedgl (`eval "$(fixedgl env)"`).
+    Env,
+    /// Show scenes in a window, animated where the scene moves; with --compare, the CPU
+    /// rendering, the driver's and their difference side by side, live. Press H in the window for
+    /// the keys.
+    View {
+        /// Scene names, or `all` (N / P switch between them).
+        #[arg(required = true)]
+        scenes: Vec<String>,
+        /// Show CPU | GL | difference (keys 1 2 3 0 choose, Space flips CPU and GL, + and -
+        /// change the difference amplification).
+        #[arg(long)]
+        compare: bool,
+        /// Size WxH each scene is rendered at (default: the scene's; with --compare scaled to fit
+        /// three across).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Frames a second for animated scenes (default 60).
+        #[arg(long, value_parser = parse_fps)]
+        fps: Option<f64>,
+        /// Present N frames of each scene, then exit.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+        frames: Option<u64>,
+        /// Write every presented frame to DIR as frame-00000.png, frame-00001.png, ...
+        #[arg(long, value_name = "DIR")]
+        record_frames: Option<PathBuf>,
+    },
     /// Replay a recording file on one pipeline and write the image.
     Replay {
         /// The recording.
@@ -123,7 +168,7 @@ impl Backend {
 }
 
 /// `WxH` with both sides in 1..=16384.
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
+pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("size must be WxH, e.g. 256x256, not {s:?}"))?;
@@ -137,6 +182,14 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
         }
     };
     Ok((side(w)?, side(h)?))
+}
+
+/// A frame rate in (0, 1000].
+fn parse_fps(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(f) if f > 0.0 && f <= 1000.0 => Ok(f),
+        _ => Err(format!("frames a second must be in (0, 1000], got {s:?}")),
+    }
 }
 
 fn main() -> ExitCode {
@@ -164,12 +217,28 @@ fn main() -> ExitCode {
             threads,
             json,
         } => bench(&scenes, size, frames, threads, json, device),
+        Command::View {
+            scenes,
+            compare,
+            size,
+            fps,
+            frames,
+            record_frames,
+        } => select(&scenes, false).and_then(|selected| {
+            view(&selected, compare, size, fps, frames, record_frames, device)
+        }),
         Command::Replay {
             file,
             backend,
             size,
             output,
         } => replay(&file, backend, size, output, device),
+        Command::Run {
+            record,
+            compare,
+            program,
+        } => run::run(&program, record.as_deref(), compare.as_deref(), device),
+        Command::Env => run::env(),
     };
     match result {
         Ok(code) => code,
@@ -209,7 +278,7 @@ fn list() -> Result<ExitCode, CliError> {
 /// What a command can fail with: a fixedgl error, a bad command line, or an input file that
 /// cannot be used (the message is the whole diagnostic line, file name first).
 #[derive(Debug)]
-enum CliError {
+pub(crate) enum CliError {
     Fixedgl(Error),
     Usage(String),
     Input(String),
@@ -511,6 +580,57 @@ fn replay(
     Ok(ExitCode::SUCCESS)
 }
 
+/// `fixedgl view`: the scenes in a window (fixedgl::window::view).
+#[cfg(feature = "window")]
+fn view(
+    selected: &[&'static Scene],
+    compare: bool,
+    size: Option<(u32, u32)>,
+    fps: Option<f64>,
+    frames: Option<u64>,
+    record_frames: Option<PathBuf>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    use fixedgl::window::{view, Options};
+    let config = view::ViewConfig {
+        compare,
+        size,
+        device: device.to_owned(),
+        fps,
+        options: Options {
+            frames,
+            record_frames,
+        },
+    };
+    let stats = view::run(selected, config)?;
+    if frames.is_some() {
+        println!(
+            "{} frames in {:.2} s ({:.1} fps)",
+            stats.frames, stats.seconds, stats.fps
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Without the `window` feature there is no window to open.
+#[cfg(not(feature = "window"))]
+fn view(
+    _selected: &[&'static Scene],
+    _compare: bool,
+    _size: Option<(u32, u32)>,
+    _fps: Option<f64>,
+    _frames: Option<u64>,
+    _record_frames: Option<PathBuf>,
+    _device: &str,
+) -> Result<ExitCode, CliError> {
+    Err(Error::Window(
+        "this fixedgl was built without the `window` feature; rebuild with default features \
+         (cargo build --features window) to open windows"
+            .into(),
+    )
+    .into())
+}
+
 /// The GL side of every command: the real backend with the `gl` feature.
 #[cfg(feature = "gl")]
 mod gl_side {
@@ -553,6 +673,38 @@ mod gl_side {
         let ms = start.elapsed().as_secs_f64() * 1e3;
         let info = (gl.renderer().to_owned(), gl.version().to_owned());
         Ok((gl.read_image(), info, ms))
+    }
+
+    /// Replays a program's frames one after the other on one backend (a fresh one when the
+    /// drawable's size changes, replaying the frames before at the new size).
+    #[derive(Default)]
+    pub struct Replayer {
+        backend: Option<((u32, u32), GlBackend)>,
+        history: Vec<Call>,
+    }
+
+    impl Replayer {
+        /// The image after `calls`, which follow the calls of the frames before.
+        pub fn frame(
+            &mut self,
+            size: (u32, u32),
+            calls: &[Call],
+            device: &str,
+        ) -> Result<(RgbaImage, (String, String)), Error> {
+            if self.backend.as_ref().map(|(s, _)| *s) != Some(size) {
+                let mut gl = backend(size.0, size.1, device)?;
+                gl.replay(&self.history);
+                self.backend = Some((size, gl));
+            }
+            self.history.extend_from_slice(calls);
+            let Some((_, gl)) = self.backend.as_mut() else {
+                unreachable!("made above")
+            };
+            gl.replay(calls);
+            gl.finish();
+            let info = (gl.renderer().to_owned(), gl.version().to_owned());
+            Ok((gl.read_image(), info))
+        }
     }
 
     /// One backend reused across benchmark frames.
@@ -610,6 +762,22 @@ mod gl_side {
         _device: &str,
     ) -> Result<(RgbaImage, (String, String), f64), Error> {
         Err(unavailable())
+    }
+
+    /// Never makes an image.
+    #[derive(Default)]
+    pub struct Replayer;
+
+    impl Replayer {
+        /// Always an error.
+        pub fn frame(
+            &mut self,
+            _size: (u32, u32),
+            _calls: &[Call],
+            _device: &str,
+        ) -> Result<(RgbaImage, (String, String)), Error> {
+            Err(unavailable())
+        }
     }
 
     /// Never constructed.

@@ -32,6 +32,37 @@ pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
 /// Largest framebuffer side `Context::new` accepts (`MAX_VIEWPORT_DIMS`, Mesa's value).
 pub const MAX_VIEWPORT_DIM: u32 = 16384;
 
+/// What a context's framebuffer holds, fixed when the context is made (the window system's
+/// pixel format: GLUT's GLUT_DOUBLE, GLUT_DEPTH, GLUT_STENCIL, GLUT_ACCUM). Colour is always
+/// RGBA8, front-left only (no stereo, no AUX buffers); `Default` is what `Context::new` gives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ContextConfig {
+    /// A back buffer besides the front one: DOUBLEBUFFER is TRUE, DRAW_BUFFER and READ_BUFFER
+    /// start at BACK (GL 2.1 §4.2.1, §4.3.2) and `Context::swap_buffers` presents the back
+    /// buffer. Default: false (one colour buffer, FRONT).
+    pub double_buffered: bool,
+    /// A 24-bit depth buffer (DEPTH_BITS 24). Without one the depth test always passes and
+    /// nothing is written (GL 2.1 §4.1.6). Default: true.
+    pub depth: bool,
+    /// An 8-bit stencil buffer (STENCIL_BITS 8). Without one the stencil test always passes
+    /// and nothing is written (§4.1.5). Default: true.
+    pub stencil: bool,
+    /// An accumulation buffer of 16 signed bits per channel, as llvmpipe's (ACCUM_*_BITS 16;
+    /// GL 2.1 §4.2.4). Without one `Accum` is INVALID_OPERATION. Default: false.
+    pub accum: bool,
+}
+
+impl Default for ContextConfig {
+    fn default() -> Self {
+        Self {
+            double_buffered: false,
+            depth: true,
+            stencil: true,
+            accum: false,
+        }
+    }
+}
+
 /// A matrix stack (GL 2.1 §2.11.2). Never empty: the last element is the current matrix.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MatrixStack {
@@ -302,9 +333,12 @@ impl Default for Hints {
 /// The whole GL state that fixedgl keeps, as plain data. `State::new` is the initial state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct State {
-    /// Framebuffer size, fixed at context creation.
+    /// Framebuffer size: set at context creation, changed only by `Context::resize` (the
+    /// window system's size, not GL state).
     pub width: u32,
     pub height: u32,
+    /// The framebuffer's buffers, fixed at context creation.
+    pub config: ContextConfig,
 
     // Current values (table 6.5).
     pub current: Current,
@@ -357,6 +391,15 @@ pub struct State {
     pub clear_color: Vec4,
     pub clear_depth: f64,
     pub clear_stencil: i32,
+    /// `DRAW_BUFFER` (table 6.22) as given to DrawBuffer: FRONT when single-buffered, BACK when
+    /// double-buffered at first.
+    pub draw_buffer: u32,
+    /// `READ_BUFFER` (table 6.26), in PIXEL_MODE_BIT: initially as DRAW_BUFFER.
+    pub read_buffer: u32,
+    /// `ACCUM_CLEAR_VALUE` (table 6.22), clamped to [-1, 1] when specified.
+    pub accum_clear: Vec4,
+    /// `RENDER_MODE` (table 6.31): RENDER, SELECT or FEEDBACK (GL 2.1 §5.2, §5.3).
+    pub render_mode: u32,
 
     // Pixel store (tables 6.17, 6.18; GL 2.1 §3.6.1): every client pixel read (TexImage2D,
     // TexSubImage2D) goes through `unpack`, every write (ReadPixels, GetTexImage) through `pack`.
@@ -383,12 +426,26 @@ pub struct State {
 }
 
 impl State {
-    /// The initial state of a context whose framebuffer is `width` x `height`.
+    /// The initial state of a context whose framebuffer is `width` x `height`, of the default
+    /// [`ContextConfig`] (single-buffered, depth and stencil, no accumulation buffer).
     pub fn new(width: u32, height: u32) -> Self {
+        Self::with_config(width, height, ContextConfig::default())
+    }
+
+    /// The initial state of a context whose framebuffer is `width` x `height` with the buffers
+    /// `config` names.
+    pub fn with_config(width: u32, height: u32, config: ContextConfig) -> Self {
         let (w, h) = (width as i32, height as i32);
+        // Tables 6.22 and 6.26: BACK if there is a back buffer, FRONT otherwise.
+        let buffer = if config.double_buffered {
+            gl::BACK
+        } else {
+            gl::FRONT
+        };
         Self {
             width,
             height,
+            config,
             current: Current::default(),
             matrix_mode: gl::MODELVIEW,
             modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),
@@ -427,6 +484,10 @@ impl State {
             clear_color: Vec4::ZERO,
             clear_depth: 1.0,
             clear_stencil: 0,
+            draw_buffer: buffer,
+            read_buffer: buffer,
+            accum_clear: Vec4::ZERO,
+            render_mode: gl::RENDER,
             unpack: crate::pixel_store::PixelModes::default(),
             pack: crate::pixel_store::PixelModes::default(),
             hints: Hints::default(),

@@ -655,6 +655,42 @@ pub enum Call {
     ///
     /// The mask as the caller passed it: the unpack modes in effect say how it is read.
     PolygonStipple(Vec<u8>),
+
+    // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
+    /// `glDrawBuffer(buf)`.
+    DrawBuffer(u32),
+    /// `glReadBuffer(src)`.
+    ReadBuffer(u32),
+    /// `glClearAccum(red, green, blue, alpha)`.
+    ClearAccum(f32, f32, f32, f32),
+    /// `glAccum(op, value)`.
+    Accum(u32, f32),
+    /// `SwapBuffers`, a window-system call (not a GL command).
+    ///
+    /// A window system's buffer swap (glXSwapBuffers, glutSwapBuffers): not a GL command; recorded so that a replay shows the same frames.
+    SwapBuffers,
+
+    // Selection and feedback (GL 2.1 §5.2, §5.3): context/select.rs
+    /// `glRenderMode(mode)`.
+    RenderMode(u32),
+    /// `glSelectBuffer(size, buffer)`.
+    ///
+    /// The size only: the buffer is the context's (`Context::selection_buffer`).
+    SelectBuffer(i32),
+    /// `glFeedbackBuffer(size, type, buffer)`.
+    ///
+    /// The size and type only: the buffer is the context's (`Context::feedback_values`).
+    FeedbackBuffer(i32, u32),
+    /// `glInitNames()`.
+    InitNames,
+    /// `glLoadName(name)`.
+    LoadName(u32),
+    /// `glPushName(name)`.
+    PushName(u32),
+    /// `glPopName()`.
+    PopName,
+    /// `glPassThrough(token)`.
+    PassThrough(f32),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -951,7 +987,24 @@ pub const NAMES: &[&str] = &[
     "EndQuery",
     "LineStipple",
     "PolygonStipple",
+    "DrawBuffer",
+    "ReadBuffer",
+    "ClearAccum",
+    "Accum",
+    "SwapBuffers",
+    "RenderMode",
+    "SelectBuffer",
+    "FeedbackBuffer",
+    "InitNames",
+    "LoadName",
+    "PushName",
+    "PopName",
+    "PassThrough",
 ];
+
+/// The variants that are window-system calls, not GL commands (no row in the command
+/// table, no C entry point of GL's).
+pub const WINSYS: &[&str] = &["SwapBuffers"];
 
 impl Call {
     /// The variant's name: the GL command without `gl`.
@@ -1249,6 +1302,19 @@ impl Call {
             Call::EndQuery(..) => "EndQuery",
             Call::LineStipple(..) => "LineStipple",
             Call::PolygonStipple(..) => "PolygonStipple",
+            Call::DrawBuffer(..) => "DrawBuffer",
+            Call::ReadBuffer(..) => "ReadBuffer",
+            Call::ClearAccum(..) => "ClearAccum",
+            Call::Accum(..) => "Accum",
+            Call::SwapBuffers => "SwapBuffers",
+            Call::RenderMode(..) => "RenderMode",
+            Call::SelectBuffer(..) => "SelectBuffer",
+            Call::FeedbackBuffer(..) => "FeedbackBuffer",
+            Call::InitNames => "InitNames",
+            Call::LoadName(..) => "LoadName",
+            Call::PushName(..) => "PushName",
+            Call::PopName => "PopName",
+            Call::PassThrough(..) => "PassThrough",
         }
     }
 
@@ -1418,6 +1484,7 @@ impl Call {
                 | Call::MultiTexCoord4fv(..)
                 | Call::MultiTexCoord4d(..)
                 | Call::MultiTexCoord4dv(..)
+                | Call::SwapBuffers
         )
     }
 
@@ -1459,6 +1526,10 @@ impl Call {
                 | Call::UnmapBuffer(..)
                 | Call::GenQueries(..)
                 | Call::DeleteQueries(..)
+                | Call::SwapBuffers
+                | Call::RenderMode(..)
+                | Call::SelectBuffer(..)
+                | Call::FeedbackBuffer(..)
         )
     }
 
@@ -1759,6 +1830,19 @@ impl Call {
             Call::EndQuery(..) => &[Enum],
             Call::LineStipple(..) => &[],
             Call::PolygonStipple(..) => &[],
+            Call::DrawBuffer(..) => &[Enum],
+            Call::ReadBuffer(..) => &[Enum],
+            Call::ClearAccum(..) => &[],
+            Call::Accum(..) => &[Enum],
+            Call::SwapBuffers => &[],
+            Call::RenderMode(..) => &[Enum],
+            Call::SelectBuffer(..) => &[],
+            Call::FeedbackBuffer(..) => &[Plain, Enum],
+            Call::InitNames => &[],
+            Call::LoadName(..) => &[],
+            Call::PushName(..) => &[],
+            Call::PopName => &[],
+            Call::PassThrough(..) => &[],
         }
     }
 }

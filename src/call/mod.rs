@@ -37,7 +37,7 @@ pub type MapWrites = (usize, Vec<u8>);
 
 mod generated;
 
-pub use generated::{Call, NAMES};
+pub use generated::{Call, NAMES, WINSYS};
 
 /// What an argument of a call holds, for the recording format to write it readably (from the
 /// registry's type and enum group of the parameter).

@@ -16,6 +16,8 @@ use std::path::PathBuf;
 
 /// GL versions whose commands the table lists in full (the C ABI exports each of them).
 const FULL_VERSIONS: [&str; 6] = ["1.0", "1.1", "1.2", "1.3", "1.4", "1.5"];
+/// The `version` of an annotated window-system call (`winsys`), which gl.xml does not have.
+const WINSYS: &str = "winsys";
 /// Later versions whose commands the table lists when fixedgl implements them.
 const LATER_VERSIONS: [&str; 2] = ["2.0", "2.1"];
 
@@ -168,6 +170,9 @@ struct Annotation {
     out: bool,
     /// The variant carries the bytes written through a buffer mapping (`MapWrites`).
     written: bool,
+    /// Not a GL command but a window-system call recorded with the GL ones (SwapBuffers): no
+    /// registry entry, no parameters, never in the command table.
+    winsys: bool,
     exec: Option<String>,
     replay: Replay,
     doc: Option<String>,
@@ -207,6 +212,7 @@ fn annotations() -> Vec<Annotation> {
             null: false,
             out: false,
             written: false,
+            winsys: false,
             exec: None,
             replay: Replay::Driver,
             doc,
@@ -221,6 +227,7 @@ fn annotations() -> Vec<Annotation> {
                 None if flag == "null" => a.null = true,
                 None if flag == "out" => a.out = true,
                 None if flag == "written" => a.written = true,
+                None if flag == "winsys" => a.winsys = true,
                 Some(("count", f)) => a.count = Some(f.to_string()),
                 Some(("tuple", t)) => a.tuple = Some(t.to_string()),
                 Some(("exec", f)) => a.exec = Some(f.to_string()),
@@ -523,6 +530,9 @@ fn arm(out: &mut String, c: &Implemented, body: &str) {
 }
 
 fn prototype_doc(xml: &XmlCommand) -> String {
+    if xml.version == WINSYS {
+        return format!("`{}`, a window-system call (not a GL command)", xml.name);
+    }
     let params: Vec<&str> = xml.params.iter().map(|p| p.name.as_str()).collect();
     format!("`gl{}({})`", xml.name, params.join(", "))
 }
@@ -560,6 +570,15 @@ fn gen_call(cmds: &[Implemented]) -> String {
     );
     s.push_str("pub const NAMES: &[&str] = &[\n");
     for c in cmds {
+        let _ = writeln!(s, "    \"{}\",", c.ann.name);
+    }
+    s.push_str("];\n\n");
+    s.push_str(
+        "/// The variants that are window-system calls, not GL commands (no row in the command\n\
+         /// table, no C entry point of GL's).\n",
+    );
+    s.push_str("pub const WINSYS: &[&str] = &[\n");
+    for c in cmds.iter().filter(|c| c.ann.winsys) {
         let _ = writeln!(s, "    \"{}\",", c.ann.name);
     }
     s.push_str("];\n\nimpl Call {\n");
@@ -762,6 +781,7 @@ fn gen_replay(cmds: &[Implemented]) -> String {
     let wrappable = |c: &&Implemented| {
         // A returned pointer (MapBuffer's) is the backend's own business, never a wrapper's.
         !c.xml.ret.contains('*')
+            && c.xml.version != WINSYS
             && c.fields.len() == c.xml.params.len()
             && c.fields.iter().all(|f| {
                 matches!(
@@ -879,7 +899,301 @@ fn gen_table(all: &[XmlCommand], anns: &HashMap<&str, &Annotation>) -> String {
     s
 }
 
-/// The four generated files and their contents.
+/// The Rust FFI type of a C scalar type (GLboolean as the byte it is in C).
+fn ffi_scalar(ptype: &str) -> &'static str {
+    match ptype {
+        "GLboolean" => "u8",
+        "void" | "GLvoid" => "c_void",
+        other => rust_scalar(other),
+    }
+}
+
+/// The Rust FFI type of a C parameter or return type: `const GLfloat *` → `*const f32`,
+/// `const void *const*` → `*const *const c_void`, `void **` → `*mut *mut c_void`.
+fn ffi_type(c_type: &str) -> String {
+    let parts: Vec<&str> = c_type.split('*').collect();
+    let base_decl = parts[0];
+    let base_name = base_decl
+        .split_whitespace()
+        .rfind(|w| *w != "const")
+        .unwrap_or("void");
+    let mut out = ffi_scalar(base_name).to_string();
+    if parts.len() == 1 {
+        return out;
+    }
+    let mut constant = base_decl.split_whitespace().any(|w| w == "const");
+    for qualifier in &parts[1..] {
+        out = format!("*{} {out}", if constant { "const" } else { "mut" });
+        constant = qualifier.contains("const");
+    }
+    out
+}
+
+/// What a C function of this return type returns when it cannot do its work.
+fn ffi_default(ret: &str) -> Option<&'static str> {
+    let t = ffi_type(ret);
+    if t == "c_void" {
+        None
+    } else if t.starts_with("*const") {
+        Some("std::ptr::null()")
+    } else if t.starts_with("*mut") {
+        Some("std::ptr::null_mut()")
+    } else {
+        Some("0")
+    }
+}
+
+/// The `gl*` functions written by hand in capi/src (every `extern "C" fn gl...` outside
+/// generated.rs, and every `macro!(gl...` that defines one): the generator leaves those to them.
+fn manual_capi(root: &std::path::Path) -> std::collections::BTreeSet<String> {
+    let mut out = std::collections::BTreeSet::new();
+    let Ok(dir) = std::fs::read_dir(root.join("capi/src")) else {
+        return out;
+    };
+    let mut files: Vec<PathBuf> = dir.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    files.sort();
+    for path in files {
+        if path.file_name().is_some_and(|n| n == "generated.rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap_or_default();
+        // Functions, and those a macro defines (`getter!(glGetLightfv, ...)`).
+        let pieces = text.split("extern \"C\" fn ").skip(1);
+        for piece in pieces.chain(text.split("!(").skip(1)) {
+            let name: String = piece
+                .trim_start()
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            let command = name.strip_prefix("gl").unwrap_or("");
+            if command.starts_with(|c: char| c.is_ascii_uppercase()) && !name.starts_with("glX") {
+                out.insert(name);
+            }
+        }
+    }
+    out
+}
+
+/// The extension names (`glActiveTextureARB`) gl.xml gives as aliases of the core commands.
+fn aliases() -> Vec<(String, String)> {
+    let text = std::str::from_utf8(khronos_api::GL_XML).expect("gl.xml is UTF-8");
+    let doc = roxmltree::Document::parse(text).expect("gl.xml parses");
+    let mut out = Vec::new();
+    for cmd in doc.descendants().filter(|n| n.has_tag_name("command")) {
+        let Some(alias) = cmd.children().find(|n| n.has_tag_name("alias")) else {
+            continue;
+        };
+        let name = cmd
+            .children()
+            .find(|n| n.has_tag_name("proto"))
+            .and_then(|p| p.children().find(|n| n.has_tag_name("name")))
+            .and_then(|n| n.text())
+            .unwrap_or_default();
+        if let Some(core) = alias.attribute("name") {
+            out.push((name.to_string(), core.to_string()));
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The expression converting C argument `f` into the `Call` field (`None`: a pointer argument
+/// the command's function in capi/src/args.rs converts).
+fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
+    let b = &f.bind;
+    let value = match f.shape {
+        Shape::Scalar("bool") => format!("{b} != 0"),
+        Shape::Scalar(_) => b.clone(),
+        Shape::Array("bool", n) => format!(
+            "match read::array::<u8, {n}>({b}) {{\n Some(a) => a.map(|x| x != 0),\n None => return gl.null_pointer(),\n }}"
+        ),
+        Shape::Array(t, n) => format!(
+            "match read::array::<{t}, {n}>({b}) {{\n Some(a) => a,\n None => return gl.null_pointer(),\n }}"
+        ),
+        Shape::Params(_) => format!(
+            "read::params({b}, counts::{}({}))",
+            c.ann.count.as_deref().expect("count"),
+            c.pname()
+        ),
+        Shape::Names => {
+            let n = ident(f.param.len.as_deref().expect("names have a length"));
+            format!("read::names({b}, {n})")
+        }
+        Shape::Ints => {
+            // gl.xml says COMPSIZE(count) for MultiDrawArrays' first: both hold drawcount.
+            format!("read::ints({b}, drawcount)")
+        }
+        Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers => return None,
+        Shape::Written => panic!(
+            "gl{}: a field that is not a C parameter: write it by hand in capi/src",
+            c.xml.name
+        ),
+    };
+    Some(if f.boxed {
+        format!("Box::new({value})")
+    } else {
+        value
+    })
+}
+
+/// capi/src/generated.rs: one `extern "C"` function per GL 1.0-1.5 command (and implemented
+/// later ones) not written by hand, the aliases, and the GetProcAddress table.
+fn gen_capi(
+    all: &[XmlCommand],
+    cmds: &[Implemented],
+    manual: &std::collections::BTreeSet<String>,
+) -> String {
+    let by_name: HashMap<&str, &Implemented> =
+        cmds.iter().map(|c| (c.xml.name.as_str(), c)).collect();
+    let mut s = String::from(HEADER);
+    s.push_str(
+        "// Every function takes C's arguments as they are: the names and count are gl.xml's.\n\
+         #![allow(clippy::too_many_arguments, unused_variables, clippy::missing_safety_doc)]\n\n\
+         use std::ffi::c_void;\n\n\
+         use fixedgl::{counts, Call};\n\n\
+         use crate::current::with_gl;\n\
+         use crate::manual::*;\n\
+         use crate::{args, read, unimplemented};\n\n",
+    );
+    let mut implemented: Vec<String> = manual.iter().cloned().collect();
+    for x in all {
+        let fname = format!("gl{}", x.name);
+        if manual.contains(&fname) {
+            continue;
+        }
+        let params: Vec<String> = x
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), ffi_type(&p.c_type)))
+            .collect();
+        let ret = match ffi_type(&x.ret).as_str() {
+            "c_void" => String::new(),
+            t => format!(" -> {t}"),
+        };
+        let _ = writeln!(s, "/// {}.", prototype_doc(x));
+        s.push_str("#[no_mangle]\n");
+        let _ = writeln!(
+            s,
+            "pub unsafe extern \"C\" fn {fname}({}){ret} {{",
+            params.join(", ")
+        );
+        let Some(c) = by_name.get(x.name.as_str()) else {
+            // Not implemented: present for programs linked with BIND_NOW, NULL from
+            // GetProcAddress, one line on stderr at the first call.
+            let _ = writeln!(s, "    unimplemented(\"{fname}\");");
+            if let Some(d) = ffi_default(&x.ret) {
+                let _ = writeln!(s, "    {d}");
+            }
+            s.push_str("}\n\n");
+            continue;
+        };
+        assert!(
+            c.ann.exec.is_none() && !c.ann.out,
+            "{fname}: write it by hand in capi/src (exec= or out)"
+        );
+        implemented.push(fname.clone());
+        let direct = !c.ann.pack
+            && c.ann.tuple.is_none()
+            && c.fields.len() == x.params.len()
+            && c.fields.iter().all(|f| matches!(f.shape, Shape::Scalar(_)));
+        let _ = writeln!(s, "    with_gl(\"{fname}\", |gl| {{");
+        let mut binds = Vec::new();
+        // Pointer data first: its function takes the C arguments before any is converted.
+        let mut ordered: Vec<&Field> = c.fields.iter().collect();
+        ordered.sort_by_key(|f| capi_field(c, f).is_some());
+        for f in ordered {
+            let value = capi_field(c, f).unwrap_or_else(|| {
+                let all_args: Vec<String> = x.params.iter().map(|p| ident(&p.name)).collect();
+                let v = format!("args::{}(gl, {})", c.ann.method, all_args.join(", "));
+                if f.boxed {
+                    format!("Box::new({v})")
+                } else {
+                    v
+                }
+            });
+            if value != f.bind {
+                let _ = writeln!(s, "        let {} = {value};", f.bind);
+            }
+        }
+        binds.extend(c.fields.iter().map(|f| f.bind.clone()));
+        if direct {
+            let call = format!("gl.ctx.{}({})", c.ann.method, binds.join(", "));
+            match x.ret.as_str() {
+                "void" => {
+                    let _ = writeln!(s, "        {call};");
+                }
+                "GLboolean" => {
+                    let _ = writeln!(s, "        u8::from({call})");
+                }
+                _ => {
+                    let _ = writeln!(s, "        {call}");
+                }
+            }
+        } else {
+            assert_eq!(
+                x.ret, "void",
+                "{fname}: a value to return: write it by hand"
+            );
+            let name = &c.ann.name;
+            let value = if binds.is_empty() {
+                format!("Call::{name}")
+            } else if c.ann.pack {
+                format!("Call::{name}(Box::new([{}]))", binds.join(", "))
+            } else if c.ann.tuple.is_some() {
+                format!("Call::{name}(Box::new(({})))", binds.join(", "))
+            } else {
+                format!("Call::{name}({})", binds.join(", "))
+            };
+            let _ = writeln!(s, "        gl.ctx.execute(&{value});");
+        }
+        s.push_str("    })\n}\n\n");
+    }
+    // The extension names of implemented commands, exported as well (programs built against
+    // glext.h with prototypes call them by those names).
+    let known: std::collections::HashSet<String> = implemented.iter().cloned().collect();
+    let full: HashMap<String, &XmlCommand> =
+        all.iter().map(|x| (format!("gl{}", x.name), x)).collect();
+    let mut procs: Vec<(String, String)> =
+        implemented.iter().map(|n| (n.clone(), n.clone())).collect();
+    for (alias, core) in aliases() {
+        if !known.contains(&core) || known.contains(&alias) || full.contains_key(&alias) {
+            continue;
+        }
+        let x = full[&core];
+        let params: Vec<String> = x
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), ffi_type(&p.c_type)))
+            .collect();
+        let names: Vec<String> = x.params.iter().map(|p| ident(&p.name)).collect();
+        let ret = match ffi_type(&x.ret).as_str() {
+            "c_void" => String::new(),
+            t => format!(" -> {t}"),
+        };
+        let _ = writeln!(s, "/// `{alias}`: [`{core}`].\n#[no_mangle]");
+        let _ = writeln!(
+            s,
+            "pub unsafe extern \"C\" fn {alias}({}){ret} {{\n    {core}({})\n}}\n",
+            params.join(", "),
+            names.join(", ")
+        );
+        procs.push((alias, core));
+    }
+    procs.sort();
+    s.push_str(
+        "/// `GetProcAddress`: the entry point of an implemented command (or an alias of one);\n\
+         /// `None` for one fixedgl does not implement, so that a program can tell.\n\
+         pub fn proc_address(name: &[u8]) -> Option<*const c_void> {\n    \
+         let f: *const c_void = match name {\n",
+    );
+    for (name, target) in &procs {
+        let _ = writeln!(s, "        b\"{name}\" => {target} as *const c_void,");
+    }
+    s.push_str("        _ => return None,\n    };\n    Some(f)\n}\n");
+    s
+}
+
+/// The generated files and their contents.
 fn generate() -> Vec<(&'static str, String)> {
     let all = registry();
     let anns = annotations();
@@ -889,15 +1203,39 @@ fn generate() -> Vec<(&'static str, String)> {
         .iter()
         .map(|a| {
             assert!(seen.insert(a.name.clone()), "{} annotated twice", a.name);
-            let xml = by_name
-                .get(a.name.as_str())
-                .unwrap_or_else(|| panic!("gl{} is not a GL 1.0 to 2.1 command", a.name));
-            Implemented::new((*xml).clone(), a.clone())
+            let xml = match by_name.get(a.name.as_str()) {
+                Some(xml) => (*xml).clone(),
+                None if a.winsys => XmlCommand {
+                    name: a.name.clone(),
+                    ret: "void".to_string(),
+                    params: Vec::new(),
+                    version: WINSYS.to_string(),
+                },
+                None => panic!("gl{} is not a GL 1.0 to 2.1 command", a.name),
+            };
+            assert!(
+                !a.winsys || matches!(a.replay, Replay::Fields(_)),
+                "{}: a window-system call needs replay=",
+                a.name
+            );
+            Implemented::new(xml, a.clone())
         })
         .collect();
     let ann_by_name: HashMap<&str, &Annotation> =
         anns.iter().map(|a| (a.name.as_str(), a)).collect();
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let manual = manual_capi(&root);
+    let exported: Vec<XmlCommand> = all
+        .iter()
+        .filter(|x| {
+            x.version != WINSYS
+                && (FULL_VERSIONS.contains(&x.version.as_str())
+                    || ann_by_name.contains_key(x.name.as_str()))
+        })
+        .cloned()
+        .collect();
     vec![
+        ("capi/src/generated.rs", gen_capi(&exported, &cmds, &manual)),
         ("src/call/generated.rs", gen_call(&cmds)),
         ("src/context/dispatch.rs", gen_dispatch(&cmds)),
         ("src/glbackend/generated.rs", gen_replay(&cmds)),

@@ -52,14 +52,14 @@ impl Context {
     /// INVALID_OPERATION.
     pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::VertexPointer(size, ty, stride, p.clone()));
+        record!(self, Call::VertexPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Vertex, size, ty, stride, &p));
     }
 
     /// `glNormalPointer`: BYTE, SHORT, INT, FLOAT or DOUBLE; otherwise as `vertex_pointer`.
     pub fn normal_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::NormalPointer(ty, stride, p.clone()));
+        record!(self, Call::NormalPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Normal, 3, ty, stride, &p));
     }
 
@@ -67,7 +67,7 @@ impl Context {
     /// normalised by GL 2.1 table 2.9); otherwise as `vertex_pointer`.
     pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::ColorPointer(size, ty, stride, p.clone()));
+        record!(self, Call::ColorPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::Color, size, ty, stride, &p));
     }
 
@@ -82,7 +82,7 @@ impl Context {
         let p = pointer.into();
         record!(
             self,
-            Call::SecondaryColorPointer(size, ty, stride, p.clone())
+            Call::SecondaryColorPointer(size, ty, stride, p.recorded())
         );
         self.arrays_do(|a, _| a.pointer(Attr::SecondaryColor, size, ty, stride, &p));
     }
@@ -97,21 +97,21 @@ impl Context {
         pointer: impl Into<Pointer>,
     ) {
         let p = pointer.into();
-        record!(self, Call::TexCoordPointer(size, ty, stride, p.clone()));
+        record!(self, Call::TexCoordPointer(size, ty, stride, p.recorded()));
         self.arrays_do(|a, u| a.pointer(Attr::TexCoord(u), size, ty, stride, &p));
     }
 
     /// `glFogCoordPointer`: FLOAT or DOUBLE.
     pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::FogCoordPointer(ty, stride, p.clone()));
+        record!(self, Call::FogCoordPointer(ty, stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::FogCoord, 1, ty, stride, &p));
     }
 
     /// `glEdgeFlagPointer`: one GLboolean (byte) per element (`&[bool]` or `&[u8]`).
     pub fn edge_flag_pointer(&mut self, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::EdgeFlagPointer(stride, p.clone()));
+        record!(self, Call::EdgeFlagPointer(stride, p.recorded()));
         self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
     }
 
@@ -120,7 +120,7 @@ impl Context {
     /// (texture coordinates on the client active unit) and disables the others.
     pub fn interleaved_arrays(&mut self, format: u32, stride: i32, pointer: impl Into<Pointer>) {
         let p = pointer.into();
-        record!(self, Call::InterleavedArrays(format, stride, p.clone()));
+        record!(self, Call::InterleavedArrays(format, stride, p.recorded()));
         self.arrays_do(|a, u| a.interleaved_arrays(format, stride, &p, u));
     }
 
@@ -129,9 +129,28 @@ impl Context {
     /// End. INVALID_VALUE for a negative `i` and INVALID_OPERATION when an enabled array has no
     /// element `i` (GL leaves both undefined); nothing changes then.
     pub fn array_element(&mut self, i: i32) {
+        // Memory read at draw time cannot be recorded as a pointer inside Begin/End: the
+        // recording gets the attribute calls this element amounts to instead.
+        if self.recording.is_some() && self.lists.depth == 0 && self.state.arrays.reads_client() {
+            if let Ok(Some(calls)) = self.compile_draw(&Call::ArrayElement(i)) {
+                let mut recording = self.recording.take();
+                self.sync_capturing();
+                self.array_element_now(i);
+                if let Some(rec) = recording.as_mut() {
+                    rec.extend(calls);
+                }
+                self.recording = recording;
+                self.sync_capturing();
+                return;
+            }
+        }
+        self.array_element_now(i);
+    }
+
+    fn array_element_now(&mut self, i: i32) {
         record!(self, Call::ArrayElement(i));
         match self.state.arrays.check_array_element(i) {
-            Ok(i) => self.draw(None, [i]),
+            Ok(i) => self.draw(None, [i], i + 1),
             Err(code) => self.error(code),
         }
     }
@@ -140,12 +159,20 @@ impl Context {
     /// INVALID_VALUE for a negative `first` or `count`, INVALID_OPERATION between Begin and End
     /// or when an enabled array is shorter than `first + count` elements.
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
+        if self.begin_mode.is_none() {
+            if let Ok(Some(range)) = self.state.arrays.check_draw_arrays(mode, first, count) {
+                self.record_client_arrays(range.end() + 1);
+            }
+        }
         record!(self, Call::DrawArrays(mode, first, count));
         if !self.outside_begin_end() {
             return;
         }
         match self.state.arrays.check_draw_arrays(mode, first, count) {
-            Ok(Some(range)) => self.draw(Some(mode), range),
+            Ok(Some(range)) => {
+                let reach = range.end() + 1;
+                self.draw(Some(mode), range, reach)
+            }
             Ok(None) => {}
             Err(code) => self.error(code),
         }
@@ -158,6 +185,7 @@ impl Context {
     /// data while an element buffer is bound), or when an enabled array lacks an indexed element.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: impl Into<Pointer>) {
         let p = indices.into();
+        self.record_client_arrays_indexed(mode, count, ty, &p, None);
         record!(self, Call::DrawElements(mode, count, ty, p.clone()));
         self.draw_indexed(mode, count, ty, &p, None);
     }
@@ -174,6 +202,7 @@ impl Context {
         indices: impl Into<Pointer>,
     ) {
         let p = indices.into();
+        self.record_client_arrays_indexed(mode, count, ty, &p, Some((start, end)));
         record!(
             self,
             Call::DrawRangeElements(mode, start, end, count, ty, Box::new(p.clone()))
@@ -188,6 +217,13 @@ impl Context {
     /// array (a negative `first` with an array enabled, too: Mesa raises nothing there and reads
     /// before the array) or from a mapped buffer. Every draw is checked before any is drawn.
     pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32], drawcount: i32) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(ranges) = a.check_multi_draw_arrays(mode, first, count, drawcount) {
+                let reach = ranges.iter().map(|r| r.end() + 1).max().unwrap_or(0);
+                self.record_client_arrays(reach);
+            }
+        }
         record!(
             self,
             Call::MultiDrawArrays(Box::new((mode, first.to_vec(), count.to_vec(), drawcount)))
@@ -202,7 +238,8 @@ impl Context {
         {
             Ok(ranges) => {
                 for r in ranges {
-                    self.draw(Some(mode), r);
+                    let reach = r.end() + 1;
+                    self.draw(Some(mode), r, reach);
                 }
             }
             Err(code) => self.error(code),
@@ -223,6 +260,17 @@ impl Context {
         indices: &[Pointer],
         drawcount: i32,
     ) {
+        if self.recording.is_some() && self.begin_mode.is_none() {
+            let a = &self.state.arrays;
+            if let Ok(draws) = a.check_multi_draw_elements(mode, count, ty, indices, drawcount) {
+                let reach = draws
+                    .iter()
+                    .flat_map(|d| d.iter().max())
+                    .max()
+                    .map_or(0, |&m| m as usize + 1);
+                self.record_client_arrays(reach);
+            }
+        }
         record!(
             self,
             Call::MultiDrawElements(Box::new((
@@ -243,7 +291,8 @@ impl Context {
         {
             Ok(draws) => {
                 for idx in draws {
-                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize));
+                    let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+                    self.draw(Some(mode), idx.into_iter().map(|i| i as usize), reach);
                 }
             }
             Err(code) => self.error(code),
@@ -255,17 +304,123 @@ impl Context {
             return;
         }
         match self.state.arrays.check_draw_elements(mode, count, ty, p, r) {
-            Ok(Some(idx)) => self.draw(Some(mode), idx.into_iter().map(|i| i as usize)),
+            Ok(Some(idx)) => {
+                let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+                self.draw(Some(mode), idx.into_iter().map(|i| i as usize), reach)
+            }
             Ok(None) => {}
             Err(code) => self.error(code),
         }
     }
 
+    /// Before a valid draw of DrawElements/DrawRangeElements is recorded: the client arrays
+    /// it reads (see [`Context::record_client_arrays`]).
+    fn record_client_arrays_indexed(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        p: &Pointer,
+        range: Option<(u32, u32)>,
+    ) {
+        if self.recording.is_none() || self.lists.depth > 0 || self.begin_mode.is_some() {
+            return;
+        }
+        if let Ok(Some(idx)) = self
+            .state
+            .arrays
+            .check_draw_elements(mode, count, ty, p, range)
+        {
+            let reach = idx.iter().max().map_or(0, |&m| m as usize + 1);
+            self.record_client_arrays(reach);
+        }
+    }
+
+    /// A recorded stream holds bytes, never memory read at draw time ([`Pointer::Client`], the
+    /// C ABI's client arrays): before a valid draw that reads `reach` elements is recorded,
+    /// each enabled array backed by such memory is recorded as its `*Pointer` call with the
+    /// bytes the draw reads (with ARRAY_BUFFER unbound around it, and the array's texture unit
+    /// made the client active one), so that a replay draws what this draw drew.
+    fn record_client_arrays(&mut self, reach: usize) {
+        if self.recording.is_none() || self.lists.depth > 0 {
+            return;
+        }
+        let a = &self.state.arrays;
+        let mut calls = Vec::new();
+        let mut tex_units = Vec::new();
+        let lists: Vec<(Attr, &crate::arrays::ClientArray)> = [
+            (Attr::Vertex, &a.vertex),
+            (Attr::Normal, &a.normal),
+            (Attr::Color, &a.color),
+            (Attr::SecondaryColor, &a.secondary_color),
+            (Attr::FogCoord, &a.fog_coord),
+            (Attr::EdgeFlag, &a.edge_flag),
+        ]
+        .into_iter()
+        .chain(
+            a.tex_coords
+                .iter()
+                .enumerate()
+                .map(|(u, t)| (Attr::TexCoord(u), t)),
+        )
+        .collect();
+        for (attr, arr) in lists {
+            let Pointer::Client(c) = &arr.pointer else {
+                continue;
+            };
+            if !arr.enabled || arr.buffer != 0 {
+                continue;
+            }
+            let elem = arr.size.max(0) as usize * crate::arrays::type_size(arr.ty);
+            let stride = if arr.stride == 0 {
+                elem
+            } else {
+                arr.stride as usize
+            };
+            let need = reach
+                .checked_sub(1)
+                .and_then(|l| l.checked_mul(stride))
+                .and_then(|n| n.checked_add(elem))
+                .unwrap_or(0);
+            let data = Pointer::Data(c.read(need).to_vec());
+            let (size, ty, stride) = (arr.size, arr.ty, arr.stride);
+            if let Attr::TexCoord(u) = attr {
+                tex_units.push(u);
+                calls.push(Call::ClientActiveTexture(gl::TEXTURE0 + u as u32));
+            }
+            calls.push(match attr {
+                Attr::Vertex => Call::VertexPointer(size, ty, stride, data),
+                Attr::Normal => Call::NormalPointer(ty, stride, data),
+                Attr::Color => Call::ColorPointer(size, ty, stride, data),
+                Attr::SecondaryColor => Call::SecondaryColorPointer(size, ty, stride, data),
+                Attr::FogCoord => Call::FogCoordPointer(ty, stride, data),
+                Attr::EdgeFlag => Call::EdgeFlagPointer(stride, data),
+                Attr::TexCoord(_) => Call::TexCoordPointer(size, ty, stride, data),
+            });
+        }
+        if calls.is_empty() {
+            return;
+        }
+        if !tex_units.is_empty() {
+            let unit = gl::TEXTURE0 + self.state.client_active_texture as u32;
+            calls.push(Call::ClientActiveTexture(unit));
+        }
+        let bound = a.array_buffer;
+        let rec = self.recording.as_mut().expect("checked above");
+        if bound != 0 {
+            rec.push(Call::BindBuffer(gl::ARRAY_BUFFER, 0));
+        }
+        rec.extend(calls);
+        if bound != 0 {
+            rec.push(Call::BindBuffer(gl::ARRAY_BUFFER, bound));
+        }
+    }
+
     /// `Begin(mode)` (when given), ArrayElement(i) for each index, `End`; the indices are
-    /// already checked against every enabled array.
-    fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>) {
+    /// already checked against every enabled array, and the largest is below `reach`.
+    fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>, reach: usize) {
         let arrays = std::mem::take(&mut self.state.arrays);
-        let sources = arrays.sources();
+        let sources = arrays.sources(reach);
         if !sources.is_empty() {
             if let Some(mode) = mode {
                 self.begin_mode = Some(mode);
@@ -291,7 +446,7 @@ impl Context {
     /// calls and the vertex, End — so the list keeps this data whatever the arrays hold when it
     /// runs. `Ok(None)` for any other call, and for a draw that is erroneous now: that one is
     /// compiled as it is, to raise its error when the list runs. Texture coordinates of units
-    /// other than 0 have no immediate-mode call yet (MultiTexCoord) and are not captured.
+    /// other than 0 become MultiTexCoord calls.
     ///
     /// Memory: with no array enabled nothing is drawn and nothing is stored, whatever the count
     /// (DrawArrays' count is then bounded by nothing). Otherwise every index is checked against
@@ -380,15 +535,16 @@ impl Context {
             }
             _ => return Ok(None),
         };
-        let sources = arrays.sources();
+        let reach = match &indices {
+            Indices::Range(r) => r.end().saturating_add(1),
+            Indices::List(v) => v.iter().max().map_or(0, |&m| m as usize + 1),
+        };
+        let sources = arrays.sources(reach);
         if sources.is_empty() {
             return Ok(Some(Vec::new()));
         }
         // One call per element per source that has an immediate-mode call, Begin and End.
-        let per_index = sources
-            .iter()
-            .filter(|s| !matches!(s.attr, Attr::TexCoord(u) if u != 0))
-            .count();
+        let per_index = sources.len();
         let total = indices
             .len()
             .checked_mul(per_index)
@@ -407,7 +563,9 @@ impl Context {
                 calls.extend(match s.attr {
                     Attr::EdgeFlag => Some(Call::EdgeFlag(x != 0.0)),
                     Attr::TexCoord(0) => Some(Call::TexCoord4f(x, y, z, w)),
-                    Attr::TexCoord(_) => None,
+                    Attr::TexCoord(u) => {
+                        Some(Call::MultiTexCoord4f(gl::TEXTURE0 + u as u32, x, y, z, w))
+                    }
                     Attr::Color => Some(Call::Color4f(x, y, z, w)),
                     Attr::SecondaryColor => Some(Call::SecondaryColor3f(x, y, z)),
                     Attr::FogCoord => Some(Call::FogCoordf(x)),

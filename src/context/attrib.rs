@@ -102,6 +102,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; color_mask, clear_color, enables.alpha_test, enables.blend, enables.dither,
             enables.color_logic_op, enables.index_logic_op);
         copy!(d, s; alpha, blend, logic_op);
+        // Table 6.22: DRAW_BUFFER.
+        copy!(d, s; draw_buffer);
     }
     if has(gl::DEPTH_BUFFER_BIT) {
         copy!(d, s; depth_func, depth_mask, clear_depth, enables.depth_test);
@@ -126,8 +128,16 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     if has(gl::LIST_BIT) {
         copy!(d, s; list_base);
     }
-    // PIXEL_MODE_BIT (read buffer, pixel transfer, zoom) and ACCUM_BUFFER_BIT: no state of
-    // theirs is kept yet.
+    if has(gl::PIXEL_MODE_BIT) {
+        // Table 6.26: READ_BUFFER.
+        copy!(d, s; read_buffer);
+    }
+    if has(gl::ACCUM_BUFFER_BIT) {
+        // Table 6.22: ACCUM_CLEAR_VALUE.
+        copy!(d, s; accum_clear);
+    }
+    // PIXEL_MODE_BIT's pixel transfer and zoom: no state of theirs is
+    // kept yet.
 }
 
 /// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each
@@ -214,7 +224,11 @@ impl Context {
         if self.attrib.server.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.error(gl::STACK_OVERFLOW);
         }
-        let mut saved = Box::new(State::new(self.state.width, self.state.height));
+        let mut saved = Box::new(State::with_config(
+            self.state.width,
+            self.state.height,
+            self.state.config,
+        ));
         copy_groups(mask, &mut saved, &self.state);
         self.attrib.server.push((mask, saved));
     }

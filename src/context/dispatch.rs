@@ -386,6 +386,21 @@ impl Context {
             Call::EndQuery(target) => self.end_query(target),
             Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
+            Call::DrawBuffer(buf) => self.draw_buffer(buf),
+            Call::ReadBuffer(src) => self.read_buffer(src),
+            Call::ClearAccum(red, green, blue, alpha) => self.clear_accum(red, green, blue, alpha),
+            Call::Accum(op, value) => self.accum(op, value),
+            Call::SwapBuffers => self.swap_buffers(),
+            Call::RenderMode(mode) => {
+                self.render_mode(mode);
+            }
+            Call::SelectBuffer(size) => self.select_buffer(size),
+            Call::FeedbackBuffer(size, type_) => self.feedback_buffer(size, type_),
+            Call::InitNames => self.init_names(),
+            Call::LoadName(name) => self.load_name(name),
+            Call::PushName(name) => self.push_name(name),
+            Call::PopName => self.pop_name(),
+            Call::PassThrough(token) => self.pass_through(token),
         }
     }
 }

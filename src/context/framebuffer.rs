@@ -14,8 +14,8 @@ use super::{record, Context};
 use crate::call::Call;
 use crate::gl;
 
-/// The buffer bits `Clear` accepts (GL 2.1 §4.2.3); ACCUM_BUFFER_BIT is legal but there is no
-/// accumulation buffer to clear.
+/// The buffer bits `Clear` accepts (GL 2.1 §4.2.3); a bit for a buffer the framebuffer lacks
+/// clears nothing.
 const CLEAR_BITS: u32 =
     gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT | gl::ACCUM_BUFFER_BIT;
 
@@ -48,6 +48,8 @@ impl Context {
     }
 
     /// `glClear`: INVALID_VALUE for any bit other than COLOR, DEPTH, STENCIL, ACCUM_BUFFER_BIT.
+    /// Colour goes to the buffers DRAW_BUFFER names. In SELECT and FEEDBACK render modes it
+    /// clears nothing, as Mesa does.
     pub fn clear(&mut self, mask: u32) {
         record!(self, Call::Clear(mask));
         if !self.outside_begin_end() {
@@ -55,6 +57,12 @@ impl Context {
         }
         if mask & !CLEAR_BITS != 0 {
             return self.error(gl::INVALID_VALUE);
+        }
+        if self.state.render_mode != gl::RENDER {
+            return;
+        }
+        if mask & gl::ACCUM_BUFFER_BIT != 0 {
+            self.clear_accum_buffer();
         }
         let mask = mask & !gl::ACCUM_BUFFER_BIT;
         if mask != 0 {

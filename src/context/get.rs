@@ -216,18 +216,28 @@ impl Context {
             gl::ALIASED_LINE_WIDTH_RANGE | gl::SMOOTH_LINE_WIDTH_RANGE => floats(LINE_WIDTH_RANGE),
             gl::SMOOTH_LINE_WIDTH_GRANULARITY => f(LINE_WIDTH_GRANULARITY),
             gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS | gl::ALPHA_BITS => i(8),
-            gl::DEPTH_BITS => i(24),
-            gl::STENCIL_BITS => i(8),
-            gl::INDEX_BITS
-            | gl::ACCUM_RED_BITS
+            // The framebuffer's buffers (table 6.33), as the context was made.
+            gl::DEPTH_BITS => i(if s.config.depth { 24 } else { 0 }),
+            gl::STENCIL_BITS => i(if s.config.stencil { 8 } else { 0 }),
+            gl::ACCUM_RED_BITS
             | gl::ACCUM_GREEN_BITS
             | gl::ACCUM_BLUE_BITS
-            | gl::ACCUM_ALPHA_BITS
-            | gl::AUX_BUFFERS
-            | gl::SAMPLE_BUFFERS
-            | gl::SAMPLES => i(0),
+            | gl::ACCUM_ALPHA_BITS => i(if s.config.accum { 16 } else { 0 }),
+            gl::DOUBLEBUFFER => b(s.config.double_buffered),
+            gl::INDEX_BITS | gl::AUX_BUFFERS | gl::SAMPLE_BUFFERS | gl::SAMPLES => i(0),
             gl::RGBA_MODE => b(true),
-            gl::INDEX_MODE | gl::DOUBLEBUFFER | gl::STEREO => b(false),
+            gl::INDEX_MODE | gl::STEREO => b(false),
+            // Tables 6.22, 6.26, 6.31.
+            gl::DRAW_BUFFER => e(s.draw_buffer),
+            gl::READ_BUFFER => e(s.read_buffer),
+            gl::ACCUM_CLEAR_VALUE => norm(s.accum_clear.to_array()),
+            gl::RENDER_MODE => e(s.render_mode),
+            // Selection and feedback (GL 2.1 table 6.31 and GL 1.1's sizes).
+            gl::NAME_STACK_DEPTH => i(self.renderer.sink.name_stack_depth() as i32),
+            gl::MAX_NAME_STACK_DEPTH => i(crate::cpu::feedback::MAX_NAME_STACK_DEPTH as i32),
+            gl::SELECTION_BUFFER_SIZE => i(self.renderer.sink.select_size.unwrap_or(0) as i32),
+            gl::FEEDBACK_BUFFER_SIZE => i(self.renderer.sink.feedback_size.unwrap_or(0) as i32),
+            gl::FEEDBACK_BUFFER_TYPE => e(self.renderer.sink.feedback_type),
             // Display lists, attribute stacks (table 6.36, 6.35)
             gl::LIST_BASE => e(s.list_base),
             gl::LIST_INDEX => e(self.list_index_and_mode().0),
@@ -330,6 +340,13 @@ impl Context {
             return self.error(gl::INVALID_ENUM);
         };
         write(self, value, out, conv);
+    }
+
+    /// How many values `get_*v(pname)` writes; `None` for a pname it does not know (which it
+    /// answers with INVALID_ENUM). Not a GL entry point: what a C caller's buffer must hold,
+    /// for the C ABI, which gets a bare pointer. Raises no error.
+    pub fn get_count(&mut self, pname: u32) -> Option<usize> {
+        self.query(pname).map(|v| v.len)
     }
 
     /// `glGetBooleanv`: a number converts to `false` exactly when it is zero (GL 2.1 §6.1.2).

@@ -18,11 +18,13 @@
 //! `framebuffer` (Clear*, DepthFunc, masks, Scissor) and `control` (Hint, PixelStore, Flush,
 //! Finish). Begin/End, Enable/Disable, the error flag and [`Context::execute`] live here.
 
+mod buffers;
 mod control;
 mod dispatch;
 mod framebuffer;
 mod lighting;
 mod raster;
+mod select;
 #[cfg(test)]
 mod tests;
 mod vertex;
@@ -30,7 +32,7 @@ mod vertex;
 use crate::call::Call;
 use crate::cpu::Renderer;
 use crate::gl;
-use crate::state::{State, MAX_VIEWPORT_DIM};
+use crate::state::{ContextConfig, State, MAX_VIEWPORT_DIM};
 use crate::Error;
 
 mod get;
@@ -83,6 +85,16 @@ impl Context {
     /// in GL's initial state. Each side must be between 1 and 16384 (else
     /// [`Error::InvalidSize`]); [`Error::OutOfMemory`] when the framebuffer cannot be allocated.
     pub fn new(width: u32, height: u32) -> Result<Context, Error> {
+        Self::with_config(width, height, ContextConfig::default())
+    }
+
+    /// A context with a `width` x `height` framebuffer holding the buffers `config` names
+    /// (front and back colour buffers, depth, stencil, accumulation), in GL's initial state:
+    /// DRAW_BUFFER and READ_BUFFER are BACK when double-buffered, FRONT otherwise.
+    /// [`Context::new`] is `with_config(width, height, ContextConfig::default())`: one RGBA8
+    /// colour buffer, 24-bit depth, 8-bit stencil, no accumulation buffer. Errors as
+    /// [`Context::new`].
+    pub fn with_config(width: u32, height: u32, config: ContextConfig) -> Result<Context, Error> {
         if width == 0 || height == 0 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(Error::InvalidSize { width, height });
         }
@@ -92,9 +104,9 @@ impl Context {
         // The framebuffer is the one allocation sized by the caller here: tried, so that a size
         // the machine cannot hold is an `Err`, not an abort.
         let renderer =
-            Renderer::try_new(width, height).ok_or(Error::OutOfMemory { width, height })?;
+            Renderer::try_new(width, height, config).ok_or(Error::OutOfMemory { width, height })?;
         Ok(Context {
-            state: State::new(width, height),
+            state: State::with_config(width, height, config),
             error: gl::NO_ERROR,
             begin_mode: None,
             recording: None,
@@ -115,7 +127,8 @@ impl Context {
     pub fn reset(&mut self) {
         let (w, h) = self.size();
         self.renderer.discard_batch();
-        self.state = State::new(w, h);
+        self.renderer.sink = Default::default();
+        self.state = State::with_config(w, h, self.state.config);
         self.error = gl::NO_ERROR;
         self.begin_mode = None;
         self.recording = None;
@@ -136,6 +149,13 @@ impl Context {
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
         (self.state.width, self.state.height)
+    }
+
+    /// Raises `code` as a command would: it becomes the sticky error unless an earlier one is
+    /// still unread. Not a GL entry point: for layers that embed a context and meet an error
+    /// of their own (the C ABI raises OUT_OF_MEMORY when a command could not complete).
+    pub fn raise_error(&mut self, code: u32) {
+        self.error(code);
     }
 
     /// Records `code` unless an earlier error is still unread: the first error sticks until

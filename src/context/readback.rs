@@ -27,7 +27,9 @@ impl Context {
     /// FLOAT, multi-byte values little-endian (big-endian with PACK_SWAP_BYTES). Errors:
     /// INVALID_ENUM for another format or type, INVALID_VALUE for a negative size or an `out`
     /// shorter than the skips and the request need,
-    /// INVALID_OPERATION between Begin and End. Flushes batched drawing first.
+    /// INVALID_OPERATION between Begin and End, or for DEPTH_COMPONENT (STENCIL_INDEX) without a
+    /// depth (stencil) buffer. Colour comes from the buffer READ_BUFFER names. Flushes batched
+    /// drawing first.
     #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
         &mut self,
@@ -68,6 +70,16 @@ impl Context {
             Source::Color(c) => c.len(),
             _ => 1,
         };
+        // §4.3.2: DEPTH_COMPONENT without a depth buffer, STENCIL_INDEX without a stencil
+        // buffer.
+        let missing = match source {
+            Source::Depth => !self.state.config.depth,
+            Source::Stencil => !self.state.config.stencil,
+            Source::Color(_) => false,
+        };
+        if missing {
+            return self.error(gl::INVALID_OPERATION);
+        }
         let (w, h) = (width as usize, height as usize);
         // Every product of the caller's sizes is checked (`PixelModes::layout`): width, height,
         // PACK_ROW_LENGTH and the skips up to 2^31 times 16 bytes a pixel wrap a usize, and a
@@ -81,6 +93,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         self.renderer.flush(&self.state);
+        let buf = crate::cpu::framebuffer::read_buf(&self.state);
         let fb = self.renderer.framebuffer();
         // Only the part of the rectangle inside the window is visited (§4.3.2: pixels outside it
         // are undefined; fixedgl leaves them untouched), so the work is bounded by the window,
@@ -96,7 +109,7 @@ impl Context {
         for j in rows {
             for i in cols.clone() {
                 let (px, py) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
-                let Some((c, d, s)) = fb.pixel(px, py) else {
+                let Some((c, d, s)) = fb.pixel_in(buf, px, py) else {
                     continue;
                 };
                 // j < h and i < w, so this is at most `layout.need`, which did not overflow.
@@ -122,7 +135,9 @@ impl Context {
     }
 
     /// The colour buffer as an image, top row first (flushes batched drawing first; between
-    /// Begin and End it returns what is drawn so far).
+    /// Begin and End it returns what is drawn so far): the back buffer of a double-buffered
+    /// context (where drawing goes unless DrawBuffer says otherwise), the only colour buffer of
+    /// a single-buffered one; [`Context::front_rgba`] reads the front buffer.
     pub fn to_image(&mut self) -> image::RgbaImage {
         if self.begin_mode.is_none() {
             self.renderer.flush(&self.state);

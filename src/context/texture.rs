@@ -449,6 +449,10 @@ impl Context {
         {
             return self.error(code);
         }
+        // §3.8.2: a depth format without a depth buffer to copy from.
+        if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
+            return self.error(gl::INVALID_OPERATION);
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
@@ -489,6 +493,9 @@ impl Context {
         else {
             return;
         };
+        if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
+            return self.error(gl::INVALID_OPERATION);
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
@@ -500,13 +507,19 @@ impl Context {
     /// `None` when the texels cannot be allocated (w and h are validated, at most
     /// MAX_TEXTURE_SIZE).
     fn read_fb(&mut self, x: i32, y: i32, w: i32, h: i32, base: u32) -> Option<Vec<[f32; 4]>> {
+        // Colour from the buffer READ_BUFFER names (§3.8.2 reads as ReadPixels does).
+        let buf = crate::cpu::framebuffer::read_buf(&self.state);
         let fb = self.renderer.framebuffer();
         let mut out = Vec::new();
         out.try_reserve_exact(w.max(0) as usize * h.max(0) as usize)
             .ok()?;
         for j in 0..h.max(0) {
             for i in 0..w.max(0) {
-                let px = fb.pixel(i64::from(x) + i64::from(i), i64::from(y) + i64::from(j));
+                let px = fb.pixel_in(
+                    buf,
+                    i64::from(x) + i64::from(i),
+                    i64::from(y) + i64::from(j),
+                );
                 let t = match (px, base) {
                     (Some((_, d, _)), gl::DEPTH_COMPONENT) => {
                         let z = d as f32 / crate::cpu::framebuffer::DEPTH_MAX as f32;

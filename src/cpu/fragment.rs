@@ -76,6 +76,9 @@ fn stipple_mask(rows: &[u32; 32], x0: i32, y: i32) -> u64 {
 pub struct TileBufs<'a> {
     /// RGBA8, `TILE * TILE`.
     pub color: &'a mut [[u8; 4]],
+    /// A second colour buffer written with the same fragments (DrawBuffer FRONT_AND_BACK or
+    /// LEFT on a double-buffered framebuffer), blended against its own contents.
+    pub color2: Option<&'a mut [[u8; 4]]>,
     /// Depth, `TILE * TILE`.
     pub depth: &'a mut [u32],
     /// Stencil, `TILE * TILE`.
@@ -170,12 +173,21 @@ impl FragCtx<'_> {
         self.store(bufs, i, px);
     }
 
-    /// Writes unorm8 colour `px` at tile index `i` through ColorMask (§4.2.2).
+    /// Writes unorm8 colour `px` at tile index `i` through ColorMask (§4.2.2), to each colour
+    /// buffer being drawn.
     #[inline(always)]
     fn store(&self, bufs: &mut TileBufs, i: usize, px: [u8; 4]) {
-        let Some(dst) = bufs.color.get_mut(i) else {
-            return;
-        };
+        if let Some(dst) = bufs.color.get_mut(i) {
+            self.store_one(dst, px);
+        }
+        if let Some(dst) = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i)) {
+            self.store_one(dst, px);
+        }
+    }
+
+    /// Writes `px` over `dst` through ColorMask.
+    #[inline(always)]
+    fn store_one(&self, dst: &mut [u8; 4], px: [u8; 4]) {
         if self.count {
             dst[0] = dst[0].wrapping_add(1);
         } else if self.color_mask == [true; 4] {
@@ -240,18 +252,20 @@ impl FragCtx<'_> {
             bufs.samples += 1;
         }
         let src = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
-        let px = match ops.write {
+        // Blending and the logic op read each colour buffer's own contents (§4.1.8, §4.1.10).
+        let combine = |d: [u8; 4]| match ops.write {
             ColorWrite::Replace => src,
-            ColorWrite::Blend(b) => match bufs.color.get(i) {
-                Some(&d) => b.apply(src, d),
-                None => return,
-            },
-            ColorWrite::Logic(op) => match bufs.color.get(i) {
-                Some(&d) => std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k])),
-                None => return,
-            },
+            ColorWrite::Blend(b) => b.apply(src, d),
+            ColorWrite::Logic(op) => {
+                std::array::from_fn(|k| super::fragops::logic_op(op, src[k], d[k]))
+            }
         };
-        self.store(bufs, i, px);
+        if let Some(dst) = bufs.color.get_mut(i) {
+            self.store_one(dst, combine(*dst));
+        }
+        if let Some(dst) = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i)) {
+            self.store_one(dst, combine(*dst));
+        }
     }
 
     /// The fog coordinate among varyings `v` (0 when fog is off).

@@ -157,7 +157,9 @@ impl Ops {
     /// The operations `state` enables, or `None` when there are none (the fast path).
     pub fn new(state: &State) -> Option<Ops> {
         let e = &state.enables;
-        if !(e.fog || e.alpha_test || e.stencil_test || e.blend || e.color_logic_op) {
+        // Without a stencil buffer the stencil test always passes and writes nothing (§4.1.5).
+        let stencil_test = e.stencil_test && state.config.stencil;
+        if !(e.fog || e.alpha_test || stencil_test || e.blend || e.color_logic_op) {
             return None;
         }
         let f = &state.fog;
@@ -172,7 +174,7 @@ impl Ops {
             .alpha_test
             .then_some((state.alpha.func, unorm8(state.alpha.reference)));
         let s = &state.stencil;
-        let stencil = e.stencil_test.then(|| {
+        let stencil = stencil_test.then(|| {
             [
                 StencilSide::new(&s.faces[FRONT], state.stencil_writemask),
                 StencilSide::new(&s.faces[BACK], s.back_writemask),

@@ -7,7 +7,7 @@
 
 use rayon::prelude::*;
 
-use crate::state::State;
+use crate::state::{ContextConfig, State};
 
 /// Side of a square screen tile, in pixels.
 pub const TILE: usize = 64;
@@ -16,42 +16,99 @@ pub const TILE_PIXELS: usize = TILE * TILE;
 /// Largest 24-bit depth value (window z = 1).
 pub const DEPTH_MAX: u32 = (1 << 24) - 1;
 
-/// The colour, depth and stencil buffers, tile-major.
+/// The colour, depth, stencil and accumulation buffers, tile-major.
 #[derive(Debug, Clone)]
 pub struct Framebuffer {
     width: u32,
     height: u32,
     tiles_x: usize,
     tiles_y: usize,
-    /// RGBA8 per pixel.
+    /// RGBA8 per pixel: the context's default colour buffer, the back buffer of a
+    /// double-buffered framebuffer and the only (front) one otherwise. Whatever draws or reads
+    /// "the colour buffer" without naming one uses this.
     pub(crate) color: Vec<[u8; 4]>,
-    /// 24-bit depth in the low bits.
+    /// The front buffer of a double-buffered framebuffer (`None` when single-buffered).
+    pub(crate) front: Option<Vec<[u8; 4]>>,
+    /// 24-bit depth in the low bits (allocated even without a depth buffer; then never read
+    /// or written: `has_depth`).
     pub(crate) depth: Vec<u32>,
     pub(crate) stencil: Vec<u8>,
+    /// The accumulation buffer, 16 signed bits per channel (GL 2.1 §4.2.4; `None`: none).
+    pub(crate) accum: Option<Vec<[i16; 4]>>,
+    /// Which buffers exist (the context's configuration).
+    config: ContextConfig,
+}
+
+/// One of the framebuffer's colour buffers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorBuf {
+    /// `Framebuffer::color`: the back buffer when double-buffered, the only buffer otherwise.
+    Main,
+    /// The front buffer of a double-buffered framebuffer.
+    Front,
+}
+
+/// The colour buffers fragments, Clear and Accum(RETURN) write: none, one or both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Targets {
+    /// `Framebuffer::color`.
+    pub main: bool,
+    /// The front buffer of a double-buffered framebuffer.
+    pub front: bool,
+}
+
+impl Targets {
+    /// The buffers DRAW_BUFFER names in `state` (validated when it was set): FRONT, LEFT,
+    /// FRONT_LEFT and FRONT_AND_BACK name the front buffer, BACK, LEFT, BACK_LEFT and
+    /// FRONT_AND_BACK the back buffer (GL 2.1 table 4.4); a single-buffered framebuffer's only
+    /// buffer is its front.
+    pub fn of(state: &State) -> Self {
+        let mask = crate::buffers::mask(state.draw_buffer).unwrap_or(0);
+        let (front, back) = (
+            mask & crate::buffers::FRONT_LEFT != 0,
+            mask & crate::buffers::BACK_LEFT != 0,
+        );
+        if state.config.double_buffered {
+            Targets { main: back, front }
+        } else {
+            Targets {
+                main: front,
+                front: false,
+            }
+        }
+    }
+
+    /// Whether no colour buffer is written (DrawBuffer(NONE)).
+    pub fn none(&self) -> bool {
+        !self.main && !self.front
+    }
+}
+
+/// The colour buffer READ_BUFFER names in `state` (validated when it was set).
+pub fn read_buf(state: &State) -> ColorBuf {
+    let mask = crate::buffers::read_mask(state.read_buffer).unwrap_or(0);
+    if state.config.double_buffered && mask & crate::buffers::BACK_LEFT == 0 {
+        ColorBuf::Front
+    } else {
+        ColorBuf::Main
+    }
 }
 
 impl Framebuffer {
     /// A framebuffer cleared to colour 0, depth 1 and stencil 0 (GL's initial contents are
-    /// undefined; this is what llvmpipe starts with too).
-    /// Aborts when the buffers cannot be allocated, as `vec!` does; see [`Framebuffer::try_new`].
-    /// For tests: the library builds framebuffers with `try_new`.
+    /// undefined; this is what llvmpipe starts with too), single-buffered with depth and
+    /// stencil. Aborts when the buffers cannot be allocated, as `vec!` does; see
+    /// [`Framebuffer::try_new`]. For tests: the library builds framebuffers with `try_new`.
     #[cfg(test)]
     pub fn new(width: u32, height: u32) -> Self {
-        let (tiles_x, tiles_y, n) = Self::layout(width, height);
-        Self {
-            width,
-            height,
-            tiles_x,
-            tiles_y,
-            color: vec![[0; 4]; n],
-            depth: vec![DEPTH_MAX; n],
-            stencil: vec![0; n],
-        }
+        Self::try_new(width, height, ContextConfig::default()).expect("a test framebuffer")
     }
 
-    /// [`Framebuffer::new`], or `None` when the buffers (9 bytes a pixel, padded to whole
-    /// tiles) cannot be allocated: the allocation is tried, never assumed.
-    pub fn try_new(width: u32, height: u32) -> Option<Self> {
+    /// A cleared framebuffer with the buffers `config` names (colour 0, depth 1, stencil 0,
+    /// accumulation 0), or `None` when they (9 bytes a pixel, 13 with a back buffer, 8 more
+    /// with an accumulation buffer; padded to whole tiles) cannot be allocated: the
+    /// allocation is tried, never assumed.
+    pub fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
         let (tiles_x, tiles_y, n) = Self::layout(width, height);
         Some(Self {
             width,
@@ -59,9 +116,78 @@ impl Framebuffer {
             tiles_x,
             tiles_y,
             color: filled(n, [0; 4])?,
+            front: match config.double_buffered {
+                true => Some(filled(n, [0; 4])?),
+                false => None,
+            },
             depth: filled(n, DEPTH_MAX)?,
             stencil: filled(n, 0)?,
+            accum: match config.accum {
+                true => Some(filled(n, [0; 4])?),
+                false => None,
+            },
+            config,
         })
+    }
+
+    /// The same framebuffer at `width` x `height` (`Context::resize`): what lies inside both
+    /// sizes is kept, pixel for pixel from the lower-left corner, the rest is as a new
+    /// framebuffer's (GL leaves it undefined). `None` when the new buffers cannot be allocated.
+    pub fn resized(&self, width: u32, height: u32) -> Option<Self> {
+        let mut out = Self::try_new(width, height, self.config)?;
+        let (w, h) = (
+            width.min(self.width) as usize,
+            height.min(self.height) as usize,
+        );
+        for y in 0..h {
+            for x in 0..w {
+                let (from, to) = (self.index(x, y), out.index(x, y));
+                let copy = |d: &mut [[u8; 4]], s: &[[u8; 4]]| {
+                    if let (Some(d), Some(s)) = (d.get_mut(to), s.get(from)) {
+                        *d = *s;
+                    }
+                };
+                copy(&mut out.color, &self.color);
+                if let (Some(d), Some(s)) = (out.front.as_deref_mut(), self.front.as_deref()) {
+                    copy(d, s);
+                }
+                if let (Some(d), Some(s)) = (out.depth.get_mut(to), self.depth.get(from)) {
+                    *d = *s;
+                }
+                if let (Some(d), Some(s)) = (out.stencil.get_mut(to), self.stencil.get(from)) {
+                    *d = *s;
+                }
+                if let (Some(d), Some(s)) = (
+                    out.accum.as_deref_mut().and_then(|a| a.get_mut(to)),
+                    self.accum.as_deref().and_then(|a| a.get(from)),
+                ) {
+                    *d = *s;
+                }
+            }
+        }
+        Some(out)
+    }
+
+    /// The buffers this framebuffer has.
+    pub fn config(&self) -> ContextConfig {
+        self.config
+    }
+
+    /// The colour buffer `buf` (the main one when there is no separate front buffer).
+    fn buffer(&self, buf: ColorBuf) -> &[[u8; 4]] {
+        match (buf, &self.front) {
+            (ColorBuf::Front, Some(f)) => f,
+            _ => &self.color,
+        }
+    }
+
+    /// What a buffer swap does to the colour buffers (`Context::swap_buffers`): the back buffer
+    /// becomes the front buffer, and the back buffer keeps its contents, as llvmpipe's
+    /// software winsys leaves it (GL leaves them undefined). Nothing when single-buffered.
+    pub fn swap(&mut self) {
+        if let Some(front) = self.front.as_mut() {
+            front.copy_from_slice(&self.color);
+        }
     }
 
     /// Tiles across, tiles up and pixels stored (whole tiles) for a `width` x `height` buffer:
@@ -89,14 +215,23 @@ impl Framebuffer {
         tile * TILE_PIXELS + (y % TILE) * TILE + x % TILE
     }
 
-    /// Colour, depth and stencil of pixel (x, y), or `None` outside the framebuffer.
+    /// Colour (of the main colour buffer), depth and stencil of pixel (x, y), or `None`
+    /// outside the framebuffer. The library reads with [`Framebuffer::pixel_in`] and the read
+    /// buffer (`read_buf`).
+    #[cfg(test)]
     pub fn pixel(&self, x: i64, y: i64) -> Option<([u8; 4], u32, u8)> {
+        self.pixel_in(ColorBuf::Main, x, y)
+    }
+
+    /// Colour of colour buffer `buf`, depth and stencil of pixel (x, y), or `None` outside the
+    /// framebuffer.
+    pub fn pixel_in(&self, buf: ColorBuf, x: i64, y: i64) -> Option<([u8; 4], u32, u8)> {
         if x < 0 || y < 0 || x >= i64::from(self.width) || y >= i64::from(self.height) {
             return None;
         }
         let i = self.index(x as usize, y as usize);
         Some((
-            *self.color.get(i)?,
+            *self.buffer(buf).get(i)?,
             *self.depth.get(i)?,
             *self.stencil.get(i)?,
         ))
@@ -108,59 +243,75 @@ impl Framebuffer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);
         for y in 0..h {
-            self.extend_with_row(y, &mut out);
+            self.extend_with_row(&self.color, y, &mut out);
         }
         out
     }
 
-    /// The colour buffer as RGBA8 bytes, top row first (image order).
+    /// The main colour buffer as RGBA8 bytes, top row first (image order).
     pub fn color_bytes_top_down(&self) -> Vec<u8> {
+        self.bytes_top_down(ColorBuf::Main)
+    }
+
+    /// Colour buffer `buf` as RGBA8 bytes, top row first (image order).
+    pub fn bytes_top_down(&self, buf: ColorBuf) -> Vec<u8> {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);
         for y in (0..h).rev() {
-            self.extend_with_row(y, &mut out);
+            self.extend_with_row(self.buffer(buf), y, &mut out);
         }
         out.into_flattened()
     }
 
-    /// Appends row `y` (< height) of the colour buffer to `out`: one slice copy per tile.
-    fn extend_with_row(&self, y: usize, out: &mut Vec<[u8; 4]>) {
+    /// Appends row `y` (< height) of colour buffer `src` to `out`: one slice copy per tile.
+    fn extend_with_row(&self, src: &[[u8; 4]], y: usize, out: &mut Vec<[u8; 4]>) {
         let w = self.width as usize;
         let row = (y / TILE) * self.tiles_x * TILE_PIXELS + (y % TILE) * TILE;
         for tx in 0..self.tiles_x {
             let at = row + tx * TILE_PIXELS;
             let n = (w - tx * TILE).min(TILE);
-            if let Some(px) = self.color.get(at..at + n) {
+            if let Some(px) = src.get(at..at + n) {
                 out.extend_from_slice(px);
             }
         }
     }
 
-    /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask`, inside the scissor box when the
-    /// scissor test is enabled, through ColorMask / DepthMask / StencilMask.
+    /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask` (colour: those DRAW_BUFFER
+    /// names), inside the scissor box when the scissor test is enabled, through ColorMask /
+    /// DepthMask / StencilMask. A depth or stencil bit without that buffer clears nothing.
     pub fn clear(&mut self, state: &State, mask: u32) {
         let [x0, y0, x1, y1] = scissor_rect(state);
         if x0 > x1 || y0 > y1 {
             return;
         }
-        let color = (mask & crate::gl::COLOR_BUFFER_BIT != 0).then(|| {
+        let targets = Targets::of(state);
+        let color = (mask & crate::gl::COLOR_BUFFER_BIT != 0 && !targets.none()).then(|| {
             let c = state.clear_color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
             [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)]
         });
         let cmask = state.color_mask;
-        let depth = (mask & crate::gl::DEPTH_BUFFER_BIT != 0 && state.depth_mask)
-            .then(|| depth_unorm(state.clear_depth.clamp(0.0, 1.0)));
+        let depth =
+            (mask & crate::gl::DEPTH_BUFFER_BIT != 0 && state.depth_mask && self.config.depth)
+                .then(|| depth_unorm(state.clear_depth.clamp(0.0, 1.0)));
         let smask = (state.stencil_writemask & 0xFF) as u8;
-        let stencil = (mask & crate::gl::STENCIL_BUFFER_BIT != 0 && smask != 0)
-            .then_some((state.clear_stencil & 0xFF) as u8);
+        let stencil =
+            (mask & crate::gl::STENCIL_BUFFER_BIT != 0 && smask != 0 && self.config.stencil)
+                .then_some((state.clear_stencil & 0xFF) as u8);
+        if color.is_none() && depth.is_none() && stencil.is_none() {
+            return;
+        }
         let tiles_x = self.tiles_x;
+        let n = self.tiles_x * self.tiles_y;
+        let mains = tile_slices(targets.main.then_some(&mut self.color), n);
+        let fronts = tile_slices(self.front.as_mut().filter(|_| targets.front), n);
         // Tiles in parallel, each clearing its part of the rectangle.
-        self.color
-            .par_chunks_mut(TILE_PIXELS)
+        mains
+            .into_par_iter()
+            .zip(fronts)
             .zip(self.depth.par_chunks_mut(TILE_PIXELS))
             .zip(self.stencil.par_chunks_mut(TILE_PIXELS))
             .enumerate()
-            .for_each(|(t, ((cbuf, dbuf), sbuf))| {
+            .for_each(|(t, (((mut cbuf, mut fbuf), dbuf), sbuf))| {
                 let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
                 let (tx0, ty0) = (x0.max(ox), y0.max(oy));
                 let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
@@ -178,14 +329,22 @@ impl Framebuffer {
                     } else {
                         (row + (tx0 - ox) as usize, row + (tx1 - ox) as usize)
                     };
-                    if let (Some(c), Some(px)) = (color, cbuf.get_mut(a..=b)) {
-                        if cmask == [true; 4] {
-                            px.fill(c);
-                        } else {
-                            for p in px {
-                                for k in 0..4 {
-                                    if cmask[k] {
-                                        p[k] = c[k];
+                    if let Some(c) = color {
+                        for buf in [cbuf.as_deref_mut(), fbuf.as_deref_mut()]
+                            .into_iter()
+                            .flatten()
+                        {
+                            let Some(px) = buf.get_mut(a..=b) else {
+                                continue;
+                            };
+                            if cmask == [true; 4] {
+                                px.fill(c);
+                            } else {
+                                for p in px {
+                                    for k in 0..4 {
+                                        if cmask[k] {
+                                            p[k] = c[k];
+                                        }
                                     }
                                 }
                             }
@@ -205,6 +364,88 @@ impl Framebuffer {
                     }
                 }
             });
+    }
+}
+
+impl Framebuffer {
+    /// `glAccum(op, value)` (GL 2.1 §4.2.4) over the inclusive pixel rectangle `rect` (the
+    /// window cut by the scissor box): LOAD and ACCUM read colour buffer `read`; RETURN writes
+    /// the colour buffers `targets` names through `color_mask`. Nothing without an
+    /// accumulation buffer. The arithmetic is [`super::accum`]'s.
+    pub fn accum(
+        &mut self,
+        op: u32,
+        value: f32,
+        rect: [i32; 4],
+        read: ColorBuf,
+        targets: Targets,
+        color_mask: [bool; 4],
+    ) {
+        let [x0, y0, x1, y1] = rect;
+        let Some(mut accum) = self.accum.take() else {
+            return;
+        };
+        for y in y0.max(0)..=y1.min(self.height as i32 - 1) {
+            for x in x0.max(0)..=x1.min(self.width as i32 - 1) {
+                let i = self.index(x as usize, y as usize);
+                let Some(acc) = accum.get_mut(i) else {
+                    continue;
+                };
+                if op == crate::gl::RETURN {
+                    let px = super::accum::ret(value, *acc);
+                    let put = |buf: &mut [[u8; 4]]| {
+                        if let Some(d) = buf.get_mut(i) {
+                            for k in 0..4 {
+                                if color_mask[k] {
+                                    d[k] = px[k];
+                                }
+                            }
+                        }
+                    };
+                    if targets.main {
+                        put(&mut self.color);
+                    }
+                    if let (true, Some(f)) = (targets.front, self.front.as_mut()) {
+                        put(f);
+                    }
+                } else {
+                    let c = match super::accum::reads_color(op) {
+                        true => self.buffer(read).get(i).copied().unwrap_or([0; 4]),
+                        false => [0; 4],
+                    };
+                    super::accum::apply(op, value, acc, c);
+                }
+            }
+        }
+        self.accum = Some(accum);
+    }
+
+    /// Clear of the accumulation buffer to `value` (already converted) over the inclusive
+    /// rectangle `rect` (§4.2.3: the scissor box applies; no mask does).
+    pub fn clear_accum(&mut self, value: [i16; 4], rect: [i32; 4]) {
+        let [x0, y0, x1, y1] = rect;
+        let (w, h) = (self.width as i32, self.height as i32);
+        let Some(mut accum) = self.accum.take() else {
+            return;
+        };
+        for y in y0.max(0)..=y1.min(h - 1) {
+            for x in x0.max(0)..=x1.min(w - 1) {
+                let i = self.index(x as usize, y as usize);
+                if let Some(a) = accum.get_mut(i) {
+                    *a = value;
+                }
+            }
+        }
+        self.accum = Some(accum);
+    }
+}
+
+/// `buf` cut into its `n` tiles, or `n` times `None` (a buffer not written): what the tile loops
+/// zip with the other buffers' tiles.
+pub(crate) fn tile_slices<T>(buf: Option<&mut Vec<T>>, n: usize) -> Vec<Option<&mut [T]>> {
+    match buf {
+        Some(b) => b.chunks_mut(TILE_PIXELS).map(Some).collect(),
+        None => (0..n).map(|_| None).collect(),
     }
 }
 

@@ -35,9 +35,11 @@
 //! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
 //! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
+pub mod accum;
 pub mod assembly;
 pub mod batch;
 pub mod clip;
+pub mod feedback;
 pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
@@ -57,11 +59,11 @@ use rayon::prelude::*;
 use std::sync::mpsc::{self, Receiver};
 use std::sync::Mutex;
 
-use crate::state::{Current, Material, State};
+use crate::state::{ContextConfig, Current, Material, State};
 use assembly::Asm;
 use batch::Batch;
 use fragment::{FragCtx, TileBufs};
-use framebuffer::{Framebuffer, TILE, TILE_PIXELS};
+use framebuffer::{Framebuffer, Targets, TILE, TILE_PIXELS};
 use setup::{SetupCtx, Worker};
 use vertex::{Layout, Lighting};
 
@@ -87,6 +89,9 @@ pub struct Renderer {
     /// The background draw of the previous batch: hands back the core, the batch and its
     /// vertex output.
     pending: Option<Mutex<Receiver<Drawn>>>,
+    /// Selection and feedback (GL 2.1 §5.2, §5.3): where batches go in SELECT and FEEDBACK
+    /// render modes.
+    pub(crate) sink: feedback::Sink,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
     /// An occlusion query is active: draws count the fragments that pass the depth test (and
@@ -191,9 +196,32 @@ impl Renderer {
 
     /// [`Renderer::new`], or `None` when the framebuffer cannot be allocated (what
     /// `Context::new` reports as [`crate::Error::OutOfMemory`]).
-    pub fn try_new(width: u32, height: u32) -> Option<Self> {
-        let core = Box::new(Core::try_new(width, height)?);
+    /// The framebuffer has the buffers `config` names.
+    pub fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
+        let core = Box::new(Core::try_new(width, height, config)?);
         Some(Self::with_core(core, width, height))
+    }
+
+    /// Resizes the framebuffer to `width` x `height` (drawing what is batched first unless
+    /// `open`: a primitive is open, its vertices are then drawn into the new framebuffer),
+    /// keeping what fits (`Framebuffer::resized`); false, with nothing changed, when the new
+    /// buffers cannot be allocated.
+    pub fn resize(&mut self, state: &State, width: u32, height: u32, open: bool) -> bool {
+        if !open {
+            self.flush(state);
+        }
+        let Some(fb) = self.core().fb.resized(width, height) else {
+            return false;
+        };
+        self.tiles = fb.tiles();
+        self.size = (width, height);
+        self.core().fb = fb;
+        true
+    }
+
+    /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        &mut self.core().fb
     }
 
     fn with_core(core: Box<Core>, width: u32, height: u32) -> Self {
@@ -205,6 +233,7 @@ impl Renderer {
             verts: Processed::default(),
             spare: None,
             pending: None,
+            sink: feedback::Sink::default(),
             count_coverage: false,
             count_samples: false,
             background_draws: 0,
@@ -242,6 +271,9 @@ impl Renderer {
     pub fn flush_if_large(&mut self, state: &State) {
         if self.batch.idx.len() < FLUSH_AT {
             return;
+        }
+        if state.render_mode != crate::gl::RENDER {
+            return self.flush(state);
         }
         // A caller running on the pool itself draws in place: blocking one of the pool's
         // threads on a job queued behind it could wait forever.
@@ -394,6 +426,19 @@ impl Renderer {
             self.batch.clear();
             return;
         }
+        if state.render_mode != crate::gl::RENDER {
+            // Hit records or feedback tokens instead of fragments.
+            let Renderer {
+                batch,
+                verts,
+                sink,
+                tiles,
+                ..
+            } = self;
+            sink.process(state, batch, &mut verts.vout, &mut verts.wins, *tiles);
+            batch.clear();
+            return;
+        }
         let count = self.count_coverage;
         let samples = self.count_samples;
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
@@ -419,9 +464,9 @@ impl Core {
         }
     }
 
-    fn try_new(width: u32, height: u32) -> Option<Self> {
+    fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
         Some(Core {
-            fb: Framebuffer::try_new(width, height)?,
+            fb: Framebuffer::try_new(width, height, config)?,
             asm: Vec::new(),
             workers: Vec::new(),
             samples_passed: 0,
@@ -457,11 +502,18 @@ impl Core {
         } else {
             &batch.snapshots
         };
+        let targets = Targets::of(state);
         let fctx = FragCtx {
-            depth_test: state.enables.depth_test,
+            // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
+            depth_test: state.enables.depth_test && fb.config().depth,
             depth_func: state.depth_func,
             depth_mask: state.depth_mask,
-            color_mask: state.color_mask,
+            // DrawBuffer(NONE): fragments go through every test and write no colour.
+            color_mask: if targets.none() {
+                [false; 4]
+            } else {
+                state.color_mask
+            },
             color_sum: layout.spec.is_some(),
             rl: ctx.rl,
             lighting: lighting.as_ref(),
@@ -509,13 +561,13 @@ impl Core {
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if workers.len() == 1 || largest <= count / workers.len() {
                 setup_by_primitives(workers, &ctx, &v, piece, count);
-                *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x);
+                *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
                 assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
                 for run in asm.chunks(PIECE) {
                     setup_by_triangles(workers, &ctx, &v, run);
-                    *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x);
+                    *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
                 }
             }
             start = end;
@@ -595,15 +647,39 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
 }
 
 /// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
-/// primitives first, then worker 1's, ..., which is submission order. Returns the fragments
-/// counted for an occlusion query (0 unless `fctx.samples`).
-fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: usize) -> u64 {
-    fb.color
+/// primitives first, then worker 1's, ..., which is submission order. Colour goes to the
+/// buffers `targets` names: the main buffer, the front buffer, or both (the front one as each
+/// tile's second colour slice). Returns the fragments counted for an occlusion query (0 unless
+/// `fctx.samples`).
+fn rasterise(
+    fb: &mut Framebuffer,
+    workers: &[Worker],
+    fctx: &FragCtx,
+    tiles_x: usize,
+    targets: Targets,
+) -> u64 {
+    let (tx, ty) = fb.tiles();
+    let Framebuffer {
+        color,
+        front,
+        depth,
+        stencil,
+        ..
+    } = fb;
+    // The first target is each tile's colour slice, a second one its `color2`.
+    let (primary, secondary) = match (targets.front, front.as_mut()) {
+        (true, Some(f)) if !targets.main => (f, None),
+        (true, Some(f)) => (color, Some(f)),
+        _ => (color, None),
+    };
+    let seconds = framebuffer::tile_slices(secondary, tx * ty);
+    primary
         .par_chunks_mut(TILE_PIXELS)
-        .zip(fb.depth.par_chunks_mut(TILE_PIXELS))
-        .zip(fb.stencil.par_chunks_mut(TILE_PIXELS))
+        .zip(seconds)
+        .zip(depth.par_chunks_mut(TILE_PIXELS))
+        .zip(stencil.par_chunks_mut(TILE_PIXELS))
         .enumerate()
-        .map(|(t, ((color, depth), stencil))| {
+        .map(|(t, (((color, color2), depth), stencil))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
@@ -612,6 +688,7 @@ fn rasterise(fb: &mut Framebuffer, workers: &[Worker], fctx: &FragCtx, tiles_x: 
             }
             let mut bufs = TileBufs {
                 color,
+                color2,
                 depth,
                 stencil,
                 x: ((t % tiles_x) * TILE) as i32,

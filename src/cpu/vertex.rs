@@ -100,6 +100,18 @@ impl Layout {
         l.stride = n;
         l
     }
+
+    /// The layout selection and feedback need (GL 2.1 §5.2, §5.3): `for_state`'s, with unit 0's
+    /// texture coordinates always (feedback reports them, through TexGen and the texture
+    /// matrix, whether or not texturing is on).
+    pub fn for_feedback(state: &State) -> Self {
+        let mut l = Self::for_state(state);
+        if l.tex.is_none() {
+            l.tex = Some(l.stride);
+            l.stride += 4;
+        }
+        l
+    }
 }
 
 /// One enabled light with what the equation needs, in eye coordinates.

@@ -25,6 +25,8 @@ fn ptr(p: &Pointer) -> *const c_void {
     match p {
         Pointer::Data(d) => d.as_ptr().cast(),
         Pointer::Offset(o) => *o as *const c_void,
+        // Never recorded (a recording holds the bytes a draw read), so never replayed.
+        Pointer::Client(_) => std::ptr::null(),
     }
 }
 
@@ -88,7 +90,7 @@ impl GlBackend {
             }
             Call::DrawArrays(mode, first, count) => {
                 // With no array enabled there is nothing to read and nothing to draw.
-                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources().is_empty() {
+                if a.check_draw_arrays(mode, first, count)?.is_some() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: the shadow checked first + count against every enabled array.
                     unsafe { self.raw.DrawArrays(mode, first, count) };
@@ -97,7 +99,7 @@ impl GlBackend {
             }
             Call::DrawElements(mode, count, ty, ref p) => {
                 if a.check_draw_elements(mode, count, ty, p, None)?.is_some()
-                    && !a.sources().is_empty()
+                    && !a.sources(0).is_empty()
                 {
                     self.before_begin();
                     // SAFETY: `p` holds `count` indices of `ty` (or is an offset into the bound
@@ -126,7 +128,7 @@ impl GlBackend {
                     .iter()
                     .map(|r| (r.end() - r.start() + 1) as i32)
                     .collect();
-                if !firsts.is_empty() && !a.sources().is_empty() {
+                if !firsts.is_empty() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: `firsts` and `counts` hold `firsts.len()` values each, and every
                     // range lies inside every enabled array, as the shadow checked.
@@ -151,7 +153,7 @@ impl GlBackend {
                     .filter(|(&c, _)| c > 0)
                     .map(|(&c, p)| (c, ptr(p)))
                     .unzip();
-                if !counts.is_empty() && !a.sources().is_empty() {
+                if !counts.is_empty() && !a.sources(0).is_empty() {
                     self.before_begin();
                     // SAFETY: one count and one pointer per draw; each pointer holds its count
                     // of indices of `ty` (or is an offset into the bound element buffer), each
@@ -188,7 +190,7 @@ impl GlBackend {
                 a.buffer_data(target, size, p, usage)?;
                 let data = match **p {
                     Pointer::Data(_) => ptr(p),
-                    Pointer::Offset(_) => std::ptr::null(),
+                    Pointer::Offset(_) | Pointer::Client(_) => std::ptr::null(),
                 };
                 // SAFETY: `data` is null or holds `size` bytes, as the shadow checked.
                 unsafe { gl.BufferData(target, size, data, usage) };
@@ -208,9 +210,9 @@ impl GlBackend {
                 });
                 a.unmap_buffer(target)?;
                 let mut mapped: *mut c_void = std::ptr::null_mut();
-                // The binding takes `*const *mut`; the driver writes through it, so the pointer
-                // comes from a mutable borrow.
-                let out = std::ptr::addr_of_mut!(mapped).cast_const();
+                // The generated binding declares the output `*const *mut c_void`; the driver
+                // writes one pointer through it.
+                let out: *const *mut c_void = std::ptr::addr_of_mut!(mapped);
                 // SAFETY: BUFFER_MAP_POINTER writes one pointer, into `mapped`.
                 unsafe { gl.GetBufferPointerv(target, gl::BUFFER_MAP_POINTER, out) };
                 if !mapped.is_null() {

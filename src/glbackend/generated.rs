@@ -216,7 +216,7 @@ impl GlBackend {
             Call::ClearColor(red, green, blue, alpha) => gl.clear_color(red, green, blue, alpha),
             Call::ClearDepth(depth) => gl.clear_depth(depth),
             Call::ClearStencil(s) => gl.clear_stencil(s),
-            Call::Clear(mask) => gl.clear(mask),
+            Call::Clear(mask) => self.clear(mask),
             Call::DepthFunc(func) => gl.depth_func(func),
             Call::DepthMask(flag) => gl.depth_mask(flag),
             Call::ColorMask(red, green, blue, alpha) => gl.color_mask(red, green, blue, alpha),
@@ -415,6 +415,19 @@ impl GlBackend {
             Call::EndQuery(target) => gl.end_query(target),
             Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
+            Call::DrawBuffer(buf) => self.draw_buffer(buf),
+            Call::ReadBuffer(src) => self.read_buffer(src),
+            Call::ClearAccum(red, green, blue, alpha) => gl.clear_accum(red, green, blue, alpha),
+            Call::Accum(op, value) => self.accum(op, value),
+            Call::SwapBuffers => self.swap_buffers(),
+            Call::RenderMode(mode) => self.render_mode(mode),
+            Call::SelectBuffer(size) => self.select_buffer(size),
+            Call::FeedbackBuffer(size, type_) => self.feedback_buffer(size, type_),
+            Call::InitNames => gl.init_names(),
+            Call::LoadName(name) => gl.load_name(name),
+            Call::PushName(name) => gl.push_name(name),
+            Call::PopName => gl.pop_name(),
+            Call::PassThrough(token) => gl.pass_through(token),
         }
     }
 }
@@ -2187,5 +2200,65 @@ impl Safe<'_> {
     pub(super) fn line_stipple(self, factor: i32, pattern: u16) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.LineStipple(factor, pattern) }
+    }
+
+    /// `glDrawBuffer(buf)`.
+    pub(super) fn draw_buffer(self, buf: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.DrawBuffer(buf) }
+    }
+
+    /// `glReadBuffer(src)`.
+    pub(super) fn read_buffer(self, src: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.ReadBuffer(src) }
+    }
+
+    /// `glClearAccum(red, green, blue, alpha)`.
+    pub(super) fn clear_accum(self, red: f32, green: f32, blue: f32, alpha: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.ClearAccum(red, green, blue, alpha) }
+    }
+
+    /// `glAccum(op, value)`.
+    pub(super) fn accum(self, op: u32, value: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Accum(op, value) }
+    }
+
+    /// `glRenderMode(mode)`.
+    pub(super) fn render_mode(self, mode: u32) -> i32 {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RenderMode(mode) }
+    }
+
+    /// `glInitNames()`.
+    pub(super) fn init_names(self) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.InitNames() }
+    }
+
+    /// `glLoadName(name)`.
+    pub(super) fn load_name(self, name: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.LoadName(name) }
+    }
+
+    /// `glPushName(name)`.
+    pub(super) fn push_name(self, name: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PushName(name) }
+    }
+
+    /// `glPopName()`.
+    pub(super) fn pop_name(self) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PopName() }
+    }
+
+    /// `glPassThrough(token)`.
+    pub(super) fn pass_through(self, token: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PassThrough(token) }
     }
 }

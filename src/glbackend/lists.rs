@@ -29,6 +29,16 @@ const MAX_NESTING: u32 = crate::context::MAX_LIST_NESTING;
 /// The attribute stack depth of the front end and of Mesa.
 const MAX_ATTRIB: usize = crate::context::MAX_ATTRIB_STACK_DEPTH;
 
+/// The backend's own state one PushAttrib saved: the PHONG_WIN flag if LIGHTING_BIT was
+/// pushed, DRAW_BUFFER with COLOR_BUFFER_BIT, READ_BUFFER with PIXEL_MODE_BIT (the driver
+/// saves and restores the attachments standing for them itself).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Pushed {
+    phong: Option<bool>,
+    draw_buffer: Option<u32>,
+    read_buffer: Option<u32>,
+}
+
 /// The backend's mirror of the driver's display lists.
 #[derive(Debug, Default)]
 pub(crate) struct ListMirror {
@@ -41,8 +51,9 @@ pub(crate) struct ListMirror {
     depth: u32,
     /// The driver's LIST_BASE.
     base: u32,
-    /// For each PushAttrib the driver accepted: the PHONG_WIN flag if LIGHTING_BIT was saved.
-    phong_stack: Vec<Option<bool>>,
+    /// For each PushAttrib the driver accepted: what of the backend's own state its groups
+    /// hold (the PHONG_WIN flag, DRAW_BUFFER, READ_BUFFER).
+    phong_stack: Vec<Pushed>,
 }
 
 impl GlBackend {
@@ -196,7 +207,11 @@ impl GlBackend {
 
     fn track_push(&mut self, mask: u32) {
         if !self.inside_begin_end && self.lists.phong_stack.len() < MAX_ATTRIB {
-            let saved = (mask & gl::LIGHTING_BIT != 0).then_some(self.phong);
+            let saved = Pushed {
+                phong: (mask & gl::LIGHTING_BIT != 0).then_some(self.phong),
+                draw_buffer: (mask & gl::COLOR_BUFFER_BIT != 0).then_some(self.draw_buffer),
+                read_buffer: (mask & gl::PIXEL_MODE_BIT != 0).then_some(self.read_buffer),
+            };
             self.lists.phong_stack.push(saved);
         }
     }
@@ -205,7 +220,16 @@ impl GlBackend {
         if self.inside_begin_end {
             return;
         }
-        if let Some(Some(phong)) = self.lists.phong_stack.pop() {
+        let Some(pushed) = self.lists.phong_stack.pop() else {
+            return;
+        };
+        if let Some(b) = pushed.draw_buffer {
+            self.draw_buffer = b;
+        }
+        if let Some(b) = pushed.read_buffer {
+            self.read_buffer = b;
+        }
+        if let Some(phong) = pushed.phong {
             if phong != self.phong {
                 // The driver restored SMOOTH (what it was given for PHONG_WIN) or FLAT/SMOOTH.
                 self.phong = phong;
@@ -219,7 +243,9 @@ impl GlBackend {
     }
 
     fn must_expand(&self) -> bool {
-        self.phong || self.lists.expand || self.lists.phong_stack.contains(&Some(true))
+        self.phong
+            || self.lists.expand
+            || self.lists.phong_stack.iter().any(|p| p.phong == Some(true))
     }
 
     /// Replays list `name` call by call (the driver never sees the CallList).

@@ -14,12 +14,15 @@
 //! (GL 2.1 §2.5: the first error sticks until read). `PHONG_WIN`, which no driver implements, is
 //! emulated by a GLSL program (`phong.rs`).
 
+mod buffers;
 mod egl;
 mod generated;
 mod lists;
+mod osmesa;
 mod phong;
 pub mod raw;
 mod replay;
+mod select;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
 mod query;
@@ -42,6 +45,10 @@ pub use egl::{list_devices, DeviceChoice, DeviceInfo, INSTALL_HINT};
 thread_local! {
     /// The id of the backend whose context is current on this thread (0: none of ours).
     static CURRENT: Cell<u64> = const { Cell::new(0) };
+    /// An OSMesa context was made current on this thread since the last EGL one. EGL (through
+    /// libglvnd) does not see OSMesa's switches and skips eglMakeCurrent of the context it
+    /// believes current, so that context must be released first.
+    static OSMESA_SINCE_EGL: Cell<bool> = const { Cell::new(false) };
 }
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
@@ -55,10 +62,22 @@ pub struct GlBackend {
     id: u64,
     raw: raw::Gl,
     glow: glow::Context,
-    fbo: glow::Framebuffer,
-    renderbuffers: [glow::Renderbuffer; 2],
+    /// The FBO standing for the window's framebuffer (buffers.rs); `None` on OSMesa, whose
+    /// own framebuffer is the window's.
+    fb: Option<buffers::Fbo>,
     width: u32,
     height: u32,
+    /// The buffers of the framebuffer the backend stands in for.
+    config: crate::ContextConfig,
+    /// DRAW_BUFFER and READ_BUFFER as given (the driver holds the attachments standing for
+    /// them).
+    draw_buffer: u32,
+    read_buffer: u32,
+    /// The emulated accumulation buffer, bottom-up rows of `accum_size` (buffers.rs).
+    accum: Option<Vec<[i16; 4]>>,
+    accum_size: (u32, u32),
+    /// The selection and feedback buffers the driver writes (select.rs).
+    select: select::Buffers,
     /// The backend's own sticky error (a slice too short), merged with the driver's flag.
     error: u32,
     /// A Begin is open (mirrors the front end's Begin/End phase, GL 2.1 §2.6.3).
@@ -74,10 +93,19 @@ pub struct GlBackend {
     max_get_values: usize,
     renderer: String,
     version: String,
-    egl: egl::EglContext,
+    platform: Platform,
     _not_send: PhantomData<*const ()>,
     // The shadow array state; the driver's client pointers point into it.
     arrays: crate::arrays::ArrayState,
+}
+
+/// How the backend reaches the driver.
+#[derive(Debug)]
+enum Platform {
+    /// An EGL device (surfaceless; the backend draws into its FBO).
+    Egl(egl::EglContext),
+    /// OSMesa, with its own single-buffered framebuffer (and accumulation buffer).
+    OsMesa(osmesa::OsMesaContext, DeviceInfo),
 }
 
 impl std::fmt::Debug for GlBackend {
@@ -86,7 +114,7 @@ impl std::fmt::Debug for GlBackend {
             .field("size", &(self.width, self.height))
             .field("renderer", &self.renderer)
             .field("version", &self.version)
-            .field("device", &self.egl.device)
+            .field("device", self.device())
             .finish_non_exhaustive()
     }
 }
@@ -101,6 +129,19 @@ impl GlBackend {
     /// Errors: no libEGL, no EGL device, no compatibility context, an incomplete FBO — each
     /// message says which, and what to install.
     pub fn new(width: u32, height: u32, choice: &DeviceChoice) -> Result<GlBackend, Error> {
+        Self::with_config(width, height, choice, crate::ContextConfig::default())
+    }
+
+    /// [`GlBackend::new`] standing in for a framebuffer with the buffers `config` names, as
+    /// `Context::with_config` makes it: a back buffer (colour attachment 0, with the front one
+    /// attachment 1), depth and stencil attachments as configured, and an emulated
+    /// accumulation buffer (see `buffers.rs`).
+    pub fn with_config(
+        width: u32,
+        height: u32,
+        choice: &DeviceChoice,
+        config: crate::ContextConfig,
+    ) -> Result<GlBackend, Error> {
         if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
             return Err(Error::InvalidSize { width, height });
         }
@@ -109,65 +150,116 @@ impl GlBackend {
         // constructor fail below, none of ours is).
         CURRENT.with(|c| c.set(0));
         use glutin::display::GlDisplay;
-        let display = &egl.display;
+        let display = egl.display.clone();
         let load = |name: &str| match CString::new(name) {
             Ok(c) => display.get_proc_address(&c),
             Err(_) => std::ptr::null(),
         };
+        Self::start(Platform::Egl(egl), &load, width, height, config)
+    }
+
+    /// A backend on Mesa's OSMesa (llvmpipe drawing into memory) instead of an EGL device:
+    /// the context's own framebuffer is the window's, with the depth, stencil and accumulation
+    /// buffers `config` names, so Accum runs Mesa's own accumulation code (an EGL backend
+    /// emulates it). OSMesa has no back buffer: a double-buffered `config` is an
+    /// `Error::Backend`, as is a machine without libOSMesa (the message says what to install).
+    pub fn osmesa(
+        width: u32,
+        height: u32,
+        config: crate::ContextConfig,
+    ) -> Result<GlBackend, Error> {
+        if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
+            return Err(Error::InvalidSize { width, height });
+        }
+        if config.double_buffered {
+            return Err(Error::Backend(
+                "OSMesa's framebuffer has no back buffer (a double-buffered config needs EGL)"
+                    .into(),
+            ));
+        }
+        let bits = |on: bool, n: i32| if on { n } else { 0 };
+        let ctx = osmesa::OsMesaContext::new(
+            width,
+            height,
+            bits(config.depth, 24),
+            bits(config.stencil, 8),
+            bits(config.accum, 16),
+        )?;
+        CURRENT.with(|c| c.set(0));
+        OSMESA_SINCE_EGL.with(|f| f.set(true));
+        let info = DeviceInfo {
+            index: usize::MAX,
+            name: "OSMesa".into(),
+            vendor: "Mesa".into(),
+            extensions: Vec::new(),
+            software: true,
+        };
+        // A copy of OSMesa's lookup function: the library stays loaded inside the platform.
+        let load = ctx.loader();
+        let platform = Platform::OsMesa(ctx, info);
+        Self::start(platform, &load, width, height, config)
+    }
+
+    /// The common part of the constructors: entry points through `load`, the FBO on EGL, the
+    /// window's initial state.
+    fn start(
+        platform: Platform,
+        load: &dyn Fn(&str) -> *const std::ffi::c_void,
+        width: u32,
+        height: u32,
+        config: crate::ContextConfig,
+    ) -> Result<GlBackend, Error> {
+        let device = match &platform {
+            Platform::Egl(e) => e.device.to_string(),
+            Platform::OsMesa(..) => "OSMesa".to_string(),
+        };
         let raw = raw::Gl::load_with(load);
         if !raw.Begin.is_loaded() || !raw.Lightfv.is_loaded() {
             return Err(Error::Backend(format!(
-                "the driver on {} exports no fixed-function entry points (glBegin, glLightfv)",
-                egl.device
+                "the driver on {device} exports no fixed-function entry points (glBegin, glLightfv)"
             )));
         }
         // SAFETY: the context is current on this thread and the loader resolves its entry points.
-        let glow =
-            unsafe { glow::Context::from_loader_function_cstr(|c| display.get_proc_address(c)) };
-        // SAFETY: context current; sizes validated above; every object is created here.
-        let (fbo, renderbuffers, renderer, version, max_get_values) = unsafe {
+        let glow = unsafe { glow::Context::from_loader_function(|name| load(name)) };
+        let on_fbo = matches!(platform, Platform::Egl(_));
+        // SAFETY: context current; sizes validated by the callers; every object is created here.
+        let (fb, renderer, version, max_get_values) = unsafe {
             let renderer = glow.get_parameter_string(glow::RENDERER);
             let version = glow.get_parameter_string(glow::VERSION);
-            let fbo = glow.create_framebuffer().map_err(Error::Backend)?;
-            let colour = glow.create_renderbuffer().map_err(Error::Backend)?;
-            let depth = glow.create_renderbuffer().map_err(Error::Backend)?;
             let (w, h) = (width as i32, height as i32);
-            glow.bind_renderbuffer(glow::RENDERBUFFER, Some(colour));
-            glow.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
-            glow.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
-            glow.renderbuffer_storage(glow::RENDERBUFFER, glow::DEPTH24_STENCIL8, w, h);
-            glow.bind_renderbuffer(glow::RENDERBUFFER, None);
-            glow.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-            glow.framebuffer_renderbuffer(
-                glow::FRAMEBUFFER,
-                glow::COLOR_ATTACHMENT0,
-                glow::RENDERBUFFER,
-                Some(colour),
-            );
-            glow.framebuffer_renderbuffer(
-                glow::FRAMEBUFFER,
-                glow::DEPTH_STENCIL_ATTACHMENT,
-                glow::RENDERBUFFER,
-                Some(depth),
-            );
-            let status = glow.check_framebuffer_status(glow::FRAMEBUFFER);
-            if status != glow::FRAMEBUFFER_COMPLETE {
-                return Err(Error::Backend(format!(
-                    "the RGBA8 + DEPTH24_STENCIL8 framebuffer is incomplete (status {status:#x}) \
-                     on {renderer}"
-                )));
-            }
+            let fb = if on_fbo {
+                let fb = buffers::Fbo::new(&glow, width, height, &config)
+                    .map_err(|e| Error::Backend(format!("{e} on {renderer}")))?;
+                // Drawing and reading start on the default buffer (attachment 0), as
+                // DRAW_BUFFER and READ_BUFFER start at BACK or FRONT.
+                glow.draw_buffers(&[glow::COLOR_ATTACHMENT0]);
+                glow.read_buffer(glow::COLOR_ATTACHMENT0);
+                Some(fb)
+            } else {
+                None
+            };
             // A window's initial viewport and scissor box are its size (GL 2.1 §2.11.1, §4.1.2);
             // a surfaceless context starts at 0x0.
             glow.viewport(0, 0, w, h);
             glow.scissor(0, 0, w, h);
             glow.clear_color(0.0, 0.0, 0.0, 0.0);
+            if on_fbo && config.double_buffered {
+                glow.draw_buffers(&[glow::COLOR_ATTACHMENT0, glow::COLOR_ATTACHMENT1]);
+            }
             glow.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT);
+            if on_fbo {
+                glow.draw_buffers(&[glow::COLOR_ATTACHMENT0]);
+            }
             let formats = glow.get_parameter_i32(glow::NUM_COMPRESSED_TEXTURE_FORMATS);
             let max_get = (formats.max(0) as usize).clamp(16, 4096);
             // Setup leaves no error behind: the stream starts with a clear flag.
             while glow.get_error() != glow::NO_ERROR {}
-            (fbo, [colour, depth], renderer, version, max_get)
+            (fb, renderer, version, max_get)
+        };
+        let buffer = if config.double_buffered {
+            gl::BACK
+        } else {
+            gl::FRONT
         };
         let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
         CURRENT.with(|c| c.set(id));
@@ -175,10 +267,16 @@ impl GlBackend {
             id,
             raw,
             glow,
-            fbo,
-            renderbuffers,
+            fb,
             width,
             height,
+            config,
+            draw_buffer: buffer,
+            read_buffer: buffer,
+            // Emulated on an FBO only: OSMesa's framebuffer has the driver's own.
+            accum: (config.accum && on_fbo).then(|| vec![[0; 4]; width as usize * height as usize]),
+            accum_size: (width, height),
+            select: select::Buffers::default(),
             error: gl::NO_ERROR,
             inside_begin_end: false,
             phong: false,
@@ -188,7 +286,7 @@ impl GlBackend {
             max_get_values,
             renderer,
             version,
-            egl,
+            platform,
             _not_send: PhantomData,
             arrays: crate::arrays::ArrayState::default(),
         })
@@ -202,9 +300,24 @@ impl GlBackend {
     /// Makes this backend's context current on the calling thread if another one is.
     pub(crate) fn make_current(&self) {
         if CURRENT.with(Cell::get) != self.id {
-            match self.egl.context.make_current_surfaceless() {
-                Ok(()) => CURRENT.with(|c| c.set(self.id)),
-                Err(e) => eprintln!("fixedgl: eglMakeCurrent failed: {e}"),
+            match &self.platform {
+                Platform::Egl(egl) => {
+                    if OSMESA_SINCE_EGL.with(|f| f.replace(false)) {
+                        use glutin::context::PossiblyCurrentGlContext as _;
+                        let _ = egl.context.make_not_current_in_place();
+                    }
+                    match egl.context.make_current_surfaceless() {
+                        Ok(()) => CURRENT.with(|c| c.set(self.id)),
+                        Err(e) => eprintln!("fixedgl: eglMakeCurrent failed: {e}"),
+                    }
+                }
+                Platform::OsMesa(ctx, _) => {
+                    OSMESA_SINCE_EGL.with(|f| f.set(true));
+                    match ctx.make_current() {
+                        true => CURRENT.with(|c| c.set(self.id)),
+                        false => eprintln!("fixedgl: OSMesaMakeCurrent failed"),
+                    }
+                }
             }
         }
     }
@@ -221,7 +334,10 @@ impl GlBackend {
 
     /// The EGL device the backend runs on.
     pub fn device(&self) -> &DeviceInfo {
-        &self.egl.device
+        match &self.platform {
+            Platform::Egl(egl) => &egl.device,
+            Platform::OsMesa(_, info) => info,
+        }
     }
 
     /// The generated driver entry points, for calling the driver directly (each is itself
@@ -301,7 +417,9 @@ impl GlBackend {
 
     /// `glGetFloatv`: writes the pname's values to the front of `out`. An `out` shorter than the
     /// pname's value count is INVALID_VALUE with nothing written (as the CPU front end).
-    /// SHADE_MODEL reports PHONG_WIN while it is emulated.
+    /// SHADE_MODEL reports PHONG_WIN while it is emulated; DRAW_BUFFER, READ_BUFFER,
+    /// DOUBLEBUFFER and ACCUM_*_BITS report the framebuffer the backend stands in for
+    /// (`buffers.rs`), not its FBO.
     pub fn get_floatv(&mut self, pname: u32, out: &mut [f32]) {
         let sentinels = [f32::from_bits(0x7fc1_2345), f32::from_bits(0x7fd5_4321)];
         let written = self.get_into(pname, out, sentinels, f32::to_bits, |gl, p, v| {
@@ -314,6 +432,9 @@ impl GlBackend {
             out.first_mut(),
         ) {
             *first = gl::PHONG_WIN as f32;
+        }
+        if let (true, Some(v), Some(first)) = (written, self.winsys_value(pname), out.first_mut()) {
+            *first = v as f32;
         }
     }
 
@@ -334,6 +455,9 @@ impl GlBackend {
         ) {
             *first = gl::PHONG_WIN as i32;
         }
+        if let (true, Some(v), Some(first)) = (written, self.winsys_value(pname), out.first_mut()) {
+            *first = v as i32;
+        }
     }
 
     /// `glGetBooleanv` (slice rule as [`GlBackend::get_floatv`]).
@@ -351,6 +475,9 @@ impl GlBackend {
             for (o, b) in out.iter_mut().zip(&bytes) {
                 *o = *b != 0;
             }
+        }
+        if let (true, Some(v), Some(first)) = (written, self.winsys_value(pname), out.first_mut()) {
+            *first = v != 0.0;
         }
     }
 
@@ -426,7 +553,8 @@ impl GlBackend {
     }
 
     /// The colour buffer as an image with the top row first (glReadPixels returns rows bottom-up,
-    /// GL 2.1 §4.3.2). Reads from the FBO with the pack modes at their initial values except
+    /// GL 2.1 §4.3.2): the default one (the back buffer when double-buffered), as
+    /// `Context::to_image`. Reads from the FBO with the pack modes at their initial values except
     /// PACK_ALIGNMENT 1 (whatever PACK_ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS or SWAP_BYTES the
     /// recorded calls set, which would shift the image or write past `pixels`), then restores
     /// them.
@@ -451,7 +579,13 @@ impl GlBackend {
                 self.glow.pixel_store_i32(pname, v);
             }
             self.glow
-                .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
+                .bind_framebuffer(glow::READ_FRAMEBUFFER, self.fb.as_ref().map(|f| f.fbo));
+            // The default buffer, whatever READ_BUFFER the calls chose (restored below).
+            let read = self.glow.get_parameter_i32(glow::READ_BUFFER);
+            self.glow.read_buffer(match self.fb {
+                Some(_) => glow::COLOR_ATTACHMENT0,
+                None => glow::FRONT,
+            });
             self.glow.read_pixels(
                 0,
                 0,
@@ -461,6 +595,7 @@ impl GlBackend {
                 glow::UNSIGNED_BYTE,
                 glow::PixelPackData::Slice(Some(&mut pixels)),
             );
+            self.glow.read_buffer(read as u32);
             for ((pname, _), v) in RESET.iter().zip(saved) {
                 self.glow.pixel_store_i32(*pname, v);
             }
@@ -536,20 +671,25 @@ impl Drop for GlBackend {
         self.make_current();
         // SAFETY: the objects were created on this context, which is still current here.
         unsafe {
+            // llvmpipe's rasteriser threads may still be drawing a scene that counts into an
+            // occlusion query; destroying the context frees the query under them (a
+            // use-after-free valgrind shows in Mesa 22.3). Finish first: nothing is in flight.
+            self.raw.Finish();
             if let Some(p) = &self.phong_program {
                 p.delete(&self.glow);
             }
             self.glow.bind_framebuffer(glow::FRAMEBUFFER, None);
-            self.glow.delete_framebuffer(self.fbo);
-            for rb in self.renderbuffers {
-                self.glow.delete_renderbuffer(rb);
+            if let Some(fb) = &self.fb {
+                fb.delete(&self.glow);
             }
         }
         // Released from this thread, so that dropping the context destroys it now: EGL defers
         // destroying a context that is still current, and a thread that ends without releasing
         // it (every test thread) would leak it with its driver resources.
         use glutin::context::PossiblyCurrentGlContext as _;
-        let _ = self.egl.context.make_not_current_in_place();
+        if let Platform::Egl(egl) = &self.platform {
+            let _ = egl.context.make_not_current_in_place();
+        }
         CURRENT.with(|c| c.set(0));
     }
 }
@@ -562,8 +702,10 @@ impl GlBackend {
     pub fn replay_frame(&mut self, calls: &[Call]) {
         self.make_current();
         let phong = self.phong;
-        // The client array state PopClientAttrib restores, for the shadow.
+        // The client array state PopClientAttrib restores, for the shadow, and the draw and
+        // read buffers PopAttrib restores on the driver.
         let saved_arrays = self.arrays.clone();
+        let saved_buffers = (self.draw_buffer, self.read_buffer);
         // SAFETY: context current; no pointers.
         unsafe {
             self.raw.PushAttrib(gl::ALL_ATTRIB_BITS);
@@ -587,6 +729,7 @@ impl GlBackend {
             self.raw.PopAttrib();
         }
         self.restore_client_arrays(saved_arrays);
+        (self.draw_buffer, self.read_buffer) = saved_buffers;
         if !phong && self.phong {
             self.phong = false;
             // SAFETY: context current.

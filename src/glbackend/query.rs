@@ -26,7 +26,11 @@ impl GlBackend {
             return self.raise(gl::INVALID_VALUE);
         }
         // SAFETY: the context is current (see `execute`); `names` holds at least `n` names
-        // (or `n` is not positive and the driver reads none).
-        unsafe { self.raw.DeleteQueries(n, names.as_ptr()) };
+        // (or `n` is not positive and the driver reads none). Finish first: llvmpipe frees a
+        // deleted query even while its rasteriser threads still count into it (see `Drop`).
+        unsafe {
+            self.raw.Finish();
+            self.raw.DeleteQueries(n, names.as_ptr());
+        }
     }
 }

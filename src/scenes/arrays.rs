@@ -25,6 +25,7 @@ pub const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: rect_wire,
+        animate: None,
     },
     Scene {
         name: "cube-colors",
@@ -33,6 +34,7 @@ pub const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: cube_colors,
+        animate: Some(cube_colors_at),
     },
 ];
 
@@ -125,6 +127,12 @@ pub const CUBE_INDICES: [u32; 36] = [
 
 /// `cube-colors`: the coloured cube of "Exemplo: Cubo".
 pub fn cube_colors(gl: &mut Context) {
+    cube_colors_at(gl, 0.0);
+}
+
+/// `cube-colors` at `t` seconds: the cube turns 40 degrees a second about its y axis (`t = 0` is
+/// the still scene).
+pub fn cube_colors_at(gl: &mut Context, t: f32) {
     let (w, h) = gl.size();
     gl.clear_color(0.0, 0.1, 0.1, 1.0);
     gl.enable(gl::DEPTH_TEST);
@@ -162,6 +170,6 @@ pub fn cube_colors(gl: &mut Context) {
     glu::look_at(gl, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
     gl.scalef(1.1, 1.1, 1.1);
     gl.rotatef(-45.0, 1.0, 0.0, 0.0);
-    gl.rotatef(-45.0, 0.0, 1.0, 0.0);
+    gl.rotatef(-45.0 - 40.0 * t, 0.0, 1.0, 0.0);
     gl.draw_elements(gl::TRIANGLES, 36, gl::UNSIGNED_INT, 0usize);
 }

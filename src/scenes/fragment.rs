@@ -384,6 +384,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: fog,
+        animate: None,
     },
     Scene {
         name: "blending",
@@ -391,6 +392,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: blending,
+        animate: None,
     },
     Scene {
         name: "planar-shadow",
@@ -398,6 +400,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: planar_shadow,
+        animate: None,
     },
     Scene {
         name: "planar-reflection",
@@ -405,6 +408,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: planar_reflection,
+        animate: None,
     },
 ];
 

@@ -195,6 +195,21 @@ pub fn draw(gl: &mut Context, size: usize, shading: Shading) {
     display(gl, size, shading);
 }
 
+/// How fast the animated scenes turn the surface: degrees a second about the y axis.
+pub const DEGREES_PER_SECOND: f32 = 30.0;
+
+/// The frame at `t` seconds for `fixedgl view`: the surface turned `DEGREES_PER_SECOND · t` about
+/// its vertical axis under the fixed light and camera (the rotation goes after `init`'s lookAt and
+/// light position, so only the model turns). At `t = 0` this is [`draw`], call for call.
+pub fn draw_at(gl: &mut Context, size: usize, shading: Shading, t: f32) {
+    init(gl, shading);
+    if t != 0.0 {
+        gl.matrix_mode(MODELVIEW);
+        gl.rotatef(DEGREES_PER_SECOND * t, 0.0, 1.0, 0.0);
+    }
+    display(gl, size, shading);
+}
+
 /// The seed's pictures as registry entries.
 pub(super) const SCENES: [Scene; 4] = [
     Scene {
@@ -203,6 +218,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Flat),
+        animate: Some(|gl, t| draw_at(gl, 40, Shading::Flat, t)),
     },
     Scene {
         name: "gauss-smooth-40",
@@ -210,6 +226,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Smooth),
+        animate: Some(|gl, t| draw_at(gl, 40, Shading::Smooth, t)),
     },
     Scene {
         name: "gauss-smooth-400",
@@ -217,6 +234,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 400, Shading::Smooth),
+        animate: Some(|gl, t| draw_at(gl, 400, Shading::Smooth, t)),
     },
     Scene {
         name: "gauss-phong-40",
@@ -224,6 +242,7 @@ pub(super) const SCENES: [Scene; 4] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Phong),
+        animate: Some(|gl, t| draw_at(gl, 40, Shading::Phong, t)),
     },
 ];
 

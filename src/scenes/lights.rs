@@ -244,6 +244,7 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: materials_scene,
+        animate: None,
     },
     Scene {
         name: "spotlight",
@@ -251,6 +252,7 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| spotlight(gl, [0.0, 0.0, 0.0]),
+        animate: None,
     },
     Scene {
         name: "light-model",
@@ -258,6 +260,7 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: light_model,
+        animate: None,
     },
     Scene {
         name: "two-side",
@@ -265,6 +268,7 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: two_side,
+        animate: None,
     },
     Scene {
         name: "emission",
@@ -272,6 +276,7 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: emission,
+        animate: None,
     },
     Scene {
         name: "eight-lights",
@@ -279,5 +284,6 @@ pub(super) const SCENES: [Scene; 6] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: eight_lights,
+        animate: None,
     },
 ];

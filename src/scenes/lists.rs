@@ -19,6 +19,7 @@ pub const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: display_list,
+        animate: Some(display_list_at),
     },
     Scene {
         name: "glut-shapes",
@@ -26,6 +27,7 @@ pub const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: glut_shapes,
+        animate: Some(glut_shapes_at),
     },
 ];
 
@@ -76,7 +78,16 @@ const COLOURS: [[f32; 3]; 8] = [
 /// list 20 draws the ring with ListBase(11) and CallLists(UNSIGNED_BYTE, 0..8). Calling list 20
 /// twice, the second time scaled down and raised, shows that the lists replay whole.
 fn display_list(gl: &mut Context) {
+    display_list_at(gl, 0.0);
+}
+
+/// `display-list` at `t` seconds: the whole picture turns 25 degrees a second about the vertical
+/// axis under the fixed lights (`t = 0` is the still scene).
+fn display_list_at(gl: &mut Context, t: f32) {
     setup(gl);
+    if t != 0.0 {
+        gl.rotatef(25.0 * t, 0.0, 1.0, 0.0);
+    }
     let shapes = gl.gen_lists(5);
     gl.new_list(shapes, COMPILE);
     glut::solid_sphere(gl, 0.6, 24, 16);
@@ -127,13 +138,19 @@ fn display_list(gl: &mut Context) {
 /// `glut-shapes`: the five solids in a row of three and a row of two, each turned to show its
 /// sides.
 fn glut_shapes(gl: &mut Context) {
+    glut_shapes_at(gl, 0.0);
+}
+
+/// `glut-shapes` at `t` seconds: each solid spins 45 degrees a second about its own vertical axis
+/// (`t = 0` is the still scene).
+fn glut_shapes_at(gl: &mut Context, t: f32) {
     setup(gl);
     let place = |gl: &mut Context, x: f32, y: f32| {
         gl.load_identity();
         glu::look_at(gl, 0.0, 0.0, 9.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
         gl.translatef(x, y, 0.0);
         gl.rotatef(25.0, 1.0, 0.0, 0.0);
-        gl.rotatef(-30.0, 0.0, 1.0, 0.0);
+        gl.rotatef(-30.0 - 45.0 * t, 0.0, 1.0, 0.0);
     };
     place(gl, -2.3, 1.2);
     material(gl, COLOURS[0]);

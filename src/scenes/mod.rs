@@ -27,6 +27,8 @@ pub mod texture;
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
 pub mod quadrics;
+// Selection: scenes/picking.rs
+pub mod picking;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -56,6 +58,9 @@ pub struct Scene {
     pub default_size: (u32, u32),
     /// Makes the scene's GL calls on a fresh context of the chosen size.
     pub draw: fn(&mut Context),
+    /// For a scene that moves: its calls at `t` seconds into the animation (`fixedgl view`).
+    /// At `t = 0` it makes exactly the calls of `draw`, so the still image is frame 0.
+    pub animate: Option<fn(&mut Context, f32)>,
 }
 
 impl Scene {
@@ -65,6 +70,28 @@ impl Scene {
         let mut ctx = Context::new(width, height)?;
         ctx.start_recording();
         (self.draw)(&mut ctx);
+        let calls = ctx.stop_recording();
+        Ok((ctx, calls))
+    }
+
+    /// Makes the scene's calls at `t` seconds into its animation (`draw` for a still scene).
+    pub fn draw_at(&self, gl: &mut Context, t: f32) {
+        match self.animate {
+            Some(animate) => animate(gl, t),
+            None => (self.draw)(gl),
+        }
+    }
+
+    /// Like [`Scene::record`], at `t` seconds into the animation.
+    pub fn record_at(
+        &self,
+        width: u32,
+        height: u32,
+        t: f32,
+    ) -> Result<(Context, Vec<Call>), Error> {
+        let mut ctx = Context::new(width, height)?;
+        ctx.start_recording();
+        self.draw_at(&mut ctx, t);
         let calls = ctx.stop_recording();
         Ok((ctx, calls))
     }
@@ -81,6 +108,7 @@ static SCENES: &[Scene] = &[
         },
         default_size: (256, 256),
         draw: triangle,
+        animate: None,
     },
     gaussian::SCENES[0],
     gaussian::SCENES[1],
@@ -112,6 +140,7 @@ static SCENES: &[Scene] = &[
     projective::SCENES[1],
     stipple::SCENES[0],
     quadrics::SCENES[0],
+    picking::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
@@ -160,5 +189,30 @@ mod tests {
         assert_eq!(calls.first(), Some(&Call::Begin(gl::TRIANGLES)));
         assert_eq!(calls.get(2), Some(&Call::Vertex3f(-0.8, -0.8, 0.0)));
         assert_eq!(calls.last(), Some(&Call::End));
+    }
+
+    /// An animated scene's frame 0 is its still image call for call (so the registered pictures
+    /// do not change), and later frames differ from it (so it does move). Drawn at 64x64 to be
+    /// quick; the 400-cell surface makes the same calls as the 40-cell one but ten times more.
+    #[test]
+    fn animated_scenes_start_at_their_still_image_and_move() {
+        let animated: Vec<&Scene> = scenes()
+            .iter()
+            .filter(|s| s.animate.is_some() && s.name != "gauss-smooth-400")
+            .collect();
+        assert!(animated.len() >= 6, "{}", animated.len());
+        for s in animated {
+            let (mut still, still_calls) = s.record(64, 64).unwrap();
+            let (mut zero, zero_calls) = s.record_at(64, 64, 0.0).unwrap();
+            assert!(
+                still_calls == zero_calls,
+                "{}: frame 0 is not the still scene",
+                s.name
+            );
+            assert_eq!(still.to_image(), zero.to_image(), "{}", s.name);
+            let (mut later, later_calls) = s.record_at(64, 64, 1.5).unwrap();
+            assert!(later_calls != still_calls, "{}: no motion", s.name);
+            assert_ne!(later.to_image(), still.to_image(), "{}: no motion", s.name);
+        }
     }
 }

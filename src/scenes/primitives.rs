@@ -148,6 +148,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| primitives(gl, SMOOTH),
+        animate: None,
     },
     Scene {
         name: "primitives-flat",
@@ -156,6 +157,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| primitives(gl, FLAT),
+        animate: None,
     },
 ];
 

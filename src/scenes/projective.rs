@@ -31,6 +31,7 @@ pub const SCENES: [Scene; 2] = [
         },
         default_size: (800, 800),
         draw: projective_texture,
+        animate: None,
     },
     Scene {
         name: "shadow-map",
@@ -44,6 +45,7 @@ pub const SCENES: [Scene; 2] = [
         },
         default_size: (800, 800),
         draw: shadow_map,
+        animate: None,
     },
 ];
 

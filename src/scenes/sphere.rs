@@ -107,6 +107,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| sphere_subdivision(gl, &[1, 2, 3, 5], Split::Midpoint),
+        animate: None,
     },
     Scene {
         name: "sphere-param",
@@ -115,6 +116,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| sphere_param(gl, 24, 12),
+        animate: None,
     },
 ];
 

@@ -199,4 +199,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     tolerance: LECTURE,
     default_size: (800, 800),
     draw: stipple,
+    animate: None,
 }];

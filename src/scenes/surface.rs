@@ -89,6 +89,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: |gl| gauss_normalize(gl, 3.0),
+        animate: None,
     },
     Scene {
         name: "vertex-color",
@@ -97,6 +98,7 @@ pub(super) const SCENES: [Scene; 2] = [
         tolerance: LECTURE,
         default_size: (800, 800),
         draw: vertex_color,
+        animate: None,
     },
 ];
 

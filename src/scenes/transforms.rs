@@ -152,6 +152,7 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     tolerance: LECTURE,
     default_size: (800, 800),
     draw: |gl| transforms(gl, &PANELS),
+    animate: None,
 }];
 
 #[cfg(test)]

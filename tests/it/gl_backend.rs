@@ -513,8 +513,8 @@ fn phong_win_local_viewer_and_separate_specular() {
 #[test]
 fn implementation_limits_agree_with_the_cpu_state() {
     // Known divergences, left to the state's owner: llvmpipe reports MAX_CLIP_PLANES 8 (state: 6)
-    // and MAX_TEXTURE_UNITS 8 (state: 4); on the FBO, DRAW_BUFFER/READ_BUFFER are
-    // COLOR_ATTACHMENT0 and DOUBLEBUFFER is false.
+    // and MAX_TEXTURE_UNITS 8 (state: 4). DRAW_BUFFER, READ_BUFFER and DOUBLEBUFFER are those
+    // of the framebuffer the backend's FBO stands for (glbackend/buffers.rs).
     use fixedgl::state;
     let Some(mut gl) = backend(8, 8) else { return };
     for (pname, expected) in [
@@ -537,6 +537,11 @@ fn implementation_limits_agree_with_the_cpu_state() {
         (gl::ALPHA_BITS, 8),
         (gl::DEPTH_BITS, 24),
         (gl::STENCIL_BITS, 8),
+        (gl::DRAW_BUFFER, gl::FRONT as i32),
+        (gl::READ_BUFFER, gl::FRONT as i32),
+        (gl::DOUBLEBUFFER, 0),
+        (gl::ACCUM_RED_BITS, 0),
+        (gl::MAX_NAME_STACK_DEPTH, 64),
     ] {
         let mut v = [0i32; 2];
         gl.get_integerv(pname, &mut v);

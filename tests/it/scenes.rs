@@ -88,6 +88,40 @@ fn every_scene_matches_the_driver_within_its_tolerance() {
     );
 }
 
+/// The frames `fixedgl view` animates are held to the same tolerances: every animated scene, 1.5 s
+/// in, against the driver (the 400-cell surface left out: its calls are the 40-cell one's, ten
+/// times over, and it alone would take longer than all the others).
+#[test]
+fn animated_scenes_match_the_driver_mid_animation() {
+    let mut failures = Vec::new();
+    let animated = scenes::scenes()
+        .iter()
+        .filter(|s| s.animate.is_some() && s.name != "gauss-smooth-400");
+    for scene in animated {
+        let (w, h) = scene.default_size;
+        let (mut ctx, calls) = scene.record_at(w, h, 1.5).unwrap();
+        assert_eq!(ctx.get_error(), gl::NO_ERROR, "{}", scene.name);
+        let Some(mut driver) = backend(w, h) else {
+            return;
+        };
+        driver.replay(&calls);
+        let cmp = compare(
+            &ctx.to_image(),
+            &driver.read_image(),
+            scene.tolerance.channel,
+        );
+        let line = format!(
+            "{} at 1.5 s: {:.4}% off by more than {} (allowed {}%)",
+            scene.name, cmp.differing_percent, scene.tolerance.channel, scene.tolerance.max_percent
+        );
+        let _ = writeln!(std::io::stderr(), "{line}");
+        if !cmp.passes(scene.tolerance.max_percent) {
+            failures.push(line);
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// gluLookAt as the GLU 1.3 specification defines it: f = normalize(center - eye),
 /// s = normalize(f × up), u = s × f, M = [s; u; -f] (rows), followed by a translation by -eye.
 /// Written here independently of `fixedgl::glu`, returning the column-major matrix.

@@ -1220,6 +1220,7 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
         State {
             width,
             height,
+            config,
             current,
             matrix_mode,
             modelview,
@@ -1252,6 +1253,10 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             clear_color,
             clear_depth,
             clear_stencil,
+            draw_buffer,
+            read_buffer,
+            accum_clear,
+            render_mode,
             unpack,
             pack,
             hints,

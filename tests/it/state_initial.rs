@@ -215,6 +215,17 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(INDEX_MODE, B(&[false])),
     row!(DOUBLEBUFFER, B(&[false])),
     row!(STEREO, B(&[false])),
+    // Tables 6.22, 6.26, 6.31: buffers, render mode, selection and feedback.
+    row!(DRAW_BUFFER, I(&[gl::FRONT as i32])),
+    row!(READ_BUFFER, I(&[gl::FRONT as i32])),
+    row!(ACCUM_CLEAR_VALUE, F(&[0.0, 0.0, 0.0, 0.0])),
+    row!(ACCUM_CLEAR_VALUE, I(&[0, 0, 0, 0])),
+    row!(RENDER_MODE, I(&[gl::RENDER as i32])),
+    row!(NAME_STACK_DEPTH, I(&[0])),
+    row!(MAX_NAME_STACK_DEPTH, I(&[64])),
+    row!(SELECTION_BUFFER_SIZE, I(&[0])),
+    row!(FEEDBACK_BUFFER_SIZE, I(&[0])),
+    row!(FEEDBACK_BUFFER_TYPE, I(&[gl::GL_2D as i32])),
     row!(ALIASED_POINT_SIZE_RANGE, F(&[1.0, 255.0])),
     row!(SMOOTH_POINT_SIZE_RANGE, F(&[1.0, 255.0])),
     row!(POINT_SIZE_RANGE, I(&[1, 255])),
@@ -578,4 +589,38 @@ fn there_are_at_least_150_rows() {
         + ENABLE_ROWS.len()
         + UNIT_ENABLE_ROWS.len() * 4;
     assert!(rows >= 150, "{rows}");
+}
+
+#[test]
+fn configured_framebuffers_report_their_buffers() {
+    let config = fixedgl::ContextConfig {
+        double_buffered: true,
+        depth: false,
+        stencil: true,
+        accum: true,
+    };
+    let mut c = Context::with_config(16, 16, config).expect("context");
+    for (name, pname, want) in [
+        row!(DOUBLEBUFFER, B(&[true])),
+        row!(DRAW_BUFFER, I(&[gl::BACK as i32])),
+        row!(READ_BUFFER, I(&[gl::BACK as i32])),
+        row!(DEPTH_BITS, I(&[0])),
+        row!(STENCIL_BITS, I(&[8])),
+        row!(ACCUM_RED_BITS, I(&[16])),
+        row!(ACCUM_GREEN_BITS, I(&[16])),
+        row!(ACCUM_BLUE_BITS, I(&[16])),
+        row!(ACCUM_ALPHA_BITS, I(&[16])),
+    ] {
+        check_row(&mut c, name, pname, &want);
+    }
+    assert_eq!(c.config(), config);
+    // reset keeps the configuration.
+    c.draw_buffer(gl::FRONT);
+    c.reset();
+    check_row(
+        &mut c,
+        "DRAW_BUFFER",
+        gl::DRAW_BUFFER,
+        &I(&[gl::BACK as i32]),
+    );
 }

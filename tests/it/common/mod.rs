@@ -23,6 +23,45 @@ pub fn test_backend(width: u32, height: u32) -> Option<fixedgl::glbackend::GlBac
     }
 }
 
+/// [`test_backend`] standing in for a framebuffer with the buffers `config` names.
+#[cfg(feature = "gl")]
+pub fn test_backend_with(
+    width: u32,
+    height: u32,
+    config: fixedgl::ContextConfig,
+) -> Option<fixedgl::glbackend::GlBackend> {
+    use fixedgl::glbackend::{DeviceChoice, GlBackend};
+    use std::io::Write as _;
+    match GlBackend::with_config(width, height, &DeviceChoice::Auto, config) {
+        Ok(b) => Some(b),
+        Err(e) if std::env::var_os("FIXEDGL_REQUIRE_GL").is_some() => {
+            panic!("FIXEDGL_REQUIRE_GL is set but the GL backend cannot start: {e}")
+        }
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "SKIPPED: GL backend unavailable: {e}");
+            None
+        }
+    }
+}
+
+/// A backend on OSMesa (llvmpipe with a window framebuffer of its own, accumulation buffer
+/// included), or `None` after printing `SKIPPED: ...` where libOSMesa is missing.
+#[cfg(feature = "gl")]
+pub fn osmesa_backend(
+    width: u32,
+    height: u32,
+    config: fixedgl::ContextConfig,
+) -> Option<fixedgl::glbackend::GlBackend> {
+    use std::io::Write as _;
+    match fixedgl::glbackend::GlBackend::osmesa(width, height, config) {
+        Ok(b) => Some(b),
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "SKIPPED: OSMesa unavailable: {e}");
+            None
+        }
+    }
+}
+
 /// Enums worth drawing often: every value the set-side entry points accept, and near misses.
 pub const ENUMS: &[u32] = &[
     gl::POINTS,

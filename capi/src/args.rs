@@ -1,0 +1,318 @@
+//! The pointer arguments of the generated entry points: array pointers (read at draw time),
+//! index and buffer data (copied at the call, as GL reads them then), and pixel rectangles
+//! (sized from format, type and the unpack modes). One function per command, named after its
+//! `Context` method, taking the C arguments as they are.
+
+use std::ffi::c_void;
+use std::sync::Arc;
+
+use fixedgl::arrays::{ClientMemory, ClientPointer};
+use fixedgl::pixel_store::PixelModes;
+use fixedgl::{gl, Pointer};
+
+use crate::current::Gl;
+use crate::read;
+
+/// A C program's array memory, read when a draw happens.
+struct RawMemory(usize);
+
+impl ClientMemory for RawMemory {
+    fn address(&self) -> usize {
+        self.0
+    }
+
+    fn read(&self, len: usize) -> &[u8] {
+        // SAFETY: GL's contract: the program keeps the array memory valid, holding what its
+        // draws read, while the pointer is in use; NULL reads as nothing (the draw is then
+        // INVALID_OPERATION).
+        unsafe { read::bytes(self.0 as *const c_void, len) }
+    }
+}
+
+/// An array pointer: an offset into the buffer bound to ARRAY_BUFFER, or the program's memory,
+/// read at each draw.
+fn array(gl: &Gl, pointer: *const c_void) -> Pointer {
+    if gl.ctx.state().arrays.array_buffer != 0 {
+        Pointer::Offset(pointer as usize)
+    } else {
+        Pointer::Client(Box::new(ClientPointer::new(Arc::new(RawMemory(
+            pointer as usize,
+        )))))
+    }
+}
+
+/// Data read at the call: `len` bytes (none for NULL, which the command answers).
+unsafe fn data(pointer: *const c_void, len: usize) -> Pointer {
+    // SAFETY: the caller's promise that `len` bytes are there.
+    Pointer::Data(unsafe { read::bytes(pointer, len) }.to_vec())
+}
+
+pub fn vertex_pointer(
+    gl: &mut Gl,
+    _size: i32,
+    _ty: u32,
+    _stride: i32,
+    p: *const c_void,
+) -> Pointer {
+    array(gl, p)
+}
+
+pub fn normal_pointer(gl: &mut Gl, _ty: u32, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
+pub fn color_pointer(gl: &mut Gl, _size: i32, _ty: u32, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
+pub fn secondary_color_pointer(
+    gl: &mut Gl,
+    _size: i32,
+    _ty: u32,
+    _stride: i32,
+    p: *const c_void,
+) -> Pointer {
+    array(gl, p)
+}
+
+pub fn tex_coord_pointer(
+    gl: &mut Gl,
+    _size: i32,
+    _ty: u32,
+    _stride: i32,
+    p: *const c_void,
+) -> Pointer {
+    array(gl, p)
+}
+
+pub fn fog_coord_pointer(gl: &mut Gl, _ty: u32, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
+pub fn edge_flag_pointer(gl: &mut Gl, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
+pub fn interleaved_arrays(gl: &mut Gl, _format: u32, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
+/// Bytes per index of a DrawElements type (0: not one, which the command answers).
+fn index_size(ty: u32) -> usize {
+    match ty {
+        gl::UNSIGNED_BYTE => 1,
+        gl::UNSIGNED_SHORT => 2,
+        gl::UNSIGNED_INT => 4,
+        _ => 0,
+    }
+}
+
+/// Index data: an offset into the ELEMENT_ARRAY_BUFFER, or the `count` indices, read now.
+unsafe fn indices(gl: &Gl, count: i32, ty: u32, p: *const c_void) -> Pointer {
+    if gl.ctx.state().arrays.element_array_buffer != 0 {
+        return Pointer::Offset(p as usize);
+    }
+    let n = usize::try_from(count).unwrap_or(0);
+    // SAFETY: the caller's promise that `count` indices of `ty` are there.
+    unsafe { data(p, n.saturating_mul(index_size(ty))) }
+}
+
+pub unsafe fn draw_elements(
+    gl: &mut Gl,
+    _mode: u32,
+    count: i32,
+    ty: u32,
+    p: *const c_void,
+) -> Pointer {
+    // SAFETY: as `indices`.
+    unsafe { indices(gl, count, ty, p) }
+}
+
+pub unsafe fn draw_range_elements(
+    gl: &mut Gl,
+    _mode: u32,
+    _start: u32,
+    _end: u32,
+    count: i32,
+    ty: u32,
+    p: *const c_void,
+) -> Pointer {
+    // SAFETY: as `indices`.
+    unsafe { indices(gl, count, ty, p) }
+}
+
+pub unsafe fn buffer_data(
+    _gl: &mut Gl,
+    _target: u32,
+    size: isize,
+    p: *const c_void,
+    _usage: u32,
+) -> Pointer {
+    if p.is_null() {
+        return Pointer::NULL;
+    }
+    // SAFETY: the caller's promise that `size` bytes are there.
+    unsafe { data(p, usize::try_from(size).unwrap_or(0)) }
+}
+
+pub unsafe fn buffer_sub_data(
+    _gl: &mut Gl,
+    _target: u32,
+    _offset: isize,
+    size: isize,
+    p: *const c_void,
+) -> Pointer {
+    // SAFETY: the caller's promise that `size` bytes are there.
+    unsafe { data(p, usize::try_from(size).unwrap_or(0)) }
+}
+
+/// CallLists' names: `n` of `ty` (GL 2.1 §5.4 table 5.2).
+pub unsafe fn call_lists(_gl: &mut Gl, n: i32, ty: u32, p: *const c_void) -> Vec<u8> {
+    let size = match ty {
+        gl::BYTE | gl::UNSIGNED_BYTE => 1,
+        gl::SHORT | gl::UNSIGNED_SHORT | gl::GL_2_BYTES => 2,
+        gl::GL_3_BYTES => 3,
+        gl::INT | gl::UNSIGNED_INT | gl::FLOAT | gl::GL_4_BYTES => 4,
+        _ => 0,
+    };
+    let n = usize::try_from(n).unwrap_or(0);
+    // SAFETY: the caller's promise that `n` names of `ty` are there.
+    unsafe { read::bytes(p, n.saturating_mul(size)) }.to_vec()
+}
+
+/// Components per pixel of a client format, and bytes per component of a type, with packed
+/// types as one component of their whole size (GL 2.1 tables 3.5, 3.6, 3.8). `None` for
+/// BITMAP (see [`image_bytes`]) and for what is not a format or type.
+fn element(format: u32, ty: u32) -> Option<(usize, usize)> {
+    let components = match format {
+        gl::COLOR_INDEX | gl::STENCIL_INDEX | gl::DEPTH_COMPONENT => 1,
+        gl::RED | gl::GREEN | gl::BLUE | gl::ALPHA | gl::LUMINANCE => 1,
+        gl::LUMINANCE_ALPHA => 2,
+        gl::RGB | gl::BGR => 3,
+        gl::RGBA | gl::BGRA => 4,
+        _ => return None,
+    };
+    Some(match ty {
+        gl::UNSIGNED_BYTE | gl::BYTE => (components, 1),
+        gl::UNSIGNED_SHORT | gl::SHORT => (components, 2),
+        gl::UNSIGNED_INT | gl::INT | gl::FLOAT => (components, 4),
+        gl::UNSIGNED_BYTE_3_3_2 | gl::UNSIGNED_BYTE_2_3_3_REV => (1, 1),
+        gl::UNSIGNED_SHORT_5_6_5
+        | gl::UNSIGNED_SHORT_5_6_5_REV
+        | gl::UNSIGNED_SHORT_4_4_4_4
+        | gl::UNSIGNED_SHORT_4_4_4_4_REV
+        | gl::UNSIGNED_SHORT_5_5_5_1
+        | gl::UNSIGNED_SHORT_1_5_5_5_REV => (1, 2),
+        gl::UNSIGNED_INT_8_8_8_8
+        | gl::UNSIGNED_INT_8_8_8_8_REV
+        | gl::UNSIGNED_INT_10_10_10_2
+        | gl::UNSIGNED_INT_2_10_10_10_REV => (1, 4),
+        _ => return None,
+    })
+}
+
+/// The bytes a `width` x `height` image of `format`/`ty` spans in client memory under
+/// `modes` (§3.6.4; BITMAP rows are bits, §3.7). 0 when the format or type is not one (the
+/// command answers with its error, before it reads anything).
+pub fn image_bytes(modes: &PixelModes, width: i32, height: i32, format: u32, ty: u32) -> usize {
+    if ty == gl::BITMAP {
+        let (w, h) = (width.max(0) as usize, height.max(0) as usize);
+        if w == 0 || h == 0 {
+            return 0;
+        }
+        let l = if modes.row_length > 0 {
+            modes.row_length as usize
+        } else {
+            w
+        };
+        let a = modes.alignment.clamp(1, 8) as usize;
+        let stride = l.div_ceil(8).next_multiple_of(a);
+        let skip_rows = modes.skip_rows.max(0) as usize;
+        let skip_pixels = modes.skip_pixels.max(0) as usize;
+        return stride
+            .saturating_mul(skip_rows + h - 1)
+            .saturating_add((skip_pixels + w).div_ceil(8));
+    }
+    element(format, ty)
+        .and_then(|(c, s)| modes.layout(width, height, c, s))
+        .map_or(0, |l| l.need)
+}
+
+/// Pixels to unpack: NULL stays NULL (TexImage2D then leaves the image undefined).
+unsafe fn unpack(
+    gl: &Gl,
+    w: i32,
+    h: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    if p.is_null() {
+        return None;
+    }
+    let len = image_bytes(&gl.ctx.state().unpack, w, h, format, ty);
+    // SAFETY: the caller's promise that the image is there, as the unpack modes lay it out.
+    Some(unsafe { read::bytes(p, len) }.to_vec())
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_image_2d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: i32,
+    width: i32,
+    height: i32,
+    _border: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, height, format, ty, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_sub_image_2d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    _y: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Vec<u8> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, height, format, ty, p) }.unwrap_or_default()
+}
+
+/// MultiDrawElements' index arrays: each an offset into the ELEMENT_ARRAY_BUFFER or
+/// `count[i]` indices read now; none for NULL or a negative `drawcount` (the command answers).
+pub unsafe fn multi_draw_elements(
+    gl: &mut Gl,
+    _mode: u32,
+    count: *const i32,
+    ty: u32,
+    indices: *const *const c_void,
+    drawcount: i32,
+) -> Vec<Pointer> {
+    let n = usize::try_from(drawcount).unwrap_or(0);
+    // SAFETY: `drawcount` counts and pointers (the caller's promise).
+    let (counts, pointers) = unsafe { (read::slice(count, n), read::slice(indices, n)) };
+    counts
+        .iter()
+        .zip(pointers)
+        // SAFETY: as `indices`.
+        .map(|(&c, &p)| unsafe { self::indices(gl, c, ty, p) })
+        .collect()
+}
+
+/// PolygonStipple's mask: a 32x32 bitmap as the unpack modes lay it out (GL 2.1 §3.5.6).
+pub unsafe fn polygon_stipple(gl: &mut Gl, p: *const u8) -> Vec<u8> {
+    let len = image_bytes(&gl.ctx.state().unpack, 32, 32, gl::COLOR_INDEX, gl::BITMAP);
+    // SAFETY: the caller's promise that the mask is there, as the unpack modes lay it out.
+    unsafe { read::bytes(p.cast(), len) }.to_vec()
+}

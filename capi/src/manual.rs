@@ -1,0 +1,443 @@
+//! The GL commands that answer through the caller's memory or a return value: queries, object
+//! names, pixel reads, strings, errors; Flush/Finish, which also present single-buffered
+//! drawables; Viewport, where the framebuffer follows a resized window. Written by hand because
+//! each needs the size of what it writes or does more than the command (the generator leaves
+//! every `extern "C" fn gl*` defined here to this file).
+//!
+//! A query first copies the caller's values into a buffer of the size the pname has, runs the
+//! `Context` method on it, and copies it back: on an error nothing changes, as GL requires. NULL
+//! where values are written is handed on as an empty buffer, which the method answers with
+//! INVALID_VALUE (after its enum checks).
+
+use std::ffi::{c_void, CString};
+use std::sync::OnceLock;
+
+use fixedgl::{counts, gl, Context, Pointer};
+
+use crate::args::image_bytes;
+use crate::current::with_gl;
+use crate::read;
+
+/// Runs `f` on a copy of the `n` values at `out` and writes them back.
+unsafe fn through<T: Copy>(out: *mut T, n: usize, f: impl FnOnce(&mut [T])) {
+    // SAFETY: the caller's promise that the pname's `n` values may be written at `out`.
+    let slot = unsafe { read::slice_mut(out, n) };
+    let mut buf = slot.to_vec();
+    f(&mut buf);
+    slot.copy_from_slice(&buf);
+}
+
+/// As `through`, for GLboolean memory and a method taking `bool`s.
+unsafe fn through_bool(out: *mut u8, n: usize, f: impl FnOnce(&mut [bool])) {
+    // SAFETY: as `through`.
+    let slot = unsafe { read::slice_mut(out, n) };
+    let mut buf: Vec<bool> = slot.iter().map(|&b| b != 0).collect();
+    f(&mut buf);
+    for (o, b) in slot.iter_mut().zip(buf) {
+        *o = u8::from(b);
+    }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetBooleanv(pname: u32, data: *mut u8) {
+    with_gl("glGetBooleanv", |gl| {
+        let n = gl.ctx.get_count(pname).unwrap_or(0);
+        // SAFETY: `n` values for this pname.
+        unsafe { through_bool(data, n, |v| gl.ctx.get_booleanv(pname, v)) }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetIntegerv(pname: u32, data: *mut i32) {
+    with_gl("glGetIntegerv", |gl| {
+        let n = gl.ctx.get_count(pname).unwrap_or(0);
+        // SAFETY: `n` values for this pname.
+        unsafe { through(data, n, |v| gl.ctx.get_integerv(pname, v)) }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetFloatv(pname: u32, data: *mut f32) {
+    with_gl("glGetFloatv", |gl| {
+        let n = gl.ctx.get_count(pname).unwrap_or(0);
+        // SAFETY: `n` values for this pname.
+        unsafe { through(data, n, |v| gl.ctx.get_floatv(pname, v)) }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetDoublev(pname: u32, data: *mut f64) {
+    with_gl("glGetDoublev", |gl| {
+        let n = gl.ctx.get_count(pname).unwrap_or(0);
+        // SAFETY: `n` values for this pname.
+        unsafe { through(data, n, |v| gl.ctx.get_doublev(pname, v)) }
+    })
+}
+
+/// The pname-counted getters of one object (`GetLightfv(light, pname, params)` ...).
+macro_rules! getter {
+    ($c:ident, $method:ident, $t:ty, $count:expr) => {
+        #[no_mangle]
+        pub unsafe extern "C" fn $c(first: u32, pname: u32, params: *mut $t) {
+            with_gl(stringify!($c), |gl| {
+                let n: Option<usize> = $count(pname);
+                // SAFETY: the pname's values.
+                unsafe { through(params, n.unwrap_or(0), |v| gl.ctx.$method(first, pname, v)) }
+            })
+        }
+    };
+}
+
+getter!(glGetLightfv, get_lightfv, f32, counts::light);
+getter!(glGetLightiv, get_lightiv, i32, counts::light);
+getter!(glGetMaterialfv, get_materialfv, f32, counts::material);
+getter!(glGetMaterialiv, get_materialiv, i32, counts::material);
+getter!(glGetTexEnvfv, get_tex_envfv, f32, counts::tex_env);
+getter!(glGetTexEnviv, get_tex_enviv, i32, counts::tex_env);
+getter!(glGetTexGenfv, get_tex_genfv, f32, counts::tex_gen);
+getter!(glGetTexGeniv, get_tex_geniv, i32, counts::tex_gen);
+getter!(glGetTexGendv, get_tex_gendv, f64, counts::tex_gen);
+getter!(
+    glGetTexParameterfv,
+    get_tex_parameterfv,
+    f32,
+    counts::tex_parameter
+);
+getter!(
+    glGetTexParameteriv,
+    get_tex_parameteriv,
+    i32,
+    counts::tex_parameter
+);
+getter!(glGetBufferParameteriv, get_buffer_parameteriv, i32, |_| {
+    Some(1)
+});
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameteriv(
+    target: u32,
+    level: i32,
+    pname: u32,
+    params: *mut i32,
+) {
+    with_gl("glGetTexLevelParameteriv", |gl| {
+        // SAFETY: one value.
+        unsafe {
+            through(params, 1, |v| {
+                gl.ctx.get_tex_level_parameteriv(target, level, pname, v)
+            })
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameterfv(
+    target: u32,
+    level: i32,
+    pname: u32,
+    params: *mut f32,
+) {
+    with_gl("glGetTexLevelParameterfv", |gl| {
+        // SAFETY: one value.
+        unsafe {
+            through(params, 1, |v| {
+                gl.ctx.get_tex_level_parameterfv(target, level, pname, v)
+            })
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetClipPlane(plane: u32, equation: *mut f64) {
+    with_gl("glGetClipPlane", |gl| {
+        // SAFETY: four values.
+        let slot = unsafe { read::slice_mut(equation, 4) };
+        let Ok(slot) = <&mut [f64; 4]>::try_from(slot) else {
+            return gl.null_pointer();
+        };
+        let mut v = *slot;
+        gl.ctx.get_clip_plane(plane, &mut v);
+        *slot = v;
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetPointerv(pname: u32, params: *mut *mut c_void) {
+    with_gl("glGetPointerv", |gl| {
+        let p = gl.ctx.get_pointerv(pname);
+        let address = match &p {
+            Pointer::Offset(o) => *o,
+            Pointer::Client(c) => c.address(),
+            Pointer::Data(d) => d.as_ptr() as usize,
+        };
+        // SAFETY: one pointer.
+        if let Some(slot) = unsafe { read::slice_mut(params, 1) }.first_mut() {
+            *slot = address as *mut c_void;
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetBufferSubData(
+    target: u32,
+    offset: isize,
+    size: isize,
+    data: *mut c_void,
+) {
+    with_gl("glGetBufferSubData", |gl| {
+        let n = usize::try_from(size).unwrap_or(0);
+        // SAFETY: `size` bytes.
+        let out = unsafe { read::slice_mut(data.cast::<u8>(), n) };
+        gl.ctx.get_buffer_sub_data(target, offset, size, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glReadPixels(
+    x: i32,
+    y: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    ty: u32,
+    pixels: *mut c_void,
+) {
+    with_gl("glReadPixels", |gl| {
+        let n = image_bytes(&gl.ctx.state().pack, width, height, format, ty);
+        // SAFETY: the image as the pack modes lay it out.
+        let out = unsafe { read::slice_mut(pixels.cast::<u8>(), n) };
+        gl.ctx.read_pixels(x, y, width, height, format, ty, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut u8) {
+    with_gl("glGetPolygonStipple", |gl| {
+        let n = image_bytes(&gl.ctx.state().pack, 32, 32, gl::COLOR_INDEX, gl::BITMAP);
+        // SAFETY: the mask as the pack modes lay it out (GL 2.1 §6.1.5).
+        let out = unsafe { read::slice_mut(mask, n) };
+        gl.ctx.get_polygon_stipple(out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexImage(
+    target: u32,
+    level: i32,
+    format: u32,
+    ty: u32,
+    pixels: *mut c_void,
+) {
+    with_gl("glGetTexImage", |gl| {
+        let (mut w, mut h) = ([0], [0]);
+        let pending = gl.ctx.get_error();
+        gl.ctx
+            .get_tex_level_parameteriv(target, level, gl::TEXTURE_WIDTH, &mut w);
+        gl.ctx
+            .get_tex_level_parameteriv(target, level, gl::TEXTURE_HEIGHT, &mut h);
+        // The size queries' own errors are GetTexImage's to raise, below.
+        let _ = gl.ctx.get_error();
+        if pending != gl::NO_ERROR {
+            gl.ctx.raise_error(pending);
+        }
+        let n = image_bytes(&gl.ctx.state().pack, w[0], h[0], format, ty);
+        // SAFETY: the image as the pack modes lay it out.
+        let out = unsafe { read::slice_mut(pixels.cast::<u8>(), n) };
+        gl.ctx.get_tex_image(target, level, format, ty, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenTextures(n: i32, textures: *mut u32) {
+    with_gl("glGenTextures", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(textures, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_textures(n, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenBuffers(n: i32, buffers: *mut u32) {
+    with_gl("glGenBuffers", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(buffers, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_buffers(n, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsEnabled(cap: u32) -> u8 {
+    with_gl("glIsEnabled", |gl| u8::from(gl.ctx.is_enabled(cap)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsList(list: u32) -> u8 {
+    with_gl("glIsList", |gl| u8::from(gl.ctx.is_list(list)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsTexture(texture: u32) -> u8 {
+    with_gl("glIsTexture", |gl| u8::from(gl.ctx.is_texture(texture)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsBuffer(buffer: u32) -> u8 {
+    with_gl("glIsBuffer", |gl| u8::from(gl.ctx.is_buffer(buffer)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetError() -> u32 {
+    with_gl("glGetError", |gl| gl.ctx.get_error())
+}
+
+/// The four strings, NUL-terminated, made once.
+fn strings() -> &'static [CString; 4] {
+    static STRINGS: OnceLock<[CString; 4]> = OnceLock::new();
+    STRINGS.get_or_init(|| {
+        let mut ctx = Context::new(1, 1).ok();
+        [gl::VENDOR, gl::RENDERER, gl::VERSION, gl::EXTENSIONS].map(|name| {
+            let s = ctx.as_mut().and_then(|c| c.get_string(name)).unwrap_or("");
+            CString::new(s).unwrap_or_default()
+        })
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetString(name: u32) -> *const u8 {
+    with_gl("glGetString", |gl| match gl.ctx.get_string(name) {
+        Some(_) => {
+            let i = (name - gl::VENDOR) as usize;
+            strings()[i].as_ptr().cast()
+        }
+        None => std::ptr::null(),
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glViewport(x: i32, y: i32, width: i32, height: i32) {
+    with_gl("glViewport", |gl| {
+        // A program's reshape handler calls glViewport with the window's new size, and a GLX
+        // program with its own event loop (glxgears) makes no other call then: the framebuffer
+        // follows the window here.
+        gl.fit_surface();
+        gl.ctx.viewport(x, y, width, height);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glFlush() {
+    with_gl("glFlush", |gl| {
+        gl.ctx.flush();
+        gl.flushed();
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glFinish() {
+    with_gl("glFinish", |gl| {
+        gl.ctx.finish();
+        gl.flushed();
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glMapBuffer(target: u32, access: u32) -> *mut c_void {
+    with_gl("glMapBuffer", |gl| {
+        // The store does not move while it is mapped (see `Context::map_buffer`), so its
+        // address stays valid for the program until UnmapBuffer, DeleteBuffers or BufferData.
+        match gl.ctx.map_buffer(target, access) {
+            Some(bytes) => bytes.as_mut_ptr().cast(),
+            None => std::ptr::null_mut(),
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glUnmapBuffer(target: u32) -> u8 {
+    with_gl("glUnmapBuffer", |gl| u8::from(gl.ctx.unmap_buffer(target)))
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetBufferPointerv(target: u32, pname: u32, params: *mut *mut c_void) {
+    with_gl("glGetBufferPointerv", |gl| {
+        let p = gl.ctx.get_buffer_pointerv(target, pname);
+        // SAFETY: one pointer.
+        if let Some(slot) = unsafe { read::slice_mut(params, 1) }.first_mut() {
+            *slot = p;
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenQueries(n: i32, ids: *mut u32) {
+    with_gl("glGenQueries", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(ids, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_queries(n, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsQuery(id: u32) -> u8 {
+    with_gl("glIsQuery", |gl| u8::from(gl.ctx.is_query(id)))
+}
+
+getter!(glGetQueryiv, get_queryiv, i32, |_| Some(1));
+getter!(glGetQueryObjectiv, get_query_objectiv, i32, |_| Some(1));
+getter!(glGetQueryObjectuiv, get_query_objectuiv, u32, |_| Some(1));
+
+#[no_mangle]
+pub unsafe extern "C" fn glSelectBuffer(size: i32, buffer: *mut u32) {
+    with_gl("glSelectBuffer", |gl| {
+        let before = gl.ctx.state().render_mode;
+        gl.ctx.select_buffer(size);
+        // Taken only when the command is (SELECT mode and a negative size are its errors).
+        if before != gl::SELECT && size >= 0 {
+            gl.select_out = (buffer as usize, size as usize);
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glFeedbackBuffer(size: i32, ty: u32, buffer: *mut f32) {
+    with_gl("glFeedbackBuffer", |gl| {
+        let before = gl.ctx.state().render_mode;
+        gl.ctx.feedback_buffer(size, ty);
+        if before != gl::FEEDBACK && size >= 0 {
+            gl.feedback_out = (buffer as usize, size as usize);
+        }
+    })
+}
+
+/// `glRenderMode`: the context keeps the hit records and feedback values; when the mode ends
+/// they are copied into the program's buffer (as many as it holds).
+#[no_mangle]
+pub unsafe extern "C" fn glRenderMode(mode: u32) -> i32 {
+    with_gl("glRenderMode", |gl| {
+        let before = gl.ctx.state().render_mode;
+        let result = gl.ctx.render_mode(mode);
+        if gl.ctx.state().render_mode == before && before != mode {
+            return result; // refused: nothing ended
+        }
+        match before {
+            gl::SELECT => {
+                let (at, size) = gl.select_out;
+                // SAFETY: the buffer SelectBuffer was given holds `size` values.
+                let out = unsafe { read::slice_mut(at as *mut u32, size) };
+                let src = gl.ctx.selection_buffer();
+                let n = src.len().min(out.len());
+                out[..n].copy_from_slice(&src[..n]);
+            }
+            gl::FEEDBACK => {
+                let (at, size) = gl.feedback_out;
+                // SAFETY: the buffer FeedbackBuffer was given holds `size` values.
+                let out = unsafe { read::slice_mut(at as *mut f32, size) };
+                let src = gl.ctx.feedback_values();
+                let n = src.len().min(out.len());
+                out[..n].copy_from_slice(&src[..n]);
+            }
+            _ => {}
+        }
+        result
+    })
+}
