@@ -691,6 +691,16 @@ pub enum Call {
     PopName,
     /// `glPassThrough(token)`.
     PassThrough(f32),
+
+    // Point parameters (GL 2.1 §3.4, GL 1.4): context/raster.rs
+    /// `glPointParameterf(pname, param)`.
+    PointParameterf(u32, f32),
+    /// `glPointParameteri(pname, param)`.
+    PointParameteri(u32, i32),
+    /// `glPointParameterfv(pname, params)`.
+    PointParameterfv(u32, Vec<f32>),
+    /// `glPointParameteriv(pname, params)`.
+    PointParameteriv(u32, Vec<i32>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -1000,6 +1010,10 @@ pub const NAMES: &[&str] = &[
     "PushName",
     "PopName",
     "PassThrough",
+    "PointParameterf",
+    "PointParameteri",
+    "PointParameterfv",
+    "PointParameteriv",
 ];
 
 /// The variants that are window-system calls, not GL commands (no row in the command
@@ -1315,6 +1329,10 @@ impl Call {
             Call::PushName(..) => "PushName",
             Call::PopName => "PopName",
             Call::PassThrough(..) => "PassThrough",
+            Call::PointParameterf(..) => "PointParameterf",
+            Call::PointParameteri(..) => "PointParameteri",
+            Call::PointParameterfv(..) => "PointParameterfv",
+            Call::PointParameteriv(..) => "PointParameteriv",
         }
     }
 
@@ -1843,6 +1861,10 @@ impl Call {
             Call::PushName(..) => &[],
             Call::PopName => &[],
             Call::PassThrough(..) => &[],
+            Call::PointParameterf(..) => &[Enum],
+            Call::PointParameteri(..) => &[Enum],
+            Call::PointParameterfv(..) => &[Enum],
+            Call::PointParameteriv(..) => &[Enum],
         }
     }
 }

@@ -401,6 +401,10 @@ impl Context {
             Call::PushName(name) => self.push_name(name),
             Call::PopName => self.pop_name(),
             Call::PassThrough(token) => self.pass_through(token),
+            Call::PointParameterf(pname, param) => self.point_parameterf(pname, param),
+            Call::PointParameteri(pname, param) => self.point_parameteri(pname, param),
+            Call::PointParameterfv(pname, ref params) => self.point_parameterfv(pname, params),
+            Call::PointParameteriv(pname, ref params) => self.point_parameteriv(pname, params),
         }
     }
 }
