@@ -238,7 +238,15 @@ impl Worker {
 
     /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
     #[inline]
-    fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
+    pub(super) fn tri(
+        &mut self,
+        ctx: &SetupCtx,
+        a: &WVert,
+        b: &WVert,
+        c: &WVert,
+        flags: u8,
+        mat: u32,
+    ) {
         let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
             return;
         };
@@ -264,6 +272,9 @@ impl Worker {
 
     /// A point (§3.4): a square of side round(size) centred on the vertex.
     fn point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
+        if ctx.point_smooth {
+            return self.aa_point(ctx, a, off, flags, mat);
+        }
         let (x, y) = (a.fx as f32 / 256.0, a.fy as f32 / 256.0);
         let size = ctx.point_size.round().max(1.0);
         let x0 = clamp_f((x - size / 2.0 + 0.5).floor());

@@ -27,6 +27,8 @@ pub mod texture;
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
 pub mod quadrics;
+// Smooth points, lines and polygons (scenes/antialiasing.rs)
+pub mod antialiasing;
 // Selection: scenes/picking.rs
 pub mod picking;
 
@@ -141,6 +143,7 @@ static SCENES: &[Scene] = &[
     stipple::SCENES[0],
     quadrics::SCENES[0],
     picking::SCENES[0],
+    antialiasing::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
