@@ -68,6 +68,12 @@ const PNAMES: &[&str] = &[
     "LIGHT_MODEL_LOCAL_VIEWER",
     "LIGHT_MODEL_TWO_SIDE",
     "LIGHT_MODEL_COLOR_CONTROL",
+    // PointParameter (table 6.11)
+    "POINT_SIZE_MIN",
+    "POINT_SIZE_MAX",
+    "POINT_FADE_THRESHOLD_SIZE",
+    "POINT_DISTANCE_ATTENUATION",
+    "POINT_SPRITE_COORD_ORIGIN",
     // Fog (table 6.8)
     "FOG_COLOR",
     "FOG_MODE",
@@ -283,9 +289,9 @@ fn cpu_and_driver_agree_on_every_pname_error() {
         .iter()
         .filter(|c| c.method.is_some() && c.params.iter().any(|p| p.name == "pname"))
         .collect();
-    // Light, Material, LightModel, Fog, TexParameter, TexEnv and TexGen in their f, i, fv and
-    // iv forms (TexGen also d, dv), and PixelStore: 32 rows.
-    assert_eq!(commands.len(), 32, "pname-taking commands");
+    // Light, Material, LightModel, Fog, PointParameter, TexParameter, TexEnv and TexGen in
+    // their f, i, fv and iv forms (TexGen also d, dv), and PixelStore: 36 rows.
+    assert_eq!(commands.len(), 36, "pname-taking commands");
     let (mut cases, mut mismatches) = (0, Vec::new());
     let mut known_seen = vec![0usize; KNOWN.len()];
     for cmd in commands {

@@ -25,6 +25,7 @@ mod matrices;
 mod multi_draw;
 mod pixel_store;
 mod pixel_store_gl;
+mod points;
 mod query;
 mod query_errors;
 mod recording;
