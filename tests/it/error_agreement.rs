@@ -188,24 +188,7 @@ const VALUES: &[&str] = &[
 /// Where fixedgl differs from the driver on purpose, until the issue named lands: the line's
 /// prefix and why. Each must still disagree somewhere (the test fails when one no longer does,
 /// so the list only shrinks).
-const KNOWN: &[(&str, &str)] = &[
-    (
-        "TexEnvi(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnvf(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnviv(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnvfv(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-];
+const KNOWN: &[(&str, &str)] = &[];
 
 /// The `Call` a recording line reads as (the reader is the table-driven constructor).
 fn call(line: &str) -> Call {
