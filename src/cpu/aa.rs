@@ -24,7 +24,7 @@
 //! POLYGON_SMOOTH changes nothing on llvmpipe (measured: a smooth triangle's pixels are those
 //! of the plain one, alpha untouched), so it changes nothing here.
 
-use super::setup::{snap, SetupCtx, WVert, Worker, F_AALINE, F_AAPOINT};
+use super::setup::{snap, SetupCtx, WVert, Worker, F_AALINE, F_AAPOINT, F_LINE};
 
 /// The coverage factor of a smooth point or line fragment from its interpolated `aa`
 /// coordinates (`F_AAPOINT` or `F_AALINE` in `flags`); `None`: discarded.
@@ -67,7 +67,14 @@ impl Worker {
     /// A smooth point (`draw_pipe_aapoint.c`'s quad; see the module docs).
     pub(super) fn aa_point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
         let size = ctx.point_size;
-        let r = if size <= 2.0 { 1.0f32 } else { 0.5 * size };
+        // A size per vertex (distance attenuation) is taken as it is.
+        let r = if a.ps > 0.0 {
+            0.5 * a.ps
+        } else if size <= 2.0 {
+            1.0f32
+        } else {
+            0.5 * size
+        };
         let k = 1.0 / r;
         let k = 1.0 - 2.0 * k + k * k;
         let (x, y) = (a.x, a.y);
@@ -139,5 +146,48 @@ impl Worker {
         let f = flags | F_AALINE;
         self.tri(ctx, &v2, &v1, &v0, f, mat);
         self.tri(ctx, &v3, &v1, &v2, f, mat);
+    }
+
+    /// A point sprite (GL 2.0 §3.3.1, ARB_point_sprite) as llvmpipe rasterises it
+    /// (`lp_setup_point.c`, quad rasterisation): a square of the size in 1/256 pixel (at least
+    /// one pixel) centred on the snapped vertex, filled with the triangle rule, never
+    /// polygon-stippled; the units with COORD_REPLACE get s = 1/2 + (x - x_w) / size and
+    /// t = 1/2 ± (y - y_w) / size (+ for LOWER_LEFT, - for UPPER_LEFT), r = 0, q = 1, at each
+    /// pixel centre (x, y); the other varyings are the vertex's.
+    pub(super) fn sprite(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
+        let size = if a.ps > 0.0 { a.ps } else { ctx.point_size }.min(255.0);
+        let fw = ((f64::from(size) * 256.0).round() as i64).max(256);
+        let cx = i64::from(snap(f64::from(a.x - 0.5))) + 128;
+        let cy = i64::from(snap(f64::from(a.y - 0.5))) + 128;
+        let (x0, y0) = (cx - fw / 2, cy - fw / 2);
+        let w = fw as f32 / 256.0;
+        let corner = |fx: i64, fy: i64| {
+            let mut v = *a;
+            v.fx = fx;
+            v.fy = fy;
+            v.x = fx as f32 / 256.0;
+            v.y = fy as f32 / 256.0;
+            v.z = a.z + off;
+            let s = 0.5 + (v.x - a.x) / w;
+            let dt = (v.y - a.y) / w;
+            let t = if ctx.sprite_lower_left {
+                0.5 + dt
+            } else {
+                0.5 - dt
+            };
+            for o in ctx.sprite_units.into_iter().flatten() {
+                if let Some(dst) = v.v.get_mut(o..o + 4) {
+                    dst.copy_from_slice(&[s, t, 0.0, 1.0]);
+                }
+            }
+            v
+        };
+        let v0 = corner(x0, y0);
+        let v1 = corner(x0 + fw, y0);
+        let v2 = corner(x0 + fw, y0 + fw);
+        let v3 = corner(x0, y0 + fw);
+        let f = flags | F_LINE;
+        self.tri(ctx, &v0, &v1, &v2, f, mat);
+        self.tri(ctx, &v0, &v2, &v3, f, mat);
     }
 }

@@ -196,6 +196,12 @@ pub struct SetupCtx {
     pub(super) point_smooth: bool,
     /// LINE_SMOOTH.
     pub(super) line_smooth: bool,
+    /// POINT_SPRITE: points are quads with the coordinates of `sprite_units` replaced.
+    pub(super) sprite: bool,
+    /// Varying offsets of the texture coordinates that COORD_REPLACE replaces.
+    pub(super) sprite_units: [Option<usize>; 2],
+    /// POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT.
+    pub(super) sprite_lower_left: bool,
     /// Framebuffer ∩ scissor, inclusive.
     pub rect: [i32; 4],
     /// Tiles across.
@@ -312,6 +318,12 @@ impl SetupCtx {
             point_size,
             point_smooth,
             line_smooth,
+            sprite: state.enables.point_sprite,
+            sprite_units: [
+                rl.tex.filter(|_| p.coord_replace[0]),
+                rl.tex1.filter(|_| p.coord_replace[1]),
+            ],
+            sprite_lower_left: p.sprite_coord_origin == gl::LOWER_LEFT,
             rect,
             tiles_x: tiles.0,
             tiles: tiles.0 * tiles.1,
@@ -424,6 +436,8 @@ pub(super) struct WVert {
     pub(super) z: f64,
     pub(super) iw: f32,
     pub(super) v: [f32; MAXV],
+    /// The point size of this vertex under distance attenuation (0: the context's).
+    pub(super) ps: f32,
 }
 
 /// One setup worker's output: its primitives in order, their floats, and per-tile bins. Several

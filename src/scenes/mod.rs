@@ -29,6 +29,8 @@ pub mod stipple;
 pub mod quadrics;
 // Smooth points, lines and polygons (scenes/antialiasing.rs)
 pub mod antialiasing;
+// Point sprites and point parameters (scenes/sprites.rs)
+pub mod sprites;
 // Selection: scenes/picking.rs
 pub mod picking;
 
@@ -144,6 +146,7 @@ static SCENES: &[Scene] = &[
     quadrics::SCENES[0],
     picking::SCENES[0],
     antialiasing::SCENES[0],
+    sprites::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

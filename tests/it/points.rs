@@ -214,6 +214,55 @@ mod on_gl {
         c.clear(gl::COLOR_BUFFER_BIT);
     }
 
+    fn perspective(c: &mut Context) {
+        c.clear_color(0.1, 0.2, 0.3, 1.0);
+        c.clear(gl::COLOR_BUFFER_BIT);
+        c.matrix_mode(gl::PROJECTION);
+        c.load_identity();
+        c.frustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
+        c.matrix_mode(gl::MODELVIEW);
+        c.load_identity();
+    }
+
+    fn row_of_points(c: &mut Context) {
+        c.begin(gl::POINTS);
+        for i in 0..10 {
+            let f = i as f32;
+            c.color4f(1.0, 0.2 + 0.08 * f, 0.3, 0.8);
+            c.vertex3f(-1.0 + 0.23 * f, 0.9 - 0.2 * f, -1.5 - 0.9 * f);
+        }
+        c.end();
+    }
+
+    /// An 8x8 texture of distinct texels, NEAREST, on unit 0 with COORD_REPLACE and sprites on.
+    fn sprite_texture(c: &mut Context) {
+        let mut t = [0u32];
+        c.gen_textures(1, &mut t);
+        c.bind_texture(gl::TEXTURE_2D, t[0]);
+        let mut px = Vec::new();
+        for y in 0..8u8 {
+            for x in 0..8u8 {
+                px.extend([x * 32, y * 32, 255 - (x ^ y) * 16, 255]);
+            }
+        }
+        c.tex_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            gl::RGBA as i32,
+            8,
+            8,
+            0,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            Some(&px),
+        );
+        c.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+        c.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+        c.enable(gl::TEXTURE_2D);
+        c.tex_envi(gl::POINT_SPRITE, gl::COORD_REPLACE, 1);
+        c.enable(gl::POINT_SPRITE);
+    }
+
     fn pictures() -> Vec<(&'static str, Draw)> {
         vec![
             ("smooth points", |c| {
@@ -260,6 +309,38 @@ mod on_gl {
                     c.color4f(1.0, 0.3, 0.3, 0.6);
                     c.vertex2f(40.0, 8.0 + 11.0 * f + 0.3);
                     c.vertex2f(60.0 - f, 60.0 - 3.0 * f);
+                    c.end();
+                }
+            }),
+            ("attenuated points", |c| {
+                perspective(c);
+                c.point_parameterfv(gl::POINT_DISTANCE_ATTENUATION, &[0.0, 0.2, 0.05]);
+                c.point_parameterf(gl::POINT_SIZE_MAX, 14.0);
+                c.point_size(18.0);
+                row_of_points(c);
+            }),
+            ("attenuated smooth points", |c| {
+                perspective(c);
+                c.enable(gl::POINT_SMOOTH);
+                c.point_parameterfv(gl::POINT_DISTANCE_ATTENUATION, &[0.5, 0.1, 0.02]);
+                c.point_size(14.0);
+                row_of_points(c);
+            }),
+            ("sprites, upper left", |c| {
+                sprite_texture(c);
+                perspective(c);
+                c.point_parameterfv(gl::POINT_DISTANCE_ATTENUATION, &[0.0, 0.15, 0.02]);
+                c.point_size(24.0);
+                row_of_points(c);
+            }),
+            ("sprites, lower left, plain size", |c| {
+                sprite_texture(c);
+                perspective(c);
+                c.point_parameteri(gl::POINT_SPRITE_COORD_ORIGIN, gl::LOWER_LEFT as i32);
+                for (i, s) in [3.0f32, 6.5, 9.0, 12.25].iter().enumerate() {
+                    c.point_size(*s);
+                    c.begin(gl::POINTS);
+                    c.vertex3f(-0.6 + 0.4 * i as f32, 0.1 * i as f32 - 0.2, -2.0);
                     c.end();
                 }
             }),
