@@ -1,7 +1,7 @@
-//! The GLU 1.3 matrix helpers lecture code leans on: `gluLookAt`, `gluPerspective`,
-//! `gluOrtho2D`, `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2);
-//! `gluBuild2DMipmaps`; the quadrics (§6, `quadric.rs`: `new_quadric`, `sphere`, `cylinder`,
-//! `disk`, `partial_disk`); `gluErrorString`.
+//! The GLU 1.3 helpers lecture code leans on: `gluLookAt`, `gluPerspective`, `gluOrtho2D`,
+//! `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2); `gluBuild2DMipmaps`;
+//! the quadrics (§6, `quadric.rs`: `new_quadric`, `sphere`, `cylinder`, `disk`, `partial_disk`);
+//! `gluErrorString`.
 //!
 //! Design decision: like GLU itself, these are not GL entry points. Each builds its matrix on
 //! the CPU and multiplies it onto the current matrix through the context's own calls
@@ -428,6 +428,7 @@ const NURBS_ERRORS: [&str; 37] = [
     "null control point reference",
     "duplicate point on piecewise linear trimming curve",
 ];
+
 #[cfg(test)]
 mod tests {
     use super::*;

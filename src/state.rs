@@ -461,6 +461,14 @@ pub struct State {
     pub logic_op: u32,
     // Objects and units (tables 6.15, 6.16, 6.19)
     pub textures: crate::texture::Textures,
+    // Raster position (§2.13, table 6.5), pixel transfer and zoom (§3.6.3, §3.6.5, table 6.23),
+    // pixel maps (table 6.24)
+    /// The current raster position and its associated data.
+    pub raster_pos: RasterPos,
+    /// PixelTransfer's parameters and PixelZoom's factors (attribute "pixel").
+    pub pixel: crate::pixels::PixelTransfer,
+    /// The ten pixel maps (in no attribute group), shared copy-on-write.
+    pub pixel_maps: crate::pixels::SharedMaps,
     /// Line and polygon stipple (tables 6.12, 6.13; context/stipple.rs).
     pub stipple: Stipple,
 }
@@ -540,6 +548,9 @@ impl State {
             blend: Blend::default(),
             logic_op: gl::COPY,
             textures: crate::texture::Textures::default(),
+            raster_pos: RasterPos::default(),
+            pixel: crate::pixels::PixelTransfer::default(),
+            pixel_maps: Default::default(),
             stipple: Stipple::default(),
         }
     }
@@ -683,6 +694,44 @@ impl Default for Blend {
             equation_rgb: gl::FUNC_ADD,
             equation_alpha: gl::FUNC_ADD,
             color: Vec4::ZERO,
+        }
+    }
+}
+
+/// The current raster position (GL 2.1 §2.13, table 6.5, attribute "current"): what RasterPos and
+/// WindowPos set, and what Bitmap, DrawPixels and CopyPixels read (and feedback reports).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterPos {
+    /// CURRENT_RASTER_POSITION_VALID: RasterPos of a point outside the clip volume (frustum and
+    /// enabled user clip planes) makes it invalid; WindowPos always valid.
+    pub valid: bool,
+    /// CURRENT_RASTER_POSITION: window x, y, z (z after DepthRange) and clip w.
+    pub window: Vec4,
+    /// CURRENT_RASTER_COLOR: the colour lighting gives the point (or the current colour).
+    pub color: Vec4,
+    /// CURRENT_RASTER_SECONDARY_COLOR.
+    pub secondary_color: Vec4,
+    /// CURRENT_RASTER_INDEX (colour-index mode only; kept for queries).
+    pub index: f32,
+    /// CURRENT_RASTER_TEXTURE_COORDS of each unit (after TexGen and the texture matrix).
+    pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
+    /// CURRENT_RASTER_DISTANCE: the eye distance, or the fog coordinate under FOG_COORD_SRC
+    /// FOG_COORD.
+    pub distance: f32,
+}
+
+impl Default for RasterPos {
+    /// Table 6.5's initial values: (0, 0, 0, 1), valid, white, secondary (0, 0, 0, 1), index
+    /// 1, texture coordinates (0, 0, 0, 1), distance 0.
+    fn default() -> Self {
+        Self {
+            valid: true,
+            window: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            color: Vec4::ONE,
+            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            index: 1.0,
+            tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
+            distance: 0.0,
         }
     }
 }

@@ -44,8 +44,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     let has = |bit: u32| mask & bit != 0;
     if has(gl::CURRENT_BIT) {
         // Table 6.5: current colour, secondary colour, normal, texture coordinates, fog
-        // coordinate, edge flag.
-        copy!(d, s; current);
+        // coordinate, edge flag; the raster position and its associated data.
+        copy!(d, s; current, raster_pos);
     }
     if has(gl::ENABLE_BIT) {
         // Every Enable flag is in the enable group as well as in its own.
@@ -129,15 +129,14 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; list_base);
     }
     if has(gl::PIXEL_MODE_BIT) {
-        // Table 6.26: READ_BUFFER.
-        copy!(d, s; read_buffer);
+        // Table 6.23: the pixel transfer parameters and the zoom (the pixel maps are in no
+        // group); table 6.26: READ_BUFFER.
+        copy!(d, s; pixel, read_buffer);
     }
     if has(gl::ACCUM_BUFFER_BIT) {
         // Table 6.22: ACCUM_CLEAR_VALUE.
         copy!(d, s; accum_clear);
     }
-    // PIXEL_MODE_BIT's pixel transfer and zoom: no state of theirs is
-    // kept yet.
 }
 
 /// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each

@@ -58,6 +58,20 @@ pub struct FragCtx<'a> {
     pub tex1: Option<&'a super::texture::Sampler>,
 }
 
+/// What the per-fragment operations see of a pixel rectangle's or bitmap's fragments: a
+/// front-facing primitive (the front stencil state applies, §4.1.5).
+const PIXEL_PRIM: RPrim = RPrim {
+    kind: super::setup::PrimKind::Point,
+    flags: 0,
+    bbox: [0; 4],
+    mat: 0,
+    voff: 0,
+    xy: [0; 6],
+    owns: 0,
+    cover: 0,
+    z: [0.0; 3],
+};
+
 /// The polygon stipple of `state` (GL 2.1 §3.5.6) as `FragCtx::stipple` wants it: row r for
 /// window rows y ≡ r (mod 32), bit x set when window columns x' ≡ x (mod 32) are drawn.
 pub fn stipple_rows(state: &crate::state::State) -> [u32; 32] {
@@ -272,6 +286,21 @@ impl FragCtx<'_> {
     #[inline(always)]
     fn fog_coord(&self, v: &[f32]) -> f32 {
         self.rl.fog.and_then(|o| v.get(o).copied()).unwrap_or(0.0)
+    }
+
+    /// One fragment of a pixel rectangle or a bitmap at tile index `i` (GL 2.1 §3.6.5, §3.7):
+    /// colour `c` (textured and summed by the caller), window depth `z`, fog coordinate `fogc`;
+    /// then fog and the per-fragment operations of §4.1, as a front-facing fragment takes them.
+    #[inline]
+    pub fn pixel(&self, bufs: &mut TileBufs, i: usize, z: f64, c: Vec4, fogc: f32) {
+        match &self.ops {
+            Some(ops) => self.full(ops, bufs, &PIXEL_PRIM, i, z, c, fogc),
+            None => {
+                if self.depth(bufs, i, z) {
+                    self.write(bufs, i, c);
+                }
+            }
+        }
     }
 
     /// One fragment of a line or point at window pixel (x, y).

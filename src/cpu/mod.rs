@@ -45,6 +45,7 @@ pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
 mod line;
+pub mod pixels;
 mod polygon;
 pub mod raster;
 pub mod setup;

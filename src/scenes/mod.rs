@@ -23,6 +23,10 @@ pub mod arrays;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
+// Pixel rectangles, bitmaps, CopyPixels (scenes/pixels.rs)
+pub mod pixels;
+// Selection: scenes/picking.rs
+pub mod picking;
 // Line and polygon stipple (scenes/stipple.rs)
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
@@ -31,8 +35,6 @@ pub mod quadrics;
 pub mod antialiasing;
 // Point sprites and point parameters (scenes/sprites.rs)
 pub mod sprites;
-// Selection: scenes/picking.rs
-pub mod picking;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -142,9 +144,10 @@ static SCENES: &[Scene] = &[
     texture::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    pixels::SCENES[0],
+    picking::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
-    picking::SCENES[0],
     antialiasing::SCENES[0],
     sprites::SCENES[0],
 ];

@@ -1284,6 +1284,9 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             stencil,
             blend,
             logic_op,
+            raster_pos,
+            pixel,
+            pixel_maps,
             stipple
         },
         special { textures }
