@@ -207,6 +207,11 @@ impl Context {
             gl::LIGHT_MODEL_COLOR_CONTROL => e(s.light_model.color_control),
             // Rasterisation (tables 6.11 to 6.13).
             gl::POINT_SIZE => f(s.point_size),
+            gl::POINT_SIZE_MIN => f(s.point.size_min),
+            gl::POINT_SIZE_MAX => f(s.point.size_max),
+            gl::POINT_FADE_THRESHOLD_SIZE => f(s.point.fade_threshold),
+            gl::POINT_DISTANCE_ATTENUATION => floats(s.point.distance_attenuation),
+            gl::POINT_SPRITE_COORD_ORIGIN => e(s.point.sprite_coord_origin),
             gl::LINE_WIDTH => f(s.line_width),
             gl::LINE_STIPPLE_PATTERN => i(i32::from(s.stipple.line_pattern)),
             gl::LINE_STIPPLE_REPEAT => i(s.stipple.line_repeat),

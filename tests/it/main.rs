@@ -29,6 +29,7 @@ mod pixel_store;
 mod pixel_store_gl;
 mod pixels;
 mod pixels_gl;
+mod points;
 mod query;
 mod query_errors;
 mod raster_gl;
