@@ -197,9 +197,12 @@ impl Context {
             gl::FEEDBACK => {
                 self.renderer.flush(&self.state);
                 let r = self.state.raster_pos;
-                self.renderer
-                    .sink
-                    .raster_token(token, r.window.to_array(), r.color, r.tex_coords[0]);
+                self.renderer.sink.raster_token(
+                    token,
+                    r.window.to_array(),
+                    r.color,
+                    r.tex_coords[0],
+                );
                 false
             }
             gl::SELECT => false,

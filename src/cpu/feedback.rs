@@ -737,12 +737,7 @@ mod tests {
         s.set_feedback_buffer(64, gl::GL_3D_COLOR);
         s.begin_feedback();
         let c = Vec4::new(0.25, 0.5, 0.75, 1.0);
-        s.raster_token(
-            gl::DRAW_PIXEL_TOKEN,
-            [1.0, 2.0, 0.5, 1.0],
-            c,
-            Vec4::ZERO,
-        );
+        s.raster_token(gl::DRAW_PIXEL_TOKEN, [1.0, 2.0, 0.5, 1.0], c, Vec4::ZERO);
         assert_eq!(
             s.feedback,
             [

@@ -591,7 +591,13 @@ fn raster_rects(w: i32, h: i32) -> Vec<Call> {
             -2.5,
             Box::new(Some(vec![0xa5; n * 4])),
         ),
-        Call::DrawPixels(w, h, gl::RGBA, gl::UNSIGNED_BYTE, Box::new(vec![200; n * 4])),
+        Call::DrawPixels(
+            w,
+            h,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            Box::new(vec![200; n * 4]),
+        ),
         Call::CopyPixels(1, 2, w, h, gl::COLOR),
     ]
 }
@@ -737,10 +743,7 @@ fn raster_positions_make_hits_as_the_driver() {
     b.extend(raster_rects(4, 4));
     b.extend(raster_rects(0, 0));
     // RasterPos with primitives under one name; a RasterPos4 with w 2.
-    b.extend([
-        Call::LoadName(5),
-        Call::RasterPos4f(8.0, 12.0, -0.5, 2.0),
-    ]);
+    b.extend([Call::LoadName(5), Call::RasterPos4f(8.0, 12.0, -0.5, 2.0)]);
     b.extend(prim(
         gl::TRIANGLES,
         &[[16.0, 16.0, 0.0], [48.0, 16.0, 0.0], [32.0, 48.0, 0.0]],
