@@ -15,7 +15,8 @@ use fixedgl::Context;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| "out".into()));
     std::fs::create_dir_all(&out)?;
-    let scene = fixedgl::scenes::find("accum-depth-of-field").ok_or("the accum-depth-of-field scene is registered")?;
+    let scene = fixedgl::scenes::find("accum-depth-of-field")
+        .ok_or("the accum-depth-of-field scene is registered")?;
     let mut gl = Context::with_config(512, 384, scene.config)?;
     (scene.draw)(&mut gl);
     let path = out.join("accum-depth-of-field.png");
