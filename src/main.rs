@@ -23,7 +23,7 @@ use image::RgbaImage;
 use fixedgl::compare::compare;
 use fixedgl::report::{self, Renderers, SceneResult};
 use fixedgl::scenes::{self, Scene};
-use fixedgl::{Call, Context, Error};
+use fixedgl::{Call, Context, ContextConfig, Error};
 
 /// The OpenGL 1.x fixed-function pipeline on the CPU, compared with a real driver.
 #[derive(Parser, Debug)]
@@ -336,7 +336,7 @@ fn render(
     let (mut ctx, calls) = scene.record(w, h)?;
     let img = match backend {
         Backend::Cpu => ctx.to_image(),
-        Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
+        Backend::Gl => gl_side::render(&calls, w, h, scene.config, device)?.0,
     };
     let out = output.unwrap_or_else(|| PathBuf::from(format!("{name}-{}.png", backend.name())));
     img.save(&out)?;
@@ -370,7 +370,7 @@ fn compare_scenes(
         let (mut ctx, calls) = scene.record(w, h)?;
         let cpu = ctx.to_image();
         let cpu_ms = start.elapsed().as_secs_f64() * 1e3;
-        let (gl, info, gl_ms) = gl_side::render_timed(&calls, w, h, device)?;
+        let (gl, info, gl_ms) = gl_side::render_timed(&calls, w, h, scene.config, device)?;
         renderers.gl = info.0;
         renderers.gl_version = info.1;
         let comparison = compare(&cpu, &gl, scene.tolerance.channel);
@@ -461,10 +461,10 @@ fn bench(
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
-        let mut gl = gl_side::Bench::new(w, h, device)?;
+        let mut gl = gl_side::Bench::new(w, h, scene.config, device)?;
         // Like the GL side (one context, state restored around each frame), one CPU context
         // reset to its initial state before each frame; its framebuffer memory is reused.
-        let mut ctx = Context::new(w, h)?;
+        let mut ctx = Context::with_config(w, h, scene.config)?;
         let mut cpu_frame = || -> Result<f64, Error> {
             let start = Instant::now();
             ctx.reset();
@@ -568,7 +568,7 @@ fn replay(
             ctx.replay(&calls);
             ctx.to_image()
         }
-        Backend::Gl => gl_side::render(&calls, w, h, device)?.0,
+        Backend::Gl => gl_side::render(&calls, w, h, ContextConfig::default(), device)?.0,
     };
     let stem = file
         .file_stem()
@@ -638,8 +638,18 @@ mod gl_side {
     use fixedgl::glbackend::{list_devices, DeviceChoice, DeviceInfo, GlBackend};
 
     fn backend(w: u32, h: u32, device: &str) -> Result<GlBackend, Error> {
+        backend_with(w, h, ContextConfig::default(), device)
+    }
+
+    /// A backend whose framebuffer has the buffers `config` names.
+    fn backend_with(
+        w: u32,
+        h: u32,
+        config: ContextConfig,
+        device: &str,
+    ) -> Result<GlBackend, Error> {
         let choice: DeviceChoice = device.parse().unwrap_or_default();
-        GlBackend::new(w, h, &choice)
+        GlBackend::with_config(w, h, &choice, config)
     }
 
     /// The EGL devices.
@@ -652,9 +662,10 @@ mod gl_side {
         calls: &[Call],
         w: u32,
         h: u32,
+        config: ContextConfig,
         device: &str,
     ) -> Result<(RgbaImage, (String, String)), Error> {
-        let (img, info, _) = render_timed(calls, w, h, device)?;
+        let (img, info, _) = render_timed(calls, w, h, config, device)?;
         Ok((img, info))
     }
 
@@ -664,9 +675,10 @@ mod gl_side {
         calls: &[Call],
         w: u32,
         h: u32,
+        config: ContextConfig,
         device: &str,
     ) -> Result<(RgbaImage, (String, String), f64), Error> {
-        let mut gl = backend(w, h, device)?;
+        let mut gl = backend_with(w, h, config, device)?;
         let start = Instant::now();
         gl.replay(calls);
         gl.finish();
@@ -711,8 +723,8 @@ mod gl_side {
     pub struct Bench(GlBackend);
 
     impl Bench {
-        pub fn new(w: u32, h: u32, device: &str) -> Result<Self, Error> {
-            Ok(Bench(backend(w, h, device)?))
+        pub fn new(w: u32, h: u32, config: ContextConfig, device: &str) -> Result<Self, Error> {
+            Ok(Bench(backend_with(w, h, config, device)?))
         }
 
         /// Milliseconds for one frame: the calls replayed from the initial state, up to
@@ -749,6 +761,7 @@ mod gl_side {
         _calls: &[Call],
         _w: u32,
         _h: u32,
+        _config: ContextConfig,
         _device: &str,
     ) -> Result<(RgbaImage, (String, String)), Error> {
         Err(unavailable())
@@ -759,6 +772,7 @@ mod gl_side {
         _calls: &[Call],
         _w: u32,
         _h: u32,
+        _config: ContextConfig,
         _device: &str,
     ) -> Result<(RgbaImage, (String, String), f64), Error> {
         Err(unavailable())
@@ -784,7 +798,7 @@ mod gl_side {
     pub struct Bench;
 
     impl Bench {
-        pub fn new(_w: u32, _h: u32, _device: &str) -> Result<Self, Error> {
+        pub fn new(_w: u32, _h: u32, _config: ContextConfig, _device: &str) -> Result<Self, Error> {
             Err(unavailable())
         }
 

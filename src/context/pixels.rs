@@ -289,7 +289,9 @@ impl Context {
         if !self.state.raster_pos.valid {
             return;
         }
-        if let Some((data, layout)) = bits {
+        // FEEDBACK and SELECT modes draw nothing (a token in FEEDBACK); the position moves.
+        let render = self.raster_rect_token(gl::BITMAP_TOKEN);
+        if let Some((data, layout)) = bits.filter(|_| render) {
             let (w, h) = (width as usize, height as usize);
             const EPSILON: f32 = 0.0001;
             let r = self.state.raster_pos.window;
@@ -342,7 +344,12 @@ impl Context {
         else {
             return self.error(gl::INVALID_OPERATION);
         };
-        if !self.state.raster_pos.valid || width == 0 || height == 0 {
+        // FEEDBACK mode writes its token even for an empty rectangle (Mesa's `_mesa_DrawPixels`).
+        if !self.state.raster_pos.valid
+            || !self.raster_rect_token(gl::DRAW_PIXEL_TOKEN)
+            || width == 0
+            || height == 0
+        {
             return;
         }
         let img = Image {
@@ -467,7 +474,12 @@ impl Context {
         if !matches!(type_, gl::COLOR | gl::DEPTH | gl::STENCIL) {
             return self.error(gl::INVALID_ENUM);
         }
-        if !self.state.raster_pos.valid || width == 0 || height == 0 {
+        // An empty rectangle writes no feedback token either (Mesa's `_mesa_CopyPixels`).
+        if !self.state.raster_pos.valid
+            || width == 0
+            || height == 0
+            || !self.raster_rect_token(gl::COPY_PIXEL_TOKEN)
+        {
             return;
         }
         let t = self.state.pixel;

@@ -165,6 +165,7 @@ impl Context {
             tex_coords,
             distance,
         };
+        self.raster_pos_hit();
     }
 
     /// WindowPos3 of window coordinates (x, y, z) (§2.13).
@@ -190,6 +191,7 @@ impl Context {
                 0.0
             },
         };
+        self.raster_pos_hit();
     }
 
     /// Rect with corners `a` and `b` (§2.10): a quadrilateral through (a.x, a.y), (b.x, a.y),

@@ -184,6 +184,43 @@ impl Context {
         }
     }
 
+    /// What Bitmap, DrawPixels and CopyPixels do in place of drawing when the render mode is
+    /// not RENDER (GL 2.1 §5.3, as Mesa's `drawpix.c`): in FEEDBACK mode `token` (BITMAP_TOKEN,
+    /// DRAW_PIXEL_TOKEN or COPY_PIXEL_TOKEN) and the current raster position as a vertex of the
+    /// buffer's type (window coordinates and clip w, the raster colour, unit 0's raster texture
+    /// coordinates), after what is batched; in SELECT mode nothing (GL 2.1 appendix B,
+    /// corollary 6: they do not affect the hits; RasterPos and WindowPos record the hit).
+    /// Returns whether the mode is RENDER, that is whether the caller draws. The raster
+    /// position is valid here (the callers return first otherwise).
+    pub(super) fn raster_rect_token(&mut self, token: u32) -> bool {
+        match self.state.render_mode {
+            gl::FEEDBACK => {
+                self.renderer.flush(&self.state);
+                let r = self.state.raster_pos;
+                self.renderer.sink.raster_token(
+                    token,
+                    r.window.to_array(),
+                    r.color,
+                    r.tex_coords[0],
+                );
+                false
+            }
+            gl::SELECT => false,
+            _ => true,
+        }
+    }
+
+    /// RasterPos or WindowPos has made a valid raster position: in SELECT mode its window z
+    /// joins the pending hit (Mesa's `_mesa_RasterPos` and `window_pos3f` call
+    /// `_mesa_update_hitflag`; GL 2.1 §5.2 names only primitives and RasterPos, with which
+    /// WindowPos is one command group).
+    pub(super) fn raster_pos_hit(&mut self) {
+        if self.state.render_mode == gl::SELECT {
+            let z = self.state.raster_pos.window.z;
+            self.renderer.sink.update_hit(z);
+        }
+    }
+
     /// `glPassThrough`: in FEEDBACK mode, PASS_THROUGH_TOKEN and `token` after what is batched;
     /// ignored in the other modes.
     pub fn pass_through(&mut self, token: f32) {

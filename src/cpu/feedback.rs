@@ -251,28 +251,14 @@ impl Sink {
         }
     }
 
-    /// A pixel-rectangle token at a raster position (GL 2.1 §5.3: BITMAP_TOKEN,
-    /// DRAW_PIXEL_TOKEN or COPY_PIXEL_TOKEN with the current raster position's window
-    /// coordinates, colour and texture coordinates), or, in SELECT mode, a hit at its depth:
-    /// the one call Bitmap, DrawPixels and CopyPixels make when the raster position is valid
-    /// and the render mode is not RENDER.
-    // The raster-position commands (Bitmap, DrawPixels, CopyPixels) are built on another branch;
-    // until they land only the unit test below calls this.
-    #[allow(dead_code)]
-    pub fn raster_token(
-        &mut self,
-        select: bool,
-        token: u32,
-        win: [f32; 4],
-        color: Vec4,
-        tex: Vec4,
-    ) {
-        if select {
-            self.update_hit(win[2]);
-        } else {
-            self.token(token as f32);
-            self.vertex(win, color, tex);
-        }
+    /// A pixel-rectangle token at a raster position (GL 2.1 §5.3): BITMAP_TOKEN,
+    /// DRAW_PIXEL_TOKEN or COPY_PIXEL_TOKEN, then the current raster position as a vertex
+    /// (window coordinates and clip w, the raster colour, unit 0's raster texture coordinates).
+    /// What Bitmap, DrawPixels and CopyPixels write in FEEDBACK mode with a valid raster
+    /// position; in SELECT mode they write nothing, as in Mesa (RasterPos makes the hit).
+    pub fn raster_token(&mut self, token: u32, win: [f32; 4], color: Vec4, tex: Vec4) {
+        self.token(token as f32);
+        self.vertex(win, color, tex);
     }
 
     /// Runs the batch's primitives through the selection or feedback pipeline (see the module
@@ -740,13 +726,7 @@ mod tests {
         s.update_hit(0.5);
         s.update_hit(0.25);
         // z = 1 scales to 2^32, whose low 32 bits Mesa keeps: 0.
-        s.raster_token(
-            true,
-            gl::BITMAP_TOKEN,
-            [1.0, 2.0, 1.0, 1.0],
-            Vec4::ONE,
-            Vec4::ZERO,
-        );
+        s.update_hit(1.0);
         s.flush_hit();
         assert_eq!(s.select, [2, 1 << 30, 0, 7, 8]);
         s.update_hit(0.75);
@@ -757,13 +737,7 @@ mod tests {
         s.set_feedback_buffer(64, gl::GL_3D_COLOR);
         s.begin_feedback();
         let c = Vec4::new(0.25, 0.5, 0.75, 1.0);
-        s.raster_token(
-            false,
-            gl::DRAW_PIXEL_TOKEN,
-            [1.0, 2.0, 0.5, 1.0],
-            c,
-            Vec4::ZERO,
-        );
+        s.raster_token(gl::DRAW_PIXEL_TOKEN, [1.0, 2.0, 0.5, 1.0], c, Vec4::ZERO);
         assert_eq!(
             s.feedback,
             [

@@ -134,4 +134,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (640, 480),
     draw: antialiasing,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];

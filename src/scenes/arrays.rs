@@ -26,6 +26,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: rect_wire,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "cube-colors",
@@ -35,6 +36,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: cube_colors,
         animate: Some(cube_colors_at),
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

@@ -385,6 +385,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: fog,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "blending",
@@ -393,6 +394,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: blending,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "planar-shadow",
@@ -401,6 +403,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: planar_shadow,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "planar-reflection",
@@ -409,6 +412,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: planar_reflection,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

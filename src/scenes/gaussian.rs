@@ -219,6 +219,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Flat),
         animate: Some(|gl, t| draw_at(gl, 40, Shading::Flat, t)),
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "gauss-smooth-40",
@@ -227,6 +228,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Smooth),
         animate: Some(|gl, t| draw_at(gl, 40, Shading::Smooth, t)),
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "gauss-smooth-400",
@@ -235,6 +237,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: |gl| draw(gl, 400, Shading::Smooth),
         animate: Some(|gl, t| draw_at(gl, 400, Shading::Smooth, t)),
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "gauss-phong-40",
@@ -243,6 +246,7 @@ pub(super) const SCENES: [Scene; 4] = [
         default_size: (800, 800),
         draw: |gl| draw(gl, 40, Shading::Phong),
         animate: Some(|gl, t| draw_at(gl, 40, Shading::Phong, t)),
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

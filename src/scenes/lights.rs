@@ -245,6 +245,7 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: materials_scene,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "spotlight",
@@ -253,6 +254,7 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: |gl| spotlight(gl, [0.0, 0.0, 0.0]),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "light-model",
@@ -261,6 +263,7 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: light_model,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "two-side",
@@ -269,6 +272,7 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: two_side,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "emission",
@@ -277,6 +281,7 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: emission,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "eight-lights",
@@ -285,5 +290,6 @@ pub(super) const SCENES: [Scene; 6] = [
         default_size: (800, 800),
         draw: eight_lights,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];

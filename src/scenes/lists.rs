@@ -20,6 +20,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: display_list,
         animate: Some(display_list_at),
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "glut-shapes",
@@ -28,6 +29,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: glut_shapes,
         animate: Some(glut_shapes_at),
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

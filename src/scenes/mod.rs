@@ -7,7 +7,7 @@
 //! adding a scene is one entry (and usually one new file under `src/scenes/`) with no
 //! registration code.
 
-use crate::{gl, Call, Context, Error};
+use crate::{gl, Call, Context, ContextConfig, Error};
 
 pub mod gaussian;
 pub mod lights;
@@ -37,11 +37,22 @@ pub mod tessellation;
 pub mod antialiasing;
 // Point sprites and point parameters (scenes/sprites.rs)
 pub mod sprites;
+// Accumulation buffer: motion blur, depth of field (scenes/accum.rs)
+pub mod accum;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
     channel: 2,
     max_percent: 0.05,
+};
+
+/// The framebuffer most scenes draw on: `ContextConfig::default()` (single-buffered RGBA8,
+/// depth and stencil, no accumulation buffer).
+pub const DEFAULT_CONFIG: ContextConfig = ContextConfig {
+    double_buffered: false,
+    depth: true,
+    stencil: true,
+    accum: false,
 };
 
 /// How close the CPU and GL renderings of a scene must be.
@@ -69,13 +80,16 @@ pub struct Scene {
     /// For a scene that moves: its calls at `t` seconds into the animation (`fixedgl view`).
     /// At `t = 0` it makes exactly the calls of `draw`, so the still image is frame 0.
     pub animate: Option<fn(&mut Context, f32)>,
+    /// The framebuffer's buffers, on both backends ([`DEFAULT_CONFIG`] for most; the
+    /// accumulation scenes ask for an accumulation buffer).
+    pub config: ContextConfig,
 }
 
 impl Scene {
     /// Draws the scene on a new `width` x `height` CPU context, returning the context (its
     /// framebuffer holds the CPU rendering) and the recorded calls.
     pub fn record(&self, width: u32, height: u32) -> Result<(Context, Vec<Call>), Error> {
-        let mut ctx = Context::new(width, height)?;
+        let mut ctx = Context::with_config(width, height, self.config)?;
         ctx.start_recording();
         (self.draw)(&mut ctx);
         let calls = ctx.stop_recording();
@@ -97,7 +111,7 @@ impl Scene {
         height: u32,
         t: f32,
     ) -> Result<(Context, Vec<Call>), Error> {
-        let mut ctx = Context::new(width, height)?;
+        let mut ctx = Context::with_config(width, height, self.config)?;
         ctx.start_recording();
         self.draw_at(&mut ctx, t);
         let calls = ctx.stop_recording();
@@ -117,6 +131,7 @@ static SCENES: &[Scene] = &[
         default_size: (256, 256),
         draw: triangle,
         animate: None,
+        config: DEFAULT_CONFIG,
     },
     gaussian::SCENES[0],
     gaussian::SCENES[1],
@@ -153,6 +168,8 @@ static SCENES: &[Scene] = &[
     tessellation::SCENES[0],
     antialiasing::SCENES[0],
     sprites::SCENES[0],
+    accum::SCENES[0],
+    accum::SCENES[1],
 ];
 
 /// Every registered scene, in listing order.
@@ -189,6 +206,11 @@ mod tests {
             assert_eq!(find(s.name).map(|f| f.name), Some(s.name));
         }
         assert!(find("no-such-scene").is_none());
+    }
+
+    #[test]
+    fn default_config_is_the_context_default() {
+        assert_eq!(DEFAULT_CONFIG, ContextConfig::default());
     }
 
     #[test]

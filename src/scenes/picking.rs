@@ -22,6 +22,7 @@ pub const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: picking,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];
 
 /// The cursor, in window coordinates (y up, as GLUT programs compute `height - mouse_y`), at

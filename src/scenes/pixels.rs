@@ -26,6 +26,7 @@ pub const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: draw_pixels,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];
 
 /// The photograph's size.

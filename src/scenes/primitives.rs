@@ -149,6 +149,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: |gl| primitives(gl, SMOOTH),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "primitives-flat",
@@ -158,6 +159,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: |gl| primitives(gl, FLAT),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

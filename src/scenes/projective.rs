@@ -32,6 +32,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: projective_texture,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "shadow-map",
@@ -46,6 +47,7 @@ pub const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: shadow_map,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

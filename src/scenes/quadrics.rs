@@ -187,4 +187,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: quadrics,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];

@@ -108,6 +108,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: |gl| sphere_subdivision(gl, &[1, 2, 3, 5], Split::Midpoint),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "sphere-param",
@@ -117,6 +118,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: |gl| sphere_param(gl, 24, 12),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

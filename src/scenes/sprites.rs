@@ -133,4 +133,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (640, 480),
     draw: point_sprites,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];

@@ -200,4 +200,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: stipple,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];

@@ -90,6 +90,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: |gl| gauss_normalize(gl, 3.0),
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
     Scene {
         name: "vertex-color",
@@ -99,6 +100,7 @@ pub(super) const SCENES: [Scene; 2] = [
         default_size: (800, 800),
         draw: vertex_color,
         animate: None,
+        config: super::DEFAULT_CONFIG,
     },
 ];
 

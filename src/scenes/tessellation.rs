@@ -212,4 +212,5 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: tessellation,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];

@@ -31,6 +31,7 @@ pub const SCENES: [Scene; 1] = [Scene {
     default_size: (960, 640),
     draw: textured_cube,
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];
 
 /// The cube's faces: normal, then four corners counter-clockwise seen from outside.

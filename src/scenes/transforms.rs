@@ -153,6 +153,7 @@ pub(super) const SCENES: [Scene; 1] = [Scene {
     default_size: (800, 800),
     draw: |gl| transforms(gl, &PANELS),
     animate: None,
+    config: super::DEFAULT_CONFIG,
 }];
 
 #[cfg(test)]

@@ -15,7 +15,7 @@ use image::{Rgba, RgbaImage};
 use super::{Animator, Drawable, GlCanvas, GlEventListener, Key, KeyEvent, Options, RunStats};
 use crate::compare::{compare, font, HEAT_GAIN};
 use crate::scenes::Scene;
-use crate::{gl, Call, Context, Error};
+use crate::{gl, Call, Context, ContextConfig, Error};
 
 /// The keys of the viewer, as printed by `h`.
 pub const KEYS: &str = "\
@@ -145,7 +145,11 @@ pub fn run(scenes: &[&'static Scene], config: ViewConfig) -> Result<RunStats, Er
     };
     let mut canvas = GlCanvas::new(window.0, window.1)
         .title(viewer.title(0.0))
-        .animator(animator);
+        .animator(animator)
+        .config(ContextConfig {
+            double_buffered: true,
+            ..viewer.framebuffer
+        });
     if let Some(dir) = &config.options.record_frames {
         canvas = canvas.record_frames(dir.clone());
     }
@@ -166,9 +170,9 @@ struct GlSide(Option<crate::glbackend::GlBackend>);
 
 #[cfg(feature = "gl")]
 impl GlSide {
-    fn new(w: u32, h: u32, device: &str) -> Result<Self, Error> {
+    fn new(w: u32, h: u32, config: ContextConfig, device: &str) -> Result<Self, Error> {
         let choice: crate::glbackend::DeviceChoice = device.parse().unwrap_or_default();
-        crate::glbackend::GlBackend::new(w, h, &choice).map(|b| GlSide(Some(b)))
+        crate::glbackend::GlBackend::with_config(w, h, &choice, config).map(|b| GlSide(Some(b)))
     }
 
     #[cfg(test)]
@@ -198,7 +202,7 @@ struct GlSide;
 
 #[cfg(not(feature = "gl"))]
 impl GlSide {
-    fn new(_w: u32, _h: u32, _device: &str) -> Result<Self, Error> {
+    fn new(_w: u32, _h: u32, _config: ContextConfig, _device: &str) -> Result<Self, Error> {
         Err(Error::Backend(
             "this fixedgl was built without the `gl` feature, so `view --compare` has no driver \
              to compare with; rebuild with default features"
@@ -250,6 +254,9 @@ struct SceneViewer {
     paused: Option<f64>,
     compare: Option<Compare>,
     error: Option<Error>,
+    /// The framebuffer every scene is drawn on: the default one, with an accumulation buffer
+    /// when some scene asks for one (it changes nothing for the others).
+    framebuffer: ContextConfig,
 }
 
 /// Running average weight of a new frame time.
@@ -281,13 +288,17 @@ impl SceneViewer {
             paused: None,
             compare: None,
             error: None,
+            framebuffer: ContextConfig {
+                accum: scenes.iter().any(|s| s.config.accum),
+                ..ContextConfig::default()
+            },
         };
         if config.compare {
             // Made before the window opens, so that a missing driver is an error up front.
             let panel = viewer.panel_for(scenes[0]);
             viewer.compare = Some(Compare {
-                cpu: Context::new(panel.0, panel.1)?,
-                gl: GlSide::new(panel.0, panel.1, &config.device)?,
+                cpu: Context::with_config(panel.0, panel.1, viewer.framebuffer)?,
+                gl: GlSide::new(panel.0, panel.1, viewer.framebuffer, &config.device)?,
                 layout: Layout::All,
                 flipped: false,
                 gain: HEAT_GAIN,
@@ -390,6 +401,7 @@ impl SceneViewer {
     fn compare_frame(&mut self, t: f32, window: (u32, u32)) -> Result<RgbaImage, Error> {
         let scene = self.scene();
         let device = self.device.clone();
+        let framebuffer = self.framebuffer;
         let Some(c) = self.compare.as_mut() else {
             return Err(Error::Window("not comparing".into()));
         };
@@ -398,7 +410,7 @@ impl SceneViewer {
             crate::window::follow_size(&mut c.cpu, panel.0, panel.1)?;
         }
         if c.gl.size() != panel {
-            c.gl = GlSide::new(panel.0, panel.1, &device)?;
+            c.gl = GlSide::new(panel.0, panel.1, framebuffer, &device)?;
         }
         let start = Instant::now();
         c.cpu.reset();

@@ -577,3 +577,194 @@ fn the_picking_scene_s_hits_match_the_driver() {
         }
     }
 }
+
+/// Bitmap, DrawPixels and CopyPixels of `w` x `h` at the current raster position.
+fn raster_rects(w: i32, h: i32) -> Vec<Call> {
+    let n = (w.max(0) * h.max(0)) as usize;
+    vec![
+        Call::Bitmap(
+            w,
+            h,
+            0.5,
+            0.25,
+            3.0,
+            -2.5,
+            Box::new(Some(vec![0xa5; n * 4])),
+        ),
+        Call::DrawPixels(
+            w,
+            h,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            Box::new(vec![200; n * 4]),
+        ),
+        Call::CopyPixels(1, 2, w, h, gl::COLOR),
+    ]
+}
+
+/// GL 2.1 §5.3 for the raster operations, against the driver word for word: RasterPos and
+/// WindowPos write nothing; Bitmap, DrawPixels and CopyPixels write their token and the raster
+/// position as a vertex of the buffer's type (window x, y, z, clip w, the raster colour, unit
+/// 0's raster texture coordinates) in order with the primitives, only while it is valid; an
+/// empty Bitmap or DrawPixels still writes its token, an empty CopyPixels does not (Mesa's
+/// `drawpix.c`); Bitmap moves the raster position as in RENDER mode; display lists; and
+/// nothing is drawn.
+#[test]
+fn raster_tokens_match_the_driver_value_for_value() {
+    for ty in [
+        gl::GL_2D,
+        gl::GL_3D,
+        gl::GL_3D_COLOR,
+        gl::GL_3D_COLOR_TEXTURE,
+        gl::GL_4D_COLOR_TEXTURE,
+    ] {
+        let mut b = vec![
+            Call::Color4f(0.25, 0.5, 0.75, 1.0),
+            Call::TexCoord4f(0.5, 0.25, 2.0, 1.0),
+            Call::MultiTexCoord4f(gl::TEXTURE1, 8.0, 9.0, 10.0, 11.0),
+            Call::RasterPos3f(10.0, 20.0, 0.5),
+        ];
+        b.extend(raster_rects(2, 3));
+        // Empty rectangles, a NULL bitmap.
+        b.extend(raster_rects(0, 3));
+        b.extend(raster_rects(4, 0));
+        b.push(Call::Bitmap(8, 8, 0.0, 0.0, 1.0, 1.0, Box::new(None)));
+        // In order with batched primitives and PassThrough.
+        b.extend(prim(gl::POINTS, &[[3.0, 4.0, 0.25]]));
+        b.push(Call::PassThrough(7.0));
+        b.extend(raster_rects(1, 1));
+        // Clip w and the texture matrix (unit 0's coordinates only).
+        b.extend([
+            Call::MatrixMode(gl::TEXTURE),
+            Call::Scalef(2.0, 4.0, 0.5),
+            Call::MatrixMode(gl::MODELVIEW),
+            Call::RasterPos4f(8.0, 12.0, -0.5, 2.0),
+        ]);
+        b.extend(raster_rects(2, 2));
+        // WindowPos: clamped colour, clamped z through DepthRange, w 1.
+        b.extend([
+            Call::Color4f(2.0, -1.0, 0.5, 0.25),
+            Call::DepthRange(0.25, 0.75),
+            Call::WindowPos3f(5.5, 6.25, 2.0),
+        ]);
+        b.extend(raster_rects(2, 2));
+        b.push(Call::WindowPos2f(-3.5, 70.0));
+        b.extend(raster_rects(2, 2));
+        // An invalid raster position: nothing at all.
+        b.extend([Call::DepthRange(0.0, 1.0), Call::RasterPos2f(80.0, 2.0)]);
+        b.extend(raster_rects(2, 2));
+        // From a display list.
+        b.push(Call::NewList(1, gl::COMPILE));
+        b.push(Call::RasterPos2f(30.0, 40.0));
+        b.extend(raster_rects(2, 1));
+        b.extend([Call::EndList, Call::CallList(1)]);
+        feedback_case(&format!("raster tokens, type {ty:#x}"), ty, b);
+    }
+    feedback_case(
+        "nothing from an invalid raster position",
+        gl::GL_3D,
+        [
+            vec![Call::RasterPos2f(-80.0, 2.0)],
+            raster_rects(2, 2),
+            vec![Call::RasterPos2f(1.0, 1.0)],
+        ]
+        .concat(),
+    );
+}
+
+/// After the raster operations in FEEDBACK mode the raster position is where Bitmap moved
+/// it, and nothing was drawn, on either side.
+#[test]
+fn raster_operations_draw_nothing_outside_render_mode() {
+    for (mode, buffer) in [
+        (gl::FEEDBACK, Call::FeedbackBuffer(256, gl::GL_3D)),
+        (gl::SELECT, Call::SelectBuffer(256)),
+    ] {
+        let mut cpu = Context::new(W, W).expect("context");
+        let Some(mut drv) = backend() else { return };
+        let mut calls = setup();
+        calls.extend([
+            Call::ClearColor(0.0, 0.0, 0.0, 0.0),
+            Call::Clear(gl::COLOR_BUFFER_BIT),
+            Call::Begin(gl::TRIANGLES),
+            Call::Vertex2f(0.0, 0.0),
+            Call::Vertex2f(30.0, 0.0),
+            Call::Vertex2f(0.0, 30.0),
+            Call::End,
+            buffer,
+            Call::RenderMode(mode),
+            Call::InitNames,
+            Call::PushName(1),
+            Call::RasterPos2f(40.0, 40.0),
+        ]);
+        calls.extend(raster_rects(8, 8));
+        calls.push(Call::RenderMode(gl::RENDER));
+        run(&mut cpu, &mut drv, &calls);
+        let mut pos = [0.0f32; 4];
+        cpu.get_floatv(gl::CURRENT_RASTER_POSITION, &mut pos);
+        assert_eq!(pos, [43.0, 37.5, 0.5, 1.0], "mode {mode:#x}");
+        let cpu_img = cpu.to_image().into_raw();
+        let drv_img = drv.read_rgba(0, 0, W as i32, W as i32);
+        // The triangle alone: as many lit pixels on both sides, none above row 32 or right of
+        // column 32 where the rectangles would have been drawn.
+        let lit = |v: &[u8]| v.chunks(4).filter(|p| p[0] != 0).count();
+        assert_eq!(lit(&cpu_img), lit(&drv_img), "mode {mode:#x}");
+        assert!(lit(&drv_img) > 400, "mode {mode:#x}: the triangle is drawn");
+        let w = W as usize;
+        let far = drv_img
+            .chunks(4)
+            .enumerate()
+            .filter(|(k, p)| p[0] != 0 && (k % w >= 32 || k / w >= 32))
+            .count();
+        assert_eq!(far, 0, "mode {mode:#x}: the driver drew no rectangle");
+    }
+}
+
+/// SELECT mode: a valid raster position from RasterPos or WindowPos joins the pending hit at
+/// its window z; an invalid one does not; Bitmap, DrawPixels and CopyPixels make no hit (Mesa's
+/// `rastpos.c` and `drawpix.c`), against the driver's hit records.
+#[test]
+fn raster_positions_make_hits_as_the_driver() {
+    let mut b = vec![Call::InitNames, Call::PushName(1)];
+    b.push(Call::RasterPos3f(10.0, 20.0, 0.5));
+    // Outside the frustum: no hit.
+    b.extend([Call::LoadName(2), Call::RasterPos3f(10.0, 20.0, 1.5)]);
+    // WindowPos, z clamped and through DepthRange.
+    b.extend([
+        Call::LoadName(3),
+        Call::WindowPos3f(1.0, 2.0, 0.75),
+        Call::WindowPos3f(100.0, -2.0, 2.0),
+        Call::DepthRange(0.25, 0.5),
+        Call::WindowPos2f(1.0, 2.0),
+        Call::DepthRange(0.0, 1.0),
+    ]);
+    // The raster operations at a valid position make none.
+    b.push(Call::LoadName(4));
+    b.extend(raster_rects(4, 4));
+    b.extend(raster_rects(0, 0));
+    // RasterPos with primitives under one name; a RasterPos4 with w 2.
+    b.extend([Call::LoadName(5), Call::RasterPos4f(8.0, 12.0, -0.5, 2.0)]);
+    b.extend(prim(
+        gl::TRIANGLES,
+        &[[16.0, 16.0, 0.0], [48.0, 16.0, 0.0], [32.0, 48.0, 0.0]],
+    ));
+    // From a display list.
+    b.extend([
+        Call::NewList(1, gl::COMPILE),
+        Call::LoadName(6),
+        Call::RasterPos3f(1.0, 1.0, -0.75),
+        Call::EndList,
+        Call::CallList(1),
+    ]);
+    let records = select_case("raster position hits", 256, b.clone());
+    if records.is_empty() {
+        return;
+    }
+    // Window z 0.25 (Ortho: (1 - z) / 2) for name 1; name 2 makes no record.
+    assert_eq!(records[..4], [1, 1 << 30, 1 << 30, 1]);
+    assert_eq!(records[4], 1);
+    assert_eq!(records[7], 3);
+    for size in [0, 3, 6] {
+        select_case(&format!("raster hits, overflow at {size}"), size, b.clone());
+    }
+}
