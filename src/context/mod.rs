@@ -21,6 +21,7 @@
 mod buffers;
 mod control;
 mod dispatch;
+mod eval;
 mod framebuffer;
 mod lighting;
 mod raster;
@@ -398,6 +399,7 @@ mod readback;
 // Occlusion queries (context/query.rs)
 mod query;
 pub use query::QUERY_COUNTER_BITS;
+pub use eval::MAX_EVAL_MESH_VERTICES;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;
