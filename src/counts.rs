@@ -169,7 +169,13 @@ pub fn map1_points(target: u32, stride: i32, order: i32) -> Option<usize> {
 
 /// `Map2{f,d}`'s count: `(uorder - 1) * ustride + (vorder - 1) * vstride + k`, `None` as in
 /// [`map1_points`].
-pub fn map2_points(target: u32, ustride: i32, uorder: i32, vstride: i32, vorder: i32) -> Option<usize> {
+pub fn map2_points(
+    target: u32,
+    ustride: i32,
+    uorder: i32,
+    vstride: i32,
+    vorder: i32,
+) -> Option<usize> {
     if !(gl::MAP2_COLOR_4..=gl::MAP2_VERTEX_4).contains(&target) {
         return None;
     }

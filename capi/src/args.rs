@@ -322,12 +322,28 @@ unsafe fn points<T: Copy + Default>(p: *const T, needed: Option<usize>) -> Vec<T
     }
 }
 
-pub fn map1f(_: &mut Gl, target: u32, _: f32, _: f32, stride: i32, order: i32, p: *const f32) -> Vec<f32> {
+pub fn map1f(
+    _: &mut Gl,
+    target: u32,
+    _: f32,
+    _: f32,
+    stride: i32,
+    order: i32,
+    p: *const f32,
+) -> Vec<f32> {
     // SAFETY: as `points`.
     unsafe { points(p, fixedgl::counts::map1_points(target, stride, order)) }
 }
 
-pub fn map1d(_: &mut Gl, target: u32, _: f64, _: f64, stride: i32, order: i32, p: *const f64) -> Vec<f64> {
+pub fn map1d(
+    _: &mut Gl,
+    target: u32,
+    _: f64,
+    _: f64,
+    stride: i32,
+    order: i32,
+    p: *const f64,
+) -> Vec<f64> {
     // SAFETY: as `points`.
     unsafe { points(p, fixedgl::counts::map1_points(target, stride, order)) }
 }

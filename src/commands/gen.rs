@@ -416,7 +416,9 @@ impl Implemented {
                 );
                 Shape::Params(rust_scalar(&p.ptype))
             } else if matches!(p.ptype.as_str(), "GLfloat" | "GLdouble")
-                && p.len.as_deref().is_some_and(|l| l.starts_with("COMPSIZE(target"))
+                && p.len
+                    .as_deref()
+                    .is_some_and(|l| l.starts_with("COMPSIZE(target"))
             {
                 Shape::Points(rust_scalar(&p.ptype))
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {

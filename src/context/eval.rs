@@ -68,7 +68,15 @@ impl Context {
     /// stride below the target's components or `points` shorter than `(order - 1) * stride +
     /// k`; INVALID_OPERATION with ACTIVE_TEXTURE other than TEXTURE0 (GL 1.2.1 §F.2.13) and
     /// between Begin and End. A display list keeps a copy of the points.
-    pub fn map1f(&mut self, target: u32, u1: f32, u2: f32, stride: i32, order: i32, points: &[f32]) {
+    pub fn map1f(
+        &mut self,
+        target: u32,
+        u1: f32,
+        u2: f32,
+        stride: i32,
+        order: i32,
+        points: &[f32],
+    ) {
         record!(
             self,
             Call::Map1f(Box::new((target, u1, u2, stride, order, points.to_vec())))
@@ -77,7 +85,15 @@ impl Context {
     }
 
     /// `glMap1d`: [`Context::map1f`] with double arguments, kept as floats.
-    pub fn map1d(&mut self, target: u32, u1: f64, u2: f64, stride: i32, order: i32, points: &[f64]) {
+    pub fn map1d(
+        &mut self,
+        target: u32,
+        u1: f64,
+        u2: f64,
+        stride: i32,
+        order: i32,
+        points: &[f64],
+    ) {
         record!(
             self,
             Call::Map1d(Box::new((target, u1, u2, stride, order, points.to_vec())))
@@ -120,7 +136,12 @@ impl Context {
                 points.to_vec()
             )))
         );
-        self.map2(target, [u1, u2, v1, v2], [ustride, uorder, vstride, vorder], points);
+        self.map2(
+            target,
+            [u1, u2, v1, v2],
+            [ustride, uorder, vstride, vorder],
+            points,
+        );
     }
 
     /// `glMap2d`: [`Context::map2f`] with double arguments, kept as floats.
@@ -200,8 +221,7 @@ impl Context {
         }
         let [ustride, uorder, vstride, vorder] = so;
         let orders = 1..=MAX_EVAL_ORDER;
-        if d[0] == d[1] || d[2] == d[3] || !orders.contains(&uorder) || !orders.contains(&vorder)
-        {
+        if d[0] == d[1] || d[2] == d[3] || !orders.contains(&uorder) || !orders.contains(&vorder) {
             return self.error(gl::INVALID_VALUE);
         }
         // Mesa raises INVALID_ENUM for a target of no components and carries on to the stride
@@ -276,10 +296,7 @@ impl Context {
 
     /// `glMapGrid2d`: [`Context::map_grid2f`], kept as floats.
     pub fn map_grid2d(&mut self, un: i32, u1: f64, u2: f64, vn: i32, v1: f64, v2: f64) {
-        record!(
-            self,
-            Call::MapGrid2d(Box::new((un, u1, u2, vn, v1, v2)))
-        );
+        record!(self, Call::MapGrid2d(Box::new((un, u1, u2, vn, v1, v2))));
         self.map_grid2(un, u1 as f32, u2 as f32, vn, v1 as f32, v2 as f32);
     }
 
@@ -584,7 +601,13 @@ impl Context {
             let m = &maps[i];
             let uu = (u - m.domain[0]) * (1.0 / (m.domain[1] - m.domain[0]));
             let mut out = [0.0, 0.0, 0.0, 1.0];
-            horner_curve(&m.points, &mut out, uu, EVAL_COMPONENTS[i], m.uorder as usize);
+            horner_curve(
+                &m.points,
+                &mut out,
+                uu,
+                EVAL_COMPONENTS[i],
+                m.uorder as usize,
+            );
             Vec4::from(out)
         };
         if e.map1[COLOR_4] {
@@ -916,18 +939,27 @@ mod tests {
                 horner_surf(&net, &mut h, u, v, 1, uo, vo);
                 let (mut c, mut du, mut dv) = ([0.0; 4], [0.0; 4], [0.0; 4]);
                 de_casteljau_surf(&net, &mut c, &mut du, &mut dv, u, v, 1, uo, vo);
-                assert!((h[0] - c[0]).abs() < 1e-5, "{uo}x{vo} at {u},{v}: {h:?} {c:?}");
+                assert!(
+                    (h[0] - c[0]).abs() < 1e-5,
+                    "{uo}x{vo} at {u},{v}: {h:?} {c:?}"
+                );
                 // The derivative in u over the degree, by a central difference.
                 let e = 1e-3;
                 let (mut a, mut b) = ([0.0; 4], [0.0; 4]);
                 horner_surf(&net, &mut a, u + e, v, 1, uo, vo);
                 horner_surf(&net, &mut b, u - e, v, 1, uo, vo);
                 let numeric = (a[0] - b[0]) / (2.0 * e) / (uo - 1) as f32;
-                assert!((numeric - du[0]).abs() < 2e-2, "{uo}x{vo}: {numeric} {du:?}");
+                assert!(
+                    (numeric - du[0]).abs() < 2e-2,
+                    "{uo}x{vo}: {numeric} {du:?}"
+                );
                 horner_surf(&net, &mut a, u, v + e, 1, uo, vo);
                 horner_surf(&net, &mut b, u, v - e, 1, uo, vo);
                 let numeric = (a[0] - b[0]) / (2.0 * e) / (vo - 1) as f32;
-                assert!((numeric - dv[0]).abs() < 2e-2, "{uo}x{vo}: {numeric} {dv:?}");
+                assert!(
+                    (numeric - dv[0]).abs() < 2e-2,
+                    "{uo}x{vo}: {numeric} {dv:?}"
+                );
             }
         }
     }

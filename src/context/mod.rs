@@ -398,8 +398,8 @@ mod readback;
 
 // Occlusion queries (context/query.rs)
 mod query;
-pub use query::QUERY_COUNTER_BITS;
 pub use eval::MAX_EVAL_MESH_VERTICES;
+pub use query::QUERY_COUNTER_BITS;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)
 mod attrib;

@@ -8,7 +8,8 @@ use crate::counts;
 use crate::gl;
 
 /// The most values GetMap writes: MAX_EVAL_ORDER² points of 4 components.
-const MAX_MAP_VALUES: usize = (crate::state::MAX_EVAL_ORDER * crate::state::MAX_EVAL_ORDER) as usize * 4;
+const MAX_MAP_VALUES: usize =
+    (crate::state::MAX_EVAL_ORDER * crate::state::MAX_EVAL_ORDER) as usize * 4;
 
 impl GlBackend {
     /// Checks a recorded Map's points against what the driver reads (`needed`: `None` when the
@@ -31,7 +32,15 @@ impl GlBackend {
         false
     }
 
-    pub(super) fn map1f(&mut self, target: u32, u1: f32, u2: f32, stride: i32, order: i32, p: &[f32]) {
+    pub(super) fn map1f(
+        &mut self,
+        target: u32,
+        u1: f32,
+        u2: f32,
+        stride: i32,
+        order: i32,
+        p: &[f32],
+    ) {
         if self.map_points_ok(p, counts::map1_points(target, stride, order)) {
             // SAFETY: the context is current; `p` holds every value the driver reads (or it
             // reads none, failing first: NULL is its INVALID_VALUE, as an empty slice is the
@@ -40,7 +49,15 @@ impl GlBackend {
         }
     }
 
-    pub(super) fn map1d(&mut self, target: u32, u1: f64, u2: f64, stride: i32, order: i32, p: &[f64]) {
+    pub(super) fn map1d(
+        &mut self,
+        target: u32,
+        u1: f64,
+        u2: f64,
+        stride: i32,
+        order: i32,
+        p: &[f64],
+    ) {
         if self.map_points_ok(p, counts::map1_points(target, stride, order)) {
             // SAFETY: as in `map1f`.
             unsafe { self.raw.Map1d(target, u1, u2, stride, order, or_null(p)) }
@@ -65,8 +82,18 @@ impl GlBackend {
         if self.map_points_ok(p, needed) {
             // SAFETY: as in `map1f`.
             unsafe {
-                self.raw
-                    .Map2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, p.as_ptr())
+                self.raw.Map2f(
+                    target,
+                    u1,
+                    u2,
+                    ustride,
+                    uorder,
+                    v1,
+                    v2,
+                    vstride,
+                    vorder,
+                    p.as_ptr(),
+                )
             }
         }
     }
@@ -89,8 +116,18 @@ impl GlBackend {
         if self.map_points_ok(p, needed) {
             // SAFETY: as in `map1f`.
             unsafe {
-                self.raw
-                    .Map2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, p.as_ptr())
+                self.raw.Map2d(
+                    target,
+                    u1,
+                    u2,
+                    ustride,
+                    uorder,
+                    v1,
+                    v2,
+                    vstride,
+                    vorder,
+                    p.as_ptr(),
+                )
             }
         }
     }
@@ -136,7 +173,10 @@ impl GlBackend {
     /// `glGetMapdv` on the driver (as [`GlBackend::get_mapfv`]).
     pub fn get_mapdv(&mut self, target: u32, query: u32) -> Vec<f64> {
         self.make_current();
-        let (sa, sb) = (f64::from_bits(0x7ff8_1234_5678_9abc), f64::from_bits(0x7ff8_4321_8765_cba9));
+        let (sa, sb) = (
+            f64::from_bits(0x7ff8_1234_5678_9abc),
+            f64::from_bits(0x7ff8_4321_8765_cba9),
+        );
         let mut a = vec![sa; MAX_MAP_VALUES];
         let mut b = vec![sb; MAX_MAP_VALUES];
         // SAFETY: as in `get_mapfv`.

@@ -25,6 +25,8 @@ pub mod projective;
 pub mod texture;
 // Selection: scenes/picking.rs
 pub mod picking;
+// Evaluators: scenes/evaluators.rs
+pub mod evaluators;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -135,6 +137,7 @@ static SCENES: &[Scene] = &[
     projective::SCENES[0],
     projective::SCENES[1],
     picking::SCENES[0],
+    evaluators::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
