@@ -1266,7 +1266,9 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             alpha,
             stencil,
             blend,
-            logic_op
+            logic_op,
+            eval_maps,
+            eval_grid
         },
         special { textures }
     )
