@@ -918,6 +918,41 @@ mod tests {
         s * s * s * p[0] + 3.0 * s * s * t * p[1] + 3.0 * s * t * t * p[2] + t * t * t * p[3]
     }
 
+    /// A grid of billions of points is OUT_OF_MEMORY at once; extreme strides and orders with a
+    /// short slice are INVALID_VALUE without allocating; nothing panics.
+    #[test]
+    fn extreme_arguments_are_prompt_errors() {
+        let mut gl = Context::new(8, 8).expect("context");
+        gl.map2f(gl::MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, &[0.0; 12]);
+        gl.enable(gl::MAP2_VERTEX_3);
+        gl.map1f(gl::MAP1_VERTEX_4, 0.0, 1.0, 4, 2, &[0.0; 8]);
+        gl.enable(gl::MAP1_VERTEX_4);
+        assert_eq!(gl.get_error(), gl::NO_ERROR);
+        let start = std::time::Instant::now();
+        gl.eval_mesh2(gl::FILL, i32::MIN, i32::MAX, i32::MIN, i32::MAX);
+        assert_eq!(gl.get_error(), gl::OUT_OF_MEMORY);
+        gl.eval_mesh1(gl::LINE, -5, i32::MAX);
+        assert_eq!(gl.get_error(), gl::OUT_OF_MEMORY);
+        gl.eval_mesh2(gl::LINE, 0, 2047, 0, 1023);
+        assert_eq!(gl.get_error(), gl::NO_ERROR, "2M points are drawn");
+        gl.eval_mesh2(gl::POINT, i32::MAX, i32::MIN, 0, 0);
+        assert_eq!(gl.get_error(), gl::NO_ERROR, "an empty range is no error");
+        gl.map2f(gl::MAP2_VERTEX_3, 0.0, 1.0, i32::MAX, 30, 0.0, 1.0, i32::MAX, 30, &[0.0; 3]);
+        assert_eq!(gl.get_error(), gl::INVALID_VALUE);
+        gl.map1d(gl::MAP1_COLOR_4, f64::MAX, f64::INFINITY, i32::MAX, 30, &[0.0; 4]);
+        assert_eq!(gl.get_error(), gl::INVALID_VALUE);
+        gl.map_grid2f(1, f32::NAN, f32::INFINITY, 1, -0.0, f32::MAX);
+        gl.eval_mesh2(gl::FILL, 0, 1, 0, 1);
+        gl.eval_point2(i32::MIN, i32::MAX);
+        assert!(start.elapsed() < std::time::Duration::from_secs(20));
+        let mut order = [0.0f32; 2];
+        gl.get_mapfv(gl::MAP2_VERTEX_3, gl::ORDER, &mut order);
+        assert_eq!(order, [2.0, 2.0]);
+        let mut short = [0.0f32; 1];
+        gl.get_mapfv(gl::MAP2_VERTEX_3, gl::DOMAIN, &mut short);
+        assert_eq!(gl.get_error(), gl::INVALID_VALUE);
+    }
+
     #[test]
     fn horner_is_the_bernstein_sum() {
         let p = [0.0, 3.0, -2.0, 1.0];

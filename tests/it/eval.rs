@@ -686,8 +686,8 @@ fn evaluated_vertices_match_the_driver_in_feedback() {
                     Call::Enable(gl::MAP2_TEXTURE_COORD_4),
                     Call::Enable(gl::MAP2_TEXTURE_COORD_1),
                     Call::Enable(gl::AUTO_NORMAL),
+                    // The evaluated colour feeds the material, per vertex.
                     Call::Enable(gl::COLOR_MATERIAL),
-                    Call::Disable(gl::COLOR_MATERIAL),
                     Call::MapGrid2f(3, 0.0, 1.0, 2, 0.0, 1.0),
                 ]);
                 s
