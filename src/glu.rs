@@ -1,5 +1,7 @@
-//! The GLU 1.3 matrix helpers lecture code leans on: `gluLookAt`, `gluPerspective`,
-//! `gluOrtho2D`, `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2).
+//! The GLU 1.3 helpers lecture code leans on: `gluLookAt`, `gluPerspective`, `gluOrtho2D`,
+//! `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2); `gluBuild2DMipmaps`;
+//! the quadrics (§6, `quadric.rs`: `new_quadric`, `sphere`, `cylinder`, `disk`, `partial_disk`);
+//! `gluErrorString`.
 //!
 //! Design decision: like GLU itself, these are not GL entry points. Each builds its matrix on
 //! the CPU and multiplies it onto the current matrix through the context's own calls
@@ -7,6 +9,15 @@
 //! would have sent to the driver, and the GL backend needs no GLU.
 
 use crate::Context;
+
+// Quadrics (glu/quadric.rs)
+mod quadric;
+pub use quadric::{
+    cylinder, delete_quadric, disk, new_quadric, partial_disk, quadric_callback,
+    quadric_draw_style, quadric_normals, quadric_orientation, quadric_texture, sphere, Quadric,
+    GLU_ERROR, GLU_FILL, GLU_FLAT, GLU_INSIDE, GLU_LINE, GLU_NONE, GLU_OUTSIDE, GLU_POINT,
+    GLU_SILHOUETTE, GLU_SMOOTH,
+};
 
 /// `v / |v|`, or `v` unchanged when it has zero length (as the reference GLU does).
 fn normalize(v: [f64; 3]) -> [f64; 3] {
@@ -331,6 +342,92 @@ pub fn build_2d_mipmaps(
     }
     0
 }
+
+/// `GLU_OUT_OF_MEMORY`.
+pub const GLU_OUT_OF_MEMORY: i32 = 100_902;
+/// `GLU_INCOMPATIBLE_GL_VERSION`.
+pub const GLU_INCOMPATIBLE_GL_VERSION: i32 = 100_903;
+/// `GLU_INVALID_OPERATION`.
+pub const GLU_INVALID_OPERATION: i32 = 100_904;
+
+/// `gluErrorString` (GLU 1.3 §2.5): the text Mesa's libGLU 9.0 gives each GL error, GLU error,
+/// tessellator error (GLU_TESS_ERROR1 to 6) and NURBS error (GLU_NURBS_ERROR1 to 37), byte for
+/// byte (typos included: a program may compare them); `None` (libGLU's NULL) for any other
+/// value.
+pub fn error_string(code: u32) -> Option<&'static str> {
+    use crate::gl;
+    Some(match code {
+        gl::NO_ERROR => "no error",
+        gl::INVALID_ENUM => "invalid enumerant",
+        gl::INVALID_VALUE => "invalid value",
+        gl::INVALID_OPERATION => "invalid operation",
+        gl::STACK_OVERFLOW => "stack overflow",
+        gl::STACK_UNDERFLOW => "stack underflow",
+        gl::OUT_OF_MEMORY => "out of memory",
+        // GL_INVALID_FRAMEBUFFER_OPERATION, GL_TABLE_TOO_LARGE.
+        0x0506 => "invalid framebuffer operation",
+        0x8031 => "table too large",
+        100_900 => "invalid enumerant",
+        100_901 => "invalid value",
+        100_902 => "out of memory",
+        100_903 => "incompatible gl version",
+        100_904 => "invalid operation",
+        100_151..=100_156 => TESS_ERRORS[(code - 100_151) as usize],
+        100_251..=100_287 => NURBS_ERRORS[(code - 100_251) as usize],
+        _ => return None,
+    })
+}
+
+/// GLU_TESS_ERROR1 to GLU_TESS_ERROR6 (100151 to 100156).
+const TESS_ERRORS: [&str; 6] = [
+    "gluTessBeginPolygon() must precede a gluTessEndPolygon()",
+    "gluTessBeginContour() must precede a gluTessEndContour()",
+    "gluTessEndPolygon() must follow a gluTessBeginPolygon()",
+    "gluTessEndContour() must follow a gluTessBeginContour()",
+    "a coordinate is too large",
+    "need combine callback",
+];
+
+/// GLU_NURBS_ERROR1 to GLU_NURBS_ERROR37 (100251 to 100287).
+const NURBS_ERRORS: [&str; 37] = [
+    "spline order un-supported",
+    "too few knots",
+    "valid knot range is empty",
+    "decreasing knot sequence knot",
+    "knot multiplicity greater than order of spline",
+    "gluEndCurve() must follow gluBeginCurve()",
+    "gluBeginCurve() must precede gluEndCurve()",
+    "missing or extra geometric data",
+    "can't draw piecewise linear trimming curves",
+    "missing or extra domain data",
+    "missing or extra domain data",
+    "gluEndTrim() must precede gluEndSurface()",
+    "gluBeginSurface() must precede gluEndSurface()",
+    "curve of improper type passed as trim curve",
+    "gluBeginSurface() must precede gluBeginTrim()",
+    "gluEndTrim() must follow gluBeginTrim()",
+    "gluBeginTrim() must precede gluEndTrim()",
+    "invalid or missing trim curve",
+    "gluBeginTrim() must precede gluPwlCurve()",
+    "piecewise linear trimming curve referenced twice",
+    "piecewise linear trimming curve and nurbs curve mixed",
+    "improper usage of trim data type",
+    "nurbs curve referenced twice",
+    "nurbs curve and piecewise linear trimming curve mixed",
+    "nurbs surface referenced twice",
+    "invalid property",
+    "gluEndSurface() must follow gluBeginSurface()",
+    "intersecting or misoriented trim curves",
+    "intersecting trim curves",
+    "UNUSED",
+    "unconnected trim curves",
+    "unknown knot error",
+    "negative vertex count encountered",
+    "negative byte-stride encounteed",
+    "unknown type descriptor",
+    "null control point reference",
+    "duplicate point on piecewise linear trimming curve",
+];
 
 #[cfg(test)]
 mod tests {

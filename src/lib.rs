@@ -20,6 +20,7 @@ mod convert;
 mod error;
 pub mod gl;
 pub mod pixel_store;
+pub mod pixels;
 pub mod state;
 pub mod texture;
 

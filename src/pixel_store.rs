@@ -3,16 +3,16 @@
 //! Memory").
 //!
 //! One [`PixelModes`] holds one direction's eight modes: `State::unpack` governs every command
-//! that reads client pixels (TexImage2D, TexSubImage2D, gluBuild2DMipmaps' input), `State::pack`
-//! every command that writes them (ReadPixels, GetTexImage). [`PixelModes::layout`] turns the
+//! that reads client pixels (TexImage2D, TexSubImage2D, DrawPixels, Bitmap, gluBuild2DMipmaps'
+//! input), `State::pack` every command that writes them (ReadPixels, GetTexImage). [`PixelModes::layout`] turns the
 //! modes and an image's size into byte offsets, with checked arithmetic throughout: every size
 //! here is the caller's, and `None` (a layout no slice can hold) is the caller's short-slice
 //! error. The CPU front end, gluBuild2DMipmaps and the GL backend's guard against the driver
 //! reading past recorded pixels all use this one computation.
 //!
-//! Design decision: LSB_FIRST (bitmaps, §3.6.4), IMAGE_HEIGHT and SKIP_IMAGES (3D images,
-//! §3.8.1) are stored and queried but affect nothing yet: fixedgl has no command that takes a
-//! bitmap or a 3D image.
+//! Design decision: IMAGE_HEIGHT and SKIP_IMAGES (3D images, §3.8.1) are stored and queried but
+//! affect nothing yet: fixedgl has no command that takes a 3D image. LSB_FIRST orders the bits of
+//! bitmaps (`crate::pixels::BitLayout`).
 
 use crate::gl;
 
@@ -21,7 +21,8 @@ use crate::gl;
 pub struct PixelModes {
     /// *_SWAP_BYTES: each multi-byte element's bytes reversed (§3.6.4, table 3.7).
     pub swap_bytes: bool,
-    /// *_LSB_FIRST: bit order within a bitmap byte (no command of fixedgl reads bitmaps).
+    /// *_LSB_FIRST: bit order within a bitmap byte (Bitmap, DrawPixels and ReadPixels of type
+    /// BITMAP).
     pub lsb_first: bool,
     /// *_ROW_LENGTH: pixels between row starts, 0 for the image's width.
     pub row_length: i32,

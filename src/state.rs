@@ -425,6 +425,16 @@ pub struct State {
     // Evaluators (table 6.33): the maps (no attribute group) and the grids (EVAL_BIT).
     pub eval_maps: EvalMaps,
     pub eval_grid: EvalGrid,
+    // Raster position (§2.13, table 6.5), pixel transfer and zoom (§3.6.3, §3.6.5, table 6.23),
+    // pixel maps (table 6.24)
+    /// The current raster position and its associated data.
+    pub raster_pos: RasterPos,
+    /// PixelTransfer's parameters and PixelZoom's factors (attribute "pixel").
+    pub pixel: crate::pixels::PixelTransfer,
+    /// The ten pixel maps (in no attribute group), shared copy-on-write.
+    pub pixel_maps: crate::pixels::SharedMaps,
+    /// Line and polygon stipple (tables 6.12, 6.13; context/stipple.rs).
+    pub stipple: Stipple,
 }
 
 impl State {
@@ -503,6 +513,10 @@ impl State {
             textures: crate::texture::Textures::default(),
             eval_maps: EvalMaps::default(),
             eval_grid: EvalGrid::default(),
+            raster_pos: RasterPos::default(),
+            pixel: crate::pixels::PixelTransfer::default(),
+            pixel_maps: Default::default(),
+            stipple: Stipple::default(),
         }
     }
 
@@ -723,6 +737,67 @@ impl Default for EvalGrid {
             u1: [0.0, 1.0],
             n2: [1, 1],
             d2: [0.0, 1.0, 0.0, 1.0],
+        }
+    }
+}
+
+/// The current raster position (GL 2.1 §2.13, table 6.5, attribute "current"): what RasterPos and
+/// WindowPos set, and what Bitmap, DrawPixels and CopyPixels read (and feedback reports).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterPos {
+    /// CURRENT_RASTER_POSITION_VALID: RasterPos of a point outside the clip volume (frustum and
+    /// enabled user clip planes) makes it invalid; WindowPos always valid.
+    pub valid: bool,
+    /// CURRENT_RASTER_POSITION: window x, y, z (z after DepthRange) and clip w.
+    pub window: Vec4,
+    /// CURRENT_RASTER_COLOR: the colour lighting gives the point (or the current colour).
+    pub color: Vec4,
+    /// CURRENT_RASTER_SECONDARY_COLOR.
+    pub secondary_color: Vec4,
+    /// CURRENT_RASTER_INDEX (colour-index mode only; kept for queries).
+    pub index: f32,
+    /// CURRENT_RASTER_TEXTURE_COORDS of each unit (after TexGen and the texture matrix).
+    pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
+    /// CURRENT_RASTER_DISTANCE: the eye distance, or the fog coordinate under FOG_COORD_SRC
+    /// FOG_COORD.
+    pub distance: f32,
+}
+
+impl Default for RasterPos {
+    /// Table 6.5's initial values: (0, 0, 0, 1), valid, white, secondary (0, 0, 0, 1), index
+    /// 1, texture coordinates (0, 0, 0, 1), distance 0.
+    fn default() -> Self {
+        Self {
+            valid: true,
+            window: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            color: Vec4::ONE,
+            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            index: 1.0,
+            tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
+            distance: 0.0,
+        }
+    }
+}
+
+/// Line stipple (GL 2.1 §3.4.2, table 6.12) and polygon stipple (§3.5.6, table 6.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stipple {
+    /// `LINE_STIPPLE_PATTERN`: bit i (from the least significant) is the i-th pixel of 16.
+    pub line_pattern: u16,
+    /// `LINE_STIPPLE_REPEAT`: the factor, clamped to [1, 256] when specified.
+    pub line_repeat: i32,
+    /// `POLYGON_STIPPLE`: row r is window rows y with y mod 32 = r; bit x (from the least
+    /// significant) is window columns with x mod 32 = x.
+    pub polygon: [u32; 32],
+}
+
+impl Default for Stipple {
+    /// Tables 6.12, 6.13: pattern all ones, repeat 1, polygon stipple all ones.
+    fn default() -> Self {
+        Self {
+            line_pattern: 0xFFFF,
+            line_repeat: 1,
+            polygon: [u32::MAX; 32],
         }
     }
 }

@@ -180,62 +180,15 @@ pub unsafe fn call_lists(_gl: &mut Gl, n: i32, ty: u32, p: *const c_void) -> Vec
     unsafe { read::bytes(p, n.saturating_mul(size)) }.to_vec()
 }
 
-/// Components per pixel of a client format, and bytes per component of a type, with packed
-/// types as one component of their whole size (GL 2.1 tables 3.5, 3.6, 3.8). `None` for
-/// BITMAP (see [`image_bytes`]) and for what is not a format or type.
-fn element(format: u32, ty: u32) -> Option<(usize, usize)> {
-    let components = match format {
-        gl::COLOR_INDEX | gl::STENCIL_INDEX | gl::DEPTH_COMPONENT => 1,
-        gl::RED | gl::GREEN | gl::BLUE | gl::ALPHA | gl::LUMINANCE => 1,
-        gl::LUMINANCE_ALPHA => 2,
-        gl::RGB | gl::BGR => 3,
-        gl::RGBA | gl::BGRA => 4,
-        _ => return None,
-    };
-    Some(match ty {
-        gl::UNSIGNED_BYTE | gl::BYTE => (components, 1),
-        gl::UNSIGNED_SHORT | gl::SHORT => (components, 2),
-        gl::UNSIGNED_INT | gl::INT | gl::FLOAT => (components, 4),
-        gl::UNSIGNED_BYTE_3_3_2 | gl::UNSIGNED_BYTE_2_3_3_REV => (1, 1),
-        gl::UNSIGNED_SHORT_5_6_5
-        | gl::UNSIGNED_SHORT_5_6_5_REV
-        | gl::UNSIGNED_SHORT_4_4_4_4
-        | gl::UNSIGNED_SHORT_4_4_4_4_REV
-        | gl::UNSIGNED_SHORT_5_5_5_1
-        | gl::UNSIGNED_SHORT_1_5_5_5_REV => (1, 2),
-        gl::UNSIGNED_INT_8_8_8_8
-        | gl::UNSIGNED_INT_8_8_8_8_REV
-        | gl::UNSIGNED_INT_10_10_10_2
-        | gl::UNSIGNED_INT_2_10_10_10_REV => (1, 4),
-        _ => return None,
-    })
-}
-
 /// The bytes a `width` x `height` image of `format`/`ty` spans in client memory under
-/// `modes` (§3.6.4; BITMAP rows are bits, §3.7). 0 when the format or type is not one (the
-/// command answers with its error, before it reads anything).
+/// `modes` (§3.6.4; BITMAP rows are bits, §3.7), as the core lays it out. 0 when the format
+/// or type is not one, or the size is negative (the command answers with its error, before it
+/// reads anything).
 pub fn image_bytes(modes: &PixelModes, width: i32, height: i32, format: u32, ty: u32) -> usize {
-    if ty == gl::BITMAP {
-        let (w, h) = (width.max(0) as usize, height.max(0) as usize);
-        if w == 0 || h == 0 {
-            return 0;
-        }
-        let l = if modes.row_length > 0 {
-            modes.row_length as usize
-        } else {
-            w
-        };
-        let a = modes.alignment.clamp(1, 8) as usize;
-        let stride = l.div_ceil(8).next_multiple_of(a);
-        let skip_rows = modes.skip_rows.max(0) as usize;
-        let skip_pixels = modes.skip_pixels.max(0) as usize;
-        return stride
-            .saturating_mul(skip_rows + h - 1)
-            .saturating_add((skip_pixels + w).div_ceil(8));
-    }
-    element(format, ty)
-        .and_then(|(c, s)| modes.layout(width, height, c, s))
-        .map_or(0, |l| l.need)
+    fixedgl::pixels::check(format, ty)
+        .ok()
+        .and_then(|f| modes.image_layout(f, width, height))
+        .map_or(0, |l| l.need())
 }
 
 /// Pixels to unpack: NULL stays NULL (TexImage2D then leaves the image undefined).
@@ -279,6 +232,44 @@ pub unsafe fn tex_sub_image_2d(
     _level: i32,
     _x: i32,
     _y: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Vec<u8> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, height, format, ty, p) }.unwrap_or_default()
+}
+
+/// PolygonStipple's 32x32 mask, a bitmap read as the unpack modes lay it out; none for NULL
+/// (the command then answers INVALID_OPERATION, as for a short mask).
+pub unsafe fn polygon_stipple(gl: &mut Gl, p: *const u8) -> Vec<u8> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, 32, 32, gl::COLOR_INDEX, gl::BITMAP, p.cast()) }.unwrap_or_default()
+}
+
+/// Bitmap's bits, as the unpack modes lay out a `width` x `height` bitmap; None for NULL
+/// (then Bitmap only moves the raster position, §3.7).
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn bitmap(
+    gl: &mut Gl,
+    width: i32,
+    height: i32,
+    _xorig: f32,
+    _yorig: f32,
+    _xmove: f32,
+    _ymove: f32,
+    p: *const u8,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, height, gl::COLOR_INDEX, gl::BITMAP, p.cast()) }
+}
+
+/// DrawPixels' image, as the unpack modes lay it out; none for NULL (the command then answers
+/// as for a short image).
+pub unsafe fn draw_pixels(
+    gl: &mut Gl,
     width: i32,
     height: i32,
     format: u32,

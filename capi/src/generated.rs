@@ -391,7 +391,14 @@ pub unsafe extern "C" fn glBitmap(
     ymove: f32,
     bitmap: *const u8,
 ) {
-    unimplemented("glBitmap");
+    with_gl("glBitmap", |gl| {
+        let bitmap = Box::new(args::bitmap(
+            gl, width, height, xorig, yorig, xmove, ymove, bitmap,
+        ));
+        gl.ctx.execute(&Call::Bitmap(
+            width, height, xorig, yorig, xmove, ymove, bitmap,
+        ));
+    })
 }
 
 /// `glColor3b(red, green, blue)`.
@@ -894,193 +901,337 @@ pub unsafe extern "C" fn glNormal3sv(v: *const i16) {
 /// `glRasterPos2d(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2d(x: f64, y: f64) {
-    unimplemented("glRasterPos2d");
+    with_gl("glRasterPos2d", |gl| {
+        gl.ctx.raster_pos2d(x, y);
+    })
 }
 
 /// `glRasterPos2dv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2dv(v: *const f64) {
-    unimplemented("glRasterPos2dv");
+    with_gl("glRasterPos2dv", |gl| {
+        let v = match read::array::<f64, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos2dv(v));
+    })
 }
 
 /// `glRasterPos2f(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2f(x: f32, y: f32) {
-    unimplemented("glRasterPos2f");
+    with_gl("glRasterPos2f", |gl| {
+        gl.ctx.raster_pos2f(x, y);
+    })
 }
 
 /// `glRasterPos2fv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2fv(v: *const f32) {
-    unimplemented("glRasterPos2fv");
+    with_gl("glRasterPos2fv", |gl| {
+        let v = match read::array::<f32, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos2fv(v));
+    })
 }
 
 /// `glRasterPos2i(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2i(x: i32, y: i32) {
-    unimplemented("glRasterPos2i");
+    with_gl("glRasterPos2i", |gl| {
+        gl.ctx.raster_pos2i(x, y);
+    })
 }
 
 /// `glRasterPos2iv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2iv(v: *const i32) {
-    unimplemented("glRasterPos2iv");
+    with_gl("glRasterPos2iv", |gl| {
+        let v = match read::array::<i32, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos2iv(v));
+    })
 }
 
 /// `glRasterPos2s(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2s(x: i16, y: i16) {
-    unimplemented("glRasterPos2s");
+    with_gl("glRasterPos2s", |gl| {
+        gl.ctx.raster_pos2s(x, y);
+    })
 }
 
 /// `glRasterPos2sv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos2sv(v: *const i16) {
-    unimplemented("glRasterPos2sv");
+    with_gl("glRasterPos2sv", |gl| {
+        let v = match read::array::<i16, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos2sv(v));
+    })
 }
 
 /// `glRasterPos3d(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3d(x: f64, y: f64, z: f64) {
-    unimplemented("glRasterPos3d");
+    with_gl("glRasterPos3d", |gl| {
+        gl.ctx.raster_pos3d(x, y, z);
+    })
 }
 
 /// `glRasterPos3dv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3dv(v: *const f64) {
-    unimplemented("glRasterPos3dv");
+    with_gl("glRasterPos3dv", |gl| {
+        let v = match read::array::<f64, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos3dv(v));
+    })
 }
 
 /// `glRasterPos3f(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3f(x: f32, y: f32, z: f32) {
-    unimplemented("glRasterPos3f");
+    with_gl("glRasterPos3f", |gl| {
+        gl.ctx.raster_pos3f(x, y, z);
+    })
 }
 
 /// `glRasterPos3fv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3fv(v: *const f32) {
-    unimplemented("glRasterPos3fv");
+    with_gl("glRasterPos3fv", |gl| {
+        let v = match read::array::<f32, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos3fv(v));
+    })
 }
 
 /// `glRasterPos3i(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3i(x: i32, y: i32, z: i32) {
-    unimplemented("glRasterPos3i");
+    with_gl("glRasterPos3i", |gl| {
+        gl.ctx.raster_pos3i(x, y, z);
+    })
 }
 
 /// `glRasterPos3iv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3iv(v: *const i32) {
-    unimplemented("glRasterPos3iv");
+    with_gl("glRasterPos3iv", |gl| {
+        let v = match read::array::<i32, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos3iv(v));
+    })
 }
 
 /// `glRasterPos3s(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3s(x: i16, y: i16, z: i16) {
-    unimplemented("glRasterPos3s");
+    with_gl("glRasterPos3s", |gl| {
+        gl.ctx.raster_pos3s(x, y, z);
+    })
 }
 
 /// `glRasterPos3sv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos3sv(v: *const i16) {
-    unimplemented("glRasterPos3sv");
+    with_gl("glRasterPos3sv", |gl| {
+        let v = match read::array::<i16, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos3sv(v));
+    })
 }
 
 /// `glRasterPos4d(x, y, z, w)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4d(x: f64, y: f64, z: f64, w: f64) {
-    unimplemented("glRasterPos4d");
+    with_gl("glRasterPos4d", |gl| {
+        gl.ctx.raster_pos4d(x, y, z, w);
+    })
 }
 
 /// `glRasterPos4dv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4dv(v: *const f64) {
-    unimplemented("glRasterPos4dv");
+    with_gl("glRasterPos4dv", |gl| {
+        let v = match read::array::<f64, 4>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos4dv(v));
+    })
 }
 
 /// `glRasterPos4f(x, y, z, w)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4f(x: f32, y: f32, z: f32, w: f32) {
-    unimplemented("glRasterPos4f");
+    with_gl("glRasterPos4f", |gl| {
+        gl.ctx.raster_pos4f(x, y, z, w);
+    })
 }
 
 /// `glRasterPos4fv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4fv(v: *const f32) {
-    unimplemented("glRasterPos4fv");
+    with_gl("glRasterPos4fv", |gl| {
+        let v = match read::array::<f32, 4>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos4fv(v));
+    })
 }
 
 /// `glRasterPos4i(x, y, z, w)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4i(x: i32, y: i32, z: i32, w: i32) {
-    unimplemented("glRasterPos4i");
+    with_gl("glRasterPos4i", |gl| {
+        gl.ctx.raster_pos4i(x, y, z, w);
+    })
 }
 
 /// `glRasterPos4iv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4iv(v: *const i32) {
-    unimplemented("glRasterPos4iv");
+    with_gl("glRasterPos4iv", |gl| {
+        let v = match read::array::<i32, 4>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos4iv(v));
+    })
 }
 
 /// `glRasterPos4s(x, y, z, w)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4s(x: i16, y: i16, z: i16, w: i16) {
-    unimplemented("glRasterPos4s");
+    with_gl("glRasterPos4s", |gl| {
+        gl.ctx.raster_pos4s(x, y, z, w);
+    })
 }
 
 /// `glRasterPos4sv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRasterPos4sv(v: *const i16) {
-    unimplemented("glRasterPos4sv");
+    with_gl("glRasterPos4sv", |gl| {
+        let v = match read::array::<i16, 4>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::RasterPos4sv(v));
+    })
 }
 
 /// `glRectd(x1, y1, x2, y2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectd(x1: f64, y1: f64, x2: f64, y2: f64) {
-    unimplemented("glRectd");
+    with_gl("glRectd", |gl| {
+        gl.ctx.rectd(x1, y1, x2, y2);
+    })
 }
 
 /// `glRectdv(v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectdv(v1: *const f64, v2: *const f64) {
-    unimplemented("glRectdv");
+    with_gl("glRectdv", |gl| {
+        let v1 = match read::array::<f64, 2>(v1) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        let v2 = match read::array::<f64, 2>(v2) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Rectdv(v1, v2));
+    })
 }
 
 /// `glRectf(x1, y1, x2, y2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectf(x1: f32, y1: f32, x2: f32, y2: f32) {
-    unimplemented("glRectf");
+    with_gl("glRectf", |gl| {
+        gl.ctx.rectf(x1, y1, x2, y2);
+    })
 }
 
 /// `glRectfv(v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectfv(v1: *const f32, v2: *const f32) {
-    unimplemented("glRectfv");
+    with_gl("glRectfv", |gl| {
+        let v1 = match read::array::<f32, 2>(v1) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        let v2 = match read::array::<f32, 2>(v2) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Rectfv(v1, v2));
+    })
 }
 
 /// `glRecti(x1, y1, x2, y2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRecti(x1: i32, y1: i32, x2: i32, y2: i32) {
-    unimplemented("glRecti");
+    with_gl("glRecti", |gl| {
+        gl.ctx.recti(x1, y1, x2, y2);
+    })
 }
 
 /// `glRectiv(v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectiv(v1: *const i32, v2: *const i32) {
-    unimplemented("glRectiv");
+    with_gl("glRectiv", |gl| {
+        let v1 = match read::array::<i32, 2>(v1) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        let v2 = match read::array::<i32, 2>(v2) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Rectiv(v1, v2));
+    })
 }
 
 /// `glRects(x1, y1, x2, y2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRects(x1: i16, y1: i16, x2: i16, y2: i16) {
-    unimplemented("glRects");
+    with_gl("glRects", |gl| {
+        gl.ctx.rects(x1, y1, x2, y2);
+    })
 }
 
 /// `glRectsv(v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glRectsv(v1: *const i16, v2: *const i16) {
-    unimplemented("glRectsv");
+    with_gl("glRectsv", |gl| {
+        let v1 = match read::array::<i16, 2>(v1) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        let v2 = match read::array::<i16, 2>(v2) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Rectsv(v1, v2));
+    })
 }
 
 /// `glTexCoord1d(s)`.
@@ -1768,7 +1919,9 @@ pub unsafe extern "C" fn glLightModeliv(pname: u32, params: *const i32) {
 /// `glLineStipple(factor, pattern)`.
 #[no_mangle]
 pub unsafe extern "C" fn glLineStipple(factor: i32, pattern: u16) {
-    unimplemented("glLineStipple");
+    with_gl("glLineStipple", |gl| {
+        gl.ctx.line_stipple(factor, pattern);
+    })
 }
 
 /// `glMaterialf(face, pname, param)`.
@@ -1808,7 +1961,10 @@ pub unsafe extern "C" fn glMaterialiv(face: u32, pname: u32, params: *const i32)
 /// `glPolygonStipple(mask)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const u8) {
-    unimplemented("glPolygonStipple");
+    with_gl("glPolygonStipple", |gl| {
+        let mask = args::polygon_stipple(gl, mask);
+        gl.ctx.execute(&Call::PolygonStipple(mask));
+    })
 }
 
 /// `glShadeModel(mode)`.
@@ -2228,43 +2384,60 @@ pub unsafe extern "C" fn glAlphaFunc(func: u32, ref_: f32) {
 /// `glPixelZoom(xfactor, yfactor)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelZoom(xfactor: f32, yfactor: f32) {
-    unimplemented("glPixelZoom");
+    with_gl("glPixelZoom", |gl| {
+        gl.ctx.pixel_zoom(xfactor, yfactor);
+    })
 }
 
 /// `glPixelTransferf(pname, param)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelTransferf(pname: u32, param: f32) {
-    unimplemented("glPixelTransferf");
+    with_gl("glPixelTransferf", |gl| {
+        gl.ctx.pixel_transferf(pname, param);
+    })
 }
 
 /// `glPixelTransferi(pname, param)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelTransferi(pname: u32, param: i32) {
-    unimplemented("glPixelTransferi");
+    with_gl("glPixelTransferi", |gl| {
+        gl.ctx.pixel_transferi(pname, param);
+    })
 }
 
 /// `glPixelMapfv(map, mapsize, values)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapfv(map: u32, mapsize: i32, values: *const f32) {
-    unimplemented("glPixelMapfv");
+    with_gl("glPixelMapfv", |gl| {
+        let values = read::values(values, mapsize, fixedgl::pixels::MAX_PIXEL_MAP_TABLE);
+        gl.ctx.execute(&Call::PixelMapfv(map, mapsize, values));
+    })
 }
 
 /// `glPixelMapuiv(map, mapsize, values)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapuiv(map: u32, mapsize: i32, values: *const u32) {
-    unimplemented("glPixelMapuiv");
+    with_gl("glPixelMapuiv", |gl| {
+        let values = read::values(values, mapsize, fixedgl::pixels::MAX_PIXEL_MAP_TABLE);
+        gl.ctx.execute(&Call::PixelMapuiv(map, mapsize, values));
+    })
 }
 
 /// `glPixelMapusv(map, mapsize, values)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapusv(map: u32, mapsize: i32, values: *const u16) {
-    unimplemented("glPixelMapusv");
+    with_gl("glPixelMapusv", |gl| {
+        let values = read::values(values, mapsize, fixedgl::pixels::MAX_PIXEL_MAP_TABLE);
+        gl.ctx.execute(&Call::PixelMapusv(map, mapsize, values));
+    })
 }
 
 /// `glCopyPixels(x, y, width, height, type)`.
 #[no_mangle]
 pub unsafe extern "C" fn glCopyPixels(x: i32, y: i32, width: i32, height: i32, type_: u32) {
-    unimplemented("glCopyPixels");
+    with_gl("glCopyPixels", |gl| {
+        gl.ctx.copy_pixels(x, y, width, height, type_);
+    })
 }
 
 /// `glDrawPixels(width, height, format, type, pixels)`.
@@ -2276,31 +2449,11 @@ pub unsafe extern "C" fn glDrawPixels(
     type_: u32,
     pixels: *const c_void,
 ) {
-    unimplemented("glDrawPixels");
-}
-
-/// `glGetPixelMapfv(map, values)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetPixelMapfv(map: u32, values: *mut f32) {
-    unimplemented("glGetPixelMapfv");
-}
-
-/// `glGetPixelMapuiv(map, values)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetPixelMapuiv(map: u32, values: *mut u32) {
-    unimplemented("glGetPixelMapuiv");
-}
-
-/// `glGetPixelMapusv(map, values)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetPixelMapusv(map: u32, values: *mut u16) {
-    unimplemented("glGetPixelMapusv");
-}
-
-/// `glGetPolygonStipple(mask)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut u8) {
-    unimplemented("glGetPolygonStipple");
+    with_gl("glDrawPixels", |gl| {
+        let pixels = Box::new(args::draw_pixels(gl, width, height, format, type_, pixels));
+        gl.ctx
+            .execute(&Call::DrawPixels(width, height, format, type_, pixels));
+    })
 }
 
 /// `glFrustum(left, right, bottom, top, zNear, zFar)`.
@@ -3621,97 +3774,161 @@ pub unsafe extern "C" fn glSecondaryColorPointer(
 /// `glWindowPos2d(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2d(x: f64, y: f64) {
-    unimplemented("glWindowPos2d");
+    with_gl("glWindowPos2d", |gl| {
+        gl.ctx.window_pos2d(x, y);
+    })
 }
 
 /// `glWindowPos2dv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2dv(v: *const f64) {
-    unimplemented("glWindowPos2dv");
+    with_gl("glWindowPos2dv", |gl| {
+        let v = match read::array::<f64, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos2dv(v));
+    })
 }
 
 /// `glWindowPos2f(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2f(x: f32, y: f32) {
-    unimplemented("glWindowPos2f");
+    with_gl("glWindowPos2f", |gl| {
+        gl.ctx.window_pos2f(x, y);
+    })
 }
 
 /// `glWindowPos2fv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2fv(v: *const f32) {
-    unimplemented("glWindowPos2fv");
+    with_gl("glWindowPos2fv", |gl| {
+        let v = match read::array::<f32, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos2fv(v));
+    })
 }
 
 /// `glWindowPos2i(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2i(x: i32, y: i32) {
-    unimplemented("glWindowPos2i");
+    with_gl("glWindowPos2i", |gl| {
+        gl.ctx.window_pos2i(x, y);
+    })
 }
 
 /// `glWindowPos2iv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2iv(v: *const i32) {
-    unimplemented("glWindowPos2iv");
+    with_gl("glWindowPos2iv", |gl| {
+        let v = match read::array::<i32, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos2iv(v));
+    })
 }
 
 /// `glWindowPos2s(x, y)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2s(x: i16, y: i16) {
-    unimplemented("glWindowPos2s");
+    with_gl("glWindowPos2s", |gl| {
+        gl.ctx.window_pos2s(x, y);
+    })
 }
 
 /// `glWindowPos2sv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos2sv(v: *const i16) {
-    unimplemented("glWindowPos2sv");
+    with_gl("glWindowPos2sv", |gl| {
+        let v = match read::array::<i16, 2>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos2sv(v));
+    })
 }
 
 /// `glWindowPos3d(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3d(x: f64, y: f64, z: f64) {
-    unimplemented("glWindowPos3d");
+    with_gl("glWindowPos3d", |gl| {
+        gl.ctx.window_pos3d(x, y, z);
+    })
 }
 
 /// `glWindowPos3dv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3dv(v: *const f64) {
-    unimplemented("glWindowPos3dv");
+    with_gl("glWindowPos3dv", |gl| {
+        let v = match read::array::<f64, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos3dv(v));
+    })
 }
 
 /// `glWindowPos3f(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3f(x: f32, y: f32, z: f32) {
-    unimplemented("glWindowPos3f");
+    with_gl("glWindowPos3f", |gl| {
+        gl.ctx.window_pos3f(x, y, z);
+    })
 }
 
 /// `glWindowPos3fv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3fv(v: *const f32) {
-    unimplemented("glWindowPos3fv");
+    with_gl("glWindowPos3fv", |gl| {
+        let v = match read::array::<f32, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos3fv(v));
+    })
 }
 
 /// `glWindowPos3i(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3i(x: i32, y: i32, z: i32) {
-    unimplemented("glWindowPos3i");
+    with_gl("glWindowPos3i", |gl| {
+        gl.ctx.window_pos3i(x, y, z);
+    })
 }
 
 /// `glWindowPos3iv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3iv(v: *const i32) {
-    unimplemented("glWindowPos3iv");
+    with_gl("glWindowPos3iv", |gl| {
+        let v = match read::array::<i32, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos3iv(v));
+    })
 }
 
 /// `glWindowPos3s(x, y, z)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3s(x: i16, y: i16, z: i16) {
-    unimplemented("glWindowPos3s");
+    with_gl("glWindowPos3s", |gl| {
+        gl.ctx.window_pos3s(x, y, z);
+    })
 }
 
 /// `glWindowPos3sv(v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glWindowPos3sv(v: *const i16) {
-    unimplemented("glWindowPos3sv");
+    with_gl("glWindowPos3sv", |gl| {
+        let v = match read::array::<i16, 3>(v) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::WindowPos3sv(v));
+    })
 }
 
 /// `glBlendColor(red, green, blue, alpha)`.
@@ -4512,6 +4729,198 @@ pub unsafe extern "C" fn glUnmapBufferOES(target: u32) -> u8 {
     glUnmapBuffer(target)
 }
 
+/// `glWindowPos2dARB`: [`glWindowPos2d`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dARB(x: f64, y: f64) {
+    glWindowPos2d(x, y)
+}
+
+/// `glWindowPos2dMESA`: [`glWindowPos2d`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dMESA(x: f64, y: f64) {
+    glWindowPos2d(x, y)
+}
+
+/// `glWindowPos2dvARB`: [`glWindowPos2dv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dvARB(v: *const f64) {
+    glWindowPos2dv(v)
+}
+
+/// `glWindowPos2dvMESA`: [`glWindowPos2dv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dvMESA(v: *const f64) {
+    glWindowPos2dv(v)
+}
+
+/// `glWindowPos2fARB`: [`glWindowPos2f`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fARB(x: f32, y: f32) {
+    glWindowPos2f(x, y)
+}
+
+/// `glWindowPos2fMESA`: [`glWindowPos2f`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fMESA(x: f32, y: f32) {
+    glWindowPos2f(x, y)
+}
+
+/// `glWindowPos2fvARB`: [`glWindowPos2fv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fvARB(v: *const f32) {
+    glWindowPos2fv(v)
+}
+
+/// `glWindowPos2fvMESA`: [`glWindowPos2fv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fvMESA(v: *const f32) {
+    glWindowPos2fv(v)
+}
+
+/// `glWindowPos2iARB`: [`glWindowPos2i`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2iARB(x: i32, y: i32) {
+    glWindowPos2i(x, y)
+}
+
+/// `glWindowPos2iMESA`: [`glWindowPos2i`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2iMESA(x: i32, y: i32) {
+    glWindowPos2i(x, y)
+}
+
+/// `glWindowPos2ivARB`: [`glWindowPos2iv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2ivARB(v: *const i32) {
+    glWindowPos2iv(v)
+}
+
+/// `glWindowPos2ivMESA`: [`glWindowPos2iv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2ivMESA(v: *const i32) {
+    glWindowPos2iv(v)
+}
+
+/// `glWindowPos2sARB`: [`glWindowPos2s`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2sARB(x: i16, y: i16) {
+    glWindowPos2s(x, y)
+}
+
+/// `glWindowPos2sMESA`: [`glWindowPos2s`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2sMESA(x: i16, y: i16) {
+    glWindowPos2s(x, y)
+}
+
+/// `glWindowPos2svARB`: [`glWindowPos2sv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2svARB(v: *const i16) {
+    glWindowPos2sv(v)
+}
+
+/// `glWindowPos2svMESA`: [`glWindowPos2sv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2svMESA(v: *const i16) {
+    glWindowPos2sv(v)
+}
+
+/// `glWindowPos3dARB`: [`glWindowPos3d`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dARB(x: f64, y: f64, z: f64) {
+    glWindowPos3d(x, y, z)
+}
+
+/// `glWindowPos3dMESA`: [`glWindowPos3d`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dMESA(x: f64, y: f64, z: f64) {
+    glWindowPos3d(x, y, z)
+}
+
+/// `glWindowPos3dvARB`: [`glWindowPos3dv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dvARB(v: *const f64) {
+    glWindowPos3dv(v)
+}
+
+/// `glWindowPos3dvMESA`: [`glWindowPos3dv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dvMESA(v: *const f64) {
+    glWindowPos3dv(v)
+}
+
+/// `glWindowPos3fARB`: [`glWindowPos3f`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fARB(x: f32, y: f32, z: f32) {
+    glWindowPos3f(x, y, z)
+}
+
+/// `glWindowPos3fMESA`: [`glWindowPos3f`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fMESA(x: f32, y: f32, z: f32) {
+    glWindowPos3f(x, y, z)
+}
+
+/// `glWindowPos3fvARB`: [`glWindowPos3fv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fvARB(v: *const f32) {
+    glWindowPos3fv(v)
+}
+
+/// `glWindowPos3fvMESA`: [`glWindowPos3fv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fvMESA(v: *const f32) {
+    glWindowPos3fv(v)
+}
+
+/// `glWindowPos3iARB`: [`glWindowPos3i`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3iARB(x: i32, y: i32, z: i32) {
+    glWindowPos3i(x, y, z)
+}
+
+/// `glWindowPos3iMESA`: [`glWindowPos3i`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3iMESA(x: i32, y: i32, z: i32) {
+    glWindowPos3i(x, y, z)
+}
+
+/// `glWindowPos3ivARB`: [`glWindowPos3iv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3ivARB(v: *const i32) {
+    glWindowPos3iv(v)
+}
+
+/// `glWindowPos3ivMESA`: [`glWindowPos3iv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3ivMESA(v: *const i32) {
+    glWindowPos3iv(v)
+}
+
+/// `glWindowPos3sARB`: [`glWindowPos3s`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3sARB(x: i16, y: i16, z: i16) {
+    glWindowPos3s(x, y, z)
+}
+
+/// `glWindowPos3sMESA`: [`glWindowPos3s`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3sMESA(x: i16, y: i16, z: i16) {
+    glWindowPos3s(x, y, z)
+}
+
+/// `glWindowPos3svARB`: [`glWindowPos3sv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3svARB(v: *const i16) {
+    glWindowPos3sv(v)
+}
+
+/// `glWindowPos3svMESA`: [`glWindowPos3sv`].
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3svMESA(v: *const i16) {
+    glWindowPos3sv(v)
+}
+
 /// `GetProcAddress`: the entry point of an implemented command (or an alias of one);
 /// `None` for one fixedgl does not implement, so that a program can tell.
 pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
@@ -4529,6 +4938,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glBindBufferARB" => glBindBuffer as *const c_void,
         b"glBindTexture" => glBindTexture as *const c_void,
         b"glBindTextureEXT" => glBindTexture as *const c_void,
+        b"glBitmap" => glBitmap as *const c_void,
         b"glBlendColor" => glBlendColor as *const c_void,
         b"glBlendColorEXT" => glBlendColor as *const c_void,
         b"glBlendEquation" => glBlendEquation as *const c_void,
@@ -4588,6 +4998,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glColorMask" => glColorMask as *const c_void,
         b"glColorMaterial" => glColorMaterial as *const c_void,
         b"glColorPointer" => glColorPointer as *const c_void,
+        b"glCopyPixels" => glCopyPixels as *const c_void,
         b"glCopyTexImage2D" => glCopyTexImage2D as *const c_void,
         b"glCopyTexImage2DEXT" => glCopyTexImage2D as *const c_void,
         b"glCopyTexSubImage2D" => glCopyTexSubImage2D as *const c_void,
@@ -4608,6 +5019,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glDrawArraysEXT" => glDrawArrays as *const c_void,
         b"glDrawBuffer" => glDrawBuffer as *const c_void,
         b"glDrawElements" => glDrawElements as *const c_void,
+        b"glDrawPixels" => glDrawPixels as *const c_void,
         b"glDrawRangeElements" => glDrawRangeElements as *const c_void,
         b"glDrawRangeElementsEXT" => glDrawRangeElements as *const c_void,
         b"glEdgeFlag" => glEdgeFlag as *const c_void,
@@ -4676,9 +5088,13 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetMapiv" => glGetMapiv as *const c_void,
         b"glGetMaterialfv" => glGetMaterialfv as *const c_void,
         b"glGetMaterialiv" => glGetMaterialiv as *const c_void,
+        b"glGetPixelMapfv" => glGetPixelMapfv as *const c_void,
+        b"glGetPixelMapuiv" => glGetPixelMapuiv as *const c_void,
+        b"glGetPixelMapusv" => glGetPixelMapusv as *const c_void,
         b"glGetPointerv" => glGetPointerv as *const c_void,
         b"glGetPointervEXT" => glGetPointerv as *const c_void,
         b"glGetPointervKHR" => glGetPointerv as *const c_void,
+        b"glGetPolygonStipple" => glGetPolygonStipple as *const c_void,
         b"glGetQueryObjectiv" => glGetQueryObjectiv as *const c_void,
         b"glGetQueryObjectivARB" => glGetQueryObjectiv as *const c_void,
         b"glGetQueryObjectivEXT" => glGetQueryObjectiv as *const c_void,
@@ -4715,6 +5131,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glLightfv" => glLightfv as *const c_void,
         b"glLighti" => glLighti as *const c_void,
         b"glLightiv" => glLightiv as *const c_void,
+        b"glLineStipple" => glLineStipple as *const c_void,
         b"glLineWidth" => glLineWidth as *const c_void,
         b"glListBase" => glListBase as *const c_void,
         b"glLoadIdentity" => glLoadIdentity as *const c_void,
@@ -4830,12 +5247,19 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glNormalPointer" => glNormalPointer as *const c_void,
         b"glOrtho" => glOrtho as *const c_void,
         b"glPassThrough" => glPassThrough as *const c_void,
+        b"glPixelMapfv" => glPixelMapfv as *const c_void,
+        b"glPixelMapuiv" => glPixelMapuiv as *const c_void,
+        b"glPixelMapusv" => glPixelMapusv as *const c_void,
         b"glPixelStoref" => glPixelStoref as *const c_void,
         b"glPixelStorei" => glPixelStorei as *const c_void,
+        b"glPixelTransferf" => glPixelTransferf as *const c_void,
+        b"glPixelTransferi" => glPixelTransferi as *const c_void,
+        b"glPixelZoom" => glPixelZoom as *const c_void,
         b"glPointSize" => glPointSize as *const c_void,
         b"glPolygonMode" => glPolygonMode as *const c_void,
         b"glPolygonModeNV" => glPolygonMode as *const c_void,
         b"glPolygonOffset" => glPolygonOffset as *const c_void,
+        b"glPolygonStipple" => glPolygonStipple as *const c_void,
         b"glPopAttrib" => glPopAttrib as *const c_void,
         b"glPopClientAttrib" => glPopClientAttrib as *const c_void,
         b"glPopMatrix" => glPopMatrix as *const c_void,
@@ -4844,8 +5268,40 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glPushClientAttrib" => glPushClientAttrib as *const c_void,
         b"glPushMatrix" => glPushMatrix as *const c_void,
         b"glPushName" => glPushName as *const c_void,
+        b"glRasterPos2d" => glRasterPos2d as *const c_void,
+        b"glRasterPos2dv" => glRasterPos2dv as *const c_void,
+        b"glRasterPos2f" => glRasterPos2f as *const c_void,
+        b"glRasterPos2fv" => glRasterPos2fv as *const c_void,
+        b"glRasterPos2i" => glRasterPos2i as *const c_void,
+        b"glRasterPos2iv" => glRasterPos2iv as *const c_void,
+        b"glRasterPos2s" => glRasterPos2s as *const c_void,
+        b"glRasterPos2sv" => glRasterPos2sv as *const c_void,
+        b"glRasterPos3d" => glRasterPos3d as *const c_void,
+        b"glRasterPos3dv" => glRasterPos3dv as *const c_void,
+        b"glRasterPos3f" => glRasterPos3f as *const c_void,
+        b"glRasterPos3fv" => glRasterPos3fv as *const c_void,
+        b"glRasterPos3i" => glRasterPos3i as *const c_void,
+        b"glRasterPos3iv" => glRasterPos3iv as *const c_void,
+        b"glRasterPos3s" => glRasterPos3s as *const c_void,
+        b"glRasterPos3sv" => glRasterPos3sv as *const c_void,
+        b"glRasterPos4d" => glRasterPos4d as *const c_void,
+        b"glRasterPos4dv" => glRasterPos4dv as *const c_void,
+        b"glRasterPos4f" => glRasterPos4f as *const c_void,
+        b"glRasterPos4fv" => glRasterPos4fv as *const c_void,
+        b"glRasterPos4i" => glRasterPos4i as *const c_void,
+        b"glRasterPos4iv" => glRasterPos4iv as *const c_void,
+        b"glRasterPos4s" => glRasterPos4s as *const c_void,
+        b"glRasterPos4sv" => glRasterPos4sv as *const c_void,
         b"glReadBuffer" => glReadBuffer as *const c_void,
         b"glReadPixels" => glReadPixels as *const c_void,
+        b"glRectd" => glRectd as *const c_void,
+        b"glRectdv" => glRectdv as *const c_void,
+        b"glRectf" => glRectf as *const c_void,
+        b"glRectfv" => glRectfv as *const c_void,
+        b"glRecti" => glRecti as *const c_void,
+        b"glRectiv" => glRectiv as *const c_void,
+        b"glRects" => glRects as *const c_void,
+        b"glRectsv" => glRectsv as *const c_void,
         b"glRenderMode" => glRenderMode as *const c_void,
         b"glRotated" => glRotated as *const c_void,
         b"glRotatef" => glRotatef as *const c_void,
@@ -4976,6 +5432,54 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glVertex4sv" => glVertex4sv as *const c_void,
         b"glVertexPointer" => glVertexPointer as *const c_void,
         b"glViewport" => glViewport as *const c_void,
+        b"glWindowPos2d" => glWindowPos2d as *const c_void,
+        b"glWindowPos2dARB" => glWindowPos2d as *const c_void,
+        b"glWindowPos2dMESA" => glWindowPos2d as *const c_void,
+        b"glWindowPos2dv" => glWindowPos2dv as *const c_void,
+        b"glWindowPos2dvARB" => glWindowPos2dv as *const c_void,
+        b"glWindowPos2dvMESA" => glWindowPos2dv as *const c_void,
+        b"glWindowPos2f" => glWindowPos2f as *const c_void,
+        b"glWindowPos2fARB" => glWindowPos2f as *const c_void,
+        b"glWindowPos2fMESA" => glWindowPos2f as *const c_void,
+        b"glWindowPos2fv" => glWindowPos2fv as *const c_void,
+        b"glWindowPos2fvARB" => glWindowPos2fv as *const c_void,
+        b"glWindowPos2fvMESA" => glWindowPos2fv as *const c_void,
+        b"glWindowPos2i" => glWindowPos2i as *const c_void,
+        b"glWindowPos2iARB" => glWindowPos2i as *const c_void,
+        b"glWindowPos2iMESA" => glWindowPos2i as *const c_void,
+        b"glWindowPos2iv" => glWindowPos2iv as *const c_void,
+        b"glWindowPos2ivARB" => glWindowPos2iv as *const c_void,
+        b"glWindowPos2ivMESA" => glWindowPos2iv as *const c_void,
+        b"glWindowPos2s" => glWindowPos2s as *const c_void,
+        b"glWindowPos2sARB" => glWindowPos2s as *const c_void,
+        b"glWindowPos2sMESA" => glWindowPos2s as *const c_void,
+        b"glWindowPos2sv" => glWindowPos2sv as *const c_void,
+        b"glWindowPos2svARB" => glWindowPos2sv as *const c_void,
+        b"glWindowPos2svMESA" => glWindowPos2sv as *const c_void,
+        b"glWindowPos3d" => glWindowPos3d as *const c_void,
+        b"glWindowPos3dARB" => glWindowPos3d as *const c_void,
+        b"glWindowPos3dMESA" => glWindowPos3d as *const c_void,
+        b"glWindowPos3dv" => glWindowPos3dv as *const c_void,
+        b"glWindowPos3dvARB" => glWindowPos3dv as *const c_void,
+        b"glWindowPos3dvMESA" => glWindowPos3dv as *const c_void,
+        b"glWindowPos3f" => glWindowPos3f as *const c_void,
+        b"glWindowPos3fARB" => glWindowPos3f as *const c_void,
+        b"glWindowPos3fMESA" => glWindowPos3f as *const c_void,
+        b"glWindowPos3fv" => glWindowPos3fv as *const c_void,
+        b"glWindowPos3fvARB" => glWindowPos3fv as *const c_void,
+        b"glWindowPos3fvMESA" => glWindowPos3fv as *const c_void,
+        b"glWindowPos3i" => glWindowPos3i as *const c_void,
+        b"glWindowPos3iARB" => glWindowPos3i as *const c_void,
+        b"glWindowPos3iMESA" => glWindowPos3i as *const c_void,
+        b"glWindowPos3iv" => glWindowPos3iv as *const c_void,
+        b"glWindowPos3ivARB" => glWindowPos3iv as *const c_void,
+        b"glWindowPos3ivMESA" => glWindowPos3iv as *const c_void,
+        b"glWindowPos3s" => glWindowPos3s as *const c_void,
+        b"glWindowPos3sARB" => glWindowPos3s as *const c_void,
+        b"glWindowPos3sMESA" => glWindowPos3s as *const c_void,
+        b"glWindowPos3sv" => glWindowPos3sv as *const c_void,
+        b"glWindowPos3svARB" => glWindowPos3sv as *const c_void,
+        b"glWindowPos3svMESA" => glWindowPos3sv as *const c_void,
         _ => return None,
     };
     Some(f)

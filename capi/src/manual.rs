@@ -210,6 +210,45 @@ pub unsafe extern "C" fn glReadPixels(
     })
 }
 
+/// The entries of pixel map `map` (PIXEL_MAP_*_SIZE); 0 for what is not a map (the command
+/// then answers INVALID_ENUM without writing).
+fn pixel_map_len(ctx: &mut Context, map: u32) -> usize {
+    if !(gl::PIXEL_MAP_I_TO_I..=gl::PIXEL_MAP_A_TO_A).contains(&map) {
+        return 0;
+    }
+    // Each map's size query is 0x40 past it (PIXEL_MAP_I_TO_I_SIZE = PIXEL_MAP_I_TO_I + 0x40).
+    let mut n = [0i32];
+    ctx.get_integerv(map + 0x40, &mut n);
+    usize::try_from(n[0]).unwrap_or(0)
+}
+
+macro_rules! get_pixel_map {
+    ($name:ident, $method:ident, $t:ty) => {
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(map: u32, values: *mut $t) {
+            with_gl(stringify!($name), |gl| {
+                let n = pixel_map_len(&mut gl.ctx, map);
+                // SAFETY: the map's PIXEL_MAP_*_SIZE values, as GL defines the output.
+                let out = unsafe { read::slice_mut(values, n) };
+                gl.ctx.$method(map, out);
+            })
+        }
+    };
+}
+get_pixel_map!(glGetPixelMapfv, get_pixel_mapfv, f32);
+get_pixel_map!(glGetPixelMapuiv, get_pixel_mapuiv, u32);
+get_pixel_map!(glGetPixelMapusv, get_pixel_mapusv, u16);
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut u8) {
+    with_gl("glGetPolygonStipple", |gl| {
+        let n = image_bytes(&gl.ctx.state().pack, 32, 32, gl::COLOR_INDEX, gl::BITMAP);
+        // SAFETY: the 32x32 bitmap as the pack modes lay it out.
+        let out = unsafe { read::slice_mut(mask, n) };
+        gl.ctx.get_polygon_stipple(out);
+    })
+}
+
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexImage(
     target: u32,

@@ -60,6 +60,14 @@ pub unsafe fn bytes<'a>(p: *const std::ffi::c_void, len: usize) -> &'a [u8] {
     unsafe { slice(p.cast::<u8>(), len) }
 }
 
+/// `n` values when `n` is in 0..=`max` (none for NULL or another `n`: the command then answers
+/// INVALID_VALUE without this reading past what a wrong size names).
+pub unsafe fn values<T: Copy>(p: *const T, n: i32, max: usize) -> Vec<T> {
+    let n = usize::try_from(n).ok().filter(|&n| n <= max).unwrap_or(0);
+    // SAFETY: as `slice`.
+    unsafe { slice(p, n) }.to_vec()
+}
+
 /// `n` integers (none for NULL or a negative `n`, which the command answers).
 pub unsafe fn ints(p: *const i32, n: i32) -> Vec<i32> {
     let n = usize::try_from(n).unwrap_or(0);

@@ -617,6 +617,129 @@ pub enum Call {
     /// `glMultiTexCoord4dv(target, v)`.
     MultiTexCoord4dv(u32, [f64; 4]),
 
+    // Raster position, rectangles, pixel rectangles and bitmaps (GL 2.1 §2.10, §2.13, §3.6, §3.7,
+    // §4.3.3): context/rasterpos.rs, context/pixels.rs
+    /// `glRasterPos2s(x, y)`.
+    RasterPos2s(i16, i16),
+    /// `glRasterPos2i(x, y)`.
+    RasterPos2i(i32, i32),
+    /// `glRasterPos2f(x, y)`.
+    RasterPos2f(f32, f32),
+    /// `glRasterPos2d(x, y)`.
+    RasterPos2d(f64, f64),
+    /// `glRasterPos3s(x, y, z)`.
+    RasterPos3s(i16, i16, i16),
+    /// `glRasterPos3i(x, y, z)`.
+    RasterPos3i(i32, i32, i32),
+    /// `glRasterPos3f(x, y, z)`.
+    RasterPos3f(f32, f32, f32),
+    /// `glRasterPos3d(x, y, z)`.
+    RasterPos3d(f64, f64, f64),
+    /// `glRasterPos4s(x, y, z, w)`.
+    RasterPos4s(i16, i16, i16, i16),
+    /// `glRasterPos4i(x, y, z, w)`.
+    RasterPos4i(i32, i32, i32, i32),
+    /// `glRasterPos4f(x, y, z, w)`.
+    RasterPos4f(f32, f32, f32, f32),
+    /// `glRasterPos4d(x, y, z, w)`.
+    RasterPos4d(f64, f64, f64, f64),
+    /// `glRasterPos2sv(v)`.
+    RasterPos2sv([i16; 2]),
+    /// `glRasterPos2iv(v)`.
+    RasterPos2iv([i32; 2]),
+    /// `glRasterPos2fv(v)`.
+    RasterPos2fv([f32; 2]),
+    /// `glRasterPos2dv(v)`.
+    RasterPos2dv([f64; 2]),
+    /// `glRasterPos3sv(v)`.
+    RasterPos3sv([i16; 3]),
+    /// `glRasterPos3iv(v)`.
+    RasterPos3iv([i32; 3]),
+    /// `glRasterPos3fv(v)`.
+    RasterPos3fv([f32; 3]),
+    /// `glRasterPos3dv(v)`.
+    RasterPos3dv([f64; 3]),
+    /// `glRasterPos4sv(v)`.
+    RasterPos4sv([i16; 4]),
+    /// `glRasterPos4iv(v)`.
+    RasterPos4iv([i32; 4]),
+    /// `glRasterPos4fv(v)`.
+    RasterPos4fv([f32; 4]),
+    /// `glRasterPos4dv(v)`.
+    RasterPos4dv([f64; 4]),
+    /// `glWindowPos2s(x, y)`.
+    WindowPos2s(i16, i16),
+    /// `glWindowPos2sv(v)`.
+    WindowPos2sv([i16; 2]),
+    /// `glWindowPos2i(x, y)`.
+    WindowPos2i(i32, i32),
+    /// `glWindowPos2iv(v)`.
+    WindowPos2iv([i32; 2]),
+    /// `glWindowPos2f(x, y)`.
+    WindowPos2f(f32, f32),
+    /// `glWindowPos2fv(v)`.
+    WindowPos2fv([f32; 2]),
+    /// `glWindowPos2d(x, y)`.
+    WindowPos2d(f64, f64),
+    /// `glWindowPos2dv(v)`.
+    WindowPos2dv([f64; 2]),
+    /// `glWindowPos3s(x, y, z)`.
+    WindowPos3s(i16, i16, i16),
+    /// `glWindowPos3sv(v)`.
+    WindowPos3sv([i16; 3]),
+    /// `glWindowPos3i(x, y, z)`.
+    WindowPos3i(i32, i32, i32),
+    /// `glWindowPos3iv(v)`.
+    WindowPos3iv([i32; 3]),
+    /// `glWindowPos3f(x, y, z)`.
+    WindowPos3f(f32, f32, f32),
+    /// `glWindowPos3fv(v)`.
+    WindowPos3fv([f32; 3]),
+    /// `glWindowPos3d(x, y, z)`.
+    WindowPos3d(f64, f64, f64),
+    /// `glWindowPos3dv(v)`.
+    WindowPos3dv([f64; 3]),
+    /// `glRects(x1, y1, x2, y2)`.
+    Rects(i16, i16, i16, i16),
+    /// `glRecti(x1, y1, x2, y2)`.
+    Recti(i32, i32, i32, i32),
+    /// `glRectf(x1, y1, x2, y2)`.
+    Rectf(f32, f32, f32, f32),
+    /// `glRectd(x1, y1, x2, y2)`.
+    Rectd(f64, f64, f64, f64),
+    /// `glRectsv(v1, v2)`.
+    Rectsv([i16; 2], [i16; 2]),
+    /// `glRectiv(v1, v2)`.
+    Rectiv([i32; 2], [i32; 2]),
+    /// `glRectfv(v1, v2)`.
+    Rectfv([f32; 2], [f32; 2]),
+    /// `glRectdv(v1, v2)`.
+    Rectdv([f64; 2], [f64; 2]),
+    /// `glPixelZoom(xfactor, yfactor)`.
+    PixelZoom(f32, f32),
+    /// `glPixelTransferf(pname, param)`.
+    PixelTransferf(u32, f32),
+    /// `glPixelTransferi(pname, param)`.
+    PixelTransferi(u32, i32),
+    /// `glPixelMapfv(map, mapsize, values)`.
+    ///
+    /// map, mapsize, and the values as the caller passed them (at most `mapsize`).
+    PixelMapfv(u32, i32, Vec<f32>),
+    /// `glPixelMapuiv(map, mapsize, values)`.
+    PixelMapuiv(u32, i32, Vec<u32>),
+    /// `glPixelMapusv(map, mapsize, values)`.
+    PixelMapusv(u32, i32, Vec<u16>),
+    /// `glBitmap(width, height, xorig, yorig, xmove, ymove, bitmap)`.
+    ///
+    /// width, height, xorig, yorig, xmove, ymove, and the bytes as the caller passed them (None: NULL, no bits; boxed to keep `Call` at 40 bytes).
+    Bitmap(i32, i32, f32, f32, f32, f32, Box<Option<Vec<u8>>>),
+    /// `glDrawPixels(width, height, format, type, pixels)`.
+    ///
+    /// width, height, format, type, and the bytes as the caller passed them (boxed).
+    DrawPixels(i32, i32, u32, u32, Box<Vec<u8>>),
+    /// `glCopyPixels(x, y, width, height, type)`.
+    CopyPixels(i32, i32, i32, i32, u32),
+
     // Buffer mapping (GL 1.5, GL 2.1 §2.9): context/arrays.rs. `written`: the variant also carries
     // the bytes the program wrote through the mapping (`MapWrites`), recorded at UnmapBuffer.
     /// `glMapBuffer(target, access)`.
@@ -735,6 +858,14 @@ pub enum Call {
     EvalMesh1(u32, i32, i32),
     /// `glEvalMesh2(mode, i1, i2, j1, j2)`.
     EvalMesh2(u32, i32, i32, i32, i32),
+
+    // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
+    /// `glLineStipple(factor, pattern)`.
+    LineStipple(i32, u16),
+    /// `glPolygonStipple(mask)`.
+    ///
+    /// The mask as the caller passed it: the unpack modes in effect say how it is read.
+    PolygonStipple(Vec<u8>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -1021,6 +1152,63 @@ pub const NAMES: &[&str] = &[
     "MultiTexCoord4fv",
     "MultiTexCoord4d",
     "MultiTexCoord4dv",
+    "RasterPos2s",
+    "RasterPos2i",
+    "RasterPos2f",
+    "RasterPos2d",
+    "RasterPos3s",
+    "RasterPos3i",
+    "RasterPos3f",
+    "RasterPos3d",
+    "RasterPos4s",
+    "RasterPos4i",
+    "RasterPos4f",
+    "RasterPos4d",
+    "RasterPos2sv",
+    "RasterPos2iv",
+    "RasterPos2fv",
+    "RasterPos2dv",
+    "RasterPos3sv",
+    "RasterPos3iv",
+    "RasterPos3fv",
+    "RasterPos3dv",
+    "RasterPos4sv",
+    "RasterPos4iv",
+    "RasterPos4fv",
+    "RasterPos4dv",
+    "WindowPos2s",
+    "WindowPos2sv",
+    "WindowPos2i",
+    "WindowPos2iv",
+    "WindowPos2f",
+    "WindowPos2fv",
+    "WindowPos2d",
+    "WindowPos2dv",
+    "WindowPos3s",
+    "WindowPos3sv",
+    "WindowPos3i",
+    "WindowPos3iv",
+    "WindowPos3f",
+    "WindowPos3fv",
+    "WindowPos3d",
+    "WindowPos3dv",
+    "Rects",
+    "Recti",
+    "Rectf",
+    "Rectd",
+    "Rectsv",
+    "Rectiv",
+    "Rectfv",
+    "Rectdv",
+    "PixelZoom",
+    "PixelTransferf",
+    "PixelTransferi",
+    "PixelMapfv",
+    "PixelMapuiv",
+    "PixelMapusv",
+    "Bitmap",
+    "DrawPixels",
+    "CopyPixels",
     "MapBuffer",
     "UnmapBuffer",
     "MultiDrawArrays",
@@ -1062,6 +1250,8 @@ pub const NAMES: &[&str] = &[
     "EvalPoint2",
     "EvalMesh1",
     "EvalMesh2",
+    "LineStipple",
+    "PolygonStipple",
 ];
 
 /// The variants that are window-system calls, not GL commands (no row in the command
@@ -1354,6 +1544,63 @@ impl Call {
             Call::MultiTexCoord4fv(..) => "MultiTexCoord4fv",
             Call::MultiTexCoord4d(..) => "MultiTexCoord4d",
             Call::MultiTexCoord4dv(..) => "MultiTexCoord4dv",
+            Call::RasterPos2s(..) => "RasterPos2s",
+            Call::RasterPos2i(..) => "RasterPos2i",
+            Call::RasterPos2f(..) => "RasterPos2f",
+            Call::RasterPos2d(..) => "RasterPos2d",
+            Call::RasterPos3s(..) => "RasterPos3s",
+            Call::RasterPos3i(..) => "RasterPos3i",
+            Call::RasterPos3f(..) => "RasterPos3f",
+            Call::RasterPos3d(..) => "RasterPos3d",
+            Call::RasterPos4s(..) => "RasterPos4s",
+            Call::RasterPos4i(..) => "RasterPos4i",
+            Call::RasterPos4f(..) => "RasterPos4f",
+            Call::RasterPos4d(..) => "RasterPos4d",
+            Call::RasterPos2sv(..) => "RasterPos2sv",
+            Call::RasterPos2iv(..) => "RasterPos2iv",
+            Call::RasterPos2fv(..) => "RasterPos2fv",
+            Call::RasterPos2dv(..) => "RasterPos2dv",
+            Call::RasterPos3sv(..) => "RasterPos3sv",
+            Call::RasterPos3iv(..) => "RasterPos3iv",
+            Call::RasterPos3fv(..) => "RasterPos3fv",
+            Call::RasterPos3dv(..) => "RasterPos3dv",
+            Call::RasterPos4sv(..) => "RasterPos4sv",
+            Call::RasterPos4iv(..) => "RasterPos4iv",
+            Call::RasterPos4fv(..) => "RasterPos4fv",
+            Call::RasterPos4dv(..) => "RasterPos4dv",
+            Call::WindowPos2s(..) => "WindowPos2s",
+            Call::WindowPos2sv(..) => "WindowPos2sv",
+            Call::WindowPos2i(..) => "WindowPos2i",
+            Call::WindowPos2iv(..) => "WindowPos2iv",
+            Call::WindowPos2f(..) => "WindowPos2f",
+            Call::WindowPos2fv(..) => "WindowPos2fv",
+            Call::WindowPos2d(..) => "WindowPos2d",
+            Call::WindowPos2dv(..) => "WindowPos2dv",
+            Call::WindowPos3s(..) => "WindowPos3s",
+            Call::WindowPos3sv(..) => "WindowPos3sv",
+            Call::WindowPos3i(..) => "WindowPos3i",
+            Call::WindowPos3iv(..) => "WindowPos3iv",
+            Call::WindowPos3f(..) => "WindowPos3f",
+            Call::WindowPos3fv(..) => "WindowPos3fv",
+            Call::WindowPos3d(..) => "WindowPos3d",
+            Call::WindowPos3dv(..) => "WindowPos3dv",
+            Call::Rects(..) => "Rects",
+            Call::Recti(..) => "Recti",
+            Call::Rectf(..) => "Rectf",
+            Call::Rectd(..) => "Rectd",
+            Call::Rectsv(..) => "Rectsv",
+            Call::Rectiv(..) => "Rectiv",
+            Call::Rectfv(..) => "Rectfv",
+            Call::Rectdv(..) => "Rectdv",
+            Call::PixelZoom(..) => "PixelZoom",
+            Call::PixelTransferf(..) => "PixelTransferf",
+            Call::PixelTransferi(..) => "PixelTransferi",
+            Call::PixelMapfv(..) => "PixelMapfv",
+            Call::PixelMapuiv(..) => "PixelMapuiv",
+            Call::PixelMapusv(..) => "PixelMapusv",
+            Call::Bitmap(..) => "Bitmap",
+            Call::DrawPixels(..) => "DrawPixels",
+            Call::CopyPixels(..) => "CopyPixels",
             Call::MapBuffer(..) => "MapBuffer",
             Call::UnmapBuffer(..) => "UnmapBuffer",
             Call::MultiDrawArrays(..) => "MultiDrawArrays",
@@ -1395,6 +1642,8 @@ impl Call {
             Call::EvalPoint2(..) => "EvalPoint2",
             Call::EvalMesh1(..) => "EvalMesh1",
             Call::EvalMesh2(..) => "EvalMesh2",
+            Call::LineStipple(..) => "LineStipple",
+            Call::PolygonStipple(..) => "PolygonStipple",
         }
     }
 
@@ -1910,6 +2159,63 @@ impl Call {
             Call::MultiTexCoord4fv(..) => &[Enum],
             Call::MultiTexCoord4d(..) => &[Enum],
             Call::MultiTexCoord4dv(..) => &[Enum],
+            Call::RasterPos2s(..) => &[],
+            Call::RasterPos2i(..) => &[],
+            Call::RasterPos2f(..) => &[],
+            Call::RasterPos2d(..) => &[],
+            Call::RasterPos3s(..) => &[],
+            Call::RasterPos3i(..) => &[],
+            Call::RasterPos3f(..) => &[],
+            Call::RasterPos3d(..) => &[],
+            Call::RasterPos4s(..) => &[],
+            Call::RasterPos4i(..) => &[],
+            Call::RasterPos4f(..) => &[],
+            Call::RasterPos4d(..) => &[],
+            Call::RasterPos2sv(..) => &[],
+            Call::RasterPos2iv(..) => &[],
+            Call::RasterPos2fv(..) => &[],
+            Call::RasterPos2dv(..) => &[],
+            Call::RasterPos3sv(..) => &[],
+            Call::RasterPos3iv(..) => &[],
+            Call::RasterPos3fv(..) => &[],
+            Call::RasterPos3dv(..) => &[],
+            Call::RasterPos4sv(..) => &[],
+            Call::RasterPos4iv(..) => &[],
+            Call::RasterPos4fv(..) => &[],
+            Call::RasterPos4dv(..) => &[],
+            Call::WindowPos2s(..) => &[],
+            Call::WindowPos2sv(..) => &[],
+            Call::WindowPos2i(..) => &[],
+            Call::WindowPos2iv(..) => &[],
+            Call::WindowPos2f(..) => &[],
+            Call::WindowPos2fv(..) => &[],
+            Call::WindowPos2d(..) => &[],
+            Call::WindowPos2dv(..) => &[],
+            Call::WindowPos3s(..) => &[],
+            Call::WindowPos3sv(..) => &[],
+            Call::WindowPos3i(..) => &[],
+            Call::WindowPos3iv(..) => &[],
+            Call::WindowPos3f(..) => &[],
+            Call::WindowPos3fv(..) => &[],
+            Call::WindowPos3d(..) => &[],
+            Call::WindowPos3dv(..) => &[],
+            Call::Rects(..) => &[],
+            Call::Recti(..) => &[],
+            Call::Rectf(..) => &[],
+            Call::Rectd(..) => &[],
+            Call::Rectsv(..) => &[],
+            Call::Rectiv(..) => &[],
+            Call::Rectfv(..) => &[],
+            Call::Rectdv(..) => &[],
+            Call::PixelZoom(..) => &[],
+            Call::PixelTransferf(..) => &[Enum],
+            Call::PixelTransferi(..) => &[Enum],
+            Call::PixelMapfv(..) => &[Enum],
+            Call::PixelMapuiv(..) => &[Enum],
+            Call::PixelMapusv(..) => &[Enum],
+            Call::Bitmap(..) => &[],
+            Call::DrawPixels(..) => &[Plain, Plain, Enum, Enum],
+            Call::CopyPixels(..) => &[Plain, Plain, Plain, Plain, Enum],
             Call::MapBuffer(..) => &[Enum, Enum],
             Call::UnmapBuffer(..) => &[Enum],
             Call::MultiDrawArrays(..) => &[],
@@ -1951,6 +2257,8 @@ impl Call {
             Call::EvalPoint2(..) => &[],
             Call::EvalMesh1(..) => &[Enum],
             Call::EvalMesh2(..) => &[Enum],
+            Call::LineStipple(..) => &[],
+            Call::PolygonStipple(..) => &[],
         }
     }
 }

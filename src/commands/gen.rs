@@ -287,6 +287,8 @@ enum Shape {
     OptBytes,
     /// Object names the caller passes (or, `out`, the names the call returned).
     Names,
+    /// Values whose count another parameter gives (PixelMap's `mapsize`): the caller's slice.
+    Values(&'static str),
     /// The bytes written through a buffer mapping (`written`): not a C parameter.
     Written,
     /// An integer array whose length another parameter gives (MultiDrawArrays' first, count).
@@ -318,6 +320,7 @@ impl Field {
             Shape::Bytes => "Vec<u8>".to_string(),
             Shape::OptBytes => "Option<Vec<u8>>".to_string(),
             Shape::Names => "Vec<u32>".to_string(),
+            Shape::Values(t) => format!("Vec<{t}>"),
             Shape::Written => "MapWrites".to_string(),
             Shape::Ints => "Vec<i32>".to_string(),
             Shape::Pointers => "Vec<Pointer>".to_string(),
@@ -425,6 +428,22 @@ impl Implemented {
                 Shape::Names
             } else if matches!(p.ptype.as_str(), "GLint" | "GLsizei") && p.len.is_some() {
                 Shape::Ints
+            } else if p.ptype != "void"
+                && p.len
+                    .as_deref()
+                    .is_some_and(|l| xml.params.iter().any(|q| q.name == l))
+            {
+                // A vector whose length another parameter gives (PixelMap's `mapsize`).
+                Shape::Values(rust_scalar(&p.ptype))
+            } else if p.ptype == "GLubyte"
+                && p.len.as_deref().is_some_and(|l| l.starts_with("COMPSIZE("))
+            {
+                // Bitmap's bits: bytes whose length the unpack modes give.
+                if ann.null {
+                    Shape::OptBytes
+                } else {
+                    Shape::Bytes
+                }
             } else if p.ptype == "void" && p.c_type.contains("*const*") {
                 Shape::Pointers
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")
@@ -1030,6 +1049,12 @@ fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
         Shape::Ints => {
             // gl.xml says COMPSIZE(count) for MultiDrawArrays' first: both hold drawcount.
             format!("read::ints({b}, drawcount)")
+        }
+        Shape::Values(_) => {
+            // PixelMap's values: `mapsize` of them, none when the size is past the table's
+            // (the command answers INVALID_VALUE without reading).
+            let n = ident(f.param.len.as_deref().expect("values have a length"));
+            format!("read::values({b}, {n}, fixedgl::pixels::MAX_PIXEL_MAP_TABLE)")
         }
         Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers | Shape::Points(_) => {
             return None

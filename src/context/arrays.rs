@@ -454,6 +454,10 @@ impl Context {
     /// the data handed over; they are reserved in one `try_reserve_exact`, and a failure is
     /// `Err(OUT_OF_MEMORY)` instead of an abort.
     pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
+        // Not a draw, but resolved at compile time too: the stipple unpacked now (stipple.rs).
+        if let Call::PolygonStipple(mask) = call {
+            return Ok(self.compile_polygon_stipple(mask));
+        }
         let arrays = &self.state.arrays;
         // A multiple draw compiles into its draws, one after the other (Mesa: DrawArrays and
         // DrawElements each), when it is valid as a whole now.

@@ -44,8 +44,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     let has = |bit: u32| mask & bit != 0;
     if has(gl::CURRENT_BIT) {
         // Table 6.5: current colour, secondary colour, normal, texture coordinates, fog
-        // coordinate, edge flag.
-        copy!(d, s; current);
+        // coordinate, edge flag; the raster position and its associated data.
+        copy!(d, s; current, raster_pos);
     }
     if has(gl::ENABLE_BIT) {
         // Every Enable flag is in the enable group as well as in its own.
@@ -70,7 +70,8 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     if has(gl::LINE_BIT) {
         // Table 6.12.
-        copy!(d, s; line_width, enables.line_smooth, enables.line_stipple);
+        copy!(d, s; line_width, enables.line_smooth, enables.line_stipple,
+            stipple.line_pattern, stipple.line_repeat);
     }
     if has(gl::POLYGON_BIT) {
         // Table 6.13.
@@ -78,6 +79,10 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
             polygon_offset_units, enables.cull_face, enables.polygon_smooth,
             enables.polygon_stipple, enables.polygon_offset_fill, enables.polygon_offset_line,
             enables.polygon_offset_point);
+    }
+    if has(gl::POLYGON_STIPPLE_BIT) {
+        // Table 6.13: the stipple pattern (its enable is in POLYGON_BIT and ENABLE_BIT).
+        copy!(d, s; stipple.polygon);
     }
     if has(gl::TEXTURE_BIT) {
         // Tables 6.15 to 6.20: the selected unit and every unit's enables.
@@ -124,15 +129,14 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; list_base);
     }
     if has(gl::PIXEL_MODE_BIT) {
-        // Table 6.26: READ_BUFFER.
-        copy!(d, s; read_buffer);
+        // Table 6.23: the pixel transfer parameters and the zoom (the pixel maps are in no
+        // group); table 6.26: READ_BUFFER.
+        copy!(d, s; pixel, read_buffer);
     }
     if has(gl::ACCUM_BUFFER_BIT) {
         // Table 6.22: ACCUM_CLEAR_VALUE.
         copy!(d, s; accum_clear);
     }
-    // PIXEL_MODE_BIT's pixel transfer and zoom, POLYGON_STIPPLE_BIT: no state of theirs is
-    // kept yet.
 }
 
 /// Copies the parameters (table 6.16, attribute "texture") of the texture object bound to each

@@ -4,8 +4,8 @@
 //! Each command is outside-Begin/End only (§2.6.3).
 //!
 //! Pixel storage: all sixteen modes are kept (`State::pack`, `State::unpack`, see
-//! `crate::pixel_store`); those fixedgl has no command for (LSB_FIRST, IMAGE_HEIGHT, SKIP_IMAGES)
-//! are stored and queried only.
+//! `crate::pixel_store`); those fixedgl has no command for (IMAGE_HEIGHT, SKIP_IMAGES) are stored
+//! and queried only.
 
 use super::{record, Context};
 use crate::call::Call;

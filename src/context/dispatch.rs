@@ -368,6 +368,69 @@ impl Context {
             Call::MultiTexCoord4fv(target, ref v) => self.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => self.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => self.multi_tex_coord4dv(target, v),
+            Call::RasterPos2s(x, y) => self.raster_pos2s(x, y),
+            Call::RasterPos2i(x, y) => self.raster_pos2i(x, y),
+            Call::RasterPos2f(x, y) => self.raster_pos2f(x, y),
+            Call::RasterPos2d(x, y) => self.raster_pos2d(x, y),
+            Call::RasterPos3s(x, y, z) => self.raster_pos3s(x, y, z),
+            Call::RasterPos3i(x, y, z) => self.raster_pos3i(x, y, z),
+            Call::RasterPos3f(x, y, z) => self.raster_pos3f(x, y, z),
+            Call::RasterPos3d(x, y, z) => self.raster_pos3d(x, y, z),
+            Call::RasterPos4s(x, y, z, w) => self.raster_pos4s(x, y, z, w),
+            Call::RasterPos4i(x, y, z, w) => self.raster_pos4i(x, y, z, w),
+            Call::RasterPos4f(x, y, z, w) => self.raster_pos4f(x, y, z, w),
+            Call::RasterPos4d(x, y, z, w) => self.raster_pos4d(x, y, z, w),
+            Call::RasterPos2sv(ref v) => self.raster_pos2sv(v),
+            Call::RasterPos2iv(ref v) => self.raster_pos2iv(v),
+            Call::RasterPos2fv(ref v) => self.raster_pos2fv(v),
+            Call::RasterPos2dv(ref v) => self.raster_pos2dv(v),
+            Call::RasterPos3sv(ref v) => self.raster_pos3sv(v),
+            Call::RasterPos3iv(ref v) => self.raster_pos3iv(v),
+            Call::RasterPos3fv(ref v) => self.raster_pos3fv(v),
+            Call::RasterPos3dv(ref v) => self.raster_pos3dv(v),
+            Call::RasterPos4sv(ref v) => self.raster_pos4sv(v),
+            Call::RasterPos4iv(ref v) => self.raster_pos4iv(v),
+            Call::RasterPos4fv(ref v) => self.raster_pos4fv(v),
+            Call::RasterPos4dv(ref v) => self.raster_pos4dv(v),
+            Call::WindowPos2s(x, y) => self.window_pos2s(x, y),
+            Call::WindowPos2sv(ref v) => self.window_pos2sv(v),
+            Call::WindowPos2i(x, y) => self.window_pos2i(x, y),
+            Call::WindowPos2iv(ref v) => self.window_pos2iv(v),
+            Call::WindowPos2f(x, y) => self.window_pos2f(x, y),
+            Call::WindowPos2fv(ref v) => self.window_pos2fv(v),
+            Call::WindowPos2d(x, y) => self.window_pos2d(x, y),
+            Call::WindowPos2dv(ref v) => self.window_pos2dv(v),
+            Call::WindowPos3s(x, y, z) => self.window_pos3s(x, y, z),
+            Call::WindowPos3sv(ref v) => self.window_pos3sv(v),
+            Call::WindowPos3i(x, y, z) => self.window_pos3i(x, y, z),
+            Call::WindowPos3iv(ref v) => self.window_pos3iv(v),
+            Call::WindowPos3f(x, y, z) => self.window_pos3f(x, y, z),
+            Call::WindowPos3fv(ref v) => self.window_pos3fv(v),
+            Call::WindowPos3d(x, y, z) => self.window_pos3d(x, y, z),
+            Call::WindowPos3dv(ref v) => self.window_pos3dv(v),
+            Call::Rects(x1, y1, x2, y2) => self.rects(x1, y1, x2, y2),
+            Call::Recti(x1, y1, x2, y2) => self.recti(x1, y1, x2, y2),
+            Call::Rectf(x1, y1, x2, y2) => self.rectf(x1, y1, x2, y2),
+            Call::Rectd(x1, y1, x2, y2) => self.rectd(x1, y1, x2, y2),
+            Call::Rectsv(ref v1, ref v2) => self.rectsv(v1, v2),
+            Call::Rectiv(ref v1, ref v2) => self.rectiv(v1, v2),
+            Call::Rectfv(ref v1, ref v2) => self.rectfv(v1, v2),
+            Call::Rectdv(ref v1, ref v2) => self.rectdv(v1, v2),
+            Call::PixelZoom(xfactor, yfactor) => self.pixel_zoom(xfactor, yfactor),
+            Call::PixelTransferf(pname, param) => self.pixel_transferf(pname, param),
+            Call::PixelTransferi(pname, param) => self.pixel_transferi(pname, param),
+            Call::PixelMapfv(map, mapsize, ref values) => self.pixel_mapfv(map, mapsize, values),
+            Call::PixelMapuiv(map, mapsize, ref values) => self.pixel_mapuiv(map, mapsize, values),
+            Call::PixelMapusv(map, mapsize, ref values) => self.pixel_mapusv(map, mapsize, values),
+            Call::Bitmap(width, height, xorig, yorig, xmove, ymove, ref bitmap) => {
+                self.bitmap(width, height, xorig, yorig, xmove, ymove, bitmap.as_deref())
+            }
+            Call::DrawPixels(width, height, format, type_, ref pixels) => {
+                self.draw_pixels(width, height, format, type_, pixels)
+            }
+            Call::CopyPixels(x, y, width, height, type_) => {
+                self.copy_pixels(x, y, width, height, type_)
+            }
             Call::MapBuffer(target, access) => {
                 self.map_buffer(target, access);
             }
@@ -438,6 +501,8 @@ impl Context {
             Call::EvalPoint2(i, j) => self.eval_point2(i, j),
             Call::EvalMesh1(mode, i1, i2) => self.eval_mesh1(mode, i1, i2),
             Call::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(mode, i1, i2, j1, j2),
+            Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }

@@ -923,7 +923,18 @@ mod tests {
     #[test]
     fn extreme_arguments_are_prompt_errors() {
         let mut gl = Context::new(8, 8).expect("context");
-        gl.map2f(gl::MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, &[0.0; 12]);
+        gl.map2f(
+            gl::MAP2_VERTEX_3,
+            0.0,
+            1.0,
+            3,
+            2,
+            0.0,
+            1.0,
+            6,
+            2,
+            &[0.0; 12],
+        );
         gl.enable(gl::MAP2_VERTEX_3);
         gl.map1f(gl::MAP1_VERTEX_4, 0.0, 1.0, 4, 2, &[0.0; 8]);
         gl.enable(gl::MAP1_VERTEX_4);
@@ -937,9 +948,27 @@ mod tests {
         assert_eq!(gl.get_error(), gl::NO_ERROR, "2M points are drawn");
         gl.eval_mesh2(gl::POINT, i32::MAX, i32::MIN, 0, 0);
         assert_eq!(gl.get_error(), gl::NO_ERROR, "an empty range is no error");
-        gl.map2f(gl::MAP2_VERTEX_3, 0.0, 1.0, i32::MAX, 30, 0.0, 1.0, i32::MAX, 30, &[0.0; 3]);
+        gl.map2f(
+            gl::MAP2_VERTEX_3,
+            0.0,
+            1.0,
+            i32::MAX,
+            30,
+            0.0,
+            1.0,
+            i32::MAX,
+            30,
+            &[0.0; 3],
+        );
         assert_eq!(gl.get_error(), gl::INVALID_VALUE);
-        gl.map1d(gl::MAP1_COLOR_4, f64::MAX, f64::INFINITY, i32::MAX, 30, &[0.0; 4]);
+        gl.map1d(
+            gl::MAP1_COLOR_4,
+            f64::MAX,
+            f64::INFINITY,
+            i32::MAX,
+            30,
+            &[0.0; 4],
+        );
         assert_eq!(gl.get_error(), gl::INVALID_VALUE);
         gl.map_grid2f(1, f32::NAN, f32::INFINITY, 1, -0.0, f32::MAX);
         gl.eval_mesh2(gl::FILL, 0, 1, 0, 1);

@@ -138,6 +138,38 @@ impl Context {
             gl::CURRENT_NORMAL => norm(s.current.normal.to_array()),
             gl::CURRENT_FOG_COORD => f(s.current.fog_coord),
             gl::EDGE_FLAG => b(s.current.edge_flag),
+            // The raster position (table 6.5).
+            gl::CURRENT_RASTER_POSITION => floats(s.raster_pos.window.to_array()),
+            gl::CURRENT_RASTER_POSITION_VALID => b(s.raster_pos.valid),
+            gl::CURRENT_RASTER_COLOR => norm(s.raster_pos.color.to_array()),
+            gl::CURRENT_RASTER_SECONDARY_COLOR => norm(s.raster_pos.secondary_color.to_array()),
+            gl::CURRENT_RASTER_INDEX => f(s.raster_pos.index),
+            gl::CURRENT_RASTER_TEXTURE_COORDS => {
+                floats(s.raster_pos.tex_coords.get(unit)?.to_array())
+            }
+            gl::CURRENT_RASTER_DISTANCE => f(s.raster_pos.distance),
+            // Pixel transfer and zoom (table 6.23), pixel map sizes (table 6.24).
+            gl::MAP_COLOR => b(s.pixel.map_color),
+            gl::MAP_STENCIL => b(s.pixel.map_stencil),
+            gl::INDEX_SHIFT => i(s.pixel.index_shift),
+            gl::INDEX_OFFSET => i(s.pixel.index_offset),
+            gl::RED_SCALE => f(s.pixel.scale[0]),
+            gl::GREEN_SCALE => f(s.pixel.scale[1]),
+            gl::BLUE_SCALE => f(s.pixel.scale[2]),
+            gl::ALPHA_SCALE => f(s.pixel.scale[3]),
+            gl::RED_BIAS => f(s.pixel.bias[0]),
+            gl::GREEN_BIAS => f(s.pixel.bias[1]),
+            gl::BLUE_BIAS => f(s.pixel.bias[2]),
+            gl::ALPHA_BIAS => f(s.pixel.bias[3]),
+            gl::DEPTH_SCALE => f(s.pixel.depth_scale),
+            gl::DEPTH_BIAS => f(s.pixel.depth_bias),
+            gl::ZOOM_X => f(s.pixel.zoom[0]),
+            gl::ZOOM_Y => f(s.pixel.zoom[1]),
+            gl::PIXEL_MAP_I_TO_I_SIZE..=gl::PIXEL_MAP_A_TO_A_SIZE => {
+                let k = (pname - gl::PIXEL_MAP_I_TO_I_SIZE) as usize;
+                i(s.pixel_maps.tables.get(k)?.len() as i32)
+            }
+            gl::MAX_PIXEL_MAP_TABLE => i(crate::pixels::MAX_PIXEL_MAP_TABLE as i32),
             // Transformation (tables 6.7, 6.8).
             gl::MODELVIEW_MATRIX => matrix(&s.modelview, false),
             gl::PROJECTION_MATRIX => matrix(&s.projection, false),
@@ -164,6 +196,8 @@ impl Context {
             // Rasterisation (tables 6.11 to 6.13).
             gl::POINT_SIZE => f(s.point_size),
             gl::LINE_WIDTH => f(s.line_width),
+            gl::LINE_STIPPLE_PATTERN => i(i32::from(s.stipple.line_pattern)),
+            gl::LINE_STIPPLE_REPEAT => i(s.stipple.line_repeat),
             gl::FRONT_FACE => e(s.front_face),
             gl::CULL_FACE_MODE => e(s.cull_face_mode),
             gl::POLYGON_MODE => ints(s.polygon_mode.map(|m| m as i32)),

@@ -155,8 +155,12 @@ impl Context {
                 if let Some(rec) = self.recording.as_mut() {
                     rec.push(call.clone());
                 }
-                // A vertex-array draw compiles into the data it reads now (GL 2.1 §5.4).
-                let compiled = self.compile_draw(&call);
+                // A vertex-array draw compiles into the data it reads now, and DrawPixels and
+                // Bitmap into their groups unpacked now (GL 2.1 §5.4).
+                let compiled = match self.compile_pixels(&call) {
+                    Some(c) => Ok(Some(vec![c])),
+                    None => self.compile_draw(&call),
+                };
                 let Some(list) = self.lists.compiling.as_mut() else {
                     return false;
                 };

@@ -396,6 +396,12 @@ pub(crate) use arrays::write_into;
 // glReadPixels and to_image (context/readback.rs)
 mod readback;
 
+// Raster position, rectangles, pixel rectangles, bitmaps (context/rasterpos.rs, context/pixels.rs)
+mod pixels;
+mod rasterpos;
+// Line and polygon stipple (context/stipple.rs)
+pub(crate) mod stipple;
+
 // Occlusion queries (context/query.rs)
 mod query;
 pub use eval::MAX_EVAL_MESH_VERTICES;

@@ -2,34 +2,31 @@
 //!
 //! Design decision: every supported format/type pair goes through one path: each pixel becomes
 //! its components as GL defines them (colour and depth normalised to [0, 1], stencil an integer
-//! index), then each component is converted to the requested type (§4.3.2, table 2.9 reversed)
-//! and placed in client memory under the PACK_ modes (§4.3.2 "Placement in Client Memory":
-//! ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES; `crate::pixel_store`). Pixels
-//! outside the window are left untouched, and so are the bytes the skips and row padding pass
-//! over.
+//! index), through the pixel transfer when it is not at its defaults (§4.3.2: colour scale and
+//! bias and MAP_COLOR, DEPTH_SCALE and DEPTH_BIAS, index shift and offset and MAP_STENCIL, as in
+//! `crate::pixels`), then each component is converted to the requested type (§4.3.2, table 4.9;
+//! packed types field by field, table 3.8) and placed in client memory under the PACK_ modes
+//! (§4.3.2 "Placement in Client Memory": ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT,
+//! SWAP_BYTES, and LSB_FIRST for bitmaps; `crate::pixel_store`). With the transfer at its
+//! defaults a component is exactly what it always was (c/255 in double precision). Pixels outside
+//! the window are left untouched, and so are the bytes the skips and row padding pass over.
 
 use crate::gl;
+use crate::pixels::{check, Group, ImageLayout, Scalar, Slot, Ty};
 use crate::Context;
-
-/// What a pixel is read as.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Source {
-    /// Colour components by index into RGBA (R=0 .. A=3); LUMINANCE is R (§4.3.2).
-    Color(&'static [usize]),
-    Depth,
-    Stencil,
-}
 
 impl Context {
     /// `glReadPixels` into `out`, rows bottom-up from (x, y), placed under the PACK_ modes
-    /// (row length, skipped rows and pixels, alignment, byte swapping). Formats RGBA, RGB, RED, GREEN, BLUE, ALPHA, LUMINANCE, LUMINANCE_ALPHA,
-    /// DEPTH_COMPONENT and STENCIL_INDEX; types UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT and
-    /// FLOAT, multi-byte values little-endian (big-endian with PACK_SWAP_BYTES). Errors:
-    /// INVALID_ENUM for another format or type, INVALID_VALUE for a negative size or an `out`
-    /// shorter than the skips and the request need,
-    /// INVALID_OPERATION between Begin and End, or for DEPTH_COMPONENT (STENCIL_INDEX) without a
-    /// depth (stencil) buffer. Colour comes from the buffer READ_BUFFER names. Flushes batched
-    /// drawing first.
+    /// (row length, skipped rows and pixels, alignment, byte swapping, bit order). Formats RGBA,
+    /// RGB, BGRA, BGR, RED, GREEN, BLUE, ALPHA, LUMINANCE (R + G + B, §4.3.2), LUMINANCE_ALPHA,
+    /// DEPTH_COMPONENT and STENCIL_INDEX; every GL 2.1 type (BITMAP for STENCIL_INDEX, the packed
+    /// types for RGB, RGBA and BGRA); multi-byte values in the host's order (reversed with
+    /// PACK_SWAP_BYTES). The pixel transfer applies. Errors: INVALID_OPERATION between Begin and
+    /// End, INVALID_VALUE for a negative size, INVALID_ENUM or INVALID_OPERATION for the format and
+    /// type as DrawPixels (`pixels::check`), INVALID_OPERATION for COLOR_INDEX (no colour-index
+    /// buffer), INVALID_VALUE for an `out` shorter than the skips and the request need,
+    /// INVALID_OPERATION for DEPTH_COMPONENT (STENCIL_INDEX) without a depth (stencil) buffer.
+    /// Colour comes from the buffer READ_BUFFER names. Flushes batched drawing first.
     #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
         &mut self,
@@ -44,55 +41,40 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
-        let source = match format {
-            gl::RGBA => Source::Color(&[0, 1, 2, 3]),
-            gl::RGB => Source::Color(&[0, 1, 2]),
-            gl::RED => Source::Color(&[0]),
-            gl::GREEN => Source::Color(&[1]),
-            gl::BLUE => Source::Color(&[2]),
-            gl::ALPHA => Source::Color(&[3]),
-            gl::LUMINANCE => Source::Color(&[0]),
-            gl::LUMINANCE_ALPHA => Source::Color(&[0, 3]),
-            gl::DEPTH_COMPONENT => Source::Depth,
-            gl::STENCIL_INDEX => Source::Stencil,
-            _ => return self.error(gl::INVALID_ENUM),
-        };
-        let size: usize = match ty {
-            gl::UNSIGNED_BYTE => 1,
-            gl::UNSIGNED_SHORT => 2,
-            gl::UNSIGNED_INT | gl::FLOAT => 4,
-            _ => return self.error(gl::INVALID_ENUM),
-        };
         if width < 0 || height < 0 {
             return self.error(gl::INVALID_VALUE);
         }
-        let comps = match source {
-            Source::Color(c) => c.len(),
-            _ => 1,
+        let f = match check(format, ty) {
+            Ok(f) => f,
+            Err(code) => return self.error(code),
         };
+        if f.group == Group::Index {
+            return self.error(gl::INVALID_OPERATION);
+        }
         // §4.3.2: DEPTH_COMPONENT without a depth buffer, STENCIL_INDEX without a stencil
         // buffer.
-        let missing = match source {
-            Source::Depth => !self.state.config.depth,
-            Source::Stencil => !self.state.config.stencil,
-            Source::Color(_) => false,
+        let missing = match f.group {
+            Group::Depth => !self.state.config.depth,
+            Group::Stencil => !self.state.config.stencil,
+            _ => false,
         };
         if missing {
             return self.error(gl::INVALID_OPERATION);
         }
-        let (w, h) = (width as usize, height as usize);
         // Every product of the caller's sizes is checked (`PixelModes::layout`): width, height,
         // PACK_ROW_LENGTH and the skips up to 2^31 times 16 bytes a pixel wrap a usize, and a
         // wrapped `need` passed the length check below while the loops then ran over the whole
         // requested rectangle. No slice can be that long, so an overflow is the same
         // INVALID_VALUE as a short `out`.
-        let Some(layout) = self.state.pack.layout(width, height, comps, size) else {
+        let Some(layout) = self.state.pack.image_layout(f, width, height) else {
             return self.error(gl::INVALID_VALUE);
         };
-        if out.len() < layout.need {
+        if out.len() < layout.need() {
             return self.error(gl::INVALID_VALUE);
         }
         self.renderer.flush(&self.state);
+        let t = self.state.pixel;
+        let maps = std::sync::Arc::clone(&self.state.pixel_maps);
         let buf = crate::cpu::framebuffer::read_buf(&self.state);
         let fb = self.renderer.framebuffer();
         // Only the part of the rectangle inside the window is visited (§4.3.2: pixels outside it
@@ -100,36 +82,59 @@ impl Context {
         // not by the requested size. The window is at most MAX_VIEWPORT_DIM square, so the
         // offsets below fit in i64.
         let (fw, fh) = fb.size();
+        let (w, h) = (width as usize, height as usize);
         let span = |o: i32, n: usize, limit: u32| {
             let lo = (-i64::from(o)).clamp(0, n as i64);
             let hi = (i64::from(limit) - i64::from(o)).clamp(lo, n as i64);
             (lo as usize)..(hi as usize)
         };
         let (cols, rows) = (span(x, w, fw), span(y, h, fh));
+        let color_identity = t.color_is_identity();
         for j in rows {
             for i in cols.clone() {
                 let (px, py) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
                 let Some((c, d, s)) = fb.pixel_in(buf, px, py) else {
                     continue;
                 };
-                // j < h and i < w, so this is at most `layout.need`, which did not overflow.
-                let at = layout.at(i, j);
-                for k in 0..comps {
-                    let (norm, int) = match source {
-                        Source::Color(idx) => {
-                            let v = idx.get(k).and_then(|&n| c.get(n)).copied().unwrap_or(0);
-                            (f64::from(v) / 255.0, None)
+                // The pixel's components, in the format's order, normalised (or an index).
+                let mut comps = [Value::Norm(0.0); 4];
+                let n = match f.group {
+                    Group::Color(slots) => {
+                        let rgba: [f64; 4] = if color_identity {
+                            c.map(|v| f64::from(v) / 255.0)
+                        } else {
+                            t.color(&maps, c.map(|v| f32::from(v) / 255.0))
+                                .map(f64::from)
+                        };
+                        for (k, slot) in slots.iter().enumerate() {
+                            comps[k] = Value::Norm(match slot {
+                                // §4.3.2 "Conversion to L": L = R + G + B (clamped at
+                                // conversion).
+                                Slot::L => (rgba[0] + rgba[1] + rgba[2]).min(1.0),
+                                Slot::R => rgba[0],
+                                Slot::G => rgba[1],
+                                Slot::B => rgba[2],
+                                Slot::A => rgba[3],
+                            });
                         }
-                        Source::Depth => (f64::from(d) / f64::from((1u32 << 24) - 1), None),
-                        Source::Stencil => (0.0, Some(u32::from(s))),
-                    };
-                    let o = at + k * size;
-                    let Some(dst) = out.get_mut(o..o + size) else {
-                        continue;
-                    };
-                    pack(dst, ty, norm, int);
-                    layout.order(dst);
-                }
+                        slots.len()
+                    }
+                    Group::Depth => {
+                        let z = f64::from(d) / f64::from((1u32 << 24) - 1);
+                        comps[0] = Value::Norm(t.depth(z));
+                        1
+                    }
+                    _ => {
+                        let v = if t.stencil_is_identity() {
+                            u32::from(s)
+                        } else {
+                            u32::from(t.stencil(&maps, i64::from(s)))
+                        };
+                        comps[0] = Value::Int(v);
+                        1
+                    }
+                };
+                store(out, &layout, f.ty, i, j, &comps[..n]);
             }
         }
     }
@@ -151,22 +156,107 @@ impl Context {
     }
 }
 
-/// Converts one component to type `ty` into `dst`: a normalised value by c·(2^b − 1) rounded
-/// (§4.3.2 / table 2.9), or an integer index as is (stencil, masked to the type).
-fn pack(dst: &mut [u8], ty: u32, norm: f64, int: Option<u32>) {
+/// One component before conversion to the client's type.
+#[derive(Clone, Copy, Debug)]
+enum Value {
+    /// A colour or depth in [0, 1].
+    Norm(f64),
+    /// A stencil index.
+    Int(u32),
+}
+
+/// Places the components `comps` of pixel (`i`, `j`) of the request in `out` as type `ty` under
+/// `layout` (which `out` is long enough for).
+fn store(out: &mut [u8], layout: &ImageLayout, ty: Ty, i: usize, j: usize, comps: &[Value]) {
+    match (layout, ty) {
+        (ImageLayout::Bits(b), _) => {
+            // BITMAP (stencil only): the index's low bit (§4.3.2).
+            let bit = matches!(comps.first(), Some(Value::Int(v)) if v & 1 != 0);
+            let k = b.skip + i;
+            let at = b.offset + j * b.stride + k / 8;
+            let mask = if b.lsb_first {
+                1u8 << (k % 8)
+            } else {
+                0x80u8 >> (k % 8)
+            };
+            if let Some(byte) = out.get_mut(at) {
+                if bit {
+                    *byte |= mask;
+                } else {
+                    *byte &= !mask;
+                }
+            }
+        }
+        (ImageLayout::Bytes(l), Ty::Packed { size, fields }) => {
+            let mut e = 0u32;
+            for (c, &(shift, bits)) in comps.iter().zip(fields) {
+                let max = (1u64 << bits) - 1;
+                let v = match *c {
+                    Value::Norm(n) => (n.clamp(0.0, 1.0) * max as f64).round() as u64,
+                    Value::Int(v) => u64::from(v) & max,
+                };
+                e |= (v as u32) << shift;
+            }
+            let at = l.at(i, j);
+            let bytes = e.to_ne_bytes();
+            let src = match size {
+                1 => &bytes[..1],
+                2 => &(e as u16).to_ne_bytes()[..],
+                _ => &bytes[..],
+            };
+            if let Some(dst) = out.get_mut(at..at + size) {
+                dst.copy_from_slice(src);
+                l.order(dst);
+            }
+        }
+        (ImageLayout::Bytes(l), Ty::Scalar(s)) => {
+            let at = l.at(i, j);
+            let size = s.size();
+            for (k, c) in comps.iter().enumerate() {
+                let o = at + k * size;
+                if let Some(dst) = out.get_mut(o..o + size) {
+                    pack(dst, s, *c);
+                    l.order(dst);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Converts one component to scalar type `s` into `dst` (host order): a normalised value by
+/// c·(2^b − 1) rounded for the unsigned types, ((2^b − 1)·c − 1)/2 rounded for the signed ones
+/// (table 4.9), as it is for FLOAT; an index masked to the type (as it is for FLOAT).
+fn pack(dst: &mut [u8], s: Scalar, c: Value) {
     let unorm = |bits: u32| -> u32 {
-        match int {
-            Some(i) => i & ((1u64 << bits) - 1) as u32,
-            None => (norm.clamp(0.0, 1.0) * ((1u64 << bits) - 1) as f64).round() as u32,
+        match c {
+            Value::Int(i) => i & ((1u64 << bits) - 1) as u32,
+            Value::Norm(n) => (n.clamp(0.0, 1.0) * ((1u64 << bits) - 1) as f64).round() as u32,
         }
     };
-    match ty {
-        gl::UNSIGNED_BYTE => dst.copy_from_slice(&[unorm(8) as u8]),
-        gl::UNSIGNED_SHORT => dst.copy_from_slice(&(unorm(16) as u16).to_le_bytes()),
-        gl::UNSIGNED_INT => dst.copy_from_slice(&unorm(32).to_le_bytes()),
-        _ => {
-            let f = int.map_or(norm as f32, |i| i as f32);
-            dst.copy_from_slice(&f.to_le_bytes());
+    let snorm = |bits: u32| -> i32 {
+        let max = ((1u64 << bits) - 1) as f64;
+        match c {
+            Value::Int(i) => i as i32,
+            // Half up: f = 0 gives 0, not −1 (the rounding table 4.9 leaves open; the driver's).
+            Value::Norm(n) => {
+                (crate::convert::unit_to_signed(n.clamp(-1.0, 1.0), max) + 0.5).floor() as i32
+            }
+        }
+    };
+    match s {
+        Scalar::U8 => dst.copy_from_slice(&[unorm(8) as u8]),
+        Scalar::U16 => dst.copy_from_slice(&(unorm(16) as u16).to_ne_bytes()),
+        Scalar::U32 => dst.copy_from_slice(&unorm(32).to_ne_bytes()),
+        Scalar::I8 => dst.copy_from_slice(&[snorm(8) as i8 as u8]),
+        Scalar::I16 => dst.copy_from_slice(&(snorm(16) as i16).to_ne_bytes()),
+        Scalar::I32 => dst.copy_from_slice(&snorm(32).to_ne_bytes()),
+        Scalar::F32 => {
+            let f = match c {
+                Value::Int(i) => i as f32,
+                Value::Norm(n) => n as f32,
+            };
+            dst.copy_from_slice(&f.to_ne_bytes());
         }
     }
 }
@@ -237,8 +327,9 @@ mod tests {
         let mut a = [0u8; 2];
         c.read_pixels(0, 0, 2, 1, gl::ALPHA, gl::UNSIGNED_BYTE, &mut a);
         assert_eq!(a, [255, 255]);
+        // L = R + G + B, clamped: 255 + 0 + 0, and 51 + 102 + 153 = 306 → 255.
         c.read_pixels(0, 0, 2, 1, gl::LUMINANCE, gl::UNSIGNED_BYTE, &mut a);
-        assert_eq!(a, [255, 51]);
+        assert_eq!(a, [255, 255]);
         // Depth 0.25 is stored as 0.25·(2^24 − 1) + 0.5 → 4194304; read back as 4194304/(2^24 − 1).
         let mut d = [0u8; 4];
         c.read_pixels(2, 1, 1, 1, gl::DEPTH_COMPONENT, gl::FLOAT, &mut d);

@@ -10,12 +10,19 @@
 use super::batch::Prim;
 use crate::gl;
 
+/// `Asm::edges` bit: the line stipple counter restarts at this primitive (a line: at its
+/// segment; a triangle drawn as lines: at its first edge), where llvmpipe's draw module sets
+/// `DRAW_PIPE_RESET_STIPPLE`: every segment of LINES, the first of a strip or loop, every
+/// triangle of TRIANGLES, the first of each quad and polygon.
+pub const RESET_STIPPLE: u8 = 8;
+
 /// One assembled primitive, indices into the processed vertex array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Asm {
     /// 1 point, 2 line, 3 triangle.
     pub n: u8,
-    /// Bit i set: the edge from `v[i]` to the next vertex is a boundary edge (triangles).
+    /// Bit i set: the edge from `v[i]` to the next vertex is a boundary edge (triangles);
+    /// `RESET_STIPPLE` as that constant says (lines and triangles).
     pub edges: u8,
     /// Vertex indices (the first `n`).
     pub v: [u32; 3],
@@ -39,9 +46,9 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
         v: [a, a, a],
         provoking: a,
     };
-    let line = |a: u32, b: u32, p: u32| Asm {
+    let line = |a: u32, b: u32, p: u32, reset: bool| Asm {
         n: 2,
-        edges: 0,
+        edges: if reset { RESET_STIPPLE } else { 0 },
         v: [a, b, b],
         provoking: p,
     };
@@ -58,21 +65,22 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
             gl::POINTS => out.extend((f..f + n).map(point)),
             gl::LINES => out.extend((0..n / 2).map(|i| {
                 let a = f + 2 * i;
-                line(a, a + 1, a + 1)
+                line(a, a + 1, a + 1, true)
             })),
             gl::LINE_STRIP | gl::LINE_LOOP => {
                 if n < 2 {
                     continue;
                 }
-                out.extend((f..f + n - 1).map(|a| line(a, a + 1, a + 1)));
+                out.extend((f..f + n - 1).map(|a| line(a, a + 1, a + 1, a == f)));
                 if p.mode == gl::LINE_LOOP {
                     // Table 2.2: the closing segment's provoking vertex is the first.
-                    out.push(line(f + n - 1, f, f));
+                    out.push(line(f + n - 1, f, f, false));
                 }
             }
             gl::TRIANGLES => out.extend((0..n / 3).map(|i| {
                 let a = f + 3 * i;
-                tri(a, a + 1, a + 2, a + 2, flags(ef(a), ef(a + 1), ef(a + 2)))
+                let e = flags(ef(a), ef(a + 1), ef(a + 2));
+                tri(a, a + 1, a + 2, a + 2, e | RESET_STIPPLE)
             })),
             gl::TRIANGLE_STRIP => out.extend((0..n.saturating_sub(2)).map(|i| {
                 let a = f + i;
@@ -96,10 +104,12 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
                     let a = f + 4 * i;
                     let [e0, e1, e2, e3] = [ef(a), ef(a + 1), ef(a + 2), ef(a + 3)];
                     if split_last {
-                        out.push(tri(a, a + 1, a + 3, a + 3, flags(e0, false, e3)));
+                        let e = flags(e0, false, e3) | RESET_STIPPLE;
+                        out.push(tri(a, a + 1, a + 3, a + 3, e));
                         out.push(tri(a + 1, a + 2, a + 3, a + 3, flags(e1, e2, false)));
                     } else {
-                        out.push(tri(a, a + 1, a + 2, a + 3, flags(e0, e1, false)));
+                        let e = flags(e0, e1, false) | RESET_STIPPLE;
+                        out.push(tri(a, a + 1, a + 2, a + 3, e));
                         out.push(tri(a, a + 2, a + 3, a + 3, flags(false, e2, e3)));
                     }
                 }
@@ -109,7 +119,8 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
                     // Quad i: vertices 2i, 2i+1, 2i+3, 2i+2 (0-based), provoking 2i+3; split
                     // along 2i–2i+3 like Mesa: (2i+2, 2i, 2i+3) and (2i, 2i+1, 2i+3).
                     let a = f + 2 * i;
-                    out.push(tri(a + 2, a, a + 3, a + 3, flags(true, false, true)));
+                    let e = flags(true, false, true) | RESET_STIPPLE;
+                    out.push(tri(a + 2, a, a + 3, a + 3, e));
                     out.push(tri(a, a + 1, a + 3, a + 3, flags(true, true, false)));
                 }
             }
@@ -119,7 +130,8 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
                     let first = i == 0;
                     let last = i + 3 == n;
                     let e = flags(first && ef(f), ef(b), last && ef(c));
-                    out.push(tri(f, b, c, f, e));
+                    let reset = if first { RESET_STIPPLE } else { 0 };
+                    out.push(tri(f, b, c, f, e | reset));
                 }
             }
             _ => {}

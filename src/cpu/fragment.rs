@@ -15,7 +15,7 @@ use glam::{Vec3, Vec4};
 
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
-use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_PHONG};
+use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_LINE, F_PHONG};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT};
@@ -46,6 +46,9 @@ pub struct FragCtx<'a> {
     /// tests before it) in `TileBufs::samples`, as llvmpipe counts after its depth/stencil
     /// stage, whatever the masks then write.
     pub samples: bool,
+    /// POLYGON_STIPPLE enabled: each window row's stipple bits (`stipple_rows`), applied to
+    /// filled polygons only (not to a line's parallelogram, `F_LINE`, nor to points).
+    pub stipple: Option<[u32; 32]>,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
     // Unit 0's sampler when texturing is on and its texture complete (§3.8)
@@ -53,6 +56,34 @@ pub struct FragCtx<'a> {
     pub tex: Option<&'a super::texture::Sampler>,
     /// Texture unit 1, applied to unit 0's result (§3.8.15).
     pub tex1: Option<&'a super::texture::Sampler>,
+}
+
+/// What the per-fragment operations see of a pixel rectangle's or bitmap's fragments: a
+/// front-facing primitive (the front stencil state applies, §4.1.5).
+const PIXEL_PRIM: RPrim = RPrim {
+    kind: super::setup::PrimKind::Point,
+    flags: 0,
+    bbox: [0; 4],
+    mat: 0,
+    voff: 0,
+    xy: [0; 6],
+    owns: 0,
+    cover: 0,
+    z: [0.0; 3],
+};
+
+/// The polygon stipple of `state` (GL 2.1 §3.5.6) as `FragCtx::stipple` wants it: row r for
+/// window rows y ≡ r (mod 32), bit x set when window columns x' ≡ x (mod 32) are drawn.
+pub fn stipple_rows(state: &crate::state::State) -> [u32; 32] {
+    state.stipple.polygon
+}
+
+/// The stipple bits of window row `y` for the 64 pixels from column `x0` on: bit k for pixel
+/// x0 + k.
+#[inline(always)]
+fn stipple_mask(rows: &[u32; 32], x0: i32, y: i32) -> u64 {
+    let row = rows[(y & 31) as usize].rotate_right((x0 & 31) as u32);
+    u64::from(row) | u64::from(row) << 32
 }
 
 /// One tile's slices of the colour and depth buffers, and the tile's lower-left pixel.
@@ -257,6 +288,21 @@ impl FragCtx<'_> {
         self.rl.fog.and_then(|o| v.get(o).copied()).unwrap_or(0.0)
     }
 
+    /// One fragment of a pixel rectangle or a bitmap at tile index `i` (GL 2.1 §3.6.5, §3.7):
+    /// colour `c` (textured and summed by the caller), window depth `z`, fog coordinate `fogc`;
+    /// then fog and the per-fragment operations of §4.1, as a front-facing fragment takes them.
+    #[inline]
+    pub fn pixel(&self, bufs: &mut TileBufs, i: usize, z: f64, c: Vec4, fogc: f32) {
+        match &self.ops {
+            Some(ops) => self.full(ops, bufs, &PIXEL_PRIM, i, z, c, fogc),
+            None => {
+                if self.depth(bufs, i, z) {
+                    self.write(bufs, i, c);
+                }
+            }
+        }
+    }
+
     /// One fragment of a line or point at window pixel (x, y).
     pub fn fragment(&self, bufs: &mut TileBufs, p: &RPrim, x: i32, y: i32, z: f64, v: &[f32]) {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
@@ -297,22 +343,18 @@ impl FragCtx<'_> {
             return self.full_span(ops, bufs, p, planes, fy, zrow, base, x0, n);
         }
         // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits), the
-        // comparison chosen once per span.
+        // comparison chosen once per span; a polygon stipple (§3.5.6) removes fragments first.
         let (fx0, dz) = (x0 - ox, p.z[1]);
-        let mut mask = if !self.depth_test {
-            u64::MAX >> (64 - n.clamp(1, 64))
-        } else {
-            let (b, z) = (base, zrow);
-            match self.depth_func {
-                gl::NEVER => 0,
-                gl::LESS => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d < s),
-                gl::EQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d == s),
-                gl::LEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d <= s),
-                gl::GREATER => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d > s),
-                gl::NOTEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d != s),
-                gl::GEQUAL => self.depth_span(bufs, b, n, z, dz, fx0, |d, s| d >= s),
-                _ => self.depth_span(bufs, b, n, z, dz, fx0, |_, _| true),
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
+        let mut mask = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => {
+                let live = all & stipple_mask(&rows, x0, y);
+                if live == 0 {
+                    return;
+                }
+                self.depth_mask_span::<true>(bufs, base, n, zrow, dz, fx0, live)
             }
+            _ => self.depth_mask_span::<false>(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
@@ -383,12 +425,44 @@ impl FragCtx<'_> {
         }
     }
 
-    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
-    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
-    /// k of the result set when fragment k survives.
+    /// The coverage mask of a span after the depth test: `live` (the fragments the span has)
+    /// when the test is off, else what `depth_span` leaves of it with DepthFunc's comparison.
+    /// `MASKED`: `live` may lack fragments inside the span (a polygon stipple).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_span(
+    fn depth_mask_span<const MASKED: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        b: usize,
+        n: usize,
+        z: f32,
+        dz: f32,
+        fx0: i32,
+        live: u64,
+    ) -> u64 {
+        if !self.depth_test {
+            return live;
+        }
+        let l = live;
+        match self.depth_func {
+            gl::NEVER => 0,
+            gl::LESS => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d < s),
+            gl::EQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d == s),
+            gl::LEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d <= s),
+            gl::GREATER => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d > s),
+            gl::NOTEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d != s),
+            gl::GEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d >= s),
+            _ => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |_, _| true),
+        }
+    }
+
+    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
+    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
+    /// k of the result set when fragment k survives. With `MASKED`, only the fragments whose
+    /// bit is set in `live` are tested (the others are gone); without, `live` is ignored.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn depth_span<const MASKED: bool>(
         &self,
         bufs: &mut TileBufs,
         base: usize,
@@ -396,6 +470,7 @@ impl FragCtx<'_> {
         zrow: f32,
         dz: f32,
         fx0: i32,
+        live: u64,
         pass: impl Fn(u32, u32) -> bool,
     ) -> u64 {
         let end = (base + n.min(64)).min(bufs.depth.len());
@@ -404,6 +479,9 @@ impl FragCtx<'_> {
         };
         let mut mask = 0;
         for (k, stored) in row.iter_mut().enumerate() {
+            if MASKED && live & (1 << k) == 0 {
+                continue;
+            }
             let z = zrow + dz * (fx0 + k as i32) as f32;
             let d = depth_unorm(f64::from(z));
             if pass(d, *stored) {
@@ -454,7 +532,16 @@ impl FragCtx<'_> {
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = self.rl.n.min(v.len());
         let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
+        // A polygon stipple (§3.5.6) removes fragments before any test.
+        let y = p.bbox[1] + fy as i32;
+        let live = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
+            _ => u64::MAX,
+        };
         for k in 0..n.min(TILE) {
+            if live & (1 << k) == 0 {
+                continue;
+            }
             let fx = (x0 - ox + k as i32) as f32;
             let z = zrow + p.z[1] * fx;
             let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);

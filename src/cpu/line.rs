@@ -9,7 +9,9 @@
 //! along the major axis only (so a wide line is constant across), perspective-correct (eq. 3.10);
 //! window z linearly.
 
-use super::setup::{geom, PrimKind, RPrim, SetupCtx, WVert, Worker, F_FLAT, MAXV, SNAP_LIMIT};
+use super::setup::{
+    geom, PrimKind, RPrim, SetupCtx, WVert, Worker, F_FLAT, F_LINE, MAXV, SNAP_LIMIT,
+};
 
 /// GL window coordinates have y up, so the fill rule's "top" edge is llvmpipe's bottom edge
 /// (its `bottom_edge_rule` for a y-up framebuffer).
@@ -173,6 +175,99 @@ fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64
 }
 
 impl Worker {
+    /// A line segment from `a` to `b` under LINE_STIPPLE (GL 2.1 §3.4.2), cut as llvmpipe's
+    /// draw module cuts it (its stipple stage, after clipping): the counter restarts when
+    /// `reset` (see `assembly::RESET_STIPPLE`); the segment's length is its larger window
+    /// extent, and it has ceil(length) stipple pixels; pixel i is on when bit
+    /// ((counter + i) / factor) mod 16 of the pattern is set; each run of on-pixels is drawn as
+    /// a line of its own from i0/length to i1/length of the way, every varying interpolated
+    /// linearly in window space; then the counter grows by ceil(length) (measured on llvmpipe:
+    /// a strip's second segment starts where whole stipple pixels left off, not at the
+    /// fractional length). Without stipple, the segment.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn stippled_line(
+        &mut self,
+        ctx: &SetupCtx,
+        a: &WVert,
+        b: &WVert,
+        off: f64,
+        flags: u8,
+        mat: u32,
+        reset: bool,
+    ) {
+        let Some((pattern, factor)) = ctx.line_stipple else {
+            return self.line(ctx, a, b, off, flags, mat);
+        };
+        if reset {
+            self.stipple_counter = 0;
+        }
+        let length = (a.x - b.x).abs().max((a.y - b.y).abs());
+        // Clipped segments lie inside the viewport (at most 16384 pixels a side): the loop is
+        // bounded by that; an infinite or NaN length draws nothing, as in Mesa.
+        let steps = if length.is_finite() {
+            length.ceil().min(1e6) as i64
+        } else {
+            0
+        };
+        let counter = self.stipple_counter;
+        let factor = i64::from(factor.max(1));
+        let on = |i: i64| (pattern >> (((counter + i) / factor) & 0xf)) & 1 != 0;
+        let (mut state, mut start) = (false, 0.0f32);
+        for i in 0..steps {
+            let bit = on(i);
+            if bit != state {
+                if state {
+                    self.segment(
+                        ctx,
+                        a,
+                        b,
+                        start / length,
+                        i as f32 / length,
+                        off,
+                        flags,
+                        mat,
+                    );
+                } else {
+                    start = i as f32;
+                }
+                state = bit;
+            }
+        }
+        if state && start < length {
+            self.segment(ctx, a, b, start / length, 1.0, off, flags, mat);
+        }
+        self.stipple_counter = self.stipple_counter.saturating_add(steps);
+    }
+
+    /// The part of segment `a`–`b` from `t0` to `t1` of the way (draw's `emit_segment`).
+    #[allow(clippy::too_many_arguments)]
+    fn segment(
+        &mut self,
+        ctx: &SetupCtx,
+        a: &WVert,
+        b: &WVert,
+        t0: f32,
+        t1: f32,
+        off: f64,
+        flags: u8,
+        mat: u32,
+    ) {
+        let at = |t: f32| {
+            let mut w = *a;
+            w.x = a.x + t * (b.x - a.x);
+            w.y = a.y + t * (b.y - a.y);
+            w.z = f64::from(a.z as f32 + t * (b.z as f32 - a.z as f32));
+            w.iw = a.iw + t * (b.iw - a.iw);
+            for (o, (&va, &vb)) in w.v.iter_mut().zip(a.v.iter().zip(&b.v)) {
+                *o = va + t * (vb - va);
+            }
+            w
+        };
+        let p = if t0 > 0.0 { at(t0) } else { *a };
+        let q = if t1 < 1.0 { at(t1) } else { *b };
+        self.line(ctx, &p, &q, off, flags, mat);
+    }
+
     /// A line segment from `a` to `b` (window vertices with their varyings), its depth moved by
     /// `off` (polygon offset of a polygon drawn as lines).
     pub(super) fn line(
@@ -224,7 +319,7 @@ impl Worker {
             let (za, zb) = ((a.z + off) as f32, (b.z + off) as f32);
             self.push(RPrim {
                 kind: PrimKind::Tri,
-                flags: flags | if flat { F_FLAT } else { 0 },
+                flags: flags | F_LINE | if flat { F_FLAT } else { 0 },
                 bbox: g.bbox,
                 mat,
                 voff,

@@ -44,6 +44,7 @@ pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
 mod line;
+pub mod pixels;
 mod polygon;
 pub mod raster;
 pub mod setup;
@@ -520,11 +521,17 @@ impl Core {
             mats,
             count: count_coverage,
             samples: count_samples,
+            stipple: state
+                .enables
+                .polygon_stipple
+                .then(|| fragment::stipple_rows(state)),
             ops: fragops::Ops::new(state),
             tex: sampler.as_ref(),
             tex1: sampler1.as_ref(),
         };
-        let nw = if batch.idx.len() >= PARALLEL_SETUP {
+        // The line stipple counter runs from segment to segment in submission order: one
+        // worker sets up everything while LINE_STIPPLE is on.
+        let nw = if batch.idx.len() >= PARALLEL_SETUP && ctx.line_stipple.is_none() {
             // More workers than threads balances the load when other processes share the cores.
             (4 * rayon::current_num_threads()).clamp(1, 32)
         } else {

@@ -7,7 +7,7 @@
 //! polygon modes share one representation; the common triangle skips all of it
 //! (`Worker::fast_tri` in `setup`), and both produce the same planes.
 
-use super::assembly::Asm;
+use super::assembly::{Asm, RESET_STIPPLE};
 use super::clip::MAX_POLY;
 use super::setup::{
     geom, offset, PrimKind, RPrim, SetupCtx, WVert, Win, Worker, COVER_KNOWN, F_BACK, F_FLAT,
@@ -52,8 +52,9 @@ impl Worker {
                     *e = p.edges & (1 << k) != 0;
                 }
                 let planes = codes[0] | codes[1] | codes[2];
+                let reset = p.edges & RESET_STIPPLE != 0;
                 if planes == 0 {
-                    self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat);
+                    self.polygon::<3>(ctx, &vs, &ws, &edges, prov, mat, reset);
                 } else {
                     let mut a = std::mem::take(&mut self.a);
                     let mut b = std::mem::take(&mut self.b);
@@ -70,7 +71,7 @@ impl Worker {
                         *src = a.get(i * s..(i + 1) * s).unwrap_or(&[]);
                         *w = ctx.win(src);
                     }
-                    self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat);
+                    self.polygon::<MAX_POLY>(ctx, &srcs[..n], &cw[..n], &edges, prov, mat, reset);
                     self.a = a;
                     self.b = b;
                 }
@@ -91,7 +92,8 @@ impl Worker {
                     let mut w1 = self.window(ctx, a.get(s..2 * s).unwrap_or(&[]));
                     self.varyings(ctx, &mut w0, a.get(..s).unwrap_or(&[]), false, prov);
                     self.varyings(ctx, &mut w1, a.get(s..2 * s).unwrap_or(&[]), false, prov);
-                    self.line(ctx, &w0, &w1, 0.0, 0, mat);
+                    let reset = p.edges & RESET_STIPPLE != 0;
+                    self.stippled_line(ctx, &w0, &w1, 0.0, 0, mat, reset);
                 }
                 self.a = a;
             }
@@ -153,6 +155,8 @@ impl Worker {
     /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
     /// processed vertices in order, `edges[i]` the flag of the edge leaving vertex i.
     /// `N` bounds the vertex count (3 on the unclipped path, so no large array is initialised).
+    /// `reset`: the line stipple counter restarts at its first edge drawn as a line.
+    #[allow(clippy::too_many_arguments)]
     fn polygon<const N: usize>(
         &mut self,
         ctx: &SetupCtx,
@@ -161,6 +165,7 @@ impl Worker {
         edges: &[bool],
         prov: &[f32],
         mat: u32,
+        reset: bool,
     ) {
         let n = srcs.len().min(wins.len()).min(N);
         if n < 3 {
@@ -202,6 +207,9 @@ impl Worker {
                 } else {
                     0.0
                 };
+                if reset {
+                    self.stipple_counter = 0;
+                }
                 for i in 0..n {
                     if !edges.get(i).copied().unwrap_or(false) {
                         continue;
@@ -210,7 +218,7 @@ impl Worker {
                         self.point(ctx, &w[i], off, flags & F_BACK, mat);
                     } else {
                         let (a, b) = (w[i], w[(i + 1) % n]);
-                        self.line(ctx, &a, &b, off, flags & F_BACK, mat);
+                        self.stippled_line(ctx, &a, &b, off, flags & F_BACK, mat, false);
                     }
                 }
             }

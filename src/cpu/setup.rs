@@ -102,6 +102,8 @@ pub const F_FLAT: u8 = 1;
 pub const F_BACK: u8 = 2;
 /// Flag: evaluate lighting per fragment (PHONG_WIN triangle).
 pub const F_PHONG: u8 = 4;
+/// Flag: half of a line's parallelogram (never polygon-stippled, §3.5.6).
+pub const F_LINE: u8 = 8;
 
 /// `RPrim::cover`: the low four bits are the covered pixel centres.
 pub const COVER_KNOWN: u8 = 0x10;
@@ -179,6 +181,8 @@ pub struct SetupCtx {
     pub(super) quads_split_last: bool,
     pub(super) phong: bool,
     line_width: f32,
+    /// LINE_STIPPLE enabled: (LINE_STIPPLE_PATTERN, LINE_STIPPLE_REPEAT).
+    pub line_stipple: Option<(u16, i32)>,
     pub(super) point_size: f32,
     /// Framebuffer ∩ scissor, inclusive.
     pub rect: [i32; 4],
@@ -274,6 +278,10 @@ impl SetupCtx {
             quads_split_last: state.shade_model == gl::FLAT,
             phong: layout.nrm.is_some(),
             line_width: state.line_width,
+            line_stipple: state
+                .enables
+                .line_stipple
+                .then_some((state.stipple.line_pattern, state.stipple.line_repeat)),
             point_size: state.point_size,
             rect,
             tiles_x: tiles.0,
@@ -404,6 +412,8 @@ pub struct Worker {
     pub(super) b: Vec<f32>,
     bins_x: usize,
     asm: Vec<Asm>,
+    /// The line stipple counter (`line.rs`), carried from segment to segment of a primitive.
+    pub(super) stipple_counter: i64,
 }
 
 impl Worker {

@@ -405,6 +405,69 @@ impl GlBackend {
             Call::MultiTexCoord4fv(target, ref v) => gl.multi_tex_coord4fv(target, v),
             Call::MultiTexCoord4d(target, s, t, r, q) => gl.multi_tex_coord4d(target, s, t, r, q),
             Call::MultiTexCoord4dv(target, ref v) => gl.multi_tex_coord4dv(target, v),
+            Call::RasterPos2s(x, y) => gl.raster_pos2s(x, y),
+            Call::RasterPos2i(x, y) => gl.raster_pos2i(x, y),
+            Call::RasterPos2f(x, y) => gl.raster_pos2f(x, y),
+            Call::RasterPos2d(x, y) => gl.raster_pos2d(x, y),
+            Call::RasterPos3s(x, y, z) => gl.raster_pos3s(x, y, z),
+            Call::RasterPos3i(x, y, z) => gl.raster_pos3i(x, y, z),
+            Call::RasterPos3f(x, y, z) => gl.raster_pos3f(x, y, z),
+            Call::RasterPos3d(x, y, z) => gl.raster_pos3d(x, y, z),
+            Call::RasterPos4s(x, y, z, w) => gl.raster_pos4s(x, y, z, w),
+            Call::RasterPos4i(x, y, z, w) => gl.raster_pos4i(x, y, z, w),
+            Call::RasterPos4f(x, y, z, w) => gl.raster_pos4f(x, y, z, w),
+            Call::RasterPos4d(x, y, z, w) => gl.raster_pos4d(x, y, z, w),
+            Call::RasterPos2sv(ref v) => gl.raster_pos2sv(v),
+            Call::RasterPos2iv(ref v) => gl.raster_pos2iv(v),
+            Call::RasterPos2fv(ref v) => gl.raster_pos2fv(v),
+            Call::RasterPos2dv(ref v) => gl.raster_pos2dv(v),
+            Call::RasterPos3sv(ref v) => gl.raster_pos3sv(v),
+            Call::RasterPos3iv(ref v) => gl.raster_pos3iv(v),
+            Call::RasterPos3fv(ref v) => gl.raster_pos3fv(v),
+            Call::RasterPos3dv(ref v) => gl.raster_pos3dv(v),
+            Call::RasterPos4sv(ref v) => gl.raster_pos4sv(v),
+            Call::RasterPos4iv(ref v) => gl.raster_pos4iv(v),
+            Call::RasterPos4fv(ref v) => gl.raster_pos4fv(v),
+            Call::RasterPos4dv(ref v) => gl.raster_pos4dv(v),
+            Call::WindowPos2s(x, y) => gl.window_pos2s(x, y),
+            Call::WindowPos2sv(ref v) => gl.window_pos2sv(v),
+            Call::WindowPos2i(x, y) => gl.window_pos2i(x, y),
+            Call::WindowPos2iv(ref v) => gl.window_pos2iv(v),
+            Call::WindowPos2f(x, y) => gl.window_pos2f(x, y),
+            Call::WindowPos2fv(ref v) => gl.window_pos2fv(v),
+            Call::WindowPos2d(x, y) => gl.window_pos2d(x, y),
+            Call::WindowPos2dv(ref v) => gl.window_pos2dv(v),
+            Call::WindowPos3s(x, y, z) => gl.window_pos3s(x, y, z),
+            Call::WindowPos3sv(ref v) => gl.window_pos3sv(v),
+            Call::WindowPos3i(x, y, z) => gl.window_pos3i(x, y, z),
+            Call::WindowPos3iv(ref v) => gl.window_pos3iv(v),
+            Call::WindowPos3f(x, y, z) => gl.window_pos3f(x, y, z),
+            Call::WindowPos3fv(ref v) => gl.window_pos3fv(v),
+            Call::WindowPos3d(x, y, z) => gl.window_pos3d(x, y, z),
+            Call::WindowPos3dv(ref v) => gl.window_pos3dv(v),
+            Call::Rects(x1, y1, x2, y2) => gl.rects(x1, y1, x2, y2),
+            Call::Recti(x1, y1, x2, y2) => gl.recti(x1, y1, x2, y2),
+            Call::Rectf(x1, y1, x2, y2) => gl.rectf(x1, y1, x2, y2),
+            Call::Rectd(x1, y1, x2, y2) => gl.rectd(x1, y1, x2, y2),
+            Call::Rectsv(ref v1, ref v2) => gl.rectsv(v1, v2),
+            Call::Rectiv(ref v1, ref v2) => gl.rectiv(v1, v2),
+            Call::Rectfv(ref v1, ref v2) => gl.rectfv(v1, v2),
+            Call::Rectdv(ref v1, ref v2) => gl.rectdv(v1, v2),
+            Call::PixelZoom(xfactor, yfactor) => gl.pixel_zoom(xfactor, yfactor),
+            Call::PixelTransferf(pname, param) => gl.pixel_transferf(pname, param),
+            Call::PixelTransferi(pname, param) => gl.pixel_transferi(pname, param),
+            Call::PixelMapfv(map, mapsize, ref values) => self.pixel_mapfv(map, mapsize, values),
+            Call::PixelMapuiv(map, mapsize, ref values) => self.pixel_mapuiv(map, mapsize, values),
+            Call::PixelMapusv(map, mapsize, ref values) => self.pixel_mapusv(map, mapsize, values),
+            Call::Bitmap(width, height, xorig, yorig, xmove, ymove, ref bitmap) => {
+                self.bitmap(width, height, xorig, yorig, xmove, ymove, bitmap.as_deref())
+            }
+            Call::DrawPixels(width, height, format, type_, ref pixels) => {
+                self.draw_pixels(width, height, format, type_, pixels)
+            }
+            Call::CopyPixels(x, y, width, height, type_) => {
+                gl.copy_pixels(x, y, width, height, type_)
+            }
             Call::MapBuffer(..) => self.arrays_call(call),
             Call::UnmapBuffer(..) => self.arrays_call(call),
             Call::MultiDrawArrays(..) => self.arrays_call(call),
@@ -465,6 +528,8 @@ impl GlBackend {
             Call::EvalPoint2(i, j) => gl.eval_point2(i, j),
             Call::EvalMesh1(mode, i1, i2) => gl.eval_mesh1(mode, i1, i2),
             Call::EvalMesh2(mode, i1, i2, j1, j2) => gl.eval_mesh2(mode, i1, i2, j1, j2),
+            Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
+            Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
         }
     }
 }
@@ -2221,6 +2286,318 @@ impl Safe<'_> {
         unsafe { self.0.MultiTexCoord4dv(target, v.as_ptr()) }
     }
 
+    /// `glRasterPos2s(x, y)`.
+    pub(super) fn raster_pos2s(self, x: i16, y: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos2s(x, y) }
+    }
+
+    /// `glRasterPos2i(x, y)`.
+    pub(super) fn raster_pos2i(self, x: i32, y: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos2i(x, y) }
+    }
+
+    /// `glRasterPos2f(x, y)`.
+    pub(super) fn raster_pos2f(self, x: f32, y: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos2f(x, y) }
+    }
+
+    /// `glRasterPos2d(x, y)`.
+    pub(super) fn raster_pos2d(self, x: f64, y: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos2d(x, y) }
+    }
+
+    /// `glRasterPos3s(x, y, z)`.
+    pub(super) fn raster_pos3s(self, x: i16, y: i16, z: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos3s(x, y, z) }
+    }
+
+    /// `glRasterPos3i(x, y, z)`.
+    pub(super) fn raster_pos3i(self, x: i32, y: i32, z: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos3i(x, y, z) }
+    }
+
+    /// `glRasterPos3f(x, y, z)`.
+    pub(super) fn raster_pos3f(self, x: f32, y: f32, z: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos3f(x, y, z) }
+    }
+
+    /// `glRasterPos3d(x, y, z)`.
+    pub(super) fn raster_pos3d(self, x: f64, y: f64, z: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos3d(x, y, z) }
+    }
+
+    /// `glRasterPos4s(x, y, z, w)`.
+    pub(super) fn raster_pos4s(self, x: i16, y: i16, z: i16, w: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos4s(x, y, z, w) }
+    }
+
+    /// `glRasterPos4i(x, y, z, w)`.
+    pub(super) fn raster_pos4i(self, x: i32, y: i32, z: i32, w: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos4i(x, y, z, w) }
+    }
+
+    /// `glRasterPos4f(x, y, z, w)`.
+    pub(super) fn raster_pos4f(self, x: f32, y: f32, z: f32, w: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos4f(x, y, z, w) }
+    }
+
+    /// `glRasterPos4d(x, y, z, w)`.
+    pub(super) fn raster_pos4d(self, x: f64, y: f64, z: f64, w: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.RasterPos4d(x, y, z, w) }
+    }
+
+    /// `glRasterPos2sv(v)`.
+    pub(super) fn raster_pos2sv(self, v: &[i16; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.RasterPos2sv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos2iv(v)`.
+    pub(super) fn raster_pos2iv(self, v: &[i32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.RasterPos2iv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos2fv(v)`.
+    pub(super) fn raster_pos2fv(self, v: &[f32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.RasterPos2fv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos2dv(v)`.
+    pub(super) fn raster_pos2dv(self, v: &[f64; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.RasterPos2dv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos3sv(v)`.
+    pub(super) fn raster_pos3sv(self, v: &[i16; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.RasterPos3sv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos3iv(v)`.
+    pub(super) fn raster_pos3iv(self, v: &[i32; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.RasterPos3iv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos3fv(v)`.
+    pub(super) fn raster_pos3fv(self, v: &[f32; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.RasterPos3fv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos3dv(v)`.
+    pub(super) fn raster_pos3dv(self, v: &[f64; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.RasterPos3dv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos4sv(v)`.
+    pub(super) fn raster_pos4sv(self, v: &[i16; 4]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
+        unsafe { self.0.RasterPos4sv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos4iv(v)`.
+    pub(super) fn raster_pos4iv(self, v: &[i32; 4]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
+        unsafe { self.0.RasterPos4iv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos4fv(v)`.
+    pub(super) fn raster_pos4fv(self, v: &[f32; 4]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
+        unsafe { self.0.RasterPos4fv(v.as_ptr()) }
+    }
+
+    /// `glRasterPos4dv(v)`.
+    pub(super) fn raster_pos4dv(self, v: &[f64; 4]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 4 values the driver reads.
+        unsafe { self.0.RasterPos4dv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos2s(x, y)`.
+    pub(super) fn window_pos2s(self, x: i16, y: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos2s(x, y) }
+    }
+
+    /// `glWindowPos2sv(v)`.
+    pub(super) fn window_pos2sv(self, v: &[i16; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.WindowPos2sv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos2i(x, y)`.
+    pub(super) fn window_pos2i(self, x: i32, y: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos2i(x, y) }
+    }
+
+    /// `glWindowPos2iv(v)`.
+    pub(super) fn window_pos2iv(self, v: &[i32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.WindowPos2iv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos2f(x, y)`.
+    pub(super) fn window_pos2f(self, x: f32, y: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos2f(x, y) }
+    }
+
+    /// `glWindowPos2fv(v)`.
+    pub(super) fn window_pos2fv(self, v: &[f32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.WindowPos2fv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos2d(x, y)`.
+    pub(super) fn window_pos2d(self, x: f64, y: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos2d(x, y) }
+    }
+
+    /// `glWindowPos2dv(v)`.
+    pub(super) fn window_pos2dv(self, v: &[f64; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 2 values the driver reads.
+        unsafe { self.0.WindowPos2dv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos3s(x, y, z)`.
+    pub(super) fn window_pos3s(self, x: i16, y: i16, z: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos3s(x, y, z) }
+    }
+
+    /// `glWindowPos3sv(v)`.
+    pub(super) fn window_pos3sv(self, v: &[i16; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.WindowPos3sv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos3i(x, y, z)`.
+    pub(super) fn window_pos3i(self, x: i32, y: i32, z: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos3i(x, y, z) }
+    }
+
+    /// `glWindowPos3iv(v)`.
+    pub(super) fn window_pos3iv(self, v: &[i32; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.WindowPos3iv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos3f(x, y, z)`.
+    pub(super) fn window_pos3f(self, x: f32, y: f32, z: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos3f(x, y, z) }
+    }
+
+    /// `glWindowPos3fv(v)`.
+    pub(super) fn window_pos3fv(self, v: &[f32; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.WindowPos3fv(v.as_ptr()) }
+    }
+
+    /// `glWindowPos3d(x, y, z)`.
+    pub(super) fn window_pos3d(self, x: f64, y: f64, z: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.WindowPos3d(x, y, z) }
+    }
+
+    /// `glWindowPos3dv(v)`.
+    pub(super) fn window_pos3dv(self, v: &[f64; 3]) {
+        // SAFETY: the context is current (see `Safe`); `v` holds the 3 values the driver reads.
+        unsafe { self.0.WindowPos3dv(v.as_ptr()) }
+    }
+
+    /// `glRects(x1, y1, x2, y2)`.
+    pub(super) fn rects(self, x1: i16, y1: i16, x2: i16, y2: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Rects(x1, y1, x2, y2) }
+    }
+
+    /// `glRecti(x1, y1, x2, y2)`.
+    pub(super) fn recti(self, x1: i32, y1: i32, x2: i32, y2: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Recti(x1, y1, x2, y2) }
+    }
+
+    /// `glRectf(x1, y1, x2, y2)`.
+    pub(super) fn rectf(self, x1: f32, y1: f32, x2: f32, y2: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Rectf(x1, y1, x2, y2) }
+    }
+
+    /// `glRectd(x1, y1, x2, y2)`.
+    pub(super) fn rectd(self, x1: f64, y1: f64, x2: f64, y2: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Rectd(x1, y1, x2, y2) }
+    }
+
+    /// `glRectsv(v1, v2)`.
+    pub(super) fn rectsv(self, v1: &[i16; 2], v2: &[i16; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v1` holds the 2 values the driver reads.
+        unsafe { self.0.Rectsv(v1.as_ptr(), v2.as_ptr()) }
+    }
+
+    /// `glRectiv(v1, v2)`.
+    pub(super) fn rectiv(self, v1: &[i32; 2], v2: &[i32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v1` holds the 2 values the driver reads.
+        unsafe { self.0.Rectiv(v1.as_ptr(), v2.as_ptr()) }
+    }
+
+    /// `glRectfv(v1, v2)`.
+    pub(super) fn rectfv(self, v1: &[f32; 2], v2: &[f32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v1` holds the 2 values the driver reads.
+        unsafe { self.0.Rectfv(v1.as_ptr(), v2.as_ptr()) }
+    }
+
+    /// `glRectdv(v1, v2)`.
+    pub(super) fn rectdv(self, v1: &[f64; 2], v2: &[f64; 2]) {
+        // SAFETY: the context is current (see `Safe`); `v1` holds the 2 values the driver reads.
+        unsafe { self.0.Rectdv(v1.as_ptr(), v2.as_ptr()) }
+    }
+
+    /// `glPixelZoom(xfactor, yfactor)`.
+    pub(super) fn pixel_zoom(self, xfactor: f32, yfactor: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PixelZoom(xfactor, yfactor) }
+    }
+
+    /// `glPixelTransferf(pname, param)`.
+    pub(super) fn pixel_transferf(self, pname: u32, param: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PixelTransferf(pname, param) }
+    }
+
+    /// `glPixelTransferi(pname, param)`.
+    pub(super) fn pixel_transferi(self, pname: u32, param: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PixelTransferi(pname, param) }
+    }
+
+    /// `glCopyPixels(x, y, width, height, type)`.
+    pub(super) fn copy_pixels(self, x: i32, y: i32, width: i32, height: i32, type_: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.CopyPixels(x, y, width, height, type_) }
+    }
+
     /// `glBeginQuery(target, id)`.
     pub(super) fn begin_query(self, target: u32, id: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
@@ -2387,5 +2764,11 @@ impl Safe<'_> {
     pub(super) fn eval_mesh2(self, mode: u32, i1: i32, i2: i32, j1: i32, j2: i32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.EvalMesh2(mode, i1, i2, j1, j2) }
+    }
+
+    /// `glLineStipple(factor, pattern)`.
+    pub(super) fn line_stipple(self, factor: i32, pattern: u16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.LineStipple(factor, pattern) }
     }
 }

@@ -62,8 +62,20 @@ impl GlBackend {
         if self.lists.depth > 0 || call.executes_immediately() {
             return;
         }
-        if let Some((_, _, calls)) = self.lists.compiling.as_mut() {
-            calls.push(call.clone());
+        if self.lists.compiling.is_some() {
+            // DrawPixels and Bitmap are kept with their groups unpacked now, under the driver's
+            // unpack modes, as the driver's own list holds them (GL 2.1 §5.4); `expand` reads
+            // them back under the tight modes.
+            let stored = match call {
+                Call::DrawPixels(..) | Call::Bitmap(..) => {
+                    crate::pixels::compile_unpacked(&self.driver_unpack(), call)
+                }
+                _ => None,
+            };
+            let stored = stored.unwrap_or_else(|| call.clone());
+            if let Some((_, _, calls)) = self.lists.compiling.as_mut() {
+                calls.push(stored);
+            }
             if self.phong || matches!(call, Call::ShadeModel(gl::PHONG_WIN)) {
                 self.lists.expand = true;
             }
@@ -263,7 +275,12 @@ impl GlBackend {
         }
         self.lists.depth += 1;
         for call in calls.iter() {
-            self.execute(call);
+            if matches!(call, Call::DrawPixels(..) | Call::Bitmap(..)) {
+                // The mirror's copy is tightly packed (see `mirror_call`).
+                self.with_tight_unpack(|b| b.execute(call));
+            } else {
+                self.execute(call);
+            }
         }
         self.lists.depth -= 1;
     }

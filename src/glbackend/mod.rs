@@ -27,7 +27,10 @@ mod select;
 // Vertex arrays and buffer objects on the driver
 mod arrays;
 mod query;
+mod stipple;
 mod texture;
+// DrawPixels, Bitmap, PixelMap on the driver
+mod pixels;
 
 use std::cell::Cell;
 use std::ffi::CString;
@@ -556,8 +559,8 @@ impl GlBackend {
     /// GL 2.1 §4.3.2): the default one (the back buffer when double-buffered), as
     /// `Context::to_image`. Reads from the FBO with the pack modes at their initial values except
     /// PACK_ALIGNMENT 1 (whatever PACK_ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS or SWAP_BYTES the
-    /// recorded calls set, which would shift the image or write past `pixels`), then restores
-    /// them.
+    /// recorded calls set, which would shift the image or write past `pixels`) and the colour
+    /// transfer at its identity (scales 1, biases 0, MAP_COLOR off), then restores them.
     pub fn read_image(&mut self) -> RgbaImage {
         self.make_current();
         let (w, h) = (self.width as usize, self.height as usize);
@@ -571,12 +574,30 @@ impl GlBackend {
             (glow::PACK_SKIP_PIXELS, 0),
             (glow::PACK_SWAP_BYTES, 0),
         ];
+        // The colour transfer (GL 2.1 §4.3.2: scale, bias and MAP_COLOR apply to ReadPixels)
+        // and its identity values: the image is the framebuffer as it is.
+        const TRANSFER: [(u32, f32); 9] = [
+            (gl::MAP_COLOR, 0.0),
+            (gl::RED_SCALE, 1.0),
+            (gl::GREEN_SCALE, 1.0),
+            (gl::BLUE_SCALE, 1.0),
+            (gl::ALPHA_SCALE, 1.0),
+            (gl::RED_BIAS, 0.0),
+            (gl::GREEN_BIAS, 0.0),
+            (gl::BLUE_BIAS, 0.0),
+            (gl::ALPHA_BIAS, 0.0),
+        ];
         // SAFETY: context current; `pixels` holds exactly w*h RGBA8 texels with alignment 1,
-        // no row length and no skips.
+        // no row length and no skips; GetFloatv of each transfer pname writes one value.
         unsafe {
             let saved = RESET.map(|(pname, _)| self.glow.get_parameter_i32(pname));
             for (pname, v) in RESET {
                 self.glow.pixel_store_i32(pname, v);
+            }
+            let mut transfer = [0.0f32; 9];
+            for ((pname, v), slot) in TRANSFER.iter().zip(&mut transfer) {
+                self.raw.GetFloatv(*pname, slot);
+                self.raw.PixelTransferf(*pname, *v);
             }
             self.glow
                 .bind_framebuffer(glow::READ_FRAMEBUFFER, self.fb.as_ref().map(|f| f.fbo));
@@ -598,6 +619,9 @@ impl GlBackend {
             self.glow.read_buffer(read as u32);
             for ((pname, _), v) in RESET.iter().zip(saved) {
                 self.glow.pixel_store_i32(*pname, v);
+            }
+            for ((pname, _), v) in TRANSFER.iter().zip(transfer) {
+                self.raw.PixelTransferf(*pname, v);
             }
         }
         let row = w * 4;

@@ -10,11 +10,9 @@ use crate::gl;
 
 impl GlBackend {
     /// A recorded `GenQueries(n, names)`: the front end's errors (INVALID_VALUE for a negative
-    /// `n`, or for a failed call that returned no names); nothing is sent.
+    /// `n`, or for a failed call that returned no names); nothing is sent. Executed even while
+    /// a list is compiled (GL 2.1 §5.4), as the front end does.
     pub(super) fn gen_queries(&mut self, n: i32, names: &[u32]) {
-        if self.compile_only() {
-            return;
-        }
         match usize::try_from(n) {
             Ok(n) if n <= names.len() => {}
             _ => self.raise(gl::INVALID_VALUE),

@@ -184,6 +184,11 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::BlendFuncSeparate(_, d, _, da) => {
             d == gl::SRC_ALPHA_SATURATE || da == gl::SRC_ALPHA_SATURATE
         }
+        // GL 2.1 §4.3.3: COLOR, DEPTH or STENCIL; a newer driver also takes DEPTH_STENCIL (after
+        // its INVALID_VALUE for a negative size, which stays the driver's).
+        Call::CopyPixels(_, _, w, h, t) => {
+            w >= 0 && h >= 0 && !matches!(t, gl::COLOR | gl::DEPTH | gl::STENCIL)
+        }
         // SAMPLES_PASSED is GL 2.1's only query target (§4.1.7); a 4.5 driver takes more.
         Call::BeginQuery(t, _) | Call::EndQuery(t) => t != gl::SAMPLES_PASSED,
         _ => false,

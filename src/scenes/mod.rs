@@ -23,10 +23,16 @@ pub mod arrays;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
+// Pixel rectangles, bitmaps, CopyPixels (scenes/pixels.rs)
+pub mod pixels;
 // Selection: scenes/picking.rs
 pub mod picking;
 // Evaluators: scenes/evaluators.rs
 pub mod evaluators;
+// Line and polygon stipple (scenes/stipple.rs)
+pub mod stipple;
+// GLU quadrics (scenes/quadrics.rs)
+pub mod quadrics;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -136,8 +142,11 @@ static SCENES: &[Scene] = &[
     texture::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    pixels::SCENES[0],
     picking::SCENES[0],
     evaluators::SCENES[0],
+    stipple::SCENES[0],
+    quadrics::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

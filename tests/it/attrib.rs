@@ -39,6 +39,40 @@ const ROWS: &[(u32, Setter, u32)] = &[
         |c| c.tex_coord2f(0.5, 0.25),
         gl::CURRENT_TEXTURE_COORDS,
     ),
+    (
+        gl::CURRENT_BIT,
+        |c| c.window_pos2f(3.0, 4.0),
+        gl::CURRENT_RASTER_POSITION,
+    ),
+    (
+        gl::CURRENT_BIT,
+        |c| {
+            c.color4f(0.5, 0.25, 1.0, 1.0);
+            c.raster_pos2f(0.5, 0.5);
+        },
+        gl::CURRENT_RASTER_COLOR,
+    ),
+    (
+        gl::CURRENT_BIT,
+        |c| c.raster_pos2f(5.0, 0.5),
+        gl::CURRENT_RASTER_POSITION_VALID,
+    ),
+    (gl::PIXEL_MODE_BIT, |c| c.pixel_zoom(2.0, -1.0), gl::ZOOM_Y),
+    (
+        gl::PIXEL_MODE_BIT,
+        |c| c.pixel_transferf(gl::GREEN_BIAS, 0.25),
+        gl::GREEN_BIAS,
+    ),
+    (
+        gl::PIXEL_MODE_BIT,
+        |c| c.pixel_transferi(gl::MAP_STENCIL, 1),
+        gl::MAP_STENCIL,
+    ),
+    (
+        gl::PIXEL_MODE_BIT,
+        |c| c.pixel_transferi(gl::INDEX_OFFSET, -3),
+        gl::INDEX_OFFSET,
+    ),
     (gl::ENABLE_BIT, |c| c.disable(gl::DITHER), gl::DITHER),
     (gl::ENABLE_BIT, |c| c.enable(gl::LIGHT3), gl::LIGHT3),
     (
@@ -95,6 +129,21 @@ const ROWS: &[(u32, Setter, u32)] = &[
         gl::LINE_BIT,
         |c| c.enable(gl::LINE_STIPPLE),
         gl::LINE_STIPPLE,
+    ),
+    (
+        gl::LINE_BIT,
+        |c| c.line_stipple(3, 0x00FF),
+        gl::LINE_STIPPLE_PATTERN,
+    ),
+    (
+        gl::LINE_BIT,
+        |c| c.line_stipple(3, 0x00FF),
+        gl::LINE_STIPPLE_REPEAT,
+    ),
+    (
+        gl::POLYGON_BIT,
+        |c| c.enable(gl::POLYGON_STIPPLE),
+        gl::POLYGON_STIPPLE,
     ),
     (
         gl::POLYGON_BIT,

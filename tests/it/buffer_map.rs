@@ -376,7 +376,9 @@ mod on_gl {
             gl.replay(&calls);
             if query {
                 let mut out = [0u8; 4];
-                let mut p = std::ptr::null_mut();
+                let mut p: *mut std::ffi::c_void = std::ptr::null_mut();
+                // The binding takes `*const *mut`; the driver writes `p`.
+                let pp = std::ptr::addr_of_mut!(p).cast_const();
                 // SAFETY: each call writes what its buffer holds (4 bytes; one pointer).
                 unsafe {
                     let raw = gl.raw();
@@ -387,22 +389,13 @@ mod on_gl {
                         "get sub data: mapped" => {
                             raw.GetBufferSubData(gl::ARRAY_BUFFER, 0, 4, out.as_mut_ptr().cast())
                         }
-                        "pointer: bad pname" | "pointer: bad pname, none bound" => raw
-                            .GetBufferPointerv(
-                                gl::ARRAY_BUFFER,
-                                gl::BUFFER_SIZE,
-                                std::ptr::addr_of_mut!(p),
-                            ),
-                        "pointer: bad target" => raw.GetBufferPointerv(
-                            gl::TEXTURE_2D,
-                            gl::BUFFER_MAP_POINTER,
-                            std::ptr::addr_of_mut!(p),
-                        ),
-                        _ => raw.GetBufferPointerv(
-                            gl::ARRAY_BUFFER,
-                            gl::BUFFER_MAP_POINTER,
-                            std::ptr::addr_of_mut!(p),
-                        ),
+                        "pointer: bad pname" | "pointer: bad pname, none bound" => {
+                            raw.GetBufferPointerv(gl::ARRAY_BUFFER, gl::BUFFER_SIZE, pp)
+                        }
+                        "pointer: bad target" => {
+                            raw.GetBufferPointerv(gl::TEXTURE_2D, gl::BUFFER_MAP_POINTER, pp)
+                        }
+                        _ => raw.GetBufferPointerv(gl::ARRAY_BUFFER, gl::BUFFER_MAP_POINTER, pp),
                     }
                     if at == At::InsideBegin {
                         raw.End();

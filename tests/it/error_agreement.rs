@@ -126,6 +126,20 @@ const PNAMES: &[&str] = &[
     "PACK_ALIGNMENT",
     "PACK_IMAGE_HEIGHT",
     "PACK_SKIP_IMAGES",
+    // PixelTransfer (table 3.2), and the imaging subset's POST_COLOR_MATRIX_RED_SCALE and
+    // POST_CONVOLUTION_RED_BIAS, which neither fixedgl nor the driver takes
+    "MAP_COLOR",
+    "MAP_STENCIL",
+    "INDEX_SHIFT",
+    "INDEX_OFFSET",
+    "RED_SCALE",
+    "GREEN_BIAS",
+    "BLUE_SCALE",
+    "ALPHA_BIAS",
+    "DEPTH_SCALE",
+    "DEPTH_BIAS",
+    "0x80B4",
+    "0x8020",
     // No command takes these.
     "0x1234",
     "LIGHT0",
@@ -284,8 +298,8 @@ fn cpu_and_driver_agree_on_every_pname_error() {
         .filter(|c| c.method.is_some() && c.params.iter().any(|p| p.name == "pname"))
         .collect();
     // Light, Material, LightModel, Fog, TexParameter, TexEnv and TexGen in their f, i, fv and
-    // iv forms (TexGen also d, dv), and PixelStore: 32 rows.
-    assert_eq!(commands.len(), 32, "pname-taking commands");
+    // iv forms (TexGen also d, dv), PixelStore and PixelTransfer: 34 rows.
+    assert_eq!(commands.len(), 34, "pname-taking commands");
     let (mut cases, mut mismatches) = (0, Vec::new());
     let mut known_seen = vec![0usize; KNOWN.len()];
     for cmd in commands {

@@ -203,6 +203,43 @@ fn attrib_rows() -> Vec<(u32, Vec<Call>, u32)> {
             vec![Normal3f(1.0, 0.0, 0.0)],
             gl::CURRENT_NORMAL,
         ),
+        (
+            gl::CURRENT_BIT,
+            vec![WindowPos2i(3, 2)],
+            gl::CURRENT_RASTER_POSITION,
+        ),
+        (
+            gl::CURRENT_BIT,
+            vec![Color4f(0.25, 0.5, 0.75, 1.0), RasterPos2f(0.5, 0.5)],
+            gl::CURRENT_RASTER_COLOR,
+        ),
+        (
+            gl::CURRENT_BIT,
+            vec![RasterPos2f(5.0, 0.5)],
+            gl::CURRENT_RASTER_POSITION_VALID,
+        ),
+        (gl::PIXEL_MODE_BIT, vec![PixelZoom(2.0, -1.0)], gl::ZOOM_X),
+        (
+            gl::PIXEL_MODE_BIT,
+            vec![PixelTransferf(gl::BLUE_BIAS, 0.25)],
+            gl::BLUE_BIAS,
+        ),
+        (
+            gl::PIXEL_MODE_BIT,
+            vec![PixelTransferi(gl::INDEX_SHIFT, -3)],
+            gl::INDEX_SHIFT,
+        ),
+        (
+            gl::PIXEL_MODE_BIT,
+            vec![PixelTransferi(gl::MAP_COLOR, 1)],
+            gl::MAP_COLOR,
+        ),
+        // The pixel maps are in no group: kept by every mask.
+        (
+            gl::PIXEL_MODE_BIT,
+            vec![PixelMapfv(gl::PIXEL_MAP_R_TO_R, 2, vec![0.5, 1.0])],
+            gl::PIXEL_MAP_R_TO_R_SIZE,
+        ),
         (gl::ENABLE_BIT, vec![Disable(gl::DITHER)], gl::DITHER),
         (
             gl::TRANSFORM_BIT,

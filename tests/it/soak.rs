@@ -1268,7 +1268,11 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             blend,
             logic_op,
             eval_maps,
-            eval_grid
+            eval_grid,
+            raster_pos,
+            pixel,
+            pixel_maps,
+            stipple
         },
         special { textures }
     )

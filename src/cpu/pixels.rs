@@ -1,0 +1,413 @@
+//! Rasterisation of pixel rectangles and bitmaps (GL 2.1 §3.6.5 "Conversion to Fragments",
+//! §3.7, §4.3.3): DrawPixels, CopyPixels and Bitmap turn groups into fragments here, which then
+//! take texturing (at the raster position's texture coordinates), the colour sum, fog (at the
+//! raster distance) and the per-fragment operations of §4.1, exactly as the fragments of
+//! primitives do (`FragCtx::pixel`). Stencil groups are written to the stencil buffer through the
+//! scissor test and the stencil write mask only (§4.3.1).
+//!
+//! Design decision: which window pixels a zoomed rectangle covers, and which group each takes,
+//! is GL 2.1 §3.6.5's rule taken literally: group (i, j) covers the rectangle from (x + i·zx,
+//! y + j·zy) to (x + (i + 1)·zx, y + (j + 1)·zy), (x, y) the raster position rounded as Mesa rounds
+//! it, and a pixel whose centre lies inside, or on the rectangle's left or bottom boundary, takes
+//! that group. The far edges are computed in single precision and snapped to 1/256 pixel, as
+//! llvmpipe's rasteriser takes the quad it draws a pixel rectangle with; wherever no pixel centre
+//! lies exactly on an edge or a group boundary (integer zooms, fractions with odd denominators)
+//! the pixels are the driver's. Each window row and column is mapped to its group once per call
+//! (two small tables), and the tiles are filled in parallel, each by one thread, as the
+//! rasteriser does.
+
+use glam::{Vec3, Vec4};
+use rayon::prelude::*;
+
+use super::fragment::{FragCtx, TileBufs};
+use super::framebuffer::{
+    scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
+};
+use super::texture::Sampler;
+use super::Renderer;
+use crate::state::State;
+
+/// The groups of a pixel rectangle after the pixel transfer, rows bottom-up, `width` per row.
+#[derive(Clone, Copy, Debug)]
+pub enum Groups<'a> {
+    /// RGBA colours, clamped to [0, 1] (DrawPixels of a colour or colour-index format,
+    /// CopyPixels COLOR).
+    Color(&'a [[f32; 4]]),
+    /// Colours already in the colour buffer's 8 bits: only where [`Renderer::pixels_plain`]
+    /// says the fragments reach the buffer unchanged.
+    Bytes(&'a [[u8; 4]]),
+    /// Depths in [0, 1] (DEPTH_COMPONENT, CopyPixels DEPTH); the colour is the raster colour.
+    Depth(&'a [f64]),
+    /// Stencil indices (STENCIL_INDEX, CopyPixels STENCIL): written to the stencil buffer only.
+    Stencil(&'a [u8]),
+    /// A bitmap's bits (nonzero: a fragment of the raster colour at the raster depth).
+    Bits(&'a [u8]),
+}
+
+/// Which window columns (or rows) a rectangle covers, and the group each takes.
+#[derive(Clone, Debug, Default)]
+pub struct Span {
+    /// The first covered window coordinate.
+    pub lo: i32,
+    /// For each covered coordinate from `lo`, its group (column or row index).
+    pub groups: Vec<u32>,
+}
+
+impl Span {
+    /// The span of `n` groups of size `zoom` starting at window coordinate `start`, whose far
+    /// edge is `end` (both snapped to 1/256 pixel here, as the rasteriser snaps vertices), cut
+    /// to the inclusive window range `[min, max]`. A pixel is covered when its centre c satisfies
+    /// low <= c < high (the low edge owns centres exactly on it); it takes the group
+    /// floor((c − start) / zoom), clamped to the groups there are.
+    pub fn new(start: f64, end: f64, n: usize, zoom: f32, min: i32, max: i32) -> Span {
+        let snap = |v: f64| (v * 256.0).round() / 256.0;
+        let (a, b) = (snap(start), snap(end));
+        let (low, high) = if a <= b { (a, b) } else { (b, a) };
+        if n == 0 || zoom == 0.0 || !zoom.is_finite() || low >= high || low.is_nan() || min > max {
+            return Span::default();
+        }
+        // First pixel whose centre is >= low, last whose centre is < high, inside [min, max].
+        let first = ((low - 0.5).ceil()).max(f64::from(min));
+        let last = ((high - 0.5).ceil() - 1.0).min(f64::from(max));
+        if first > last {
+            return Span::default();
+        }
+        let (first, last) = (first as i32, last as i32);
+        let z = f64::from(zoom);
+        let groups = (first..=last)
+            .map(|p| {
+                // §3.6.5: a centre on the boundary between two groups belongs to the group
+                // whose left (bottom) boundary it is: the higher one for a positive zoom, the
+                // lower for a negative one.
+                let t = (f64::from(p) + 0.5 - start) / z;
+                let g = if z > 0.0 { t.floor() } else { t.ceil() - 1.0 };
+                g.clamp(0.0, (n - 1) as f64) as u32
+            })
+            .collect();
+        Span { lo: first, groups }
+    }
+
+    /// Covered coordinates from `lo`.
+    pub fn len(&self) -> usize {
+        self.groups.len()
+    }
+
+    /// Whether nothing is covered.
+    pub fn is_empty(&self) -> bool {
+        self.groups.is_empty()
+    }
+}
+
+/// A pixel rectangle or bitmap ready to rasterise.
+#[derive(Clone, Debug)]
+pub struct PixelDraw<'a> {
+    /// Covered columns and their group columns.
+    pub cols: Span,
+    /// Covered rows and their group rows.
+    pub rows: Span,
+    /// Groups per row.
+    pub width: usize,
+    /// The groups.
+    pub groups: Groups<'a>,
+}
+
+/// What every fragment of one draw shares: the raster position's associated data.
+struct Shared<'a> {
+    /// Window z of the raster position.
+    z: f64,
+    /// Raster colour.
+    color: Vec4,
+    /// Secondary colour added by the colour sum, when it applies.
+    secondary: Option<Vec3>,
+    /// Raster texture coordinates of units 0 and 1, and their samplers.
+    tex: [Option<(&'a Sampler, [f32; 4])>; 2],
+    /// Fog coordinate: the raster distance.
+    fogc: f32,
+}
+
+impl Shared<'_> {
+    /// The fragment colour after texturing (§3.8.13) and the colour sum (§3.9).
+    #[inline]
+    fn shade(&self, c: Vec4) -> Vec4 {
+        let prim = c;
+        let mut c = c;
+        for (tx, coords) in self.tex.iter().flatten() {
+            // The coordinates are the same for every fragment: no derivatives, λ = 0.
+            c = tx.shade(c, prim, *coords, 0.0);
+        }
+        if let Some(s) = self.secondary {
+            c += s.extend(0.0);
+        }
+        c
+    }
+}
+
+impl Renderer {
+    /// Whether the fragments of a pixel rectangle drawn under `state` reach the colour buffer as
+    /// they are, through ColorMask only: no texturing, depth test, fog, alpha or stencil test,
+    /// blending or logic op. The front end then converts the groups to the buffer's 8 bits
+    /// itself ([`Groups::Bytes`]).
+    pub fn pixels_plain(&self, state: &State) -> bool {
+        let e = &state.enables;
+        let textured = (0..2).any(|u| {
+            e.texture_1d[u] || e.texture_2d[u] || e.texture_3d[u] || e.texture_cube_map[u]
+        });
+        !self.count_coverage
+            && !e.depth_test
+            && !textured
+            && super::fragops::Ops::new(state).is_none()
+    }
+
+    /// Draws the pixel rectangle or bitmap `d` with `state` (the raster position, texturing,
+    /// fog and the per-fragment operations it enables), after everything batched before it.
+    /// `secondary`: whether the raster secondary colour is the fragments' secondary colour
+    /// (bitmaps; pixel rectangles have none).
+    pub fn draw_pixel_rect(&mut self, state: &State, d: &PixelDraw, secondary: bool) {
+        self.flush(state);
+        if d.cols.is_empty() || d.rows.is_empty() {
+            return;
+        }
+        let samplers = [Sampler::new(state, 0), Sampler::new(state, 1)];
+        let rp = &state.raster_pos;
+        let lit_sum = state.enables.lighting
+            && state.light_model.color_control == crate::gl::SEPARATE_SPECULAR_COLOR;
+        let sum = (secondary && (lit_sum || state.enables.color_sum))
+            .then(|| rp.secondary_color.truncate());
+        let shared = Shared {
+            z: f64::from(rp.window.z),
+            color: rp.color,
+            secondary: sum,
+            tex: [0, 1].map(|u| {
+                samplers[u]
+                    .as_ref()
+                    .map(|s| (s, rp.tex_coords[u].to_array()))
+            }),
+            fogc: rp.distance,
+        };
+        let targets = Targets::of(state);
+        let has_depth = self.core().fb.config().depth;
+        let fctx = FragCtx {
+            // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
+            depth_test: state.enables.depth_test && has_depth,
+            depth_func: state.depth_func,
+            depth_mask: state.depth_mask,
+            // DrawBuffer(NONE): fragments go through every test and write no colour.
+            color_mask: if targets.none() {
+                [false; 4]
+            } else {
+                state.color_mask
+            },
+            color_sum: false,
+            rl: Default::default(),
+            lighting: None,
+            mats: &[],
+            count: self.count_coverage,
+            samples: self.count_samples,
+            // Polygon stipple applies to polygons only (§3.5.6).
+            stipple: None,
+            ops: super::fragops::Ops::new(state),
+            tex: None,
+            tex1: None,
+        };
+        // The colour of a fragment never changes on its way when nothing but the colour write
+        // applies: the groups go straight to the buffer.
+        let plain = fctx.ops.is_none()
+            && !fctx.depth_test
+            && shared.tex.iter().all(Option::is_none)
+            && shared.secondary.is_none()
+            && !fctx.count
+            && !fctx.samples;
+        let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
+        let core = self.core();
+        let fb = &mut core.fb;
+        let (tiles_x, tiles_y) = fb.tiles();
+        let (x0, y0) = (d.cols.lo, d.rows.lo);
+        let (x1, y1) = (x0 + d.cols.len() as i32 - 1, y0 + d.rows.len() as i32 - 1);
+        let Framebuffer {
+            color,
+            front,
+            depth,
+            stencil,
+            ..
+        } = fb;
+        // The first colour target is each tile's colour slice, a second one its `color2`
+        // (DrawBuffer(FRONT_AND_BACK)), as for primitives.
+        let (primary, secondary) = match (targets.front, front.as_mut()) {
+            (true, Some(f)) if !targets.main => (f, None),
+            (true, Some(f)) => (color, Some(f)),
+            _ => (color, None),
+        };
+        let seconds = tile_slices(secondary, tiles_x * tiles_y);
+        let counted: u64 = primary
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(seconds)
+            .zip(depth.par_chunks_mut(TILE_PIXELS))
+            .zip(stencil.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .map(|(t, (((color, color2), depth), stencil))| {
+                let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
+                let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+                let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+                if tx0 > tx1 || ty0 > ty1 {
+                    return 0;
+                }
+                let mut bufs = TileBufs {
+                    color,
+                    color2,
+                    depth,
+                    stencil,
+                    x: ox,
+                    y: oy,
+                    samples: 0,
+                };
+                for y in ty0..=ty1 {
+                    let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
+                        continue;
+                    };
+                    let row = gj as usize * d.width;
+                    let base = (y - oy) as usize * TILE;
+                    for x in tx0..=tx1 {
+                        let Some(&gi) = d.cols.groups.get((x - x0) as usize) else {
+                            continue;
+                        };
+                        let g = row + gi as usize;
+                        let i = base + (x - ox) as usize;
+                        fragment(
+                            &fctx,
+                            &shared,
+                            &mut bufs,
+                            d.groups,
+                            g,
+                            i,
+                            plain,
+                            stencil_mask,
+                        );
+                    }
+                }
+                bufs.samples
+            })
+            .sum();
+        core.samples_passed += counted;
+    }
+}
+
+/// Writes `px` through `mask` to the pixel at tile index `i` of each colour buffer drawn.
+#[inline(always)]
+fn put(bufs: &mut TileBufs, i: usize, px: [u8; 4], mask: [bool; 4]) {
+    let second = bufs.color2.as_deref_mut().and_then(|c| c.get_mut(i));
+    for dst in bufs.color.get_mut(i).into_iter().chain(second) {
+        for k in 0..4 {
+            if mask[k] {
+                dst[k] = px[k];
+            }
+        }
+    }
+}
+
+/// Group `g` of `groups` as the fragment at tile index `i`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn fragment(
+    fctx: &FragCtx,
+    shared: &Shared,
+    bufs: &mut TileBufs,
+    groups: Groups,
+    g: usize,
+    i: usize,
+    plain: bool,
+    stencil_mask: u8,
+) {
+    let (c, z) = match groups {
+        Groups::Color(c) => {
+            let Some(&c) = c.get(g) else { return };
+            let c = Vec4::from_array(c);
+            if plain {
+                let px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
+                put(bufs, i, px, fctx.color_mask);
+                return;
+            }
+            (c, shared.z)
+        }
+        Groups::Bytes(c) => {
+            if let Some(&px) = c.get(g) {
+                put(bufs, i, px, fctx.color_mask);
+            }
+            return;
+        }
+        Groups::Depth(d) => {
+            let Some(&z) = d.get(g) else { return };
+            (shared.color, z)
+        }
+        Groups::Bits(b) => {
+            if b.get(g).copied().unwrap_or(0) == 0 {
+                return;
+            }
+            (shared.color, shared.z)
+        }
+        Groups::Stencil(s) => {
+            // §4.3.1: only the scissor test (the span is cut to it) and the write mask apply.
+            let (Some(&v), Some(dst)) = (s.get(g), bufs.stencil.get_mut(i)) else {
+                return;
+            };
+            *dst = (*dst & !stencil_mask) | (v & stencil_mask);
+            return;
+        }
+    };
+    let c = shared.shade(c);
+    fctx.pixel(bufs, i, z, c, shared.fogc);
+}
+
+/// The columns and rows a pixel rectangle of `width` x `height` groups covers with its lower-left
+/// corner at window (`x`, `y`) (the rounded raster position) and zoom factors `zoom`, cut to the
+/// framebuffer and the scissor box (see the module docs).
+pub fn spans(
+    state: &State,
+    x: i32,
+    y: i32,
+    width: usize,
+    height: usize,
+    zoom: [f32; 2],
+) -> (Span, Span) {
+    let [sx0, sy0, sx1, sy1] = scissor_rect(state);
+    let (zx, zy) = (zoom[0], zoom[1]);
+    // The far edges in single precision, x + width · ZOOM_X, as Mesa computes them.
+    let x_end = f64::from(x as f32 + width as f32 * zx);
+    let y_end = f64::from(y as f32 + height as f32 * zy);
+    let cols = Span::new(f64::from(x), x_end, width, zx, sx0, sx1);
+    let rows = Span::new(f64::from(y), y_end, height, zy, sy0, sy1);
+    (cols, rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spans_follow_the_zoom() {
+        // Zoom 1 at 10: pixels 10..=12 take groups 0, 1, 2.
+        let s = Span::new(10.0, 13.0, 3, 1.0, 0, 100);
+        assert_eq!((s.lo, s.groups.clone()), (10, vec![0, 1, 2]));
+        // Zoom 2: 10..=15, two pixels a group.
+        let s = Span::new(10.0, 16.0, 3, 2.0, 0, 100);
+        assert_eq!((s.lo, s.groups.clone()), (10, vec![0, 0, 1, 1, 2, 2]));
+        // Zoom -1: from 10 leftwards, 7..=9 take groups 2, 1, 0.
+        let s = Span::new(10.0, 7.0, 3, -1.0, 0, 100);
+        assert_eq!((s.lo, s.groups.clone()), (7, vec![2, 1, 0]));
+        // Cut to the window: only 0..=1 of -2..=1.
+        let s = Span::new(-2.0, 2.0, 4, 1.0, 0, 100);
+        assert_eq!((s.lo, s.groups.clone()), (0, vec![2, 3]));
+        // Zoom 0 or an empty rectangle covers nothing.
+        assert!(Span::new(10.0, 10.0, 3, 0.0, 0, 100).is_empty());
+        assert!(Span::new(10.0, 10.0, 0, 1.0, 0, 100).is_empty());
+        // Zoom 4/3: 4 groups span 5.33 pixels, centres 10.5 .. 14.5 (15.5 is past the edge).
+        let s = Span::new(
+            10.0,
+            10.0 + 4.0 * (4.0f32 / 3.0) as f64,
+            4,
+            4.0 / 3.0,
+            0,
+            100,
+        );
+        assert_eq!((s.lo, s.groups.clone()), (10, vec![0, 1, 1, 2, 3]));
+    }
+}
