@@ -155,3 +155,67 @@ mod tests {
         assert_eq!(tex_parameter(gl::TEXTURE_LOD_BIAS), Some(1));
     }
 }
+
+/// The components of an evaluator map's points (`_mesa_evaluator_components`): 4 for
+/// COLOR_4, VERTEX_4 and TEXTURE_COORD_4, 3 for NORMAL, VERTEX_3 and TEXTURE_COORD_3, 2 and 1
+/// for TEXTURE_COORD_2 and _1, 1 for INDEX, of MAP1_* and MAP2_* alike; `None` for any other
+/// target.
+pub fn map_components(target: u32) -> Option<usize> {
+    let i = match target {
+        gl::MAP1_COLOR_4..=gl::MAP1_VERTEX_4 => target - gl::MAP1_COLOR_4,
+        gl::MAP2_COLOR_4..=gl::MAP2_VERTEX_4 => target - gl::MAP2_COLOR_4,
+        _ => return None,
+    };
+    Some(crate::state::EVAL_COMPONENTS[i as usize])
+}
+
+/// How many values `Map1{f,d}` reads from its points: `(order - 1) * stride + k`, or `None`
+/// when the call fails before reading them (a target that is no MAP1_*, an order outside 1 to
+/// MAX_EVAL_ORDER, a stride below the target's `k` components), or the count is past `usize`.
+pub fn map1_points(target: u32, stride: i32, order: i32) -> Option<usize> {
+    if !(gl::MAP1_COLOR_4..=gl::MAP1_VERTEX_4).contains(&target) {
+        return None;
+    }
+    map_points(target, &[(stride, order)])
+}
+
+/// `Map2{f,d}`'s count: `(uorder - 1) * ustride + (vorder - 1) * vstride + k`, `None` as in
+/// [`map1_points`].
+pub fn map2_points(
+    target: u32,
+    ustride: i32,
+    uorder: i32,
+    vstride: i32,
+    vorder: i32,
+) -> Option<usize> {
+    if !(gl::MAP2_COLOR_4..=gl::MAP2_VERTEX_4).contains(&target) {
+        return None;
+    }
+    map_points(target, &[(ustride, uorder), (vstride, vorder)])
+}
+
+fn map_points(target: u32, dims: &[(i32, i32)]) -> Option<usize> {
+    let k = map_components(target)?;
+    let mut n = k;
+    for &(stride, order) in dims {
+        if !(1..=crate::state::MAX_EVAL_ORDER).contains(&order) || stride < k as i32 {
+            return None;
+        }
+        n = n.checked_add((order as usize - 1).checked_mul(stride as usize)?)?;
+    }
+    Some(n)
+}
+
+/// How many values `GetMap{f,d,i}v(target, query)` writes for the map's orders (`uorder`,
+/// `vorder`; 1 for a one-dimensional map): COEFF every component of every point, ORDER 1 or 2,
+/// DOMAIN 2 or 4; `None` for a target or query that is none of these.
+pub fn get_map(target: u32, query: u32, uorder: i32, vorder: i32) -> Option<usize> {
+    let k = map_components(target)?;
+    let two = target >= gl::MAP2_COLOR_4;
+    match query {
+        gl::COEFF => Some(uorder.max(0) as usize * vorder.max(0) as usize * k),
+        gl::ORDER => Some(if two { 2 } else { 1 }),
+        gl::DOMAIN => Some(if two { 4 } else { 2 }),
+        _ => None,
+    }
+}

@@ -222,7 +222,7 @@ pub struct Enables {
     pub texture_cube_map: [bool; MAX_TEXTURE_UNITS],
     /// Per texture unit, TEXTURE_GEN_S, _T, _R, _Q.
     pub texture_gen: [[bool; 4]; MAX_TEXTURE_UNITS],
-    /// Evaluator maps (MAP1_*, MAP2_*): queryable, never rendered (no evaluators in fixedgl).
+    /// Evaluator maps, indexed as [`EvalMaps`]: `MAP1_COLOR_4 + i`, `MAP2_COLOR_4 + i`.
     pub map1: [bool; 9],
     pub map2: [bool; 9],
 }
@@ -461,6 +461,10 @@ pub struct State {
     pub logic_op: u32,
     // Objects and units (tables 6.15, 6.16, 6.19)
     pub textures: crate::texture::Textures,
+
+    // Evaluators (table 6.33): the maps (no attribute group) and the grids (EVAL_BIT).
+    pub eval_maps: EvalMaps,
+    pub eval_grid: EvalGrid,
     // Raster position (§2.13, table 6.5), pixel transfer and zoom (§3.6.3, §3.6.5, table 6.23),
     // pixel maps (table 6.24)
     /// The current raster position and its associated data.
@@ -548,6 +552,8 @@ impl State {
             blend: Blend::default(),
             logic_op: gl::COPY,
             textures: crate::texture::Textures::default(),
+            eval_maps: EvalMaps::default(),
+            eval_grid: EvalGrid::default(),
             raster_pos: RasterPos::default(),
             pixel: crate::pixels::PixelTransfer::default(),
             pixel_maps: Default::default(),
@@ -694,6 +700,84 @@ impl Default for Blend {
             equation_rgb: gl::FUNC_ADD,
             equation_alpha: gl::FUNC_ADD,
             color: Vec4::ZERO,
+        }
+    }
+}
+
+/// `MAX_EVAL_ORDER` (GL 2.1 table 6.35): Mesa's 30.
+pub const MAX_EVAL_ORDER: i32 = 30;
+
+/// One evaluator map (GL 2.1 §5.1): its orders, domain and control points, as Mesa keeps them —
+/// floats (Map*d converts), packed `k` components per point, point `(i, j)` (i along u) at
+/// `(i * vorder + j) * k`. A one-dimensional map has `vorder` 1 and domain `v` 0 to 1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EvalMap {
+    pub uorder: i32,
+    pub vorder: i32,
+    /// u1, u2, v1, v2.
+    pub domain: [f32; 4],
+    pub points: Vec<f32>,
+}
+
+/// The 18 maps, MAP1_* then MAP2_*, each in the order of the enums: COLOR_4, INDEX, NORMAL,
+/// TEXTURE_COORD_1 to _4, VERTEX_3, VERTEX_4 (`target - MAP1_COLOR_4`, `target - MAP2_COLOR_4`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EvalMaps {
+    pub map1: [EvalMap; 9],
+    pub map2: [EvalMap; 9],
+}
+
+/// The components of each map's points, in [`EvalMaps`] order.
+pub const EVAL_COMPONENTS: [usize; 9] = [4, 1, 3, 1, 2, 3, 4, 3, 4];
+
+impl Default for EvalMaps {
+    /// Table 6.33: order 1, domain 0 to 1, the point (1,1,1,1) for colour, 1 for the index,
+    /// (0,0,1) for the normal, (0,0,0,1) cut to the size for texture coordinates and vertices.
+    fn default() -> Self {
+        const INITIAL: [&[f32]; 9] = [
+            &[1.0, 1.0, 1.0, 1.0],
+            &[1.0],
+            &[0.0, 0.0, 1.0],
+            &[0.0],
+            &[0.0, 0.0],
+            &[0.0, 0.0, 0.0],
+            &[0.0, 0.0, 0.0, 1.0],
+            &[0.0, 0.0, 0.0],
+            &[0.0, 0.0, 0.0, 1.0],
+        ];
+        let map = |i: usize| EvalMap {
+            uorder: 1,
+            vorder: 1,
+            domain: [0.0, 1.0, 0.0, 1.0],
+            points: INITIAL[i].to_vec(),
+        };
+        EvalMaps {
+            map1: std::array::from_fn(map),
+            map2: std::array::from_fn(map),
+        }
+    }
+}
+
+/// The evaluator grids (MapGrid1, MapGrid2; table 6.33, EVAL_BIT).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EvalGrid {
+    /// MAP1_GRID_SEGMENTS.
+    pub un1: i32,
+    /// MAP1_GRID_DOMAIN.
+    pub u1: [f32; 2],
+    /// MAP2_GRID_SEGMENTS.
+    pub n2: [i32; 2],
+    /// MAP2_GRID_DOMAIN: u1, u2, v1, v2.
+    pub d2: [f32; 4],
+}
+
+impl Default for EvalGrid {
+    fn default() -> Self {
+        EvalGrid {
+            un1: 1,
+            u1: [0.0, 1.0],
+            n2: [1, 1],
+            d2: [0.0, 1.0, 0.0, 1.0],
         }
     }
 }

@@ -300,3 +300,79 @@ pub unsafe fn multi_draw_elements(
         .map(|(&c, &p)| unsafe { self::indices(gl, c, ty, p) })
         .collect()
 }
+
+/// Evaluator points: the values the map reads (`counts::map1_points`, `map2_points`); when it
+/// reads none (its arguments fail first) a non-null pointer stands as one unread value, so
+/// that the command fails as the driver does, not as for NULL (empty).
+unsafe fn points<T: Copy + Default>(p: *const T, needed: Option<usize>) -> Vec<T> {
+    match needed {
+        // SAFETY: the caller's promise that the map's values are there.
+        Some(n) => unsafe { read::slice(p, n) }.to_vec(),
+        None if p.is_null() => Vec::new(),
+        None => vec![T::default()],
+    }
+}
+
+pub fn map1f(
+    _: &mut Gl,
+    target: u32,
+    _: f32,
+    _: f32,
+    stride: i32,
+    order: i32,
+    p: *const f32,
+) -> Vec<f32> {
+    // SAFETY: as `points`.
+    unsafe { points(p, fixedgl::counts::map1_points(target, stride, order)) }
+}
+
+pub fn map1d(
+    _: &mut Gl,
+    target: u32,
+    _: f64,
+    _: f64,
+    stride: i32,
+    order: i32,
+    p: *const f64,
+) -> Vec<f64> {
+    // SAFETY: as `points`.
+    unsafe { points(p, fixedgl::counts::map1_points(target, stride, order)) }
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn map2f(
+    _: &mut Gl,
+    target: u32,
+    _: f32,
+    _: f32,
+    ustride: i32,
+    uorder: i32,
+    _: f32,
+    _: f32,
+    vstride: i32,
+    vorder: i32,
+    p: *const f32,
+) -> Vec<f32> {
+    let n = fixedgl::counts::map2_points(target, ustride, uorder, vstride, vorder);
+    // SAFETY: as `points`.
+    unsafe { points(p, n) }
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn map2d(
+    _: &mut Gl,
+    target: u32,
+    _: f64,
+    _: f64,
+    ustride: i32,
+    uorder: i32,
+    _: f64,
+    _: f64,
+    vstride: i32,
+    vorder: i32,
+    p: *const f64,
+) -> Vec<f64> {
+    let n = fixedgl::counts::map2_points(target, ustride, uorder, vstride, vorder);
+    // SAFETY: as `points`.
+    unsafe { points(p, n) }
+}

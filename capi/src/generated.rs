@@ -2154,7 +2154,12 @@ pub unsafe extern "C" fn glMap1d(
     order: i32,
     points: *const f64,
 ) {
-    unimplemented("glMap1d");
+    with_gl("glMap1d", |gl| {
+        let points = args::map1d(gl, target, u1, u2, stride, order, points);
+        gl.ctx.execute(&Call::Map1d(Box::new((
+            target, u1, u2, stride, order, points,
+        ))));
+    })
 }
 
 /// `glMap1f(target, u1, u2, stride, order, points)`.
@@ -2167,7 +2172,12 @@ pub unsafe extern "C" fn glMap1f(
     order: i32,
     points: *const f32,
 ) {
-    unimplemented("glMap1f");
+    with_gl("glMap1f", |gl| {
+        let points = args::map1f(gl, target, u1, u2, stride, order, points);
+        gl.ctx.execute(&Call::Map1f(Box::new((
+            target, u1, u2, stride, order, points,
+        ))));
+    })
 }
 
 /// `glMap2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points)`.
@@ -2184,7 +2194,14 @@ pub unsafe extern "C" fn glMap2d(
     vorder: i32,
     points: *const f64,
 ) {
-    unimplemented("glMap2d");
+    with_gl("glMap2d", |gl| {
+        let points = args::map2d(
+            gl, target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+        );
+        gl.ctx.execute(&Call::Map2d(Box::new((
+            target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+        ))));
+    })
 }
 
 /// `glMap2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points)`.
@@ -2201,103 +2218,159 @@ pub unsafe extern "C" fn glMap2f(
     vorder: i32,
     points: *const f32,
 ) {
-    unimplemented("glMap2f");
+    with_gl("glMap2f", |gl| {
+        let points = args::map2f(
+            gl, target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+        );
+        gl.ctx.execute(&Call::Map2f(Box::new((
+            target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+        ))));
+    })
 }
 
 /// `glMapGrid1d(un, u1, u2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glMapGrid1d(un: i32, u1: f64, u2: f64) {
-    unimplemented("glMapGrid1d");
+    with_gl("glMapGrid1d", |gl| {
+        gl.ctx.map_grid1d(un, u1, u2);
+    })
 }
 
 /// `glMapGrid1f(un, u1, u2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glMapGrid1f(un: i32, u1: f32, u2: f32) {
-    unimplemented("glMapGrid1f");
+    with_gl("glMapGrid1f", |gl| {
+        gl.ctx.map_grid1f(un, u1, u2);
+    })
 }
 
 /// `glMapGrid2d(un, u1, u2, vn, v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glMapGrid2d(un: i32, u1: f64, u2: f64, vn: i32, v1: f64, v2: f64) {
-    unimplemented("glMapGrid2d");
+    with_gl("glMapGrid2d", |gl| {
+        gl.ctx
+            .execute(&Call::MapGrid2d(Box::new((un, u1, u2, vn, v1, v2))));
+    })
 }
 
 /// `glMapGrid2f(un, u1, u2, vn, v1, v2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glMapGrid2f(un: i32, u1: f32, u2: f32, vn: i32, v1: f32, v2: f32) {
-    unimplemented("glMapGrid2f");
+    with_gl("glMapGrid2f", |gl| {
+        gl.ctx.map_grid2f(un, u1, u2, vn, v1, v2);
+    })
 }
 
 /// `glEvalCoord1d(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1d(u: f64) {
-    unimplemented("glEvalCoord1d");
+    with_gl("glEvalCoord1d", |gl| {
+        gl.ctx.eval_coord1d(u);
+    })
 }
 
 /// `glEvalCoord1dv(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1dv(u: *const f64) {
-    unimplemented("glEvalCoord1dv");
+    with_gl("glEvalCoord1dv", |gl| {
+        let u = match read::array::<f64, 1>(u) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::EvalCoord1dv(u));
+    })
 }
 
 /// `glEvalCoord1f(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1f(u: f32) {
-    unimplemented("glEvalCoord1f");
+    with_gl("glEvalCoord1f", |gl| {
+        gl.ctx.eval_coord1f(u);
+    })
 }
 
 /// `glEvalCoord1fv(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1fv(u: *const f32) {
-    unimplemented("glEvalCoord1fv");
+    with_gl("glEvalCoord1fv", |gl| {
+        let u = match read::array::<f32, 1>(u) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::EvalCoord1fv(u));
+    })
 }
 
 /// `glEvalCoord2d(u, v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2d(u: f64, v: f64) {
-    unimplemented("glEvalCoord2d");
+    with_gl("glEvalCoord2d", |gl| {
+        gl.ctx.eval_coord2d(u, v);
+    })
 }
 
 /// `glEvalCoord2dv(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2dv(u: *const f64) {
-    unimplemented("glEvalCoord2dv");
+    with_gl("glEvalCoord2dv", |gl| {
+        let u = match read::array::<f64, 2>(u) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::EvalCoord2dv(u));
+    })
 }
 
 /// `glEvalCoord2f(u, v)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2f(u: f32, v: f32) {
-    unimplemented("glEvalCoord2f");
+    with_gl("glEvalCoord2f", |gl| {
+        gl.ctx.eval_coord2f(u, v);
+    })
 }
 
 /// `glEvalCoord2fv(u)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2fv(u: *const f32) {
-    unimplemented("glEvalCoord2fv");
+    with_gl("glEvalCoord2fv", |gl| {
+        let u = match read::array::<f32, 2>(u) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::EvalCoord2fv(u));
+    })
 }
 
 /// `glEvalMesh1(mode, i1, i2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalMesh1(mode: u32, i1: i32, i2: i32) {
-    unimplemented("glEvalMesh1");
+    with_gl("glEvalMesh1", |gl| {
+        gl.ctx.eval_mesh1(mode, i1, i2);
+    })
 }
 
 /// `glEvalPoint1(i)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalPoint1(i: i32) {
-    unimplemented("glEvalPoint1");
+    with_gl("glEvalPoint1", |gl| {
+        gl.ctx.eval_point1(i);
+    })
 }
 
 /// `glEvalMesh2(mode, i1, i2, j1, j2)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalMesh2(mode: u32, i1: i32, i2: i32, j1: i32, j2: i32) {
-    unimplemented("glEvalMesh2");
+    with_gl("glEvalMesh2", |gl| {
+        gl.ctx.eval_mesh2(mode, i1, i2, j1, j2);
+    })
 }
 
 /// `glEvalPoint2(i, j)`.
 #[no_mangle]
 pub unsafe extern "C" fn glEvalPoint2(i: i32, j: i32) {
-    unimplemented("glEvalPoint2");
+    with_gl("glEvalPoint2", |gl| {
+        gl.ctx.eval_point2(i, j);
+    })
 }
 
 /// `glAlphaFunc(func, ref)`.
@@ -2381,24 +2454,6 @@ pub unsafe extern "C" fn glDrawPixels(
         gl.ctx
             .execute(&Call::DrawPixels(width, height, format, type_, pixels));
     })
-}
-
-/// `glGetMapdv(target, query, v)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetMapdv(target: u32, query: u32, v: *mut f64) {
-    unimplemented("glGetMapdv");
-}
-
-/// `glGetMapfv(target, query, v)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetMapfv(target: u32, query: u32, v: *mut f32) {
-    unimplemented("glGetMapfv");
-}
-
-/// `glGetMapiv(target, query, v)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetMapiv(target: u32, query: u32, v: *mut i32) {
-    unimplemented("glGetMapiv");
 }
 
 /// `glFrustum(left, right, bottom, top, zNear, zFar)`.
@@ -5034,6 +5089,18 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glEndList" => glEndList as *const c_void,
         b"glEndQuery" => glEndQuery as *const c_void,
         b"glEndQueryARB" => glEndQuery as *const c_void,
+        b"glEvalCoord1d" => glEvalCoord1d as *const c_void,
+        b"glEvalCoord1dv" => glEvalCoord1dv as *const c_void,
+        b"glEvalCoord1f" => glEvalCoord1f as *const c_void,
+        b"glEvalCoord1fv" => glEvalCoord1fv as *const c_void,
+        b"glEvalCoord2d" => glEvalCoord2d as *const c_void,
+        b"glEvalCoord2dv" => glEvalCoord2dv as *const c_void,
+        b"glEvalCoord2f" => glEvalCoord2f as *const c_void,
+        b"glEvalCoord2fv" => glEvalCoord2fv as *const c_void,
+        b"glEvalMesh1" => glEvalMesh1 as *const c_void,
+        b"glEvalMesh2" => glEvalMesh2 as *const c_void,
+        b"glEvalPoint1" => glEvalPoint1 as *const c_void,
+        b"glEvalPoint2" => glEvalPoint2 as *const c_void,
         b"glFeedbackBuffer" => glFeedbackBuffer as *const c_void,
         b"glFinish" => glFinish as *const c_void,
         b"glFlush" => glFlush as *const c_void,
@@ -5074,6 +5141,9 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetIntegerv" => glGetIntegerv as *const c_void,
         b"glGetLightfv" => glGetLightfv as *const c_void,
         b"glGetLightiv" => glGetLightiv as *const c_void,
+        b"glGetMapdv" => glGetMapdv as *const c_void,
+        b"glGetMapfv" => glGetMapfv as *const c_void,
+        b"glGetMapiv" => glGetMapiv as *const c_void,
         b"glGetMaterialfv" => glGetMaterialfv as *const c_void,
         b"glGetMaterialiv" => glGetMaterialiv as *const c_void,
         b"glGetPixelMapfv" => glGetPixelMapfv as *const c_void,
@@ -5131,9 +5201,17 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glLoadTransposeMatrixf" => glLoadTransposeMatrixf as *const c_void,
         b"glLoadTransposeMatrixfARB" => glLoadTransposeMatrixf as *const c_void,
         b"glLogicOp" => glLogicOp as *const c_void,
+        b"glMap1d" => glMap1d as *const c_void,
+        b"glMap1f" => glMap1f as *const c_void,
+        b"glMap2d" => glMap2d as *const c_void,
+        b"glMap2f" => glMap2f as *const c_void,
         b"glMapBuffer" => glMapBuffer as *const c_void,
         b"glMapBufferARB" => glMapBuffer as *const c_void,
         b"glMapBufferOES" => glMapBuffer as *const c_void,
+        b"glMapGrid1d" => glMapGrid1d as *const c_void,
+        b"glMapGrid1f" => glMapGrid1f as *const c_void,
+        b"glMapGrid2d" => glMapGrid2d as *const c_void,
+        b"glMapGrid2f" => glMapGrid2f as *const c_void,
         b"glMaterialf" => glMaterialf as *const c_void,
         b"glMaterialfv" => glMaterialfv as *const c_void,
         b"glMateriali" => glMateriali as *const c_void,

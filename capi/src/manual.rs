@@ -470,3 +470,42 @@ pub unsafe extern "C" fn glRenderMode(mode: u32) -> i32 {
         result
     })
 }
+
+/// The values `glGetMap*v(target, query)` writes: the map's orders size COEFF.
+fn map_count(gl: &mut crate::current::Gl, target: u32, query: u32) -> usize {
+    let maps = &gl.ctx.state().eval_maps;
+    let map = match target {
+        gl::MAP1_COLOR_4..=gl::MAP1_VERTEX_4 => maps.map1.get((target - gl::MAP1_COLOR_4) as usize),
+        gl::MAP2_COLOR_4..=gl::MAP2_VERTEX_4 => maps.map2.get((target - gl::MAP2_COLOR_4) as usize),
+        _ => None,
+    };
+    map.and_then(|m| counts::get_map(target, query, m.uorder, m.vorder))
+        .unwrap_or(0)
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapfv(target: u32, query: u32, v: *mut f32) {
+    with_gl("glGetMapfv", |gl| {
+        let n = map_count(gl, target, query);
+        // SAFETY: the query's values.
+        unsafe { through(v, n, |v| gl.ctx.get_mapfv(target, query, v)) }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapdv(target: u32, query: u32, v: *mut f64) {
+    with_gl("glGetMapdv", |gl| {
+        let n = map_count(gl, target, query);
+        // SAFETY: the query's values.
+        unsafe { through(v, n, |v| gl.ctx.get_mapdv(target, query, v)) }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetMapiv(target: u32, query: u32, v: *mut i32) {
+    with_gl("glGetMapiv", |gl| {
+        let n = map_count(gl, target, query);
+        // SAFETY: the query's values.
+        unsafe { through(v, n, |v| gl.ctx.get_mapiv(target, query, v)) }
+    })
+}

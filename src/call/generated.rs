@@ -4,8 +4,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::{
-    ArgKind, MapWrites, MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs,
-    TexSubImage2DArgs,
+    ArgKind, Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MapWrites,
+    MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs,
 };
 use crate::arrays::Pointer;
 
@@ -807,6 +807,58 @@ pub enum Call {
     /// `glPassThrough(token)`.
     PassThrough(f32),
 
+    // Evaluators (GL 2.1 §5.1): context/eval.rs. Map* carry the points as the caller passed them.
+    /// `glMap1f(target, u1, u2, stride, order, points)`.
+    ///
+    /// target, u1, u2, stride, order, points (boxed, as the next four: see the module docs on size).
+    Map1f(Box<Map1fArgs>),
+    /// `glMap1d(target, u1, u2, stride, order, points)`.
+    ///
+    /// target, u1, u2, stride, order, points.
+    Map1d(Box<Map1dArgs>),
+    /// `glMap2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points)`.
+    ///
+    /// target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points.
+    Map2f(Box<Map2fArgs>),
+    /// `glMap2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points)`.
+    ///
+    /// target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points.
+    Map2d(Box<Map2dArgs>),
+    /// `glMapGrid1f(un, u1, u2)`.
+    MapGrid1f(i32, f32, f32),
+    /// `glMapGrid1d(un, u1, u2)`.
+    MapGrid1d(i32, f64, f64),
+    /// `glMapGrid2f(un, u1, u2, vn, v1, v2)`.
+    MapGrid2f(i32, f32, f32, i32, f32, f32),
+    /// `glMapGrid2d(un, u1, u2, vn, v1, v2)`.
+    ///
+    /// un, u1, u2, vn, v1, v2.
+    MapGrid2d(Box<MapGrid2dArgs>),
+    /// `glEvalCoord1f(u)`.
+    EvalCoord1f(f32),
+    /// `glEvalCoord1d(u)`.
+    EvalCoord1d(f64),
+    /// `glEvalCoord1fv(u)`.
+    EvalCoord1fv([f32; 1]),
+    /// `glEvalCoord1dv(u)`.
+    EvalCoord1dv([f64; 1]),
+    /// `glEvalCoord2f(u, v)`.
+    EvalCoord2f(f32, f32),
+    /// `glEvalCoord2d(u, v)`.
+    EvalCoord2d(f64, f64),
+    /// `glEvalCoord2fv(u)`.
+    EvalCoord2fv([f32; 2]),
+    /// `glEvalCoord2dv(u)`.
+    EvalCoord2dv([f64; 2]),
+    /// `glEvalPoint1(i)`.
+    EvalPoint1(i32),
+    /// `glEvalPoint2(i, j)`.
+    EvalPoint2(i32, i32),
+    /// `glEvalMesh1(mode, i1, i2)`.
+    EvalMesh1(u32, i32, i32),
+    /// `glEvalMesh2(mode, i1, i2, j1, j2)`.
+    EvalMesh2(u32, i32, i32, i32, i32),
+
     // Line and polygon stipple (GL 2.1 §3.4.2, §3.5.6): context/stipple.rs
     /// `glLineStipple(factor, pattern)`.
     LineStipple(i32, u16),
@@ -1188,6 +1240,26 @@ pub const NAMES: &[&str] = &[
     "PushName",
     "PopName",
     "PassThrough",
+    "Map1f",
+    "Map1d",
+    "Map2f",
+    "Map2d",
+    "MapGrid1f",
+    "MapGrid1d",
+    "MapGrid2f",
+    "MapGrid2d",
+    "EvalCoord1f",
+    "EvalCoord1d",
+    "EvalCoord1fv",
+    "EvalCoord1dv",
+    "EvalCoord2f",
+    "EvalCoord2d",
+    "EvalCoord2fv",
+    "EvalCoord2dv",
+    "EvalPoint1",
+    "EvalPoint2",
+    "EvalMesh1",
+    "EvalMesh2",
     "LineStipple",
     "PolygonStipple",
     "PointParameterf",
@@ -1564,6 +1636,26 @@ impl Call {
             Call::PushName(..) => "PushName",
             Call::PopName => "PopName",
             Call::PassThrough(..) => "PassThrough",
+            Call::Map1f(..) => "Map1f",
+            Call::Map1d(..) => "Map1d",
+            Call::Map2f(..) => "Map2f",
+            Call::Map2d(..) => "Map2d",
+            Call::MapGrid1f(..) => "MapGrid1f",
+            Call::MapGrid1d(..) => "MapGrid1d",
+            Call::MapGrid2f(..) => "MapGrid2f",
+            Call::MapGrid2d(..) => "MapGrid2d",
+            Call::EvalCoord1f(..) => "EvalCoord1f",
+            Call::EvalCoord1d(..) => "EvalCoord1d",
+            Call::EvalCoord1fv(..) => "EvalCoord1fv",
+            Call::EvalCoord1dv(..) => "EvalCoord1dv",
+            Call::EvalCoord2f(..) => "EvalCoord2f",
+            Call::EvalCoord2d(..) => "EvalCoord2d",
+            Call::EvalCoord2fv(..) => "EvalCoord2fv",
+            Call::EvalCoord2dv(..) => "EvalCoord2dv",
+            Call::EvalPoint1(..) => "EvalPoint1",
+            Call::EvalPoint2(..) => "EvalPoint2",
+            Call::EvalMesh1(..) => "EvalMesh1",
+            Call::EvalMesh2(..) => "EvalMesh2",
             Call::LineStipple(..) => "LineStipple",
             Call::PolygonStipple(..) => "PolygonStipple",
             Call::PointParameterf(..) => "PointParameterf",
@@ -1740,6 +1832,16 @@ impl Call {
                 | Call::MultiTexCoord4d(..)
                 | Call::MultiTexCoord4dv(..)
                 | Call::SwapBuffers
+                | Call::EvalCoord1f(..)
+                | Call::EvalCoord1d(..)
+                | Call::EvalCoord1fv(..)
+                | Call::EvalCoord1dv(..)
+                | Call::EvalCoord2f(..)
+                | Call::EvalCoord2d(..)
+                | Call::EvalCoord2fv(..)
+                | Call::EvalCoord2dv(..)
+                | Call::EvalPoint1(..)
+                | Call::EvalPoint2(..)
         )
     }
 
@@ -2153,6 +2255,26 @@ impl Call {
             Call::PushName(..) => &[],
             Call::PopName => &[],
             Call::PassThrough(..) => &[],
+            Call::Map1f(..) => &[],
+            Call::Map1d(..) => &[],
+            Call::Map2f(..) => &[],
+            Call::Map2d(..) => &[],
+            Call::MapGrid1f(..) => &[],
+            Call::MapGrid1d(..) => &[],
+            Call::MapGrid2f(..) => &[],
+            Call::MapGrid2d(..) => &[],
+            Call::EvalCoord1f(..) => &[],
+            Call::EvalCoord1d(..) => &[],
+            Call::EvalCoord1fv(..) => &[],
+            Call::EvalCoord1dv(..) => &[],
+            Call::EvalCoord2f(..) => &[],
+            Call::EvalCoord2d(..) => &[],
+            Call::EvalCoord2fv(..) => &[],
+            Call::EvalCoord2dv(..) => &[],
+            Call::EvalPoint1(..) => &[],
+            Call::EvalPoint2(..) => &[],
+            Call::EvalMesh1(..) => &[Enum],
+            Call::EvalMesh2(..) => &[Enum],
             Call::LineStipple(..) => &[],
             Call::PolygonStipple(..) => &[],
             Call::PointParameterf(..) => &[Enum],

@@ -30,6 +30,18 @@ pub type MultiDrawArraysArgs = (u32, Vec<i32>, Vec<i32>, i32);
 /// bytes or an offset into the element buffer), drawcount.
 pub type MultiDrawElementsArgs = (u32, Vec<i32>, u32, Vec<crate::arrays::Pointer>, i32);
 
+/// `Map1f`'s arguments: target, u1, u2, stride, order, points (the slice as the caller passed
+/// it; the map copies `order` points of it).
+pub type Map1fArgs = (u32, f32, f32, i32, i32, Vec<f32>);
+/// `Map1d`'s arguments, as `Map1fArgs`.
+pub type Map1dArgs = (u32, f64, f64, i32, i32, Vec<f64>);
+/// `Map2f`'s arguments: target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points.
+pub type Map2fArgs = (u32, f32, f32, i32, i32, f32, f32, i32, i32, Vec<f32>);
+/// `Map2d`'s arguments, as `Map2fArgs`.
+pub type Map2dArgs = (u32, f64, f64, i32, i32, f64, f64, i32, i32, Vec<f64>);
+/// `MapGrid2d`'s arguments: un, u1, u2, vn, v1, v2 (boxed: four doubles would grow every call).
+pub type MapGrid2dArgs = (i32, f64, f64, i32, f64, f64);
+
 /// What a program wrote through a MapBuffer mapping, recorded with the `UnmapBuffer` that ends
 /// it: the offset of the first byte that changed and the bytes from there to the last one that
 /// changed (`(0, [])`: nothing written). See `Context::map_buffer`.

@@ -295,6 +295,9 @@ enum Shape {
     Ints,
     /// An array of index pointers (MultiDrawElements' indices).
     Pointers,
+    /// Evaluator control points (Map1/Map2's `points`, `COMPSIZE(target, ...)`): the values as
+    /// the caller passed them.
+    Points(&'static str),
 }
 
 /// One field of a `Call` variant.
@@ -321,6 +324,7 @@ impl Field {
             Shape::Written => "MapWrites".to_string(),
             Shape::Ints => "Vec<i32>".to_string(),
             Shape::Pointers => "Vec<Pointer>".to_string(),
+            Shape::Points(t) => format!("Vec<{t}>"),
         };
         if self.boxed {
             format!("Box<{inner}>")
@@ -414,6 +418,12 @@ impl Implemented {
                     xml.name
                 );
                 Shape::Params(rust_scalar(&p.ptype))
+            } else if matches!(p.ptype.as_str(), "GLfloat" | "GLdouble")
+                && p.len
+                    .as_deref()
+                    .is_some_and(|l| l.starts_with("COMPSIZE(target"))
+            {
+                Shape::Points(rust_scalar(&p.ptype))
             } else if p.ptype == "GLuint" && p.len.as_deref() == Some("n") {
                 Shape::Names
             } else if matches!(p.ptype.as_str(), "GLint" | "GLsizei") && p.len.is_some() {
@@ -558,7 +568,8 @@ fn gen_call(cmds: &[Implemented]) -> String {
     let mut s = String::from(HEADER);
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
-         MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
+         Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MultiDrawArraysArgs, \
+         MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
     s.push_str("#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]\npub enum Call {\n");
@@ -1045,7 +1056,9 @@ fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
             let n = ident(f.param.len.as_deref().expect("values have a length"));
             format!("read::values({b}, {n}, fixedgl::pixels::MAX_PIXEL_MAP_TABLE)")
         }
-        Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers => return None,
+        Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers | Shape::Points(_) => {
+            return None
+        }
         Shape::Written => panic!(
             "gl{}: a field that is not a C parameter: write it by hand in capi/src",
             c.xml.name

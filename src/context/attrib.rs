@@ -119,7 +119,7 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; hints);
     }
     if has(gl::EVAL_BIT) {
-        copy!(d, s; enables.auto_normal, enables.map1, enables.map2);
+        copy!(d, s; enables.auto_normal, enables.map1, enables.map2, eval_grid);
     }
     if has(gl::MULTISAMPLE_BIT) {
         copy!(d, s; enables.multisample, enables.sample_alpha_to_coverage,

@@ -462,6 +462,45 @@ impl Context {
             Call::PushName(name) => self.push_name(name),
             Call::PopName => self.pop_name(),
             Call::PassThrough(token) => self.pass_through(token),
+            Call::Map1f(ref args) => {
+                let (target, u1, u2, stride, order, ref points) = **args;
+                self.map1f(target, u1, u2, stride, order, points)
+            }
+            Call::Map1d(ref args) => {
+                let (target, u1, u2, stride, order, ref points) = **args;
+                self.map1d(target, u1, u2, stride, order, points)
+            }
+            Call::Map2f(ref args) => {
+                let (target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, ref points) = **args;
+                self.map2f(
+                    target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+                )
+            }
+            Call::Map2d(ref args) => {
+                let (target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, ref points) = **args;
+                self.map2d(
+                    target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+                )
+            }
+            Call::MapGrid1f(un, u1, u2) => self.map_grid1f(un, u1, u2),
+            Call::MapGrid1d(un, u1, u2) => self.map_grid1d(un, u1, u2),
+            Call::MapGrid2f(un, u1, u2, vn, v1, v2) => self.map_grid2f(un, u1, u2, vn, v1, v2),
+            Call::MapGrid2d(ref args) => {
+                let (un, u1, u2, vn, v1, v2) = **args;
+                self.map_grid2d(un, u1, u2, vn, v1, v2)
+            }
+            Call::EvalCoord1f(u) => self.eval_coord1f(u),
+            Call::EvalCoord1d(u) => self.eval_coord1d(u),
+            Call::EvalCoord1fv(ref u) => self.eval_coord1fv(u),
+            Call::EvalCoord1dv(ref u) => self.eval_coord1dv(u),
+            Call::EvalCoord2f(u, v) => self.eval_coord2f(u, v),
+            Call::EvalCoord2d(u, v) => self.eval_coord2d(u, v),
+            Call::EvalCoord2fv(ref u) => self.eval_coord2fv(u),
+            Call::EvalCoord2dv(ref u) => self.eval_coord2dv(u),
+            Call::EvalPoint1(i) => self.eval_point1(i),
+            Call::EvalPoint2(i, j) => self.eval_point2(i, j),
+            Call::EvalMesh1(mode, i1, i2) => self.eval_mesh1(mode, i1, i2),
+            Call::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(mode, i1, i2, j1, j2),
             Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
             Call::PointParameterf(pname, param) => self.point_parameterf(pname, param),

@@ -374,6 +374,12 @@ impl Context {
             gl::TEXTURE_BINDING_3D => i(s.textures.units.get(unit)?.bindings[2] as i32),
             gl::TEXTURE_BINDING_CUBE_MAP => i(s.textures.units.get(unit)?.bindings[3] as i32),
             gl::MAX_TEXTURE_LOD_BIAS => f(crate::texture::MAX_TEXTURE_LOD_BIAS),
+            // Evaluators (table 6.33, and MAX_EVAL_ORDER of table 6.35).
+            gl::MAX_EVAL_ORDER => i(crate::state::MAX_EVAL_ORDER),
+            gl::MAP1_GRID_DOMAIN => floats(s.eval_grid.u1),
+            gl::MAP1_GRID_SEGMENTS => i(s.eval_grid.un1),
+            gl::MAP2_GRID_DOMAIN => floats(s.eval_grid.d2),
+            gl::MAP2_GRID_SEGMENTS => ints(s.eval_grid.n2),
             _ => b(*self.state.cap_mut(pname)?),
         };
         Some(v)

@@ -21,6 +21,7 @@
 mod buffers;
 mod control;
 mod dispatch;
+mod eval;
 mod framebuffer;
 mod lighting;
 mod raster;
@@ -414,6 +415,7 @@ pub(crate) mod stipple;
 
 // Occlusion queries (context/query.rs)
 mod query;
+pub use eval::MAX_EVAL_MESH_VERTICES;
 pub use query::QUERY_COUNTER_BITS;
 
 // Display lists and attribute stacks (context/lists.rs, context/attrib.rs)

@@ -489,6 +489,45 @@ impl GlBackend {
             Call::PushName(name) => gl.push_name(name),
             Call::PopName => gl.pop_name(),
             Call::PassThrough(token) => gl.pass_through(token),
+            Call::Map1f(ref args) => {
+                let (target, u1, u2, stride, order, ref points) = **args;
+                self.map1f(target, u1, u2, stride, order, points)
+            }
+            Call::Map1d(ref args) => {
+                let (target, u1, u2, stride, order, ref points) = **args;
+                self.map1d(target, u1, u2, stride, order, points)
+            }
+            Call::Map2f(ref args) => {
+                let (target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, ref points) = **args;
+                self.map2f(
+                    target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+                )
+            }
+            Call::Map2d(ref args) => {
+                let (target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, ref points) = **args;
+                self.map2d(
+                    target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points,
+                )
+            }
+            Call::MapGrid1f(un, u1, u2) => gl.map_grid1f(un, u1, u2),
+            Call::MapGrid1d(un, u1, u2) => gl.map_grid1d(un, u1, u2),
+            Call::MapGrid2f(un, u1, u2, vn, v1, v2) => gl.map_grid2f(un, u1, u2, vn, v1, v2),
+            Call::MapGrid2d(ref args) => {
+                let (un, u1, u2, vn, v1, v2) = **args;
+                gl.map_grid2d(un, u1, u2, vn, v1, v2)
+            }
+            Call::EvalCoord1f(u) => gl.eval_coord1f(u),
+            Call::EvalCoord1d(u) => gl.eval_coord1d(u),
+            Call::EvalCoord1fv(ref u) => gl.eval_coord1fv(u),
+            Call::EvalCoord1dv(ref u) => gl.eval_coord1dv(u),
+            Call::EvalCoord2f(u, v) => gl.eval_coord2f(u, v),
+            Call::EvalCoord2d(u, v) => gl.eval_coord2d(u, v),
+            Call::EvalCoord2fv(ref u) => gl.eval_coord2fv(u),
+            Call::EvalCoord2dv(ref u) => gl.eval_coord2dv(u),
+            Call::EvalPoint1(i) => gl.eval_point1(i),
+            Call::EvalPoint2(i, j) => gl.eval_point2(i, j),
+            Call::EvalMesh1(mode, i1, i2) => gl.eval_mesh1(mode, i1, i2),
+            Call::EvalMesh2(mode, i1, i2, j1, j2) => gl.eval_mesh2(mode, i1, i2, j1, j2),
             Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
             Call::PointParameterf(pname, param) => gl.point_parameterf(pname, param),
@@ -2643,6 +2682,102 @@ impl Safe<'_> {
     pub(super) fn pass_through(self, token: f32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.PassThrough(token) }
+    }
+
+    /// `glMapGrid1f(un, u1, u2)`.
+    pub(super) fn map_grid1f(self, un: i32, u1: f32, u2: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.MapGrid1f(un, u1, u2) }
+    }
+
+    /// `glMapGrid1d(un, u1, u2)`.
+    pub(super) fn map_grid1d(self, un: i32, u1: f64, u2: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.MapGrid1d(un, u1, u2) }
+    }
+
+    /// `glMapGrid2f(un, u1, u2, vn, v1, v2)`.
+    pub(super) fn map_grid2f(self, un: i32, u1: f32, u2: f32, vn: i32, v1: f32, v2: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.MapGrid2f(un, u1, u2, vn, v1, v2) }
+    }
+
+    /// `glMapGrid2d(un, u1, u2, vn, v1, v2)`.
+    pub(super) fn map_grid2d(self, un: i32, u1: f64, u2: f64, vn: i32, v1: f64, v2: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.MapGrid2d(un, u1, u2, vn, v1, v2) }
+    }
+
+    /// `glEvalCoord1f(u)`.
+    pub(super) fn eval_coord1f(self, u: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalCoord1f(u) }
+    }
+
+    /// `glEvalCoord1d(u)`.
+    pub(super) fn eval_coord1d(self, u: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalCoord1d(u) }
+    }
+
+    /// `glEvalCoord1fv(u)`.
+    pub(super) fn eval_coord1fv(self, u: &[f32; 1]) {
+        // SAFETY: the context is current (see `Safe`); `u` holds the 1 values the driver reads.
+        unsafe { self.0.EvalCoord1fv(u.as_ptr()) }
+    }
+
+    /// `glEvalCoord1dv(u)`.
+    pub(super) fn eval_coord1dv(self, u: &[f64; 1]) {
+        // SAFETY: the context is current (see `Safe`); `u` holds the 1 values the driver reads.
+        unsafe { self.0.EvalCoord1dv(u.as_ptr()) }
+    }
+
+    /// `glEvalCoord2f(u, v)`.
+    pub(super) fn eval_coord2f(self, u: f32, v: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalCoord2f(u, v) }
+    }
+
+    /// `glEvalCoord2d(u, v)`.
+    pub(super) fn eval_coord2d(self, u: f64, v: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalCoord2d(u, v) }
+    }
+
+    /// `glEvalCoord2fv(u)`.
+    pub(super) fn eval_coord2fv(self, u: &[f32; 2]) {
+        // SAFETY: the context is current (see `Safe`); `u` holds the 2 values the driver reads.
+        unsafe { self.0.EvalCoord2fv(u.as_ptr()) }
+    }
+
+    /// `glEvalCoord2dv(u)`.
+    pub(super) fn eval_coord2dv(self, u: &[f64; 2]) {
+        // SAFETY: the context is current (see `Safe`); `u` holds the 2 values the driver reads.
+        unsafe { self.0.EvalCoord2dv(u.as_ptr()) }
+    }
+
+    /// `glEvalPoint1(i)`.
+    pub(super) fn eval_point1(self, i: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalPoint1(i) }
+    }
+
+    /// `glEvalPoint2(i, j)`.
+    pub(super) fn eval_point2(self, i: i32, j: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalPoint2(i, j) }
+    }
+
+    /// `glEvalMesh1(mode, i1, i2)`.
+    pub(super) fn eval_mesh1(self, mode: u32, i1: i32, i2: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalMesh1(mode, i1, i2) }
+    }
+
+    /// `glEvalMesh2(mode, i1, i2, j1, j2)`.
+    pub(super) fn eval_mesh2(self, mode: u32, i1: i32, i2: i32, j1: i32, j2: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.EvalMesh2(mode, i1, i2, j1, j2) }
     }
 
     /// `glLineStipple(factor, pattern)`.

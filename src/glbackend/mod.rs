@@ -16,6 +16,7 @@
 
 mod buffers;
 mod egl;
+mod eval;
 mod generated;
 mod lists;
 mod osmesa;

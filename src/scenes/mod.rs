@@ -27,6 +27,8 @@ pub mod texture;
 pub mod pixels;
 // Selection: scenes/picking.rs
 pub mod picking;
+// Evaluators: scenes/evaluators.rs
+pub mod evaluators;
 // Line and polygon stipple (scenes/stipple.rs)
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
@@ -163,6 +165,7 @@ static SCENES: &[Scene] = &[
     projective::SCENES[1],
     pixels::SCENES[0],
     picking::SCENES[0],
+    evaluators::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
     tessellation::SCENES[0],

@@ -13,6 +13,7 @@ mod buffer_map;
 mod buffers;
 mod error_agreement;
 mod errors;
+mod eval;
 mod fragment_gl;
 mod fragment_state;
 mod gl_backend;

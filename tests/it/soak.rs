@@ -1284,6 +1284,8 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             stencil,
             blend,
             logic_op,
+            eval_maps,
+            eval_grid,
             raster_pos,
             pixel,
             pixel_maps,
