@@ -31,6 +31,8 @@ pub mod picking;
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
 pub mod quadrics;
+// GLUT text (scenes/text.rs)
+pub mod text;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -144,6 +146,7 @@ static SCENES: &[Scene] = &[
     picking::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
+    text::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
