@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generates src/glut/fonts.rs (GLUT's bitmap and stroke font data) from public font sources.
+"""Generates src/glut/bitmap_fonts.rs (GLUT's bitmap font data) from public font sources.
 
 Bitmap fonts: the X11 75dpi/misc BDF fonts (ISO8859-1 encodings), as shipped by Debian's
 xfonts-base (misc-fixed 8x13, 9x15: public domain) and xfonts-75dpi (Adobe Times and Helvetica,
@@ -11,15 +11,20 @@ first, or pass .bdf files directly:
         zcat /usr/share/fonts/X11/$f-ISO8859-1.pcf.gz > /tmp/$(basename $f).pcf
         pcf2bdf -o /tmp/$(basename $f).bdf /tmp/$(basename $f).pcf
     done
-    python3 tools/gen_glut_fonts.py /tmp /usr/share/hershey-fonts > src/glut/fonts.rs
+    python3 tools/gen_glut_fonts.py /tmp > src/glut/bitmap_fonts.rs
+
+The output is formatted with rustfmt (as `cargo fmt` leaves it) when rustfmt is on PATH.
 
 GLUT's layout of a bitmap glyph (the facts its data follows): every glyph is a cell as wide as
 its advance (the BDF DWIDTH) and as tall as the font's bounding box plus one row; the cell's
 origin is (0, 1 - box_y), so row 0 is one row below the lowest descender and column 0 is the
-pen position. Pixels of a glyph outside its cell are dropped. Codes 127..159 (and 0..31 in the proportional fonts) draw code 32.
+pen position. Pixels of a glyph outside its cell are dropped. Codes 127..159 (and 0..31 in
+the proportional fonts) draw code 32.
 Rows run bottom to top, each ceil(width / 8) bytes, most significant bit first.
 """
 import os
+import shutil
+import subprocess
 import sys
 
 FONTS = [
@@ -86,37 +91,6 @@ def cell(box, glyph):
     return dw, bytes(out)
 
 
-def parse_jhf(path):
-    """Hershey .jhf: per glyph 5-digit number, 3-digit vertex count, then coordinate pairs
-    as characters offset from 'R'; ' R' is a pen-up. First pair is left/right bounds."""
-    glyphs = []
-    with open(path, encoding="latin-1") as f:
-        data = f.read().replace("\r", "")
-    text = "".join(data.split("\n")) if False else data
-    pos = 0
-    lines = data.split("\n")
-    buf = ""
-    for line in lines:
-        if not line:
-            continue
-        buf += line
-        n = int(buf[5:8])
-        if len(buf) - 8 >= 2 * n:
-            body = buf[8 : 8 + 2 * n]
-            left = ord(body[0]) - ord("R")
-            right = ord(body[1]) - ord("R")
-            strokes = [[]]
-            for k in range(1, n):
-                a, b = body[2 * k], body[2 * k + 1]
-                if a == " " and b == "R":
-                    strokes.append([])
-                else:
-                    strokes[-1].append((ord(a) - ord("R"), ord(b) - ord("R")))
-            glyphs.append((left, right, [s for s in strokes if s]))
-            buf = ""
-    return glyphs
-
-
 def main():
     bdf_dir = sys.argv[1]
     out = []
@@ -159,7 +133,16 @@ def main():
         out.append("    ],")
         out.append("};")
         out.append("")
-    print("\n".join(out))
+    text = "\n".join(out) + "\n"
+    if shutil.which("rustfmt"):
+        text = subprocess.run(
+            ["rustfmt", "--edition", "2021", "--emit", "stdout"],
+            input=text,
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+    sys.stdout.write(text)
 
 
 if __name__ == "__main__":
