@@ -219,6 +219,56 @@ mod tests {
     }
 
     #[test]
+    fn the_calls_are_freegluts() {
+        use crate::Call;
+        let mut gl = Context::new(32, 32).unwrap();
+        gl.start_recording();
+        bitmap_string(&mut gl, BITMAP_HELVETICA_10, "A\nb");
+        bitmap_string(&mut gl, BITMAP_HELVETICA_10, "");
+        let calls = gl.stop_recording();
+        let f = BITMAP_HELVETICA_10.data();
+        let (a, b) = (f.widths[usize::from(b'A')], f.widths[usize::from(b'b')]);
+        let mut want = vec![
+            Call::PushClientAttrib(gl::CLIENT_PIXEL_STORE_BIT),
+            Call::PixelStorei(gl::UNPACK_SWAP_BYTES, 0),
+            Call::PixelStorei(gl::UNPACK_LSB_FIRST, 0),
+            Call::PixelStorei(gl::UNPACK_ROW_LENGTH, 0),
+            Call::PixelStorei(gl::UNPACK_SKIP_ROWS, 0),
+            Call::PixelStorei(gl::UNPACK_SKIP_PIXELS, 0),
+            Call::PixelStorei(gl::UNPACK_ALIGNMENT, 1),
+        ];
+        want.push(Call::Bitmap(
+            i32::from(a),
+            14,
+            0.0,
+            3.0,
+            f32::from(a),
+            0.0,
+            Box::new(Some(f.glyph(b'A').to_vec())),
+        ));
+        want.push(Call::Bitmap(
+            0,
+            0,
+            0.0,
+            0.0,
+            -f32::from(a),
+            -14.0,
+            Box::new(None),
+        ));
+        want.push(Call::Bitmap(
+            i32::from(b),
+            14,
+            0.0,
+            3.0,
+            f32::from(b),
+            0.0,
+            Box::new(Some(f.glyph(b'b').to_vec())),
+        ));
+        want.push(Call::PopClientAttrib);
+        assert_eq!(calls, want);
+    }
+
+    #[test]
     fn a_character_is_one_bitmap_under_tight_unpack_and_restores_the_modes() {
         let mut gl = Context::new(32, 32).unwrap();
         gl.pixel_storei(gl::UNPACK_ALIGNMENT, 8);
