@@ -1,6 +1,6 @@
 //! The GLUT solids and wires lecture code draws with: sphere, cube, cone, torus and the Utah
 //! teapot, with the vertices, winding and normals freeglut 3.x gives them (fg_geometry.c,
-//! fg_teapot.c).
+//! fg_teapot.c), and its bitmap fonts (`bitmap_character` and friends, in `text`).
 //!
 //! Each shape is first built as a [`Mesh`] (vertex and normal arrays plus index lists, one per
 //! Begin/End part, exactly as freeglut builds them), then drawn through the context's own
@@ -12,7 +12,15 @@
 //! 65535 vertices; here a shape that would need more draws nothing, which also bounds the memory
 //! a caller's `slices`/`stacks` can make us allocate.
 
+mod bitmap_fonts;
 mod teapot;
+mod text;
+
+pub use text::{
+    bitmap_character, bitmap_height, bitmap_length, bitmap_string, bitmap_width, BitmapFont,
+    BitmapFontData, BITMAP_8_BY_13, BITMAP_9_BY_15, BITMAP_HELVETICA_10, BITMAP_HELVETICA_12,
+    BITMAP_HELVETICA_18, BITMAP_TIMES_ROMAN_10, BITMAP_TIMES_ROMAN_24,
+};
 
 use crate::{gl, Context};
 

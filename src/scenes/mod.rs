@@ -33,6 +33,8 @@ pub mod evaluators;
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
 pub mod quadrics;
+// GLUT text (scenes/text.rs)
+pub mod text;
 // GLU tessellator (scenes/tessellation.rs)
 pub mod tessellation;
 // Smooth points, lines and polygons (scenes/antialiasing.rs)
@@ -168,6 +170,7 @@ static SCENES: &[Scene] = &[
     evaluators::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
+    text::SCENES[0],
     tessellation::SCENES[0],
     antialiasing::SCENES[0],
     sprites::SCENES[0],
