@@ -558,7 +558,7 @@ fn gen_call(cmds: &[Implemented]) -> String {
     let mut s = String::from(HEADER);
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
-         MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
+         MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
     s.push_str("#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]\npub enum Call {\n");
