@@ -35,6 +35,7 @@ pub const MAX_GEN_TEXTURES: i32 = 1 << 16;
 /// The error `TexImage2D` raises for these arguments before looking at state or data, if any
 /// (GL 2.1 §3.8.1): shared by the front end and the GL backend's replay.
 #[allow(clippy::too_many_arguments)]
+#[cfg_attr(not(feature = "gl"), allow(dead_code))]
 pub fn tex_image_args_error(
     target: u32,
     level: i32,

@@ -555,7 +555,7 @@ fn cube_maps_sample_as_the_driver_does() {
                         for (di, dj) in [(0, 0), (1, 0), (1, 1), (0, 1)] {
                             let u = (i + di) as f32 / g as f32;
                             let v = (j + dj) as f32 / g as f32;
-                            let a = u * 6.283;
+                            let a = u * std::f32::consts::TAU;
                             let b = (v - 0.5) * 3.0;
                             c.tex_coord3f(a.cos() * b.cos(), b.sin(), a.sin() * b.cos());
                             c.vertex2f(u * 2.0 - 1.0, v * 2.0 - 1.0);
