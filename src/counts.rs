@@ -51,6 +51,18 @@ pub fn light_model(pname: u32) -> Option<usize> {
     }
 }
 
+/// `PointParameter{fv,iv}` (table 6.11).
+pub fn point_parameter(pname: u32) -> Option<usize> {
+    match pname {
+        gl::POINT_DISTANCE_ATTENUATION => Some(3),
+        gl::POINT_SIZE_MIN
+        | gl::POINT_SIZE_MAX
+        | gl::POINT_FADE_THRESHOLD_SIZE
+        | gl::POINT_SPRITE_COORD_ORIGIN => Some(1),
+        _ => None,
+    }
+}
+
 /// `Fog{fv,iv}` (table 6.8).
 pub fn fog(pname: u32) -> Option<usize> {
     match pname {

@@ -1,7 +1,8 @@
 //! The GLU 1.3 helpers lecture code leans on: `gluLookAt`, `gluPerspective`, `gluOrtho2D`,
-//! `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2); `gluBuild2DMipmaps`;
-//! the quadrics (§6, `quadric.rs`: `new_quadric`, `sphere`, `cylinder`, `disk`, `partial_disk`);
-//! `gluErrorString`.
+//! `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2); `gluScaleImage` and
+//! `gluBuild2DMipmaps` (§3, `mipmap.rs`); the tessellator (§5, `tess.rs`: `new_tess`,
+//! callbacks, winding rules, contours); the quadrics (§6, `quadric.rs`: `new_quadric`,
+//! `sphere`, `cylinder`, `disk`, `partial_disk`); `gluErrorString`. NURBS (§7) are not there.
 //!
 //! Design decision: like GLU itself, these are not GL entry points. Each builds its matrix on
 //! the CPU and multiplies it onto the current matrix through the context's own calls
@@ -18,6 +19,16 @@ pub use quadric::{
     GLU_ERROR, GLU_FILL, GLU_FLAT, GLU_INSIDE, GLU_LINE, GLU_NONE, GLU_OUTSIDE, GLU_POINT,
     GLU_SILHOUETTE, GLU_SMOOTH,
 };
+
+// Tessellator (glu/tess.rs, the sweep in glu/tess_sweep.rs over the mesh of glu/tess_mesh.rs)
+mod tess;
+mod tess_mesh;
+mod tess_sweep;
+pub use tess::*;
+
+// gluScaleImage, gluBuild2DMipmaps (glu/mipmap.rs)
+mod mipmap;
+pub use mipmap::{build_2d_mipmaps, scale_image};
 
 /// `v / |v|`, or `v` unchanged when it has zero length (as the reference GLU does).
 fn normalize(v: [f64; 3]) -> [f64; 3] {
@@ -221,127 +232,10 @@ fn invert(m: &[f64; 16]) -> Option<[f64; 16]> {
     Some(inv.map(|v| v * det))
 }
 
-// gluBuild2DMipmaps
 /// `GLU_INVALID_VALUE`.
 pub const GLU_INVALID_VALUE: i32 = 100_901;
 /// `GLU_INVALID_ENUM`.
 pub const GLU_INVALID_ENUM: i32 = 100_900;
-
-/// `gluBuild2DMipmaps` (GLU 1.3 §3.2) for UNSIGNED_BYTE data: level 0 is `data` (read under
-/// the context's UNPACK_ modes: ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS; SWAP_BYTES does
-/// nothing to bytes), each next level halves the previous one with a 2x2 box filter, rounding
-/// `(a + b + c + d + 2) / 4` as the reference GLU does, down to 1x1; every level goes to
-/// `tex_image_2d` tightly packed (UNPACK_ALIGNMENT 1, ROW_LENGTH 0, no skips), and the modes
-/// are restored afterwards (as GLU saves and restores the pixel store state).
-/// Returns 0, or GLU_INVALID_VALUE for a size below 1 or data too short, GLU_INVALID_ENUM for
-/// a format or type not supported. Deviation: a size that is not a power of two is reduced to
-/// the power of two below it by nearest sampling (GLU scales to the nearest one with a box
-/// filter).
-#[allow(clippy::too_many_arguments)]
-pub fn build_2d_mipmaps(
-    ctx: &mut Context,
-    target: u32,
-    internal_format: i32,
-    width: i32,
-    height: i32,
-    format: u32,
-    type_: u32,
-    data: &[u8],
-) -> i32 {
-    use crate::gl;
-    use crate::texture::format_components;
-    let Some(n) = format_components(format) else {
-        return GLU_INVALID_ENUM;
-    };
-    if type_ != gl::UNSIGNED_BYTE {
-        return GLU_INVALID_ENUM;
-    }
-    if width < 1 || height < 1 || width > crate::texture::MAX_TEXTURE_SIZE * 8 {
-        return GLU_INVALID_VALUE;
-    }
-    let saved = ctx.state().unpack;
-    // Checked (the row length and skips are the user's): an overflow is data too short.
-    let Some(layout) = saved
-        .layout(width, height, n, 1)
-        .filter(|l| data.len() >= l.need)
-    else {
-        return GLU_INVALID_VALUE;
-    };
-    let pot = |x: i32| 1i32 << (31 - x.leading_zeros());
-    let (mut w, mut h) = (
-        pot(width).min(crate::texture::MAX_TEXTURE_SIZE),
-        pot(height).min(crate::texture::MAX_TEXTURE_SIZE),
-    );
-    // Level 0, tightly packed (nearest sampling when the size changes).
-    let mut img = Vec::with_capacity((w * h) as usize * n);
-    for j in 0..h as usize {
-        let sj = j * height as usize / h as usize;
-        for i in 0..w as usize {
-            let si = i * width as usize / w as usize;
-            let at = layout.at(si, sj);
-            img.extend_from_slice(data.get(at..at + n).unwrap_or(&[0, 0, 0, 0][..n.min(4)]));
-        }
-    }
-    // The skips are set (and restored) only when in use, so the usual recording is unchanged.
-    let skips = [
-        (gl::UNPACK_SKIP_ROWS, saved.skip_rows),
-        (gl::UNPACK_SKIP_PIXELS, saved.skip_pixels),
-    ];
-    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 1);
-    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
-    for &(pname, v) in &skips {
-        if v != 0 {
-            ctx.pixel_storei(pname, 0);
-        }
-    }
-    let mut level = 0;
-    loop {
-        ctx.tex_image_2d(
-            target,
-            level,
-            internal_format,
-            w,
-            h,
-            0,
-            format,
-            type_,
-            Some(&img),
-        );
-        if w == 1 && h == 1 {
-            break;
-        }
-        let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
-        let (fx, fy) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 });
-        let mut next = Vec::with_capacity((nw * nh) as usize * n);
-        for j in 0..nh as usize {
-            for i in 0..nw as usize {
-                for k in 0..n {
-                    let mut sum = 0u32;
-                    for dj in 0..fy {
-                        for di in 0..fx {
-                            let at = ((j * fy + dj) * w as usize + i * fx + di) * n + k;
-                            sum += u32::from(img.get(at).copied().unwrap_or(0));
-                        }
-                    }
-                    let cnt = (fx * fy) as u32;
-                    next.push(((sum + cnt / 2) / cnt) as u8);
-                }
-            }
-        }
-        img = next;
-        w = nw;
-        h = nh;
-        level += 1;
-    }
-    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, saved.alignment);
-    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, saved.row_length);
-    for &(pname, v) in &skips {
-        if v != 0 {
-            ctx.pixel_storei(pname, v);
-        }
-    }
-    0
-}
 
 /// `GLU_OUT_OF_MEMORY`.
 pub const GLU_OUT_OF_MEMORY: i32 = 100_902;

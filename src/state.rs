@@ -330,6 +330,44 @@ impl Default for Hints {
     }
 }
 
+/// Point parameters (GL 2.1 §3.4, table 6.11; `PointParameter`) and each unit's COORD_REPLACE
+/// (§3.4.1, attribute group "point").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointParams {
+    /// POINT_SIZE_MIN (initially 0).
+    pub size_min: f32,
+    /// POINT_SIZE_MAX (initially the largest point size, as llvmpipe reports it: 255).
+    pub size_max: f32,
+    /// POINT_FADE_THRESHOLD_SIZE (initially 1).
+    pub fade_threshold: f32,
+    /// POINT_DISTANCE_ATTENUATION: a, b, c of §3.4 eq. 3.1 (initially 1, 0, 0).
+    pub distance_attenuation: [f32; 3],
+    /// POINT_SPRITE_COORD_ORIGIN: UPPER_LEFT (initial) or LOWER_LEFT.
+    pub sprite_coord_origin: u32,
+    /// COORD_REPLACE of each texture unit (TexEnv target POINT_SPRITE).
+    pub coord_replace: [bool; MAX_TEXTURE_UNITS],
+}
+
+impl Default for PointParams {
+    fn default() -> Self {
+        PointParams {
+            size_min: 0.0,
+            size_max: 255.0,
+            fade_threshold: 1.0,
+            distance_attenuation: [1.0, 0.0, 0.0],
+            sprite_coord_origin: gl::UPPER_LEFT,
+            coord_replace: [false; MAX_TEXTURE_UNITS],
+        }
+    }
+}
+
+impl PointParams {
+    /// Distance attenuation is in effect (not the initial 1, 0, 0).
+    pub fn attenuated(&self) -> bool {
+        self.distance_attenuation != [1.0, 0.0, 0.0]
+    }
+}
+
 /// The whole GL state that fixedgl keeps, as plain data. `State::new` is the initial state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct State {
@@ -371,6 +409,8 @@ pub struct State {
 
     // Rasterisation (tables 6.11, 6.12, 6.13).
     pub point_size: f32,
+    /// Point parameters and COORD_REPLACE (table 6.11).
+    pub point: PointParams,
     pub line_width: f32,
     pub front_face: u32,
     pub cull_face_mode: u32,
@@ -477,6 +517,7 @@ impl State {
             color_material_face: gl::FRONT_AND_BACK,
             color_material_mode: gl::AMBIENT_AND_DIFFUSE,
             point_size: 1.0,
+            point: PointParams::default(),
             line_width: 1.0,
             front_face: gl::CCW,
             cull_face_mode: gl::BACK,

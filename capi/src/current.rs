@@ -13,7 +13,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Mutex;
 use std::thread::ThreadId;
 
-use fixedgl::{gl, Context};
+use fixedgl::{gl, Context, ContextConfig};
 
 /// Where a context's frames go when it presents.
 pub trait Surface: Send {
@@ -54,7 +54,13 @@ pub struct Gl {
 impl Gl {
     /// A context of `width` x `height`, or `None` when it cannot be made (the reason on stderr).
     pub fn new(width: u32, height: u32) -> Option<Gl> {
-        match Context::new(width.max(1), height.max(1)) {
+        Self::with_config(width, height, ContextConfig::default())
+    }
+
+    /// A context of `width` x `height` with the buffers `config` names (a double-buffered GLX
+    /// visual's context has a back buffer), or `None` as [`Gl::new`].
+    pub fn with_config(width: u32, height: u32, config: ContextConfig) -> Option<Gl> {
+        match Context::with_config(width.max(1), height.max(1), config) {
             Ok(mut ctx) => Some(Gl {
                 recorder: crate::record::Recorder::from_env(&mut ctx),
                 ctx,

@@ -3542,25 +3542,35 @@ pub unsafe extern "C" fn glMultiDrawElements(
 /// `glPointParameterf(pname, param)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPointParameterf(pname: u32, param: f32) {
-    unimplemented("glPointParameterf");
+    with_gl("glPointParameterf", |gl| {
+        gl.ctx.point_parameterf(pname, param);
+    })
 }
 
 /// `glPointParameterfv(pname, params)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPointParameterfv(pname: u32, params: *const f32) {
-    unimplemented("glPointParameterfv");
+    with_gl("glPointParameterfv", |gl| {
+        let params = read::params(params, counts::point_parameter(pname));
+        gl.ctx.execute(&Call::PointParameterfv(pname, params));
+    })
 }
 
 /// `glPointParameteri(pname, param)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPointParameteri(pname: u32, param: i32) {
-    unimplemented("glPointParameteri");
+    with_gl("glPointParameteri", |gl| {
+        gl.ctx.point_parameteri(pname, param);
+    })
 }
 
 /// `glPointParameteriv(pname, params)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPointParameteriv(pname: u32, params: *const i32) {
-    unimplemented("glPointParameteriv");
+    with_gl("glPointParameteriv", |gl| {
+        let params = read::params(params, counts::point_parameter(pname));
+        gl.ctx.execute(&Call::PointParameteriv(pname, params));
+    })
 }
 
 /// `glFogCoordf(coord)`.
@@ -4642,6 +4652,54 @@ pub unsafe extern "C" fn glMultiTexCoord4svARB(target: u32, v: *const i16) {
     glMultiTexCoord4sv(target, v)
 }
 
+/// `glPointParameterfARB`: [`glPointParameterf`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfARB(pname: u32, param: f32) {
+    glPointParameterf(pname, param)
+}
+
+/// `glPointParameterfEXT`: [`glPointParameterf`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfEXT(pname: u32, param: f32) {
+    glPointParameterf(pname, param)
+}
+
+/// `glPointParameterfSGIS`: [`glPointParameterf`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfSGIS(pname: u32, param: f32) {
+    glPointParameterf(pname, param)
+}
+
+/// `glPointParameterfvARB`: [`glPointParameterfv`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvARB(pname: u32, params: *const f32) {
+    glPointParameterfv(pname, params)
+}
+
+/// `glPointParameterfvEXT`: [`glPointParameterfv`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvEXT(pname: u32, params: *const f32) {
+    glPointParameterfv(pname, params)
+}
+
+/// `glPointParameterfvSGIS`: [`glPointParameterfv`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvSGIS(pname: u32, params: *const f32) {
+    glPointParameterfv(pname, params)
+}
+
+/// `glPointParameteriNV`: [`glPointParameteri`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameteriNV(pname: u32, param: i32) {
+    glPointParameteri(pname, param)
+}
+
+/// `glPointParameterivNV`: [`glPointParameteriv`].
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterivNV(pname: u32, params: *const i32) {
+    glPointParameteriv(pname, params)
+}
+
 /// `glPolygonModeNV`: [`glPolygonMode`].
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonModeNV(face: u32, mode: u32) {
@@ -5362,6 +5420,18 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glPixelTransferf" => glPixelTransferf as *const c_void,
         b"glPixelTransferi" => glPixelTransferi as *const c_void,
         b"glPixelZoom" => glPixelZoom as *const c_void,
+        b"glPointParameterf" => glPointParameterf as *const c_void,
+        b"glPointParameterfARB" => glPointParameterf as *const c_void,
+        b"glPointParameterfEXT" => glPointParameterf as *const c_void,
+        b"glPointParameterfSGIS" => glPointParameterf as *const c_void,
+        b"glPointParameterfv" => glPointParameterfv as *const c_void,
+        b"glPointParameterfvARB" => glPointParameterfv as *const c_void,
+        b"glPointParameterfvEXT" => glPointParameterfv as *const c_void,
+        b"glPointParameterfvSGIS" => glPointParameterfv as *const c_void,
+        b"glPointParameteri" => glPointParameteri as *const c_void,
+        b"glPointParameteriNV" => glPointParameteri as *const c_void,
+        b"glPointParameteriv" => glPointParameteriv as *const c_void,
+        b"glPointParameterivNV" => glPointParameteriv as *const c_void,
         b"glPointSize" => glPointSize as *const c_void,
         b"glPolygonMode" => glPolygonMode as *const c_void,
         b"glPolygonModeNV" => glPolygonMode as *const c_void,

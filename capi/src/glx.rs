@@ -25,6 +25,8 @@ use std::sync::Mutex;
 
 use x11_dl::xlib::{self, Display, XVisualInfo, Xlib};
 
+use fixedgl::ContextConfig;
+
 use crate::current::{self, guard, with_gl, Gl};
 use crate::read;
 use crate::xwin::{self, Kind, XDrawable, XSurface};
@@ -189,7 +191,10 @@ fn config_attrib(
         GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE | GLX_ALPHA_SIZE => 8,
         GLX_DEPTH_SIZE => 24,
         GLX_STENCIL_SIZE => 8,
-        GLX_ACCUM_RED_SIZE | GLX_ACCUM_GREEN_SIZE | GLX_ACCUM_BLUE_SIZE | GLX_ACCUM_ALPHA_SIZE => 0,
+        // 16 bits a channel, signed, as llvmpipe's (fixedgl's accumulation buffer).
+        GLX_ACCUM_RED_SIZE | GLX_ACCUM_GREEN_SIZE | GLX_ACCUM_BLUE_SIZE | GLX_ACCUM_ALPHA_SIZE => {
+            16
+        }
         GLX_RENDER_TYPE => GLX_RGBA_BIT,
         GLX_DRAWABLE_TYPE => drawable_types(i),
         GLX_X_RENDERABLE => c_int::from(visual.is_some()),
@@ -417,7 +422,14 @@ fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_vo
             "contexts do not share display lists and textures in fixedgl yet; each context keeps its own".into()
         });
     }
-    let Some(gl) = Gl::new(1, 1) else {
+    // The config's buffers: a back buffer when double-buffered (DrawBuffer and ReadBuffer
+    // default to BACK, SwapBuffers exchanges them), and the accumulation buffer every config has.
+    let buffers = ContextConfig {
+        double_buffered: CONFIGS.get(config).is_some_and(|c| c.double),
+        accum: true,
+        ..ContextConfig::default()
+    };
+    let Some(gl) = Gl::with_config(1, 1, buffers) else {
         return std::ptr::null_mut();
     };
     let p = current::register(gl);
@@ -535,13 +547,14 @@ fn make_current(dpy: *mut Display, draw: c_ulong, read: c_ulong, ctx: *mut c_voi
     TRUE
 }
 
-/// glXSwapBuffers on the current drawable: presents the frame.
-///
-/// This is where the front/back swap goes. fixedgl's `Context` has one colour buffer today, so
-/// what the context drew is presented as it is. When `Context::swap_buffers()` arrives (with
-/// DRAW_BUFFER/READ_BUFFER), this becomes: present the back buffer, then `gl.ctx.swap_buffers()`.
+/// glXSwapBuffers on the current drawable: presents the back buffer (the frame just drawn),
+/// then exchanges the buffers (`Context::swap_buffers`: the back buffer becomes the front one).
+/// The frame is recorded and shown before the swap, so that a recording's replay reads the same
+/// buffer; the swap itself goes into the next frame's calls. A single-buffered context's swap
+/// changes no buffer (GLX: no effect), but still presents.
 fn swap_buffers(gl: &mut Gl) {
     gl.present_frame();
+    gl.ctx.swap_buffers();
 }
 
 // ----- Entry points ---------------------------------------------------------------------------
@@ -715,7 +728,7 @@ pub unsafe extern "C" fn glXChooseVisual(
                 Some(&c) => visual_of(x, dpy, screen, c),
                 None => {
                     say("glXChooseVisual", || {
-                        "no visual meets the request (fixedgl has RGBA8, depth 24, stencil 8, no accumulation buffer, no stereo, no multisampling)".into()
+                        "no visual meets the request (fixedgl has RGBA8, depth 24, stencil 8, a 16-bit accumulation buffer, no stereo, no multisampling)".into()
                     });
                     std::ptr::null_mut()
                 }

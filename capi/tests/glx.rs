@@ -48,6 +48,11 @@ const GL_VIEWPORT: u32 = 0x0BA2;
 const GL_RGB: u32 = 0x1907;
 const GL_UNSIGNED_BYTE: u32 = 0x1401;
 const GL_PACK_ALIGNMENT: u32 = 0x0D05;
+const GL_DOUBLEBUFFER: u32 = 0x0C32;
+const GL_DRAW_BUFFER: u32 = 0x0C01;
+const GL_READ_BUFFER: u32 = 0x0C02;
+const GL_FRONT: i32 = 0x0404;
+const GL_BACK: i32 = 0x0405;
 
 /// The GL functions a test calls, looked up as a C program would (glXGetProcAddress).
 struct Gl {
@@ -92,6 +97,13 @@ impl Gl {
     fn fill(&self, rgb: [f32; 3]) {
         (self.clear_color)(rgb[0], rgb[1], rgb[2], 1.0);
         (self.clear)(GL_COLOR_BUFFER_BIT);
+    }
+
+    fn integer(&self, pname: u32) -> i32 {
+        let mut v = [0; 4];
+        // SAFETY: room for the four values the largest query writes.
+        unsafe { (self.get_integerv)(pname, v.as_mut_ptr()) };
+        v[0]
     }
 
     fn viewport_now(&self) -> [i32; 4] {
@@ -248,8 +260,11 @@ fn queries_configs_and_visuals() {
         GLX_PIXMAP_BIT
     );
     assert_eq!(attrib(&c, cfg, GLX_DRAWABLE_TYPE) & GLX_PIXMAP_BIT, 0);
+    // Every config has llvmpipe's 16-bit accumulation buffer.
+    assert_eq!(attrib(&c, cfg, GLX_ACCUM_RED_SIZE), 16);
+    assert_eq!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 16, 0]).len(), 2);
     // What fixedgl does not have: no config; an attribute GLX does not define: none either.
-    assert!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 1, 0]).is_empty());
+    assert!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 32, 0]).is_empty());
     assert!(choose_configs(&c, &[0x7777, 1, 0]).is_empty());
     // GLX_FBCONFIG_ID picks that config whatever else is asked.
     let id = attrib(&c, cfg, GLX_FBCONFIG_ID);
@@ -281,7 +296,12 @@ fn queries_configs_and_visuals() {
     xfree(vis);
     xfree(single);
     assert!(choose_visual(&c, &[GLX_DOUBLEBUFFER, 0]).is_null());
-    assert!(choose_visual(&c, &[GLX_RGBA, GLX_ACCUM_RED_SIZE, 8, 0]).is_null());
+    // GLUT_ACCUM's request (at least 8 bits) finds the 16-bit accumulation buffer; more than
+    // that, nothing.
+    let accum = choose_visual(&c, &[GLX_RGBA, GLX_ACCUM_RED_SIZE, 8, 0]);
+    assert!(!accum.is_null());
+    xfree(accum);
+    assert!(choose_visual(&c, &[GLX_RGBA, GLX_ACCUM_RED_SIZE, 32, 0]).is_null());
 
     // GetProcAddress: GLX and GL functions that work; NULL for what is not offered.
     for name in [
@@ -325,6 +345,10 @@ fn window_presents_at_swap_and_follows_resizes() {
     );
     glXSwapBuffers(dpy(&c), win);
     assert!(all(&c.read(win), [255, 0, 0]));
+    // A double-buffered visual's context: a back buffer, drawn into by default.
+    assert_eq!(gl.integer(GL_DOUBLEBUFFER), 1);
+    assert_eq!(gl.integer(GL_DRAW_BUFFER), GL_BACK);
+    assert_eq!(gl.integer(GL_READ_BUFFER), GL_BACK);
 
     // The program's reshape: glViewport with the new size.
     c.resize(win, 200, 150);
@@ -375,6 +399,9 @@ fn single_buffered_window_presents_at_flush() {
     gl.fill([0.0, 1.0, 1.0]);
     (gl.flush)();
     assert!(all(&c.read(xwin), [0, 255, 255]));
+    // A single-buffered config's context: only the front buffer.
+    assert_eq!(gl.integer(GL_DOUBLEBUFFER), 0);
+    assert_eq!(gl.integer(GL_DRAW_BUFFER), GL_FRONT);
 
     let (mut w, mut h, mut id) = (0, 0, 0);
     let mut ctx_id = 0;

@@ -842,6 +842,16 @@ pub enum Call {
     ///
     /// The mask as the caller passed it: the unpack modes in effect say how it is read.
     PolygonStipple(Vec<u8>),
+
+    // Point parameters (GL 2.1 §3.4, GL 1.4): context/raster.rs
+    /// `glPointParameterf(pname, param)`.
+    PointParameterf(u32, f32),
+    /// `glPointParameteri(pname, param)`.
+    PointParameteri(u32, i32),
+    /// `glPointParameterfv(pname, params)`.
+    PointParameterfv(u32, Vec<f32>),
+    /// `glPointParameteriv(pname, params)`.
+    PointParameteriv(u32, Vec<i32>),
 }
 
 /// Every variant's name, in declaration order (the recording format's call names).
@@ -1215,6 +1225,10 @@ pub const NAMES: &[&str] = &[
     "PassThrough",
     "LineStipple",
     "PolygonStipple",
+    "PointParameterf",
+    "PointParameteri",
+    "PointParameterfv",
+    "PointParameteriv",
 ];
 
 /// The variants that are window-system calls, not GL commands (no row in the command
@@ -1594,6 +1608,10 @@ impl Call {
             Call::PassThrough(..) => "PassThrough",
             Call::LineStipple(..) => "LineStipple",
             Call::PolygonStipple(..) => "PolygonStipple",
+            Call::PointParameterf(..) => "PointParameterf",
+            Call::PointParameteri(..) => "PointParameteri",
+            Call::PointParameterfv(..) => "PointParameterfv",
+            Call::PointParameteriv(..) => "PointParameteriv",
         }
     }
 
@@ -2186,6 +2204,10 @@ impl Call {
             Call::PassThrough(..) => &[],
             Call::LineStipple(..) => &[],
             Call::PolygonStipple(..) => &[],
+            Call::PointParameterf(..) => &[Enum],
+            Call::PointParameteri(..) => &[Enum],
+            Call::PointParameterfv(..) => &[Enum],
+            Call::PointParameteriv(..) => &[Enum],
         }
     }
 }

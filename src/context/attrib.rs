@@ -66,7 +66,7 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     if has(gl::POINT_BIT) {
         // Table 6.11.
-        copy!(d, s; point_size, enables.point_smooth, enables.point_sprite);
+        copy!(d, s; point_size, point, enables.point_smooth, enables.point_sprite);
     }
     if has(gl::LINE_BIT) {
         // Table 6.12.

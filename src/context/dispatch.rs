@@ -546,6 +546,10 @@ impl Context {
             Call::PassThrough(token) => self.pass_through(token),
             Call::LineStipple(factor, pattern) => self.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
+            Call::PointParameterf(pname, param) => self.point_parameterf(pname, param),
+            Call::PointParameteri(pname, param) => self.point_parameteri(pname, param),
+            Call::PointParameterfv(pname, ref params) => self.point_parameterfv(pname, params),
+            Call::PointParameteriv(pname, ref params) => self.point_parameteriv(pname, params),
         }
     }
 }

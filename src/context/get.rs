@@ -31,8 +31,20 @@ pub const VENDOR: &str = "fixedgl";
 pub const RENDERER: &str = "fixedgl CPU rasterizer";
 /// `VERSION`: GL 1.5, then the crate's own version (GL 2.1 §6.1.11 format).
 pub const VERSION: &str = concat!("1.5 fixedgl ", env!("CARGO_PKG_VERSION"));
-/// `EXTENSIONS`.
-pub const EXTENSIONS: &str = "GL_WIN_phong_shading";
+/// `EXTENSIONS`: the extensions whose every command and enum works, each word followed by a
+/// space, as Mesa writes the string (programs that split it, and piglit's glinfo, rely on the
+/// last space). Only what works is named: a program that checks an extension before using it
+/// must not take a path fixedgl lacks.
+pub const EXTENSIONS: &str = concat!(
+    "GL_ARB_depth_texture ",        // DEPTH_COMPONENT textures (GL 1.4)
+    "GL_ARB_multitexture ",         // ActiveTexture, MultiTexCoord (GL 1.3)
+    "GL_ARB_shadow ",               // TEXTURE_COMPARE_MODE (GL 1.4)
+    "GL_ARB_vertex_buffer_object ", // buffer objects, MapBuffer (GL 1.5)
+    "GL_ARB_window_pos ",           // WindowPos (GL 1.4)
+    "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
+    "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
+    "GL_WIN_phong_shading ",        // ShadeModel(PHONG_WIN): fixedgl's per-fragment lighting
+);
 
 /// How a state value converts to the type a getter asks for (GL 2.1 §6.1.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -195,6 +207,11 @@ impl Context {
             gl::LIGHT_MODEL_COLOR_CONTROL => e(s.light_model.color_control),
             // Rasterisation (tables 6.11 to 6.13).
             gl::POINT_SIZE => f(s.point_size),
+            gl::POINT_SIZE_MIN => f(s.point.size_min),
+            gl::POINT_SIZE_MAX => f(s.point.size_max),
+            gl::POINT_FADE_THRESHOLD_SIZE => f(s.point.fade_threshold),
+            gl::POINT_DISTANCE_ATTENUATION => floats(s.point.distance_attenuation),
+            gl::POINT_SPRITE_COORD_ORIGIN => e(s.point.sprite_coord_origin),
             gl::LINE_WIDTH => f(s.line_width),
             gl::LINE_STIPPLE_PATTERN => i(i32::from(s.stipple.line_pattern)),
             gl::LINE_STIPPLE_REPEAT => i(s.stipple.line_repeat),

@@ -262,6 +262,17 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
+        // The client arrays (VERTEX_ARRAY, ...) are no Enable caps in GL 2.1 (INVALID_ENUM), but
+        // Mesa's compatibility context, the reference, takes them as Enable/DisableClientState
+        // of the client active texture unit, and programs written against it rely on that
+        // (piglit's vertex-buffer-offsets).
+        if self.state.arrays.enabled(cap, 0).is_some() {
+            let unit = self.state.client_active_texture;
+            if let Err(code) = self.state.arrays.enable_client_state(cap, on, unit) {
+                self.error(code);
+            }
+            return;
+        }
         match self.state.cap_mut(cap) {
             Some(flag) => *flag = on,
             None => return self.error(gl::INVALID_ENUM),

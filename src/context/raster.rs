@@ -9,6 +9,7 @@
 
 use super::{record, Context};
 use crate::call::Call;
+use crate::counts;
 use crate::gl;
 use crate::state::{BACK, FRONT};
 
@@ -88,5 +89,73 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         self.state.line_width = width;
+    }
+
+    /// `glPointParameterf`: a single-valued pname (POINT_DISTANCE_ATTENUATION, three values,
+    /// is INVALID_ENUM here, GL 2.1 §3.4).
+    pub fn point_parameterf(&mut self, pname: u32, param: f32) {
+        record!(self, Call::PointParameterf(pname, param));
+        self.point_parameter(pname, &[param], true);
+    }
+
+    /// `glPointParameteri`: as [`Context::point_parameterf`], the value converted to float.
+    pub fn point_parameteri(&mut self, pname: u32, param: i32) {
+        record!(self, Call::PointParameteri(pname, param));
+        self.point_parameter(pname, &[param as f32], true);
+    }
+
+    /// `glPointParameterfv`: POINT_DISTANCE_ATTENUATION takes 3 values, the other pnames 1; a
+    /// shorter slice is INVALID_VALUE.
+    pub fn point_parameterfv(&mut self, pname: u32, params: &[f32]) {
+        record!(self, Call::PointParameterfv(pname, params.to_vec()));
+        self.point_parameter(pname, params, false);
+    }
+
+    /// `glPointParameteriv`: as [`Context::point_parameterfv`], the values converted to float.
+    pub fn point_parameteriv(&mut self, pname: u32, params: &[i32]) {
+        record!(self, Call::PointParameteriv(pname, params.to_vec()));
+        let v: Vec<f32> = params.iter().take(3).map(|&x| x as f32).collect();
+        self.point_parameter(pname, &v, false);
+    }
+
+    /// The body of every `PointParameter` form (GL 2.1 §3.4): POINT_SIZE_MIN, POINT_SIZE_MAX and
+    /// POINT_FADE_THRESHOLD_SIZE take a value >= 0 (else INVALID_VALUE),
+    /// POINT_DISTANCE_ATTENUATION any three, POINT_SPRITE_COORD_ORIGIN LOWER_LEFT or UPPER_LEFT
+    /// (else INVALID_VALUE, as Mesa).
+    fn point_parameter(&mut self, pname: u32, v: &[f32], scalar: bool) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        let Some(len) = counts::point_parameter(pname) else {
+            return self.error(gl::INVALID_ENUM);
+        };
+        if scalar && len != 1 {
+            return self.error(gl::INVALID_ENUM);
+        }
+        if v.len() < len {
+            return self.error(gl::INVALID_VALUE);
+        }
+        let x = v.first().copied().unwrap_or(0.0);
+        let p = &mut self.state.point;
+        match pname {
+            gl::POINT_DISTANCE_ATTENUATION => {
+                if let [a, b, c, ..] = *v {
+                    p.distance_attenuation = [a, b, c];
+                }
+            }
+            gl::POINT_SPRITE_COORD_ORIGIN => {
+                match [gl::LOWER_LEFT, gl::UPPER_LEFT]
+                    .into_iter()
+                    .find(|&m| x == m as f32)
+                {
+                    Some(m) => p.sprite_coord_origin = m,
+                    None => self.error(gl::INVALID_VALUE),
+                }
+            }
+            _ if x < 0.0 || x.is_nan() => self.error(gl::INVALID_VALUE),
+            gl::POINT_SIZE_MIN => p.size_min = x,
+            gl::POINT_SIZE_MAX => p.size_max = x,
+            _ => p.fade_threshold = x,
+        }
     }
 }

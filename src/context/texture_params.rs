@@ -190,8 +190,7 @@ impl Context {
     /// [0, 1]) and the COMBINE parameters (tables 3.22 to 3.24: the functions, the sources
     /// TEXTURE, TEXTUREn, CONSTANT, PRIMARY_COLOR, PREVIOUS, the operands, RGB_SCALE and
     /// ALPHA_SCALE 1, 2 or 4, else INVALID_VALUE), and TEXTURE_FILTER_CONTROL with
-    /// TEXTURE_LOD_BIAS (clamped to ±MAX_TEXTURE_LOD_BIAS). POINT_SPRITE's COORD_REPLACE is not
-    /// supported (INVALID_ENUM).
+    /// TEXTURE_LOD_BIAS (clamped to ±MAX_TEXTURE_LOD_BIAS), and POINT_SPRITE with COORD_REPLACE.
     fn tex_env(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         if !self.outside_begin_end() {
             return;
@@ -213,6 +212,22 @@ impl Context {
             && !matches!(pname, 0x8583..=0x8587)
             || (gl::OPERAND0_RGB..=gl::OPERAND2_ALPHA).contains(&pname)
                 && !matches!(pname, 0x8593..=0x8597);
+        if target == gl::POINT_SPRITE {
+            // §3.4.1: COORD_REPLACE of the active unit, TRUE or FALSE (the value truncated to an
+            // integer first, as Mesa); any other pname is INVALID_ENUM.
+            if pname != gl::COORD_REPLACE {
+                return self.error(gl::INVALID_ENUM);
+            }
+            let i = v.first().copied().unwrap_or(0.0) as i64;
+            if i != i64::from(gl::TRUE) && i != i64::from(gl::FALSE) {
+                return self.error(gl::INVALID_VALUE);
+            }
+            let unit = self.state.active_texture;
+            if let Some(c) = self.state.point.coord_replace.get_mut(unit) {
+                *c = i == i64::from(gl::TRUE);
+            }
+            return;
+        }
         let pair_ok = (target == gl::TEXTURE_ENV && env_pname)
             || (target, pname) == (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS);
         if !pair_ok || (pname == gl::TEXTURE_ENV_COLOR && !vector) {
@@ -604,6 +619,11 @@ impl Context {
                 u.env_color.to_array().map(f64::from).to_vec()
             }
             (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS) => vec![f64::from(u.lod_bias)],
+            (gl::POINT_SPRITE, gl::COORD_REPLACE) => {
+                let unit = self.state.active_texture;
+                let on = self.state.point.coord_replace.get(unit).copied();
+                vec![if on.unwrap_or(false) { 1.0 } else { 0.0 }]
+            }
             (gl::TEXTURE_ENV, gl::COMBINE_RGB) => vec![f64::from(u.combine.rgb)],
             (gl::TEXTURE_ENV, gl::COMBINE_ALPHA) => vec![f64::from(u.combine.alpha)],
             (gl::TEXTURE_ENV, gl::RGB_SCALE) => vec![f64::from(u.combine.rgb_scale)],

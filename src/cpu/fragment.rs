@@ -15,7 +15,7 @@ use glam::{Vec3, Vec4};
 
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
-use super::setup::{RLayout, RPrim, F_BACK, F_FLAT, F_LINE, F_PHONG};
+use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT};
@@ -333,6 +333,9 @@ impl FragCtx<'_> {
         x0: i32,
         x1: i32,
     ) {
+        if p.flags & (F_AAPOINT | F_AALINE) != 0 {
+            return self.aa_span(bufs, p, planes, y, x0, x1);
+        }
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
         let zrow = p.z[0] + p.z[2] * fy;
@@ -422,6 +425,59 @@ impl FragCtx<'_> {
             }
             let c = self.color(p, &v[..nv], lambda);
             self.write(bufs, base + k, c);
+        }
+    }
+
+    /// A span of a smooth point's or line's quad (`aa.rs`): each fragment's coverage from its
+    /// interpolated antialiasing coordinates multiplies its alpha (after texturing, before
+    /// the fragment operations), or discards it; never polygon-stippled.
+    fn aa_span(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], y: i32, x0: i32, x1: i32) {
+        let Some(o) = self.rl.aa else {
+            return;
+        };
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let fy = (y - oy) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let row = ((y - bufs.y) as usize) * TILE;
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; super::setup::MAXV];
+        let nv = self.rl.n.min(v.len());
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
+        for x in x0..=x1 {
+            let fx = (x - ox) as f32;
+            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let k = 3 + 3 * j;
+                let val = pl(k) + pl(k + 1) * fx + pl(k + 2) * fy;
+                *vj = if j < nflat { val } else { val * inv };
+            }
+            let g = |j: usize| v.get(o + j).copied().unwrap_or(0.0);
+            let Some(cov) = super::aa::coverage(p.flags, [g(0), g(1), g(2), g(3)]) else {
+                continue;
+            };
+            let qx = x & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                lambda = self.quad_lambda(planes, qx, y, ox, oy);
+            }
+            let mut c = self.color(p, &v[..nv], lambda);
+            c.w *= cov;
+            let z = f64::from(zrow + p.z[1] * fx);
+            let i = row + (x - bufs.x) as usize;
+            if let Some(ops) = &self.ops {
+                let fogc = self.fog_coord(&v[..nv]);
+                self.full(ops, bufs, p, i, z, c, fogc);
+            } else if self.depth(bufs, i, z) {
+                if self.samples {
+                    bufs.samples += 1;
+                }
+                self.write(bufs, i, c);
+            }
         }
     }
 

@@ -279,6 +279,9 @@ impl Worker {
         flags: u8,
         mat: u32,
     ) {
+        if ctx.line_smooth {
+            return self.aa_line(ctx, a, b, off, flags, mat);
+        }
         let Some(q) = parallelogram(a.x, a.y, b.x, b.y, ctx.line_width()) else {
             return;
         };

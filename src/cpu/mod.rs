@@ -35,6 +35,7 @@
 //! `FragCtx`); other derived values are named for what they do (`fragops::ColorWrite`, what the
 //! colour write does; `setup::PrimKind`, what a rasterised primitive is).
 
+pub mod aa;
 pub mod accum;
 pub mod assembly;
 pub mod batch;

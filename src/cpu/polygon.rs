@@ -150,6 +150,9 @@ impl Worker {
         if let (Some(d), Some(s)) = (rl.fog, l.fog) {
             copy(&mut w.v, d, v, s, 1);
         }
+        if let Some(s) = l.psize {
+            w.ps = v.get(s).copied().unwrap_or(0.0);
+        }
     }
 
     /// Facing, culling and polygon mode for a clipped polygon (§3.5.1, §3.5.4): `srcs` are its
@@ -238,7 +241,15 @@ impl Worker {
 
     /// A filled triangle: edge functions, bounding box and attribute planes (§3.5.1).
     #[inline]
-    fn tri(&mut self, ctx: &SetupCtx, a: &WVert, b: &WVert, c: &WVert, flags: u8, mat: u32) {
+    pub(super) fn tri(
+        &mut self,
+        ctx: &SetupCtx,
+        a: &WVert,
+        b: &WVert,
+        c: &WVert,
+        flags: u8,
+        mat: u32,
+    ) {
         let Some(g) = geom(&ctx.rect, [[a.fx, a.fy], [b.fx, b.fy], [c.fx, c.fy]]) else {
             return;
         };
@@ -264,8 +275,18 @@ impl Worker {
 
     /// A point (§3.4): a square of side round(size) centred on the vertex.
     fn point(&mut self, ctx: &SetupCtx, a: &WVert, off: f64, flags: u8, mat: u32) {
+        if ctx.point_smooth {
+            return self.aa_point(ctx, a, off, flags, mat);
+        }
+        if ctx.sprite {
+            return self.sprite(ctx, a, off, flags, mat);
+        }
         let (x, y) = (a.fx as f32 / 256.0, a.fy as f32 / 256.0);
-        let size = ctx.point_size.round().max(1.0);
+        // llvmpipe's legacy point width: the size in 1/256 pixel rounded to a whole pixel,
+        // halves down (2.5 draws 2x2, measured), at least 1.
+        let size = if a.ps > 0.0 { a.ps } else { ctx.point_size };
+        let size =
+            ((((f64::from(size) * 256.0).round() as i64).saturating_add(127) >> 8).max(1)) as f32;
         let x0 = clamp_f((x - size / 2.0 + 0.5).floor());
         let y0 = clamp_f((y - size / 2.0 + 0.5).floor());
         let s = size.min(1e6) as i32;
@@ -304,6 +325,7 @@ fn from_win(w: &Win) -> WVert {
         z: w.z,
         iw: w.iw,
         v: [0.0; MAXV],
+        ps: 0.0,
     }
 }
 
@@ -315,6 +337,7 @@ const ZERO_W: WVert = WVert {
     z: 0.0,
     iw: 0.0,
     v: [0.0; MAXV],
+    ps: 0.0,
 };
 
 /// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).

@@ -37,8 +37,8 @@ pub(super) const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
 pub(super) const COORD_LIMIT: i64 = 1 << 30;
 
 /// Most interpolated floats per fragment: colour 4, secondary 4, two texture units 4 + 4
-/// (texture), PHONG_WIN 10.
-pub const MAXV: usize = 26;
+/// (texture), PHONG_WIN 10, fog 1, the antialiasing coordinates 4.
+pub const MAXV: usize = 31;
 
 /// Where each interpolated value sits in a fragment's varyings.
 #[derive(Clone, Copy, Debug, Default)]
@@ -55,6 +55,10 @@ pub struct RLayout {
     pub phong: Option<usize>,
     /// Fog coordinate (one float; fragment ops).
     pub fog: Option<usize>,
+    /// POINT_SMOOTH or LINE_SMOOTH: the four coordinates Mesa's draw module gives the quad of
+    /// a smooth point or line (`F_AAPOINT`, `F_AALINE`), from which the fragment's coverage
+    /// comes (see `aa.rs`).
+    pub aa: Option<usize>,
 }
 
 impl RLayout {
@@ -104,6 +108,10 @@ pub const F_BACK: u8 = 2;
 pub const F_PHONG: u8 = 4;
 /// Flag: half of a line's parallelogram (never polygon-stippled, §3.5.6).
 pub const F_LINE: u8 = 8;
+/// Flag: half of a smooth point's quad (coverage from the `aa` varyings, `aa.rs`).
+pub const F_AAPOINT: u8 = 16;
+/// Flag: half of a smooth line's quad (coverage from the `aa` varyings, `aa.rs`).
+pub const F_AALINE: u8 = 32;
 
 /// `RPrim::cover`: the low four bits are the covered pixel centres.
 pub const COVER_KNOWN: u8 = 0x10;
@@ -184,6 +192,16 @@ pub struct SetupCtx {
     /// LINE_STIPPLE enabled: (LINE_STIPPLE_PATTERN, LINE_STIPPLE_REPEAT).
     pub line_stipple: Option<(u16, i32)>,
     pub(super) point_size: f32,
+    /// POINT_SMOOTH without POINT_SPRITE (Mesa turns smoothing off for sprites).
+    pub(super) point_smooth: bool,
+    /// LINE_SMOOTH.
+    pub(super) line_smooth: bool,
+    /// POINT_SPRITE: points are quads with the coordinates of `sprite_units` replaced.
+    pub(super) sprite: bool,
+    /// Varying offsets of the texture coordinates that COORD_REPLACE replaces.
+    pub(super) sprite_units: [Option<usize>; 2],
+    /// POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT.
+    pub(super) sprite_lower_left: bool,
     /// Framebuffer ∩ scissor, inclusive.
     pub rect: [i32; 4],
     /// Tiles across.
@@ -257,7 +275,22 @@ impl SetupCtx {
     pub fn new(state: &State, layout: Layout, rect: [i32; 4], tiles: (usize, usize)) -> Self {
         let [vx, vy, vw, vh] = state.viewport.map(f64::from);
         let [n, f] = state.depth_range;
-        let rl = RLayout::new(&layout);
+        let mut rl = RLayout::new(&layout);
+        let point_smooth = state.enables.point_smooth && !state.enables.point_sprite;
+        let line_smooth = state.enables.line_smooth;
+        if point_smooth || line_smooth {
+            rl.aa = Some(rl.n);
+            rl.n += 4;
+        }
+        // The rasteriser's size, clamped to POINT_SIZE_MIN/MAX as Mesa's state tracker does.
+        let p = &state.point;
+        let point_size = if state.point_size < p.size_min {
+            p.size_min
+        } else if state.point_size > p.size_max {
+            p.size_max
+        } else {
+            state.point_size
+        };
         SetupCtx {
             layout,
             rl,
@@ -282,7 +315,15 @@ impl SetupCtx {
                 .enables
                 .line_stipple
                 .then_some((state.stipple.line_pattern, state.stipple.line_repeat)),
-            point_size: state.point_size,
+            point_size,
+            point_smooth,
+            line_smooth,
+            sprite: state.enables.point_sprite,
+            sprite_units: [
+                rl.tex.filter(|_| p.coord_replace[0]),
+                rl.tex1.filter(|_| p.coord_replace[1]),
+            ],
+            sprite_lower_left: p.sprite_coord_origin == gl::LOWER_LEFT,
             rect,
             tiles_x: tiles.0,
             tiles: tiles.0 * tiles.1,
@@ -378,7 +419,7 @@ impl SetupCtx {
 /// The clamped value plus one half is below 2^31 in magnitude (NaN gives 0), so the cast is to
 /// i32, which vectorises where a cast to i64 does not.
 #[inline(always)]
-fn snap(x: f64) -> i32 {
+pub(super) fn snap(x: f64) -> i32 {
     let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
     (t + 0.5f64.copysign(t)) as i32
 }
@@ -395,6 +436,8 @@ pub(super) struct WVert {
     pub(super) z: f64,
     pub(super) iw: f32,
     pub(super) v: [f32; MAXV],
+    /// The point size of this vertex under distance attenuation (0: the context's).
+    pub(super) ps: f32,
 }
 
 /// One setup worker's output: its primitives in order, their floats, and per-tile bins. Several
@@ -798,10 +841,14 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     })
 }
 
-/// Polygon offset (§3.5.5): factor · max slope + units · r, r = 2^-24 for a 24-bit depth buffer.
+/// Polygon offset (§3.5.5): factor · max slope + units · r. GL leaves r to the implementation
+/// ("the smallest value guaranteed to produce a resolvable difference"); llvmpipe's is twice
+/// one step of the 24-bit depth buffer (Mesa's state tracker passes units · 2 to gallium, which
+/// scales by 2^-24), and with half that one unit does not lift a filled polygon off its own
+/// outline (piglit's polygon-mode-offset and gl-1.4-polygon-offset).
 pub(super) fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
     let m = dzdx.abs().max(dzdy.abs());
-    ctx.factor * m + ctx.units / f64::from(1u32 << 24)
+    ctx.factor * m + ctx.units * 2.0 / f64::from(1u32 << 24)
 }
 
 /// Which tiles `bbox` overlaps: `(tx0, ty0, tx1, ty1)` inclusive.

@@ -50,6 +50,9 @@ pub struct Layout {
     pub raw: Option<usize>,
     /// Fog coordinate c (one float), when FOG is enabled (§3.10).
     pub fog: Option<usize>,
+    /// The point's size (one float) under distance attenuation (§3.3 eq. 3.1), as Mesa's
+    /// fixed-function vertex program computes it.
+    pub psize: Option<usize>,
 }
 
 impl Layout {
@@ -101,6 +104,9 @@ impl Layout {
         }
         if state.enables.fog {
             l.fog = take(1);
+        }
+        if state.point.attenuated() {
+            l.psize = take(1);
         }
         l.stride = n;
         l
@@ -572,6 +578,7 @@ impl Lit<'_> {
             || l.tex.is_some()
             || l.tex1.is_some()
             || l.fog.is_some()
+            || l.psize.is_some()
             || l.raw.is_some();
         let tex_matrix = *state.texture_matrix[0].top();
         let texgen = l.tex.and_then(|_| super::texgen::TexGenEval::new(state, 0));
@@ -760,6 +767,27 @@ impl Lit<'_> {
             };
             if let Some(d) = o.get_mut(f) {
                 *d = c.abs();
+            }
+        }
+        // The attenuated point size (§3.3 eq. 3.1) as Mesa's fixed-function vertex program
+        // computes it: size / sqrt(a + b·|z_eye| + c·z_eye²), clamped to POINT_SIZE_MIN and
+        // POINT_SIZE_MAX bounded by the implementation's 1 and 255 (llvmpipe ignores
+        // POINT_FADE_THRESHOLD_SIZE, measured).
+        if let Some(ps) = l.psize {
+            let pp = &self.state.point;
+            let [pa, pb, pc] = pp.distance_attenuation;
+            let d = eye.z.abs();
+            let f = d * pc + pb;
+            let f = d * f + pa;
+            let s = (1.0 / f.sqrt()) * self.state.point_size;
+            let lo = if pp.size_min >= 1.0 { pp.size_min } else { 1.0 };
+            let hi = if pp.size_max <= 255.0 {
+                pp.size_max
+            } else {
+                255.0
+            };
+            if let Some(dst) = o.get_mut(ps) {
+                *dst = s.max(lo).min(hi);
             }
         }
         if self.lighting.is_none() {

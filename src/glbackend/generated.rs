@@ -573,6 +573,20 @@ impl GlBackend {
             Call::PassThrough(token) => gl.pass_through(token),
             Call::LineStipple(factor, pattern) => gl.line_stipple(factor, pattern),
             Call::PolygonStipple(ref mask) => self.polygon_stipple(mask),
+            Call::PointParameterf(pname, param) => gl.point_parameterf(pname, param),
+            Call::PointParameteri(pname, param) => gl.point_parameteri(pname, param),
+            Call::PointParameterfv(pname, ref params) => self.with_params(
+                params,
+                counts::point_parameter(pname),
+                false,
+                |gl, params| gl.point_parameterfv(pname, params),
+            ),
+            Call::PointParameteriv(pname, ref params) => self.with_params(
+                params,
+                counts::point_parameter(pname),
+                false,
+                |gl, params| gl.point_parameteriv(pname, params),
+            ),
         }
     }
 }
@@ -2773,5 +2787,43 @@ impl Safe<'_> {
     pub(super) fn line_stipple(self, factor: i32, pattern: u16) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.LineStipple(factor, pattern) }
+    }
+
+    /// `glPointParameterf(pname, param)`.
+    pub(super) fn point_parameterf(self, pname: u32, param: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PointParameterf(pname, param) }
+    }
+
+    /// `glPointParameteri(pname, param)`.
+    pub(super) fn point_parameteri(self, pname: u32, param: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.PointParameteri(pname, param) }
+    }
+
+    /// `glPointParameterfv(pname, params)`.
+    pub(super) fn point_parameterfv(self, pname: u32, params: &[f32]) {
+        debug_assert!(
+            params.len() >= counts::MAX_VALUES,
+            "glPointParameterfv: a short vector"
+        );
+        if params.len() < counts::MAX_VALUES {
+            return;
+        }
+        // SAFETY: the context is current (see `Safe`); `params` holds at least MAX_VALUES values.
+        unsafe { self.0.PointParameterfv(pname, params.as_ptr()) }
+    }
+
+    /// `glPointParameteriv(pname, params)`.
+    pub(super) fn point_parameteriv(self, pname: u32, params: &[i32]) {
+        debug_assert!(
+            params.len() >= counts::MAX_VALUES,
+            "glPointParameteriv: a short vector"
+        );
+        if params.len() < counts::MAX_VALUES {
+            return;
+        }
+        // SAFETY: the context is current (see `Safe`); `params` holds at least MAX_VALUES values.
+        unsafe { self.0.PointParameteriv(pname, params.as_ptr()) }
     }
 }

@@ -168,6 +168,9 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::Materialf(_, p, _) | Call::Materiali(_, p, _) => vector(counts::material(p)),
         Call::LightModelf(p, _) | Call::LightModeli(p, _) => vector(counts::light_model(p)),
         Call::Fogf(p, _) | Call::Fogi(p, _) => vector(counts::fog(p)),
+        Call::PointParameterf(p, _) | Call::PointParameteri(p, _) => {
+            vector(counts::point_parameter(p))
+        }
         Call::TexParameterf(_, p, _) | Call::TexParameteri(_, p, _) => {
             vector(counts::tex_parameter(p))
         }

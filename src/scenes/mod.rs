@@ -33,6 +33,12 @@ pub mod picking;
 pub mod stipple;
 // GLU quadrics (scenes/quadrics.rs)
 pub mod quadrics;
+// GLU tessellator (scenes/tessellation.rs)
+pub mod tessellation;
+// Smooth points, lines and polygons (scenes/antialiasing.rs)
+pub mod antialiasing;
+// Point sprites and point parameters (scenes/sprites.rs)
+pub mod sprites;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -147,6 +153,9 @@ static SCENES: &[Scene] = &[
     picking::SCENES[0],
     stipple::SCENES[0],
     quadrics::SCENES[0],
+    tessellation::SCENES[0],
+    antialiasing::SCENES[0],
+    sprites::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

@@ -68,6 +68,12 @@ const PNAMES: &[&str] = &[
     "LIGHT_MODEL_LOCAL_VIEWER",
     "LIGHT_MODEL_TWO_SIDE",
     "LIGHT_MODEL_COLOR_CONTROL",
+    // PointParameter (table 6.11)
+    "POINT_SIZE_MIN",
+    "POINT_SIZE_MAX",
+    "POINT_FADE_THRESHOLD_SIZE",
+    "POINT_DISTANCE_ATTENUATION",
+    "POINT_SPRITE_COORD_ORIGIN",
     // Fog (table 6.8)
     "FOG_COLOR",
     "FOG_MODE",
@@ -196,24 +202,7 @@ const VALUES: &[&str] = &[
 /// Where fixedgl differs from the driver on purpose, until the issue named lands: the line's
 /// prefix and why. Each must still disagree somewhere (the test fails when one no longer does,
 /// so the list only shrinks).
-const KNOWN: &[(&str, &str)] = &[
-    (
-        "TexEnvi(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnvf(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnviv(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-    (
-        "TexEnvfv(POINT_SPRITE,",
-        "point sprites (GL 2.0) are not implemented yet: issue #14",
-    ),
-];
+const KNOWN: &[(&str, &str)] = &[];
 
 /// The `Call` a recording line reads as (the reader is the table-driven constructor).
 fn call(line: &str) -> Call {
@@ -297,9 +286,9 @@ fn cpu_and_driver_agree_on_every_pname_error() {
         .iter()
         .filter(|c| c.method.is_some() && c.params.iter().any(|p| p.name == "pname"))
         .collect();
-    // Light, Material, LightModel, Fog, TexParameter, TexEnv and TexGen in their f, i, fv and
-    // iv forms (TexGen also d, dv), PixelStore and PixelTransfer: 34 rows.
-    assert_eq!(commands.len(), 34, "pname-taking commands");
+    // Light, Material, LightModel, Fog, PointParameter, TexParameter, TexEnv and TexGen in
+    // their f, i, fv and iv forms (TexGen also d, dv), PixelStore and PixelTransfer: 38 rows.
+    assert_eq!(commands.len(), 38, "pname-taking commands");
     let (mut cases, mut mismatches) = (0, Vec::new());
     let mut known_seen = vec![0usize; KNOWN.len()];
     for cmd in commands {

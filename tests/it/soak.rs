@@ -328,6 +328,22 @@ const PARAMS: &[(&[&str], &[u32], &[u32])] = &[
         &[],
     ),
     (
+        &[
+            "PointParameterf",
+            "PointParameteri",
+            "PointParameterfv",
+            "PointParameteriv",
+        ],
+        &[
+            gl::POINT_SIZE_MIN,
+            gl::POINT_SIZE_MAX,
+            gl::POINT_FADE_THRESHOLD_SIZE,
+            gl::POINT_DISTANCE_ATTENUATION,
+            gl::POINT_SPRITE_COORD_ORIGIN,
+        ],
+        &[],
+    ),
+    (
         &["Fogf", "Fogi", "Fogfv", "Fogiv"],
         &[
             gl::FOG_MODE,
@@ -1353,6 +1369,7 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             color_material_face,
             color_material_mode,
             point_size,
+            point,
             line_width,
             front_face,
             cull_face_mode,

@@ -1,0 +1,308 @@
+//! `glu::scale_image` and `glu::build_2d_mipmaps` against the real libGLU (Mesa's libGLU 9.0,
+//! `dlopen`ed, its GL calls going to llvmpipe through the GL backend's context): the scaled
+//! images are byte for byte libGLU's, under several formats, sizes (up, down, exact halving,
+//! odd ratios) and pack/unpack modes; and every mipmap level libGLU builds on the driver
+//! (read back with glGetTexImage) is byte for byte the level fixedgl builds (read back with
+//! `get_tex_image`), for power-of-two and other sizes, with and without row length and skips.
+//!
+//! Without libGLU.so.1 or an EGL device these print `SKIPPED` and return.
+
+use fixedgl::glu;
+use fixedgl::{gl, Context};
+
+/// A deterministic image: `n` bytes of varied values.
+fn image(n: usize, seed: u32) -> Vec<u8> {
+    let mut s = seed.wrapping_mul(2_654_435_761).wrapping_add(12345);
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            (s >> 16) as u8
+        })
+        .collect()
+}
+
+#[test]
+fn scale_image_errors_and_zero_sizes() {
+    let ctx = Context::new(4, 4).unwrap();
+    let mut out = [0u8; 16];
+    let src = [0u8; 16];
+    let f = |w, h, t, o: &mut [u8]| {
+        glu::scale_image(&ctx, gl::RGBA, w, h, t, &src, 2, 2, gl::UNSIGNED_BYTE, o)
+    };
+    assert_eq!(f(0, 2, gl::UNSIGNED_BYTE, &mut out), 0);
+    assert_eq!(
+        f(-1, 2, gl::UNSIGNED_BYTE, &mut out),
+        glu::GLU_INVALID_VALUE
+    );
+    assert_eq!(f(2, 2, gl::FLOAT, &mut out), glu::GLU_INVALID_ENUM);
+    assert_eq!(
+        f(2, 2, gl::UNSIGNED_BYTE, &mut out[..15]),
+        glu::GLU_INVALID_VALUE
+    );
+    assert_eq!(
+        glu::scale_image(
+            &ctx,
+            0x1234,
+            2,
+            2,
+            gl::UNSIGNED_BYTE,
+            &src,
+            2,
+            2,
+            gl::UNSIGNED_BYTE,
+            &mut out
+        ),
+        glu::GLU_INVALID_ENUM
+    );
+}
+
+#[cfg(feature = "gl")]
+mod with_libglu {
+    use super::*;
+    use std::ffi::{c_char, c_int, c_void};
+
+    extern "C" {
+        fn dlopen(file: *const c_char, mode: c_int) -> *mut c_void;
+        fn dlsym(handle: *mut c_void, name: *const c_char) -> *mut c_void;
+    }
+    const RTLD_NOW: c_int = 2;
+    type Scale =
+        unsafe extern "C" fn(u32, i32, i32, u32, *const c_void, i32, i32, u32, *mut c_void) -> i32;
+    type Build = unsafe extern "C" fn(u32, i32, i32, i32, u32, u32, *const c_void) -> i32;
+
+    struct LibGlu {
+        scale: Scale,
+        build: Build,
+    }
+
+    fn libglu() -> Option<LibGlu> {
+        // SAFETY: dlopen/dlsym with NUL-terminated names, cast to GL/glu.h's signatures.
+        unsafe {
+            let h = dlopen(c"libGLU.so.1".as_ptr(), RTLD_NOW);
+            if h.is_null() {
+                eprintln!("SKIPPED: libGLU.so.1 not found");
+                return None;
+            }
+            let s = dlsym(h, c"gluScaleImage".as_ptr());
+            let b = dlsym(h, c"gluBuild2DMipmaps".as_ptr());
+            if s.is_null() || b.is_null() {
+                eprintln!("SKIPPED: libGLU lacks gluScaleImage/gluBuild2DMipmaps");
+                return None;
+            }
+            Some(LibGlu {
+                scale: std::mem::transmute::<*mut c_void, Scale>(s),
+                build: std::mem::transmute::<*mut c_void, Build>(b),
+            })
+        }
+    }
+
+    /// Pixel store modes set on both sides: (pname, value).
+    type Modes = &'static [(u32, i32)];
+
+    #[test]
+    fn scale_image_matches_libglu() {
+        let Some(lib) = libglu() else { return };
+        let Some(backend) = crate::common::test_backend(8, 8) else {
+            return;
+        };
+        let cases: &[(u32, usize, i32, i32, i32, i32, Modes)] = &[
+            (gl::RGBA, 4, 8, 8, 4, 4, &[]),
+            (gl::RGBA, 4, 7, 5, 13, 11, &[]),
+            (gl::RGB, 3, 10, 6, 3, 7, &[]),
+            (gl::RGB, 3, 5, 5, 16, 16, &[(gl::UNPACK_ALIGNMENT, 1)]),
+            (gl::LUMINANCE, 1, 9, 3, 4, 2, &[(gl::PACK_ALIGNMENT, 8)]),
+            (gl::LUMINANCE_ALPHA, 2, 33, 17, 32, 32, &[]),
+            (
+                gl::RGBA,
+                4,
+                6,
+                4,
+                9,
+                5,
+                &[
+                    (gl::UNPACK_ROW_LENGTH, 9),
+                    (gl::UNPACK_SKIP_ROWS, 2),
+                    (gl::UNPACK_SKIP_PIXELS, 1),
+                    (gl::PACK_ROW_LENGTH, 11),
+                    (gl::PACK_SKIP_ROWS, 1),
+                    (gl::PACK_SKIP_PIXELS, 2),
+                ],
+            ),
+            (gl::RGB, 3, 100, 37, 64, 64, &[]),
+            (gl::RGBA, 4, 3, 3, 1, 1, &[]),
+        ];
+        for (i, &(format, n, wi, hi, wo, ho, modes)) in cases.iter().enumerate() {
+            let src = image(64 * 64 * 4 + 4096, i as u32);
+            let mut want = vec![0xA5u8; 64 * 64 * 4 + 4096];
+            let mut got = want.clone();
+            let mut ctx = Context::new(4, 4).unwrap();
+            // SAFETY: the backend's context is current; libGLU reads the pixel store modes
+            // set here (restored below) and reads/writes within the buffers, which are
+            // larger than any layout of these cases.
+            unsafe {
+                let raw = backend.raw();
+                for &(p, v) in modes {
+                    raw.PixelStorei(p, v);
+                }
+                let r = (lib.scale)(
+                    format,
+                    wi,
+                    hi,
+                    gl::UNSIGNED_BYTE,
+                    src.as_ptr().cast(),
+                    wo,
+                    ho,
+                    gl::UNSIGNED_BYTE,
+                    want.as_mut_ptr().cast(),
+                );
+                assert_eq!(r, 0);
+                for &(p, _) in modes {
+                    let v = if p == gl::UNPACK_ALIGNMENT || p == gl::PACK_ALIGNMENT {
+                        4
+                    } else {
+                        0
+                    };
+                    raw.PixelStorei(p, v);
+                }
+            }
+            for &(p, v) in modes {
+                ctx.pixel_storei(p, v);
+            }
+            let r = glu::scale_image(
+                &ctx,
+                format,
+                wi,
+                hi,
+                gl::UNSIGNED_BYTE,
+                &src,
+                wo,
+                ho,
+                gl::UNSIGNED_BYTE,
+                &mut got,
+            );
+            assert_eq!(r, 0);
+            let _ = n;
+            assert!(want == got, "case {i}: scaled images differ");
+        }
+    }
+
+    #[test]
+    fn build_2d_mipmaps_matches_libglu() {
+        let Some(lib) = libglu() else { return };
+        let Some(backend) = crate::common::test_backend(8, 8) else {
+            return;
+        };
+        let cases: &[(u32, usize, i32, i32, Modes)] = &[
+            (gl::RGBA, 4, 16, 16, &[]),
+            (gl::RGBA, 4, 16, 4, &[]),
+            (gl::RGBA, 4, 2, 32, &[]),
+            (gl::RGBA, 4, 13, 7, &[]),
+            (gl::RGBA, 4, 48, 20, &[]),
+            (gl::LUMINANCE, 1, 64, 64, &[(gl::UNPACK_ALIGNMENT, 1)]),
+            (gl::LUMINANCE, 1, 10, 30, &[(gl::UNPACK_ALIGNMENT, 1)]),
+            (gl::RGB, 3, 24, 12, &[(gl::UNPACK_ALIGNMENT, 1)]),
+            (
+                gl::RGBA,
+                4,
+                8,
+                8,
+                &[
+                    (gl::UNPACK_ROW_LENGTH, 11),
+                    (gl::UNPACK_SKIP_ROWS, 3),
+                    (gl::UNPACK_SKIP_PIXELS, 2),
+                ],
+            ),
+            (
+                gl::RGBA,
+                4,
+                9,
+                6,
+                &[
+                    (gl::UNPACK_ROW_LENGTH, 12),
+                    (gl::UNPACK_SKIP_ROWS, 1),
+                    (gl::UNPACK_SKIP_PIXELS, 3),
+                ],
+            ),
+        ];
+        for (i, &(format, n, w, h, modes)) in cases.iter().enumerate() {
+            let src = image(64 * 64 * 4 + 4096, 100 + i as u32);
+            let mut want: Vec<Vec<u8>> = Vec::new();
+            // SAFETY: the backend's context is current; a texture of the test's own is
+            // created, filled by libGLU, read back level by level into buffers of the level's
+            // size, deleted; the pixel store modes changed are restored.
+            unsafe {
+                let raw = backend.raw();
+                let mut tex = 0;
+                raw.GenTextures(1, &mut tex);
+                raw.BindTexture(gl::TEXTURE_2D, tex);
+                for &(p, v) in modes {
+                    raw.PixelStorei(p, v);
+                }
+                let r = (lib.build)(
+                    gl::TEXTURE_2D,
+                    format as i32,
+                    w,
+                    h,
+                    format,
+                    gl::UNSIGNED_BYTE,
+                    src.as_ptr().cast(),
+                );
+                assert_eq!(r, 0);
+                raw.PixelStorei(gl::UNPACK_ALIGNMENT, 4);
+                raw.PixelStorei(gl::UNPACK_ROW_LENGTH, 0);
+                raw.PixelStorei(gl::UNPACK_SKIP_ROWS, 0);
+                raw.PixelStorei(gl::UNPACK_SKIP_PIXELS, 0);
+                raw.PixelStorei(gl::PACK_ALIGNMENT, 1);
+                for level in 0..16 {
+                    let (mut lw, mut lh) = (0, 0);
+                    raw.GetTexLevelParameteriv(gl::TEXTURE_2D, level, gl::TEXTURE_WIDTH, &mut lw);
+                    raw.GetTexLevelParameteriv(gl::TEXTURE_2D, level, gl::TEXTURE_HEIGHT, &mut lh);
+                    if lw == 0 {
+                        break;
+                    }
+                    let mut buf = vec![0u8; (lw * lh) as usize * n];
+                    raw.GetTexImage(
+                        gl::TEXTURE_2D,
+                        level,
+                        format,
+                        gl::UNSIGNED_BYTE,
+                        buf.as_mut_ptr().cast(),
+                    );
+                    want.push(buf);
+                }
+                raw.PixelStorei(gl::PACK_ALIGNMENT, 4);
+                raw.BindTexture(gl::TEXTURE_2D, 0);
+                raw.DeleteTextures(1, &tex);
+            }
+            let mut ctx = Context::new(4, 4).unwrap();
+            for &(p, v) in modes {
+                ctx.pixel_storei(p, v);
+            }
+            let r = glu::build_2d_mipmaps(
+                &mut ctx,
+                gl::TEXTURE_2D,
+                format as i32,
+                w,
+                h,
+                format,
+                gl::UNSIGNED_BYTE,
+                &src,
+            );
+            assert_eq!(r, 0);
+            assert_eq!(ctx.get_error(), gl::NO_ERROR);
+            ctx.pixel_storei(gl::PACK_ALIGNMENT, 1);
+            assert!(want.len() > 1, "case {i}: libGLU built levels");
+            for (level, want) in want.iter().enumerate() {
+                let mut got = vec![0u8; want.len()];
+                ctx.get_tex_image(
+                    gl::TEXTURE_2D,
+                    level as i32,
+                    format,
+                    gl::UNSIGNED_BYTE,
+                    &mut got,
+                );
+                assert!(*want == got, "case {i} ({w}x{h}): level {level} differs");
+            }
+        }
+    }
+}
