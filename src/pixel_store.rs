@@ -214,6 +214,46 @@ impl PixelModes {
     }
 }
 
+impl PixelModes {
+    /// Where a `width` x `height` x `depth` image (TexImage3D, GetTexImage of a 3D texture)
+    /// lies in client memory (GL 2.1 §3.8.1): each 2D image as [`PixelModes::layout`] places
+    /// it, images IMAGE_HEIGHT rows apart (or `height`), the first after SKIP_IMAGES images.
+    /// Returns the layout of the whole as one 2D image of `(depth - 1) * image rows + height`
+    /// rows (its `need` is the 3D image's) and the rows between images; image `k`'s row `j` is
+    /// row `k * rows + j` of it.
+    pub fn layout3(
+        &self,
+        width: i32,
+        height: i32,
+        depth: i32,
+        components: usize,
+        size: usize,
+    ) -> Option<(Layout, usize)> {
+        let h = usize::try_from(height.max(0)).ok()?;
+        let d = usize::try_from(depth.max(0)).ok()?;
+        let img = if self.image_height > 0 {
+            usize::try_from(self.image_height).ok()?
+        } else {
+            h
+        };
+        let skip_images = usize::try_from(self.skip_images.max(0)).ok()?;
+        let rows = if d == 0 || h == 0 {
+            0
+        } else {
+            (d - 1).checked_mul(img)?.checked_add(h)?
+        };
+        let skip_rows = usize::try_from(self.skip_rows.max(0))
+            .ok()?
+            .checked_add(skip_images.checked_mul(img)?)?;
+        let modes = PixelModes {
+            skip_rows: i32::try_from(skip_rows).ok()?,
+            ..*self
+        };
+        let l = modes.layout(width, i32::try_from(rows).ok()?, components, size)?;
+        Some((l, img))
+    }
+}
+
 /// The byte layout [`PixelModes::layout`] computes. For `i < width`, `j < height` of a layout
 /// with `need > 0`, `at(i, j) + pixel <= need`, so no offset computed from it overflows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

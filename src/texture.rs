@@ -32,14 +32,17 @@ pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 pub struct Level {
     /// TEXTURE_WIDTH.
     pub width: i32,
-    /// TEXTURE_HEIGHT.
+    /// TEXTURE_HEIGHT (1 for a 1D image).
     pub height: i32,
+    /// TEXTURE_DEPTH (1 for a 1D or 2D image).
+    pub depth: i32,
     /// The internal format as the application gave it (`TEXTURE_INTERNAL_FORMAT`).
     pub internal_format: i32,
     /// The base internal format (table 3.15): ALPHA, LUMINANCE, LUMINANCE_ALPHA, INTENSITY, RGB,
     /// RGBA or DEPTH_COMPONENT.
     pub base: u32,
-    /// `width * height` texels, bottom row first (t = 0 first, §3.8.1).
+    /// `width * height * depth` texels, bottom row first (t = 0 first, §3.8.1), the images of
+    /// a 3D texture one after the other (r = 0 first).
     pub texels: Vec<[f32; 4]>,
 }
 
@@ -49,6 +52,44 @@ impl Level {
     pub fn texel(&self, i: i32, j: i32) -> [f32; 4] {
         let k = (j * self.width + i) as usize;
         self.texels.get(k).copied().unwrap_or([0.0; 4])
+    }
+
+    /// The texel at (i, j, k) of a 3D image, which must be inside it.
+    #[inline(always)]
+    pub fn texel3(&self, i: i32, j: i32, k: i32) -> [f32; 4] {
+        let n = ((k * self.height + j) * self.width + i) as usize;
+        self.texels.get(n).copied().unwrap_or([0.0; 4])
+    }
+}
+
+/// The faces of a target's objects: 6 for TEXTURE_CUBE_MAP, else 1.
+pub fn faces(target: u32) -> usize {
+    if target == gl::TEXTURE_CUBE_MAP {
+        6
+    } else {
+        1
+    }
+}
+
+/// For an image target (TexImage's `target`): the binding target of the object it names and
+/// the face (TEXTURE_CUBE_MAP_POSITIVE_X .. NEGATIVE_Z are faces 0 to 5 of TEXTURE_CUBE_MAP).
+pub fn image_binding(target: u32) -> (u32, usize) {
+    match target {
+        gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z => (
+            gl::TEXTURE_CUBE_MAP,
+            (target - gl::TEXTURE_CUBE_MAP_POSITIVE_X) as usize,
+        ),
+        t => (t, 0),
+    }
+}
+
+/// The number of texture coordinates a target's images have: 1, 2 or 3 (a cube map's faces
+/// are 2D images).
+pub fn target_dims(target: u32) -> usize {
+    match target {
+        gl::TEXTURE_1D | gl::PROXY_TEXTURE_1D => 1,
+        gl::TEXTURE_3D | gl::PROXY_TEXTURE_3D => 3,
+        _ => 2,
     }
 }
 
@@ -98,12 +139,29 @@ pub struct TexObject {
 }
 
 impl TexObject {
-    /// A new object of `target` with table 6.16's initial values.
+    /// A new object of `target` with table 6.16's initial values (a cube map has six faces of
+    /// MAX_LEVELS levels each).
     pub fn new(target: u32) -> Self {
         Self {
             target,
+            levels: vec![None; MAX_LEVELS * faces(target)],
             ..Self::default()
         }
+    }
+
+    /// Level `l` of face `face` (0 to 5 in TEXTURE_CUBE_MAP_POSITIVE_X .. NEGATIVE_Z order;
+    /// 0 for the other targets), if specified.
+    pub fn face_level(&self, face: usize, l: i32) -> Option<&Level> {
+        let l = usize::try_from(l).ok().filter(|&l| l < MAX_LEVELS)?;
+        self.levels
+            .get(face * MAX_LEVELS + l)
+            .and_then(Option::as_ref)
+    }
+
+    /// The slot of level `l` of face `face`, to store into.
+    pub fn slot_mut(&mut self, face: usize, l: i32) -> Option<&mut Option<Level>> {
+        let l = usize::try_from(l).ok().filter(|&l| l < MAX_LEVELS)?;
+        self.levels.get_mut(face * MAX_LEVELS + l)
     }
 }
 
@@ -212,19 +270,16 @@ impl TexObject {
 }
 
 impl TexObject {
-    /// The level `l`, if specified.
+    /// The level `l` (of face 0 for a cube map), if specified.
     pub fn level(&self, l: i32) -> Option<&Level> {
-        usize::try_from(l)
-            .ok()
-            .and_then(|l| self.levels.get(l))
-            .and_then(Option::as_ref)
+        self.face_level(0, l)
     }
 
     /// The last level a complete mipmap array uses: q = min(p, max_level) with
     /// p = floor(log2(max(w, h))) + base_level (§3.8.8), or None without a base image.
     pub fn last_level(&self) -> Option<i32> {
         let b = self.level(self.base_level)?;
-        let size = b.width.max(b.height).max(1);
+        let size = b.width.max(b.height).max(b.depth).max(1);
         let p = 31 - size.leading_zeros() as i32 + self.base_level;
         Some(p.min(self.max_level))
     }
@@ -233,10 +288,33 @@ impl TexObject {
     /// minification filter needs mipmaps, every level from the base to q exists with halved
     /// sizes and the base's internal format, and base_level <= max_level.
     pub fn is_complete(&self) -> bool {
-        let Some(base) = self.level(self.base_level) else {
+        let n = faces(self.target);
+        // Cube completeness (§3.8.10): six square base images of one size and internal format.
+        if n == 6 {
+            let Some(b) = self.level(self.base_level) else {
+                return false;
+            };
+            let same = (0..6).all(|f| {
+                self.face_level(f, self.base_level).is_some_and(|l| {
+                    l.width == b.width
+                        && l.height == b.height
+                        && l.width == l.height
+                        && l.internal_format == b.internal_format
+                })
+            });
+            if !same {
+                return false;
+            }
+        }
+        (0..n).all(|f| self.face_complete(f))
+    }
+
+    /// [`TexObject::is_complete`] for the images of one face.
+    fn face_complete(&self, face: usize) -> bool {
+        let Some(base) = self.face_level(face, self.base_level) else {
             return false;
         };
-        if base.width <= 0 || base.height <= 0 {
+        if base.width <= 0 || base.height <= 0 || base.depth <= 0 {
             return false;
         }
         if !is_mipmap_filter(self.min_filter) {
@@ -248,14 +326,16 @@ impl TexObject {
         let Some(q) = self.last_level() else {
             return false;
         };
-        let (mut w, mut h) = (base.width, base.height);
+        let (mut w, mut h, mut d) = (base.width, base.height, base.depth);
         for l in self.base_level + 1..=q {
             w = (w / 2).max(1);
             h = (h / 2).max(1);
-            match self.level(l) {
+            d = (d / 2).max(1);
+            match self.face_level(face, l) {
                 Some(lv)
                     if lv.width == w
                         && lv.height == h
+                        && lv.depth == d
                         && lv.internal_format == base.internal_format => {}
                 _ => return false,
             }
@@ -270,49 +350,56 @@ impl TexObject {
         let Some(q) = self.last_level() else {
             return;
         };
-        let mut l = self.base_level;
-        while l < q {
-            let Some(src) = self.level(l) else {
-                return;
-            };
-            let next = halve(src);
-            let Some(slot) = usize::try_from(l + 1)
-                .ok()
-                .and_then(|k| self.levels.get_mut(k))
-            else {
-                return;
-            };
-            *slot = Some(next);
-            l += 1;
+        for face in 0..faces(self.target) {
+            let mut l = self.base_level;
+            while l < q {
+                let Some(src) = self.face_level(face, l) else {
+                    break;
+                };
+                let next = halve(src);
+                let Some(slot) = self.slot_mut(face, l + 1) else {
+                    break;
+                };
+                *slot = Some(next);
+                l += 1;
+            }
         }
     }
 }
 
-/// The next-smaller mipmap image of `src`: each texel the mean of the (up to) 2x2 texels above it.
+/// The next-smaller mipmap image of `src`: each texel the mean of the (up to) 2x2x2 texels
+/// above it.
 pub fn halve(src: &Level) -> Level {
     let w = (src.width / 2).max(1);
     let h = (src.height / 2).max(1);
-    let mut texels = Vec::with_capacity((w * h) as usize);
+    let d = (src.depth / 2).max(1);
+    let mut texels = Vec::with_capacity((w * h * d) as usize);
     let fx = if src.width > 1 { 2 } else { 1 };
     let fy = if src.height > 1 { 2 } else { 1 };
-    for j in 0..h {
-        for i in 0..w {
-            let mut sum = [0.0f32; 4];
-            for dj in 0..fy {
-                for di in 0..fx {
-                    let t = src.texel(i * fx + di, j * fy + dj);
-                    for k in 0..4 {
-                        sum[k] += t[k];
+    let fz = if src.depth > 1 { 2 } else { 1 };
+    for k in 0..d {
+        for j in 0..h {
+            for i in 0..w {
+                let mut sum = [0.0f32; 4];
+                for dk in 0..fz {
+                    for dj in 0..fy {
+                        for di in 0..fx {
+                            let t = src.texel3(i * fx + di, j * fy + dj, k * fz + dk);
+                            for c in 0..4 {
+                                sum[c] += t[c];
+                            }
+                        }
                     }
                 }
+                let n = (fx * fy * fz) as f32;
+                texels.push(quantize(src.base, sum.map(|s| s / n)));
             }
-            let n = (fx * fy) as f32;
-            texels.push(quantize(src.base, sum.map(|s| s / n)));
         }
     }
     Level {
         width: w,
         height: h,
+        depth: d,
         internal_format: src.internal_format,
         base: src.base,
         texels,

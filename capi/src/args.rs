@@ -191,6 +191,39 @@ pub fn image_bytes(modes: &PixelModes, width: i32, height: i32, format: u32, ty:
         .map_or(0, |l| l.need())
 }
 
+/// The bytes `depth` images of `width` x `height` span under `modes` (TexImage3D, GL 2.1
+/// §3.8.1): images IMAGE_HEIGHT rows apart (or `height`), SKIP_IMAGES of them skipped, each as
+/// [`image_bytes`] lays a 2D image out. 0 as `image_bytes`, or when the count overflows.
+pub fn image_bytes3(
+    modes: &PixelModes,
+    width: i32,
+    height: i32,
+    depth: i32,
+    format: u32,
+    ty: u32,
+) -> usize {
+    if width <= 0 || height <= 0 || depth <= 0 {
+        return 0;
+    }
+    let img = if modes.image_height > 0 {
+        i64::from(modes.image_height)
+    } else {
+        i64::from(height)
+    };
+    let rows = i64::from(depth - 1) * img + i64::from(height);
+    let skip = i64::from(modes.skip_rows.max(0)) + i64::from(modes.skip_images.max(0)) * img;
+    let (Ok(rows), Ok(skip)) = (i32::try_from(rows), i32::try_from(skip)) else {
+        return 0;
+    };
+    let flat = PixelModes {
+        skip_rows: skip,
+        image_height: 0,
+        skip_images: 0,
+        ..*modes
+    };
+    image_bytes(&flat, width, rows, format, ty)
+}
+
 /// Pixels to unpack: NULL stays NULL (TexImage2D then leaves the image undefined).
 unsafe fn unpack(
     gl: &Gl,
@@ -240,6 +273,92 @@ pub unsafe fn tex_sub_image_2d(
 ) -> Vec<u8> {
     // SAFETY: as `unpack`.
     unsafe { unpack(gl, width, height, format, ty, p) }.unwrap_or_default()
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_image_1d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: i32,
+    width: i32,
+    _border: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, 1, format, ty, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_sub_image_1d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    width: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Vec<u8> {
+    // SAFETY: as `unpack`.
+    unsafe { unpack(gl, width, 1, format, ty, p) }.unwrap_or_default()
+}
+
+/// A 3D image to unpack (IMAGE_HEIGHT and SKIP_IMAGES count); NULL stays NULL.
+unsafe fn unpack3(
+    gl: &Gl,
+    w: i32,
+    h: i32,
+    d: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    if p.is_null() {
+        return None;
+    }
+    let len = image_bytes3(&gl.ctx.state().unpack, w, h, d, format, ty);
+    // SAFETY: the caller's promise that the image is there, as the unpack modes lay it out.
+    Some(unsafe { read::bytes(p, len) }.to_vec())
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_image_3d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: i32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    _border: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `unpack3`.
+    unsafe { unpack3(gl, width, height, depth, format, ty, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn tex_sub_image_3d(
+    gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    _y: i32,
+    _z: i32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    format: u32,
+    ty: u32,
+    p: *const c_void,
+) -> Vec<u8> {
+    // SAFETY: as `unpack3`.
+    unsafe { unpack3(gl, width, height, depth, format, ty, p) }.unwrap_or_default()
 }
 
 /// PolygonStipple's 32x32 mask, a bitmap read as the unpack modes lay it out; none for NULL

@@ -117,7 +117,29 @@ pub unsafe extern "C" fn glTexImage1D(
     type_: u32,
     pixels: *const c_void,
 ) {
-    unimplemented("glTexImage1D");
+    with_gl("glTexImage1D", |gl| {
+        let pixels = args::tex_image_1d(
+            gl,
+            target,
+            level,
+            internalformat,
+            width,
+            border,
+            format,
+            type_,
+            pixels,
+        );
+        gl.ctx.execute(&Call::TexImage1D(Box::new((
+            target,
+            level,
+            internalformat,
+            width,
+            border,
+            format,
+            type_,
+            pixels,
+        ))));
+    })
 }
 
 /// `glTexImage2D(target, level, internalformat, width, height, border, format, type, pixels)`.
@@ -2655,7 +2677,10 @@ pub unsafe extern "C" fn glCopyTexImage1D(
     width: i32,
     border: i32,
 ) {
-    unimplemented("glCopyTexImage1D");
+    with_gl("glCopyTexImage1D", |gl| {
+        gl.ctx
+            .copy_tex_image_1d(target, level, internalformat, x, y, width, border);
+    })
 }
 
 /// `glCopyTexImage2D(target, level, internalformat, x, y, width, height, border)`.
@@ -2686,7 +2711,10 @@ pub unsafe extern "C" fn glCopyTexSubImage1D(
     y: i32,
     width: i32,
 ) {
-    unimplemented("glCopyTexSubImage1D");
+    with_gl("glCopyTexSubImage1D", |gl| {
+        gl.ctx
+            .copy_tex_sub_image_1d(target, level, xoffset, x, y, width);
+    })
 }
 
 /// `glCopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height)`.
@@ -2718,7 +2746,13 @@ pub unsafe extern "C" fn glTexSubImage1D(
     type_: u32,
     pixels: *const c_void,
 ) {
-    unimplemented("glTexSubImage1D");
+    with_gl("glTexSubImage1D", |gl| {
+        let pixels =
+            args::tex_sub_image_1d(gl, target, level, xoffset, width, format, type_, pixels);
+        gl.ctx.execute(&Call::TexSubImage1D(Box::new((
+            target, level, xoffset, width, format, type_, pixels,
+        ))));
+    })
 }
 
 /// `glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels)`.
@@ -2947,7 +2981,33 @@ pub unsafe extern "C" fn glTexImage3D(
     type_: u32,
     pixels: *const c_void,
 ) {
-    unimplemented("glTexImage3D");
+    with_gl("glTexImage3D", |gl| {
+        let pixels = args::tex_image_3d(
+            gl,
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            format,
+            type_,
+            pixels,
+        );
+        gl.ctx.execute(&Call::TexImage3D(Box::new((
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            format,
+            type_,
+            pixels,
+        ))));
+    })
 }
 
 /// `glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels)`.
@@ -2965,7 +3025,15 @@ pub unsafe extern "C" fn glTexSubImage3D(
     type_: u32,
     pixels: *const c_void,
 ) {
-    unimplemented("glTexSubImage3D");
+    with_gl("glTexSubImage3D", |gl| {
+        let pixels = args::tex_sub_image_3d(
+            gl, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_,
+            pixels,
+        );
+        gl.ctx.execute(&Call::TexSubImage3D(Box::new((
+            target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels,
+        ))));
+    })
 }
 
 /// `glCopyTexSubImage3D(target, level, xoffset, yoffset, zoffset, x, y, width, height)`.
@@ -2981,7 +3049,11 @@ pub unsafe extern "C" fn glCopyTexSubImage3D(
     width: i32,
     height: i32,
 ) {
-    unimplemented("glCopyTexSubImage3D");
+    with_gl("glCopyTexSubImage3D", |gl| {
+        gl.ctx.copy_tex_sub_image_3d(
+            target, level, xoffset, yoffset, zoffset, x, y, width, height,
+        );
+    })
 }
 
 /// `glActiveTexture(texture)`.
@@ -4153,6 +4225,20 @@ pub unsafe extern "C" fn glClientActiveTextureARB(texture: u32) {
     glClientActiveTexture(texture)
 }
 
+/// `glCopyTexImage1DEXT`: [`glCopyTexImage1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCopyTexImage1DEXT(
+    target: u32,
+    level: i32,
+    internalformat: u32,
+    x: i32,
+    y: i32,
+    width: i32,
+    border: i32,
+) {
+    glCopyTexImage1D(target, level, internalformat, x, y, width, border)
+}
+
 /// `glCopyTexImage2DEXT`: [`glCopyTexImage2D`].
 #[no_mangle]
 pub unsafe extern "C" fn glCopyTexImage2DEXT(
@@ -4168,6 +4254,19 @@ pub unsafe extern "C" fn glCopyTexImage2DEXT(
     glCopyTexImage2D(target, level, internalformat, x, y, width, height, border)
 }
 
+/// `glCopyTexSubImage1DEXT`: [`glCopyTexSubImage1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCopyTexSubImage1DEXT(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    x: i32,
+    y: i32,
+    width: i32,
+) {
+    glCopyTexSubImage1D(target, level, xoffset, x, y, width)
+}
+
 /// `glCopyTexSubImage2DEXT`: [`glCopyTexSubImage2D`].
 #[no_mangle]
 pub unsafe extern "C" fn glCopyTexSubImage2DEXT(
@@ -4181,6 +4280,24 @@ pub unsafe extern "C" fn glCopyTexSubImage2DEXT(
     height: i32,
 ) {
     glCopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height)
+}
+
+/// `glCopyTexSubImage3DEXT`: [`glCopyTexSubImage3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCopyTexSubImage3DEXT(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    yoffset: i32,
+    zoffset: i32,
+    x: i32,
+    y: i32,
+    width: i32,
+    height: i32,
+) {
+    glCopyTexSubImage3D(
+        target, level, xoffset, yoffset, zoffset, x, y, width, height,
+    )
 }
 
 /// `glDeleteBuffersARB`: [`glDeleteBuffers`].
@@ -4757,6 +4874,48 @@ pub unsafe extern "C" fn glStencilOpSeparateATI(face: u32, sfail: u32, dpfail: u
     glStencilOpSeparate(face, sfail, dpfail, dppass)
 }
 
+/// `glTexImage3DEXT`: [`glTexImage3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glTexImage3DEXT(
+    target: u32,
+    level: i32,
+    internalformat: i32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    border: i32,
+    format: u32,
+    type_: u32,
+    pixels: *const c_void,
+) {
+    glTexImage3D(
+        target,
+        level,
+        internalformat,
+        width,
+        height,
+        depth,
+        border,
+        format,
+        type_,
+        pixels,
+    )
+}
+
+/// `glTexSubImage1DEXT`: [`glTexSubImage1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage1DEXT(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    width: i32,
+    format: u32,
+    type_: u32,
+    pixels: *const c_void,
+) {
+    glTexSubImage1D(target, level, xoffset, width, format, type_, pixels)
+}
+
 /// `glTexSubImage2DEXT`: [`glTexSubImage2D`].
 #[no_mangle]
 pub unsafe extern "C" fn glTexSubImage2DEXT(
@@ -4772,6 +4931,26 @@ pub unsafe extern "C" fn glTexSubImage2DEXT(
 ) {
     glTexSubImage2D(
         target, level, xoffset, yoffset, width, height, format, type_, pixels,
+    )
+}
+
+/// `glTexSubImage3DEXT`: [`glTexSubImage3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glTexSubImage3DEXT(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    yoffset: i32,
+    zoffset: i32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    format: u32,
+    type_: u32,
+    pixels: *const c_void,
+) {
+    glTexSubImage3D(
+        target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels,
     )
 }
 
@@ -5057,10 +5236,16 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glColorMaterial" => glColorMaterial as *const c_void,
         b"glColorPointer" => glColorPointer as *const c_void,
         b"glCopyPixels" => glCopyPixels as *const c_void,
+        b"glCopyTexImage1D" => glCopyTexImage1D as *const c_void,
+        b"glCopyTexImage1DEXT" => glCopyTexImage1D as *const c_void,
         b"glCopyTexImage2D" => glCopyTexImage2D as *const c_void,
         b"glCopyTexImage2DEXT" => glCopyTexImage2D as *const c_void,
+        b"glCopyTexSubImage1D" => glCopyTexSubImage1D as *const c_void,
+        b"glCopyTexSubImage1DEXT" => glCopyTexSubImage1D as *const c_void,
         b"glCopyTexSubImage2D" => glCopyTexSubImage2D as *const c_void,
         b"glCopyTexSubImage2DEXT" => glCopyTexSubImage2D as *const c_void,
+        b"glCopyTexSubImage3D" => glCopyTexSubImage3D as *const c_void,
+        b"glCopyTexSubImage3DEXT" => glCopyTexSubImage3D as *const c_void,
         b"glCullFace" => glCullFace as *const c_void,
         b"glDeleteBuffers" => glDeleteBuffers as *const c_void,
         b"glDeleteBuffersARB" => glDeleteBuffers as *const c_void,
@@ -5464,13 +5649,20 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glTexGenfv" => glTexGenfv as *const c_void,
         b"glTexGeni" => glTexGeni as *const c_void,
         b"glTexGeniv" => glTexGeniv as *const c_void,
+        b"glTexImage1D" => glTexImage1D as *const c_void,
         b"glTexImage2D" => glTexImage2D as *const c_void,
+        b"glTexImage3D" => glTexImage3D as *const c_void,
+        b"glTexImage3DEXT" => glTexImage3D as *const c_void,
         b"glTexParameterf" => glTexParameterf as *const c_void,
         b"glTexParameterfv" => glTexParameterfv as *const c_void,
         b"glTexParameteri" => glTexParameteri as *const c_void,
         b"glTexParameteriv" => glTexParameteriv as *const c_void,
+        b"glTexSubImage1D" => glTexSubImage1D as *const c_void,
+        b"glTexSubImage1DEXT" => glTexSubImage1D as *const c_void,
         b"glTexSubImage2D" => glTexSubImage2D as *const c_void,
         b"glTexSubImage2DEXT" => glTexSubImage2D as *const c_void,
+        b"glTexSubImage3D" => glTexSubImage3D as *const c_void,
+        b"glTexSubImage3DEXT" => glTexSubImage3D as *const c_void,
         b"glTranslated" => glTranslated as *const c_void,
         b"glTranslatef" => glTranslatef as *const c_void,
         b"glUnmapBuffer" => glUnmapBuffer as *const c_void,

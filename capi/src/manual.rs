@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 
 use fixedgl::{counts, gl, Context, Pointer};
 
-use crate::args::image_bytes;
+use crate::args::{image_bytes, image_bytes3};
 use crate::current::with_gl;
 use crate::read;
 
@@ -258,18 +258,24 @@ pub unsafe extern "C" fn glGetTexImage(
     pixels: *mut c_void,
 ) {
     with_gl("glGetTexImage", |gl| {
-        let (mut w, mut h) = ([0], [0]);
+        let (mut w, mut h, mut d) = ([0], [0], [0]);
         let pending = gl.ctx.get_error();
         gl.ctx
             .get_tex_level_parameteriv(target, level, gl::TEXTURE_WIDTH, &mut w);
         gl.ctx
             .get_tex_level_parameteriv(target, level, gl::TEXTURE_HEIGHT, &mut h);
+        gl.ctx
+            .get_tex_level_parameteriv(target, level, gl::TEXTURE_DEPTH, &mut d);
         // The size queries' own errors are GetTexImage's to raise, below.
         let _ = gl.ctx.get_error();
         if pending != gl::NO_ERROR {
             gl.ctx.raise_error(pending);
         }
-        let n = image_bytes(&gl.ctx.state().pack, w[0], h[0], format, ty);
+        let n = if target == gl::TEXTURE_3D {
+            image_bytes3(&gl.ctx.state().pack, w[0], h[0], d[0], format, ty)
+        } else {
+            image_bytes(&gl.ctx.state().pack, w[0], h[0], format, ty)
+        };
         // SAFETY: the image as the pack modes lay it out.
         let out = unsafe { read::slice_mut(pixels.cast::<u8>(), n) };
         gl.ctx.get_tex_image(target, level, format, ty, out);

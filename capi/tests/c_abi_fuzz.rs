@@ -73,6 +73,10 @@ const FOCUS: &[&str] = &[
     "glTexImage2D",
     "glTexSubImage2D",
     "glCopyTexImage2D",
+    "glTexImage1D",
+    "glTexImage3D",
+    "glTexSubImage3D",
+    "glCopyTexSubImage3D",
     "glTexParameteri",
     "glTexEnvi",
     "glBlendFunc",
@@ -967,6 +971,22 @@ fn edge_calls(f: &mut Fuzz) {
             glReadPixels(0, 0, 4, 4, gl::RGBA, gl::UNSIGNED_BYTE, null_mut());
             glGetTexImage(gl::TEXTURE_2D, 0, gl::RGBA, gl::FLOAT, null_mut());
             for p in [gl::PACK_ROW_LENGTH, gl::PACK_SKIP_ROWS, gl::PACK_SKIP_PIXELS] {
+                glPixelStorei(p, 0);
+            }
+        }),
+        ("glTexImage3D(TEXTURE_3D, 0, RGBA, 2048, 2048, 2048, 0, RGBA, FLOAT, NULL); i32::MAX sizes", || unsafe {
+            glTexImage3D(gl::TEXTURE_3D, 0, gl::RGBA as i32, 2048, 2048, 2048, 0, gl::RGBA, gl::FLOAT, null());
+            glTexImage3D(gl::TEXTURE_3D, 0, gl::RGBA as i32, i32::MAX, i32::MAX, i32::MAX, 0, gl::RGBA, gl::UNSIGNED_BYTE, null());
+            glTexImage1D(gl::TEXTURE_1D, 0, gl::RGBA as i32, i32::MAX, 0, gl::RGBA, gl::UNSIGNED_BYTE, null());
+        }),
+        ("glPixelStorei(UNPACK_IMAGE_HEIGHT/SKIP_IMAGES, i32::MAX); glTexImage3D(.., 4, 4, 4, .., NULL)", || unsafe {
+            for p in [gl::UNPACK_IMAGE_HEIGHT, gl::UNPACK_SKIP_IMAGES] {
+                glPixelStorei(p, i32::MAX);
+            }
+            glTexImage3D(gl::TEXTURE_3D, 0, gl::RGBA as i32, 4, 4, 4, 0, gl::RGBA, gl::UNSIGNED_BYTE, null());
+            glTexSubImage3D(gl::TEXTURE_3D, 0, 0, 0, 0, 4, 4, 4, gl::RGBA, gl::UNSIGNED_BYTE, null());
+            glCopyTexSubImage3D(gl::TEXTURE_3D, 0, 0, 0, 0, i32::MAX, i32::MAX, 4, 4);
+            for p in [gl::UNPACK_IMAGE_HEIGHT, gl::UNPACK_SKIP_IMAGES] {
                 glPixelStorei(p, 0);
             }
         }),

@@ -5,7 +5,8 @@ use serde::{Deserialize, Serialize};
 
 use super::{
     ArgKind, Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MapWrites,
-    MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs,
+    MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs,
+    TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs,
 };
 use crate::arrays::Pointer;
 
@@ -524,6 +525,34 @@ pub enum Call {
     ///
     /// target, level, xoffset, yoffset, x, y, width, height.
     CopyTexSubImage2D(u32, i32, i32, i32, i32, i32, i32, i32),
+    /// `glTexImage1D(target, level, internalformat, width, border, format, type, pixels)`.
+    ///
+    /// target, level, internalformat, width, border, format, type, pixels (None: NULL).
+    TexImage1D(Box<TexImage1DArgs>),
+    /// `glTexImage3D(target, level, internalformat, width, height, depth, border, format, type, pixels)`.
+    ///
+    /// target, level, internalformat, width, height, depth, border, format, type, pixels (None: NULL).
+    TexImage3D(Box<TexImage3DArgs>),
+    /// `glTexSubImage1D(target, level, xoffset, width, format, type, pixels)`.
+    ///
+    /// target, level, xoffset, width, format, type, pixels.
+    TexSubImage1D(Box<TexSubImage1DArgs>),
+    /// `glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels)`.
+    ///
+    /// target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels.
+    TexSubImage3D(Box<TexSubImage3DArgs>),
+    /// `glCopyTexImage1D(target, level, internalformat, x, y, width, border)`.
+    ///
+    /// target, level, internalformat, x, y, width, border.
+    CopyTexImage1D(u32, i32, u32, i32, i32, i32, i32),
+    /// `glCopyTexSubImage1D(target, level, xoffset, x, y, width)`.
+    ///
+    /// target, level, xoffset, x, y, width.
+    CopyTexSubImage1D(u32, i32, i32, i32, i32, i32),
+    /// `glCopyTexSubImage3D(target, level, xoffset, yoffset, zoffset, x, y, width, height)`.
+    ///
+    /// target, level, xoffset, yoffset, zoffset, x, y, width, height.
+    CopyTexSubImage3D(u32, i32, i32, i32, i32, i32, i32, i32, i32),
     /// `glTexParameteri(target, pname, param)`.
     TexParameteri(u32, u32, i32),
     /// `glTexParameterf(target, pname, param)`.
@@ -1116,6 +1145,13 @@ pub const NAMES: &[&str] = &[
     "TexSubImage2D",
     "CopyTexImage2D",
     "CopyTexSubImage2D",
+    "TexImage1D",
+    "TexImage3D",
+    "TexSubImage1D",
+    "TexSubImage3D",
+    "CopyTexImage1D",
+    "CopyTexSubImage1D",
+    "CopyTexSubImage3D",
     "TexParameteri",
     "TexParameterf",
     "TexParameteriv",
@@ -1512,6 +1548,13 @@ impl Call {
             Call::TexSubImage2D(..) => "TexSubImage2D",
             Call::CopyTexImage2D(..) => "CopyTexImage2D",
             Call::CopyTexSubImage2D(..) => "CopyTexSubImage2D",
+            Call::TexImage1D(..) => "TexImage1D",
+            Call::TexImage3D(..) => "TexImage3D",
+            Call::TexSubImage1D(..) => "TexSubImage1D",
+            Call::TexSubImage3D(..) => "TexSubImage3D",
+            Call::CopyTexImage1D(..) => "CopyTexImage1D",
+            Call::CopyTexSubImage1D(..) => "CopyTexSubImage1D",
+            Call::CopyTexSubImage3D(..) => "CopyTexSubImage3D",
             Call::TexParameteri(..) => "TexParameteri",
             Call::TexParameterf(..) => "TexParameterf",
             Call::TexParameteriv(..) => "TexParameteriv",
@@ -2131,6 +2174,13 @@ impl Call {
             Call::TexSubImage2D(..) => &[],
             Call::CopyTexImage2D(..) => &[Enum, Plain, Enum],
             Call::CopyTexSubImage2D(..) => &[Enum],
+            Call::TexImage1D(..) => &[],
+            Call::TexImage3D(..) => &[],
+            Call::TexSubImage1D(..) => &[],
+            Call::TexSubImage3D(..) => &[],
+            Call::CopyTexImage1D(..) => &[Enum, Plain, Enum],
+            Call::CopyTexSubImage1D(..) => &[Enum],
+            Call::CopyTexSubImage3D(..) => &[Enum],
             Call::TexParameteri(..) => &[Enum, Enum],
             Call::TexParameterf(..) => &[Enum, Enum],
             Call::TexParameteriv(..) => &[Enum, Enum],

@@ -22,6 +22,17 @@ pub type TexImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8
 /// `TexSubImage2D`'s arguments: target, level, xoffset, yoffset, width, height, format, type,
 /// pixels.
 pub type TexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
+/// `TexImage1D`'s arguments: target, level, internalformat, width, border, format, type, pixels
+/// (`None`: a NULL pointer).
+pub type TexImage1DArgs = (u32, i32, i32, i32, i32, u32, u32, Option<Vec<u8>>);
+/// `TexImage3D`'s arguments: target, level, internalformat, width, height, depth, border,
+/// format, type, pixels (`None`: a NULL pointer).
+pub type TexImage3DArgs = (u32, i32, i32, i32, i32, i32, i32, u32, u32, Option<Vec<u8>>);
+/// `TexSubImage1D`'s arguments: target, level, xoffset, width, format, type, pixels.
+pub type TexSubImage1DArgs = (u32, i32, i32, i32, u32, u32, Vec<u8>);
+/// `TexSubImage3D`'s arguments: target, level, xoffset, yoffset, zoffset, width, height, depth,
+/// format, type, pixels.
+pub type TexSubImage3DArgs = (u32, i32, i32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
 /// `MultiDrawArrays`' arguments: mode, first, count, drawcount (the slices as the caller passed
 /// them, however long).

@@ -569,7 +569,8 @@ fn gen_call(cmds: &[Implemented]) -> String {
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
          Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MultiDrawArraysArgs, \
-         MultiDrawElementsArgs, TexImage2DArgs, TexSubImage2DArgs};\nuse crate::arrays::Pointer;\n\n",
+         MultiDrawElementsArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, \
+         TexSubImage2DArgs, TexSubImage3DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
     s.push_str("#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]\npub enum Call {\n");

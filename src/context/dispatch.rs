@@ -318,6 +318,88 @@ impl Context {
             Call::CopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height) => {
                 self.copy_tex_sub_image_2d(target, level, xoffset, yoffset, x, y, width, height)
             }
+            Call::TexImage1D(ref args) => {
+                let (target, level, internalformat, width, border, format, type_, ref pixels) =
+                    **args;
+                self.tex_image_1d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    border,
+                    format,
+                    type_,
+                    pixels.as_deref(),
+                )
+            }
+            Call::TexImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    format,
+                    type_,
+                    ref pixels,
+                ) = **args;
+                self.tex_image_3d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    format,
+                    type_,
+                    pixels.as_deref(),
+                )
+            }
+            Call::TexSubImage1D(ref args) => {
+                let (target, level, xoffset, width, format, type_, ref pixels) = **args;
+                self.tex_sub_image_1d(target, level, xoffset, width, format, type_, pixels)
+            }
+            Call::TexSubImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    xoffset,
+                    yoffset,
+                    zoffset,
+                    width,
+                    height,
+                    depth,
+                    format,
+                    type_,
+                    ref pixels,
+                ) = **args;
+                self.tex_sub_image_3d(
+                    target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_,
+                    pixels,
+                )
+            }
+            Call::CopyTexImage1D(target, level, internalformat, x, y, width, border) => {
+                self.copy_tex_image_1d(target, level, internalformat, x, y, width, border)
+            }
+            Call::CopyTexSubImage1D(target, level, xoffset, x, y, width) => {
+                self.copy_tex_sub_image_1d(target, level, xoffset, x, y, width)
+            }
+            Call::CopyTexSubImage3D(
+                target,
+                level,
+                xoffset,
+                yoffset,
+                zoffset,
+                x,
+                y,
+                width,
+                height,
+            ) => self.copy_tex_sub_image_3d(
+                target, level, xoffset, yoffset, zoffset, x, y, width, height,
+            ),
             Call::TexParameteri(target, pname, param) => self.tex_parameteri(target, pname, param),
             Call::TexParameterf(target, pname, param) => self.tex_parameterf(target, pname, param),
             Call::TexParameteriv(target, pname, ref params) => {

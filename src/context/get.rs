@@ -258,7 +258,7 @@ impl Context {
             gl::MAX_TEXTURE_STACK_DEPTH => i(MAX_TEXTURE_STACK_DEPTH as i32),
             gl::MAX_TEXTURE_UNITS => i(MAX_TEXTURE_UNITS as i32),
             gl::MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM as i32; 2]),
-            gl::MAX_TEXTURE_SIZE => i(crate::texture::MAX_TEXTURE_SIZE),
+            gl::MAX_TEXTURE_SIZE | gl::MAX_3D_TEXTURE_SIZE => i(crate::texture::MAX_TEXTURE_SIZE),
             gl::SUBPIXEL_BITS => i(SUBPIXEL_BITS),
             gl::ALIASED_POINT_SIZE_RANGE | gl::SMOOTH_POINT_SIZE_RANGE => floats(POINT_SIZE_RANGE),
             gl::SMOOTH_POINT_SIZE_GRANULARITY => f(POINT_SIZE_GRANULARITY),

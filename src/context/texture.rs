@@ -1,11 +1,13 @@
 //! Texture objects and images: `GenTextures`, `DeleteTextures`, `IsTexture`, `BindTexture`,
-//! `TexImage2D`, `TexSubImage2D`, `CopyTexImage2D`, `CopyTexSubImage2D`, `GetTexImage`
+//! `TexImage1D/2D/3D`, `TexSubImage1D/2D/3D`, `CopyTexImage1D/2D`, `CopyTexSubImage1D/2D/3D`,
+//! `GetTexImage`
 //! (GL 2.1 §3.8.1, §3.8.2, §3.8.12, §6.1.4).
 //!
 //! Objects of every GL 1.3 target exist (TEXTURE_1D, _2D, _3D, _CUBE_MAP: BindTexture, the
-//! bindings, parameters, deletion), but images only for TEXTURE_2D: the image commands take
-//! TEXTURE_2D alone and any other target (and the proxies) is INVALID_ENUM (TexImage1D/3D and
-//! cube-map faces: issue #14). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
+//! bindings, parameters, deletion); images for TEXTURE_1D, _2D, _3D and the six faces of
+//! TEXTURE_CUBE_MAP (TexImage1D/2D/3D, TexSubImage1D/2D/3D, CopyTexImage1D/2D,
+//! CopyTexSubImage1D/2D/3D; the faces through the 2D commands, square). The proxy targets are
+//! INVALID_ENUM (issue #14). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
 //! is allocated with undefined, here zero, contents); FLOAT data is native-endian bytes
 //! (`texture::f32_bytes`).
 //!
@@ -23,8 +25,8 @@ use crate::call::Call;
 use crate::convert;
 use crate::gl;
 use crate::texture::{
-    as_rgba, base_internal_format, format_components, keep, quantize, target_index, type_size,
-    unpack, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    as_rgba, base_internal_format, format_components, image_binding, keep, quantize, target_index,
+    type_size, unpack, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
 };
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
@@ -33,6 +35,7 @@ pub const MAX_GEN_TEXTURES: i32 = 1 << 16;
 /// The error `TexImage2D` raises for these arguments before looking at state or data, if any
 /// (GL 2.1 §3.8.1): shared by the front end and the GL backend's replay.
 #[allow(clippy::too_many_arguments)]
+#[cfg_attr(not(feature = "gl"), allow(dead_code))]
 pub fn tex_image_args_error(
     target: u32,
     level: i32,
@@ -43,7 +46,47 @@ pub fn tex_image_args_error(
     format: u32,
     type_: u32,
 ) -> Option<u32> {
-    if target != gl::TEXTURE_2D {
+    tex_image_nd_args_error(
+        2,
+        target,
+        level,
+        internal_format,
+        [width, height, 1],
+        border,
+        format,
+        type_,
+    )
+}
+
+/// Is `target` one TexImage{dims}D takes: TEXTURE_1D, TEXTURE_3D, or TEXTURE_2D and the six
+/// cube-map faces (proxies are not supported: INVALID_ENUM)?
+fn image_target_ok(dims: usize, target: u32) -> bool {
+    match dims {
+        1 => target == gl::TEXTURE_1D,
+        3 => target == gl::TEXTURE_3D,
+        _ => {
+            target == gl::TEXTURE_2D
+                || (gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
+                    .contains(&target)
+        }
+    }
+}
+
+/// The error `TexImage1D` (dims 1), `TexImage2D` (2) or `TexImage3D` (3) raises for these
+/// arguments before looking at state or data (GL 2.1 §3.8.1); `size` is width, height, depth
+/// (1 for the dimensions the command does not have).
+#[allow(clippy::too_many_arguments)]
+pub fn tex_image_nd_args_error(
+    dims: usize,
+    target: u32,
+    level: i32,
+    internal_format: i32,
+    size: [i32; 3],
+    border: i32,
+    format: u32,
+    type_: u32,
+) -> Option<u32> {
+    if !image_target_ok(dims, target) {
         return Some(gl::INVALID_ENUM);
     }
     if format_components(format).is_none() || type_size(type_).is_none() {
@@ -57,15 +100,27 @@ pub fn tex_image_args_error(
     };
     // Border 1 is legal GL 2.1 but not supported here (documented deviation).
     let max = MAX_TEXTURE_SIZE >> level;
-    if border != 0 || width < 0 || height < 0 || width > max || height > max {
+    if border != 0 || size.iter().any(|&n| n < 0 || n > max) {
         return Some(gl::INVALID_VALUE);
     }
-    // §3.8.1: depth data only into a depth format, and a depth format only from depth data.
+    // §3.8.1: cube-map faces are square.
+    if target != gl::TEXTURE_2D && dims == 2 && size[0] != size[1] {
+        return Some(gl::INVALID_VALUE);
+    }
+    // §3.8.1: depth data only into a depth format, and a depth format only from depth data;
+    // depth textures only for the 1D and 2D targets.
     if (format == gl::DEPTH_COMPONENT) != (base == gl::DEPTH_COMPONENT) {
+        return Some(gl::INVALID_OPERATION);
+    }
+    if dims == 3 && base == gl::DEPTH_COMPONENT {
         return Some(gl::INVALID_OPERATION);
     }
     None
 }
+
+/// Most texels one image may hold: MAX_TEXTURE_SIZE² (64 MiB of `f32` texels); a larger 3D
+/// image is OUT_OF_MEMORY (a bound on memory: 2048³ texels would be 128 GiB).
+pub const MAX_IMAGE_TEXELS: usize = (MAX_TEXTURE_SIZE as usize) * (MAX_TEXTURE_SIZE as usize);
 
 impl Context {
     /// `glGenTextures`: writes `n` unused names to the front of `textures`. `n < 0` or
@@ -174,6 +229,46 @@ impl Context {
         }
     }
 
+    /// `glTexImage1D` (§3.8.1): level `level` of the bound 1D texture, a `width` x 1 image
+    /// unpacked as TexImage2D's one row. Errors as TexImage2D (target TEXTURE_1D).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        record!(
+            self,
+            Call::TexImage1D(Box::new((
+                target,
+                level,
+                internal_format,
+                width,
+                border,
+                format,
+                type_,
+                pixels.map(<[u8]>::to_vec),
+            )))
+        );
+        self.tex_image(
+            1,
+            target,
+            level,
+            internal_format,
+            [width, 1, 1],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
     /// `glTexImage2D` (§3.8.1): specifies level `level` of the bound 2D texture from client
     /// pixels of `format` / `type_` (unpacked under the UNPACK_ modes: ROW_LENGTH, SKIP_ROWS,
     /// SKIP_PIXELS, ALIGNMENT, SWAP_BYTES, §3.6.4). Errors: see [`tex_image_args_error`];
@@ -205,61 +300,149 @@ impl Context {
                 pixels.map(<[u8]>::to_vec),
             )))
         );
-        if !self.outside_begin_end() {
-            return;
-        }
-        if let Some(code) = tex_image_args_error(
+        self.tex_image(
+            2,
             target,
             level,
             internal_format,
-            width,
-            height,
+            [width, height, 1],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    /// `glTexImage3D` (§3.8.1): level `level` of the bound 3D texture, `depth` images of
+    /// `width` x `height` placed by the UNPACK_ modes plus IMAGE_HEIGHT and SKIP_IMAGES.
+    /// Errors as TexImage2D (target TEXTURE_3D; a depth format is INVALID_OPERATION); an image
+    /// of more than [`MAX_IMAGE_TEXELS`] texels is OUT_OF_MEMORY.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        record!(
+            self,
+            Call::TexImage3D(Box::new((
+                target,
+                level,
+                internal_format,
+                width,
+                height,
+                depth,
+                border,
+                format,
+                type_,
+                pixels.map(<[u8]>::to_vec),
+            )))
+        );
+        self.tex_image(
+            3,
+            target,
+            level,
+            internal_format,
+            [width, height, depth],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    /// TexImage1D/2D/3D after recording.
+    #[allow(clippy::too_many_arguments)]
+    fn tex_image(
+        &mut self,
+        dims: usize,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        size: [i32; 3],
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        if !self.outside_begin_end() {
+            return;
+        }
+        if let Some(code) = tex_image_nd_args_error(
+            dims,
+            target,
+            level,
+            internal_format,
+            size,
             border,
             format,
             type_,
         ) {
             return self.error(code);
         }
+        let [width, height, depth] = size;
         let base = base_internal_format(internal_format).unwrap_or(gl::RGBA);
         let (n, s) = (
             format_components(format).unwrap_or(4),
             type_size(type_).unwrap_or(1),
         );
+        let texels_n = width as usize * height as usize * depth as usize;
+        if texels_n > MAX_IMAGE_TEXELS {
+            return self.error(gl::OUT_OF_MEMORY);
+        }
         // With no data (NULL) nothing is read, whatever the skips.
         let data = match pixels {
-            Some(p) => match self.unpack_layout(width, height, n, s, p.len()) {
+            Some(p) => match self.unpack_layout3(width, height, depth, n, s, p.len()) {
                 Some(layout) => Some((p, layout)),
                 None => return self.error(gl::INVALID_OPERATION),
             },
             None => None,
         };
-        // Up to MAX_TEXTURE_SIZE² texels of 16 bytes (64 MiB) per call: reserved first, so an
+        // Up to MAX_IMAGE_TEXELS texels of 16 bytes (64 MiB) per call: reserved first, so an
         // allocation the machine cannot make is OUT_OF_MEMORY with nothing changed (GL 2.1
         // §2.5), not an abort.
-        let texels_n = width as usize * height as usize;
         let mut texels = Vec::new();
         if texels.try_reserve_exact(texels_n).is_err() {
             return self.error(gl::OUT_OF_MEMORY);
         }
         match data {
-            Some((p, l)) => unpack_into(&mut texels, p, width, height, format, type_, &l, base),
+            Some((p, (l, img))) => {
+                for k in 0..depth as usize {
+                    let slice = crate::pixel_store::Layout {
+                        offset: l.offset + k * img * l.stride,
+                        ..l
+                    };
+                    unpack_into(&mut texels, p, width, height, format, type_, &slice, base);
+                }
+            }
             None => texels.resize(texels_n, quantize(base, [0.0; 4])),
         }
         let lv = Level {
             width,
             height,
+            depth,
             internal_format,
             base,
             texels,
         };
-        self.store_level(level, lv);
+        self.store_level(target, level, lv);
     }
 
-    /// Stores `lv` as level `level` of the active unit's 2D texture, then GENERATE_MIPMAP.
-    fn store_level(&mut self, level: i32, lv: Level) {
+    /// Stores `lv` as level `level` of the active unit's texture of `target`, then
+    /// GENERATE_MIPMAP.
+    fn store_level(&mut self, target: u32, level: i32, lv: Level) {
         let unit = self.state.active_texture;
-        if let Some(obj) = self.state.textures.bound_2d_mut(unit) {
-            if let Some(slot) = obj.levels.get_mut(level as usize) {
+        let (bind, face) = image_binding(target);
+        if let Some(obj) = self.state.textures.bound_mut(unit, bind) {
+            if let Some(slot) = obj.slot_mut(face, level) {
                 *slot = Some(lv);
             }
             if obj.generate_mipmap && level == obj.base_level {
@@ -268,21 +451,66 @@ impl Context {
         }
     }
 
-    /// Where a `w` x `h` image of `n` components of `s` bytes lies in client data of `len`
-    /// bytes under the UNPACK_ modes (§3.6.4), or None when `len` is shorter than the skips and
-    /// the image need (or the need overflows a usize).
-    fn unpack_layout(
+    /// Where a `w` x `h` x `d` image of `n` components of `s` bytes lies in client data of
+    /// `len` bytes under the UNPACK_ modes (§3.6.4, §3.8.1), with the rows between images, or
+    /// None when `len` is shorter than the skips and the image need (or the need overflows).
+    fn unpack_layout3(
         &self,
         w: i32,
         h: i32,
+        d: i32,
         n: usize,
         s: usize,
         len: usize,
-    ) -> Option<crate::pixel_store::Layout> {
-        self.state
-            .unpack
-            .layout(w, h, n, s)
-            .filter(|l| len >= l.need)
+    ) -> Option<(crate::pixel_store::Layout, usize)> {
+        let modes = if d == 1 {
+            // A 1D or 2D image: IMAGE_HEIGHT and SKIP_IMAGES do not apply.
+            crate::pixel_store::PixelModes {
+                image_height: 0,
+                skip_images: 0,
+                ..self.state.unpack
+            }
+        } else {
+            self.state.unpack
+        };
+        modes.layout3(w, h, d, n, s).filter(|(l, _)| len >= l.need)
+    }
+
+    /// `glTexSubImage1D` (§3.8.2): replaces texels `xoffset..xoffset + width` of an existing
+    /// level of the bound 1D texture; errors as TexSubImage2D.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        width: i32,
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
+        record!(
+            self,
+            Call::TexSubImage1D(Box::new((
+                target,
+                level,
+                xoffset,
+                width,
+                format,
+                type_,
+                pixels.to_vec(),
+            )))
+        );
+        self.tex_sub_image(
+            1,
+            target,
+            level,
+            [xoffset, 0, 0],
+            [width, 1, 1],
+            format,
+            type_,
+            pixels,
+        );
     }
 
     /// `glTexSubImage2D` (§3.8.2): replaces a rectangle of an existing level. A level not
@@ -315,11 +543,80 @@ impl Context {
                 pixels.to_vec(),
             )))
         );
+        self.tex_sub_image(
+            2,
+            target,
+            level,
+            [xoffset, yoffset, 0],
+            [width, height, 1],
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    /// `glTexSubImage3D` (§3.8.2): replaces a box of an existing level of the bound 3D
+    /// texture (unpacked as TexImage3D); errors as TexSubImage2D.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
+        record!(
+            self,
+            Call::TexSubImage3D(Box::new((
+                target,
+                level,
+                xoffset,
+                yoffset,
+                zoffset,
+                width,
+                height,
+                depth,
+                format,
+                type_,
+                pixels.to_vec(),
+            )))
+        );
+        self.tex_sub_image(
+            3,
+            target,
+            level,
+            [xoffset, yoffset, zoffset],
+            [width, height, depth],
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    /// TexSubImage1D/2D/3D after recording.
+    #[allow(clippy::too_many_arguments)]
+    fn tex_sub_image(
+        &mut self,
+        dims: usize,
+        target: u32,
+        level: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
         if !self.outside_begin_end() {
             return;
         }
-        let Some(base) = self.check_sub_image(target, level, xoffset, yoffset, width, height)
-        else {
+        let Some(base) = self.check_sub_image(dims, target, level, offset, size) else {
             return;
         };
         let (Some(n), Some(s)) = (format_components(format), type_size(type_)) else {
@@ -328,25 +625,32 @@ impl Context {
         if (format == gl::DEPTH_COMPONENT) != (base == gl::DEPTH_COMPONENT) {
             return self.error(gl::INVALID_OPERATION);
         }
-        let Some(layout) = self.unpack_layout(width, height, n, s, pixels.len()) else {
+        let [width, height, depth] = size;
+        let Some((l, img)) = self.unpack_layout3(width, height, depth, n, s, pixels.len()) else {
             return self.error(gl::INVALID_OPERATION);
         };
-        let texels = unpack(pixels, width, height, format, type_, &layout, base);
-        self.write_rect(level, xoffset, yoffset, width, &texels);
+        let mut texels = Vec::new();
+        for k in 0..depth.max(0) as usize {
+            let slice = crate::pixel_store::Layout {
+                offset: l.offset + k * img * l.stride,
+                ..l
+            };
+            texels.extend(unpack(pixels, width, height, format, type_, &slice, base));
+        }
+        self.write_box(target, level, offset, size, &texels);
     }
 
-    /// The TexSubImage/CopyTexSubImage checks shared by both (§3.8.2): the target, a specified
-    /// level, the rectangle inside it. Returns the level's base format, or None after raising.
+    /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target, a specified
+    /// level, the box inside it. Returns the level's base format, or None after raising.
     fn check_sub_image(
         &mut self,
+        dims: usize,
         target: u32,
         level: i32,
-        xoffset: i32,
-        yoffset: i32,
-        width: i32,
-        height: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
     ) -> Option<u32> {
-        if target != gl::TEXTURE_2D {
+        if !image_target_ok(dims, target) {
             self.error(gl::INVALID_ENUM);
             return None;
         }
@@ -355,22 +659,23 @@ impl Context {
             return None;
         }
         let unit = self.state.active_texture;
+        let (bind, face) = image_binding(target);
         let Some(lv) = self
             .state
             .textures
-            .bound_2d(unit)
-            .and_then(|o| o.level(level))
+            .bound(unit, bind)
+            .and_then(|o| o.face_level(face, level))
         else {
             self.error(gl::INVALID_OPERATION);
             return None;
         };
-        let (lw, lh, base) = (lv.width, lv.height, lv.base);
-        let inside = xoffset >= 0
-            && yoffset >= 0
-            && width >= 0
-            && height >= 0
-            && i64::from(xoffset) + i64::from(width) <= i64::from(lw)
-            && i64::from(yoffset) + i64::from(height) <= i64::from(lh);
+        let dims_of = [lv.width, lv.height, lv.depth];
+        let base = lv.base;
+        let inside = (0..3).all(|k| {
+            offset[k] >= 0
+                && size[k] >= 0
+                && i64::from(offset[k]) + i64::from(size[k]) <= i64::from(dims_of[k])
+        });
         if !inside {
             self.error(gl::INVALID_VALUE);
             return None;
@@ -378,16 +683,28 @@ impl Context {
         Some(base)
     }
 
-    /// Writes `texels` (rows of `width`) into level `level` at (x, y), then GENERATE_MIPMAP.
-    fn write_rect(&mut self, level: i32, x: i32, y: i32, width: i32, texels: &[[f32; 4]]) {
+    /// Writes `texels` (rows of `size[0]`, images of `size[1]` rows) into level `level` of the
+    /// texture of `target` at `offset`, then GENERATE_MIPMAP.
+    fn write_box(
+        &mut self,
+        target: u32,
+        level: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
+        texels: &[[f32; 4]],
+    ) {
         let unit = self.state.active_texture;
-        let Some(obj) = self.state.textures.bound_2d_mut(unit) else {
+        let (bind, face) = image_binding(target);
+        let Some(obj) = self.state.textures.bound_mut(unit, bind) else {
             return;
         };
-        if let Some(Some(lv)) = obj.levels.get_mut(level as usize) {
-            let lw = lv.width as usize;
-            for (j, row) in texels.chunks(width.max(1) as usize).enumerate() {
-                let at = (y as usize + j) * lw + x as usize;
+        if let Some(Some(lv)) = obj.slot_mut(face, level) {
+            let (lw, lh) = (lv.width as usize, lv.height as usize);
+            let rows = size[1].max(1) as usize;
+            for (r, row) in texels.chunks(size[0].max(1) as usize).enumerate() {
+                let (k, j) = (r / rows, r % rows);
+                let at = ((offset[2] as usize + k) * lh + offset[1] as usize + j) * lw
+                    + offset[0] as usize;
                 if let Some(dst) = lv.texels.get_mut(at..at + row.len()) {
                     dst.copy_from_slice(row);
                 }
@@ -396,6 +713,26 @@ impl Context {
         if obj.generate_mipmap && level == obj.base_level {
             obj.generate_mipmaps();
         }
+    }
+
+    /// `glCopyTexImage1D` (§3.8.2): level `level` of the bound 1D texture from the `width`
+    /// framebuffer pixels at (x, y); errors as CopyTexImage2D (target TEXTURE_1D).
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: u32,
+        x: i32,
+        y: i32,
+        width: i32,
+        border: i32,
+    ) {
+        record!(
+            self,
+            Call::CopyTexImage1D(target, level, internal_format, x, y, width, border)
+        );
+        self.copy_tex_image(1, target, level, internal_format, x, y, [width, 1], border);
     }
 
     /// `glCopyTexImage2D` (§3.8.2): level `level` from the framebuffer rectangle at (x, y) of
@@ -417,18 +754,44 @@ impl Context {
             self,
             Call::CopyTexImage2D(target, level, internal_format, x, y, width, height, border)
         );
+        self.copy_tex_image(
+            2,
+            target,
+            level,
+            internal_format,
+            x,
+            y,
+            [width, height],
+            border,
+        );
+    }
+
+    /// CopyTexImage1D/2D after recording.
+    #[allow(clippy::too_many_arguments)]
+    fn copy_tex_image(
+        &mut self,
+        dims: usize,
+        target: u32,
+        level: i32,
+        internal_format: u32,
+        x: i32,
+        y: i32,
+        [width, height]: [i32; 2],
+        border: i32,
+    ) {
         if !self.outside_begin_end() {
             return;
         }
         let ifmt = internal_format as i32;
+        let size = [width, height, 1];
         let Some(base) = base_internal_format(ifmt) else {
             // Target and level errors first, as TexImage2D orders them.
-            let code = tex_image_args_error(
+            let code = tex_image_nd_args_error(
+                dims,
                 target,
                 level,
                 gl::RGBA as i32,
-                width,
-                height,
+                size,
                 border,
                 gl::RGBA,
                 gl::UNSIGNED_BYTE,
@@ -445,7 +808,7 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         if let Some(code) =
-            tex_image_args_error(target, level, ifmt, width, height, border, fmt, gl::FLOAT)
+            tex_image_nd_args_error(dims, target, level, ifmt, size, border, fmt, gl::FLOAT)
         {
             return self.error(code);
         }
@@ -457,15 +820,36 @@ impl Context {
             return self.error(gl::OUT_OF_MEMORY);
         };
         self.store_level(
+            target,
             level,
             Level {
                 width,
                 height,
+                depth: 1,
                 internal_format: ifmt,
                 base,
                 texels,
             },
         );
+    }
+
+    /// `glCopyTexSubImage1D` (§3.8.2): replaces texels `xoffset..xoffset + width` of level
+    /// `level` of the bound 1D texture with the framebuffer pixels at (x, y).
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_sub_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+    ) {
+        record!(
+            self,
+            Call::CopyTexSubImage1D(target, level, xoffset, x, y, width)
+        );
+        self.copy_tex_sub_image(1, target, level, [xoffset, 0, 0], x, y, [width, 1]);
     }
 
     /// `glCopyTexSubImage2D` (§3.8.2): replaces a rectangle of level `level` with the
@@ -486,11 +870,64 @@ impl Context {
             self,
             Call::CopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height)
         );
+        self.copy_tex_sub_image(
+            2,
+            target,
+            level,
+            [xoffset, yoffset, 0],
+            x,
+            y,
+            [width, height],
+        );
+    }
+
+    /// `glCopyTexSubImage3D` (§3.8.2): replaces a rectangle of image `zoffset` of level
+    /// `level` of the bound 3D texture with the framebuffer rectangle at (x, y).
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_sub_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+    ) {
+        record!(
+            self,
+            Call::CopyTexSubImage3D(target, level, xoffset, yoffset, zoffset, x, y, width, height)
+        );
+        self.copy_tex_sub_image(
+            3,
+            target,
+            level,
+            [xoffset, yoffset, zoffset],
+            x,
+            y,
+            [width, height],
+        );
+    }
+
+    /// CopyTexSubImage1D/2D/3D after recording.
+    #[allow(clippy::too_many_arguments)]
+    fn copy_tex_sub_image(
+        &mut self,
+        dims: usize,
+        target: u32,
+        level: i32,
+        offset: [i32; 3],
+        x: i32,
+        y: i32,
+        [width, height]: [i32; 2],
+    ) {
         if !self.outside_begin_end() {
             return;
         }
-        let Some(base) = self.check_sub_image(target, level, xoffset, yoffset, width, height)
-        else {
+        let size = [width, height, 1];
+        let Some(base) = self.check_sub_image(dims, target, level, offset, size) else {
             return;
         };
         if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
@@ -499,7 +936,7 @@ impl Context {
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
-        self.write_rect(level, xoffset, yoffset, width, &texels);
+        self.write_box(target, level, offset, size, &texels);
     }
 
     /// Framebuffer pixels as texels of `base`: depth (as [0, 1]) for DEPTH_COMPONENT, else the
@@ -534,10 +971,11 @@ impl Context {
         Some(out)
     }
 
-    /// `glGetTexImage` (§6.1.4): level `level` of the bound 2D texture as `format` / `type_`,
-    /// placed under the PACK_ modes (§4.3.2) into `pixels`. A level not specified writes
-    /// nothing; a `pixels` too short for the skips and the image is INVALID_OPERATION (as
-    /// TexImage2D's unpack); depth data from a colour texture (or the reverse) is
+    /// `glGetTexImage` (§6.1.4): level `level` of the bound texture of `target` (TEXTURE_1D,
+    /// _2D or _3D) as `format` / `type_`, placed under the PACK_ modes (§4.3.2; a 3D image's
+    /// slices by PACK_IMAGE_HEIGHT and PACK_SKIP_IMAGES) into `pixels`. A level not specified
+    /// writes nothing; a `pixels` too short for the skips and the image is INVALID_OPERATION
+    /// (as TexImage2D's unpack); depth data from a colour texture (or the reverse) is
     /// INVALID_OPERATION.
     pub fn get_tex_image(
         &mut self,
@@ -550,7 +988,10 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
-        if target != gl::TEXTURE_2D {
+        if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
+            && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
+                .contains(&target)
+        {
             return self.error(gl::INVALID_ENUM);
         }
         let (Some(n), Some(s)) = (format_components(format), type_size(type_)) else {
@@ -560,11 +1001,12 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         let unit = self.state.active_texture;
+        let (bind, face) = image_binding(target);
         let Some(lv) = self
             .state
             .textures
-            .bound_2d(unit)
-            .and_then(|o| o.level(level))
+            .bound(unit, bind)
+            .and_then(|o| o.face_level(face, level))
             .cloned()
         else {
             return;
@@ -573,33 +1015,49 @@ impl Context {
             return self.error(gl::INVALID_OPERATION);
         }
         // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).
-        let Some(layout) = self
-            .state
-            .pack
-            .layout(lv.width, lv.height, n, s)
-            .filter(|l| pixels.len() >= l.need)
+        let modes = if target == gl::TEXTURE_3D {
+            self.state.pack
+        } else {
+            crate::pixel_store::PixelModes {
+                image_height: 0,
+                skip_images: 0,
+                ..self.state.pack
+            }
+        };
+        let Some((layout, img)) = modes
+            .layout3(lv.width, lv.height, lv.depth, n, s)
+            .filter(|(l, _)| pixels.len() >= l.need)
         else {
             return self.error(gl::INVALID_OPERATION);
         };
-        for j in 0..lv.height {
-            for i in 0..lv.width {
-                let [r, g, b, a] = as_rgba(lv.base, lv.texel(i, j));
-                // §6.1.4: luminance is returned as R (no sum), as Mesa does.
-                let comps: &[f32] = &match format {
-                    gl::RED | gl::LUMINANCE | gl::DEPTH_COMPONENT => [r, 0.0, 0.0, 0.0],
-                    gl::GREEN => [g, 0.0, 0.0, 0.0],
-                    gl::BLUE => [b, 0.0, 0.0, 0.0],
-                    gl::ALPHA => [a, 0.0, 0.0, 0.0],
-                    gl::LUMINANCE_ALPHA => [r, a, 0.0, 0.0],
-                    gl::BGR | gl::BGRA => [b, g, r, a],
-                    _ => [r, g, b, a],
-                };
-                let at = layout.at(i as usize, j as usize);
-                for (k, &c) in comps.iter().take(n).enumerate() {
-                    pack(pixels, at + k * s, type_, c);
-                    // PACK_SWAP_BYTES: each element's bytes reversed (§4.3.2).
-                    if let Some(e) = pixels.get_mut(at + k * s..at + (k + 1) * s) {
-                        layout.order(e);
+        for k in 0..lv.depth {
+            for j in 0..lv.height {
+                for i in 0..lv.width {
+                    // Table 6.1: L and I are returned as R alone, (L, 0, 0, 1) as RGBA (Mesa
+                    // agrees; piglit `getteximage-luminance`).
+                    let t = lv.texel3(i, j, k);
+                    let [r, g, b, a] = match lv.base {
+                        gl::LUMINANCE | gl::INTENSITY => [t[0], 0.0, 0.0, 1.0],
+                        gl::LUMINANCE_ALPHA => [t[0], 0.0, 0.0, t[3]],
+                        base => as_rgba(base, t),
+                    };
+                    // §6.1.4: luminance is returned as R (no sum), as Mesa does.
+                    let comps: &[f32] = &match format {
+                        gl::RED | gl::LUMINANCE | gl::DEPTH_COMPONENT => [r, 0.0, 0.0, 0.0],
+                        gl::GREEN => [g, 0.0, 0.0, 0.0],
+                        gl::BLUE => [b, 0.0, 0.0, 0.0],
+                        gl::ALPHA => [a, 0.0, 0.0, 0.0],
+                        gl::LUMINANCE_ALPHA => [r, a, 0.0, 0.0],
+                        gl::BGR | gl::BGRA => [b, g, r, a],
+                        _ => [r, g, b, a],
+                    };
+                    let at = layout.at(i as usize, k as usize * img + j as usize);
+                    for (c, &v) in comps.iter().take(n).enumerate() {
+                        pack(pixels, at + c * s, type_, v);
+                        // PACK_SWAP_BYTES: each element's bytes reversed (§4.3.2).
+                        if let Some(e) = pixels.get_mut(at + c * s..at + (c + 1) * s) {
+                            layout.order(e);
+                        }
                     }
                 }
             }

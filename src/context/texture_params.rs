@@ -523,14 +523,17 @@ impl Context {
         }
     }
 
-    /// One level parameter (table 6.17) of the active unit's 2D texture; a level without an
+    /// One level parameter (table 6.17) of the active unit's 1D, 2D or 3D texture; a level without an
     /// image reports zero sizes and internal format 1, as the spec's initial values.
     fn tex_level_value(&mut self, target: u32, level: i32, pname: u32, len: usize) -> Option<i32> {
         if self.begin_mode.is_some() {
             self.error(gl::INVALID_OPERATION);
             return None;
         }
-        if target != gl::TEXTURE_2D {
+        if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
+            && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
+                .contains(&target)
+        {
             self.error(gl::INVALID_ENUM);
             return None;
         }
@@ -542,14 +545,14 @@ impl Context {
         let lv = self
             .state
             .textures
-            .bound_2d(unit)
-            .and_then(|o| o.level(level));
+            .bound(unit, crate::texture::image_binding(target).0)
+            .and_then(|o| o.face_level(crate::texture::image_binding(target).1, level));
         let base = lv.map_or(0, |l| l.base);
         let bits = |has: bool, n: i32| if has { n } else { 0 };
         let v = match pname {
             gl::TEXTURE_WIDTH => lv.map_or(0, |l| l.width),
             gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.height),
-            gl::TEXTURE_DEPTH => i32::from(lv.is_some()),
+            gl::TEXTURE_DEPTH => lv.map_or(0, |l| l.depth),
             gl::TEXTURE_BORDER | gl::TEXTURE_COMPRESSED => 0,
             gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| l.internal_format),
             gl::TEXTURE_RED_SIZE | gl::TEXTURE_GREEN_SIZE | gl::TEXTURE_BLUE_SIZE => {

@@ -44,11 +44,16 @@ pub struct Sampler {
     base_level: i32,
     /// The last mipmap level used (q of §3.8.8).
     last: i32,
-    /// Base level width and height, for ρ.
-    size: [f32; 2],
+    /// The image dimensions of the target: 1 (TEXTURE_1D), 2 or 3 (TEXTURE_3D).
+    dims: usize,
+    /// A cube map: (s, t, r) pick a face and a point on it (§3.8.6).
+    cube: bool,
+    /// Base level width, height and depth, for ρ (0 for the dimensions the target lacks).
+    size: [f32; 3],
     min: u32,
     mag: u32,
-    wrap: [u32; 2],
+    /// WRAP_S, _T, _R.
+    wrap: [u32; 3],
     border: [f32; 4],
     min_lod: f32,
     max_lod: f32,
@@ -70,7 +75,8 @@ impl Sampler {
     /// The sampler of texture unit `unit`, or None when the unit is disabled: no texture target
     /// enabled there, or none with a complete texture (see [`unit_texture`]).
     pub fn new(state: &State, unit: usize) -> Option<Sampler> {
-        let obj = unit_texture(state, unit)?;
+        let (target, obj) = unit_texture(state, unit)?;
+        let dims = crate::texture::target_dims(target);
         let u = state.textures.units.get(unit)?;
         let b = obj.level(obj.base_level)?;
         let mipmapped = is_mipmap_filter(obj.min_filter);
@@ -91,10 +97,16 @@ impl Sampler {
             } else {
                 obj.base_level
             },
-            size: [b.width as f32, b.height as f32],
+            dims,
+            cube: target == gl::TEXTURE_CUBE_MAP,
+            size: [
+                b.width as f32,
+                if dims >= 2 { b.height as f32 } else { 0.0 },
+                if dims == 3 { b.depth as f32 } else { 0.0 },
+            ],
             min: obj.min_filter,
             mag: obj.mag_filter,
-            wrap: [obj.wrap_s, obj.wrap_t],
+            wrap: [obj.wrap_s, obj.wrap_t, obj.wrap_r],
             border: obj.border_color.to_array(),
             min_lod: obj.min_lod,
             max_lod: obj.max_lod,
@@ -144,20 +156,40 @@ impl Sampler {
                     + planes.get(o + 1).copied().unwrap_or(0.0) * x
                     + planes.get(o + 2).copied().unwrap_or(0.0) * y
             };
-            // The 1/w factors cancel in s/q and t/q.
+            // The 1/w factors cancel in s/q, t/q and r/q.
             let q = pl(1 + to + 3);
             let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
-            [
-                pl(1 + to) * inv * self.size[0],
-                pl(2 + to) * inv * self.size[1],
-            ]
+            if self.cube {
+                return [pl(1 + to) * inv, pl(2 + to) * inv, pl(3 + to) * inv];
+            }
+            let u = pl(1 + to) * inv * self.size[0];
+            let v = if self.dims >= 2 {
+                pl(2 + to) * inv * self.size[1]
+            } else {
+                0.0
+            };
+            let w = if self.dims == 3 {
+                pl(3 + to) * inv * self.size[2]
+            } else {
+                0.0
+            };
+            [u, v, w]
         };
-        let p0 = at(fx, fy);
-        let px = at(fx + 1.0, fy);
-        let py = at(fx, fy + 1.0);
-        let dx = [px[0] - p0[0], px[1] - p0[1]];
-        let dy = [py[0] - p0[0], py[1] - p0[1]];
-        let rho2 = (dx[0] * dx[0] + dx[1] * dx[1]).max(dy[0] * dy[0] + dy[1] * dy[1]);
+        let (mut p0, mut px, mut py) = (at(fx, fy), at(fx + 1.0, fy), at(fx, fy + 1.0));
+        if self.cube {
+            // The three points projected on the face the quad's first pixel selects.
+            let (face, ..) = cube_face(p0);
+            let on = |p: [f32; 3]| {
+                let (s, t) = cube_project(face, p);
+                [s * self.size[0], t * self.size[1], 0.0]
+            };
+            (p0, px, py) = (on(p0), on(px), on(py));
+        }
+        let len2 = |a: [f32; 3]| {
+            let d = [a[0] - p0[0], a[1] - p0[1], a[2] - p0[2]];
+            d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+        };
+        let rho2 = len2(px).max(len2(py));
         0.5 * fast_log2(rho2)
     }
 
@@ -169,12 +201,19 @@ impl Sampler {
         let [s, t, r, q] = coords;
         let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
         let (s, t, r) = (s * inv, t * inv, r * inv);
+        let (face, s, t) = if self.cube {
+            let (face, ..) = cube_face([s, t, r]);
+            let (s, t) = cube_project(face, [s, t, r]);
+            (face, s, t)
+        } else {
+            (0, s, t)
+        };
         // The route was chosen once for the flush: without mipmaps and with equal filters, λ
         // cannot matter and the base level's filter is called directly.
         let texel = match self.route {
-            Route::Nearest => self.nearest(self.base_level, s, t, r),
-            Route::Linear => self.linear(self.base_level, s, t, r),
-            Route::Lod => self.sample(s, t, r, lambda),
+            Route::Nearest => self.nearest(face, self.base_level, s, t, r),
+            Route::Linear => self.linear(face, self.base_level, s, t, r),
+            Route::Lod => self.sample_face(face, s, t, r, lambda),
         };
         if self.env == gl::COMBINE {
             return self.combine(cf, prim, texel);
@@ -258,7 +297,13 @@ impl Sampler {
 
     /// The filtered texel (internal components: L and I in R) at (s, t), depth compared
     /// against `r` when comparison is on (§3.8.8, §3.8.14).
+    #[cfg(test)]
     pub fn sample(&self, s: f32, t: f32, r: f32, lambda: f32) -> [f32; 4] {
+        self.sample_face(0, s, t, r, lambda)
+    }
+
+    /// [`Sampler::sample`] on face `face` of a cube map (0 for the other targets).
+    fn sample_face(&self, face: usize, s: f32, t: f32, r: f32, lambda: f32) -> [f32; 4] {
         // §3.8.8 clamps λ to [TEXTURE_MIN_LOD, TEXTURE_MAX_LOD], but TexParameter accepts any
         // float (§3.8.4), so min > max and NaN reach here; `f32::clamp` would panic. The order is
         // llvmpipe's (`lp_build_lod_selector`: min with MAX_LOD, then max with MIN_LOD): when
@@ -268,7 +313,7 @@ impl Sampler {
         let lambda = if lambda.is_nan() { 0.0 } else { lambda };
         let lambda = lambda.min(self.max_lod).max(self.min_lod);
         if lambda <= self.c {
-            return self.filter(self.base_level, self.mag, s, t, r);
+            return self.filter(face, self.base_level, self.mag, s, t, r);
         }
         let lin = |f: u32| {
             if matches!(
@@ -289,73 +334,105 @@ impl Sampler {
                 } else {
                     ((lambda + 0.5).ceil() - 1.0).min(span)
                 };
-                self.filter(self.base_level + d as i32, lin(self.min), s, t, r)
+                self.filter(face, self.base_level + d as i32, lin(self.min), s, t, r)
             }
             gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
                 if lambda >= span {
-                    return self.filter(self.last, lin(self.min), s, t, r);
+                    return self.filter(face, self.last, lin(self.min), s, t, r);
                 }
                 let d1 = lambda.floor();
                 let f = lambda - d1;
                 let l1 = self.base_level + d1 as i32;
-                let a = self.filter(l1, lin(self.min), s, t, r);
+                let a = self.filter(face, l1, lin(self.min), s, t, r);
                 if f == 0.0 {
                     return a;
                 }
-                let b = self.filter(l1 + 1, lin(self.min), s, t, r);
+                let b = self.filter(face, l1 + 1, lin(self.min), s, t, r);
                 std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f)
             }
-            f => self.filter(self.base_level, f, s, t, r),
+            f => self.filter(face, self.base_level, f, s, t, r),
         }
     }
 
     /// NEAREST or LINEAR on one level (§3.8.8, the wrap modes of §3.8.7).
     #[inline]
-    fn filter(&self, level: i32, filter: u32, s: f32, t: f32, r: f32) -> [f32; 4] {
+    fn filter(&self, face: usize, level: i32, filter: u32, s: f32, t: f32, r: f32) -> [f32; 4] {
         if filter == gl::NEAREST {
-            self.nearest(level, s, t, r)
+            self.nearest(face, level, s, t, r)
         } else {
-            self.linear(level, s, t, r)
+            self.linear(face, level, s, t, r)
         }
     }
 
-    /// NEAREST on level `level`: the texel containing (u, v) (eq. 3.22).
+    /// NEAREST on level `level`: the texel containing (u, v, w) (eq. 3.22).
     #[inline]
-    fn nearest(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
-        let Some(lv) = self.obj.level(level) else {
+    fn nearest(&self, face: usize, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        let Some(lv) = self.obj.face_level(face, level) else {
             return [0.0; 4];
         };
         let i = wrap_nearest(self.wrap[0], s, lv.width);
-        let j = wrap_nearest(self.wrap[1], t, lv.height);
-        self.fetch(lv, i, j, r)
+        match self.dims {
+            1 => self.fetch(lv, i, Some(0), Some(0), r),
+            2 => {
+                let j = wrap_nearest(self.wrap[1], t, lv.height);
+                self.fetch(lv, i, j, Some(0), r)
+            }
+            _ => {
+                let j = wrap_nearest(self.wrap[1], t, lv.height);
+                let k = wrap_nearest(self.wrap[2], r, lv.depth);
+                self.fetch(lv, i, j, k, r)
+            }
+        }
     }
 
-    /// LINEAR on level `level`: the 2x2 texels around (u, v) weighted by eq. 3.24.
+    /// LINEAR on level `level`: the 2 (1D), 2x2 or 2x2x2 (3D) texels around (u, v, w)
+    /// weighted by eq. 3.24 (and its 1D and 3D forms).
     #[inline]
-    fn linear(&self, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
-        let Some(lv) = self.obj.level(level) else {
+    fn linear(&self, face: usize, level: i32, s: f32, t: f32, r: f32) -> [f32; 4] {
+        let Some(lv) = self.obj.face_level(face, level) else {
             return [0.0; 4];
         };
         let (i0, i1, a) = wrap_linear(self.wrap[0], s, lv.width);
+        if self.dims == 1 {
+            let t0 = self.fetch(lv, i0, Some(0), Some(0), r);
+            let t1 = self.fetch(lv, i1, Some(0), Some(0), r);
+            return std::array::from_fn(|c| (1.0 - a) * t0[c] + a * t1[c]);
+        }
         let (j0, j1, b) = wrap_linear(self.wrap[1], t, lv.height);
-        let t00 = self.fetch(lv, i0, j0, r);
-        let t10 = self.fetch(lv, i1, j0, r);
-        let t01 = self.fetch(lv, i0, j1, r);
-        let t11 = self.fetch(lv, i1, j1, r);
-        std::array::from_fn(|k| {
-            (1.0 - a) * (1.0 - b) * t00[k]
-                + a * (1.0 - b) * t10[k]
-                + (1.0 - a) * b * t01[k]
-                + a * b * t11[k]
-        })
+        let plane = |k: Option<i32>| {
+            let t00 = self.fetch(lv, i0, j0, k, r);
+            let t10 = self.fetch(lv, i1, j0, k, r);
+            let t01 = self.fetch(lv, i0, j1, k, r);
+            let t11 = self.fetch(lv, i1, j1, k, r);
+            std::array::from_fn(|c| {
+                (1.0 - a) * (1.0 - b) * t00[c]
+                    + a * (1.0 - b) * t10[c]
+                    + (1.0 - a) * b * t01[c]
+                    + a * b * t11[c]
+            })
+        };
+        if self.dims == 2 {
+            return plane(Some(0));
+        }
+        let (k0, k1, g) = wrap_linear(self.wrap[2], r, lv.depth);
+        let p0: [f32; 4] = plane(k0);
+        let p1: [f32; 4] = plane(k1);
+        std::array::from_fn(|c| (1.0 - g) * p0[c] + g * p1[c])
     }
 
     /// The texel at (i, j), the border colour where a wrap mode says so (None), and the depth
     /// comparison result in place of a depth when comparison is on.
     #[inline(always)]
-    fn fetch(&self, lv: &Level, i: Option<i32>, j: Option<i32>, r: f32) -> [f32; 4] {
-        let t = match (i, j) {
-            (Some(i), Some(j)) => lv.texel(i, j),
+    fn fetch(
+        &self,
+        lv: &Level,
+        i: Option<i32>,
+        j: Option<i32>,
+        k: Option<i32>,
+        r: f32,
+    ) -> [f32; 4] {
+        let t = match (i, j, k) {
+            (Some(i), Some(j), Some(k)) => lv.texel3(i, j, k),
             // The border colour in the base format's components (table 3.15).
             _ => crate::texture::keep(self.base, self.border),
         };
@@ -434,18 +511,18 @@ impl Sampler {
     }
 }
 
-/// The texture object unit `unit` samples, or None when texturing is off for the unit.
+/// The target and texture object unit `unit` samples, or None when texturing is off for the
+/// unit.
 ///
 /// Of the targets enabled on the unit, taken in §3.8.15's precedence (CUBE_MAP, 3D, 2D, 1D), the
 /// first whose bound texture is complete (§3.8.10) is used. That is the driver's rule (Mesa's
 /// `update_ff_texture_state` walks the enabled targets in this order and takes the first
 /// complete one), and it is what `tests/texture_gl.rs` measures. GL 2.1 instead picks the
 /// highest enabled target and disables the unit when its texture is incomplete; the two rules
-/// differ only when a higher target's texture is incomplete, which today is always the case for
-/// 1D, 3D and cube-map textures (they can hold no images until issue #14). Following the spec
-/// would leave a unit with TEXTURE_2D and TEXTURE_3D enabled untextured where the driver
-/// textures it with the 2D texture.
-fn unit_texture(state: &State, unit: usize) -> Option<&Arc<TexObject>> {
+/// differ only when a higher target's texture is incomplete: following the spec would leave a
+/// unit with TEXTURE_2D and TEXTURE_3D enabled and an incomplete 3D texture untextured where the
+/// driver textures it with the 2D texture.
+fn unit_texture(state: &State, unit: usize) -> Option<(u32, &Arc<TexObject>)> {
     let e = &state.enables;
     let enabled = |flags: &[bool]| flags.get(unit).copied().unwrap_or(false);
     let order = [
@@ -454,16 +531,45 @@ fn unit_texture(state: &State, unit: usize) -> Option<&Arc<TexObject>> {
         (gl::TEXTURE_2D, enabled(&e.texture_2d)),
         (gl::TEXTURE_1D, enabled(&e.texture_1d)),
     ];
-    let (target, obj) = order
+    order
         .into_iter()
         .filter(|&(_, on)| on)
         .find_map(|(target, _)| {
             let obj = state.textures.bound(unit, target)?;
             obj.is_complete().then_some((target, obj))
-        })?;
-    // Only 2D images exist (and only they are sampled); an object of another target has no
-    // levels and so is never complete.
-    (target == gl::TEXTURE_2D).then_some(obj)
+        })
+}
+
+/// The cube-map face (0 to 5: +X, -X, +Y, -Y, +Z, -Z) of direction `p` by its major axis
+/// (GL 2.1 §3.8.6, table 3.19), with llvmpipe's tie order (`lp_build_cube_lookup`: X over Y and
+/// Z when |x| is at least as large, then Y over Z), and the axis magnitude.
+#[inline]
+fn cube_face([x, y, z]: [f32; 3]) -> (usize, f32) {
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    if ax >= ay && ax >= az {
+        (if x >= 0.0 { 0 } else { 1 }, ax)
+    } else if ay >= az {
+        (if y >= 0.0 { 2 } else { 3 }, ay)
+    } else {
+        (if z >= 0.0 { 4 } else { 5 }, az)
+    }
+}
+
+/// The face coordinates (s, t) of direction `p` on `face` (table 3.19, eq. 3.19):
+/// s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2.
+#[inline]
+fn cube_project(face: usize, [x, y, z]: [f32; 3]) -> (f32, f32) {
+    let (sc, tc, ma) = match face {
+        0 => (-z, -y, x),
+        1 => (z, -y, x),
+        2 => (x, z, y),
+        3 => (x, -z, y),
+        4 => (x, -y, z),
+        _ => (-x, -y, z),
+    };
+    let m = ma.abs();
+    let inv = if m > 0.0 { 0.5 / m } else { 0.0 };
+    (sc * inv + 0.5, tc * inv + 0.5)
 }
 
 /// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.

@@ -40,7 +40,7 @@ pub struct Layout {
     pub spec_b: Option<usize>,
     /// Texture coordinates of unit 0.
     pub tex: Option<usize>,
-    /// Texture coordinates of unit 1 (when TEXTURE_2D is enabled there).
+    /// Texture coordinates of unit 1 (when a texture target is enabled there).
     pub tex1: Option<usize>,
     /// Eye-space position (x, y, z, w), for user clip planes and per-fragment lighting.
     pub eye: Option<usize>,
@@ -63,7 +63,12 @@ impl Layout {
         let spec = (lit && state.light_model.color_control == gl::SEPARATE_SPECULAR_COLOR)
             || state.enables.color_sum;
         let two = lit && state.light_model.two_side;
-        let tex = state.enables.texture_2d[0] || state.enables.texture_1d[0];
+        // A unit carries coordinates when any texture target is enabled on it.
+        let e = &state.enables;
+        let unit_on = |u: usize| {
+            e.texture_1d[u] || e.texture_2d[u] || e.texture_3d[u] || e.texture_cube_map[u]
+        };
+        let tex = unit_on(0);
         let user = state.enables.clip_planes.iter().any(|&b| b);
         let mut l = Layout {
             col: 4,
@@ -87,7 +92,7 @@ impl Layout {
         if tex {
             l.tex = take(4);
         }
-        if state.enables.texture_2d[1] {
+        if unit_on(1) {
             l.tex1 = take(4);
         }
         if phong || user {

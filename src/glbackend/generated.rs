@@ -331,6 +331,88 @@ impl GlBackend {
             Call::CopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height) => {
                 gl.copy_tex_sub_image_2d(target, level, xoffset, yoffset, x, y, width, height)
             }
+            Call::TexImage1D(ref args) => {
+                let (target, level, internalformat, width, border, format, type_, ref pixels) =
+                    **args;
+                self.tex_image_1d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    border,
+                    format,
+                    type_,
+                    pixels.as_deref(),
+                )
+            }
+            Call::TexImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    format,
+                    type_,
+                    ref pixels,
+                ) = **args;
+                self.tex_image_3d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    format,
+                    type_,
+                    pixels.as_deref(),
+                )
+            }
+            Call::TexSubImage1D(ref args) => {
+                let (target, level, xoffset, width, format, type_, ref pixels) = **args;
+                self.tex_sub_image_1d(target, level, xoffset, width, format, type_, pixels)
+            }
+            Call::TexSubImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    xoffset,
+                    yoffset,
+                    zoffset,
+                    width,
+                    height,
+                    depth,
+                    format,
+                    type_,
+                    ref pixels,
+                ) = **args;
+                self.tex_sub_image_3d(
+                    target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_,
+                    pixels,
+                )
+            }
+            Call::CopyTexImage1D(target, level, internalformat, x, y, width, border) => {
+                gl.copy_tex_image_1d(target, level, internalformat, x, y, width, border)
+            }
+            Call::CopyTexSubImage1D(target, level, xoffset, x, y, width) => {
+                gl.copy_tex_sub_image_1d(target, level, xoffset, x, y, width)
+            }
+            Call::CopyTexSubImage3D(
+                target,
+                level,
+                xoffset,
+                yoffset,
+                zoffset,
+                x,
+                y,
+                width,
+                height,
+            ) => gl.copy_tex_sub_image_3d(
+                target, level, xoffset, yoffset, zoffset, x, y, width, height,
+            ),
             Call::TexParameteri(target, pname, param) => gl.tex_parameteri(target, pname, param),
             Call::TexParameterf(target, pname, param) => gl.tex_parameterf(target, pname, param),
             Call::TexParameteriv(target, pname, ref params) => {
@@ -1972,6 +2054,62 @@ impl Safe<'_> {
         unsafe {
             self.0
                 .CopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height)
+        }
+    }
+
+    /// `glCopyTexImage1D(target, level, internalformat, x, y, width, border)`.
+    pub(super) fn copy_tex_image_1d(
+        self,
+        target: u32,
+        level: i32,
+        internalformat: u32,
+        x: i32,
+        y: i32,
+        width: i32,
+        border: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .CopyTexImage1D(target, level, internalformat, x, y, width, border)
+        }
+    }
+
+    /// `glCopyTexSubImage1D(target, level, xoffset, x, y, width)`.
+    pub(super) fn copy_tex_sub_image_1d(
+        self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .CopyTexSubImage1D(target, level, xoffset, x, y, width)
+        }
+    }
+
+    /// `glCopyTexSubImage3D(target, level, xoffset, yoffset, zoffset, x, y, width, height)`.
+    pub(super) fn copy_tex_sub_image_3d(
+        self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0.CopyTexSubImage3D(
+                target, level, xoffset, yoffset, zoffset, x, y, width, height,
+            )
         }
     }
 

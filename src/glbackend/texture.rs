@@ -1,5 +1,6 @@
 //! Replay of the texture entry points whose client memory the driver reads through a pointer
-//! (GL 2.1 §3.8.1, §3.8.2, §3.8.12): GenTextures, DeleteTextures, TexImage2D, TexSubImage2D.
+//! (GL 2.1 §3.8.1, §3.8.2, §3.8.12): GenTextures, DeleteTextures, TexImage1D/2D/3D,
+//! TexSubImage1D/2D/3D.
 //!
 //! Design decision: the driver must never read past the recorded bytes. The bytes an image needs
 //! are computed from the driver's own unpack state (alignment, row length, skipped rows and
@@ -9,7 +10,7 @@
 //! its own error and reads nothing.
 
 use super::GlBackend;
-use crate::context::texture::{tex_image_args_error, MAX_GEN_TEXTURES};
+use crate::context::texture::{tex_image_args_error, tex_image_nd_args_error, MAX_GEN_TEXTURES};
 use crate::gl;
 use crate::pixel_store::PixelModes;
 use crate::texture::{format_components, type_size};
@@ -27,13 +28,29 @@ impl GlBackend {
         format: u32,
         type_: u32,
     ) -> Option<usize> {
+        self.driver_unpack_need3(width, height, 1, false, format, type_)
+    }
+
+    /// [`Self::driver_unpack_need`] for `depth` images of `width` x `height` (TexImage3D,
+    /// `three_d`: IMAGE_HEIGHT and SKIP_IMAGES place the images) or a 1D/2D image (depth 1).
+    fn driver_unpack_need3(
+        &self,
+        width: i32,
+        height: i32,
+        depth: i32,
+        three_d: bool,
+        format: u32,
+        type_: u32,
+    ) -> Option<usize> {
         let (n, s) = (format_components(format)?, type_size(type_)?);
-        let mut v = [0i32; 4];
+        let mut v = [0i32; 6];
         for (slot, pname) in v.iter_mut().zip([
             gl::UNPACK_ALIGNMENT,
             gl::UNPACK_ROW_LENGTH,
             gl::UNPACK_SKIP_ROWS,
             gl::UNPACK_SKIP_PIXELS,
+            gl::UNPACK_IMAGE_HEIGHT,
+            gl::UNPACK_SKIP_IMAGES,
         ]) {
             // SAFETY: context current (execute made it so); GetIntegerv writes one value.
             unsafe { self.raw.GetIntegerv(pname, slot) };
@@ -43,9 +60,13 @@ impl GlBackend {
             row_length: v[1],
             skip_rows: v[2],
             skip_pixels: v[3],
+            image_height: if three_d { v[4] } else { 0 },
+            skip_images: if three_d { v[5] } else { 0 },
             ..PixelModes::default()
         };
-        modes.layout(width, height, n, s).map(|l| l.need)
+        modes
+            .layout3(width, height, depth, n, s)
+            .map(|(l, _)| l.need)
     }
 
     /// `glGenTextures(n)` with a scratch buffer for the names (the front end's bound on n).
@@ -172,5 +193,199 @@ impl GlBackend {
                 e
             });
         }
+    }
+
+    /// `glTexImage1D` with the recorded pixels (or NULL), as [`Self::tex_image_2d`].
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal: i32,
+        width: i32,
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        let raw = &self.raw;
+        let call = |p: *const u8| {
+            // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+            unsafe {
+                raw.TexImage1D(
+                    target,
+                    level,
+                    internal,
+                    width,
+                    border,
+                    format,
+                    type_,
+                    p.cast(),
+                )
+            }
+        };
+        let bad = self.inside_begin_end
+            || tex_image_nd_args_error(
+                1,
+                target,
+                level,
+                internal,
+                [width, 1, 1],
+                border,
+                format,
+                type_,
+            )
+            .is_some();
+        match pixels {
+            None => call(std::ptr::null()),
+            Some(_) if bad => call(std::ptr::null()),
+            Some(p) => match self.driver_unpack_need(width, 1, format, type_) {
+                Some(need) if p.len() >= need => call(p.as_ptr()),
+                _ => self.raise(gl::INVALID_OPERATION),
+            },
+        }
+    }
+
+    /// `glTexImage3D` with the recorded pixels (or NULL), as [`Self::tex_image_2d`]; the
+    /// bytes the driver reads include IMAGE_HEIGHT and SKIP_IMAGES.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        type_: u32,
+        pixels: Option<&[u8]>,
+    ) {
+        let raw = &self.raw;
+        let call = |p: *const u8| {
+            // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+            unsafe {
+                raw.TexImage3D(
+                    target,
+                    level,
+                    internal,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    format,
+                    type_,
+                    p.cast(),
+                )
+            }
+        };
+        let bad = self.inside_begin_end
+            || tex_image_nd_args_error(
+                3,
+                target,
+                level,
+                internal,
+                [width, height, depth],
+                border,
+                format,
+                type_,
+            )
+            .is_some();
+        match pixels {
+            None => call(std::ptr::null()),
+            Some(_) if bad => call(std::ptr::null()),
+            Some(p) => match self.driver_unpack_need3(width, height, depth, true, format, type_) {
+                Some(need) if p.len() >= need => call(p.as_ptr()),
+                _ => self.raise(gl::INVALID_OPERATION),
+            },
+        }
+    }
+
+    /// After a sub-image call made with NULL because the recorded data was short: the
+    /// driver's own error if it raised one, else the front end's INVALID_OPERATION.
+    fn short_sub_image(&mut self, enough: bool) {
+        if !enough && !self.inside_begin_end {
+            // SAFETY: context current; outside Begin/End a plain read of the flag.
+            let e = unsafe { self.raw.GetError() };
+            self.raise(if e == gl::NO_ERROR {
+                gl::INVALID_OPERATION
+            } else {
+                e
+            });
+        }
+    }
+
+    /// `glTexSubImage1D` with the recorded pixels, as [`Self::tex_sub_image_2d`].
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_sub_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        width: i32,
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
+        let enough = !self.inside_begin_end
+            && self
+                .driver_unpack_need(width, 1, format, type_)
+                .is_some_and(|need| pixels.len() >= need);
+        let p = if enough {
+            pixels.as_ptr()
+        } else {
+            std::ptr::null()
+        };
+        // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+        unsafe {
+            self.raw
+                .TexSubImage1D(target, level, xoffset, width, format, type_, p.cast())
+        };
+        self.short_sub_image(enough);
+    }
+
+    /// `glTexSubImage3D` with the recorded pixels, as [`Self::tex_sub_image_2d`].
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn tex_sub_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        zoffset: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        format: u32,
+        type_: u32,
+        pixels: &[u8],
+    ) {
+        let enough = !self.inside_begin_end
+            && self
+                .driver_unpack_need3(width, height, depth, true, format, type_)
+                .is_some_and(|need| pixels.len() >= need);
+        let p = if enough {
+            pixels.as_ptr()
+        } else {
+            std::ptr::null()
+        };
+        // SAFETY: `p` is NULL or points to at least as many bytes as the driver reads.
+        unsafe {
+            self.raw.TexSubImage3D(
+                target,
+                level,
+                xoffset,
+                yoffset,
+                zoffset,
+                width,
+                height,
+                depth,
+                format,
+                type_,
+                p.cast(),
+            )
+        };
+        self.short_sub_image(enough);
     }
 }

@@ -23,6 +23,8 @@ pub mod arrays;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
+// 1D and 3D textures (scenes/targets.rs)
+pub mod targets;
 // Pixel rectangles, bitmaps, CopyPixels (scenes/pixels.rs)
 pub mod pixels;
 // Selection: scenes/picking.rs
@@ -163,6 +165,7 @@ static SCENES: &[Scene] = &[
     fragment::SCENES[2],
     fragment::SCENES[3],
     texture::SCENES[0],
+    targets::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
     pixels::SCENES[0],

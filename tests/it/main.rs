@@ -46,4 +46,5 @@ mod stipple;
 mod texture;
 mod texture_errors;
 mod texture_gl;
+mod texture_targets_gl;
 mod window;

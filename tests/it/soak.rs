@@ -930,6 +930,9 @@ impl Driver {
             let n = self.rng().range(1, 3) as i32;
             self.push(Call::GenTextures(n));
         }
+        if self.rng().percent(25) {
+            return self.textures_1d_3d(name);
+        }
         self.push(Call::BindTexture(gl::TEXTURE_2D, name));
         let sizes = [0, 1, 2, 4, 8, 3, 16];
         let (w, h) = (self.rng().pick(&sizes), self.rng().pick(&sizes));
@@ -992,6 +995,117 @@ impl Driver {
         }
         if self.rng().percent(60) {
             self.push(Call::Enable(gl::TEXTURE_2D));
+        }
+    }
+
+    /// 1D and 3D textures (issue #14): TexImage1D/3D of small sizes under random image
+    /// unpack modes, sub-images, copies, WRAP_R, Enable.
+    fn textures_1d_3d(&mut self, name: u32) {
+        let three = self.rng().percent(50);
+        let target = if three {
+            gl::TEXTURE_3D
+        } else {
+            gl::TEXTURE_1D
+        };
+        // Names of the other target's objects are INVALID_OPERATION here: part of the soak.
+        self.push(Call::BindTexture(target, name + 10 * u32::from(three)));
+        let sizes = [0, 1, 2, 4, 3, 8];
+        let (w, h, d) = (
+            self.rng().pick(&sizes),
+            self.rng().pick(&sizes),
+            self.rng().pick(&sizes),
+        );
+        if self.rng().percent(30) {
+            let pname = self
+                .rng()
+                .pick(&[gl::UNPACK_IMAGE_HEIGHT, gl::UNPACK_SKIP_IMAGES]);
+            let v = self.rng().range(0, 6) as i32;
+            self.push(Call::PixelStorei(pname, v));
+        }
+        let level = self.rng().range(0, 3) as i32;
+        let size = (w * h.max(1) * d.max(1) * 4 + 64) as usize;
+        let pixels = match self.rng().below(10) {
+            0 => None,
+            1 => Some(vec![0x7f; size / 3]),
+            _ => Some((0..size).map(|_| self.rng().next() as u8).collect()),
+        };
+        let internal = if self.rng().percent(85) {
+            gl::RGBA as i32
+        } else {
+            self.gen.enum_value() as i32
+        };
+        let (ox, oz) = (
+            self.rng().range(-1, 3) as i32,
+            self.rng().range(-1, 3) as i32,
+        );
+        if three {
+            self.push(Call::TexImage3D(Box::new((
+                target,
+                level,
+                internal,
+                w,
+                h,
+                d,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                pixels.clone(),
+            ))));
+            self.push(Call::TexSubImage3D(Box::new((
+                target,
+                level,
+                ox,
+                0,
+                oz,
+                1,
+                1,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                pixels.clone().unwrap_or_default(),
+            ))));
+            if self.rng().percent(30) {
+                self.push(Call::CopyTexSubImage3D(target, level, 0, 0, 0, 0, 0, w, h));
+            }
+        } else {
+            self.push(Call::TexImage1D(Box::new((
+                target,
+                level,
+                internal,
+                w,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                pixels.clone(),
+            ))));
+            self.push(Call::TexSubImage1D(Box::new((
+                target,
+                level,
+                ox,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                pixels.clone().unwrap_or_default(),
+            ))));
+            if self.rng().percent(30) {
+                self.push(Call::CopyTexImage1D(target, level, gl::RGB, 1, 1, w, 0));
+                self.push(Call::CopyTexSubImage1D(target, level, 1, 0, 0, 2));
+            }
+        }
+        let wrap = self
+            .rng()
+            .pick(&[gl::REPEAT, gl::CLAMP, gl::MIRRORED_REPEAT]);
+        self.push(Call::TexParameteri(target, gl::TEXTURE_WRAP_R, wrap as i32));
+        let filter = self
+            .rng()
+            .pick(&[gl::NEAREST, gl::LINEAR, gl::LINEAR_MIPMAP_LINEAR]);
+        self.push(Call::TexParameteri(
+            target,
+            gl::TEXTURE_MIN_FILTER,
+            filter as i32,
+        ));
+        if self.rng().percent(60) {
+            self.push(Call::Enable(target));
         }
     }
 

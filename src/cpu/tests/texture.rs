@@ -18,6 +18,7 @@ fn level(w: i32, h: i32, base: u32, f: impl Fn(i32, i32) -> [f32; 4]) -> Level {
         }
     }
     Level {
+        depth: 1,
         width: w,
         height: h,
         internal_format: base as i32,
