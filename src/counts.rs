@@ -136,26 +136,6 @@ pub fn tex_parameter(pname: u32) -> Option<usize> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn counts_follow_the_state_tables() {
-        assert_eq!(light(gl::SPOT_DIRECTION), Some(3));
-        assert_eq!(light(gl::QUADRATIC_ATTENUATION), Some(1));
-        assert_eq!(material(gl::AMBIENT_AND_DIFFUSE), Some(4));
-        assert_eq!(material(gl::COLOR_INDEXES), Some(3));
-        assert_eq!(material(gl::POSITION), None);
-        assert_eq!(light_model(gl::LIGHT_MODEL_AMBIENT), Some(4));
-        assert_eq!(fog(gl::FOG_COLOR), Some(4));
-        assert_eq!(tex_gen(gl::EYE_PLANE), Some(4));
-        assert_eq!(tex_env(gl::TEXTURE_ENV_MODE), Some(1));
-        assert_eq!(tex_parameter(gl::TEXTURE_BORDER_COLOR), Some(4));
-        assert_eq!(tex_parameter(gl::TEXTURE_LOD_BIAS), Some(1));
-    }
-}
-
 /// The components of an evaluator map's points (`_mesa_evaluator_components`): 4 for
 /// COLOR_4, VERTEX_4 and TEXTURE_COORD_4, 3 for NORMAL, VERTEX_3 and TEXTURE_COORD_3, 2 and 1
 /// for TEXTURE_COORD_2 and _1, 1 for INDEX, of MAP1_* and MAP2_* alike; `None` for any other
@@ -217,5 +197,25 @@ pub fn get_map(target: u32, query: u32, uorder: i32, vorder: i32) -> Option<usiz
         gl::ORDER => Some(if two { 2 } else { 1 }),
         gl::DOMAIN => Some(if two { 4 } else { 2 }),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_follow_the_state_tables() {
+        assert_eq!(light(gl::SPOT_DIRECTION), Some(3));
+        assert_eq!(light(gl::QUADRATIC_ATTENUATION), Some(1));
+        assert_eq!(material(gl::AMBIENT_AND_DIFFUSE), Some(4));
+        assert_eq!(material(gl::COLOR_INDEXES), Some(3));
+        assert_eq!(material(gl::POSITION), None);
+        assert_eq!(light_model(gl::LIGHT_MODEL_AMBIENT), Some(4));
+        assert_eq!(fog(gl::FOG_COLOR), Some(4));
+        assert_eq!(tex_gen(gl::EYE_PLANE), Some(4));
+        assert_eq!(tex_env(gl::TEXTURE_ENV_MODE), Some(1));
+        assert_eq!(tex_parameter(gl::TEXTURE_BORDER_COLOR), Some(4));
+        assert_eq!(tex_parameter(gl::TEXTURE_LOD_BIAS), Some(1));
     }
 }

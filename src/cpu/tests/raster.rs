@@ -261,8 +261,9 @@ fn polygon_offset_units() {
     st.polygon_offset_units = 2.0;
     let sq = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|p| ([p[0], p[1], 0.0], RED));
     draw(&mut r, &st, gl::QUADS, &sq);
-    // z = 0.5 + 2·2⁻²⁴: 0.5·(2²⁴−1) + 2(2²⁴−1)/2²⁴ = 8388609.4999999 → 8388609.
-    assert_eq!(r.framebuffer().pixel(1, 1).map(|p| p.1), Some(8_388_609));
+    // One unit is 2·2⁻²⁴ (llvmpipe's), so z = 0.5 + 4·2⁻²⁴:
+    // 0.5·(2²⁴−1) + 4(2²⁴−1)/2²⁴ = 8388611.4999998 → 8388611.
+    assert_eq!(r.framebuffer().pixel(1, 1).map(|p| p.1), Some(8_388_611));
 }
 
 #[test]
