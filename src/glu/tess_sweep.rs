@@ -159,7 +159,6 @@ fn edge_intersect(o1: P2, d1: P2, o2: P2, d2: P2) -> P2 {
     v
 }
 
-// ---------------------------------------------------------------------------------------
 // Priority queue of vertices: the initial vertices sorted once (libGLU's quicksort, with its
 // pseudo-random pivots, so equal keys come out in its order), later ones in a binary heap.
 
@@ -446,7 +445,6 @@ impl PriorityQ {
     }
 }
 
-// ---------------------------------------------------------------------------------------
 // The sweep.
 
 #[derive(Clone, Debug)]
