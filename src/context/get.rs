@@ -43,6 +43,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_window_pos ",           // WindowPos (GL 1.4)
     "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
     "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
+    "GL_EXT_texture3D ",            // TexImage3D, TexSubImage3D (GL 1.2)
     "GL_WIN_phong_shading ",        // ShadeModel(PHONG_WIN): fixedgl's per-fragment lighting
 );
 
