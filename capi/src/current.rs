@@ -52,15 +52,22 @@ pub struct Gl {
 }
 
 impl Gl {
-    /// A context of `width` x `height`, or `None` when it cannot be made (the reason on stderr).
-    pub fn new(width: u32, height: u32) -> Option<Gl> {
-        Self::with_config(width, height, ContextConfig::default())
-    }
-
     /// A context of `width` x `height` with the buffers `config` names (a double-buffered GLX
-    /// visual's context has a back buffer), or `None` as [`Gl::new`].
-    pub fn with_config(width: u32, height: u32, config: ContextConfig) -> Option<Gl> {
-        match Context::with_config(width.max(1), height.max(1), config) {
+    /// visual's context has a back buffer), or `None` when it cannot be made (the reason on
+    /// stderr). It shares display lists, texture objects and buffer objects with `share` (a
+    /// live handle the caller has checked), or with nothing when `share` is null.
+    pub fn with_config_shared(
+        width: u32,
+        height: u32,
+        config: ContextConfig,
+        share: *mut Gl,
+    ) -> Option<Gl> {
+        let (w, h) = (width.max(1), height.max(1));
+        let made = match share_group(share) {
+            Some(group) => Context::with_config_shared(w, h, config, &group),
+            None => Context::with_config(w, h, config),
+        };
+        match made {
             Ok(mut ctx) => Some(Gl {
                 recorder: crate::record::Recorder::from_env(&mut ctx),
                 ctx,
@@ -119,6 +126,27 @@ impl Gl {
             s.present(&mut self.ctx);
         }
     }
+}
+
+/// The share group of context `share` (null: none), made now if it has none yet. A context
+/// current on another thread that has no group yet cannot be given one safely (its objects are
+/// in use there): the new context then shares nothing, and says so.
+fn share_group(share: *mut Gl) -> Option<fixedgl::ShareGroup> {
+    if !is_live(share) {
+        return None;
+    }
+    // SAFETY: a live handle. If it is current on another thread, only its `thread` (written
+    // under the C API's rules at MakeCurrent) and `ctx.share_group()`'s existing group (fixed
+    // once made) are read: see below.
+    let gl = unsafe { &mut *share };
+    let me = std::thread::current().id();
+    if gl.thread.is_some_and(|t| t != me) && !gl.ctx.is_shared() {
+        if crate::say_once("share busy") {
+            eprintln!("fixedgl: the share context is current on another thread and shares nothing yet; the new context gets its own display lists and textures (make the share context current here, or release it, while creating the one that shares)");
+        }
+        return None;
+    }
+    Some(gl.ctx.share_group())
 }
 
 thread_local! {

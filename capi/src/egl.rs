@@ -460,7 +460,8 @@ pub unsafe extern "C" fn eglCreateContext(
             }
             return fail(EGL_BAD_MATCH, std::ptr::null_mut());
         }
-        match Gl::new(1, 1) {
+        // share_context: display lists, textures and buffer objects shared (GL appendix D).
+        match Gl::with_config_shared(1, 1, fixedgl::ContextConfig::default(), share.cast()) {
             Some(gl) => fail(EGL_SUCCESS, current::register(gl).cast()),
             None => fail(EGL_BAD_ALLOC, std::ptr::null_mut()),
         }

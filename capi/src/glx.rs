@@ -418,9 +418,6 @@ fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_vo
             });
             return std::ptr::null_mut();
         }
-        say("share lists", || {
-            "contexts do not share display lists and textures in fixedgl yet; each context keeps its own".into()
-        });
     }
     // The config's buffers: a back buffer when double-buffered (DrawBuffer and ReadBuffer
     // default to BACK, SwapBuffers exchanges them), and the accumulation buffer every config has.
@@ -429,7 +426,8 @@ fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_vo
         accum: true,
         ..ContextConfig::default()
     };
-    let Some(gl) = Gl::with_config(1, 1, buffers) else {
+    // A share context shares its display lists, textures and buffer objects (appendix D).
+    let Some(gl) = Gl::with_config_shared(1, 1, buffers, share.cast()) else {
         return std::ptr::null_mut();
     };
     let p = current::register(gl);

@@ -138,7 +138,13 @@ fn with_osm<R>(ctx: usize, f: impl FnOnce(&mut Osm) -> R) -> Option<R> {
     all.iter_mut().find(|(k, _)| *k == ctx).map(|(_, o)| f(o))
 }
 
-fn create(format: u32, depth: i32, stencil: i32, accum: i32) -> *mut c_void {
+fn create(format: u32, depth: i32, stencil: i32, accum: i32, share: *mut c_void) -> *mut c_void {
+    // sharelist: an OSMesa context whose display lists, textures and buffer objects the new one
+    // shares (GL appendix D); anything else is refused (NULL), as Mesa does.
+    if !share.is_null() && with_osm(share as usize, |_| ()).is_none() {
+        eprintln!("fixedgl: OSMesa sharelist is not an OSMesa context");
+        return std::ptr::null_mut();
+    }
     if !matches!(
         format,
         gl::RGBA | gl::RGB | OSMESA_BGRA | OSMESA_ARGB | OSMESA_BGR | OSMESA_RGB_565
@@ -150,7 +156,8 @@ fn create(format: u32, depth: i32, stencil: i32, accum: i32) -> *mut c_void {
         eprintln!("fixedgl: OSMesa asks for {depth} depth, {stencil} stencil, {accum} accumulation bits; fixedgl has 24, 8 and 16");
         return std::ptr::null_mut();
     }
-    let Some(gl) = Gl::new(1, 1) else {
+    let config = fixedgl::ContextConfig::default();
+    let Some(gl) = Gl::with_config_shared(1, 1, config, share.cast()) else {
         return std::ptr::null_mut();
     };
     let p = current::register(gl);
@@ -168,9 +175,9 @@ fn create(format: u32, depth: i32, stencil: i32, accum: i32) -> *mut c_void {
 }
 
 #[no_mangle]
-pub extern "C" fn OSMesaCreateContext(format: u32, _share: *mut c_void) -> *mut c_void {
+pub extern "C" fn OSMesaCreateContext(format: u32, share: *mut c_void) -> *mut c_void {
     guard("OSMesaCreateContext", std::ptr::null_mut(), || {
-        create(format, 24, 8, 0)
+        create(format, 24, 8, 0, share)
     })
 }
 
@@ -180,17 +187,17 @@ pub extern "C" fn OSMesaCreateContextExt(
     depth_bits: i32,
     stencil_bits: i32,
     accum_bits: i32,
-    _share: *mut c_void,
+    share: *mut c_void,
 ) -> *mut c_void {
     guard("OSMesaCreateContextExt", std::ptr::null_mut(), || {
-        create(format, depth_bits, stencil_bits, accum_bits)
+        create(format, depth_bits, stencil_bits, accum_bits, share)
     })
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attribs: *const i32,
-    _share: *mut c_void,
+    share: *mut c_void,
 ) -> *mut c_void {
     guard("OSMesaCreateContextAttribs", std::ptr::null_mut(), || {
         let (mut format, mut depth, mut stencil, mut accum) = (gl::RGBA, 24, 8, 0);
@@ -228,7 +235,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
             );
             return std::ptr::null_mut();
         }
-        create(format, depth, stencil, accum)
+        create(format, depth, stencil, accum, share)
     })
 }
 

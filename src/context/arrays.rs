@@ -609,18 +609,31 @@ impl Context {
     /// or a `buffers` shorter than `n`.
     pub fn gen_buffers(&mut self, n: i32, buffers: &mut [u32]) {
         let mut made = Vec::new();
-        self.arrays_do(|a, _| {
-            a.gen_buffers(n, buffers)?;
-            made = buffers.get(..n.max(0) as usize).unwrap_or(&[]).to_vec();
-            Ok(())
+        self.objects_txn(super::share::BUFFERS, &[], |ctx| {
+            ctx.arrays_do(|a, _| {
+                a.gen_buffers(n, buffers)?;
+                made = buffers.get(..n.max(0) as usize).unwrap_or(&[]).to_vec();
+                Ok(())
+            })
         });
         record!(self, Call::GenBuffers(n, made));
+    }
+
+    /// The name bound to buffer target `target` (0 for none or for a target that is none).
+    fn buffer_binding(&self, target: u32) -> u32 {
+        match target {
+            gl::ARRAY_BUFFER => self.state.arrays.array_buffer,
+            gl::ELEMENT_ARRAY_BUFFER => self.state.arrays.element_array_buffer,
+            _ => 0,
+        }
     }
 
     /// `glDeleteBuffers`: INVALID_VALUE for a negative `n` or fewer than `n` names.
     pub fn delete_buffers(&mut self, n: i32, buffers: &[u32]) {
         record!(self, Call::DeleteBuffers(n, buffers.to_vec()));
-        self.arrays_do(|a, _| a.delete_buffers(n, buffers));
+        self.objects_txn(super::share::BUFFERS, buffers, |ctx| {
+            ctx.arrays_do(|a, _| a.delete_buffers(n, buffers))
+        });
     }
 
     /// `glIsBuffer`: whether `buffer` names a buffer object (one bound at least once).
@@ -629,13 +642,16 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return false;
         }
+        self.pull_objects();
         self.state.arrays.is_buffer(buffer)
     }
 
     /// `glBindBuffer`: ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER (else INVALID_ENUM).
     pub fn bind_buffer(&mut self, target: u32, buffer: u32) {
         record!(self, Call::BindBuffer(target, buffer));
-        self.arrays_do(|a, _| a.bind_buffer(target, buffer));
+        self.objects_txn(super::share::BUFFERS, &[buffer], |ctx| {
+            ctx.arrays_do(|a, _| a.bind_buffer(target, buffer))
+        });
     }
 
     /// `glBufferData`: `size` bytes from `data` (or zeros for [`Pointer::NULL`]) into the
@@ -648,7 +664,10 @@ impl Context {
             self,
             Call::BufferData(target, size, Box::new(p.clone()), usage)
         );
-        self.arrays_do(|a, _| a.buffer_data(target, size, &p, usage));
+        let name = [self.buffer_binding(target)];
+        self.objects_txn(super::share::BUFFERS, &name, |ctx| {
+            ctx.arrays_do(|a, _| a.buffer_data(target, size, &p, usage))
+        });
     }
 
     /// `glBufferSubData`: INVALID_VALUE when `offset` or `size` is negative, the range passes
@@ -665,7 +684,10 @@ impl Context {
             self,
             Call::BufferSubData(target, offset, size, Box::new(p.clone()))
         );
-        self.arrays_do(|a, _| a.buffer_sub_data(target, offset, size, &p));
+        let name = [self.buffer_binding(target)];
+        self.objects_txn(super::share::BUFFERS, &name, |ctx| {
+            ctx.arrays_do(|a, _| a.buffer_sub_data(target, offset, size, &p))
+        });
     }
 
     /// `glGetBufferSubData` into `data` (a query: not recorded); errors as `buffer_sub_data`.
@@ -679,6 +701,7 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
+        self.pull_objects();
         if let Err(code) = self
             .state
             .arrays
@@ -695,6 +718,7 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
+        self.pull_objects();
         match self.state.arrays.buffer_parameter(target, pname) {
             Ok(v) => match params.first_mut() {
                 Some(p) => *p = v,
@@ -760,6 +784,13 @@ impl Context {
                 rec.push(Call::UnmapBuffer(target, written));
             }
         }
+        let name = [self.buffer_binding(target)];
+        self.objects_txn(super::share::BUFFERS, &name, |ctx| {
+            ctx.unmap_buffer_now(target)
+        })
+    }
+
+    fn unmap_buffer_now(&mut self, target: u32) -> bool {
         if !self.outside_begin_end() {
             return false;
         }

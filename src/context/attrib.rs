@@ -242,7 +242,14 @@ impl Context {
         let Some((mask, saved)) = self.attrib.server.pop() else {
             return self.error(gl::STACK_UNDERFLOW);
         };
-        copy_groups(mask, &mut self.state, &saved);
+        // TEXTURE_BIT restores the bound objects' parameters: a change of shared objects.
+        if mask & gl::TEXTURE_BIT != 0 {
+            self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+                copy_groups(mask, &mut ctx.state, &saved)
+            });
+        } else {
+            copy_groups(mask, &mut self.state, &saved);
+        }
     }
 
     /// `glPushClientAttrib`: saves the client groups in `mask` (CLIENT_PIXEL_STORE_BIT,

@@ -49,6 +49,23 @@ pub(crate) struct Compiling {
 }
 
 impl DisplayLists {
+    /// The shared part (the lists and the names in use), for a share group (context/share.rs).
+    pub(crate) fn store(&self) -> (&BTreeMap<u32, Arc<Vec<Call>>>, &[(u32, u32)], u32) {
+        (&self.defined, &self.reserved, self.max_used)
+    }
+
+    /// Replaces the shared part with a share group's.
+    pub(crate) fn set_store(
+        &mut self,
+        defined: &BTreeMap<u32, Arc<Vec<Call>>>,
+        reserved: &[(u32, u32)],
+        max_used: u32,
+    ) {
+        self.defined = defined.clone();
+        self.reserved = reserved.to_vec();
+        self.max_used = max_used;
+    }
+
     /// Whether `name` is a display list (defined, or reserved by GenLists).
     fn is_list(&self, name: u32) -> bool {
         name != 0
@@ -200,6 +217,10 @@ impl Context {
         if let (Some(rec), 0) = (self.recording.as_mut(), self.lists.depth) {
             rec.push(Call::GenLists(range));
         }
+        self.objects_txn(super::share::LISTS, &[], |ctx| ctx.gen_lists_now(range))
+    }
+
+    fn gen_lists_now(&mut self, range: i32) -> u32 {
         if !self.outside_begin_end() {
             return 0;
         }
@@ -248,6 +269,10 @@ impl Context {
     /// INVALID_OPERATION when no list is being defined (or inside Begin/End).
     pub fn end_list(&mut self) {
         record!(self, Call::EndList);
+        self.objects_txn(super::share::LISTS, &[], Self::end_list_now);
+    }
+
+    fn end_list_now(&mut self) {
         if !self.outside_begin_end() {
             return;
         }
@@ -265,6 +290,7 @@ impl Context {
     /// depth MAX_LIST_NESTING is reached). Allowed between Begin and End (GL 2.1 §2.6.3).
     pub fn call_list(&mut self, list: u32) {
         record!(self, Call::CallList(list));
+        self.pull_objects();
         self.run_list(list);
     }
 
@@ -287,6 +313,7 @@ impl Context {
         if needed.is_none() || needed.is_some_and(|needed| lists.len() < needed) {
             return self.error(gl::INVALID_VALUE);
         }
+        self.pull_objects();
         for name in lists.chunks_exact(size).take(n as usize) {
             let list = self.state.list_base.wrapping_add(name_offset(ty, name));
             self.run_list(list);
@@ -321,6 +348,12 @@ impl Context {
     /// INVALID_VALUE for a negative range.
     pub fn delete_lists(&mut self, list: u32, range: i32) {
         record!(self, Call::DeleteLists(list, range));
+        self.objects_txn(super::share::LISTS, &[], |ctx| {
+            ctx.delete_lists_now(list, range)
+        });
+    }
+
+    fn delete_lists_now(&mut self, list: u32, range: i32) {
         if !self.outside_begin_end() {
             return;
         }
@@ -339,6 +372,7 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return false;
         }
+        self.pull_objects();
         self.lists.is_list(list)
     }
 

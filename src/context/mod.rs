@@ -26,6 +26,8 @@ mod framebuffer;
 mod lighting;
 mod raster;
 mod select;
+mod share;
+pub use share::ShareGroup;
 #[cfg(test)]
 mod tests;
 mod vertex;
@@ -79,6 +81,9 @@ pub struct Context {
     pub(crate) map_snapshots: std::collections::BTreeMap<u32, Vec<u8>>,
     /// Query objects and the active query (context/query.rs).
     pub(crate) queries: query::Queries,
+    /// The share group this context's lists, textures and buffers live in, if any
+    /// (context/share.rs).
+    pub(crate) share: Option<Box<share::Link>>,
 }
 
 impl Context {
@@ -117,6 +122,7 @@ impl Context {
             attrib: Default::default(),
             map_snapshots: Default::default(),
             queries: Default::default(),
+            share: None,
         })
     }
 
@@ -124,7 +130,9 @@ impl Context {
     /// the framebuffer (its contents and memory) and the renderer's buffers, so a program that
     /// draws many independent frames (a benchmark, an animation re-running its `init`) does not
     /// pay for allocating them again. Vertices batched but not yet drawn are discarded, as is any
-    /// recording, display list and attribute stack. Not a GL entry point: never recorded.
+    /// recording, display list and attribute stack (in a share group: this context's copies;
+    /// the group's objects stay, and the context sees them again). Not a GL entry point: never
+    /// recorded.
     pub fn reset(&mut self) {
         let (w, h) = self.size();
         self.renderer.discard_batch();
@@ -140,6 +148,8 @@ impl Context {
         if std::mem::take(&mut self.queries).active.is_some() {
             self.renderer.stop_counting_samples(&self.state);
         }
+        // A context of a share group sees the group's objects again, as a new one would.
+        self.resync_share();
     }
 
     /// The state, read-only: what the `get_*` queries report, as plain data.
@@ -200,6 +210,8 @@ impl Context {
             return false;
         }
         self.renderer.flush(&self.state);
+        // In a share group: the objects other contexts changed since (context/share.rs).
+        self.pull_objects();
         true
     }
 
@@ -230,6 +242,7 @@ impl Context {
         if mode > gl::POLYGON {
             return self.error(gl::INVALID_ENUM);
         }
+        self.pull_objects();
         self.begin_mode = Some(mode);
         self.renderer.begin(mode);
         // cpu-pipeline: the materials at Begin, for Material changes inside the pair (§2.14.3).

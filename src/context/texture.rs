@@ -139,6 +139,10 @@ impl Context {
 
     /// GenTextures without an output slice (replay): the names are taken all the same.
     pub(crate) fn gen_names(&mut self, n: i32, out: &mut [u32]) {
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| ctx.gen_names_now(n, out));
+    }
+
+    fn gen_names_now(&mut self, n: i32, out: &mut [u32]) {
         if n < 0 {
             return self.error(gl::INVALID_VALUE);
         }
@@ -170,6 +174,12 @@ impl Context {
     /// `n < 0` or a short slice is INVALID_VALUE.
     pub fn delete_textures(&mut self, n: i32, textures: &[u32]) {
         record!(self, Call::DeleteTextures(n, textures.to_vec()));
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.delete_textures_now(n, textures)
+        });
+    }
+
+    fn delete_textures_now(&mut self, n: i32, textures: &[u32]) {
         if !self.outside_begin_end() {
             return;
         }
@@ -198,6 +208,7 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return false;
         }
+        self.pull_objects();
         self.state.textures.objects.contains_key(&texture)
     }
 
@@ -207,6 +218,12 @@ impl Context {
     /// INVALID_OPERATION (GL 2.1 §3.8.12). Name 0 binds the target's default texture.
     pub fn bind_texture(&mut self, target: u32, texture: u32) {
         record!(self, Call::BindTexture(target, texture));
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.bind_texture_now(target, texture)
+        });
+    }
+
+    fn bind_texture_now(&mut self, target: u32, texture: u32) {
         if !self.outside_begin_end() {
             return;
         }
@@ -439,6 +456,12 @@ impl Context {
     /// Stores `lv` as level `level` of the active unit's texture of `target`, then
     /// GENERATE_MIPMAP.
     fn store_level(&mut self, target: u32, level: i32, lv: Level) {
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.store_level_now(target, level, lv)
+        });
+    }
+
+    fn store_level_now(&mut self, target: u32, level: i32, lv: Level) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
         if let Some(obj) = self.state.textures.bound_mut(unit, bind) {
@@ -686,6 +709,19 @@ impl Context {
     /// Writes `texels` (rows of `size[0]`, images of `size[1]` rows) into level `level` of the
     /// texture of `target` at `offset`, then GENERATE_MIPMAP.
     fn write_box(
+        &mut self,
+        target: u32,
+        level: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
+        texels: &[[f32; 4]],
+    ) {
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.write_box_now(target, level, offset, size, texels)
+        });
+    }
+
+    fn write_box_now(
         &mut self,
         target: u32,
         level: i32,
@@ -988,6 +1024,7 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
+        self.pull_objects();
         if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
             && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
                 .contains(&target)

@@ -64,6 +64,12 @@ impl Context {
     /// object bound to `target` (TEXTURE_1D, _2D, _3D or _CUBE_MAP) on the active unit.
     /// `vector`: BORDER_COLOR needs a vector form.
     fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
+        self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.tex_parameter_now(target, pname, v, int, vector)
+        });
+    }
+
+    fn tex_parameter_now(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         if !self.outside_begin_end() {
             return;
         }
@@ -451,6 +457,7 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return None;
         }
+        self.pull_objects();
         if target_index(target).is_none() {
             self.error(gl::INVALID_ENUM);
             return None;
@@ -530,6 +537,7 @@ impl Context {
             self.error(gl::INVALID_OPERATION);
             return None;
         }
+        self.pull_objects();
         if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
             && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
                 .contains(&target)

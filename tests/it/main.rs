@@ -40,6 +40,7 @@ mod report_browser;
 mod robustness;
 mod scenes;
 mod select;
+mod share;
 mod soak;
 mod state_initial;
 mod stipple;
