@@ -411,13 +411,11 @@ fn glx_context(ctx: *const c_void) -> Option<GlxContext> {
 }
 
 fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_void {
-    if !share.is_null() {
-        if glx_context(share).is_none() {
-            say("glXCreateContext", || {
-                "the share context is not a GLX context".into()
-            });
-            return std::ptr::null_mut();
-        }
+    if !share.is_null() && glx_context(share).is_none() {
+        say("glXCreateContext", || {
+            "the share context is not a GLX context".into()
+        });
+        return std::ptr::null_mut();
     }
     // The config's buffers: a back buffer when double-buffered (DrawBuffer and ReadBuffer
     // default to BACK, SwapBuffers exchanges them), and the accumulation buffer every config has.

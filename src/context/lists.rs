@@ -24,6 +24,9 @@ use crate::gl;
 /// `MAX_LIST_NESTING` (GL 2.1 table 6.35: at least 64): how deep CallList may nest at run time.
 pub const MAX_LIST_NESTING: u32 = 64;
 
+/// The defined lists by name.
+pub(crate) type ListMap = BTreeMap<u32, Arc<Vec<Call>>>;
+
 /// The display-list namespace and the list being compiled.
 #[derive(Debug, Default)]
 pub(crate) struct DisplayLists {
@@ -50,17 +53,12 @@ pub(crate) struct Compiling {
 
 impl DisplayLists {
     /// The shared part (the lists and the names in use), for a share group (context/share.rs).
-    pub(crate) fn store(&self) -> (&BTreeMap<u32, Arc<Vec<Call>>>, &[(u32, u32)], u32) {
+    pub(crate) fn store(&self) -> (&ListMap, &[(u32, u32)], u32) {
         (&self.defined, &self.reserved, self.max_used)
     }
 
     /// Replaces the shared part with a share group's.
-    pub(crate) fn set_store(
-        &mut self,
-        defined: &BTreeMap<u32, Arc<Vec<Call>>>,
-        reserved: &[(u32, u32)],
-        max_used: u32,
-    ) {
+    pub(crate) fn set_store(&mut self, defined: &ListMap, reserved: &[(u32, u32)], max_used: u32) {
         self.defined = defined.clone();
         self.reserved = reserved.to_vec();
         self.max_used = max_used;
