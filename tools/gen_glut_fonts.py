@@ -12,7 +12,11 @@ Why from freeglut itself: GLUT programs expect freeglut's glyphs, and no public 
 exactly. The bitmap fonts were first generated here from the X11 BDF fonts Debian ships
 (xfonts-base, xfonts-75dpi), but those are the 1999 ISO 10646 revision of the fonts, and 64 of
 the 1,785 glyphs differ from freeglut's (misc-fixed glyphs redrawn, ASCII quotes and hyphen in
-the Adobe fonts). freeglut's stroke fonts are the Hershey Roman simplex shapes with metrics from
+the Adobe fonts). Older revisions do not match either (rendered cells compared, padding bits
+ignored): the final X11R6 BDFs of the X Consortium tree (github.com/alanc/xc-historical,
+xc/fonts/bdf) differ in 142 glyphs (the misc-fixed control glyphs 1..31 above all), XFree86
+4.0's (github.com/th-otto/GEM-xfree86, misc/*-ISO8859-1.bdf and 75dpi) in 59; freeglut's
+fg_font_data.c names XFree86 4.3.0, of which no public copy of the fonts was found. freeglut's stroke fonts are the Hershey Roman simplex shapes with metrics from
 the X PEX Roman fonts, scaled by freeglut's genstroke utility; no other source has its numbers.
 The dump is of the data freeglut ships (fg_font_data.c, fg_stroke_roman.c,
 fg_stroke_mono_roman.c), whose licence notice the generated files carry.
