@@ -1,4 +1,4 @@
-//! Texture coordinate generation (GL 2.1 §2.11.4) for texture unit 0, in the vertex stage
+//! Texture coordinate generation (GL 2.1 §2.11.4) for each texture unit, in the vertex stage
 //! before the texture matrix: OBJECT_LINEAR, EYE_LINEAR, SPHERE_MAP, REFLECTION_MAP and
 //! NORMAL_MAP, each enabled per coordinate with TEXTURE_GEN_S/T/R/Q.
 //!

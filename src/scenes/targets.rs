@@ -1,4 +1,4 @@
-//! `texture-targets` (issue #14): the texture targets beyond 2D. Three panels:
+//! `texture-targets` (issue #14): the texture targets beyond 2D. Four panels:
 //! - left, a 1D texture of contour lines on a lit height field: TexGen OBJECT_LINEAR maps the
 //!   height to s, the 1D texture (mipmapped, LINEAR_MIPMAP_LINEAR, REPEAT) draws a dark line
 //!   every 0.1 units of height over a colour ramp, MODULATE over the lighting;
@@ -9,8 +9,11 @@
 //!   coloured horizon per face, LINEAR, CLAMP_TO_EDGE) looked up by TexGen REFLECTION_MAP in
 //!   s, t and r, MODULATE over a lit sphere.
 //!
-//! The four combined units the issue asks for come with the general unit count (not yet:
-//! docs/conformance.md §3.8).
+//! - fourth, four texture units combined on one lit sphere (§3.8.15): unit 0 a mipmapped 2D
+//!   checker from gluSphere's coordinates, MODULATE over the lighting; unit 1 a 1D texture of
+//!   bright latitude lines on black by TexGen OBJECT_LINEAR on z, ADD; unit 2 the 3D volume by
+//!   TexGen OBJECT_LINEAR in s, t and r, COMBINE MODULATE with RGB_SCALE 2; unit 3 the cube map
+//!   by REFLECTION_MAP, COMBINE INTERPOLATE with the previous colour by the constant's alpha.
 
 use crate::gl::*;
 use crate::{glu, Context};
@@ -21,9 +24,10 @@ use super::{Scene, LECTURE};
 pub const SCENES: [Scene; 1] = [Scene {
     name: "texture-targets",
     summary: "Texturing: 1D and 3D targets — contour lines from a 1D texture (TexGen OBJECT_LINEAR) on a lit height field, \
-              slices through a mipmapped 3D texture (trilinear, WRAP_R), a cube-mapped sphere (REFLECTION_MAP)",
+              slices through a mipmapped 3D texture (trilinear, WRAP_R), a cube-mapped sphere (REFLECTION_MAP), \
+              four units (2D, 1D, 3D, cube) combined on one sphere by MODULATE, ADD and COMBINE",
     tolerance: LECTURE,
-    default_size: (960, 320),
+    default_size: (1280, 320),
     draw: texture_targets,
     animate: None,
     config: super::DEFAULT_CONFIG,
@@ -92,7 +96,7 @@ fn texture_targets(gl: &mut Context) {
     gl.clear_color(0.08, 0.08, 0.12, 1.0);
     gl.clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
     gl.enable(DEPTH_TEST);
-    let panels = super::shapes::panels(gl, 3, 1);
+    let panels = super::shapes::panels(gl, 4, 1);
     let mut names = [0u32; 2];
     gl.gen_textures(2, &mut names);
 
@@ -248,6 +252,139 @@ fn texture_targets(gl: &mut Context) {
     gl.disable(TEXTURE_GEN_S);
     gl.disable(TEXTURE_GEN_T);
     gl.disable(TEXTURE_GEN_R);
+    gl.disable(LIGHTING);
+
+    four_units(gl, panels[3], names[1], cube[0], &mut q);
+}
+
+/// The fourth panel: the four units combined on one sphere (see the module docs); `volume` the
+/// 3D texture, `cube` the cube map.
+fn four_units(
+    gl: &mut Context,
+    (x, y, w, h): (i32, i32, i32, i32),
+    volume: u32,
+    cube: u32,
+    q: &mut glu::Quadric,
+) {
+    let mut more = [0u32; 2];
+    gl.gen_textures(2, &mut more);
+    gl.viewport(x, y, w, h);
+    gl.matrix_mode(PROJECTION);
+    gl.load_identity();
+    glu::perspective(gl, 40.0, f64::from(w) / f64::from(h.max(1)), 0.5, 20.0);
+    gl.matrix_mode(MODELVIEW);
+    gl.load_identity();
+    glu::look_at(gl, 0.0, 0.6, 3.6, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
+    gl.enable(LIGHTING);
+    gl.lightfv(LIGHT0, POSITION, &[1.0, 1.5, 2.0, 0.0]);
+    gl.materialfv(FRONT_AND_BACK, AMBIENT_AND_DIFFUSE, &[0.8, 0.8, 0.8, 1.0]);
+    // The model: the sphere's poles along y, turned a little towards the viewer; TexGen's
+    // object planes are in these coordinates.
+    gl.rotatef(-70.0, 1.0, 0.0, 0.0);
+    gl.rotatef(25.0, 0.0, 0.0, 1.0);
+
+    // Unit 0: a mipmapped 2D checker (gluBuild2DMipmaps), MODULATE.
+    gl.active_texture(TEXTURE0);
+    gl.bind_texture(TEXTURE_2D, more[0]);
+    let checker = crate::checkerboard(64, 8, [255, 255, 255, 255], [70, 70, 110, 255]);
+    let _ = glu::build_2d_mipmaps(
+        gl,
+        TEXTURE_2D,
+        RGBA as i32,
+        64,
+        64,
+        RGBA,
+        UNSIGNED_BYTE,
+        &checker,
+    );
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR as i32);
+    gl.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, LINEAR as i32);
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, MODULATE as i32);
+    gl.enable(TEXTURE_2D);
+
+    // Unit 1: bright lines on black (1D, mipmapped), ADD, every 0.2 of z.
+    gl.active_texture(TEXTURE1);
+    gl.bind_texture(TEXTURE_1D, more[1]);
+    for level in 0..6 {
+        let n = 32usize >> level;
+        let line: Vec<u8> = (0..n)
+            .flat_map(|i| {
+                if i * 8 / n == 0 {
+                    [90u8, 110, 160, 255]
+                } else {
+                    [0, 0, 0, 255]
+                }
+            })
+            .collect();
+        gl.tex_image_1d(
+            TEXTURE_1D,
+            level,
+            RGBA as i32,
+            n as i32,
+            0,
+            RGBA,
+            UNSIGNED_BYTE,
+            Some(&line),
+        );
+    }
+    gl.tex_parameteri(TEXTURE_1D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR as i32);
+    gl.tex_parameteri(TEXTURE_1D, TEXTURE_MAG_FILTER, LINEAR as i32);
+    gl.tex_geni(S, TEXTURE_GEN_MODE, OBJECT_LINEAR as i32);
+    gl.tex_genfv(S, OBJECT_PLANE, &[0.0, 0.0, 5.0, 0.25]);
+    gl.enable(TEXTURE_GEN_S);
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, ADD as i32);
+    gl.enable(TEXTURE_1D);
+
+    // Unit 2: the 3D volume at the object position (s, t, r = x, y, z scaled into the volume),
+    // COMBINE MODULATE with the previous colour, RGB_SCALE 2.
+    gl.active_texture(TEXTURE2);
+    gl.bind_texture(TEXTURE_3D, volume);
+    for (coord, gen, plane) in [
+        (S, TEXTURE_GEN_S, [0.4f32, 0.0, 0.0, 0.5]),
+        (T, TEXTURE_GEN_T, [0.0, 0.4, 0.0, 0.5]),
+        (R, TEXTURE_GEN_R, [0.0, 0.0, 0.4, 0.5]),
+    ] {
+        gl.tex_geni(coord, TEXTURE_GEN_MODE, OBJECT_LINEAR as i32);
+        gl.tex_genfv(coord, OBJECT_PLANE, &plane);
+        gl.enable(gen);
+    }
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+    gl.tex_envi(TEXTURE_ENV, COMBINE_RGB, MODULATE as i32);
+    gl.tex_envi(TEXTURE_ENV, SOURCE0_RGB, TEXTURE as i32);
+    gl.tex_envi(TEXTURE_ENV, SOURCE1_RGB, PREVIOUS as i32);
+    gl.tex_envf(TEXTURE_ENV, RGB_SCALE, 2.0);
+    gl.enable(TEXTURE_3D);
+
+    // Unit 3: the environment by REFLECTION_MAP, COMBINE INTERPOLATE with the previous colour
+    // by the constant's alpha 0.3.
+    gl.active_texture(TEXTURE3);
+    gl.bind_texture(TEXTURE_CUBE_MAP, cube);
+    for (coord, gen) in [(S, TEXTURE_GEN_S), (T, TEXTURE_GEN_T), (R, TEXTURE_GEN_R)] {
+        gl.tex_geni(coord, TEXTURE_GEN_MODE, REFLECTION_MAP as i32);
+        gl.enable(gen);
+    }
+    gl.tex_envi(TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+    gl.tex_envi(TEXTURE_ENV, COMBINE_RGB, INTERPOLATE as i32);
+    gl.tex_envi(TEXTURE_ENV, SOURCE0_RGB, TEXTURE as i32);
+    gl.tex_envi(TEXTURE_ENV, SOURCE1_RGB, PREVIOUS as i32);
+    gl.tex_envi(TEXTURE_ENV, SOURCE2_RGB, CONSTANT as i32);
+    gl.tex_envi(TEXTURE_ENV, OPERAND2_RGB, SRC_ALPHA as i32);
+    gl.tex_envfv(TEXTURE_ENV, TEXTURE_ENV_COLOR, &[0.0, 0.0, 0.0, 0.3]);
+    gl.enable(TEXTURE_CUBE_MAP);
+
+    glu::quadric_texture(q, true);
+    glu::sphere(gl, q, 1.1, 48, 32);
+    glu::quadric_texture(q, false);
+
+    for u in (0..4).rev() {
+        gl.active_texture(TEXTURE0 + u);
+        for t in [TEXTURE_1D, TEXTURE_2D, TEXTURE_3D, TEXTURE_CUBE_MAP] {
+            gl.disable(t);
+        }
+        for g in [TEXTURE_GEN_S, TEXTURE_GEN_T, TEXTURE_GEN_R] {
+            gl.disable(g);
+        }
+    }
     gl.disable(LIGHTING);
 }
 
