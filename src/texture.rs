@@ -658,7 +658,9 @@ impl Textures {
 }
 
 /// The base internal format (table 3.15) of an accepted `internalformat` (tables 3.16, 3.17,
-/// and 1..=4 for the component counts GL 1.0 took), or None.
+/// 1..=4 for the component counts GL 1.0 took, and the generic compressed formats of table
+/// 3.18, which GL 1.3 lets an implementation with no compressed format store uncompressed, as
+/// Mesa does when no compression extension is exposed), or None.
 pub fn base_internal_format(internal: i32) -> Option<u32> {
     let Ok(f) = u32::try_from(internal) else {
         return None;
@@ -668,6 +670,12 @@ pub fn base_internal_format(internal: i32) -> Option<u32> {
         2 => gl::LUMINANCE_ALPHA,
         3 => gl::RGB,
         4 => gl::RGBA,
+        gl::COMPRESSED_ALPHA => gl::ALPHA,
+        gl::COMPRESSED_LUMINANCE => gl::LUMINANCE,
+        gl::COMPRESSED_LUMINANCE_ALPHA => gl::LUMINANCE_ALPHA,
+        gl::COMPRESSED_INTENSITY => gl::INTENSITY,
+        gl::COMPRESSED_RGB => gl::RGB,
+        gl::COMPRESSED_RGBA => gl::RGBA,
         gl::ALPHA | gl::ALPHA4 | gl::ALPHA8 | gl::ALPHA12 | gl::ALPHA16 => gl::ALPHA,
         gl::LUMINANCE | gl::LUMINANCE4 | gl::LUMINANCE8 | gl::LUMINANCE12 | gl::LUMINANCE16 => {
             gl::LUMINANCE

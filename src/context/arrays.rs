@@ -421,6 +421,10 @@ impl Context {
     fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>, reach: usize) {
         let arrays = std::mem::take(&mut self.state.arrays);
         let sources = arrays.sources(reach);
+        // DrawArrays and DrawElements leave the current attributes (and the materials
+        // COLOR_MATERIAL tracks) as they were: GL 2.1 §2.8 makes them indeterminate after the
+        // draw, and Mesa draws from the arrays without touching them. ArrayElement sets them.
+        let kept = mode.map(|_| (self.state.current, self.state.materials));
         if !sources.is_empty() {
             if let Some(mode) = mode {
                 self.begin_mode = Some(mode);
@@ -438,6 +442,10 @@ impl Context {
         }
         drop(sources);
         self.state.arrays = arrays;
+        if let Some((current, materials)) = kept {
+            self.state.current = current;
+            self.state.materials = materials;
+        }
     }
 
     /// What a vertex-array call compiles into a display list (GL 2.1 §5.4: "the array data are
@@ -541,7 +549,11 @@ impl Context {
         };
         let sources = arrays.sources(reach);
         if sources.is_empty() {
-            return Ok(Some(Vec::new()));
+            // Mesa compiles the Begin/End pair all the same: run between Begin and End, the
+            // list raises INVALID_OPERATION as the draw would (piglit's dlist-beginend).
+            return Ok(Some(
+                mode.map_or_else(Vec::new, |m| vec![Call::Begin(m), Call::End]),
+            ));
         }
         // One call per element per source that has an immediate-mode call, Begin and End.
         let per_index = sources.len();

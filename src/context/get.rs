@@ -258,6 +258,10 @@ impl Context {
             gl::MAX_PROJECTION_STACK_DEPTH => i(MAX_PROJECTION_STACK_DEPTH as i32),
             gl::MAX_TEXTURE_STACK_DEPTH => i(MAX_TEXTURE_STACK_DEPTH as i32),
             gl::MAX_TEXTURE_UNITS => i(MAX_TEXTURE_UNITS as i32),
+            // GL 1.3 with no compressed format (no compression extension is offered): none to
+            // list; the generic COMPRESSED_* internal formats are stored uncompressed.
+            gl::NUM_COMPRESSED_TEXTURE_FORMATS => i(0),
+            gl::COMPRESSED_TEXTURE_FORMATS => Value::new(Conversion::Int, [0i32; 0]),
             gl::MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM as i32; 2]),
             gl::MAX_TEXTURE_SIZE | gl::MAX_3D_TEXTURE_SIZE => i(crate::texture::MAX_TEXTURE_SIZE),
             gl::SUBPIXEL_BITS => i(SUBPIXEL_BITS),

@@ -31,7 +31,7 @@ pub(crate) type ListMap = BTreeMap<u32, Arc<Vec<Call>>>;
 #[derive(Debug, Default)]
 pub(crate) struct DisplayLists {
     /// Defined lists (by EndList); an empty one is a used name with nothing in it.
-    defined: BTreeMap<u32, Arc<Vec<Call>>>,
+    defined: BTreeMap<u32, Arc<List>>,
     /// Names reserved by GenLists as empty lists: `(first, count)` runs, disjoint.
     reserved: Vec<(u32, u32)>,
     /// The largest name ever used (GenLists hands out names above it while they fit).
@@ -49,6 +49,19 @@ pub(crate) struct Compiling {
     /// COMPILE or COMPILE_AND_EXECUTE.
     pub(crate) mode: u32,
     pub(crate) calls: Vec<Call>,
+    /// The calls a vertex-array draw compiled into, as `(first, end)` index ranges of `calls`.
+    pub(crate) draws: Vec<(usize, usize)>,
+}
+
+/// A defined display list.
+#[derive(Debug, Default)]
+pub(crate) struct List {
+    calls: Vec<Call>,
+    /// The ranges of `calls` a DrawArrays or DrawElements compiled into: the current
+    /// attributes (and the materials COLOR_MATERIAL tracks) they set are put back after them,
+    /// as after the draw itself (Mesa compiles such a draw as a vertex list that does not
+    /// update the current values).
+    draws: Vec<(usize, usize)>,
 }
 
 impl DisplayLists {
@@ -123,7 +136,7 @@ impl DisplayLists {
 
     /// The calls of list `name`, or `None` if it has none (undefined names are ignored by
     /// CallList, GL 2.1 §5.4).
-    fn calls(&self, name: u32) -> Option<Arc<Vec<Call>>> {
+    fn calls(&self, name: u32) -> Option<Arc<List>> {
         self.defined.get(&name).cloned()
     }
 }
@@ -183,11 +196,19 @@ impl Context {
                 // The list grows by what the call holds; growth that cannot be allocated is
                 // OUT_OF_MEMORY (raised now, the call left out of the list: the crate's rule is
                 // that an OUT_OF_MEMORY command changes nothing) instead of an abort.
+                let draw = !matches!(call, Call::ArrayElement(_));
                 let stored = match compiled {
                     Ok(Some(calls)) => list
                         .calls
                         .try_reserve(calls.len())
-                        .map(|()| list.calls.extend(calls)),
+                        .and_then(|()| list.draws.try_reserve(usize::from(draw)))
+                        .map(|()| {
+                            let first = list.calls.len();
+                            list.calls.extend(calls);
+                            if draw && list.calls.len() > first {
+                                list.draws.push((first, list.calls.len()));
+                            }
+                        }),
                     Ok(None) => list.calls.try_reserve(1).map(|()| list.calls.push(call)),
                     Err(code) => {
                         self.error(code);
@@ -259,6 +280,7 @@ impl Context {
             name: list,
             mode,
             calls: Vec::new(),
+            draws: Vec::new(),
         });
         self.sync_capturing();
     }
@@ -278,10 +300,13 @@ impl Context {
             return self.error(gl::INVALID_OPERATION);
         };
         self.sync_capturing();
-        let mut calls = list.calls;
+        let (mut calls, mut draws) = (list.calls, list.draws);
         calls.shrink_to_fit();
+        draws.shrink_to_fit();
         self.lists.max_used = self.lists.max_used.max(list.name);
-        self.lists.defined.insert(list.name, Arc::new(calls));
+        self.lists
+            .defined
+            .insert(list.name, Arc::new(List { calls, draws }));
     }
 
     /// `glCallList`: executes list `list` (nothing if it is not defined, or if the nesting
@@ -323,12 +348,31 @@ impl Context {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
-        let Some(calls) = self.lists.calls(name) else {
+        let Some(list) = self.lists.calls(name) else {
             return;
         };
         self.lists.depth += 1;
-        for call in calls.iter() {
-            self.execute(call);
+        let mut draws = list.draws.iter().peekable();
+        let mut i = 0;
+        while let Some(call) = list.calls.get(i) {
+            let Some(&&(first, end)) = draws.peek().filter(|&&&(first, _)| first == i) else {
+                self.execute(call);
+                i += 1;
+                continue;
+            };
+            draws.next();
+            // A compiled draw run between Begin and End is INVALID_OPERATION as a whole: none
+            // of its vertices joins the primitive under way (Mesa's vertex-list playback).
+            if self.begin_mode.is_some() {
+                self.error(gl::INVALID_OPERATION);
+            } else {
+                let kept = (self.state.current, self.state.materials);
+                for call in list.calls.get(first..end).unwrap_or(&[]) {
+                    self.execute(call);
+                }
+                (self.state.current, self.state.materials) = kept;
+            }
+            i = end;
         }
         self.lists.depth -= 1;
     }
@@ -385,7 +429,7 @@ impl Context {
     /// The calls of display list `name` as compiled (None if it is not defined). Not a GL entry
     /// point: for tests and tools.
     pub fn list_calls(&self, name: u32) -> Option<&[Call]> {
-        self.lists.defined.get(&name).map(|c| c.as_slice())
+        self.lists.defined.get(&name).map(|c| c.calls.as_slice())
     }
 }
 

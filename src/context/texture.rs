@@ -820,29 +820,29 @@ impl Context {
         }
         let ifmt = internal_format as i32;
         let size = [width, height, 1];
-        let Some(base) = base_internal_format(ifmt) else {
-            // Target and level errors first, as TexImage2D orders them.
+        // Target and level errors first (INVALID_ENUM, INVALID_VALUE), then an internal format
+        // that is unknown or one of the GL 1.0 counts 1..=4 (§3.8.2 refuses those), which Mesa
+        // (copytexture_error_check) raises as INVALID_ENUM before the size and border checks,
+        // where TexImage gives INVALID_VALUE (piglit copyteximage.c:638).
+        let base = base_internal_format(ifmt).filter(|_| !(1..=4).contains(&ifmt));
+        let Some(base) = base else {
             let code = tex_image_nd_args_error(
                 dims,
                 target,
                 level,
                 gl::RGBA as i32,
-                size,
-                border,
+                [0, 0, 0],
+                0,
                 gl::RGBA,
                 gl::UNSIGNED_BYTE,
             );
-            return self.error(code.unwrap_or(gl::INVALID_VALUE));
+            return self.error(code.unwrap_or(gl::INVALID_ENUM));
         };
-        // 1..=4 are not accepted by CopyTexImage (§3.8.2 lists base and sized formats only).
         let fmt = if base == gl::DEPTH_COMPONENT {
             gl::DEPTH_COMPONENT
         } else {
             gl::RGBA
         };
-        if (1..=4).contains(&ifmt) {
-            return self.error(gl::INVALID_VALUE);
-        }
         if let Some(code) =
             tex_image_nd_args_error(dims, target, level, ifmt, size, border, fmt, gl::FLOAT)
         {

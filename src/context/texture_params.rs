@@ -10,6 +10,9 @@
 
 use glam::{DVec4, Vec4};
 
+/// `GL_TEXTURE_STENCIL_SIZE` (GL 3.0, EXT_packed_depth_stencil; not in the GL 2.1 constants).
+pub(crate) const TEXTURE_STENCIL_SIZE: u32 = 0x88F1;
+
 use super::Context;
 use crate::call::Call;
 use crate::convert;
@@ -575,6 +578,9 @@ impl Context {
             }
             gl::TEXTURE_INTENSITY_SIZE => bits(base == gl::INTENSITY, 8),
             gl::TEXTURE_DEPTH_SIZE => bits(base == gl::DEPTH_COMPONENT, 24),
+            // A GL 3.0 pname (EXT_packed_depth_stencil) Mesa answers in its GL 1.5 context:
+            // no texture format here has stencil bits.
+            TEXTURE_STENCIL_SIZE => 0,
             _ => {
                 self.error(gl::INVALID_ENUM);
                 return None;

@@ -810,3 +810,109 @@ mod random_on_gl {
         }
     }
 }
+
+/// What a draw from arrays leaves in the current attributes, on the driver and on the CPU: Mesa
+/// draws from the arrays without touching the current values (GL 2.1 §2.8 leaves them
+/// indeterminate), while a draw compiled into a display list becomes immediate-mode calls
+/// (§5.4), which set them when the list runs.
+#[cfg(feature = "gl")]
+mod current_after_draws {
+    use super::*;
+
+    fn setup(c: &mut Context) {
+        c.color4f(0.1, 0.2, 0.3, 0.4);
+        c.normal3f(0.0, 0.6, 0.8);
+        c.tex_coord4f(0.5, 0.25, 0.125, 1.0);
+        c.secondary_color3f(0.7, 0.1, 0.2);
+        c.fog_coordf(3.0);
+        c.edge_flag(false);
+        let v: [f32; 8] = [-0.5, -0.5, 0.5, -0.5, 0.5, 0.5, -0.5, 0.5];
+        let col: [f32; 16] = [1.0, 0.5, 0.25, 1.0]
+            .repeat(4)
+            .try_into()
+            .unwrap_or([0.0; 16]);
+        let n: [f32; 12] = [1.0, 0.0, 0.0].repeat(4).try_into().unwrap_or([0.0; 12]);
+        let t: [f32; 8] = [0.75, 0.5].repeat(4).try_into().unwrap_or([0.0; 8]);
+        let s: [f32; 12] = [0.0, 0.0, 1.0].repeat(4).try_into().unwrap_or([0.0; 12]);
+        let f: [f32; 4] = [9.0; 4];
+        let e: [u8; 4] = [1; 4];
+        c.vertex_pointer(2, gl::FLOAT, 0, &v[..]);
+        c.color_pointer(4, gl::FLOAT, 0, &col[..]);
+        c.normal_pointer(gl::FLOAT, 0, &n[..]);
+        c.tex_coord_pointer(2, gl::FLOAT, 0, &t[..]);
+        c.secondary_color_pointer(3, gl::FLOAT, 0, &s[..]);
+        c.fog_coord_pointer(gl::FLOAT, 0, &f[..]);
+        c.edge_flag_pointer(0, &e[..]);
+        for a in [
+            gl::VERTEX_ARRAY,
+            gl::COLOR_ARRAY,
+            gl::NORMAL_ARRAY,
+            gl::TEXTURE_COORD_ARRAY,
+            gl::SECONDARY_COLOR_ARRAY,
+            gl::FOG_COORD_ARRAY,
+            gl::EDGE_FLAG_ARRAY,
+        ] {
+            c.enable_client_state(a);
+        }
+    }
+
+    /// CURRENT_COLOR, NORMAL, TEXTURE_COORDS, SECONDARY_COLOR, FOG_COORD and EDGE_FLAG.
+    fn current(get: &mut dyn FnMut(u32, &mut [f32])) -> Vec<Vec<f32>> {
+        [
+            (gl::CURRENT_COLOR, 4),
+            (gl::CURRENT_NORMAL, 3),
+            (gl::CURRENT_TEXTURE_COORDS, 4),
+            (gl::CURRENT_SECONDARY_COLOR, 4),
+            (gl::CURRENT_FOG_COORD, 1),
+            (gl::EDGE_FLAG, 1),
+        ]
+        .iter()
+        .map(|&(p, n)| {
+            let mut v = vec![f32::NAN; n];
+            get(p, &mut v);
+            v
+        })
+        .collect()
+    }
+
+    #[test]
+    fn draws_leave_the_current_attributes_as_the_driver_does() {
+        for list in [false, true] {
+            for elements in [false, true] {
+                let Some(mut gl) = crate::common::test_backend(SIZE, SIZE) else {
+                    return;
+                };
+                let mut c = ctx();
+                c.start_recording();
+                setup(&mut c);
+                if list {
+                    c.new_list(1, gl::COMPILE);
+                }
+                if elements {
+                    c.draw_elements(gl::QUADS, 4, gl::UNSIGNED_BYTE, &[0u8, 1, 2, 3][..]);
+                } else {
+                    c.draw_arrays(gl::QUADS, 0, 4);
+                }
+                if list {
+                    c.end_list();
+                    c.call_list(1);
+                }
+                let calls = c.stop_recording();
+                gl.replay(&calls);
+                assert_eq!(gl.get_error(), gl::NO_ERROR);
+                assert_eq!(c.get_error(), gl::NO_ERROR);
+                let on_gl = current(&mut |p, v| gl.get_floatv(p, v));
+                let on_cpu = current(&mut |p, v| c.get_floatv(p, v));
+                assert_eq!(on_cpu, on_gl, "list {list}, elements {elements}");
+                // The recording replayed on a fresh CPU context agrees too.
+                let mut again = ctx();
+                again.replay(&calls);
+                let replayed = current(&mut |p, v| again.get_floatv(p, v));
+                assert_eq!(
+                    replayed, on_gl,
+                    "replayed: list {list}, elements {elements}"
+                );
+            }
+        }
+    }
+}

@@ -216,6 +216,51 @@ fn texture_errors_match_the_driver() {
             Call::CopyTexSubImage2D(gl::TEXTURE_2D, 0, 3, 3, 0, 0, 2, 2),
             gl::INVALID_VALUE,
         ),
+        // CopyTexImage refuses the GL 1.0 counts 1..4 and unknown internal formats with
+        // INVALID_ENUM (piglit copyteximage.c:638), after an unknown target.
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, 3, 0, 0, 4, 4, 0),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, 0x1234, 0, 0, 4, 4, 0),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, -1, 4, 0, 0, 4, 4, 0),
+            gl::INVALID_VALUE,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, 4, 0, 0, -4, 4, 1),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, 0x1234, 0, 0, -4, 4, 0),
+            gl::INVALID_ENUM,
+        ),
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_1D, 0, 4, 0, 0, 4, 4, 0),
+            gl::INVALID_ENUM,
+        ),
+        // The generic compressed formats (GL 1.3) are taken.
+        (
+            Call::CopyTexImage2D(gl::TEXTURE_2D, 0, gl::COMPRESSED_RGBA, 0, 0, 4, 4, 0),
+            gl::NO_ERROR,
+        ),
+        (
+            Call::TexImage2D(Box::new((
+                gl::TEXTURE_2D,
+                0,
+                gl::COMPRESSED_LUMINANCE as i32,
+                2,
+                2,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                img(16),
+            ))),
+            gl::NO_ERROR,
+        ),
         (Call::DeleteTextures(1, vec![2]), gl::NO_ERROR),
         (Call::DeleteTextures(-1, vec![]), gl::INVALID_VALUE),
     ];
