@@ -90,6 +90,10 @@ enum Command {
         /// Print the results as one JSON object instead of the table.
         #[arg(long)]
         json: bool,
+        /// Measure the CPU pipeline only (no driver frames; the gl columns are empty): for
+        /// profiling and for `perf stat`, whose counts then are the CPU side's alone.
+        #[arg(long)]
+        cpu_only: bool,
     },
     /// Run a C or Python program unmodified on fixedgl: its libGL, libEGL, libOpenGL and
     /// libOSMesa are fixedgl's C ABI library (see docs/c-abi.md).
@@ -216,7 +220,8 @@ fn main() -> ExitCode {
             frames,
             threads,
             json,
-        } => bench(&scenes, size, frames, threads, json, device),
+            cpu_only,
+        } => bench(&scenes, size, frames, threads, json, cpu_only, device),
         Command::View {
             scenes,
             compare,
@@ -441,6 +446,7 @@ fn bench(
     frames: u32,
     threads: Option<u32>,
     json: bool,
+    cpu_only: bool,
     device: &str,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
@@ -461,7 +467,10 @@ fn bench(
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
-        let mut gl = gl_side::Bench::new(w, h, scene.config, device)?;
+        let mut gl = match cpu_only {
+            true => None,
+            false => Some(gl_side::Bench::new(w, h, scene.config, device)?),
+        };
         // Like the GL side (one context, state restored around each frame), one CPU context
         // reset to its initial state before each frame; its framebuffer memory is reused.
         let mut ctx = Context::with_config(w, h, scene.config)?;
@@ -476,12 +485,13 @@ fn bench(
         };
         // One warm-up frame each (shader compilation, first-touch allocation), then interleaved.
         cpu_frame()?;
-        gl.frame(&calls);
+        let mut gl_frame = || gl.as_mut().map_or(f64::NAN, |gl| gl.frame(&calls));
+        gl_frame();
         let mut cpu_times = Vec::new();
         let mut gl_times = Vec::new();
         for _ in 0..frames {
             cpu_times.push(cpu_frame()?);
-            gl_times.push(gl.frame(&calls));
+            gl_times.push(gl_frame());
         }
         let row = BenchRow {
             name: scene.name,
