@@ -384,6 +384,14 @@ impl FragCtx<'_> {
                     b0 + by * fy,
                     a0 + ay * fy,
                 );
+                // One colour buffer written whole: eight fragments at a time (`lanes`).
+                if !self.count && self.color_mask == [true; 4] && bufs.color2.is_none() {
+                    let co = [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax];
+                    if let Some(dst) = bufs.color.get_mut(base..base + n) {
+                        super::lanes::smooth_rgba(dst, mask, x0 - ox, &co);
+                    }
+                    return;
+                }
                 while mask != 0 {
                     let k = mask.trailing_zeros() as usize;
                     mask &= mask - 1;
@@ -533,6 +541,10 @@ impl FragCtx<'_> {
         let Some(row) = bufs.depth.get_mut(base..end) else {
             return 0;
         };
+        if !MASKED {
+            let live = u64::MAX >> (64 - row.len().clamp(1, 64));
+            return super::lanes::depth_span(row, zrow, dz, fx0, live, self.depth_mask, pass);
+        }
         let mut mask = 0;
         for (k, stored) in row.iter_mut().enumerate() {
             if MASKED && live & (1 << k) == 0 {

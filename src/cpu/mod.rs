@@ -44,6 +44,7 @@ pub mod feedback;
 pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
+pub mod lanes;
 mod line;
 pub mod pixels;
 mod polygon;
