@@ -408,6 +408,22 @@ impl FragCtx<'_> {
             }
             return;
         }
+        // FLAT colour alone, one colour buffer written whole: eight fragments at a time.
+        if nv == 4
+            && nflat == 4
+            && p.flags & F_PHONG == 0
+            && !self.count
+            && self.color_mask == [true; 4]
+            && bufs.color2.is_none()
+        {
+            if let (Some(pl), Some(dst)) = (
+                planes.get(3..15).and_then(|p| <&[f32; 12]>::try_from(p).ok()),
+                bufs.color.get_mut(base..base + n),
+            ) {
+                super::lanes::flat_rgba(dst, mask, x0 - ox, fy, pl);
+                return;
+            }
+        }
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = nv.min(v.len());

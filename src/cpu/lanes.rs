@@ -94,6 +94,32 @@ pub fn smooth_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, co: &[f32; 10]) {
     }
 }
 
+/// The flat primary colour of a span (`FragCtx::tri_span` with FLAT shading and no other
+/// varying): channel c of fragment k is (`co[3c]` + `co[3c+1]`·fx) + `co[3c+2]`·fy with fx =
+/// `fx0` + k, not divided by w (the general path's expression for a flat varying). Stores the
+/// unorm8 colour of every fragment whose bit is set in `mask` into `dst[k]`.
+pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 12]) {
+    // `pl(o + 2) * fy` is the same product for every fragment of the row.
+    let ch: [(f32, f32, f32); 4] =
+        std::array::from_fn(|c| (co[3 * c], co[3 * c + 1], co[3 * c + 2] * fy));
+    let mut c = 0;
+    while c < dst.len().min(64) {
+        let m = (mask >> c) & ((1 << LANES) - 1);
+        if m != 0 {
+            let fx = lane_x(fx0.wrapping_add(c as i32));
+            let v = ch.map(|(o, dx, yt)| unorm8_lanes(fx.map(|x| (o + dx * x) + yt)));
+            if let Some(out) = dst.get_mut(c..) {
+                for (l, px) in out.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        *px = [v[0][l], v[1][l], v[2][l], v[3][l]];
+                    }
+                }
+            }
+        }
+        c += LANES;
+    }
+}
+
 /// `framebuffer::depth_unorm(f64::from(z))` on every lane (a NaN gives 0, as there).
 #[inline(always)]
 fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
@@ -203,6 +229,30 @@ mod tests {
                     [9; 4]
                 };
                 assert_eq!(*px, want, "k {k} co {co:?} fx0 {fx0}");
+            }
+        }
+    }
+
+    #[test]
+    fn flat_rgba_is_the_scalar_expression_bit_for_bit() {
+        let mut g = Gen(5);
+        for _ in 0..2000 {
+            let co: [f32; 12] = std::array::from_fn(|_| g.float());
+            let n = 1 + (g.next() % 64) as usize;
+            let mask = g.next() | g.next() << 40;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let fy = (g.next() % 900) as f32;
+            let mut got = vec![[9u8; 4]; n];
+            flat_rgba(&mut got, mask, fx0, fy, &co);
+            for (k, px) in got.iter().enumerate() {
+                let fx = (fx0 + k as i32) as f32;
+                let want = match mask & (1 << k) != 0 {
+                    true => std::array::from_fn(|c| {
+                        unorm8(co[3 * c] + co[3 * c + 1] * fx + co[3 * c + 2] * fy)
+                    }),
+                    false => [9; 4],
+                };
+                assert_eq!(*px, want, "k {k} co {co:?} fx0 {fx0} fy {fy}");
             }
         }
     }
