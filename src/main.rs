@@ -522,6 +522,7 @@ fn bench(
         .ok()
         .and_then(|v| v.parse::<usize>().ok())
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let api_ns = api_call_ns()?;
     if json {
         let scenes: Vec<serde_json::Value> = rows
             .iter()
@@ -542,6 +543,7 @@ fn bench(
             "gl_threads": gl_threads,
             "geomean_ratio": geomean,
             "worst": worst.map(|r| r.name),
+            "rust_api_ns_per_call": api_ns,
             "scenes": scenes,
         });
         println!("{out}");
@@ -550,8 +552,35 @@ fn bench(
             "geometric mean cpu/gl {geomean:.2}; worst {}; threads: cpu {cpu_threads}, gl {gl_threads}",
             worst.map_or_else(|| "-".to_string(), |r| format!("{} ({:.2})", r.name, ratio(r)))
         );
+        println!(
+            "Rust API: {api_ns:.1} ns a call (Color3f + Vertex3f pairs, points outside the view \
+             volume: validation, batching and the vertex stage, no fragments)"
+        );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Nanoseconds a call of the Rust API costs: the median of five runs of 100k Color3f +
+/// Vertex3f pairs inside Begin(POINTS)/End on a 64x64 context, every point beyond the far
+/// right of the view volume (clipped: no fragments), up to Finish.
+fn api_call_ns() -> Result<f64, Error> {
+    const PAIRS: u32 = 100_000;
+    let mut ctx = Context::new(64, 64)?;
+    let mut runs: Vec<f64> = (0..5)
+        .map(|_| {
+            let start = Instant::now();
+            ctx.begin(fixedgl::gl::POINTS);
+            for i in 0..PAIRS {
+                let f = i as f32 * 1e-6;
+                ctx.color3f(f, 0.5, 0.25);
+                ctx.vertex3f(2.0 + f, 0.0, 0.0);
+            }
+            ctx.end();
+            ctx.finish();
+            start.elapsed().as_secs_f64() * 1e9 / f64::from(2 * PAIRS)
+        })
+        .collect();
+    Ok(median_ms(&mut runs))
 }
 
 fn replay(
