@@ -18,6 +18,7 @@ use std::time::Instant;
 use clap::{Parser, Subcommand, ValueEnum};
 
 mod run;
+mod sha256;
 use image::RgbaImage;
 
 use fixedgl::compare::compare;
@@ -54,6 +55,12 @@ enum Command {
         /// Output file (default: <scene>-<backend>.png).
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Write no file: print the SHA-256 of the image's RGBA8 bytes (top row first) and the
+        /// scene's name, as `sha256sum` would print them; SCENE may be `all`. A regression
+        /// check for work that must not change a pixel (speed work: hash before, hash after),
+        /// never a test of correctness, which is the comparison with the driver.
+        #[arg(long, conflicts_with = "output")]
+        hash: bool,
     },
     /// Render scenes on both pipelines, print the metrics and write an HTML report; exits
     /// non-zero if a scene exceeds its tolerance.
@@ -206,7 +213,11 @@ fn main() -> ExitCode {
             backend,
             size,
             output,
-        } => render(&scene, backend, size, output, device),
+            hash,
+        } => match hash {
+            true => render_hashes(&scene, backend, size, device),
+            false => render(&scene, backend, size, output, device),
+        },
         Command::Compare {
             scenes,
             size,
@@ -346,6 +357,25 @@ fn render(
     let out = output.unwrap_or_else(|| PathBuf::from(format!("{name}-{}.png", backend.name())));
     img.save(&out)?;
     println!("{}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `render --hash`: each selected scene's image hashed (see `Command::Render::hash`).
+fn render_hashes(
+    name: &str,
+    backend: Backend,
+    size: Option<(u32, u32)>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    for scene in select(&[name.to_owned()], false)? {
+        let (w, h) = size.unwrap_or(scene.default_size);
+        let (mut ctx, calls) = scene.record(w, h)?;
+        let img = match backend {
+            Backend::Cpu => ctx.to_image(),
+            Backend::Gl => gl_side::render(&calls, w, h, scene.config, device)?.0,
+        };
+        println!("{}  {}", sha256::hex(img.as_raw()), scene.name);
+    }
     Ok(ExitCode::SUCCESS)
 }
 
