@@ -21,7 +21,7 @@
 
 use glam::{Vec3, Vec4};
 
-use crate::state::{Current, Material};
+use crate::state::{Current, Material, MAX_TEXTURE_UNITS};
 
 /// One Begin/End pair: `count` entries of `Batch::idx` from `first`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,10 +80,10 @@ fn set_of(pos: [u32; 4], normal: [u32; 3]) -> usize {
 }
 
 /// Words in [`Others`].
-const OTHERS: usize = 20;
+const OTHERS: usize = 28;
 
 /// The batched inputs of a vertex other than position and normal, as bits (colour, secondary
-/// colour, the two units' texture coordinates, fog coordinate, edge flag, material index): equal
+/// colour, every unit's texture coordinates, fog coordinate, edge flag, material index): equal
 /// bits, identical inputs (NaNs with equal bits are equal, -0 and 0 differ). Every batched
 /// input other than position and normal must be in here, or vertices would be wrongly shared.
 #[derive(Clone, Copy, Debug)]
@@ -93,13 +93,14 @@ impl Others {
     #[inline(always)]
     fn of(c: &Current, mat: u32) -> Self {
         let mut o = [0u32; OTHERS];
-        let vecs = [c.color, c.secondary_color, c.tex_coords[0], c.tex_coords[1]];
+        let [t0, t1, t2, t3] = c.tex_coords;
+        let vecs = [c.color, c.secondary_color, t0, t1, t2, t3];
         for (dst, v) in o.chunks_exact_mut(4).zip(vecs) {
             dst.copy_from_slice(&v.to_array().map(f32::to_bits));
         }
-        o[16] = c.fog_coord.to_bits();
-        o[17] = u32::from(c.edge_flag);
-        o[18] = mat;
+        o[24] = c.fog_coord.to_bits();
+        o[25] = u32::from(c.edge_flag);
+        o[26] = mat;
         Others(o)
     }
 
@@ -122,11 +123,8 @@ pub struct Attribs {
     pub color: Vec4,
     /// Current secondary colour.
     pub color2: Vec4,
-    /// Texture coordinates of unit 0.
-    pub tex: Vec4,
-    // Unit 1's coordinates (multitexture)
-    /// Texture coordinates of unit 1.
-    pub tex1: Vec4,
+    /// Texture coordinates of each unit.
+    pub tex: [Vec4; MAX_TEXTURE_UNITS],
     /// Current fog coordinate (FOG_COORD_SRC = FOG_COORD, §3.10).
     pub fog: f32,
 }
@@ -136,8 +134,7 @@ impl Attribs {
     const ZERO: Attribs = Attribs {
         color: Vec4::ZERO,
         color2: Vec4::ZERO,
-        tex: Vec4::ZERO,
-        tex1: Vec4::ZERO,
+        tex: [Vec4::ZERO; MAX_TEXTURE_UNITS],
         fog: 0.0,
     };
 
@@ -145,8 +142,7 @@ impl Attribs {
         Attribs {
             color: c.color,
             color2: c.secondary_color,
-            tex: c.tex_coords[0],
-            tex1: c.tex_coords[1],
+            tex: c.tex_coords,
             fog: c.fog_coord,
         }
     }
@@ -430,7 +426,7 @@ mod tests {
         b.end();
         let got = |b: &Batch, i| {
             b.attribs(i)
-                .map(|a| (a.color, a.color2, a.tex, a.tex1, a.fog))
+                .map(|a| (a.color, a.color2, a.tex[0], a.tex[1], a.fog))
         };
         let z = Vec4::ZERO;
         let t = Vec4::new(0.25, 0.5, 0.0, 1.0);

@@ -288,7 +288,7 @@ impl Sink {
                 clip: get(v, Some(0)),
                 col: get(v, Some(layout.col)),
                 col_b: get(v, layout.col_b.or(Some(layout.col))),
-                tex: get(v, layout.tex),
+                tex: get(v, layout.tex[0]),
                 eye: get(v, layout.eye),
                 edge,
             })

@@ -16,9 +16,10 @@ use glam::{Vec3, Vec4};
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG};
+use super::texture::Sampler;
 use super::vertex::Lighting;
 use crate::gl;
-use crate::state::{Material, BACK, FRONT};
+use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
 
 /// The fragment-stage state of one flush.
 #[derive(Clone, Debug)]
@@ -51,11 +52,27 @@ pub struct FragCtx<'a> {
     pub stipple: Option<[u32; 32]>,
     /// Fog, alpha, stencil, blend, logic op: `None` when none is enabled (the fast path).
     pub ops: Option<Ops>,
-    // Unit 0's sampler when texturing is on and its texture complete (§3.8)
-    /// Texture unit 0 (`None`: no texturing in this flush).
-    pub tex: Option<&'a super::texture::Sampler>,
-    /// Texture unit 1, applied to unit 0's result (§3.8.15).
-    pub tex1: Option<&'a super::texture::Sampler>,
+    /// The texturing units of this flush in unit order, then `None`s: each one's sampler (the
+    /// unit carries coordinates, a target is enabled and its texture complete, §3.8) and the
+    /// offset of its coordinates among the varyings. Each takes the previous one's result
+    /// (§3.8.15); a fragment stops at the first `None`, so a flush pays for the units it uses.
+    pub tex: [Option<(&'a Sampler, usize)>; MAX_TEXTURE_UNITS],
+}
+
+/// `FragCtx::tex` from one optional sampler per unit and the varying layout (see there).
+pub fn tex_units<'a>(
+    s: &'a [Option<Sampler>; MAX_TEXTURE_UNITS],
+    rl: &RLayout,
+) -> [Option<(&'a Sampler, usize)>; MAX_TEXTURE_UNITS] {
+    let mut tex = [None; MAX_TEXTURE_UNITS];
+    let mut n = 0;
+    for (s, o) in s.iter().zip(&rl.tex) {
+        if let (Some(s), Some(o), Some(dst)) = (s, o, tex.get_mut(n)) {
+            *dst = Some((s, *o));
+            n += 1;
+        }
+    }
+    tex
 }
 
 /// What the per-fragment operations see of a pixel rectangle's or bitmap's fragments: a
@@ -143,7 +160,7 @@ impl FragCtx<'_> {
     /// The final colour of a fragment with varyings `v` and texture level of detail `lambda`
     /// (§3.8 texturing, §3.9 colour sum; PHONG_WIN lighting).
     #[inline(always)]
-    fn color(&self, p: &RPrim, v: &[f32], lambda: [f32; 2]) -> Vec4 {
+    fn color(&self, p: &RPrim, v: &[f32], lambda: [f32; MAX_TEXTURE_UNITS]) -> Vec4 {
         let g = |k: usize| v.get(k).copied().unwrap_or(0.0);
         let mut c = Vec4::new(g(0), g(1), g(2), g(3));
         let mut s = self.rl.spec.map(|o| Vec3::new(g(o), g(o + 1), g(o + 2)));
@@ -166,13 +183,11 @@ impl FragCtx<'_> {
         }
         // §3.8.13, texturing comes before the colour sum (§3.9) and fog (§3.10,
         // in `full`)
-        let prim = c;
-        if let (Some(tx), Some(o)) = (self.tex, self.rl.tex) {
-            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[0]);
-        }
         // §3.8.15: each enabled unit takes the previous unit's result as Cf.
-        if let (Some(tx), Some(o)) = (self.tex1, self.rl.tex1) {
-            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], lambda[1]);
+        let prim = c;
+        for (t, l) in self.tex.iter().zip(lambda) {
+            let Some((tx, o)) = *t else { break };
+            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], l);
         }
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
@@ -308,7 +323,7 @@ impl FragCtx<'_> {
         let i = ((y - bufs.y) as usize) * TILE + (x - bufs.x) as usize;
         if let Some(ops) = &self.ops {
             // A line or point fragment has no quad derivatives: λ = 0, as below.
-            let c = self.color(p, v, [0.0; 2]);
+            let c = self.color(p, v, [0.0; MAX_TEXTURE_UNITS]);
             self.full(ops, bufs, p, i, z, c, self.fog_coord(v));
             return;
         }
@@ -317,7 +332,7 @@ impl FragCtx<'_> {
                 bufs.samples += 1;
             }
             // A point has no derivatives: λ = 0 (the base level, magnification).
-            let c = self.color(p, v, [0.0; 2]);
+            let c = self.color(p, v, [0.0; MAX_TEXTURE_UNITS]);
             self.write(bufs, i, c);
         }
     }
@@ -429,7 +444,7 @@ impl FragCtx<'_> {
         let nv = nv.min(v.len());
         // The quad whose λ is in `lambda` (none yet)
         let mut quad_x = i32::MIN;
-        let mut lambda = [0.0f32; 2];
+        let mut lambda = [0.0f32; MAX_TEXTURE_UNITS];
         while mask != 0 {
             let k = mask.trailing_zeros() as usize;
             mask &= mask - 1;
@@ -471,7 +486,7 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = self.rl.n.min(v.len());
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
         for x in x0..=x1 {
             let fx = (x - ox) as f32;
             let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
@@ -578,18 +593,27 @@ impl FragCtx<'_> {
         mask
     }
 
-    /// Texture level of detail of both units for the 2x2 quad holding window pixel (x, y), from
+    /// Texture level of detail of each unit for the 2x2 quad holding window pixel (x, y), from
     /// the quad's lower-left pixel as llvmpipe does (§3.8.8), relative to the primitive's
     /// bounding-box corner (ox, oy); 0 for a unit whose result does not depend on it.
-    fn quad_lambda(&self, planes: &[f32], x: i32, y: i32, ox: i32, oy: i32) -> [f32; 2] {
+    #[inline(always)]
+    fn quad_lambda(
+        &self,
+        planes: &[f32],
+        x: i32,
+        y: i32,
+        ox: i32,
+        oy: i32,
+    ) -> [f32; MAX_TEXTURE_UNITS] {
         let (qx, qy) = ((x & !1) - ox, (y & !1) - oy);
-        let lod = |tx: Option<&super::texture::Sampler>, to: Option<usize>| match (tx, to) {
-            (Some(tx), Some(to)) if tx.needs_lambda() => {
-                tx.quad_lambda(planes, to, qx as f32, qy as f32)
+        let mut lambda = [0.0; MAX_TEXTURE_UNITS];
+        for (l, t) in lambda.iter_mut().zip(&self.tex) {
+            let Some((tx, to)) = *t else { break };
+            if tx.needs_lambda() {
+                *l = tx.quad_lambda(planes, to, qx as f32, qy as f32);
             }
-            _ => 0.0,
-        };
-        [lod(self.tex, self.rl.tex), lod(self.tex1, self.rl.tex1)]
+        }
+        lambda
     }
 
     /// A span through the full sequence (`ops` enabled): every pixel in order.
@@ -615,7 +639,7 @@ impl FragCtx<'_> {
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
         let nv = self.rl.n.min(v.len());
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; 2]);
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
         // A polygon stipple (§3.5.6) removes fragments before any test.
         let y = p.bbox[1] + fy as i32;
         let live = match self.stipple {

@@ -62,7 +62,7 @@ use rayon::prelude::*;
 use std::sync::mpsc::{self, Receiver};
 use std::sync::Mutex;
 
-use crate::state::{ContextConfig, Current, Material, State};
+use crate::state::{ContextConfig, Current, Material, State, MAX_TEXTURE_UNITS};
 use assembly::Asm;
 use batch::Batch;
 use fragment::{FragCtx, TileBufs};
@@ -500,9 +500,10 @@ impl Core {
         let Plan { layout, ctx } = plan;
         // Fragment-stage constants.
         let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
-        // Unit 0, when enabled and complete (§3.8.10)
-        let sampler = layout.tex.and_then(|_| texture::Sampler::new(state, 0));
-        let sampler1 = layout.tex1.and_then(|_| texture::Sampler::new(state, 1));
+        // Each unit that carries coordinates, when enabled and complete (§3.8.10)
+        let samplers: [Option<texture::Sampler>; MAX_TEXTURE_UNITS] =
+            std::array::from_fn(|u| layout.tex[u].and_then(|_| texture::Sampler::new(state, u)));
+        let tex = fragment::tex_units(&samplers, &ctx.rl);
         let Core {
             fb,
             asm,
@@ -538,8 +539,7 @@ impl Core {
                 .polygon_stipple
                 .then(|| fragment::stipple_rows(state)),
             ops: fragops::Ops::new(state),
-            tex: sampler.as_ref(),
-            tex1: sampler1.as_ref(),
+            tex,
         };
         // The line stipple counter runs from segment to segment in submission order: one
         // worker sets up everything while LINE_STIPPLE is on.

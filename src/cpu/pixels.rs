@@ -25,7 +25,7 @@ use super::framebuffer::{
 };
 use super::texture::Sampler;
 use super::Renderer;
-use crate::state::State;
+use crate::state::{State, MAX_TEXTURE_UNITS};
 
 /// The groups of a pixel rectangle after the pixel transfer, rows bottom-up, `width` per row.
 #[derive(Clone, Copy, Debug)]
@@ -119,8 +119,8 @@ struct Shared<'a> {
     color: Vec4,
     /// Secondary colour added by the colour sum, when it applies.
     secondary: Option<Vec3>,
-    /// Raster texture coordinates of units 0 and 1, and their samplers.
-    tex: [Option<(&'a Sampler, [f32; 4])>; 2],
+    /// Raster texture coordinates of each unit, and their samplers.
+    tex: [Option<(&'a Sampler, [f32; 4])>; MAX_TEXTURE_UNITS],
     /// Fog coordinate: the raster distance.
     fogc: f32,
 }
@@ -149,7 +149,7 @@ impl Renderer {
     /// itself ([`Groups::Bytes`]).
     pub fn pixels_plain(&self, state: &State) -> bool {
         let e = &state.enables;
-        let textured = (0..2).any(|u| {
+        let textured = (0..MAX_TEXTURE_UNITS).any(|u| {
             e.texture_1d[u] || e.texture_2d[u] || e.texture_3d[u] || e.texture_cube_map[u]
         });
         !self.count_coverage
@@ -167,7 +167,8 @@ impl Renderer {
         if d.cols.is_empty() || d.rows.is_empty() {
             return;
         }
-        let samplers = [Sampler::new(state, 0), Sampler::new(state, 1)];
+        let samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] =
+            std::array::from_fn(|u| Sampler::new(state, u));
         let rp = &state.raster_pos;
         let lit_sum = state.enables.lighting
             && state.light_model.color_control == crate::gl::SEPARATE_SPECULAR_COLOR;
@@ -177,7 +178,7 @@ impl Renderer {
             z: f64::from(rp.window.z),
             color: rp.color,
             secondary: sum,
-            tex: [0, 1].map(|u| {
+            tex: std::array::from_fn(|u| {
                 samplers[u]
                     .as_ref()
                     .map(|s| (s, rp.tex_coords[u].to_array()))
@@ -206,8 +207,7 @@ impl Renderer {
             // Polygon stipple applies to polygons only (§3.5.6).
             stipple: None,
             ops: super::fragops::Ops::new(state),
-            tex: None,
-            tex1: None,
+            tex: [None; MAX_TEXTURE_UNITS],
         };
         // The colour of a fragment never changes on its way when nothing but the colour write
         // applies: the groups go straight to the buffer.

@@ -128,12 +128,10 @@ impl Worker {
         if let (Some(d), Some(s)) = (rl.spec, spec) {
             copy(&mut w.v, d, csrc, s, 4);
         }
-        if let (Some(d), Some(s)) = (rl.tex, l.tex) {
-            copy(&mut w.v, d, v, s, 4);
-        }
-        // Unit 1's coordinates
-        if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
-            copy(&mut w.v, d, v, s, 4);
+        for (&d, &s) in rl.tex.iter().zip(&l.tex) {
+            if let (Some(d), Some(s)) = (d, s) {
+                copy(&mut w.v, d, v, s, 4);
+            }
         }
         if let (Some(d), Some(e), Some(n), Some(r)) = (rl.phong, l.eye, l.nrm, l.raw) {
             let ew = v.get(e + 3).copied().unwrap_or(1.0);

@@ -23,7 +23,7 @@ use super::clip::Clipper;
 use super::framebuffer::TILE;
 use super::vertex::{Lanes4, Layout};
 use crate::gl;
-use crate::state::State;
+use crate::state::{State, MAX_TEXTURE_UNITS};
 
 /// Largest snapped window coordinate magnitude (1/256 pixel units), for triangles and lines
 /// alike: ±2^29 (±2M pixels) leaves room for a line's half width (< 2^27) and the +128 of the
@@ -36,9 +36,9 @@ pub(super) const SNAP_LIMIT: f64 = (1u64 << 29) as f64;
 /// viewport, at most MAX_VIEWPORT_DIM wide, so only the snap clamps ever come near it.
 pub(super) const COORD_LIMIT: i64 = 1 << 30;
 
-/// Most interpolated floats per fragment: colour 4, secondary 4, two texture units 4 + 4
-/// (texture), PHONG_WIN 10, fog 1, the antialiasing coordinates 4.
-pub const MAXV: usize = 31;
+/// Most interpolated floats per fragment: colour 4, secondary 4, four texture units 4 each
+/// (`MAX_TEXTURE_UNITS`), PHONG_WIN 10, fog 1, the antialiasing coordinates 4.
+pub const MAXV: usize = 4 + 4 + 4 * MAX_TEXTURE_UNITS + 10 + 1 + 4;
 
 /// Where each interpolated value sits in a fragment's varyings.
 #[derive(Clone, Copy, Debug, Default)]
@@ -47,10 +47,8 @@ pub struct RLayout {
     pub n: usize,
     /// Secondary colour (primary is always at 0).
     pub spec: Option<usize>,
-    /// Texture coordinates.
-    pub tex: Option<usize>,
-    /// Texture coordinates of unit 1.
-    pub tex1: Option<usize>,
+    /// Texture coordinates of each unit (see `Layout::tex`).
+    pub tex: [Option<usize>; MAX_TEXTURE_UNITS],
     /// PHONG_WIN: eye xyz at `phong`, normal xyz at `phong + 3`, unlit colour at `phong + 6`.
     pub phong: Option<usize>,
     /// Fog coordinate (one float; fragment ops).
@@ -71,13 +69,11 @@ impl RLayout {
             r.spec = Some(r.n);
             r.n += 4;
         }
-        if l.tex.is_some() {
-            r.tex = Some(r.n);
-            r.n += 4;
-        }
-        if l.tex1.is_some() {
-            r.tex1 = Some(r.n);
-            r.n += 4;
+        for (d, s) in r.tex.iter_mut().zip(&l.tex) {
+            if s.is_some() {
+                *d = Some(r.n);
+                r.n += 4;
+            }
         }
         if l.nrm.is_some() {
             r.phong = Some(r.n);
@@ -199,7 +195,7 @@ pub struct SetupCtx {
     /// POINT_SPRITE: points are quads with the coordinates of `sprite_units` replaced.
     pub(super) sprite: bool,
     /// Varying offsets of the texture coordinates that COORD_REPLACE replaces.
-    pub(super) sprite_units: [Option<usize>; 2],
+    pub(super) sprite_units: [Option<usize>; MAX_TEXTURE_UNITS],
     /// POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT.
     pub(super) sprite_lower_left: bool,
     /// Framebuffer ∩ scissor, inclusive.
@@ -247,12 +243,10 @@ fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
     if let (Some(d), Some(s)) = (rl.spec, spec) {
         set(d, s, 4, true);
     }
-    if let (Some(d), Some(s)) = (rl.tex, l.tex) {
-        set(d, s, 4, false);
-    }
-    // Unit 1's coordinates
-    if let (Some(d), Some(s)) = (rl.tex1, l.tex1) {
-        set(d, s, 4, false);
+    for (&d, &s) in rl.tex.iter().zip(&l.tex) {
+        if let (Some(d), Some(s)) = (d, s) {
+            set(d, s, 4, false);
+        }
     }
     if let (Some(d), Some(s)) = (rl.fog, l.fog) {
         set(d, s, 1, false);
@@ -319,10 +313,7 @@ impl SetupCtx {
             point_smooth,
             line_smooth,
             sprite: state.enables.point_sprite,
-            sprite_units: [
-                rl.tex.filter(|_| p.coord_replace[0]),
-                rl.tex1.filter(|_| p.coord_replace[1]),
-            ],
+            sprite_units: std::array::from_fn(|u| rl.tex[u].filter(|_| p.coord_replace[u])),
             sprite_lower_left: p.sprite_coord_origin == gl::LOWER_LEFT,
             rect,
             tiles_x: tiles.0,

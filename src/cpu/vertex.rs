@@ -23,7 +23,7 @@ pub use lanes::{Block, Lanes3, Lanes4, Shaded, LANES};
 use super::batch::Batch;
 use super::setup::{SetupCtx, Win};
 use crate::gl;
-use crate::state::{Material, State, BACK, FRONT, MAX_LIGHTS};
+use crate::state::{Material, State, BACK, FRONT, MAX_LIGHTS, MAX_TEXTURE_UNITS};
 
 /// Where each attribute lives inside one processed vertex (offsets in `f32`s; clip position at 0).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -38,10 +38,9 @@ pub struct Layout {
     pub col_b: Option<usize>,
     /// Back secondary colour, under two-sided lighting with a secondary colour.
     pub spec_b: Option<usize>,
-    /// Texture coordinates of unit 0.
-    pub tex: Option<usize>,
-    /// Texture coordinates of unit 1 (when a texture target is enabled there).
-    pub tex1: Option<usize>,
+    /// Texture coordinates of each unit (unit 0 always in feedback; otherwise when a texture
+    /// target is enabled on the unit), in unit order.
+    pub tex: [Option<usize>; MAX_TEXTURE_UNITS],
     /// Eye-space position (x, y, z, w), for user clip planes and per-fragment lighting.
     pub eye: Option<usize>,
     /// Eye-space normal (after rescale/normalize), for per-fragment lighting.
@@ -68,7 +67,6 @@ impl Layout {
         let unit_on = |u: usize| {
             e.texture_1d[u] || e.texture_2d[u] || e.texture_3d[u] || e.texture_cube_map[u]
         };
-        let tex = unit_on(0);
         let user = state.enables.clip_planes.iter().any(|&b| b);
         let mut l = Layout {
             col: 4,
@@ -89,11 +87,10 @@ impl Layout {
                 l.spec_b = take(4);
             }
         }
-        if tex {
-            l.tex = take(4);
-        }
-        if unit_on(1) {
-            l.tex1 = take(4);
+        for (u, t) in l.tex.iter_mut().enumerate() {
+            if unit_on(u) {
+                *t = take(4);
+            }
         }
         if phong || user {
             l.eye = take(4);
@@ -117,8 +114,8 @@ impl Layout {
     /// matrix, whether or not texturing is on).
     pub fn for_feedback(state: &State) -> Self {
         let mut l = Self::for_state(state);
-        if l.tex.is_none() {
-            l.tex = Some(l.stride);
+        if l.tex[0].is_none() {
+            l.tex[0] = Some(l.stride);
             l.stride += 4;
         }
         l
@@ -552,6 +549,16 @@ pub fn process(
     }
 }
 
+/// One carried texture unit of a flush: where its coordinates go in a processed vertex, its
+/// TexGen (§2.11.4) and its texture matrix (§2.11.2).
+#[derive(Clone, Copy, Debug, Default)]
+struct TexOut {
+    at: usize,
+    unit: usize,
+    gen: Option<super::texgen::TexGenEval>,
+    matrix: Mat4,
+}
+
 struct Lit<'a> {
     state: &'a State,
     batch: &'a Batch,
@@ -575,17 +582,25 @@ impl Lit<'_> {
         let uniform = b.snapshots.is_empty();
         // The vertex colour is read only where an output or COLOR_MATERIAL needs it.
         let need_attribs = self.lighting.map_or(true, |g| g.color_material.is_some())
-            || l.tex.is_some()
-            || l.tex1.is_some()
+            || l.tex.iter().any(Option::is_some)
             || l.fog.is_some()
             || l.psize.is_some()
             || l.raw.is_some();
-        let tex_matrix = *state.texture_matrix[0].top();
-        let texgen = l.tex.and_then(|_| super::texgen::TexGenEval::new(state, 0));
-        let tex_matrix1 = *state.texture_matrix[1].top();
-        let texgen1 = l
-            .tex1
-            .and_then(|_| super::texgen::TexGenEval::new(state, 1));
+        // The carried units only, in unit order: a vertex pays for the units in use.
+        let mut units = [TexOut::default(); MAX_TEXTURE_UNITS];
+        let mut n_units = 0;
+        for (u, at) in l.tex.iter().enumerate() {
+            if let (Some(at), Some(dst)) = (at, units.get_mut(n_units)) {
+                *dst = TexOut {
+                    at: *at,
+                    unit: u,
+                    gen: super::texgen::TexGenEval::new(state, u),
+                    matrix: *state.texture_matrix[u].top(),
+                };
+                n_units += 1;
+            }
+        }
+        let units = &units[..n_units];
         // The lit colours of a block: every lane is rewritten for each block (in a non-uniform
         // block, every lane that is read), so they are initialised once.
         let mut lit = Shaded::<LANES>::default();
@@ -630,16 +645,7 @@ impl Lit<'_> {
                     if let Some(c) = pts.color.get_mut(k) {
                         *c = a.color;
                     }
-                    self.extras(
-                        o,
-                        a,
-                        pos[k],
-                        nin[k],
-                        eye.get(k),
-                        &texgen,
-                        &texgen1,
-                        &[tex_matrix, tex_matrix1],
-                    );
+                    self.extras(o, a, pos[k], nin[k], eye.get(k), units);
                 }
             }
             if let Some(lighting) = self.lighting {
@@ -732,20 +738,15 @@ impl Lit<'_> {
         p: Vec4,
         nrm: Vec3,
         eye: Vec4,
-        texgen: &Option<super::texgen::TexGenEval>,
-        texgen1: &Option<super::texgen::TexGenEval>,
-        tex_matrix: &[Mat4; 2],
+        units: &[TexOut],
     ) {
         let l = self.layout;
         let tf = self.tf;
         let (color, color2) = (a.color, a.color2);
         // TexGen (§2.11.4), then the texture matrix (§2.11.2)
-        for (at, tc, g, tm) in [
-            (l.tex, a.tex, texgen, &tex_matrix[0]),
-            (l.tex1, a.tex1, texgen1, &tex_matrix[1]),
-        ] {
-            let Some(t) = at else { continue };
-            let tc = match g {
+        for t in units {
+            let tc = a.tex.get(t.unit).copied().unwrap_or(Vec4::ZERO);
+            let tc = match &t.gen {
                 Some(g) => {
                     let mut n = tf.normal * nrm;
                     if g.needs_normal && tf.normalize {
@@ -755,7 +756,7 @@ impl Lit<'_> {
                 }
                 None => tc,
             };
-            put(o, t, *tm * tc);
+            put(o, t.at, t.matrix * tc);
         }
         // The fog coordinate (§3.10), |z_eye| for FRAGMENT_DEPTH as
         // Mesa's EYE_PLANE_ABSOLUTE default; |fog coordinate| otherwise, as Mesa.

@@ -47,4 +47,5 @@ mod texture;
 mod texture_errors;
 mod texture_gl;
 mod texture_targets_gl;
+mod texture_units_gl;
 mod window;
