@@ -1,4 +1,4 @@
-//! Renders the `bitmap-text` scene to `bitmap-text.png` (640x480): labels in the GLUT bitmap fonts over a lit teapot.
+//! Renders the `bitmap-text` scene to `bitmap-text.png` (640x480): labels in the GLUT bitmap fonts over a lit teapot, and a stroke-font title.
 //!
 //! ```text
 //! cargo run --release --example bitmap-text [OUT_DIR]

@@ -1,6 +1,7 @@
 //! The GLUT solids and wires lecture code draws with: sphere, cube, cone, torus and the Utah
 //! teapot, with the vertices, winding and normals freeglut 3.x gives them (fg_geometry.c,
-//! fg_teapot.c), and its bitmap fonts (`bitmap_character` and friends, in `text`).
+//! fg_teapot.c), and its bitmap and stroke fonts (`bitmap_character`, `stroke_character` and friends, in
+//! `text`).
 //!
 //! Each shape is first built as a [`Mesh`] (vertex and normal arrays plus index lists, one per
 //! Begin/End part, exactly as freeglut builds them), then drawn through the context's own
@@ -13,6 +14,7 @@
 //! a caller's `slices`/`stacks` can make us allocate.
 
 mod bitmap_fonts;
+mod stroke_fonts;
 mod teapot;
 mod text;
 
@@ -20,6 +22,10 @@ pub use text::{
     bitmap_character, bitmap_height, bitmap_length, bitmap_string, bitmap_width, BitmapFont,
     BitmapFontData, BITMAP_8_BY_13, BITMAP_9_BY_15, BITMAP_HELVETICA_10, BITMAP_HELVETICA_12,
     BITMAP_HELVETICA_18, BITMAP_TIMES_ROMAN_10, BITMAP_TIMES_ROMAN_24,
+};
+pub use text::{
+    stroke_character, stroke_height, stroke_length, stroke_lengthf, stroke_string, stroke_width,
+    stroke_widthf, StrokeFont, StrokeFontData, StrokeGlyph, STROKE_MONO_ROMAN, STROKE_ROMAN,
 };
 
 use crate::{gl, Context};

@@ -1,139 +1,138 @@
 #!/usr/bin/env python3
-"""Generates src/glut/bitmap_fonts.rs (GLUT's bitmap font data) from public font sources.
+"""Generates src/glut/bitmap_fonts.rs and src/glut/stroke_fonts.rs (GLUT's font data) from the
+GL calls the system's freeglut issues for each glyph, as dumped by tools/freeglut_fonts_dump.c:
 
-Bitmap fonts: the X11 75dpi/misc BDF fonts (ISO8859-1 encodings), as shipped by Debian's
-xfonts-base (misc-fixed 8x13, 9x15: public domain) and xfonts-75dpi (Adobe Times and Helvetica,
-whose notice permits use, copying and redistribution). Convert the .pcf.gz files with pcf2bdf
-first, or pass .bdf files directly:
+    cc -O2 -rdynamic -o /tmp/fgdump tools/freeglut_fonts_dump.c -lglut
+    xvfb-run -a /tmp/fgdump > /tmp/freeglut_fonts.txt
+    python3 tools/gen_glut_fonts.py /tmp/freeglut_fonts.txt src/glut
 
-    for f in misc/8x13 misc/9x15 75dpi/timR10 75dpi/timR24 75dpi/helvR10 75dpi/helvR12 \
-             75dpi/helvR18; do
-        zcat /usr/share/fonts/X11/$f-ISO8859-1.pcf.gz > /tmp/$(basename $f).pcf
-        pcf2bdf -o /tmp/$(basename $f).bdf /tmp/$(basename $f).pcf
-    done
-    python3 tools/gen_glut_fonts.py /tmp > src/glut/bitmap_fonts.rs
+The outputs are formatted with rustfmt (as `cargo fmt` leaves them) when rustfmt is on PATH.
 
-The output is formatted with rustfmt (as `cargo fmt` leaves it) when rustfmt is on PATH.
+Why from freeglut itself: GLUT programs expect freeglut's glyphs, and no public source gives them
+exactly. The bitmap fonts were first generated here from the X11 BDF fonts Debian ships
+(xfonts-base, xfonts-75dpi), but those are the 1999 ISO 10646 revision of the fonts, and 64 of
+the 1,785 glyphs differ from freeglut's (misc-fixed glyphs redrawn, ASCII quotes and hyphen in
+the Adobe fonts). Older revisions do not match either (rendered cells compared, padding bits
+ignored): the final X11R6 BDFs of the X Consortium tree (github.com/alanc/xc-historical,
+xc/fonts/bdf) differ in 142 glyphs (the misc-fixed control glyphs 1..31 above all), XFree86
+4.0's (github.com/th-otto/GEM-xfree86, misc/*-ISO8859-1.bdf and 75dpi) in 59; freeglut's
+fg_font_data.c names XFree86 4.3.0, of which no public copy of the fonts was found. freeglut's stroke fonts are the Hershey Roman simplex shapes with metrics from
+the X PEX Roman fonts, scaled by freeglut's genstroke utility; no other source has its numbers.
+The dump is of the data freeglut ships (fg_font_data.c, fg_stroke_roman.c,
+fg_stroke_mono_roman.c), whose licence notice the generated files carry.
 
-GLUT's layout of a bitmap glyph (the facts its data follows): every glyph is a cell as wide as
-its advance (the BDF DWIDTH) and as tall as the font's bounding box plus one row; the cell's
-origin is (0, 1 - box_y), so row 0 is one row below the lowest descender and column 0 is the
-pen position. Pixels of a glyph outside its cell are dropped. Codes 127..159 (and 0..31 in
-the proportional fonts) draw code 32.
-Rows run bottom to top, each ceil(width / 8) bytes, most significant bit first.
+Bitmap glyph layout (as freeglut draws it): glBitmap(width, height, 0, yorig, width, 0, bits),
+a cell as wide as its advance, `height` rows tall (the font's height), rows bottom to top,
+ceil(width / 8) bytes a row, most significant bit first. freeglut draws codes 1..=255.
+
+Stroke glyphs: codes 32..=127 (freeglut's fonts hold 128 codes, 0..=31 empty); each is a list
+of GL_LINE_STRIP vertex lists in font units and an advance (the glTranslatef after it).
 """
 import os
 import shutil
+import struct
 import subprocess
 import sys
 
-FONTS = [
-    ("BITMAP_8_BY_13", "8x13"),
-    ("BITMAP_9_BY_15", "9x15"),
-    ("BITMAP_TIMES_ROMAN_10", "timR10"),
-    ("BITMAP_TIMES_ROMAN_24", "timR24"),
-    ("BITMAP_HELVETICA_10", "helvR10"),
-    ("BITMAP_HELVETICA_12", "helvR12"),
-    ("BITMAP_HELVETICA_18", "helvR18"),
+BITMAP = [
+    "BITMAP_8_BY_13",
+    "BITMAP_9_BY_15",
+    "BITMAP_TIMES_ROMAN_10",
+    "BITMAP_TIMES_ROMAN_24",
+    "BITMAP_HELVETICA_10",
+    "BITMAP_HELVETICA_12",
+    "BITMAP_HELVETICA_18",
 ]
+STROKE = ["STROKE_ROMAN", "STROKE_MONO_ROMAN"]
+
+NOTICE = """\
+// The font data of freeglut 3.x (fg_font_data.c, fg_stroke_roman.c, fg_stroke_mono_roman.c), as
+// the system's libglut issues it to GL. Its notice:
+//
+// Copyright (c) 1999-2000 Pawel W. Olszta. All Rights Reserved.
+// Written by Pawel W. Olszta, <olszta@sourceforge.net>
+// Portions copyright (c) 2004, the OpenGLUT project contributors.
+//
+// Permission is hereby granted, free of charge, to any person obtaining a
+// copy of this software and associated documentation files (the "Software"),
+// to deal in the Software without restriction, including without limitation
+// the rights to use, copy, modify, merge, publish, distribute, sublicense,
+// and/or sell copies of the Software, and to permit persons to whom the
+// Software is furnished to do so, subject to the following conditions:
+//
+// The above copyright notice and this permission notice shall be included
+// in all copies or substantial portions of the Software.
+//
+// THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS
+// OR IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+// FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT.  IN NO EVENT SHALL
+// PAWEL W. OLSZTA BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER
+// IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN
+// CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
+"""
 
 
-def parse_bdf(path):
-    glyphs = {}
-    box = None
-    name = None
-    with open(path, encoding="latin-1") as f:
-        lines = iter(f.read().splitlines())
-    for line in lines:
-        if line.startswith("FONT "):
-            name = line[5:].strip()
-        elif line.startswith("FONTBOUNDINGBOX"):
-            box = [int(v) for v in line.split()[1:]]
-        elif line.startswith("STARTCHAR"):
-            enc = dw = bbx = None
-            rows = []
-            for line in lines:
-                if line.startswith("ENCODING"):
-                    enc = int(line.split()[1])
-                elif line.startswith("DWIDTH"):
-                    dw = int(line.split()[1])
-                elif line.startswith("BBX"):
-                    bbx = [int(v) for v in line.split()[1:]]
-                elif line.startswith("BITMAP"):
-                    for line in lines:
-                        if line.startswith("ENDCHAR"):
-                            break
-                        rows.append(line.strip())
-                    break
-            if enc is not None and 0 <= enc < 256:
-                glyphs[enc] = (dw, bbx, rows)
-    return name, box, glyphs
+def f32(text):
+    """The shortest decimal that reads back as the f32 `text` (C's %a) names, as Rust source."""
+    v = float.fromhex(text)
+    assert struct.unpack("f", struct.pack("f", v))[0] == v, text
+    for p in range(1, 10):
+        s = "%.*g" % (p, v)
+        if struct.unpack("f", struct.pack("f", float(s)))[0] == v:
+            break
+    if "e" in s:
+        s = repr(float(s))
+    if "." not in s and "e" not in s:
+        s += ".0"
+    return s
 
 
-def cell(box, glyph):
-    dw, (w, h, x0, y0), rows = glyph
-    height = box[1] + 1
-    yorig = 1 - box[3]
-    stride = (dw + 7) // 8
-    out = bytearray(stride * height)
-    for i, row in enumerate(rows):
-        bits = int(row, 16) if row else 0
-        nbits = len(row) * 4
-        y = y0 + (h - 1 - i)  # baseline-relative
-        r = y + yorig
-        if not 0 <= r < height:
-            continue
-        for j in range(w):
-            if bits >> (nbits - 1 - j) & 1:
-                x = x0 + j
-                if 0 <= x < dw:
-                    out[r * stride + x // 8] |= 0x80 >> (x % 8)
-    return dw, bytes(out)
+def parse(path):
+    bitmap = {}
+    stroke = {}
+    glyph = None
+    with open(path) as f:
+        for line in f.read().splitlines():
+            t = line.split()
+            if t[0] == "BF":
+                bitmap[int(t[1])] = {"height": int(t[2]), "name": t[3], "glyphs": {}}
+            elif t[0] == "B":
+                i, code, w, h = int(t[1]), int(t[2]), int(t[3]), int(t[4])
+                xo, yo, xm, ym = (float.fromhex(v) for v in t[5:9])
+                font = bitmap[i]
+                assert h == font["height"] and xo == 0 and ym == 0 and xm == w, line
+                assert yo == int(yo)
+                font.setdefault("yorig", int(yo))
+                assert font["yorig"] == int(yo), line
+                bits = b"" if t[9] == "-" else bytes.fromhex(t[9])
+                assert len(bits) == (w + 7) // 8 * h, line
+                font["glyphs"][code] = (w, bits)
+            elif t[0] == "SF":
+                stroke[int(t[1])] = {"height": t[2], "name": t[3], "glyphs": {}}
+            elif t[0] == "S":
+                glyph = {"font": int(t[1]), "code": int(t[2]), "width": t[3], "strips": []}
+                glyph["advance"] = None
+            elif t[0] == "L":
+                xs = t[1:]
+                glyph["strips"].append([(xs[k], xs[k + 1]) for k in range(0, len(xs), 2)])
+            elif t[0] == "T":
+                assert glyph["advance"] is None and t[2] == "0x0p+0" and t[3] == "0x0p+0", line
+                glyph["advance"] = t[1]
+            elif t[0] == "E":
+                if glyph["advance"] is not None:
+                    assert float.fromhex(glyph["advance"]) == float.fromhex(glyph["width"])
+                    assert glyph["code"] < 128
+                    stroke[glyph["font"]]["glyphs"][glyph["code"]] = glyph
+                else:
+                    assert not glyph["strips"] and float.fromhex(glyph["width"]) == 0, glyph
+                glyph = None
+            else:
+                raise SystemExit(f"unexpected line {line!r}")
+    assert sorted(bitmap) == list(range(7)) and sorted(stroke) == [0, 1]
+    return bitmap, stroke
 
 
-def main():
-    bdf_dir = sys.argv[1]
-    out = []
-    out.append("// @generated by tools/gen_glut_fonts.py from the X11 BDF fonts; do not edit.")
-    out.append("// misc-fixed 8x13/9x15: public domain. Adobe Times/Helvetica 75dpi: Copyright (c)")
-    out.append("// 1984, 1987 Adobe Systems Incorporated, (c) 1988, 1991 Digital Equipment Corporation;")
-    out.append("// permission to use, copy, modify and distribute granted (Debian xfonts-75dpi).")
-    out.append("")
-    out.append("use super::text::BitmapFontData;")
-    out.append("")
-    for const, base in FONTS:
-        name, box, glyphs = parse_bdf(os.path.join(bdf_dir, base + ".bdf"))
-        height = box[1] + 1
-        yorig = 1 - box[3]
-        proportional = "-P-" in name.upper()
-        widths = []
-        offsets = []
-        blob = bytearray()
-        for code in range(256):
-            c = 32 if 127 <= code < 160 or (proportional and code < 32) else code
-            g = glyphs.get(c)
-            if g is None:
-                widths.append(0)
-                offsets.append(len(blob))
-                continue
-            dw, b = cell(box, g)
-            widths.append(dw)
-            offsets.append(len(blob))
-            blob += b
-        out.append(f"/// `{name}`")
-        out.append(f"pub(super) static {const}: BitmapFontData = BitmapFontData {{")
-        out.append(f"    name: {name.lower()!r},".replace("'", '"'))
-        out.append(f"    height: {height},")
-        out.append(f"    yorig: {yorig},")
-        out.append(f"    widths: {widths!r},")
-        out.append(f"    offsets: {offsets!r},")
-        out.append("    bits: &[")
-        for i in range(0, len(blob), 24):
-            out.append("        " + ", ".join(str(v) for v in blob[i : i + 24]) + ",")
-        out.append("    ],")
-        out.append("};")
-        out.append("")
-    text = "\n".join(out) + "\n"
+def rustfmt(text):
     if shutil.which("rustfmt"):
         text = subprocess.run(
             ["rustfmt", "--edition", "2021", "--emit", "stdout"],
@@ -142,7 +141,74 @@ def main():
             text=True,
             check=True,
         ).stdout
-    sys.stdout.write(text)
+    return text
+
+
+def bitmap_rs(bitmap):
+    out = ["// @generated by tools/gen_glut_fonts.py from freeglut's glyphs; do not edit."]
+    out += NOTICE.splitlines()
+    out += ["", "use super::text::BitmapFontData;", ""]
+    for i, const in enumerate(BITMAP):
+        font = bitmap[i]
+        assert sorted(font["glyphs"]) == list(range(1, 256))
+        widths, offsets, blob = [0], [0], bytearray()
+        for code in range(1, 256):
+            w, bits = font["glyphs"][code]
+            widths.append(w)
+            offsets.append(len(blob))
+            blob += bits
+        out.append(f"/// `{font['name']}`")
+        out.append(f"pub(super) static {const}: BitmapFontData = BitmapFontData {{")
+        out.append(f'    name: "{font["name"]}",')
+        out.append(f"    height: {font['height']},")
+        out.append(f"    yorig: {font['yorig']},")
+        out.append(f"    widths: {widths!r},")
+        out.append(f"    offsets: {offsets!r},")
+        out.append("    bits: &[")
+        for k in range(0, len(blob), 24):
+            out.append("        " + ", ".join(str(v) for v in blob[k : k + 24]) + ",")
+        out.append("    ],")
+        out.append("};")
+        out.append("")
+    return rustfmt("\n".join(out) + "\n")
+
+
+def stroke_rs(stroke):
+    out = ["// @generated by tools/gen_glut_fonts.py from freeglut's glyphs; do not edit."]
+    out += NOTICE.splitlines()
+    out += ["", "use super::text::{StrokeFontData, StrokeGlyph};", ""]
+    for i, const in enumerate(STROKE):
+        font = stroke[i]
+        assert sorted(font["glyphs"]) == list(range(32, 128)), sorted(font["glyphs"])
+        out.append(f"/// freeglut's `{font['name']}` stroke font.")
+        out.append(f"pub(super) static {const}: StrokeFontData = StrokeFontData {{")
+        out.append(f'    name: "{font["name"]}",')
+        out.append(f"    height: {f32(font['height'])},")
+        out.append("    glyphs: [")
+        for code in range(128):
+            g = font["glyphs"].get(code)
+            if g is None:
+                out.append("        None,")
+                continue
+            strips = ", ".join(
+                "&[" + ", ".join(f"[{f32(x)}, {f32(y)}]" for x, y in s) + "]" for s in g["strips"]
+            )
+            out.append(f"        // {code}: {chr(code)!r}")
+            out.append(
+                f"        Some(StrokeGlyph {{ advance: {f32(g['advance'])}, strips: &[{strips}] }}),"
+            )
+        out.append("    ],")
+        out.append("};")
+        out.append("")
+    return rustfmt("\n".join(out) + "\n")
+
+
+def main():
+    bitmap, stroke = parse(sys.argv[1])
+    with open(os.path.join(sys.argv[2], "bitmap_fonts.rs"), "w") as f:
+        f.write(bitmap_rs(bitmap))
+    with open(os.path.join(sys.argv[2], "stroke_fonts.rs"), "w") as f:
+        f.write(stroke_rs(stroke))
 
 
 if __name__ == "__main__":

@@ -1,17 +1,22 @@
 //! The GLUT text scene: `bitmap-text`, labels in every GLUT bitmap font over a lit teapot, as
-//! lecture code annotates a 3D view with `glutBitmapString` at `glRasterPos` positions.
+//! lecture code annotates a 3D view with `glutBitmapString` at `glRasterPos` positions, and a
+//! title and two lines in the GLUT stroke fonts (`glutStrokeCharacter`, `glutStrokeString`).
 //!
 //! What it exercises: Bitmap under freeglut's pushed/tight unpack modes, the raster position
 //! through perspective (a label attached to the teapot) and through a pixel-aligned ortho
 //! projection, glyphs partly outside the window (the raster position valid, the cells clipped
 //! at the right and bottom edges), one label whose raster position falls outside the view volume
 //! (invalid: nothing of it draws, and its glyphs do not move the raster position), multi-line
-//! strings, and the raster colour taken from the current colour when the raster position is set.
+//! strings, and the raster colour taken from the current colour when the raster position is set;
+//! stroke glyphs as line strips under a scaled (and, for Mono Roman, rotated) modelview matrix,
+//! with glutStrokeString's newline translation.
 //!
 //! Design decision: the ortho labels sit at half-pixel raster positions, so the floor in
 //! Bitmap's placement (§3.7) never lands on a tie where the CPU pipeline and llvmpipe could round
 //! apart; the perspective label's position is a plain float whichever way it lands, since both
-//! floor the same transformed value.
+//! floor the same transformed value. The stroke text is translated to a quarter-pixel offset for
+//! the same reason: line endpoints off the half-pixel grid keep the diamond-exit rule away from
+//! ties.
 
 use crate::gl::*;
 use crate::{glu, glut, Context};
@@ -21,7 +26,7 @@ use super::{Scene, LECTURE};
 /// The scene's entry.
 pub const SCENES: [Scene; 1] = [Scene {
     name: "bitmap-text",
-    summary: "GLUT text: labels in the seven GLUT bitmap fonts over a lit teapot (glutBitmapString at RasterPos), glyphs clipped at the window edges, a label at an invalid raster position that draws nothing",
+    summary: "GLUT text: labels in the seven GLUT bitmap fonts over a lit teapot (glutBitmapString at RasterPos), glyphs clipped at the window edges, a label at an invalid raster position that draws nothing, a stroke-font title (Roman) and two rotated lines of Mono Roman",
     tolerance: LECTURE,
     default_size: (640, 480),
     draw: bitmap_text,
@@ -149,6 +154,30 @@ fn bitmap_text(gl: &mut Context) {
     for c in "Top edge: Ag".chars() {
         glut::bitmap_character(gl, glut::BITMAP_HELVETICA_18, c as i32);
     }
+
+    // The stroke-font title, centred with glutStrokeLength, as lecture code scales and
+    // translates glutStrokeCharacter's 152-unit glyphs into place.
+    let title = "GLUT stroke title";
+    let scale = 0.25f32;
+    let len = glut::stroke_length(glut::STROKE_ROMAN, title) as f32 * scale;
+    gl.color3f(1.0, 0.85, 0.3);
+    gl.push_matrix();
+    gl.translatef(((w - len) * 0.5).floor() + 0.25, 95.25, 0.0);
+    gl.scalef(scale, scale, 1.0);
+    for c in title.chars() {
+        glut::stroke_character(gl, glut::STROKE_ROMAN, c as i32);
+    }
+    gl.pop_matrix();
+
+    // Two lines of Mono Roman through glutStrokeString (the newline steps back and down by
+    // the font's height), turned a little so the strokes meet the pixel grid at odd angles.
+    gl.color3f(0.6, 1.0, 0.8);
+    gl.push_matrix();
+    gl.translatef(478.25, 152.25, 0.0);
+    gl.rotatef(8.0, 0.0, 0.0, 1.0);
+    gl.scalef(0.12, 0.12, 1.0);
+    glut::stroke_string(gl, glut::STROKE_MONO_ROMAN, "Mono Roman\n0123 !?{}");
+    gl.pop_matrix();
 
     gl.pop_matrix();
     gl.matrix_mode(PROJECTION);

@@ -5,17 +5,29 @@
  *   H <font> <glutBitmapHeight>
  *   C <font> <code> <glutBitmapWidth> <raster x advance> <W*H '0'/'1' pixels, rows bottom-up>
  *   S <font> <W*H pixels of glutBitmapString(font, STRING)>
+ *   SH <stroke font> <glutStrokeHeight (float bits, hex)>
+ *   SC <stroke font> <code> <glutStrokeWidth> <glutStrokeWidthf (float bits, hex)>
+ *      <modelview x translation after the glyph (float bits, hex)> <W*H pixels>
+ *   SL <stroke font> <glutStrokeLength(STRING)> <glutStrokeLengthf(STRING) (float bits, hex)>
+ *   SS <stroke font> <SW*SH pixels of glutStrokeString(font, STRING)>
  *
  * Each glyph is drawn alone at raster position (4.5, 8.5) of a W x H window under a pixel
- * ortho projection, and read back with glReadPixels (a pixel is '1' where red > 127). */
+ * ortho projection, and read back with glReadPixels (a pixel is '1' where red > 127). Each
+ * stroke glyph (codes 1..=255) is drawn alone under glTranslatef(STX, STY, 0) and
+ * glScalef(SCALE, SCALE, 1); the stroke string at (4.5, 40.5) under glScalef(SSCALE, SSCALE, 1). */
 #include <GL/freeglut.h>
 #include <stdio.h>
+#include <string.h>
 
 #define W 48
 #define H 40
 #define SW 256
 #define SH 64
 #define STRING "Hello GLUT\nline two 0123"
+#define STX 4.25f
+#define STY 10.25f
+#define SCALE 0.25f
+#define SSCALE 0.125f
 
 static void *const fonts[7] = {
     GLUT_BITMAP_8_BY_13,       GLUT_BITMAP_9_BY_15,      GLUT_BITMAP_TIMES_ROMAN_10,
@@ -23,7 +35,16 @@ static void *const fonts[7] = {
     GLUT_BITMAP_HELVETICA_18,
 };
 
+static void *const strokes[2] = {GLUT_STROKE_ROMAN, GLUT_STROKE_MONO_ROMAN};
+
 static unsigned char px[SW * SH * 4];
+
+/* A float's bits, for exact comparison. */
+static unsigned bits(GLfloat v) {
+    unsigned u;
+    memcpy(&u, &v, sizeof u);
+    return u;
+}
 
 static void dump(FILE *f, int w, int h) {
     int i;
@@ -72,6 +93,34 @@ int main(int argc, char **argv) {
         glFinish();
         fprintf(f, "S %d ", i);
         dump(f, SW, SH);
+    }
+    for (i = 0; i < 2; i++) {
+        fprintf(f, "SH %d %08x\n", i, bits(glutStrokeHeight(strokes[i])));
+        for (c = 1; c < 256; c++) {
+            GLfloat m[16];
+            glClear(GL_COLOR_BUFFER_BIT);
+            glLoadIdentity();
+            glTranslatef(STX, STY, 0);
+            glScalef(SCALE, SCALE, 1);
+            glutStrokeCharacter(strokes[i], c);
+            glGetFloatv(GL_MODELVIEW_MATRIX, m);
+            glFinish();
+            fprintf(f, "SC %d %d %d %08x %08x ", i, c, glutStrokeWidth(strokes[i], c),
+                    bits(glutStrokeWidthf(strokes[i], c)), bits(m[12]));
+            dump(f, W, H);
+        }
+        fprintf(f, "SL %d %d %08x\n", i,
+                glutStrokeLength(strokes[i], (const unsigned char *)STRING),
+                bits(glutStrokeLengthf(strokes[i], (const unsigned char *)STRING)));
+        glClear(GL_COLOR_BUFFER_BIT);
+        glLoadIdentity();
+        glTranslatef(4.5f, 40.5f, 0);
+        glScalef(SSCALE, SSCALE, 1);
+        glutStrokeString(strokes[i], (const unsigned char *)STRING);
+        glFinish();
+        fprintf(f, "SS %d ", i);
+        dump(f, SW, SH);
+        glLoadIdentity();
     }
     fclose(f);
     return 0;
