@@ -432,7 +432,9 @@ impl FragCtx<'_> {
             && bufs.color2.is_none()
         {
             if let (Some(pl), Some(dst)) = (
-                planes.get(3..15).and_then(|p| <&[f32; 12]>::try_from(p).ok()),
+                planes
+                    .get(3..15)
+                    .and_then(|p| <&[f32; 12]>::try_from(p).ok()),
                 bufs.color.get_mut(base..base + n),
             ) {
                 super::lanes::flat_rgba(dst, mask, x0 - ox, fy, pl);

@@ -292,15 +292,21 @@ impl Framebuffer {
             return None;
         }
         let i = self.index(x as usize, y as usize);
-        let fill = self.pending.get(i / TILE_PIXELS).copied().unwrap_or_default();
+        let fill = self
+            .pending
+            .get(i / TILE_PIXELS)
+            .copied()
+            .unwrap_or_default();
         let pending_color = match (buf, &self.front) {
             (ColorBuf::Front, Some(_)) => fill.front,
             _ => fill.main,
         };
         Some((
             pending_color.map_or_else(|| self.buffer(buf).get(i).copied(), Some)?,
-            fill.depth.map_or_else(|| self.depth.get(i).copied(), Some)?,
-            fill.stencil.map_or_else(|| self.stencil.get(i).copied(), Some)?,
+            fill.depth
+                .map_or_else(|| self.depth.get(i).copied(), Some)?,
+            fill.stencil
+                .map_or_else(|| self.stencil.get(i).copied(), Some)?,
         ))
     }
 
@@ -378,7 +384,6 @@ impl Framebuffer {
         self.any_pending = false;
     }
 
-
     /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask` (colour: those DRAW_BUFFER
     /// names), inside the scissor box when the scissor test is enabled, through ColorMask /
     /// DepthMask / StencilMask. A depth or stencil bit without that buffer clears nothing.
@@ -409,8 +414,8 @@ impl Framebuffer {
         let front_exists = self.front.is_some();
         // Tiles whose part inside the window the clear covers whole, with full write masks,
         // are only marked (lazy clear); the others are written now, below.
-        let lazy_ok = (color.is_none() || cmask == [true; 4])
-            && (stencil.is_none() || smask == 0xFF);
+        let lazy_ok =
+            (color.is_none() || cmask == [true; 4]) && (stencil.is_none() || smask == 0xFF);
         let mut eager = Vec::new();
         for (t, fill) in self.pending.iter_mut().enumerate() {
             let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);

@@ -706,7 +706,9 @@ fn rasterise(
             if !fill.is_empty() {
                 match front_first {
                     true => fill.materialize(None, Some(&mut *color), depth, stencil),
-                    false => fill.materialize(Some(&mut *color), color2.as_deref_mut(), depth, stencil),
+                    false => {
+                        fill.materialize(Some(&mut *color), color2.as_deref_mut(), depth, stencil)
+                    }
                 }
             }
             let mut bufs = TileBufs {
