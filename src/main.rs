@@ -18,6 +18,7 @@ use std::time::Instant;
 use clap::{Parser, Subcommand, ValueEnum};
 
 mod run;
+mod sha256;
 use image::RgbaImage;
 
 use fixedgl::compare::compare;
@@ -54,6 +55,12 @@ enum Command {
         /// Output file (default: <scene>-<backend>.png).
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Write no file: print the SHA-256 of the image's RGBA8 bytes (top row first) and the
+        /// scene's name, as `sha256sum` would print them; SCENE may be `all`. A regression
+        /// check for work that must not change a pixel (speed work: hash before, hash after),
+        /// never a test of correctness, which is the comparison with the driver.
+        #[arg(long, conflicts_with = "output")]
+        hash: bool,
     },
     /// Render scenes on both pipelines, print the metrics and write an HTML report; exits
     /// non-zero if a scene exceeds its tolerance.
@@ -90,6 +97,10 @@ enum Command {
         /// Print the results as one JSON object instead of the table.
         #[arg(long)]
         json: bool,
+        /// Measure the CPU pipeline only (no driver frames; the gl columns are empty): for
+        /// profiling and for `perf stat`, whose counts then are the CPU side's alone.
+        #[arg(long)]
+        cpu_only: bool,
     },
     /// Run a C or Python program unmodified on fixedgl: its libGL, libEGL, libOpenGL and
     /// libOSMesa are fixedgl's C ABI library (see docs/c-abi.md).
@@ -202,7 +213,11 @@ fn main() -> ExitCode {
             backend,
             size,
             output,
-        } => render(&scene, backend, size, output, device),
+            hash,
+        } => match hash {
+            true => render_hashes(&scene, backend, size, device),
+            false => render(&scene, backend, size, output, device),
+        },
         Command::Compare {
             scenes,
             size,
@@ -216,7 +231,8 @@ fn main() -> ExitCode {
             frames,
             threads,
             json,
-        } => bench(&scenes, size, frames, threads, json, device),
+            cpu_only,
+        } => bench(&scenes, size, frames, threads, json, cpu_only, device),
         Command::View {
             scenes,
             compare,
@@ -344,6 +360,25 @@ fn render(
     Ok(ExitCode::SUCCESS)
 }
 
+/// `render --hash`: each selected scene's image hashed (see `Command::Render::hash`).
+fn render_hashes(
+    name: &str,
+    backend: Backend,
+    size: Option<(u32, u32)>,
+    device: &str,
+) -> Result<ExitCode, CliError> {
+    for scene in select(&[name.to_owned()], false)? {
+        let (w, h) = size.unwrap_or(scene.default_size);
+        let (mut ctx, calls) = scene.record(w, h)?;
+        let img = match backend {
+            Backend::Cpu => ctx.to_image(),
+            Backend::Gl => gl_side::render(&calls, w, h, scene.config, device)?.0,
+        };
+        println!("{}  {}", sha256::hex(img.as_raw()), scene.name);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
 fn compare_scenes(
     names: &[String],
     size: Option<(u32, u32)>,
@@ -441,6 +476,7 @@ fn bench(
     frames: u32,
     threads: Option<u32>,
     json: bool,
+    cpu_only: bool,
     device: &str,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
@@ -461,7 +497,10 @@ fn bench(
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
-        let mut gl = gl_side::Bench::new(w, h, scene.config, device)?;
+        let mut gl = match cpu_only {
+            true => None,
+            false => Some(gl_side::Bench::new(w, h, scene.config, device)?),
+        };
         // Like the GL side (one context, state restored around each frame), one CPU context
         // reset to its initial state before each frame; its framebuffer memory is reused.
         let mut ctx = Context::with_config(w, h, scene.config)?;
@@ -476,12 +515,13 @@ fn bench(
         };
         // One warm-up frame each (shader compilation, first-touch allocation), then interleaved.
         cpu_frame()?;
-        gl.frame(&calls);
+        let mut gl_frame = || gl.as_mut().map_or(f64::NAN, |gl| gl.frame(&calls));
+        gl_frame();
         let mut cpu_times = Vec::new();
         let mut gl_times = Vec::new();
         for _ in 0..frames {
             cpu_times.push(cpu_frame()?);
-            gl_times.push(gl.frame(&calls));
+            gl_times.push(gl_frame());
         }
         let row = BenchRow {
             name: scene.name,
@@ -512,6 +552,7 @@ fn bench(
         .ok()
         .and_then(|v| v.parse::<usize>().ok())
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let api_ns = api_call_ns()?;
     if json {
         let scenes: Vec<serde_json::Value> = rows
             .iter()
@@ -532,6 +573,7 @@ fn bench(
             "gl_threads": gl_threads,
             "geomean_ratio": geomean,
             "worst": worst.map(|r| r.name),
+            "rust_api_ns_per_call": api_ns,
             "scenes": scenes,
         });
         println!("{out}");
@@ -540,8 +582,35 @@ fn bench(
             "geometric mean cpu/gl {geomean:.2}; worst {}; threads: cpu {cpu_threads}, gl {gl_threads}",
             worst.map_or_else(|| "-".to_string(), |r| format!("{} ({:.2})", r.name, ratio(r)))
         );
+        println!(
+            "Rust API: {api_ns:.1} ns a call (Color3f + Vertex3f pairs, points outside the view \
+             volume: validation, batching and the vertex stage, no fragments)"
+        );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Nanoseconds a call of the Rust API costs: the median of five runs of 100k Color3f +
+/// Vertex3f pairs inside Begin(POINTS)/End on a 64x64 context, every point beyond the far
+/// right of the view volume (clipped: no fragments), up to Finish.
+fn api_call_ns() -> Result<f64, Error> {
+    const PAIRS: u32 = 100_000;
+    let mut ctx = Context::new(64, 64)?;
+    let mut runs: Vec<f64> = (0..5)
+        .map(|_| {
+            let start = Instant::now();
+            ctx.begin(fixedgl::gl::POINTS);
+            for i in 0..PAIRS {
+                let f = i as f32 * 1e-6;
+                ctx.color3f(f, 0.5, 0.25);
+                ctx.vertex3f(2.0 + f, 0.0, 0.0);
+            }
+            ctx.end();
+            ctx.finish();
+            start.elapsed().as_secs_f64() * 1e9 / f64::from(2 * PAIRS)
+        })
+        .collect();
+    Ok(median_ms(&mut runs))
 }
 
 fn replay(

@@ -120,7 +120,7 @@ impl Context {
             true => ColorBuf::Front,
             false => ColorBuf::Main,
         };
-        self.renderer.framebuffer().bytes_top_down(buf)
+        self.renderer.color_bytes_top_down(buf)
     }
 
     /// Resizes every buffer of the framebuffer to `width` x `height` (a window resized; not a

@@ -148,7 +148,9 @@ impl Context {
             self.renderer.flush(&self.state);
         }
         let (w, h) = self.renderer.size();
-        let bytes = self.renderer.framebuffer().color_bytes_top_down();
+        let bytes = self
+            .renderer
+            .color_bytes_top_down(crate::cpu::framebuffer::ColorBuf::Main);
         // The buffer holds exactly w·h pixels, so `from_raw` cannot fail (asserted in debug
         // builds); a blank image if it did.
         debug_assert_eq!(bytes.len(), w as usize * h as usize * 4);

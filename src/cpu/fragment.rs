@@ -399,6 +399,14 @@ impl FragCtx<'_> {
                     b0 + by * fy,
                     a0 + ay * fy,
                 );
+                // One colour buffer written whole: eight fragments at a time (`lanes`).
+                if !self.count && self.color_mask == [true; 4] && bufs.color2.is_none() {
+                    let co = [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax];
+                    if let Some(dst) = bufs.color.get_mut(base..base + n) {
+                        super::lanes::smooth_rgba(dst, mask, x0 - ox, &co);
+                    }
+                    return;
+                }
                 while mask != 0 {
                     let k = mask.trailing_zeros() as usize;
                     mask &= mask - 1;
@@ -414,6 +422,24 @@ impl FragCtx<'_> {
                 }
             }
             return;
+        }
+        // FLAT colour alone, one colour buffer written whole: eight fragments at a time.
+        if nv == 4
+            && nflat == 4
+            && p.flags & F_PHONG == 0
+            && !self.count
+            && self.color_mask == [true; 4]
+            && bufs.color2.is_none()
+        {
+            if let (Some(pl), Some(dst)) = (
+                planes
+                    .get(3..15)
+                    .and_then(|p| <&[f32; 12]>::try_from(p).ok()),
+                bufs.color.get_mut(base..base + n),
+            ) {
+                super::lanes::flat_rgba(dst, mask, x0 - ox, fy, pl);
+                return;
+            }
         }
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let mut v = [0.0f32; super::setup::MAXV];
@@ -548,6 +574,10 @@ impl FragCtx<'_> {
         let Some(row) = bufs.depth.get_mut(base..end) else {
             return 0;
         };
+        if !MASKED {
+            let live = u64::MAX >> (64 - row.len().clamp(1, 64));
+            return super::lanes::depth_span(row, zrow, dz, fx0, live, self.depth_mask, pass);
+        }
         let mut mask = 0;
         for (k, stored) in row.iter_mut().enumerate() {
             if MASKED && live & (1 << k) == 0 {

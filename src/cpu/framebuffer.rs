@@ -37,6 +37,60 @@ pub struct Framebuffer {
     pub(crate) accum: Option<Vec<[i16; 4]>>,
     /// Which buffers exist (the context's configuration).
     config: ContextConfig,
+    /// Lazy clears, one entry per tile: the values a `Clear` covering the whole tile left to
+    /// be written (see [`Fill`]). What reads or writes the buffers directly materialises them
+    /// first ([`Framebuffer::materialize_all`]); the rasteriser materialises a tile when a
+    /// primitive reaches it, and readback reads a pending colour without writing it.
+    pub(crate) pending: Vec<Fill>,
+    /// Some tile has a pending fill.
+    any_pending: bool,
+}
+
+/// A tile's pending clear: the value each buffer is to be filled with (`None`: that buffer's
+/// memory is current). Only whole-tile clears with full write masks are deferred; since a
+/// fill replaces the whole tile's contents, a later whole-tile clear simply replaces the value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Fill {
+    /// `Framebuffer::color`.
+    pub(crate) main: Option<[u8; 4]>,
+    /// `Framebuffer::front`.
+    pub(crate) front: Option<[u8; 4]>,
+    pub(crate) depth: Option<u32>,
+    pub(crate) stencil: Option<u8>,
+}
+
+impl Fill {
+    /// Nothing pending.
+    #[inline]
+    pub(crate) fn is_empty(&self) -> bool {
+        *self == Fill::default()
+    }
+
+    /// Writes the pending depth and stencil values into the tile's slices, and the colour ones
+    /// whose slices are given (`main`, `front`), clearing what it wrote from `self`.
+    #[inline]
+    pub(crate) fn materialize(
+        &mut self,
+        main: Option<&mut [[u8; 4]]>,
+        front: Option<&mut [[u8; 4]]>,
+        depth: &mut [u32],
+        stencil: &mut [u8],
+    ) {
+        if let (Some(v), Some(buf)) = (self.main, main) {
+            buf.fill(v);
+            self.main = None;
+        }
+        if let (Some(v), Some(buf)) = (self.front, front) {
+            buf.fill(v);
+            self.front = None;
+        }
+        if let Some(v) = self.depth.take() {
+            depth.fill(v);
+        }
+        if let Some(v) = self.stencil.take() {
+            stencil.fill(v);
+        }
+    }
 }
 
 /// One of the framebuffer's colour buffers.
@@ -127,6 +181,8 @@ impl Framebuffer {
                 false => None,
             },
             config,
+            pending: filled(n / TILE_PIXELS, Fill::default())?,
+            any_pending: false,
         })
     }
 
@@ -134,6 +190,11 @@ impl Framebuffer {
     /// sizes is kept, pixel for pixel from the lower-left corner, the rest is as a new
     /// framebuffer's (GL leaves it undefined). `None` when the new buffers cannot be allocated.
     pub fn resized(&self, width: u32, height: u32) -> Option<Self> {
+        if self.any_pending {
+            let mut src = self.clone();
+            src.materialize_all();
+            return src.resized(width, height);
+        }
         let mut out = Self::try_new(width, height, self.config)?;
         let (w, h) = (
             width.min(self.width) as usize,
@@ -185,6 +246,7 @@ impl Framebuffer {
     /// becomes the front buffer, and the back buffer keeps its contents, as llvmpipe's
     /// software winsys leaves it (GL leaves them undefined). Nothing when single-buffered.
     pub fn swap(&mut self) {
+        self.materialize_all();
         if let Some(front) = self.front.as_mut() {
             front.copy_from_slice(&self.color);
         }
@@ -230,10 +292,21 @@ impl Framebuffer {
             return None;
         }
         let i = self.index(x as usize, y as usize);
+        let fill = self
+            .pending
+            .get(i / TILE_PIXELS)
+            .copied()
+            .unwrap_or_default();
+        let pending_color = match (buf, &self.front) {
+            (ColorBuf::Front, Some(_)) => fill.front,
+            _ => fill.main,
+        };
         Some((
-            *self.buffer(buf).get(i)?,
-            *self.depth.get(i)?,
-            *self.stencil.get(i)?,
+            pending_color.map_or_else(|| self.buffer(buf).get(i).copied(), Some)?,
+            fill.depth
+                .map_or_else(|| self.depth.get(i).copied(), Some)?,
+            fill.stencil
+                .map_or_else(|| self.stencil.get(i).copied(), Some)?,
         ))
     }
 
@@ -243,12 +316,13 @@ impl Framebuffer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);
         for y in 0..h {
-            self.extend_with_row(&self.color, y, &mut out);
+            self.extend_with_row(ColorBuf::Main, y, &mut out);
         }
         out
     }
 
     /// The main colour buffer as RGBA8 bytes, top row first (image order).
+    #[cfg(test)]
     pub fn color_bytes_top_down(&self) -> Vec<u8> {
         self.bytes_top_down(ColorBuf::Main)
     }
@@ -258,22 +332,56 @@ impl Framebuffer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut out = Vec::with_capacity(w * h);
         for y in (0..h).rev() {
-            self.extend_with_row(self.buffer(buf), y, &mut out);
+            self.extend_with_row(buf, y, &mut out);
         }
         out.into_flattened()
     }
 
-    /// Appends row `y` (< height) of colour buffer `src` to `out`: one slice copy per tile.
-    fn extend_with_row(&self, src: &[[u8; 4]], y: usize, out: &mut Vec<[u8; 4]>) {
+    /// Appends row `y` (< height) of colour buffer `buf` to `out`: one slice copy per tile, or
+    /// the tile's pending clear colour (which stays pending).
+    fn extend_with_row(&self, buf: ColorBuf, y: usize, out: &mut Vec<[u8; 4]>) {
+        let src = self.buffer(buf);
+        let front = matches!((buf, &self.front), (ColorBuf::Front, Some(_)));
         let w = self.width as usize;
-        let row = (y / TILE) * self.tiles_x * TILE_PIXELS + (y % TILE) * TILE;
+        let trow = (y / TILE) * self.tiles_x;
+        let row = trow * TILE_PIXELS + (y % TILE) * TILE;
         for tx in 0..self.tiles_x {
             let at = row + tx * TILE_PIXELS;
             let n = (w - tx * TILE).min(TILE);
-            if let Some(px) = src.get(at..at + n) {
-                out.extend_from_slice(px);
+            let fill = self.pending.get(trow + tx).copied().unwrap_or_default();
+            match if front { fill.front } else { fill.main } {
+                Some(c) => out.resize(out.len() + n, c),
+                None => {
+                    if let Some(px) = src.get(at..at + n) {
+                        out.extend_from_slice(px);
+                    }
+                }
             }
         }
+    }
+
+    /// Writes every pending clear into the buffers: what any code that reads or writes the
+    /// buffers' memory directly (not through the rasteriser or readback) calls first.
+    pub fn materialize_all(&mut self) {
+        if !self.any_pending {
+            return;
+        }
+        let n = self.pending.len();
+        let mains = tile_slices(Some(&mut self.color), n);
+        let fronts = tile_slices(self.front.as_mut(), n);
+        for ((((fill, main), front), depth), stencil) in self
+            .pending
+            .iter_mut()
+            .zip(mains)
+            .zip(fronts)
+            .zip(self.depth.chunks_mut(TILE_PIXELS))
+            .zip(self.stencil.chunks_mut(TILE_PIXELS))
+        {
+            if !fill.is_empty() {
+                fill.materialize(main, front, depth, stencil);
+            }
+        }
+        self.any_pending = false;
     }
 
     /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask` (colour: those DRAW_BUFFER
@@ -302,26 +410,81 @@ impl Framebuffer {
         }
         let tiles_x = self.tiles_x;
         let n = self.tiles_x * self.tiles_y;
-        let mains = tile_slices(targets.main.then_some(&mut self.color), n);
-        let fronts = tile_slices(self.front.as_mut().filter(|_| targets.front), n);
-        // Tiles in parallel, each clearing its part of the rectangle.
+        let (w, h) = (self.width as i32, self.height as i32);
+        let front_exists = self.front.is_some();
+        // Tiles whose part inside the window the clear covers whole, with full write masks,
+        // are only marked (lazy clear); the others are written now, below.
+        let lazy_ok =
+            (color.is_none() || cmask == [true; 4]) && (stencil.is_none() || smask == 0xFF);
+        let mut eager = Vec::new();
+        for (t, fill) in self.pending.iter_mut().enumerate() {
+            let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
+            let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+            let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+            if tx0 > tx1 || ty0 > ty1 {
+                continue;
+            }
+            let whole = tx0 == ox
+                && ty0 == oy
+                && tx1 >= (ox + TILE as i32 - 1).min(w - 1)
+                && ty1 >= (oy + TILE as i32 - 1).min(h - 1);
+            if !(whole && lazy_ok) {
+                eager.resize(n, false);
+                if let Some(e) = eager.get_mut(t) {
+                    *e = true;
+                }
+                continue;
+            }
+            if let Some(c) = color {
+                if targets.main {
+                    fill.main = Some(c);
+                }
+                if targets.front && front_exists {
+                    fill.front = Some(c);
+                }
+            }
+            if depth.is_some() {
+                fill.depth = depth;
+            }
+            if stencil.is_some() {
+                fill.stencil = stencil;
+            }
+            self.any_pending = true;
+        }
+        if eager.is_empty() {
+            return;
+        }
+        let mains = tile_slices(Some(&mut self.color), n);
+        let fronts = tile_slices(self.front.as_mut(), n);
+        // Tiles in parallel, each clearing its part of the rectangle (after writing what was
+        // pending there).
         mains
             .into_par_iter()
             .zip(fronts)
             .zip(self.depth.par_chunks_mut(TILE_PIXELS))
             .zip(self.stencil.par_chunks_mut(TILE_PIXELS))
+            .zip(self.pending.par_iter_mut())
             .enumerate()
-            .for_each(|(t, (((mut cbuf, mut fbuf), dbuf), sbuf))| {
+            .for_each(|(t, ((((mut cbuf, mut fbuf), dbuf), sbuf), fill))| {
+                if !eager.get(t).copied().unwrap_or(false) {
+                    return;
+                }
+                if !fill.is_empty() {
+                    fill.materialize(cbuf.as_deref_mut(), fbuf.as_deref_mut(), dbuf, sbuf);
+                }
                 let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
                 let (tx0, ty0) = (x0.max(ox), y0.max(oy));
                 let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
                 if tx0 > tx1 || ty0 > ty1 {
                     return;
                 }
+                let cbuf = cbuf.filter(|_| targets.main);
+                let fbuf = fbuf.filter(|_| targets.front);
                 // Rows inside a tile are contiguous: a span as wide as the tile covers all the
                 // rows at once.
                 let full = tx0 == ox && tx1 == ox + TILE as i32 - 1;
                 let rows = if full { ty0..=ty0 } else { ty0..=ty1 };
+                let (mut cbuf, mut fbuf) = (cbuf, fbuf);
                 for y in rows {
                     let row = (y - oy) as usize * TILE;
                     let (a, b) = if full {
@@ -382,6 +545,7 @@ impl Framebuffer {
         color_mask: [bool; 4],
     ) {
         let [x0, y0, x1, y1] = rect;
+        self.materialize_all();
         let Some(mut accum) = self.accum.take() else {
             return;
         };
@@ -530,6 +694,28 @@ mod tests {
         for (x, y) in [(59, 60), (70, 64), (65, 65), (64, 59)] {
             assert_eq!(fb.pixel(x, y), Some((RED, 8_388_608, 0)), "({x}, {y})");
         }
+    }
+
+    /// A whole-window clear is only marked; a masked clear over it writes the pending value
+    /// first, and every read sees the same pixels as eager clears would give.
+    #[test]
+    fn lazy_clear_is_materialised_before_a_masked_clear() {
+        let (mut fb, mut st) = cleared();
+        assert!(fb.any_pending && fb.pending.iter().all(|f| !f.is_empty()));
+        st.color_mask = [false, true, true, true];
+        st.clear_color = Vec4::new(0.0, 0.0, 1.0, 1.0);
+        fb.clear(&st, gl::COLOR_BUFFER_BIT);
+        let mixed = [255, 0, 255, 255];
+        for (x, y) in [(0, 0), (129, 69), (64, 64)] {
+            assert_eq!(fb.pixel(x, y), Some((mixed, 8_388_608, 0)), "({x}, {y})");
+        }
+        // A tile written eagerly has nothing pending left.
+        assert!(fb.pending[0].is_empty());
+        fb.materialize_all();
+        assert!(fb.pending.iter().all(Fill::is_empty));
+        let i = fb.index(129, 69);
+        assert_eq!((fb.color[i], fb.depth[i]), (mixed, 8_388_608));
+        assert_eq!(fb.color_bytes_top_down()[..4], mixed);
     }
 
     #[test]

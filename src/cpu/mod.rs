@@ -44,6 +44,7 @@ pub mod feedback;
 pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
+pub mod lanes;
 mod line;
 pub mod pixels;
 mod polygon;
@@ -223,7 +224,9 @@ impl Renderer {
 
     /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.
     pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
-        &mut self.core().fb
+        let fb = &mut self.core().fb;
+        fb.materialize_all();
+        fb
     }
 
     fn with_core(core: Box<Core>, width: u32, height: u32) -> Self {
@@ -391,7 +394,15 @@ impl Renderer {
 
     /// The framebuffer (read access for readback), once everything drawn so far is in it.
     pub fn framebuffer(&mut self) -> &Framebuffer {
-        &self.core().fb
+        let fb = &mut self.core().fb;
+        fb.materialize_all();
+        fb
+    }
+
+    /// Colour buffer `buf` as RGBA8 bytes, top row first, once everything drawn so far is in
+    /// it: pending clears are read as their colour, not written (see `Framebuffer::pending`).
+    pub fn color_bytes_top_down(&mut self, buf: framebuffer::ColorBuf) -> Vec<u8> {
+        self.core().fb.bytes_top_down(buf)
     }
 
     /// The colour buffer as bottom-up rows, `width * height` pixels.
@@ -666,13 +677,14 @@ fn rasterise(
         front,
         depth,
         stencil,
+        pending,
         ..
     } = fb;
     // The first target is each tile's colour slice, a second one its `color2`.
-    let (primary, secondary) = match (targets.front, front.as_mut()) {
-        (true, Some(f)) if !targets.main => (f, None),
-        (true, Some(f)) => (color, Some(f)),
-        _ => (color, None),
+    let (primary, secondary, front_first) = match (targets.front, front.as_mut()) {
+        (true, Some(f)) if !targets.main => (f, None, true),
+        (true, Some(f)) => (color, Some(f), false),
+        _ => (color, None, false),
     };
     let seconds = framebuffer::tile_slices(secondary, tx * ty);
     primary
@@ -680,13 +692,24 @@ fn rasterise(
         .zip(seconds)
         .zip(depth.par_chunks_mut(TILE_PIXELS))
         .zip(stencil.par_chunks_mut(TILE_PIXELS))
+        .zip(pending.par_iter_mut())
         .enumerate()
-        .map(|(t, (((color, color2), depth), stencil))| {
+        .map(|(t, ((((color, mut color2), depth), stencil), fill))| {
             if workers
                 .iter()
                 .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
             {
                 return 0;
+            }
+            // A lazily cleared tile is written before its first primitive (the colour buffer
+            // not drawn stays pending).
+            if !fill.is_empty() {
+                match front_first {
+                    true => fill.materialize(None, Some(&mut *color), depth, stencil),
+                    false => {
+                        fill.materialize(Some(&mut *color), color2.as_deref_mut(), depth, stencil)
+                    }
+                }
             }
             let mut bufs = TileBufs {
                 color,

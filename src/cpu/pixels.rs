@@ -220,6 +220,7 @@ impl Renderer {
         let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
         let core = self.core();
         let fb = &mut core.fb;
+        fb.materialize_all();
         let (tiles_x, tiles_y) = fb.tiles();
         let (x0, y0) = (d.cols.lo, d.rows.lo);
         let (x1, y1) = (x0 + d.cols.len() as i32 - 1, y0 + d.rows.len() as i32 - 1);

@@ -1,0 +1,291 @@
+//! Fragment kernels over groups of `LANES` pixels of a span: the same arithmetic as the scalar
+//! per-fragment code in `fragment`, written on fixed-size arrays of lanes so that the compiler
+//! turns each step into one SIMD instruction (SSE2 on the x86-64 baseline: `divps`, `cvtdq2ps`,
+//! `minps`/`maxps`-style selects), with a coverage mask choosing which lanes are stored.
+//!
+//! Design decision: every lane computes exactly the scalar expression, operation for operation
+//! and in the same order (IEEE single and double precision give the same bits in a vector
+//! register as in a scalar one, and Rust never fuses a multiply and an add), so the images are
+//! byte for byte those of the scalar code; the unit tests below compare the two bit for bit.
+//! Lanes past the span's end or outside the mask are computed and thrown away.
+
+use super::framebuffer::DEPTH_MAX;
+
+/// Pixels a kernel handles at once.
+pub const LANES: usize = 8;
+
+/// `x`, `x` + 1, ... as floats, one a lane: the same values as `(x + l) as f32`, since every
+/// integer involved is far below 2^24 (window offsets are at most 16384) and so exact.
+#[inline(always)]
+fn lane_x(x: i32) -> [f32; LANES] {
+    const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+    let b = x as f32;
+    IOTA.map(|l| b + l)
+}
+
+/// `1.0 / d` on every lane. LLVM keeps this division scalar (its cost model for SSE2); the
+/// SSE2 `divps` of the x86-64 baseline gives the same correctly rounded quotients four at a
+/// time.
+#[inline(always)]
+fn recip(d: [f32; LANES]) -> [f32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128, _mm_div_ps, _mm_set1_ps, _mm_set_ps};
+        // SAFETY: SSE is part of the x86-64 baseline, so these intrinsics are available on
+        // every x86-64 CPU; `__m128` is four f32 lanes in memory order, the layout of
+        // `[f32; 4]`, and every bit pattern is valid for both.
+        let (lo, hi) = unsafe {
+            let one = _mm_set1_ps(1.0);
+            let lo = _mm_div_ps(one, _mm_set_ps(d[3], d[2], d[1], d[0]));
+            let hi = _mm_div_ps(one, _mm_set_ps(d[7], d[6], d[5], d[4]));
+            (
+                std::mem::transmute::<__m128, [f32; 4]>(lo),
+                std::mem::transmute::<__m128, [f32; 4]>(hi),
+            )
+        };
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        d.map(|d| 1.0 / d)
+    }
+}
+
+/// `framebuffer::unorm8` on every lane: NaN and negative to 0, above 1 to 1, then
+/// `c·(255/256) + 2^15`, whose low mantissa byte is the result.
+#[inline(always)]
+fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
+    let mut out = [0u8; LANES];
+    for (o, c) in out.iter_mut().zip(c) {
+        // `!(c >= 0)` is true for NaN as for negatives: both give 0, as `unorm8` does.
+        let c = if c >= 0.0 { c } else { 0.0 };
+        let c = if c > 1.0 { 1.0 } else { c };
+        let t = c * (255.0 / 256.0) + 32768.0;
+        *o = (t.to_bits() & 0xFF) as u8;
+    }
+    out
+}
+
+/// The smooth primary colour of a span (the fast path of `FragCtx::tri_span`): for fragment k,
+/// fx = `fx0` + k and colour channel c = (`co[2+2c]` + `co[3+2c]`·fx) · 1/(`co[0]` + `co[1]`·fx),
+/// the row's terms already in `co[0]`, `co[2]`, ... Stores the unorm8 colour of every fragment
+/// whose bit is set in `mask` into `dst[k]`.
+pub fn smooth_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, co: &[f32; 10]) {
+    let [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax] = *co;
+    let mut c = 0;
+    while c < dst.len().min(64) {
+        let m = (mask >> c) & ((1 << LANES) - 1);
+        if m != 0 {
+            let fx = lane_x(fx0.wrapping_add(c as i32));
+            let inv = recip(fx.map(|x| w0 + wx * x));
+            let ch = |o: f32, d: f32| -> [u8; LANES] {
+                unorm8_lanes(std::array::from_fn(|l| (o + d * fx[l]) * inv[l]))
+            };
+            let (r, g, b, a) = (ch(r0, rx), ch(g0, gx), ch(b0, bx), ch(a0, ax));
+            if let Some(out) = dst.get_mut(c..) {
+                for (l, px) in out.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        *px = [r[l], g[l], b[l], a[l]];
+                    }
+                }
+            }
+        }
+        c += LANES;
+    }
+}
+
+/// The flat primary colour of a span (`FragCtx::tri_span` with FLAT shading and no other
+/// varying): channel c of fragment k is (`co[3c]` + `co[3c+1]`·fx) + `co[3c+2]`·fy with fx =
+/// `fx0` + k, not divided by w (the general path's expression for a flat varying). Stores the
+/// unorm8 colour of every fragment whose bit is set in `mask` into `dst[k]`.
+pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 12]) {
+    // `pl(o + 2) * fy` is the same product for every fragment of the row.
+    let ch: [(f32, f32, f32); 4] =
+        std::array::from_fn(|c| (co[3 * c], co[3 * c + 1], co[3 * c + 2] * fy));
+    let mut c = 0;
+    while c < dst.len().min(64) {
+        let m = (mask >> c) & ((1 << LANES) - 1);
+        if m != 0 {
+            let fx = lane_x(fx0.wrapping_add(c as i32));
+            let v = ch.map(|(o, dx, yt)| unorm8_lanes(fx.map(|x| (o + dx * x) + yt)));
+            if let Some(out) = dst.get_mut(c..) {
+                for (l, px) in out.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        *px = [v[0][l], v[1][l], v[2][l], v[3][l]];
+                    }
+                }
+            }
+        }
+        c += LANES;
+    }
+}
+
+/// `framebuffer::depth_unorm(f64::from(z))` on every lane (a NaN gives 0, as there).
+#[inline(always)]
+fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
+    std::array::from_fn(|l| {
+        let z = f64::from(z[l]);
+        // `clamp` keeps a NaN, which the final cast turns into 0; so do these comparisons.
+        let z = if z < 0.0 { 0.0 } else { z };
+        let z = if z > 1.0 { 1.0 } else { z };
+        // At most DEPTH_MAX + 0.5 < 2^31: the i32 cast gives what `as u32` gives.
+        (z * f64::from(DEPTH_MAX) + 0.5) as i32 as u32
+    })
+}
+
+/// The depth test and write of a span (`FragCtx::depth_span`): fragment k (bit k of `live`,
+/// k < `row.len()` ≤ 64) has z = `zrow` + `dz`·(`fx0` + k) in single precision; it survives
+/// when `pass(d, stored)`, and then `d` is stored if `write`. Returns the survivors' mask.
+#[inline(always)]
+pub fn depth_span(
+    row: &mut [u32],
+    zrow: f32,
+    dz: f32,
+    fx0: i32,
+    live: u64,
+    write: bool,
+    pass: impl Fn(u32, u32) -> bool,
+) -> u64 {
+    let n = row.len().min(64);
+    let mut mask = 0u64;
+    let mut c = 0;
+    while c < n {
+        let m = (live >> c) & ((1 << LANES) - 1);
+        if m != 0 {
+            let fx = lane_x(fx0.wrapping_add(c as i32));
+            let mut z = [0.0f32; LANES];
+            for l in 0..LANES {
+                z[l] = zrow + dz * fx[l];
+            }
+            let d = depth_lanes(z);
+            if let Some(out) = row.get_mut(c..) {
+                for (l, stored) in out.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 && pass(d[l], *stored) {
+                        if write {
+                            *stored = d[l];
+                        }
+                        mask |= 1 << (c + l);
+                    }
+                }
+            }
+        }
+        c += LANES;
+    }
+    mask
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cpu::framebuffer::{depth_unorm, unorm8};
+
+    /// A small deterministic generator of awkward floats (NaN, ±0, tiny, huge, ordinary).
+    struct Gen(u64);
+    impl Gen {
+        fn next(&mut self) -> u64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            self.0 >> 11
+        }
+        fn float(&mut self) -> f32 {
+            match self.next() % 10 {
+                0 => f32::NAN,
+                1 => -0.0,
+                2 => f32::from_bits(self.next() as u32),
+                3 => (self.next() % 2000) as f32 * 1e-3 - 0.5,
+                _ => (self.next() % 1_000_000) as f32 * 1e-6 * 1.5 - 0.25,
+            }
+        }
+    }
+
+    #[test]
+    fn smooth_rgba_is_the_scalar_expression_bit_for_bit() {
+        let mut g = Gen(7);
+        for _ in 0..2000 {
+            let co: [f32; 10] = std::array::from_fn(|k| match k {
+                0 => 0.5 + (g.next() % 1000) as f32 * 1e-3,
+                1 => (g.next() % 100) as f32 * 1e-4,
+                _ => g.float(),
+            });
+            let n = 1 + (g.next() % 64) as usize;
+            let mask = g.next() | g.next() << 40;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let mut got = vec![[9u8; 4]; n];
+            smooth_rgba(&mut got, mask, fx0, &co);
+            for (k, px) in got.iter().enumerate() {
+                let want = if mask & (1 << k) != 0 {
+                    let fx = (fx0 + k as i32) as f32;
+                    let inv = 1.0 / (co[0] + co[1] * fx);
+                    let ch = |o: f32, d: f32| unorm8((o + d * fx) * inv);
+                    [
+                        ch(co[2], co[3]),
+                        ch(co[4], co[5]),
+                        ch(co[6], co[7]),
+                        ch(co[8], co[9]),
+                    ]
+                } else {
+                    [9; 4]
+                };
+                assert_eq!(*px, want, "k {k} co {co:?} fx0 {fx0}");
+            }
+        }
+    }
+
+    #[test]
+    fn flat_rgba_is_the_scalar_expression_bit_for_bit() {
+        let mut g = Gen(5);
+        for _ in 0..2000 {
+            let co: [f32; 12] = std::array::from_fn(|_| g.float());
+            let n = 1 + (g.next() % 64) as usize;
+            let mask = g.next() | g.next() << 40;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let fy = (g.next() % 900) as f32;
+            let mut got = vec![[9u8; 4]; n];
+            flat_rgba(&mut got, mask, fx0, fy, &co);
+            for (k, px) in got.iter().enumerate() {
+                let fx = (fx0 + k as i32) as f32;
+                let want = match mask & (1 << k) != 0 {
+                    true => std::array::from_fn(|c| {
+                        unorm8(co[3 * c] + co[3 * c + 1] * fx + co[3 * c + 2] * fy)
+                    }),
+                    false => [9; 4],
+                };
+                assert_eq!(*px, want, "k {k} co {co:?} fx0 {fx0} fy {fy}");
+            }
+        }
+    }
+
+    #[test]
+    fn depth_span_is_the_scalar_test_bit_for_bit() {
+        let mut g = Gen(11);
+        for _ in 0..2000 {
+            let n = 1 + (g.next() % 64) as usize;
+            let zrow = g.float();
+            let dz = g.float() * 1e-3;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let live = g.next() | g.next() << 40;
+            let write = g.next() % 2 == 0;
+            let stored: Vec<u32> = (0..n).map(|_| (g.next() % (1 << 24)) as u32).collect();
+            let mut got = stored.clone();
+            let mask = depth_span(&mut got, zrow, dz, fx0, live, write, |d, s| d < s);
+            let mut want = stored.clone();
+            let mut want_mask = 0u64;
+            for (k, s) in want.iter_mut().enumerate() {
+                if live & (1 << k) == 0 {
+                    continue;
+                }
+                let z = zrow + dz * (fx0 + k as i32) as f32;
+                let d = depth_unorm(f64::from(z));
+                if d < *s {
+                    if write {
+                        *s = d;
+                    }
+                    want_mask |= 1 << k;
+                }
+            }
+            assert_eq!((mask, &got), (want_mask, &want), "zrow {zrow} dz {dz}");
+        }
+    }
+}
