@@ -18,8 +18,8 @@ use std::time::Instant;
 use clap::{Parser, Subcommand, ValueEnum};
 
 mod run;
-mod sha256;
 use image::RgbaImage;
+use sha2::Digest;
 
 use fixedgl::compare::compare;
 use fixedgl::report::{self, Renderers, SceneResult};
@@ -374,7 +374,7 @@ fn render_hashes(
             Backend::Cpu => ctx.to_image(),
             Backend::Gl => gl_side::render(&calls, w, h, scene.config, device)?.0,
         };
-        println!("{}  {}", sha256::hex(img.as_raw()), scene.name);
+        println!("{:x}  {}", sha2::Sha256::digest(img.as_raw()), scene.name);
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -25,7 +25,7 @@ use crate::gl;
 pub const MAX_LIST_NESTING: u32 = 64;
 
 /// The defined lists by name.
-pub(crate) type ListMap = BTreeMap<u32, Arc<Vec<Call>>>;
+pub(crate) type ListMap = BTreeMap<u32, Arc<List>>;
 
 /// The display-list namespace and the list being compiled.
 #[derive(Debug, Default)]

@@ -31,7 +31,6 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use super::Context;
 use crate::arrays::BufferObject;
-use crate::call::Call;
 use crate::texture::{NameSet, TexObject, TARGETS};
 
 /// Which kinds of objects a transaction may change.
@@ -51,7 +50,7 @@ struct Objects {
     /// The default textures (name 0 of each target): shared too, as in Mesa.
     tex_defaults: Option<[Arc<TexObject>; 4]>,
     list_gen: u64,
-    lists: BTreeMap<u32, Arc<Vec<Call>>>,
+    lists: super::lists::ListMap,
     list_reserved: Vec<(u32, u32)>,
     list_max_used: u32,
     buf_gen: u64,
