@@ -304,6 +304,9 @@ impl Default for BufferObject {
 pub enum Attr {
     /// EDGE_FLAG_ARRAY.
     EdgeFlag,
+    /// INDEX_ARRAY: colour indices, held and queried but read by no draw in RGBA mode (GL 2.1
+    /// §2.8: ArrayElement's Index has no effect without colour-index buffers).
+    Index,
     /// TEXTURE_COORD_ARRAY of a texture unit.
     TexCoord(usize),
     /// COLOR_ARRAY.
@@ -328,6 +331,7 @@ pub struct ArrayState {
     pub secondary_color: ClientArray,
     pub fog_coord: ClientArray,
     pub edge_flag: ClientArray,
+    pub index: ClientArray,
     pub tex_coords: [ClientArray; MAX_TEXTURE_UNITS],
     /// `ARRAY_BUFFER_BINDING`.
     pub array_buffer: u32,
@@ -355,6 +359,7 @@ impl Default for ArrayState {
             secondary_color: ClientArray::new(3),
             fog_coord: ClientArray::new(1),
             edge_flag: edge,
+            index: ClientArray::new(1),
             tex_coords: std::array::from_fn(|_| ClientArray::new(4)),
             array_buffer: 0,
             element_array_buffer: 0,
@@ -414,6 +419,7 @@ fn check_format(attr: Attr, size: i32, ty: u32, stride: i32) -> GlResult<()> {
         Attr::TexCoord(_) => (&[1, 2, 3, 4], &[SHORT, INT, FLOAT, DOUBLE]),
         Attr::FogCoord => (&[1], &[FLOAT, DOUBLE]),
         Attr::EdgeFlag => (&[1], &[UNSIGNED_BYTE]),
+        Attr::Index => (&[1], &[UNSIGNED_BYTE, SHORT, INT, FLOAT, DOUBLE]),
     };
     if !(0..=MAX_VERTEX_ATTRIB_STRIDE).contains(&stride) {
         return Err(gl::INVALID_VALUE);
@@ -581,6 +587,7 @@ impl ArrayState {
             gl::SECONDARY_COLOR_ARRAY => &mut self.secondary_color,
             gl::FOG_COORD_ARRAY => &mut self.fog_coord,
             gl::EDGE_FLAG_ARRAY => &mut self.edge_flag,
+            gl::INDEX_ARRAY => &mut self.index,
             gl::TEXTURE_COORD_ARRAY => self.tex_coords.get_mut(unit)?,
             _ => return None,
         })
@@ -595,6 +602,7 @@ impl ArrayState {
             gl::SECONDARY_COLOR_ARRAY => self.secondary_color.enabled,
             gl::FOG_COORD_ARRAY => self.fog_coord.enabled,
             gl::EDGE_FLAG_ARRAY => self.edge_flag.enabled,
+            gl::INDEX_ARRAY => self.index.enabled,
             gl::TEXTURE_COORD_ARRAY => self.tex_coords.get(unit)?.enabled,
             _ => return None,
         })
@@ -608,6 +616,7 @@ impl ArrayState {
             Attr::SecondaryColor => &mut self.secondary_color,
             Attr::FogCoord => &mut self.fog_coord,
             Attr::EdgeFlag => &mut self.edge_flag,
+            Attr::Index => &mut self.index,
             Attr::TexCoord(u) => self.tex_coords.get_mut(u)?,
         })
     }
@@ -682,6 +691,7 @@ impl ArrayState {
             }
         };
         self.edge_flag.enabled = false;
+        self.index.enabled = false;
         self.secondary_color.enabled = false;
         self.fog_coord.enabled = false;
         if let Some(a) = self.tex_coords.get_mut(unit) {
@@ -1040,6 +1050,7 @@ impl ArrayState {
                 &mut self.secondary_color,
                 &mut self.fog_coord,
                 &mut self.edge_flag,
+                &mut self.index,
             ];
             for a in arrays.into_iter().chain(self.tex_coords.iter_mut()) {
                 if a.buffer == name {

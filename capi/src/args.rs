@@ -93,6 +93,10 @@ pub fn edge_flag_pointer(gl: &mut Gl, _stride: i32, p: *const c_void) -> Pointer
     array(gl, p)
 }
 
+pub fn index_pointer(gl: &mut Gl, _ty: u32, _stride: i32, p: *const c_void) -> Pointer {
+    array(gl, p)
+}
+
 pub fn interleaved_arrays(gl: &mut Gl, _format: u32, _stride: i32, p: *const c_void) -> Pointer {
     array(gl, p)
 }

@@ -2846,7 +2846,10 @@ pub unsafe extern "C" fn glEnableClientState(array: u32) {
 /// `glIndexPointer(type, stride, pointer)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexPointer(type_: u32, stride: i32, pointer: *const c_void) {
-    unimplemented("glIndexPointer");
+    with_gl("glIndexPointer", |gl| {
+        let pointer = args::index_pointer(gl, type_, stride, pointer);
+        gl.ctx.execute(&Call::IndexPointer(type_, stride, pointer));
+    })
 }
 
 /// `glInterleavedArrays(format, stride, pointer)`.
@@ -5235,6 +5238,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glColorMask" => glColorMask as *const c_void,
         b"glColorMaterial" => glColorMaterial as *const c_void,
         b"glColorPointer" => glColorPointer as *const c_void,
+        b"glColorPointerEXT" => glColorPointerEXT as *const c_void,
         b"glCopyPixels" => glCopyPixels as *const c_void,
         b"glCopyTexImage1D" => glCopyTexImage1D as *const c_void,
         b"glCopyTexImage1DEXT" => glCopyTexImage1D as *const c_void,
@@ -5267,6 +5271,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glDrawRangeElementsEXT" => glDrawRangeElements as *const c_void,
         b"glEdgeFlag" => glEdgeFlag as *const c_void,
         b"glEdgeFlagPointer" => glEdgeFlagPointer as *const c_void,
+        b"glEdgeFlagPointerEXT" => glEdgeFlagPointerEXT as *const c_void,
         b"glEdgeFlagv" => glEdgeFlagv as *const c_void,
         b"glEnable" => glEnable as *const c_void,
         b"glEnableClientState" => glEnableClientState as *const c_void,
@@ -5357,6 +5362,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetTexParameterfv" => glGetTexParameterfv as *const c_void,
         b"glGetTexParameteriv" => glGetTexParameteriv as *const c_void,
         b"glHint" => glHint as *const c_void,
+        b"glIndexPointer" => glIndexPointer as *const c_void,
+        b"glIndexPointerEXT" => glIndexPointerEXT as *const c_void,
         b"glInitNames" => glInitNames as *const c_void,
         b"glInterleavedArrays" => glInterleavedArrays as *const c_void,
         b"glIsBuffer" => glIsBuffer as *const c_void,
@@ -5488,6 +5495,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glNormal3s" => glNormal3s as *const c_void,
         b"glNormal3sv" => glNormal3sv as *const c_void,
         b"glNormalPointer" => glNormalPointer as *const c_void,
+        b"glNormalPointerEXT" => glNormalPointerEXT as *const c_void,
         b"glOrtho" => glOrtho as *const c_void,
         b"glPassThrough" => glPassThrough as *const c_void,
         b"glPixelMapfv" => glPixelMapfv as *const c_void,
@@ -5639,6 +5647,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glTexCoord4s" => glTexCoord4s as *const c_void,
         b"glTexCoord4sv" => glTexCoord4sv as *const c_void,
         b"glTexCoordPointer" => glTexCoordPointer as *const c_void,
+        b"glTexCoordPointerEXT" => glTexCoordPointerEXT as *const c_void,
         b"glTexEnvf" => glTexEnvf as *const c_void,
         b"glTexEnvfv" => glTexEnvfv as *const c_void,
         b"glTexEnvi" => glTexEnvi as *const c_void,
@@ -5693,6 +5702,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glVertex4s" => glVertex4s as *const c_void,
         b"glVertex4sv" => glVertex4sv as *const c_void,
         b"glVertexPointer" => glVertexPointer as *const c_void,
+        b"glVertexPointerEXT" => glVertexPointerEXT as *const c_void,
         b"glViewport" => glViewport as *const c_void,
         b"glWindowPos2d" => glWindowPos2d as *const c_void,
         b"glWindowPos2dARB" => glWindowPos2d as *const c_void,

@@ -25,6 +25,7 @@
 mod args;
 mod current;
 pub mod egl;
+mod ext_vertex_array;
 mod generated;
 pub mod glx;
 pub mod manual;

@@ -18,6 +18,9 @@ use crate::args::{image_bytes, image_bytes3};
 use crate::current::with_gl;
 use crate::read;
 
+// GL_EXT_vertex_array's own commands, which the GetProcAddress table names too.
+pub use crate::ext_vertex_array::*;
+
 /// Runs `f` on a copy of the `n` values at `out` and writes them back.
 unsafe fn through<T: Copy>(out: *mut T, n: usize, f: impl FnOnce(&mut [T])) {
     // SAFETY: the caller's promise that the pname's `n` values may be written at `out`.

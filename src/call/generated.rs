@@ -441,6 +441,8 @@ pub enum Call {
     FogCoordPointer(u32, i32, Pointer),
     /// `glEdgeFlagPointer(stride, pointer)`.
     EdgeFlagPointer(i32, Pointer),
+    /// `glIndexPointer(type, stride, pointer)`.
+    IndexPointer(u32, i32, Pointer),
     /// `glInterleavedArrays(format, stride, pointer)`.
     InterleavedArrays(u32, i32, Pointer),
     /// `glArrayElement(i)`.
@@ -1111,6 +1113,7 @@ pub const NAMES: &[&str] = &[
     "TexCoordPointer",
     "FogCoordPointer",
     "EdgeFlagPointer",
+    "IndexPointer",
     "InterleavedArrays",
     "ArrayElement",
     "DrawArrays",
@@ -1514,6 +1517,7 @@ impl Call {
             Call::TexCoordPointer(..) => "TexCoordPointer",
             Call::FogCoordPointer(..) => "FogCoordPointer",
             Call::EdgeFlagPointer(..) => "EdgeFlagPointer",
+            Call::IndexPointer(..) => "IndexPointer",
             Call::InterleavedArrays(..) => "InterleavedArrays",
             Call::ArrayElement(..) => "ArrayElement",
             Call::DrawArrays(..) => "DrawArrays",
@@ -1914,6 +1918,7 @@ impl Call {
                 | Call::TexCoordPointer(..)
                 | Call::FogCoordPointer(..)
                 | Call::EdgeFlagPointer(..)
+                | Call::IndexPointer(..)
                 | Call::InterleavedArrays(..)
                 | Call::GenBuffers(..)
                 | Call::DeleteBuffers(..)
@@ -2140,6 +2145,7 @@ impl Call {
             Call::TexCoordPointer(..) => &[Plain, Enum],
             Call::FogCoordPointer(..) => &[Enum],
             Call::EdgeFlagPointer(..) => &[],
+            Call::IndexPointer(..) => &[Enum],
             Call::InterleavedArrays(..) => &[Enum],
             Call::ArrayElement(..) => &[],
             Call::DrawArrays(..) => &[Prim],

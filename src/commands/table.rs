@@ -7902,10 +7902,10 @@ pub static COMMANDS: &[Command] = &[
                 group: None,
             },
         ],
-        method: None,
+        method: Some("index_pointer"),
         count: None,
         inside: false,
-        immediate: false,
+        immediate: true,
     },
     Command {
         name: "glInterleavedArrays",

@@ -115,6 +115,15 @@ impl Context {
         self.arrays_do(|a, _| a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, stride, &p));
     }
 
+    /// `glIndexPointer`: colour indices of UNSIGNED_BYTE, SHORT, INT, FLOAT or DOUBLE (else
+    /// INVALID_ENUM). The array is held, enabled (INDEX_ARRAY) and queried as GL 2.1 table 6.7
+    /// says; in RGBA mode no draw reads it, as on Mesa.
+    pub fn index_pointer(&mut self, ty: u32, stride: i32, pointer: impl Into<Pointer>) {
+        let p = pointer.into();
+        record!(self, Call::IndexPointer(ty, stride, p.recorded()));
+        self.arrays_do(|a, _| a.pointer(Attr::Index, 1, ty, stride, &p));
+    }
+
     /// `glInterleavedArrays` (GL 2.1 §2.8, table 2.5): one of the 14 formats (else
     /// INVALID_ENUM), stride 0 to 2048 (else INVALID_VALUE); sets and enables the format's arrays
     /// (texture coordinates on the client active unit) and disables the others.
@@ -395,6 +404,7 @@ impl Context {
                 Attr::SecondaryColor => Call::SecondaryColorPointer(size, ty, stride, data),
                 Attr::FogCoord => Call::FogCoordPointer(ty, stride, data),
                 Attr::EdgeFlag => Call::EdgeFlagPointer(stride, data),
+                Attr::Index => Call::IndexPointer(ty, stride, data),
                 Attr::TexCoord(_) => Call::TexCoordPointer(size, ty, stride, data),
             });
         }
@@ -583,6 +593,8 @@ impl Context {
                     Attr::FogCoord => Some(Call::FogCoordf(x)),
                     Attr::Normal => Some(Call::Normal3f(x, y, z)),
                     Attr::Vertex => Some(Call::Vertex4f(x, y, z, w)),
+                    // Not a source: no draw reads colour indices in RGBA mode.
+                    Attr::Index => None,
                 });
             }
         }
@@ -613,6 +625,7 @@ impl Context {
                 Attr::FogCoord => c.fog_coord = v[0],
                 Attr::Normal => c.normal = Vec3::new(v[0], v[1], v[2]),
                 Attr::Vertex => self.vertex(Vec4::from_array(v)),
+                Attr::Index => {}
             }
         }
     }
@@ -890,6 +903,7 @@ impl Context {
             gl::SECONDARY_COLOR_ARRAY_POINTER => Some(&a.secondary_color),
             gl::FOG_COORD_ARRAY_POINTER => Some(&a.fog_coord),
             gl::EDGE_FLAG_ARRAY_POINTER => Some(&a.edge_flag),
+            gl::INDEX_ARRAY_POINTER => Some(&a.index),
             gl::TEXTURE_COORD_ARRAY_POINTER => a.tex_coords.get(self.state.client_active_texture),
             _ => None,
         };

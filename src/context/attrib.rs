@@ -207,7 +207,7 @@ pub(crate) fn copy_client_groups(mask: u32, d: &mut State, s: &State) {
         // Tables 6.6 to 6.9: every array's enable, size, type, stride, pointer and buffer
         // binding, and the two buffer bindings (not the buffers' contents).
         copy!(d, s; arrays.vertex, arrays.normal, arrays.color, arrays.secondary_color,
-            arrays.fog_coord, arrays.edge_flag, arrays.tex_coords, arrays.array_buffer,
+            arrays.fog_coord, arrays.edge_flag, arrays.index, arrays.tex_coords, arrays.array_buffer,
             arrays.element_array_buffer);
     }
 }

@@ -233,6 +233,9 @@ impl Context {
             Call::EdgeFlagPointer(stride, ref pointer) => {
                 self.edge_flag_pointer(stride, pointer.clone())
             }
+            Call::IndexPointer(type_, stride, ref pointer) => {
+                self.index_pointer(type_, stride, pointer.clone())
+            }
             Call::InterleavedArrays(format, stride, ref pointer) => {
                 self.interleaved_arrays(format, stride, pointer.clone())
             }

@@ -44,6 +44,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
     "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
     "GL_EXT_texture3D ",            // TexImage3D, TexSubImage3D (GL 1.2)
+    "GL_EXT_vertex_array ",         // the *PointerEXT commands with a count (capi; GL 1.1 core)
     "GL_WIN_phong_shading ",        // ShadeModel(PHONG_WIN): fixedgl's per-fragment lighting
 );
 
@@ -309,6 +310,7 @@ impl Context {
             | gl::SECONDARY_COLOR_ARRAY
             | gl::FOG_COORD_ARRAY
             | gl::EDGE_FLAG_ARRAY
+            | gl::INDEX_ARRAY
             | gl::TEXTURE_COORD_ARRAY => b(s.arrays.enabled(pname, s.client_active_texture)?),
             gl::VERTEX_ARRAY_SIZE => i(s.arrays.vertex.size),
             gl::VERTEX_ARRAY_TYPE => e(s.arrays.vertex.ty),
@@ -330,6 +332,9 @@ impl Context {
             gl::FOG_COORD_ARRAY_BUFFER_BINDING => e(s.arrays.fog_coord.buffer),
             gl::EDGE_FLAG_ARRAY_STRIDE => i(s.arrays.edge_flag.stride),
             gl::EDGE_FLAG_ARRAY_BUFFER_BINDING => e(s.arrays.edge_flag.buffer),
+            gl::INDEX_ARRAY_TYPE => e(s.arrays.index.ty),
+            gl::INDEX_ARRAY_STRIDE => i(s.arrays.index.stride),
+            gl::INDEX_ARRAY_BUFFER_BINDING => e(s.arrays.index.buffer),
             gl::TEXTURE_COORD_ARRAY_SIZE => {
                 i(s.arrays.tex_coords.get(s.client_active_texture)?.size)
             }

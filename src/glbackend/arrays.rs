@@ -81,6 +81,7 @@ impl GlBackend {
             Call::EdgeFlagPointer(st, ref p) => {
                 a.pointer(Attr::EdgeFlag, 1, gl::UNSIGNED_BYTE, st, p)?
             }
+            Call::IndexPointer(t, st, ref p) => a.pointer(Attr::Index, 1, t, st, p)?,
             Call::InterleavedArrays(f, st, ref p) => a.interleaved_arrays(f, st, p, unit)?,
             Call::ArrayElement(i) => {
                 a.check_array_element(i)?;
@@ -264,6 +265,7 @@ impl GlBackend {
             &a.secondary_color,
             &a.fog_coord,
             &a.edge_flag,
+            &a.index,
         ]
         .into_iter()
         .chain(a.tex_coords.iter())
@@ -330,6 +332,9 @@ impl GlBackend {
             bind(&a.edge_flag);
             gl.EdgeFlagPointer(a.edge_flag.stride, ptr(&a.edge_flag.pointer));
             enable(gl::EDGE_FLAG_ARRAY, &a.edge_flag);
+            bind(&a.index);
+            gl.IndexPointer(a.index.ty, a.index.stride, ptr(&a.index.pointer));
+            enable(gl::INDEX_ARRAY, &a.index);
             for (u, t) in a.tex_coords.iter().enumerate() {
                 gl.ClientActiveTexture(gl::TEXTURE0 + u as u32);
                 bind(t);

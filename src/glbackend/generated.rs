@@ -248,6 +248,7 @@ impl GlBackend {
             Call::TexCoordPointer(..) => self.arrays_call(call),
             Call::FogCoordPointer(..) => self.arrays_call(call),
             Call::EdgeFlagPointer(..) => self.arrays_call(call),
+            Call::IndexPointer(..) => self.arrays_call(call),
             Call::InterleavedArrays(..) => self.arrays_call(call),
             Call::ArrayElement(..) => self.arrays_call(call),
             Call::DrawArrays(..) => self.arrays_call(call),

@@ -358,7 +358,7 @@ fn queries_report_the_state_tables() {
         v[0]
     };
     // Initial values: GL 2.1 tables 6.6 to 6.8 and §2.9.
-    let initial: [(u32, i32); 20] = [
+    let initial: [(u32, i32); 23] = [
         (gl::VERTEX_ARRAY_SIZE, 4),
         (gl::VERTEX_ARRAY_TYPE, gl::FLOAT as i32),
         (gl::VERTEX_ARRAY_STRIDE, 0),
@@ -372,6 +372,9 @@ fn queries_report_the_state_tables() {
         (gl::TEXTURE_COORD_ARRAY_TYPE, gl::FLOAT as i32),
         (gl::FOG_COORD_ARRAY_TYPE, gl::FLOAT as i32),
         (gl::EDGE_FLAG_ARRAY_STRIDE, 0),
+        (gl::INDEX_ARRAY_TYPE, gl::FLOAT as i32),
+        (gl::INDEX_ARRAY_STRIDE, 0),
+        (gl::INDEX_ARRAY, 0),
         (gl::ARRAY_BUFFER_BINDING, 0),
         (gl::ELEMENT_ARRAY_BUFFER_BINDING, 0),
         (gl::VERTEX_ARRAY_BUFFER_BINDING, 0),
@@ -412,6 +415,21 @@ fn queries_report_the_state_tables() {
     assert!(c.is_enabled(gl::TEXTURE_COORD_ARRAY));
     assert!(c.is_enabled(gl::NORMAL_ARRAY));
     assert!(!c.is_enabled(gl::VERTEX_ARRAY));
+    // The colour-index array: held, enabled and queried; no RGBA draw reads it.
+    c.index_pointer(gl::SHORT, 10, &[0i16; 6]);
+    c.enable_client_state(gl::INDEX_ARRAY);
+    assert_eq!(geti(&mut c, gl::INDEX_ARRAY_TYPE), gl::SHORT as i32);
+    assert_eq!(geti(&mut c, gl::INDEX_ARRAY_STRIDE), 10);
+    assert!(c.is_enabled(gl::INDEX_ARRAY));
+    assert_eq!(
+        c.get_pointerv(gl::INDEX_ARRAY_POINTER),
+        Pointer::Data(vec![0; 12])
+    );
+    c.interleaved_arrays(gl::V2F, 0, &[0f32; 4]);
+    assert!(
+        !c.is_enabled(gl::INDEX_ARRAY),
+        "InterleavedArrays disables INDEX_ARRAY"
+    );
     assert_eq!(
         c.get_pointerv(gl::TEXTURE_COORD_ARRAY_POINTER),
         Pointer::Data(vec![0; 16])
@@ -515,6 +533,9 @@ const ERRORS: &[(&str, Step, Step, u32)] = &[
     ("TexCoordPointer UNSIGNED_INT", none, |c| c.tex_coord_pointer(2, gl::UNSIGNED_INT, 0, &[0u32; 2]), IE),
     ("FogCoordPointer INT", none, |c| c.fog_coord_pointer(gl::INT, 0, &[0i32; 1]), IE),
     ("EdgeFlagPointer stride -1", none, |c| c.edge_flag_pointer(-1, &[true]), IV),
+    ("IndexPointer UNSIGNED_SHORT", none, |c| c.index_pointer(gl::UNSIGNED_SHORT, 0, &[0u16; 1]), IE),
+    ("IndexPointer stride -1", none, |c| c.index_pointer(gl::INT, -1, &[0i32; 1]), IV),
+    ("IndexPointer in Begin/End", inside, |c| c.index_pointer(gl::FLOAT, 0, &[0f32; 1]), IO),
     ("InterleavedArrays(FLOAT)", none, |c| c.interleaved_arrays(gl::FLOAT, 0, &[0f32; 8]), IE),
     ("InterleavedArrays stride -1", none, |c| c.interleaved_arrays(gl::V3F, -1, &[0f32; 8]), IV),
     ("DrawArrays mode 10", three, |c| c.draw_arrays(10, 0, 3), IE),
