@@ -6,6 +6,7 @@
 
 use std::io::Write as _;
 
+use crate::common::cpu_vs_gl;
 use fixedgl::compare::compare;
 use fixedgl::glbackend::GlBackend;
 use fixedgl::{gl, scenes, Call, Context};
@@ -504,32 +505,6 @@ fn combine_matches_the_driver() {
             gi.get_pixel(1, 1)
         );
     }
-}
-
-/// Records `draw` on a CPU context of `w` x `w`, replays it on the driver, and returns the number
-/// of pixels off by more than `tol`, with the first one for the message.
-fn cpu_vs_gl(w: u32, tol: u8, draw: impl FnOnce(&mut Context)) -> Option<(u64, String)> {
-    let mut gl = backend(w, w)?;
-    let Ok(mut cpu) = Context::new(w, w) else {
-        panic!("CPU context")
-    };
-    cpu.start_recording();
-    draw(&mut cpu);
-    let calls = cpu.stop_recording();
-    assert_eq!(cpu.get_error(), gl::NO_ERROR);
-    gl.replay(&calls);
-    assert_eq!(gl.get_error(), gl::NO_ERROR);
-    let (ci, gi) = (cpu.to_image(), gl.read_image());
-    let cmp = compare(&ci, &gi, tol);
-    let first = ci
-        .enumerate_pixels()
-        .find(|(x, y, p)| {
-            let q = gi.get_pixel(*x, *y);
-            p.0.iter().zip(q.0).any(|(a, b)| a.abs_diff(b) > tol)
-        })
-        .map(|(x, y, p)| format!("({x},{y}) cpu {:?} gl {:?}", p.0, gi.get_pixel(x, y).0))
-        .unwrap_or_default();
-    Some((cmp.differing_pixels, first))
 }
 
 #[test]

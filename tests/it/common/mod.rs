@@ -193,3 +193,36 @@ pub const ENUMS: &[u32] = &[
     gl::STREAM_COPY,
     // --- end arrays
 ];
+
+/// Records `draw` on a CPU context of `w` x `w`, replays it on the driver, and returns the number
+/// of pixels off by more than `tol`, with the first one for the message; `None` (a skip, said on
+/// stderr) without a GL backend.
+#[cfg(feature = "gl")]
+pub fn cpu_vs_gl(
+    w: u32,
+    tol: u8,
+    draw: impl FnOnce(&mut fixedgl::Context),
+) -> Option<(u64, String)> {
+    use fixedgl::{gl, Context};
+    let mut backend = test_backend(w, w)?;
+    let Ok(mut cpu) = Context::new(w, w) else {
+        panic!("CPU context")
+    };
+    cpu.start_recording();
+    draw(&mut cpu);
+    let calls = cpu.stop_recording();
+    assert_eq!(cpu.get_error(), gl::NO_ERROR);
+    backend.replay(&calls);
+    assert_eq!(backend.get_error(), gl::NO_ERROR);
+    let (ci, gi) = (cpu.to_image(), backend.read_image());
+    let cmp = fixedgl::compare::compare(&ci, &gi, tol);
+    let first = ci
+        .enumerate_pixels()
+        .find(|(x, y, p)| {
+            let q = gi.get_pixel(*x, *y);
+            p.0.iter().zip(q.0).any(|(a, b)| a.abs_diff(b) > tol)
+        })
+        .map(|(x, y, p)| format!("({x},{y}) cpu {:?} gl {:?}", p.0, gi.get_pixel(x, y).0))
+        .unwrap_or_default();
+    Some((cmp.differing_pixels, first))
+}
