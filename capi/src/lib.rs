@@ -10,6 +10,8 @@
 //!   data through `args.rs`. One that fixedgl does not implement exists (so that libraries linked
 //!   with BIND_NOW load), does nothing, says so once on stderr, and is NULL from GetProcAddress.
 //! - `manual.rs`: the commands that answer through pointers or return values (queries, names).
+//! - `ext_vertex_array.rs`: GL_EXT_vertex_array's `gl*PointerEXT` (the GL 1.1 commands with an
+//!   unused count), re-exported by `manual.rs` so that the GetProcAddress table finds them.
 //! - `current.rs`: contexts, the current one per thread, and the panic boundary.
 //! - `egl.rs`, `osmesa.rs`, `glx.rs`: the window-system APIs that make contexts current on
 //!   surfaces; `xwin.rs`: Xlib (loaded at run time) and the X drawables GLX presents into.
