@@ -618,7 +618,11 @@ impl FragCtx<'_> {
         lambda
     }
 
-    /// A span through the full sequence (`ops` enabled): every pixel in order.
+    /// A span through the full sequence (`ops` enabled), eight fragments at a time
+    /// (`oplanes`): varyings, colour, clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil
+    /// and depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write;
+    /// each lane computes what `full` computes for its fragment. The colour of a textured or
+    /// PHONG_WIN fragment comes from `color` one fragment at a time.
     #[allow(clippy::too_many_arguments)]
     fn full_span(
         &self,
@@ -632,6 +636,8 @@ impl FragCtx<'_> {
         x0: i32,
         n: usize,
     ) {
+        use super::lanes::{depth_lanes, lane_x, recip, unorm8_lanes, LANES};
+        use super::oplanes as ol;
         let ox = p.bbox[0];
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
@@ -639,37 +645,134 @@ impl FragCtx<'_> {
             0
         };
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
-        let mut v = [0.0f32; super::setup::MAXV];
-        let nv = self.rl.n.min(v.len());
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let nv = self.rl.n.min(super::setup::MAXV);
+        let n = n.min(TILE);
         // A polygon stipple (§3.5.6) removes fragments before any test.
         let y = p.bbox[1] + fy as i32;
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
         let live = match self.stipple {
-            Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
-            _ => u64::MAX,
+            Some(rows) if p.flags & F_LINE == 0 => all & stipple_mask(&rows, x0, y),
+            _ => all,
         };
-        for k in 0..n.min(TILE) {
-            if live & (1 << k) == 0 {
+        // The colour is the interpolated primary (plus the secondary): computed on lanes.
+        let plain = self.tex[0].is_none() && p.flags & F_PHONG == 0;
+        let spec = self.rl.spec.filter(|&s| self.color_sum && s + 3 <= nv);
+        let fog_at = self.rl.fog.filter(|&o| o < nv);
+        let side = ops
+            .stencil
+            .as_ref()
+            .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
+        let depth = self
+            .depth_test
+            .then_some((self.depth_func, self.depth_mask));
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let mut v = [[0.0f32; LANES]; super::setup::MAXV];
+        let mut c = 0;
+        while c < n {
+            let m = ((live >> c) & 0xFF) as u8;
+            let i0 = base + c;
+            if m == 0 {
+                c += LANES;
                 continue;
             }
-            let fx = (x0 - ox + k as i32) as f32;
-            let z = zrow + p.z[1] * fx;
-            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+            let fx = lane_x(x0 - ox + c as i32);
+            let (w0, wx, wy) = (pl(0), pl(1), pl(2));
+            let inv = recip(fx.map(|x| w0 + wx * x + wy * fy));
             for (j, vj) in v.iter_mut().enumerate().take(nv) {
                 let o = 3 + 3 * j;
-                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
-                *vj = if j < nflat { val } else { val * inv };
+                let (a, b, d) = (pl(o), pl(o + 1), pl(o + 2));
+                *vj = if j < nflat {
+                    fx.map(|x| a + b * x + d * fy)
+                } else {
+                    std::array::from_fn(|l| (a + b * fx[l] + d * fy) * inv[l])
+                };
             }
-            let qx = (x0 + k as i32) & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                // `fy` is the row's offset from the bounding box's bottom (an integer).
-                let y = p.bbox[1] + fy as i32;
-                lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+            let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
+            if plain {
+                if let Some(s) = spec {
+                    for (k, ch) in col.iter_mut().enumerate() {
+                        let add = if k < 3 { v[s + k] } else { [0.0; LANES] };
+                        *ch = std::array::from_fn(|l| ch[l] + add[l]);
+                    }
+                }
+            } else {
+                let mut vv = [0.0f32; super::setup::MAXV];
+                for l in 0..LANES {
+                    if m & (1 << l) == 0 {
+                        continue;
+                    }
+                    for (d, s) in vv.iter_mut().zip(&v).take(nv) {
+                        *d = s[l];
+                    }
+                    let qx = (x0 + (c + l) as i32) & !1;
+                    if qx != quad_x {
+                        quad_x = qx;
+                        lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+                    }
+                    let cc = self.color(p, &vv[..nv], lambda).to_array();
+                    for (ch, cc) in col.iter_mut().zip(cc) {
+                        ch[l] = cc;
+                    }
+                }
             }
-            let c = self.color(p, &v[..nv], lambda);
-            let fogc = self.fog_coord(&v[..nv]);
-            self.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
+            let [r, g, b, a] = col.map(ol::clamp01);
+            let mut rgb = [r, g, b];
+            if let Some(f) = &ops.fog {
+                ol::fog(f, &mut rgb, fog_at.map_or([0.0; LANES], |o| v[o]));
+            }
+            let mut m = m;
+            if let Some((func, reference)) = ops.alpha {
+                m &= ol::alpha_test(func, reference, a);
+            }
+            if m == 0 {
+                c += LANES;
+                continue;
+            }
+            let d = if self.depth_test {
+                depth_lanes(fx.map(|x| zrow + p.z[1] * x))
+            } else {
+                [0; LANES]
+            };
+            let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+            m = match side {
+                Some(side) => {
+                    let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                    ol::stencil_depth(side, depth, st, dp, d, m)
+                }
+                None if self.depth_test => {
+                    ol::depth_test(self.depth_func, self.depth_mask, dp, d, m)
+                }
+                None => m,
+            };
+            if m == 0 {
+                c += LANES;
+                continue;
+            }
+            if self.samples {
+                bufs.samples += u64::from(m.count_ones());
+            }
+            let src = [rgb[0], rgb[1], rgb[2], a].map(unorm8_lanes);
+            // Blending and the logic op read each colour buffer's own contents (§4.1.8,
+            // §4.1.10).
+            let combine = |row: &[[u8; 4]]| match ops.write {
+                ColorWrite::Replace => src,
+                ColorWrite::Blend(b) => ol::blend(&b, &src, &ol::load(row)),
+                ColorWrite::Logic(op) => ol::logic(op, &src, &ol::load(row)),
+            };
+            for buf in [Some(&mut *bufs.color), bufs.color2.as_deref_mut()]
+                .into_iter()
+                .flatten()
+            {
+                let row = buf.get_mut(i0..).unwrap_or_default();
+                let out = combine(row);
+                for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        self.store_one(dst, out.map(|ch| ch[l]));
+                    }
+                }
+            }
+            c += LANES;
         }
     }
 }

@@ -17,7 +17,7 @@ pub const LANES: usize = 8;
 /// `x`, `x` + 1, ... as floats, one a lane: the same values as `(x + l) as f32`, since every
 /// integer involved is far below 2^24 (window offsets are at most 16384) and so exact.
 #[inline(always)]
-fn lane_x(x: i32) -> [f32; LANES] {
+pub(super) fn lane_x(x: i32) -> [f32; LANES] {
     const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
     let b = x as f32;
     IOTA.map(|l| b + l)
@@ -27,7 +27,7 @@ fn lane_x(x: i32) -> [f32; LANES] {
 /// SSE2 `divps` of the x86-64 baseline gives the same correctly rounded quotients four at a
 /// time.
 #[inline(always)]
-fn recip(d: [f32; LANES]) -> [f32; LANES] {
+pub(super) fn recip(d: [f32; LANES]) -> [f32; LANES] {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{__m128, _mm_div_ps, _mm_set1_ps, _mm_set_ps};
@@ -54,7 +54,7 @@ fn recip(d: [f32; LANES]) -> [f32; LANES] {
 /// `framebuffer::unorm8` on every lane: NaN and negative to 0, above 1 to 1, then
 /// `c·(255/256) + 2^15`, whose low mantissa byte is the result.
 #[inline(always)]
-fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
+pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
     let mut out = [0u8; LANES];
     for (o, c) in out.iter_mut().zip(c) {
         // `!(c >= 0)` is true for NaN as for negatives: both give 0, as `unorm8` does.
@@ -122,7 +122,7 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
 
 /// `framebuffer::depth_unorm(f64::from(z))` on every lane (a NaN gives 0, as there).
 #[inline(always)]
-fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
+pub(super) fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
     std::array::from_fn(|l| {
         let z = f64::from(z[l]);
         // `clamp` keeps a NaN, which the final cast turns into 0; so do these comparisons.

@@ -46,6 +46,7 @@ pub mod fragops;
 pub mod framebuffer;
 pub mod lanes;
 mod line;
+pub mod oplanes;
 pub mod pixels;
 mod polygon;
 pub mod raster;
