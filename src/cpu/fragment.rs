@@ -776,3 +776,243 @@ impl FragCtx<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! `full_span` (eight fragments at a time) against the scalar sequence it replaced, each
+    //! fragment through `full`, on random states, spans and buffers: byte for byte.
+
+    use super::*;
+    use crate::cpu::fragops::{BlendEval, FogEval, StencilSide};
+    use crate::cpu::framebuffer::DEPTH_MAX;
+    use crate::cpu::setup::{PrimKind, RLayout};
+
+    /// The scalar span: every fragment in order through `full` (the code before `oplanes`).
+    #[allow(clippy::too_many_arguments)]
+    fn scalar_span(
+        f: &FragCtx,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+    ) {
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            f.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; super::super::setup::MAXV];
+        let nv = f.rl.n.min(v.len());
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let y = p.bbox[1] + fy as i32;
+        let live = match f.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
+            _ => u64::MAX,
+        };
+        for k in 0..n.min(TILE) {
+            if live & (1 << k) == 0 {
+                continue;
+            }
+            let fx = (x0 - ox + k as i32) as f32;
+            let z = zrow + p.z[1] * fx;
+            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let o = 3 + 3 * j;
+                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
+                *vj = if j < nflat { val } else { val * inv };
+            }
+            let qx = (x0 + k as i32) & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                lambda = f.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+            }
+            let c = f.color(p, &v[..nv], lambda);
+            let fogc = f.fog_coord(&v[..nv]);
+            f.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
+        }
+    }
+
+    struct Gen(u64);
+    impl Gen {
+        fn next(&mut self) -> u64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            self.0 >> 11
+        }
+        fn pick(&mut self, v: &[u32]) -> u32 {
+            v[(self.next() % v.len() as u64) as usize]
+        }
+        /// Mostly in [−0.25, 1.25], now and then NaN or huge.
+        fn float(&mut self) -> f32 {
+            match self.next() % 40 {
+                0 => f32::NAN,
+                1 => 1e30,
+                _ => (self.next() % 1_000_000) as f32 * 1.5e-6 - 0.25,
+            }
+        }
+    }
+
+    const FUNCS: [u32; 8] = [
+        gl::NEVER,
+        gl::LESS,
+        gl::EQUAL,
+        gl::LEQUAL,
+        gl::GREATER,
+        gl::NOTEQUAL,
+        gl::GEQUAL,
+        gl::ALWAYS,
+    ];
+
+    #[test]
+    fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
+        let mut g = Gen(21);
+        let sops = [gl::KEEP, gl::ZERO, gl::REPLACE, gl::INCR, gl::DECR_WRAP, gl::INVERT];
+        let factors = [
+            gl::ZERO,
+            gl::ONE,
+            gl::SRC_ALPHA,
+            gl::ONE_MINUS_SRC_ALPHA,
+            gl::DST_COLOR,
+            gl::CONSTANT_COLOR,
+            gl::SRC_ALPHA_SATURATE,
+        ];
+        let eqs = [gl::FUNC_ADD, gl::FUNC_SUBTRACT, gl::MIN];
+        for round in 0..3000 {
+            let spec = g.next() % 2 == 0;
+            let fog_on = g.next() % 2 == 0;
+            let mut rl = RLayout {
+                n: 4,
+                ..Default::default()
+            };
+            if spec {
+                rl.spec = Some(rl.n);
+                rl.n += 4;
+            }
+            if fog_on || g.next() % 3 == 0 {
+                rl.fog = Some(rl.n);
+                rl.n += 1;
+            }
+            let mut side = || StencilSide {
+                func: g.pick(&FUNCS),
+                reference: g.next() as u8 % 4,
+                mask: if g.next() % 2 == 0 { 0xFF } else { 3 },
+                ops: [g.pick(&sops), g.pick(&sops), g.pick(&sops)],
+                write: if g.next() % 2 == 0 { 0xFF } else { g.next() as u8 },
+            };
+            let sides = [side(), side()];
+            let stencil = (g.next() % 2 == 0).then_some(sides);
+            let write = match g.next() % 3 {
+                0 => ColorWrite::Replace,
+                1 => ColorWrite::Blend(BlendEval {
+                    src_rgb: g.pick(&factors),
+                    dst_rgb: g.pick(&factors),
+                    src_alpha: g.pick(&factors),
+                    dst_alpha: g.pick(&factors),
+                    eq_rgb: g.pick(&eqs),
+                    eq_alpha: g.pick(&eqs),
+                    constant: [g.next() as u8, 7, 200, g.next() as u8],
+                }),
+                _ => ColorWrite::Logic(gl::CLEAR + (g.next() % 16) as u32),
+            };
+            let ops = Ops {
+                fog: fog_on.then(|| FogEval {
+                    mode: g.pick(&[gl::LINEAR, gl::EXP, gl::EXP2]),
+                    density: (g.next() % 100) as f32 * 0.05,
+                    start: 0.1,
+                    end: if g.next() % 5 == 0 { 0.1 } else { 0.9 },
+                    color: Vec3::new(g.float(), 0.5, g.float()),
+                }),
+                alpha: (g.next() % 2 == 0).then(|| (g.pick(&FUNCS), g.next() as u8)),
+                stencil,
+                write,
+            };
+            let stipple = (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32));
+            let f = FragCtx {
+                depth_test: g.next() % 4 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: if g.next() % 3 == 0 {
+                    std::array::from_fn(|_| g.next() % 2 == 0)
+                } else {
+                    [true; 4]
+                },
+                color_sum: spec && g.next() % 4 != 0,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: g.next() % 8 == 0,
+                samples: g.next() % 2 == 0,
+                stipple,
+                ops: Some(ops),
+                tex: [None; MAX_TEXTURE_UNITS],
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];
+            let bbox = [tx + (g.next() % 40) as i32 - 20, ty + (g.next() % 40) as i32 - 20];
+            // Depths: a plane crossing the stored values, sometimes outside [0, 1].
+            let z = [g.float(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags,
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z,
+            };
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for _ in 0..rl.n {
+                planes.extend([g.float(), g.float() * 1e-2, g.float() * 1e-2]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let two = g.next() % 4 == 0;
+            let color2: Vec<[u8; 4]> = color.iter().map(|c| c.map(|x| x ^ 0x5A)).collect();
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let stencil: Vec<u8> = (0..TILE * TILE).map(|_| g.next() as u8 % 4).collect();
+            let y = ty + (g.next() % TILE as u64) as i32;
+            let x0 = tx + (g.next() % TILE as u64) as i32;
+            let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) =
+                    (color.clone(), color2.clone(), depth.clone(), stencil.clone());
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                } else {
+                    let fy = (y - p.bbox[1]) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
+                    let n = (x1 - x0 + 1) as usize;
+                    scalar_span(&f, &ops, &mut bufs, &p, &planes, fy, zrow, base, x0, n);
+                }
+                let samples = bufs.samples;
+                (c, c2, d, s, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(got == want, "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}");
+        }
+    }
+}

@@ -26,14 +26,12 @@ pub type B = [u8; LANES];
 /// `minps`: a NaN gives 0, −0 gives +0).
 #[inline(always)]
 pub fn clamp01(c: F) -> F {
-    c.map(|c| {
-        let c = if c > 0.0 { c } else { 0.0 };
-        if c < 1.0 {
-            c
-        } else {
-            1.0
-        }
-    })
+    let mut out = [0.0; LANES];
+    for l in 0..LANES {
+        let c = if c[l] > 0.0 { c[l] } else { 0.0 };
+        out[l] = if c < 1.0 { c } else { 1.0 };
+    }
+    out
 }
 
 /// `FogEval::factor` on every lane: LINEAR on lanes, EXP and EXP2 through the scalar `exp`.
@@ -44,14 +42,15 @@ pub fn fog_factor(fog: &FogEval, coord: F) -> F {
     }
     let scale = -1.0 / (fog.end - fog.start);
     let e = fog.end * -scale;
-    coord.map(|c| {
-        let f = c * scale + e;
-        if f.is_nan() {
-            0.0
-        } else {
-            f.clamp(0.0, 1.0)
-        }
-    })
+    let mut out = [0.0; LANES];
+    for l in 0..LANES {
+        let f = coord[l] * scale + e;
+        // `f32::clamp(0, 1)` with a NaN counted as 0: the same selects as `FogEval::factor`.
+        let f = if f.is_nan() { 0.0 } else { f };
+        let f = if f < 0.0 { 0.0 } else { f };
+        out[l] = if f > 1.0 { 1.0 } else { f };
+    }
+    out
 }
 
 /// `FogEval::apply` on every lane: `rgb` (clamped) becomes `C_f + f·(C − C_f)`; alpha is
@@ -60,9 +59,10 @@ pub fn fog_factor(fog: &FogEval, coord: F) -> F {
 pub fn fog(fog: &FogEval, rgb: &mut [F; 3], coord: F) {
     let f = fog_factor(fog, coord);
     let cf = fog.color.to_array();
-    for (ch, cf) in rgb.iter_mut().zip(cf) {
-        for (c, f) in ch.iter_mut().zip(f) {
-            *c = cf + (*c - cf) * f;
+    for k in 0..3 {
+        let ch = &mut rgb[k];
+        for l in 0..LANES {
+            ch[l] = cf[k] + (ch[l] - cf[k]) * f[l];
         }
     }
 }
@@ -460,7 +460,7 @@ mod tests {
         ];
         let mut g = Gen(17);
         for _ in 0..6000 {
-            let mut pick = |g: &mut Gen| factors[(g.next() % factors.len() as u64) as usize];
+            let pick = |g: &mut Gen| factors[(g.next() % factors.len() as u64) as usize];
             let b = BlendEval {
                 src_rgb: pick(&mut g),
                 dst_rgb: pick(&mut g),
