@@ -875,7 +875,14 @@ mod tests {
     #[test]
     fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
         let mut g = Gen(21);
-        let sops = [gl::KEEP, gl::ZERO, gl::REPLACE, gl::INCR, gl::DECR_WRAP, gl::INVERT];
+        let sops = [
+            gl::KEEP,
+            gl::ZERO,
+            gl::REPLACE,
+            gl::INCR,
+            gl::DECR_WRAP,
+            gl::INVERT,
+        ];
         let factors = [
             gl::ZERO,
             gl::ONE,
@@ -906,7 +913,11 @@ mod tests {
                 reference: g.next() as u8 % 4,
                 mask: if g.next() % 2 == 0 { 0xFF } else { 3 },
                 ops: [g.pick(&sops), g.pick(&sops), g.pick(&sops)],
-                write: if g.next() % 2 == 0 { 0xFF } else { g.next() as u8 },
+                write: if g.next() % 2 == 0 {
+                    0xFF
+                } else {
+                    g.next() as u8
+                },
             };
             let sides = [side(), side()];
             let stencil = (g.next() % 2 == 0).then_some(sides);
@@ -957,7 +968,10 @@ mod tests {
             };
             let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
             let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];
-            let bbox = [tx + (g.next() % 40) as i32 - 20, ty + (g.next() % 40) as i32 - 20];
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
             // Depths: a plane crossing the stored values, sometimes outside [0, 1].
             let z = [g.float(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
             let p = RPrim {
@@ -988,8 +1002,12 @@ mod tests {
             let x0 = tx + (g.next() % TILE as u64) as i32;
             let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
             let run = |lanes: bool| {
-                let (mut c, mut c2, mut d, mut s) =
-                    (color.clone(), color2.clone(), depth.clone(), stencil.clone());
+                let (mut c, mut c2, mut d, mut s) = (
+                    color.clone(),
+                    color2.clone(),
+                    depth.clone(),
+                    stencil.clone(),
+                );
                 let mut bufs = TileBufs {
                     color: &mut c,
                     color2: two.then_some(&mut c2[..]),
@@ -1012,7 +1030,10 @@ mod tests {
                 (c, c2, d, s, samples)
             };
             let (got, want) = (run(true), run(false));
-            assert!(got == want, "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}");
+            assert!(
+                got == want,
+                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
         }
     }
 }

@@ -22,16 +22,34 @@ pub type F = [f32; LANES];
 /// One unorm8 value a lane.
 pub type B = [u8; LANES];
 
-/// `Vec4::clamp(ZERO, ONE)` on every lane, as glam computes it on SSE2 (`maxps` then
-/// `minps`: a NaN gives 0, −0 gives +0).
+/// `Vec4::clamp(ZERO, ONE)` on every lane, with glam's own SSE2 instructions (`maxps` with 0,
+/// then `minps` with 1: a NaN gives 0, −0 gives +0); LLVM kept the equivalent selects scalar.
 #[inline(always)]
 pub fn clamp01(c: F) -> F {
-    let mut out = [0.0; LANES];
-    for l in 0..LANES {
-        let c = if c[l] > 0.0 { c[l] } else { 0.0 };
-        out[l] = if c < 1.0 { c } else { 1.0 };
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128, _mm_loadu_ps, _mm_max_ps, _mm_min_ps, _mm_set1_ps};
+        // SAFETY: SSE is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 from a
+        // `[f32; 8]` at offsets 0 and 4 (in bounds, no alignment needed); `__m128` has the
+        // layout of `[f32; 4]` and every bit pattern is valid for both.
+        unsafe {
+            let (zero, one) = (_mm_set1_ps(0.0), _mm_set1_ps(1.0));
+            let lo = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(c.as_ptr()), zero), one);
+            let hi = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(c.as_ptr().add(4)), zero), one);
+            let lo = std::mem::transmute::<__m128, [f32; 4]>(lo);
+            let hi = std::mem::transmute::<__m128, [f32; 4]>(hi);
+            [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+        }
     }
-    out
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let mut out = [0.0; LANES];
+        for l in 0..LANES {
+            let c = if c[l] > 0.0 { c[l] } else { 0.0 };
+            out[l] = if c < 1.0 { c } else { 1.0 };
+        }
+        out
+    }
 }
 
 /// `FogEval::factor` on every lane: LINEAR on lanes, EXP and EXP2 through the scalar `exp`.
