@@ -8,8 +8,9 @@
 //! stencil, blend or logic op enabled (`FragCtx::ops` is `None`, as in the lecture's surface
 //! scenes), the depth test runs over the whole span first and produces a coverage mask, and
 //! colours are computed only for the surviving pixels, returning at once when the mask is empty
-//! (Mesa `swrast/s_span.h`). Otherwise every pixel takes the full sequence, in spec order,
-//! because the alpha test needs the colour before the stencil and depth tests may write.
+//! (Mesa `swrast/s_span.h`). Otherwise the span takes the full sequence in spec order, eight
+//! fragments at a time (`oplanes`), because the alpha test needs the colour before the stencil
+//! and depth tests may write.
 
 use glam::{Vec3, Vec4};
 
