@@ -127,8 +127,9 @@ pub fn depth_test(func: u32, write: bool, row: &mut [u32], d: [u32; LANES], live
 
 /// The stencil test, the depth test (when `depth` is `Some((DepthFunc, DepthMask))`) and the
 /// stencil update (§4.1.5, §4.1.6) of lanes `live`: lane l's stored values are `st[l]` and
-/// `dp[l]` (lanes past either's end are dropped). The stencil operation is the one for
-/// stencil fail, depth fail or depth pass; the survivors' mask is returned.
+/// `dp[l]` (lanes past `st`'s end are dropped; a lane past `dp`'s end fails the depth test, as
+/// in `FragCtx::depth`). The stencil operation is the one for stencil fail, depth fail or depth
+/// pass; the survivors' mask is returned.
 #[inline(always)]
 pub fn stencil_depth(
     side: &StencilSide,
@@ -139,20 +140,21 @@ pub fn stencil_depth(
     live: u8,
 ) -> u8 {
     let mut m = 0u8;
-    for (l, (s, stored)) in st.iter_mut().zip(dp.iter_mut()).take(LANES).enumerate() {
+    for (l, s) in st.iter_mut().take(LANES).enumerate() {
         if live & (1 << l) == 0 {
             continue;
         }
         let which = if !side.test(*s) {
             0
         } else if let Some((func, write)) = depth {
-            if compare(func, d[l], *stored) {
-                if write {
-                    *stored = d[l];
+            match dp.get_mut(l) {
+                Some(stored) if compare(func, d[l], *stored) => {
+                    if write {
+                        *stored = d[l];
+                    }
+                    2
                 }
-                2
-            } else {
-                1
+                _ => 1,
             }
         } else {
             2
@@ -406,7 +408,9 @@ mod tests {
             let dv = |g: &mut Gen| (g.next() % 4) as u32 * 1000;
             let d: [u32; LANES] = std::array::from_fn(|_| dv(&mut g));
             let st0: Vec<u8> = (0..n).map(|_| g.byte()).collect();
-            let dp0: Vec<u32> = (0..n).map(|_| dv(&mut g)).collect();
+            // Now and then a shorter depth row: its missing lanes fail the depth test.
+            let nd = if g.next() % 8 == 0 { n / 2 } else { n };
+            let dp0: Vec<u32> = (0..nd).map(|_| dv(&mut g)).collect();
             let live = g.next() as u8;
             let (mut st, mut dp) = (st0.clone(), dp0.clone());
             let m = stencil_depth(&side, depth, &mut st, &mut dp, d, live);
@@ -420,7 +424,7 @@ mod tests {
                     0
                 } else {
                     match depth {
-                        Some((f, w)) if compare(f, d[l], wdp[l]) => {
+                        Some((f, w)) if l < nd && compare(f, d[l], wdp[l]) => {
                             if w {
                                 wdp[l] = d[l];
                             }
@@ -438,7 +442,7 @@ mod tests {
             let mut dp = dp0.clone();
             let m = depth_test(dfunc, write, &mut dp, d, live);
             let (mut wdp, mut wm) = (dp0.clone(), 0u8);
-            for l in 0..n {
+            for l in 0..nd {
                 if live & (1 << l) != 0 && compare(dfunc, d[l], wdp[l]) {
                     if write {
                         wdp[l] = d[l];
