@@ -433,7 +433,11 @@ impl Sampler {
             1 => self.fetch(lv, i, Some(0), Some(0), r),
             2 => {
                 let j = wrap_nearest(self.wrap[1], t, lv.height);
-                self.fetch(lv, i, j, Some(0), r)
+                match (self.compare, i, j) {
+                    // Inside the image, no comparison: `fetch`'s texel without its choices.
+                    (None, Some(i), Some(j)) => lv.texel(i, j),
+                    _ => self.fetch(lv, i, j, Some(0), r),
+                }
             }
             _ => {
                 let j = wrap_nearest(self.wrap[1], t, lv.height);
@@ -457,6 +461,21 @@ impl Sampler {
             return std::array::from_fn(|c| (1.0 - a) * t0[c] + a * t1[c]);
         }
         let (j0, j1, b) = wrap_linear(self.wrap[1], t, lv.height);
+        // A 2D image with four texels inside it and no depth comparison (the common case):
+        // the same texels (`texel` is `texel3` at k = 0) and weights, without the border and
+        // comparison choices made per texel.
+        if let (2, None, Some(i0), Some(i1), Some(j0), Some(j1)) =
+            (self.dims, self.compare, i0, i1, j0, j1)
+        {
+            let (t00, t10) = (lv.texel(i0, j0), lv.texel(i1, j0));
+            let (t01, t11) = (lv.texel(i0, j1), lv.texel(i1, j1));
+            return std::array::from_fn(|c| {
+                (1.0 - a) * (1.0 - b) * t00[c]
+                    + a * (1.0 - b) * t10[c]
+                    + (1.0 - a) * b * t01[c]
+                    + a * b * t11[c]
+            });
+        }
         let plane = |k: Option<i32>| {
             let t00 = self.fetch(lv, i0, j0, k, r);
             let t10 = self.fetch(lv, i1, j0, k, r);
