@@ -16,7 +16,8 @@ use glam::{Vec3, Vec4};
 
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
-use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG};
+use super::lanes::LANES;
+use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG, MAXV};
 use super::texture::Sampler;
 use super::vertex::Lighting;
 use crate::gl;
@@ -442,31 +443,62 @@ impl FragCtx<'_> {
                 return;
             }
         }
-        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
-        let mut v = [0.0f32; super::setup::MAXV];
+        // The general path (textured spans among them), eight fragments at a time: their
+        // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
+        // colour, stored on lanes when one colour buffer is written whole.
+        let mut v = [0.0f32; MAXV];
         let nv = nv.min(v.len());
-        // The quad whose λ is in `lambda` (none yet)
-        let mut quad_x = i32::MIN;
-        let mut lambda = [0.0f32; MAX_TEXTURE_UNITS];
-        while mask != 0 {
-            let k = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
-            let fx = (x0 - ox + k as i32) as f32;
-            let iw = pl(0) + pl(1) * fx + pl(2) * fy;
-            let inv = 1.0 / iw;
-            for (j, vj) in v.iter_mut().enumerate().take(nv) {
-                let o = 3 + 3 * j;
-                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
-                *vj = if j < nflat { val } else { val * inv };
+        let mut vl = [[0.0f32; LANES]; MAXV];
+        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
+        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
+        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        let qy = ((y & !1) - oy) as f32;
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut g = 0;
+        while g < n.min(64) {
+            let m = (mask >> g) & ((1 << LANES) - 1);
+            if m == 0 {
+                g += LANES;
+                continue;
             }
-            // λ once per 2x2 quad
-            let qx = (x0 + k as i32) & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                lambda = self.quad_lambda(planes, qx, y, ox, oy);
+            let vs = &mut vl[..nv];
+            super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
+            if lod {
+                let qx: [f32; LANES] =
+                    std::array::from_fn(|l| (((x0 + (g + l) as i32) & !1) - ox) as f32);
+                for (lu, t) in lam.iter_mut().zip(&self.tex) {
+                    let Some((tx, to)) = *t else { break };
+                    if tx.needs_lambda() {
+                        *lu = tx.quad_lambda_lanes(planes, to, qx, qy);
+                    }
+                }
             }
-            let c = self.color(p, &v[..nv], lambda);
-            self.write(bufs, base + k, c);
+            let mut col = [[0.0f32; LANES]; 4];
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                for (vj, lj) in v.iter_mut().zip(vs.iter()) {
+                    *vj = lj[l];
+                }
+                let k = g + l;
+                let lambda = lam.map(|u| u[l]);
+                let c = self.color(p, &v[..nv], lambda);
+                if whole {
+                    for (ch, x) in col.iter_mut().zip(c.to_array()) {
+                        ch[l] = x;
+                    }
+                } else {
+                    self.write(bufs, base + k, c);
+                }
+            }
+            if whole {
+                if let Some(dst) = bufs.color.get_mut(base + g..) {
+                    super::lanes::store_rgba(dst, m, &col);
+                }
+            }
+            g += LANES;
         }
     }
 
