@@ -45,6 +45,8 @@ pub mod antialiasing;
 pub mod sprites;
 // Accumulation buffer: motion blur, depth of field (scenes/accum.rs)
 pub mod accum;
+// Occlusion queries driving what is drawn (scenes/occlusion.rs)
+pub mod occlusion;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -179,6 +181,7 @@ static SCENES: &[Scene] = &[
     sprites::SCENES[0],
     accum::SCENES[0],
     accum::SCENES[1],
+    occlusion::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.
