@@ -437,7 +437,7 @@ impl Context {
         let modes = self.state.unpack;
         if let Some(p) = pixels {
             let need = image_need3(&modes, f, width, height, depth, three_d);
-            if need.is_none_or(|n| p.len() < n) {
+            if need.map_or(true, |n| p.len() < n) {
                 return self.error(gl::INVALID_OPERATION);
             }
         }
@@ -650,7 +650,7 @@ impl Context {
         let [width, height, depth] = size;
         let (three_d, modes) = (dims == 3, self.state.unpack);
         let need = image_need3(&modes, f, width, height, depth, three_d);
-        if need.is_none_or(|n| pixels.len() < n) {
+        if need.map_or(true, |n| pixels.len() < n) {
             return self.error(gl::INVALID_OPERATION);
         }
         let (t, maps) = (self.state.pixel, Arc::clone(&self.state.pixel_maps));
@@ -1066,7 +1066,7 @@ impl Context {
         // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).
         let (modes, three_d) = (self.state.pack, target == gl::TEXTURE_3D);
         let need = image_need3(&modes, f, lv.width, lv.height, lv.depth, three_d);
-        if need.is_none_or(|n| pixels.len() < n) {
+        if need.map_or(true, |n| pixels.len() < n) {
             return self.error(gl::INVALID_OPERATION);
         }
         // §6.1.4: the colour goes through the pixel transfer as ReadPixels' does (Mesa's
