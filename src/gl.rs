@@ -556,6 +556,8 @@ pub const UNSIGNED_INT_8_8_8_8_REV: u32 = 0x8367;
 pub const UNSIGNED_INT_2_10_10_10_REV: u32 = 0x8368;
 pub const BGR: u32 = 0x80E0;
 pub const BGRA: u32 = 0x80E1;
+/// GL_EXT_abgr's pixel format: A, B, G, R in that order.
+pub const ABGR_EXT: u32 = 0x8000;
 pub const MAX_ELEMENTS_VERTICES: u32 = 0x80E8;
 pub const MAX_ELEMENTS_INDICES: u32 = 0x80E9;
 pub const CLAMP_TO_EDGE: u32 = 0x812F;
@@ -1434,6 +1436,7 @@ pub const NAMES: &[(&str, u32)] = &[
     ("UNSIGNED_INT_2_10_10_10_REV", UNSIGNED_INT_2_10_10_10_REV),
     ("BGR", BGR),
     ("BGRA", BGRA),
+    ("ABGR_EXT", ABGR_EXT),
     ("MAX_ELEMENTS_VERTICES", MAX_ELEMENTS_VERTICES),
     ("MAX_ELEMENTS_INDICES", MAX_ELEMENTS_INDICES),
     ("CLAMP_TO_EDGE", CLAMP_TO_EDGE),

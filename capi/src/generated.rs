@@ -775,49 +775,81 @@ pub unsafe extern "C" fn glEnd() {
 /// `glIndexd(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexd(c: f64) {
-    unimplemented("glIndexd");
+    with_gl("glIndexd", |gl| {
+        gl.ctx.indexd(c);
+    })
 }
 
 /// `glIndexdv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexdv(c: *const f64) {
-    unimplemented("glIndexdv");
+    with_gl("glIndexdv", |gl| {
+        let c = match read::array::<f64, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexdv(c));
+    })
 }
 
 /// `glIndexf(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexf(c: f32) {
-    unimplemented("glIndexf");
+    with_gl("glIndexf", |gl| {
+        gl.ctx.indexf(c);
+    })
 }
 
 /// `glIndexfv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexfv(c: *const f32) {
-    unimplemented("glIndexfv");
+    with_gl("glIndexfv", |gl| {
+        let c = match read::array::<f32, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexfv(c));
+    })
 }
 
 /// `glIndexi(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexi(c: i32) {
-    unimplemented("glIndexi");
+    with_gl("glIndexi", |gl| {
+        gl.ctx.indexi(c);
+    })
 }
 
 /// `glIndexiv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexiv(c: *const i32) {
-    unimplemented("glIndexiv");
+    with_gl("glIndexiv", |gl| {
+        let c = match read::array::<i32, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexiv(c));
+    })
 }
 
 /// `glIndexs(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexs(c: i16) {
-    unimplemented("glIndexs");
+    with_gl("glIndexs", |gl| {
+        gl.ctx.indexs(c);
+    })
 }
 
 /// `glIndexsv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexsv(c: *const i16) {
-    unimplemented("glIndexsv");
+    with_gl("glIndexsv", |gl| {
+        let c = match read::array::<i16, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexsv(c));
+    })
 }
 
 /// `glNormal3b(nx, ny, nz)`.
@@ -2925,13 +2957,21 @@ pub unsafe extern "C" fn glPrioritizeTextures(
 /// `glIndexub(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexub(c: u8) {
-    unimplemented("glIndexub");
+    with_gl("glIndexub", |gl| {
+        gl.ctx.indexub(c);
+    })
 }
 
 /// `glIndexubv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexubv(c: *const u8) {
-    unimplemented("glIndexubv");
+    with_gl("glIndexubv", |gl| {
+        let c = match read::array::<u8, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexubv(c));
+    })
 }
 
 /// `glPopClientAttrib()`.
@@ -5364,6 +5404,16 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glHint" => glHint as *const c_void,
         b"glIndexPointer" => glIndexPointer as *const c_void,
         b"glIndexPointerEXT" => glIndexPointerEXT as *const c_void,
+        b"glIndexd" => glIndexd as *const c_void,
+        b"glIndexdv" => glIndexdv as *const c_void,
+        b"glIndexf" => glIndexf as *const c_void,
+        b"glIndexfv" => glIndexfv as *const c_void,
+        b"glIndexi" => glIndexi as *const c_void,
+        b"glIndexiv" => glIndexiv as *const c_void,
+        b"glIndexs" => glIndexs as *const c_void,
+        b"glIndexsv" => glIndexsv as *const c_void,
+        b"glIndexub" => glIndexub as *const c_void,
+        b"glIndexubv" => glIndexubv as *const c_void,
         b"glInitNames" => glInitNames as *const c_void,
         b"glInterleavedArrays" => glInterleavedArrays as *const c_void,
         b"glIsBuffer" => glIsBuffer as *const c_void,

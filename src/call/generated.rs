@@ -320,6 +320,26 @@ pub enum Call {
     EdgeFlag(bool),
     /// `glEdgeFlagv(flag)`.
     EdgeFlagv([bool; 1]),
+    /// `glIndexs(c)`.
+    Indexs(i16),
+    /// `glIndexi(c)`.
+    Indexi(i32),
+    /// `glIndexf(c)`.
+    Indexf(f32),
+    /// `glIndexd(c)`.
+    Indexd(f64),
+    /// `glIndexub(c)`.
+    Indexub(u8),
+    /// `glIndexsv(c)`.
+    Indexsv([i16; 1]),
+    /// `glIndexiv(c)`.
+    Indexiv([i32; 1]),
+    /// `glIndexfv(c)`.
+    Indexfv([f32; 1]),
+    /// `glIndexdv(c)`.
+    Indexdv([f64; 1]),
+    /// `glIndexubv(c)`.
+    Indexubv([u8; 1]),
 
     // Lighting and shading (GL 2.1 §2.14): context/lighting.rs
     /// `glMaterialf(face, pname, param)`.
@@ -1060,6 +1080,16 @@ pub const NAMES: &[&str] = &[
     "FogCoorddv",
     "EdgeFlag",
     "EdgeFlagv",
+    "Indexs",
+    "Indexi",
+    "Indexf",
+    "Indexd",
+    "Indexub",
+    "Indexsv",
+    "Indexiv",
+    "Indexfv",
+    "Indexdv",
+    "Indexubv",
     "Materialf",
     "Materiali",
     "Materialfv",
@@ -1464,6 +1494,16 @@ impl Call {
             Call::FogCoorddv(..) => "FogCoorddv",
             Call::EdgeFlag(..) => "EdgeFlag",
             Call::EdgeFlagv(..) => "EdgeFlagv",
+            Call::Indexs(..) => "Indexs",
+            Call::Indexi(..) => "Indexi",
+            Call::Indexf(..) => "Indexf",
+            Call::Indexd(..) => "Indexd",
+            Call::Indexub(..) => "Indexub",
+            Call::Indexsv(..) => "Indexsv",
+            Call::Indexiv(..) => "Indexiv",
+            Call::Indexfv(..) => "Indexfv",
+            Call::Indexdv(..) => "Indexdv",
+            Call::Indexubv(..) => "Indexubv",
             Call::Materialf(..) => "Materialf",
             Call::Materiali(..) => "Materiali",
             Call::Materialfv(..) => "Materialfv",
@@ -1839,6 +1879,16 @@ impl Call {
                 | Call::FogCoorddv(..)
                 | Call::EdgeFlag(..)
                 | Call::EdgeFlagv(..)
+                | Call::Indexs(..)
+                | Call::Indexi(..)
+                | Call::Indexf(..)
+                | Call::Indexd(..)
+                | Call::Indexub(..)
+                | Call::Indexsv(..)
+                | Call::Indexiv(..)
+                | Call::Indexfv(..)
+                | Call::Indexdv(..)
+                | Call::Indexubv(..)
                 | Call::Materialf(..)
                 | Call::Materiali(..)
                 | Call::Materialfv(..)
@@ -2092,6 +2142,16 @@ impl Call {
             Call::FogCoorddv(..) => &[],
             Call::EdgeFlag(..) => &[],
             Call::EdgeFlagv(..) => &[],
+            Call::Indexs(..) => &[],
+            Call::Indexi(..) => &[],
+            Call::Indexf(..) => &[],
+            Call::Indexd(..) => &[],
+            Call::Indexub(..) => &[],
+            Call::Indexsv(..) => &[],
+            Call::Indexiv(..) => &[],
+            Call::Indexfv(..) => &[],
+            Call::Indexdv(..) => &[],
+            Call::Indexubv(..) => &[],
             Call::Materialf(..) => &[Enum, Enum],
             Call::Materiali(..) => &[Enum, Enum],
             Call::Materialfv(..) => &[Enum, Enum],

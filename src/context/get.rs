@@ -41,6 +41,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_shadow ",               // TEXTURE_COMPARE_MODE (GL 1.4)
     "GL_ARB_vertex_buffer_object ", // buffer objects, MapBuffer (GL 1.5)
     "GL_ARB_window_pos ",           // WindowPos (GL 1.4)
+    "GL_EXT_abgr ",                 // the ABGR_EXT pixel format (every pixel command)
     "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
     "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
     "GL_EXT_texture3D ",            // TexImage3D, TexSubImage3D (GL 1.2)
@@ -152,6 +153,7 @@ impl Context {
             gl::CURRENT_NORMAL => norm(s.current.normal.to_array()),
             gl::CURRENT_FOG_COORD => f(s.current.fog_coord),
             gl::EDGE_FLAG => b(s.current.edge_flag),
+            gl::CURRENT_INDEX => f(s.current.index),
             // The raster position (table 6.5).
             gl::CURRENT_RASTER_POSITION => floats(s.raster_pos.window.to_array()),
             gl::CURRENT_RASTER_POSITION_VALID => b(s.raster_pos.valid),

@@ -158,9 +158,9 @@ impl Context {
     }
 }
 
-/// One component before conversion to the client's type.
+/// One component before conversion to the client's type (ReadPixels and GetTexImage).
 #[derive(Clone, Copy, Debug)]
-enum Value {
+pub(super) enum Value {
     /// A colour or depth in [0, 1].
     Norm(f64),
     /// A stencil index.
@@ -168,8 +168,15 @@ enum Value {
 }
 
 /// Places the components `comps` of pixel (`i`, `j`) of the request in `out` as type `ty` under
-/// `layout` (which `out` is long enough for).
-fn store(out: &mut [u8], layout: &ImageLayout, ty: Ty, i: usize, j: usize, comps: &[Value]) {
+/// `layout` (which `out` is long enough for). GetTexImage packs its texels with it too.
+pub(super) fn store(
+    out: &mut [u8],
+    layout: &ImageLayout,
+    ty: Ty,
+    i: usize,
+    j: usize,
+    comps: &[Value],
+) {
     match (layout, ty) {
         (ImageLayout::Bits(b), _) => {
             // BITMAP (stencil only): the index's low bit (§4.3.2).

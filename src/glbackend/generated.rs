@@ -169,6 +169,16 @@ impl GlBackend {
             Call::FogCoorddv(ref coord) => gl.fog_coorddv(coord),
             Call::EdgeFlag(flag) => gl.edge_flag(flag),
             Call::EdgeFlagv(ref flag) => gl.edge_flagv(flag),
+            Call::Indexs(c) => gl.indexs(c),
+            Call::Indexi(c) => gl.indexi(c),
+            Call::Indexf(c) => gl.indexf(c),
+            Call::Indexd(c) => gl.indexd(c),
+            Call::Indexub(c) => gl.indexub(c),
+            Call::Indexsv(ref c) => gl.indexsv(c),
+            Call::Indexiv(ref c) => gl.indexiv(c),
+            Call::Indexfv(ref c) => gl.indexfv(c),
+            Call::Indexdv(ref c) => gl.indexdv(c),
+            Call::Indexubv(ref c) => gl.indexubv(c),
             Call::Materialf(face, pname, param) => gl.materialf(face, pname, param),
             Call::Materiali(face, pname, param) => gl.materiali(face, pname, param),
             Call::Materialfv(face, pname, ref params) => {
@@ -1550,6 +1560,66 @@ impl Safe<'_> {
     pub(super) fn edge_flagv(self, flag: &[bool; 1]) {
         // SAFETY: the context is current (see `Safe`); `flag` holds the 1 values the driver reads.
         unsafe { self.0.EdgeFlagv(flag.map(u8::from).as_ptr()) }
+    }
+
+    /// `glIndexs(c)`.
+    pub(super) fn indexs(self, c: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexs(c) }
+    }
+
+    /// `glIndexi(c)`.
+    pub(super) fn indexi(self, c: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexi(c) }
+    }
+
+    /// `glIndexf(c)`.
+    pub(super) fn indexf(self, c: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexf(c) }
+    }
+
+    /// `glIndexd(c)`.
+    pub(super) fn indexd(self, c: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexd(c) }
+    }
+
+    /// `glIndexub(c)`.
+    pub(super) fn indexub(self, c: u8) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexub(c) }
+    }
+
+    /// `glIndexsv(c)`.
+    pub(super) fn indexsv(self, c: &[i16; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexsv(c.as_ptr()) }
+    }
+
+    /// `glIndexiv(c)`.
+    pub(super) fn indexiv(self, c: &[i32; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexiv(c.as_ptr()) }
+    }
+
+    /// `glIndexfv(c)`.
+    pub(super) fn indexfv(self, c: &[f32; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexfv(c.as_ptr()) }
+    }
+
+    /// `glIndexdv(c)`.
+    pub(super) fn indexdv(self, c: &[f64; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexdv(c.as_ptr()) }
+    }
+
+    /// `glIndexubv(c)`.
+    pub(super) fn indexubv(self, c: &[u8; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexubv(c.as_ptr()) }
     }
 
     /// `glMaterialf(face, pname, param)`.

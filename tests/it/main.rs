@@ -47,6 +47,7 @@ mod stipple;
 mod texture;
 mod texture_errors;
 mod texture_gl;
+mod texture_pixels_gl;
 mod texture_targets_gl;
 mod texture_units_gl;
 mod window;
