@@ -21,6 +21,7 @@ pub mod lists;
 // Seed 004's VBO/EBO examples
 pub mod arrays;
 pub mod fragment;
+pub mod fbo;
 pub mod projective;
 pub mod texture;
 // 1D and 3D textures (scenes/targets.rs)
@@ -168,6 +169,7 @@ static SCENES: &[Scene] = &[
     targets::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    fbo::SCENES[0],
     pixels::SCENES[0],
     picking::SCENES[0],
     evaluators::SCENES[0],
