@@ -29,8 +29,14 @@ fn generate_gl_bindings() {
         // GL_ARB_framebuffer_object: the framebuffer-object commands under their GL 3.0 names
         // (the generated wrappers and glbackend/fbo.rs call them with raw names).
         let extensions = ["GL_ARB_framebuffer_object"];
-        Registry::new(Api::Gl, (2, 1), Profile::Compatibility, Fallbacks::All, extensions)
-            .write_bindings(StructGenerator, &mut out)
+        Registry::new(
+            Api::Gl,
+            (2, 1),
+            Profile::Compatibility,
+            Fallbacks::All,
+            extensions,
+        )
+        .write_bindings(StructGenerator, &mut out)
     });
     if let Err(e) = result {
         println!("cargo:warning=writing {}: {e}", path.display());

@@ -14,7 +14,8 @@ use fixedgl::Context;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| "out".into()));
     std::fs::create_dir_all(&out)?;
-    let scene = fixedgl::scenes::find("render-to-texture").ok_or("the render-to-texture scene is registered")?;
+    let scene = fixedgl::scenes::find("render-to-texture")
+        .ok_or("the render-to-texture scene is registered")?;
     let mut gl = Context::new(400, 400)?;
     (scene.draw)(&mut gl);
     let path = out.join("render-to-texture.png");

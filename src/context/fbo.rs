@@ -195,7 +195,10 @@ fn color_renderable(base: u32) -> bool {
 /// DEPTH_COMPONENT[16|24|32], STENCIL_INDEX[1|4|8|16]), or `None`.
 pub(crate) fn renderbuffer_base(internal: u32) -> Option<u32> {
     match internal {
-        gl::STENCIL_INDEX | gl::STENCIL_INDEX1 | gl::STENCIL_INDEX4 | gl::STENCIL_INDEX8
+        gl::STENCIL_INDEX
+        | gl::STENCIL_INDEX1
+        | gl::STENCIL_INDEX4
+        | gl::STENCIL_INDEX8
         | gl::STENCIL_INDEX16 => Some(gl::STENCIL_INDEX),
         _ => {
             let base = base_internal_format(internal as i32)?;
@@ -463,7 +466,13 @@ impl Context {
     /// RENDERBUFFER or an internal format renderbuffers do not take; INVALID_VALUE for a side
     /// below 0 or above MAX_RENDERBUFFER_SIZE; INVALID_OPERATION with renderbuffer 0 bound;
     /// OUT_OF_MEMORY when the pixels cannot be allocated.
-    pub fn renderbuffer_storage(&mut self, target: u32, internalformat: u32, width: i32, height: i32) {
+    pub fn renderbuffer_storage(
+        &mut self,
+        target: u32,
+        internalformat: u32,
+        width: i32,
+        height: i32,
+    ) {
         record!(
             self,
             Call::RenderbufferStorage(target, internalformat, width, height)
@@ -495,7 +504,11 @@ impl Context {
         let ok = match base {
             gl::DEPTH_COMPONENT => filled(&mut rb.depth, n, DEPTH_MAX),
             gl::STENCIL_INDEX => filled(&mut rb.stencil, n, 0),
-            _ => filled(&mut rb.color, n, [0, 0, 0, if base == gl::RGB { 255 } else { 0 }]),
+            _ => filled(
+                &mut rb.color,
+                n,
+                [0, 0, 0, if base == gl::RGB { 255 } else { 0 }],
+            ),
         };
         if !ok {
             return self.error(gl::OUT_OF_MEMORY);
@@ -713,7 +726,10 @@ impl Context {
         }
         match self.fbos.framebuffers.get(&self.fbos.bound_fb) {
             None => gl::FRAMEBUFFER_COMPLETE,
-            Some(obj) => self.status_of(obj).err().unwrap_or(gl::FRAMEBUFFER_COMPLETE),
+            Some(obj) => self
+                .status_of(obj)
+                .err()
+                .unwrap_or(gl::FRAMEBUFFER_COMPLETE),
         }
     }
 
@@ -845,9 +861,9 @@ impl Context {
             gl::RENDERBUFFER_WIDTH => rb.width,
             gl::RENDERBUFFER_HEIGHT => rb.height,
             gl::RENDERBUFFER_INTERNAL_FORMAT => rb.internal_format as i32,
-            gl::RENDERBUFFER_RED_SIZE | gl::RENDERBUFFER_GREEN_SIZE | gl::RENDERBUFFER_BLUE_SIZE => {
-                bits(matches!(base, Some(gl::RGB | gl::RGBA)), 8)
-            }
+            gl::RENDERBUFFER_RED_SIZE
+            | gl::RENDERBUFFER_GREEN_SIZE
+            | gl::RENDERBUFFER_BLUE_SIZE => bits(matches!(base, Some(gl::RGB | gl::RGBA)), 8),
             gl::RENDERBUFFER_ALPHA_SIZE => bits(base == Some(gl::RGBA), 8),
             gl::RENDERBUFFER_DEPTH_SIZE => bits(base == Some(gl::DEPTH_COMPONENT), 24),
             gl::RENDERBUFFER_STENCIL_SIZE => bits(base == Some(gl::STENCIL_INDEX), 8),
@@ -991,7 +1007,9 @@ impl Context {
         self.placeholder_state();
         fb.materialize_all();
         let (w, h) = fb.size();
-        let pixel = |x: u32, y: u32| fb.pixel_in(crate::cpu::framebuffer::ColorBuf::Main, x as i64, y as i64);
+        let pixel = |x: u32, y: u32| {
+            fb.pixel_in(crate::cpu::framebuffer::ColorBuf::Main, x as i64, y as i64)
+        };
         // Colour.
         match loaded.color {
             Attachment::Renderbuffer(id) => {

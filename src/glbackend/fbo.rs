@@ -10,8 +10,8 @@
 //! renderbuffer formats of EXT_framebuffer_object; nothing attached to the window), the front
 //! end's error is raised here before the driver sees the call.
 
-use std::collections::HashMap;
 use glow::HasContext;
+use std::collections::HashMap;
 
 use super::GlBackend;
 use crate::gl;
@@ -171,8 +171,7 @@ impl GlBackend {
             self.raise(gl::INVALID_ENUM);
             return false;
         }
-        if crate::buffers::is_color_attachment(attachment) && attachment != gl::COLOR_ATTACHMENT0
-        {
+        if crate::buffers::is_color_attachment(attachment) && attachment != gl::COLOR_ATTACHMENT0 {
             self.raise(gl::INVALID_OPERATION);
             return false;
         }

@@ -20,8 +20,8 @@ pub mod transforms;
 pub mod lists;
 // Seed 004's VBO/EBO examples
 pub mod arrays;
-pub mod fragment;
 pub mod fbo;
+pub mod fragment;
 pub mod projective;
 pub mod texture;
 // 1D and 3D textures (scenes/targets.rs)

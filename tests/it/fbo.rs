@@ -83,7 +83,13 @@ fn render_to_texture_then_sample_matches_the_driver() {
         c.bind_renderbuffer(gl::RENDERBUFFER, rb[0]);
         c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT24, 32, 32);
         c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-        c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex, 0);
+        c.framebuffer_texture_2d(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::TEXTURE_2D,
+            tex,
+            0,
+        );
         c.framebuffer_renderbuffer(
             gl::FRAMEBUFFER,
             gl::DEPTH_ATTACHMENT,
@@ -118,14 +124,24 @@ fn the_window_is_untouched_while_an_object_is_bound() {
     let mut fb = [0];
     c.gen_framebuffers(1, &mut fb);
     c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-    c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex, 0);
+    c.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        tex,
+        0,
+    );
     c.clear_color(0.0, 0.0, 1.0, 1.0);
     c.clear(gl::COLOR_BUFFER_BIT);
     let mut px = [0u8; 4];
     c.read_pixels(7, 7, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
     assert_eq!(px, [0, 0, 255, 255], "the object's colour buffer");
     let img = c.to_image();
-    assert_eq!(img.get_pixel(3, 3).0, [255, 0, 0, 255], "to_image is the window's");
+    assert_eq!(
+        img.get_pixel(3, 3).0,
+        [255, 0, 0, 255],
+        "to_image is the window's"
+    );
     c.bind_framebuffer(gl::FRAMEBUFFER, 0);
     c.read_pixels(12, 12, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
     assert_eq!(px, [255, 0, 0, 255], "the window kept its pixels");
@@ -154,8 +170,18 @@ fn renderbuffers_read_back_as_the_driver() {
     c.bind_renderbuffer(gl::RENDERBUFFER, rb[1]);
     c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT16, 24, 20);
     c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-    c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::RENDERBUFFER, rb[0]);
-    c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH_ATTACHMENT, gl::RENDERBUFFER, rb[1]);
+    c.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::RENDERBUFFER,
+        rb[0],
+    );
+    c.framebuffer_renderbuffer(
+        gl::FRAMEBUFFER,
+        gl::DEPTH_ATTACHMENT,
+        gl::RENDERBUFFER,
+        rb[1],
+    );
     depth_scene(&mut c, 24);
     // Away and back: the renderbuffers keep what was drawn.
     c.bind_framebuffer(gl::FRAMEBUFFER, 0);
@@ -180,7 +206,15 @@ fn renderbuffers_read_back_as_the_driver() {
     assert_eq!(bad, 0, "colour components differ");
     let (mut a, mut b) = (vec![0u32; n], vec![0u32; n]);
     let mut bytes = vec![0u8; n * 4];
-    c.read_pixels(0, 0, 24, 20, gl::DEPTH_COMPONENT, gl::UNSIGNED_INT, &mut bytes);
+    c.read_pixels(
+        0,
+        0,
+        24,
+        20,
+        gl::DEPTH_COMPONENT,
+        gl::UNSIGNED_INT,
+        &mut bytes,
+    );
     for (v, q) in a.iter_mut().zip(bytes.chunks(4)) {
         *v = u32::from_ne_bytes([q[0], q[1], q[2], q[3]]);
     }
@@ -220,91 +254,224 @@ fn statuses_and_errors_match_the_driver() {
     let mut c = ctx(16);
     type Step = Box<dyn Fn(&mut Context)>;
     let steps: Vec<(&str, Step)> = vec![
-        ("bind bad target", Box::new(|c| c.bind_framebuffer(gl::TEXTURE_2D, 1))),
-        ("attach to the window", Box::new(|c| {
-            c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, 0, 0)
-        })),
-        ("storage with renderbuffer 0", Box::new(|c| {
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, 4, 4)
-        })),
+        (
+            "bind bad target",
+            Box::new(|c| c.bind_framebuffer(gl::TEXTURE_2D, 1)),
+        ),
+        (
+            "attach to the window",
+            Box::new(|c| {
+                c.framebuffer_texture_2d(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::TEXTURE_2D,
+                    0,
+                    0,
+                )
+            }),
+        ),
+        (
+            "storage with renderbuffer 0",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, 4, 4)),
+        ),
         ("gen -1", Box::new(|c| c.gen_framebuffers(-1, &mut []))),
-        ("bind 5 (never generated)", Box::new(|c| c.bind_framebuffer(gl::FRAMEBUFFER, 5))),
-        ("clear, missing attachment", Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT))),
-        ("begin, missing attachment", Box::new(|c| {
-            c.begin(gl::TRIANGLES);
-            c.end();
-        })),
-        ("bind renderbuffer 7", Box::new(|c| c.bind_renderbuffer(gl::RENDERBUFFER, 7))),
-        ("storage bad format", Box::new(|c| {
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::LUMINANCE8, 4, 4)
-        })),
-        ("storage negative", Box::new(|c| {
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, -1, 4)
-        })),
-        ("storage too big", Box::new(|c| {
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, 1 << 20, 4)
-        })),
-        ("storage 0 x 0", Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGB8, 0, 0))),
-        ("attach empty colour", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::RENDERBUFFER, 7)
-        })),
-        ("attach unknown renderbuffer", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH_ATTACHMENT, gl::RENDERBUFFER, 99)
-        })),
-        ("attach bad point", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH, gl::RENDERBUFFER, 7)
-        })),
-        ("attach bad renderbuffer target", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH_ATTACHMENT, gl::TEXTURE_2D, 7)
-        })),
-        ("storage 8 x 8", Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGB8, 8, 8))),
-        ("depth 4 x 4 renderbuffer 8", Box::new(|c| {
-            c.bind_renderbuffer(gl::RENDERBUFFER, 8);
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT, 4, 4);
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH_ATTACHMENT, gl::RENDERBUFFER, 8);
-        })),
-        ("depth buffer as colour", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::RENDERBUFFER, 8)
-        })),
-        ("colour back", Box::new(|c| {
-            c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::RENDERBUFFER, 7)
-        })),
-        ("depth 8 x 8", Box::new(|c| {
-            c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT16, 8, 8)
-        })),
+        (
+            "bind 5 (never generated)",
+            Box::new(|c| c.bind_framebuffer(gl::FRAMEBUFFER, 5)),
+        ),
+        (
+            "clear, missing attachment",
+            Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT)),
+        ),
+        (
+            "begin, missing attachment",
+            Box::new(|c| {
+                c.begin(gl::TRIANGLES);
+                c.end();
+            }),
+        ),
+        (
+            "bind renderbuffer 7",
+            Box::new(|c| c.bind_renderbuffer(gl::RENDERBUFFER, 7)),
+        ),
+        (
+            "storage bad format",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::LUMINANCE8, 4, 4)),
+        ),
+        (
+            "storage negative",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, -1, 4)),
+        ),
+        (
+            "storage too big",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGBA8, 1 << 20, 4)),
+        ),
+        (
+            "storage 0 x 0",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGB8, 0, 0)),
+        ),
+        (
+            "attach empty colour",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::RENDERBUFFER,
+                    7,
+                )
+            }),
+        ),
+        (
+            "attach unknown renderbuffer",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(
+                    gl::FRAMEBUFFER,
+                    gl::DEPTH_ATTACHMENT,
+                    gl::RENDERBUFFER,
+                    99,
+                )
+            }),
+        ),
+        (
+            "attach bad point",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH, gl::RENDERBUFFER, 7)
+            }),
+        ),
+        (
+            "attach bad renderbuffer target",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(gl::FRAMEBUFFER, gl::DEPTH_ATTACHMENT, gl::TEXTURE_2D, 7)
+            }),
+        ),
+        (
+            "storage 8 x 8",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::RGB8, 8, 8)),
+        ),
+        (
+            "depth 4 x 4 renderbuffer 8",
+            Box::new(|c| {
+                c.bind_renderbuffer(gl::RENDERBUFFER, 8);
+                c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT, 4, 4);
+                c.framebuffer_renderbuffer(
+                    gl::FRAMEBUFFER,
+                    gl::DEPTH_ATTACHMENT,
+                    gl::RENDERBUFFER,
+                    8,
+                );
+            }),
+        ),
+        (
+            "depth buffer as colour",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::RENDERBUFFER,
+                    8,
+                )
+            }),
+        ),
+        (
+            "colour back",
+            Box::new(|c| {
+                c.framebuffer_renderbuffer(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::RENDERBUFFER,
+                    7,
+                )
+            }),
+        ),
+        (
+            "depth 8 x 8",
+            Box::new(|c| c.renderbuffer_storage(gl::RENDERBUFFER, gl::DEPTH_COMPONENT16, 8, 8)),
+        ),
         ("draw buffer FRONT", Box::new(|c| c.draw_buffer(gl::FRONT))),
-        ("draw buffer bad enum", Box::new(|c| c.draw_buffer(gl::RGBA))),
+        (
+            "draw buffer bad enum",
+            Box::new(|c| c.draw_buffer(gl::RGBA)),
+        ),
         ("read buffer BACK", Box::new(|c| c.read_buffer(gl::BACK))),
-        ("clear, complete", Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT))),
-        ("texture of the wrong target", Box::new(|c| {
-            let mut t = [0];
-            c.gen_textures(1, &mut t);
-            c.bind_texture(gl::TEXTURE_1D, t[0]);
-            c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, t[0], 0);
-        })),
-        ("texture that does not exist", Box::new(|c| {
-            c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, 77, 0)
-        })),
-        ("texture level -1", Box::new(|c| {
-            let mut t = [0];
-            c.gen_textures(1, &mut t);
-            c.bind_texture(gl::TEXTURE_2D, t[0]);
-            c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, t[0], -1);
-        })),
-        ("texture without an image", Box::new(|c| {
-            let mut t = [0];
-            c.get_integerv(gl::TEXTURE_BINDING_2D, &mut [0]);
-            c.gen_textures(1, &mut t);
-            c.bind_texture(gl::TEXTURE_2D, t[0]);
-            c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, t[0], 0);
-        })),
-        ("read pixels, incomplete", Box::new(|c| {
-            c.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut [0; 4])
-        })),
-        ("generate mipmap bad target", Box::new(|c| c.generate_mipmap(gl::PROXY_TEXTURE_2D))),
+        (
+            "clear, complete",
+            Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT)),
+        ),
+        (
+            "texture of the wrong target",
+            Box::new(|c| {
+                let mut t = [0];
+                c.gen_textures(1, &mut t);
+                c.bind_texture(gl::TEXTURE_1D, t[0]);
+                c.framebuffer_texture_2d(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::TEXTURE_2D,
+                    t[0],
+                    0,
+                );
+            }),
+        ),
+        (
+            "texture that does not exist",
+            Box::new(|c| {
+                c.framebuffer_texture_2d(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::TEXTURE_2D,
+                    77,
+                    0,
+                )
+            }),
+        ),
+        (
+            "texture level -1",
+            Box::new(|c| {
+                let mut t = [0];
+                c.gen_textures(1, &mut t);
+                c.bind_texture(gl::TEXTURE_2D, t[0]);
+                c.framebuffer_texture_2d(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::TEXTURE_2D,
+                    t[0],
+                    -1,
+                );
+            }),
+        ),
+        (
+            "texture without an image",
+            Box::new(|c| {
+                let mut t = [0];
+                c.get_integerv(gl::TEXTURE_BINDING_2D, &mut [0]);
+                c.gen_textures(1, &mut t);
+                c.bind_texture(gl::TEXTURE_2D, t[0]);
+                c.framebuffer_texture_2d(
+                    gl::FRAMEBUFFER,
+                    gl::COLOR_ATTACHMENT0,
+                    gl::TEXTURE_2D,
+                    t[0],
+                    0,
+                );
+            }),
+        ),
+        (
+            "read pixels, incomplete",
+            Box::new(|c| c.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut [0; 4])),
+        ),
+        (
+            "generate mipmap bad target",
+            Box::new(|c| c.generate_mipmap(gl::PROXY_TEXTURE_2D)),
+        ),
         ("delete -1", Box::new(|c| c.delete_framebuffers(-1, &[]))),
-        ("delete the bound", Box::new(|c| c.delete_framebuffers(1, &[5]))),
-        ("clear the window", Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT))),
+        (
+            "delete the bound",
+            Box::new(|c| c.delete_framebuffers(1, &[5])),
+        ),
+        (
+            "clear the window",
+            Box::new(|c| c.clear(gl::COLOR_BUFFER_BIT)),
+        ),
     ];
     for (label, step) in &steps {
         c.start_recording();
@@ -316,8 +483,15 @@ fn statuses_and_errors_match_the_driver() {
             let mut px = [0u8; 4];
             // SAFETY: the backend's context is current (replay made it so); one RGBA8 pixel.
             unsafe {
-                drv.raw()
-                    .ReadPixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, px.as_mut_ptr().cast())
+                drv.raw().ReadPixels(
+                    0,
+                    0,
+                    1,
+                    1,
+                    gl::RGBA,
+                    gl::UNSIGNED_BYTE,
+                    px.as_mut_ptr().cast(),
+                )
             };
         }
         let (ce, de) = (c.get_error(), drv.get_error());
@@ -345,7 +519,13 @@ fn deletion_while_bound_matches_the_driver() {
         let mut fb = [0];
         c.gen_framebuffers(1, &mut fb);
         c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-        c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex, 0);
+        c.framebuffer_texture_2d(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::TEXTURE_2D,
+            tex,
+            0,
+        );
         c.clear_color(0.0, 1.0, 0.0, 1.0);
         c.clear(gl::COLOR_BUFFER_BIT);
         c.delete_textures(1, &[tex]);
@@ -362,7 +542,13 @@ fn deletion_while_bound_matches_the_driver() {
         );
         assert_eq!(v[0] as u32, gl::NONE);
         let tex2 = color_texture(c, 16);
-        c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex2, 0);
+        c.framebuffer_texture_2d(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::TEXTURE_2D,
+            tex2,
+            0,
+        );
         c.clear_color(1.0, 1.0, 0.0, 1.0);
         c.clear(gl::COLOR_BUFFER_BIT);
         c.delete_framebuffers(1, &fb);
@@ -388,7 +574,13 @@ fn display_lists_execute_framebuffer_commands_immediately() {
         let list = c.gen_lists(1);
         c.new_list(list, gl::COMPILE);
         c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-        c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex, 0);
+        c.framebuffer_texture_2d(
+            gl::FRAMEBUFFER,
+            gl::COLOR_ATTACHMENT0,
+            gl::TEXTURE_2D,
+            tex,
+            0,
+        );
         c.clear_color(1.0, 0.0, 1.0, 1.0);
         c.clear(gl::COLOR_BUFFER_BIT);
         c.end_list();
@@ -423,7 +615,10 @@ fn queries_and_generate_mipmap() {
     for (pname, want) in [
         (gl::RENDERBUFFER_WIDTH, 8),
         (gl::RENDERBUFFER_HEIGHT, 4),
-        (gl::RENDERBUFFER_INTERNAL_FORMAT, gl::DEPTH_COMPONENT16 as i32),
+        (
+            gl::RENDERBUFFER_INTERNAL_FORMAT,
+            gl::DEPTH_COMPONENT16 as i32,
+        ),
         (gl::RENDERBUFFER_DEPTH_SIZE, 24),
         (gl::RENDERBUFFER_RED_SIZE, 0),
     ] {
@@ -432,7 +627,13 @@ fn queries_and_generate_mipmap() {
     }
     let tex = color_texture(&mut c, 8);
     c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
-    c.framebuffer_texture_2d(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::TEXTURE_2D, tex, 0);
+    c.framebuffer_texture_2d(
+        gl::FRAMEBUFFER,
+        gl::COLOR_ATTACHMENT0,
+        gl::TEXTURE_2D,
+        tex,
+        0,
+    );
     for (pname, want) in [
         (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, gl::TEXTURE as i32),
         (gl::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, tex as i32),
@@ -452,6 +653,10 @@ fn queries_and_generate_mipmap() {
     c.generate_mipmap(gl::TEXTURE_2D);
     let mut texels = [0u8; 4];
     c.get_tex_image(gl::TEXTURE_2D, 3, gl::RGBA, gl::UNSIGNED_BYTE, &mut texels);
-    assert_eq!(texels, [255, 0, 0, 255], "level 3 from the rendered level 0");
+    assert_eq!(
+        texels,
+        [255, 0, 0, 255],
+        "level 3 from the rendered level 0"
+    );
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }
