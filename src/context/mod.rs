@@ -23,6 +23,7 @@ mod control;
 mod dispatch;
 mod eval;
 mod fbo;
+#[cfg(feature = "gl")]
 pub(crate) use fbo::renderbuffer_base;
 mod framebuffer;
 mod lighting;

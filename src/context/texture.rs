@@ -424,7 +424,7 @@ impl Context {
         }
         // With no data (NULL) nothing is read, whatever the skips.
         let data = match pixels {
-            Some(p) => match self.unpack_layout3(width, height, depth, n, s, p.len()) {
+            Some(p) => match self.unpack_layout3(dims, [width, height, depth], n, s, p.len()) {
                 Some(layout) => Some((p, layout)),
                 None => return self.error(gl::INVALID_OPERATION),
             },
@@ -490,15 +490,16 @@ impl Context {
     /// None when `len` is shorter than the skips and the image need (or the need overflows).
     fn unpack_layout3(
         &self,
-        w: i32,
-        h: i32,
-        d: i32,
+        dims: usize,
+        [w, h, d]: [i32; 3],
         n: usize,
         s: usize,
         len: usize,
     ) -> Option<(crate::pixel_store::Layout, usize)> {
-        let modes = if d == 1 {
-            // A 1D or 2D image: IMAGE_HEIGHT and SKIP_IMAGES do not apply.
+        // A 1D or 2D command: IMAGE_HEIGHT and SKIP_IMAGES do not apply. A 3D one of a single
+        // image (depth 1) still skips SKIP_IMAGES images of IMAGE_HEIGHT rows (§3.8.1; piglit
+        // texsubimage updates one-image regions of 3D textures).
+        let modes = if dims < 3 {
             crate::pixel_store::PixelModes {
                 image_height: 0,
                 skip_images: 0,
@@ -660,7 +661,7 @@ impl Context {
             return self.error(gl::INVALID_OPERATION);
         }
         let [width, height, depth] = size;
-        let Some((l, img)) = self.unpack_layout3(width, height, depth, n, s, pixels.len()) else {
+        let Some((l, img)) = self.unpack_layout3(dims, size, n, s, pixels.len()) else {
             return self.error(gl::INVALID_OPERATION);
         };
         let mut texels = Vec::new();
