@@ -822,6 +822,37 @@ pub enum Call {
     /// `glEndQuery(target)`.
     EndQuery(u32),
 
+    // Framebuffer objects (GL_EXT_framebuffer_object, GL 3.0 names; GL 3.0 §4.4): context/fbo.rs. All
+    // execute immediately under NewList (GL 3.0 §5.4), as Mesa.
+    /// `glBindRenderbuffer(target, renderbuffer)`.
+    BindRenderbuffer(u32, u32),
+    /// `glDeleteRenderbuffers(n, renderbuffers)`.
+    DeleteRenderbuffers(i32, Vec<u32>),
+    /// `glGenRenderbuffers(n, renderbuffers)`.
+    ///
+    /// `GenRenderbuffers(n, names)`: the names the call returned (empty when it failed).
+    GenRenderbuffers(i32, Vec<u32>),
+    /// `glRenderbufferStorage(target, internalformat, width, height)`.
+    RenderbufferStorage(u32, u32, i32, i32),
+    /// `glBindFramebuffer(target, framebuffer)`.
+    BindFramebuffer(u32, u32),
+    /// `glDeleteFramebuffers(n, framebuffers)`.
+    DeleteFramebuffers(i32, Vec<u32>),
+    /// `glGenFramebuffers(n, framebuffers)`.
+    ///
+    /// `GenFramebuffers(n, names)`: the names the call returned (empty when it failed).
+    GenFramebuffers(i32, Vec<u32>),
+    /// `glFramebufferTexture1D(target, attachment, textarget, texture, level)`.
+    FramebufferTexture1D(u32, u32, u32, u32, i32),
+    /// `glFramebufferTexture2D(target, attachment, textarget, texture, level)`.
+    FramebufferTexture2D(u32, u32, u32, u32, i32),
+    /// `glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)`.
+    FramebufferTexture3D(u32, u32, u32, u32, i32, i32),
+    /// `glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)`.
+    FramebufferRenderbuffer(u32, u32, u32, u32),
+    /// `glGenerateMipmap(target)`.
+    GenerateMipmap(u32),
+
     // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
     /// `glDrawBuffer(buf)`.
     DrawBuffer(u32),
@@ -1296,6 +1327,18 @@ pub const NAMES: &[&str] = &[
     "DeleteQueries",
     "BeginQuery",
     "EndQuery",
+    "BindRenderbuffer",
+    "DeleteRenderbuffers",
+    "GenRenderbuffers",
+    "RenderbufferStorage",
+    "BindFramebuffer",
+    "DeleteFramebuffers",
+    "GenFramebuffers",
+    "FramebufferTexture1D",
+    "FramebufferTexture2D",
+    "FramebufferTexture3D",
+    "FramebufferRenderbuffer",
+    "GenerateMipmap",
     "DrawBuffer",
     "ReadBuffer",
     "ClearAccum",
@@ -1710,6 +1753,18 @@ impl Call {
             Call::DeleteQueries(..) => "DeleteQueries",
             Call::BeginQuery(..) => "BeginQuery",
             Call::EndQuery(..) => "EndQuery",
+            Call::BindRenderbuffer(..) => "BindRenderbuffer",
+            Call::DeleteRenderbuffers(..) => "DeleteRenderbuffers",
+            Call::GenRenderbuffers(..) => "GenRenderbuffers",
+            Call::RenderbufferStorage(..) => "RenderbufferStorage",
+            Call::BindFramebuffer(..) => "BindFramebuffer",
+            Call::DeleteFramebuffers(..) => "DeleteFramebuffers",
+            Call::GenFramebuffers(..) => "GenFramebuffers",
+            Call::FramebufferTexture1D(..) => "FramebufferTexture1D",
+            Call::FramebufferTexture2D(..) => "FramebufferTexture2D",
+            Call::FramebufferTexture3D(..) => "FramebufferTexture3D",
+            Call::FramebufferRenderbuffer(..) => "FramebufferRenderbuffer",
+            Call::GenerateMipmap(..) => "GenerateMipmap",
             Call::DrawBuffer(..) => "DrawBuffer",
             Call::ReadBuffer(..) => "ReadBuffer",
             Call::ClearAccum(..) => "ClearAccum",
@@ -1981,6 +2036,18 @@ impl Call {
                 | Call::UnmapBuffer(..)
                 | Call::GenQueries(..)
                 | Call::DeleteQueries(..)
+                | Call::BindRenderbuffer(..)
+                | Call::DeleteRenderbuffers(..)
+                | Call::GenRenderbuffers(..)
+                | Call::RenderbufferStorage(..)
+                | Call::BindFramebuffer(..)
+                | Call::DeleteFramebuffers(..)
+                | Call::GenFramebuffers(..)
+                | Call::FramebufferTexture1D(..)
+                | Call::FramebufferTexture2D(..)
+                | Call::FramebufferTexture3D(..)
+                | Call::FramebufferRenderbuffer(..)
+                | Call::GenerateMipmap(..)
                 | Call::SwapBuffers
                 | Call::RenderMode(..)
                 | Call::SelectBuffer(..)
@@ -2358,6 +2425,18 @@ impl Call {
             Call::DeleteQueries(..) => &[],
             Call::BeginQuery(..) => &[Enum],
             Call::EndQuery(..) => &[Enum],
+            Call::BindRenderbuffer(..) => &[Enum],
+            Call::DeleteRenderbuffers(..) => &[],
+            Call::GenRenderbuffers(..) => &[],
+            Call::RenderbufferStorage(..) => &[Enum, Enum],
+            Call::BindFramebuffer(..) => &[Enum],
+            Call::DeleteFramebuffers(..) => &[],
+            Call::GenFramebuffers(..) => &[],
+            Call::FramebufferTexture1D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferTexture2D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferTexture3D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferRenderbuffer(..) => &[Enum, Enum, Enum],
+            Call::GenerateMipmap(..) => &[Enum],
             Call::DrawBuffer(..) => &[Enum],
             Call::ReadBuffer(..) => &[Enum],
             Call::ClearAccum(..) => &[],

@@ -204,6 +204,13 @@ impl Context {
         if n < 0 || textures.len() < n as usize {
             return self.error(gl::INVALID_VALUE);
         }
+        // A texture attached to the bound framebuffer object is detached first (GL 3.0
+        // §4.4.2), what was drawn into it stored.
+        self.fbo_store();
+        for &name in textures.iter().take(n as usize) {
+            self.fbo_detach_texture(name);
+        }
+        self.fbo_load();
         let t = &mut self.state.textures;
         for &name in textures.iter().take(n as usize) {
             if name == 0 {
@@ -479,9 +486,13 @@ impl Context {
     /// Stores `lv` as level `level` of the active unit's texture of `target`, then
     /// GENERATE_MIPMAP.
     fn store_level(&mut self, target: u32, level: i32, lv: Level) {
+        // The image may be attached to the bound framebuffer object: what was drawn into it
+        // is stored first, and the framebuffer loaded again after (context/fbo.rs).
+        self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
             ctx.store_level_now(target, level, lv)
         });
+        self.fbo_load();
     }
 
     fn store_level_now(&mut self, target: u32, level: i32, lv: Level) {
@@ -722,9 +733,12 @@ impl Context {
         size: [i32; 3],
         texels: &[[f32; 4]],
     ) {
+        // As `store_level`: the bound framebuffer object's images stay coherent.
+        self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
             ctx.write_box_now(target, level, offset, size, texels)
         });
+        self.fbo_load();
     }
 
     fn write_box_now(
@@ -858,6 +872,9 @@ impl Context {
         if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
             return self.error(gl::INVALID_OPERATION);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
@@ -975,6 +992,9 @@ impl Context {
         if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
             return self.error(gl::INVALID_OPERATION);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
@@ -1030,6 +1050,10 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
+        // A level attached to the bound framebuffer object holds what was drawn once stored
+        // (context/fbo.rs).
+        self.fbo_store();
+        self.fbo_load();
         self.pull_objects();
         if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
             && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)

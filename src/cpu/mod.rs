@@ -223,6 +223,16 @@ impl Renderer {
         true
     }
 
+    /// Draws what is batched (under `state`), then makes `fb` the framebuffer drawing and
+    /// reading use and returns the one it replaces (a framebuffer object bound or unbound,
+    /// context/fbo.rs).
+    pub fn swap_framebuffer(&mut self, state: &State, fb: Framebuffer) -> Framebuffer {
+        self.flush(state);
+        self.tiles = fb.tiles();
+        self.size = fb.size();
+        std::mem::replace(&mut self.core().fb, fb)
+    }
+
     /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.
     pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
         let fb = &mut self.core().fb;

@@ -569,6 +569,38 @@ impl GlBackend {
             Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
             Call::BeginQuery(target, id) => gl.begin_query(target, id),
             Call::EndQuery(target) => gl.end_query(target),
+            Call::BindRenderbuffer(target, renderbuffer) => {
+                self.bind_renderbuffer(target, renderbuffer)
+            }
+            Call::DeleteRenderbuffers(n, ref renderbuffers) => {
+                self.delete_renderbuffers(n, renderbuffers)
+            }
+            Call::GenRenderbuffers(n, ref renderbuffers) => {
+                self.gen_renderbuffers(n, renderbuffers)
+            }
+            Call::RenderbufferStorage(target, internalformat, width, height) => {
+                self.renderbuffer_storage(target, internalformat, width, height)
+            }
+            Call::BindFramebuffer(target, framebuffer) => {
+                self.bind_framebuffer(target, framebuffer)
+            }
+            Call::DeleteFramebuffers(n, ref framebuffers) => {
+                self.delete_framebuffers(n, framebuffers)
+            }
+            Call::GenFramebuffers(n, ref framebuffers) => self.gen_framebuffers(n, framebuffers),
+            Call::FramebufferTexture1D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_1d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture2D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_2d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset) => {
+                self.framebuffer_texture_3d(target, attachment, textarget, texture, level, zoffset)
+            }
+            Call::FramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer) => {
+                self.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+            }
+            Call::GenerateMipmap(target) => self.generate_mipmap(target),
             Call::DrawBuffer(buf) => self.draw_buffer(buf),
             Call::ReadBuffer(src) => self.read_buffer(src),
             Call::ClearAccum(red, green, blue, alpha) => gl.clear_accum(red, green, blue, alpha),
@@ -2831,6 +2863,103 @@ impl Safe<'_> {
     pub(super) fn end_query(self, target: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.EndQuery(target) }
+    }
+
+    /// `glBindRenderbuffer(target, renderbuffer)`.
+    pub(super) fn bind_renderbuffer(self, target: u32, renderbuffer: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.BindRenderbuffer(target, renderbuffer) }
+    }
+
+    /// `glRenderbufferStorage(target, internalformat, width, height)`.
+    pub(super) fn renderbuffer_storage(
+        self,
+        target: u32,
+        internalformat: u32,
+        width: i32,
+        height: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .RenderbufferStorage(target, internalformat, width, height)
+        }
+    }
+
+    /// `glBindFramebuffer(target, framebuffer)`.
+    pub(super) fn bind_framebuffer(self, target: u32, framebuffer: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.BindFramebuffer(target, framebuffer) }
+    }
+
+    /// `glFramebufferTexture1D(target, attachment, textarget, texture, level)`.
+    pub(super) fn framebuffer_texture_1d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture1D(target, attachment, textarget, texture, level)
+        }
+    }
+
+    /// `glFramebufferTexture2D(target, attachment, textarget, texture, level)`.
+    pub(super) fn framebuffer_texture_2d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture2D(target, attachment, textarget, texture, level)
+        }
+    }
+
+    /// `glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)`.
+    pub(super) fn framebuffer_texture_3d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+        zoffset: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)
+        }
+    }
+
+    /// `glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)`.
+    pub(super) fn framebuffer_renderbuffer(
+        self,
+        target: u32,
+        attachment: u32,
+        renderbuffertarget: u32,
+        renderbuffer: u32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+        }
+    }
+
+    /// `glGenerateMipmap(target)`.
+    pub(super) fn generate_mipmap(self, target: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.GenerateMipmap(target) }
     }
 
     /// `glDrawBuffer(buf)`.

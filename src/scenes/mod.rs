@@ -20,6 +20,7 @@ pub mod transforms;
 pub mod lists;
 // Seed 004's VBO/EBO examples
 pub mod arrays;
+pub mod fbo;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
@@ -170,6 +171,7 @@ static SCENES: &[Scene] = &[
     targets::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    fbo::SCENES[0],
     pixels::SCENES[0],
     picking::SCENES[0],
     evaluators::SCENES[0],

@@ -14,6 +14,7 @@ mod buffers;
 mod error_agreement;
 mod errors;
 mod eval;
+mod fbo;
 mod fragment_gl;
 mod fragment_state;
 mod gl_backend;
