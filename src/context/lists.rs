@@ -179,7 +179,7 @@ impl Context {
     /// does; returns true when the command must not be executed now (COMPILE mode).
     pub(crate) fn capture(&mut self, call: Call) -> bool {
         match self.lists.compiling.as_ref() {
-            Some(_) if !call.executes_immediately() => {
+            Some(_) if !call.executes_immediately() && !proxy_image(&call) => {
                 if let Some(rec) = self.recording.as_mut() {
                     rec.push(call.clone());
                 }
@@ -476,4 +476,16 @@ mod tests {
         l.delete(0, i32::MAX as u32);
         assert_eq!(l.free_block(u32::MAX), Some(1));
     }
+}
+
+/// Is `call` a TexImage of a proxy target? GL 2.1 §5.4: those are executed immediately, not
+/// compiled, whatever the list's mode.
+fn proxy_image(call: &Call) -> bool {
+    let target = match call {
+        Call::TexImage1D(a) => a.0,
+        Call::TexImage2D(a) => a.0,
+        Call::TexImage3D(a) => a.0,
+        _ => return false,
+    };
+    super::texture::is_proxy(target)
 }

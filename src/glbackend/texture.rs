@@ -10,7 +10,9 @@
 //! its own error and reads nothing.
 
 use super::GlBackend;
-use crate::context::texture::{tex_image_args_error, tex_image_nd_args_error, MAX_GEN_TEXTURES};
+use crate::context::texture::{
+    is_proxy, tex_image_args_error, tex_image_nd_args_error, MAX_GEN_TEXTURES,
+};
 use crate::gl;
 use crate::pixel_store::PixelModes;
 use crate::texture::{format_components, type_size};
@@ -137,7 +139,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need(width, height, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
@@ -238,7 +241,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need(width, 1, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
@@ -294,7 +298,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need3(width, height, depth, true, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
