@@ -446,3 +446,4 @@ mod fragment;
 pub(crate) mod texture;
 mod texture_coords;
 mod texture_params;
+mod texture_residency;

@@ -394,3 +394,33 @@ impl GlBackend {
         self.short_sub_image(enough);
     }
 }
+
+impl GlBackend {
+    /// `glPrioritizeTextures(n, textures, priorities)`: slices shorter than n are INVALID_VALUE
+    /// without the driver reading them, as in the front end.
+    pub(super) fn prioritize_textures(&mut self, n: i32, textures: &[u32], priorities: &[f32]) {
+        let count = usize::try_from(n).unwrap_or(0);
+        if (textures.len() < count || priorities.len() < count) && !self.inside_begin_end {
+            return self.raise(gl::INVALID_VALUE);
+        }
+        let n = if textures.len() < count || priorities.len() < count {
+            0
+        } else {
+            n
+        };
+        let (t, p) = ([0u32], [0f32]);
+        let tp = if textures.is_empty() {
+            t.as_ptr()
+        } else {
+            textures.as_ptr()
+        };
+        let pp = if priorities.is_empty() {
+            p.as_ptr()
+        } else {
+            priorities.as_ptr()
+        };
+        // SAFETY: the driver reads at most n values of each, and n <= both lengths (0 inside
+        // Begin/End when short, where the driver only raises INVALID_OPERATION).
+        unsafe { self.raw.PrioritizeTextures(n, tp, pp) };
+    }
+}

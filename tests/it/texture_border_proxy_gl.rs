@@ -507,3 +507,105 @@ fn proxy_textures_answer_as_the_driver_does() {
     assert_eq!((cpu.get_error(), v[0]), (INVALID_ENUM, -7));
     same_level(&mut cpu, &gl, TEXTURE_2D, 0, "the real 2D level");
 }
+
+/// `PrioritizeTextures(n, textures, priorities)` as a recorded call.
+fn prioritize(n: i32, names: &[u32], p: &[f32]) -> Call {
+    Call::PrioritizeTextures(Box::new((n, names.to_vec(), p.to_vec())))
+}
+
+#[test]
+fn priorities_and_residency_match_the_driver() {
+    use fixedgl::gl::*;
+    let Some(mut gl) = test_backend(8, 8) else {
+        return;
+    };
+    let mut cpu = Context::new(8, 8).unwrap();
+    // TEXTURE_PRIORITY of the object bound to TEXTURE_2D on both.
+    let priority = |cpu: &mut Context, gl: &mut GlBackend, name: u32, what: &str| {
+        run_rows(cpu, gl, &[(Call::BindTexture(TEXTURE_2D, name), NO_ERROR)]);
+        let (mut a, mut b) = ([-1.0f32], [-1.0f32]);
+        cpu.get_tex_parameterfv(TEXTURE_2D, TEXTURE_PRIORITY, &mut a);
+        gl.get_tex_parameterfv(TEXTURE_2D, TEXTURE_PRIORITY, &mut b);
+        assert_eq!(a, b, "{what}: priority of {name} (cpu, driver)");
+        a[0]
+    };
+    run_rows(
+        &mut cpu,
+        &mut gl,
+        &[
+            (Call::BindTexture(TEXTURE_2D, 1), NO_ERROR),
+            (Call::BindTexture(TEXTURE_2D, 2), NO_ERROR),
+            (Call::BindTexture(TEXTURE_1D, 3), NO_ERROR),
+            (prioritize(3, &[1, 2, 3], &[2.0, -1.0, 0.25]), NO_ERROR),
+            // 0 and names that are no texture are skipped without an error.
+            (prioritize(2, &[0, 77], &[0.5, 0.5]), NO_ERROR),
+            (prioritize(-1, &[1], &[0.5]), INVALID_VALUE),
+            // Between Begin and End GetError answers NO_ERROR; the flag shows after End.
+            (Call::Begin(TRIANGLES), NO_ERROR),
+            (prioritize(1, &[1], &[0.5]), NO_ERROR),
+            (Call::End, INVALID_OPERATION),
+        ],
+    );
+    assert_eq!(priority(&mut cpu, &mut gl, 1, "clamped to 1"), 1.0);
+    assert_eq!(priority(&mut cpu, &mut gl, 2, "clamped to 0"), 0.0);
+    // A display list holds PrioritizeTextures (GL 2.1 §5.4), which runs at CallList.
+    run_rows(
+        &mut cpu,
+        &mut gl,
+        &[
+            (Call::NewList(5, COMPILE), NO_ERROR),
+            (prioritize(1, &[1], &[0.75]), NO_ERROR),
+            (Call::EndList, NO_ERROR),
+        ],
+    );
+    assert_eq!(priority(&mut cpu, &mut gl, 1, "compiled only"), 1.0);
+    run_rows(&mut cpu, &mut gl, &[(Call::CallList(5), NO_ERROR)]);
+    assert_eq!(priority(&mut cpu, &mut gl, 1, "after CallList"), 0.75);
+    // PushAttrib(TEXTURE_BIT) saves the bound object's priority.
+    run_rows(
+        &mut cpu,
+        &mut gl,
+        &[
+            (Call::PushAttrib(TEXTURE_BIT), NO_ERROR),
+            (prioritize(1, &[1], &[0.125]), NO_ERROR),
+            (Call::PopAttrib, NO_ERROR),
+        ],
+    );
+    assert_eq!(priority(&mut cpu, &mut gl, 1, "after PopAttrib"), 0.75);
+    // AreTexturesResident: every texture is; 0 or a name that is none is INVALID_VALUE.
+    let mut generated = [0u32];
+    cpu.gen_textures(1, &mut generated);
+    let mut gen_gl = 0u32;
+    // SAFETY: the backend's context is current for its own calls; one name written.
+    unsafe { gl.raw().GenTextures(1, &mut gen_gl) };
+    assert_eq!(generated[0], gen_gl, "both hand out the same name");
+    let cases: &[(&[u32], bool, u32)] = &[
+        (&[1, 2, 3], true, NO_ERROR),
+        (&[1, gen_gl], true, NO_ERROR),
+        (&[], true, NO_ERROR),
+        (&[1, 0], false, INVALID_VALUE),
+        (&[99, 1], false, INVALID_VALUE),
+    ];
+    for &(names, want, err) in cases {
+        let got = cpu.are_textures_resident(names.len() as i32, names, &mut []);
+        assert_eq!((got, cpu.get_error()), (want, err), "cpu {names:?}");
+        let mut res = [7u8; 4];
+        // SAFETY: `names.len()` names and as many residences (at most 4) are passed.
+        let r = unsafe {
+            gl.raw()
+                .AreTexturesResident(names.len() as i32, names.as_ptr(), res.as_mut_ptr())
+        };
+        assert_eq!((r != 0, gl.get_error()), (want, err), "driver {names:?}");
+    }
+    assert!(!cpu.are_textures_resident(-1, &[], &mut []));
+    assert_eq!(cpu.get_error(), INVALID_VALUE);
+    cpu.begin(TRIANGLES);
+    assert!(!cpu.are_textures_resident(1, &[1], &mut []));
+    cpu.end();
+    assert_eq!(cpu.get_error(), INVALID_OPERATION);
+    // A query is not compiled: inside NewList it answers at once.
+    cpu.new_list(6, COMPILE);
+    assert!(cpu.are_textures_resident(1, &[1], &mut []));
+    cpu.end_list();
+    assert_eq!(cpu.get_error(), NO_ERROR);
+}
