@@ -6,8 +6,9 @@
 //! Objects of every GL 1.3 target exist (TEXTURE_1D, _2D, _3D, _CUBE_MAP: BindTexture, the
 //! bindings, parameters, deletion); images for TEXTURE_1D, _2D, _3D and the six faces of
 //! TEXTURE_CUBE_MAP (TexImage1D/2D/3D, TexSubImage1D/2D/3D, CopyTexImage1D/2D,
-//! CopyTexSubImage1D/2D/3D; the faces through the 2D commands, square). The proxy targets are
-//! INVALID_ENUM (issue #14). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
+//! CopyTexSubImage1D/2D/3D; the faces through the 2D commands, square). The proxy targets
+//! (§3.8.1) take TexImage1D/2D/3D and keep only level state (`Textures::proxies`); a border of
+//! 1 is stripped off real images as Mesa does for llvmpipe ([`strip_border`]). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
 //! is allocated with undefined, here zero, contents); FLOAT data is native-endian bytes
 //! (`texture::f32_bytes`).
 //!
