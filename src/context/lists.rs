@@ -433,6 +433,18 @@ impl Context {
     }
 }
 
+/// Is `call` a TexImage of a proxy target? GL 2.1 §5.4: those are executed immediately, not
+/// compiled, whatever the list's mode.
+fn proxy_image(call: &Call) -> bool {
+    let target = match call {
+        Call::TexImage1D(a) => a.0,
+        Call::TexImage2D(a) => a.0,
+        Call::TexImage3D(a) => a.0,
+        _ => return false,
+    };
+    super::texture::is_proxy(target)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -476,16 +488,4 @@ mod tests {
         l.delete(0, i32::MAX as u32);
         assert_eq!(l.free_block(u32::MAX), Some(1));
     }
-}
-
-/// Is `call` a TexImage of a proxy target? GL 2.1 §5.4: those are executed immediately, not
-/// compiled, whatever the list's mode.
-fn proxy_image(call: &Call) -> bool {
-    let target = match call {
-        Call::TexImage1D(a) => a.0,
-        Call::TexImage2D(a) => a.0,
-        Call::TexImage3D(a) => a.0,
-        _ => return false,
-    };
-    super::texture::is_proxy(target)
 }

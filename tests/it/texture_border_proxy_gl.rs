@@ -326,7 +326,7 @@ fn proxy_textures_answer_as_the_driver_does() {
         return;
     };
     let mut cpu = Context::new(8, 8).unwrap();
-    let checks: &[(&[(Call, u32)], u32, i32, &str)] = &[
+    let checks: &[Check] = &[
         (
             &[(t2(PROXY_TEXTURE_2D, 0, RGBA, 64, 32, 0, None), NO_ERROR)],
             PROXY_TEXTURE_2D,
@@ -507,6 +507,9 @@ fn proxy_textures_answer_as_the_driver_does() {
     assert_eq!((cpu.get_error(), v[0]), (INVALID_ENUM, -7));
     same_level(&mut cpu, &gl, TEXTURE_2D, 0, "the real 2D level");
 }
+
+/// Calls with their expected errors, then the proxy target and level to compare, and a label.
+type Check<'a> = (&'a [(Call, u32)], u32, i32, &'a str);
 
 /// `PrioritizeTextures(n, textures, priorities)` as a recorded call.
 fn prioritize(n: i32, names: &[u32], p: &[f32]) -> Call {
