@@ -433,16 +433,17 @@ impl Context {
     }
 }
 
-/// Is `call` a TexImage of a proxy target? GL 2.1 §5.4: those are executed immediately, not
-/// compiled, whatever the list's mode.
+/// Is `call` a TexImage with its own proxy target (TexImage1D of PROXY_TEXTURE_1D, TexImage2D
+/// of PROXY_TEXTURE_2D or PROXY_TEXTURE_CUBE_MAP, TexImage3D of PROXY_TEXTURE_3D)? GL 2.1 §5.4:
+/// those are executed immediately, not compiled, whatever the list's mode; another command's
+/// proxy (an INVALID_ENUM) is compiled like any error.
 fn proxy_image(call: &Call) -> bool {
-    let target = match call {
-        Call::TexImage1D(a) => a.0,
-        Call::TexImage2D(a) => a.0,
-        Call::TexImage3D(a) => a.0,
-        _ => return false,
-    };
-    super::texture::is_proxy(target)
+    match call {
+        Call::TexImage1D(a) => a.0 == gl::PROXY_TEXTURE_1D,
+        Call::TexImage2D(a) => matches!(a.0, gl::PROXY_TEXTURE_2D | gl::PROXY_TEXTURE_CUBE_MAP),
+        Call::TexImage3D(a) => a.0 == gl::PROXY_TEXTURE_3D,
+        _ => false,
+    }
 }
 
 #[cfg(test)]
