@@ -8,7 +8,8 @@ fn main() {
     generate_gl_bindings();
 }
 
-/// Writes `$OUT_DIR/gl_bindings.rs`: a `Gl` struct holding every GL 2.1 entry point, including the
+/// Writes `$OUT_DIR/gl_bindings.rs`: a `Gl` struct holding every GL 2.1 entry point (and
+/// GL_ARB_framebuffer_object's), including the
 /// fixed-function ones a core profile lacks (Begin, Lightfv, Materialfv, ...). `Fallbacks::All`
 /// lets an entry point fall back to its ARB/EXT alias where a driver only exports that name.
 #[cfg(feature = "gl")]
@@ -25,8 +26,17 @@ fn generate_gl_bindings() {
     let path = PathBuf::from(out_dir).join("gl_bindings.rs");
     let result = File::create(&path).and_then(|file| {
         let mut out = BufWriter::new(file);
-        Registry::new(Api::Gl, (2, 1), Profile::Compatibility, Fallbacks::All, [])
-            .write_bindings(StructGenerator, &mut out)
+        // GL_ARB_framebuffer_object: the framebuffer-object commands under their GL 3.0 names
+        // (the generated wrappers and glbackend/fbo.rs call them with raw names).
+        let extensions = ["GL_ARB_framebuffer_object"];
+        Registry::new(
+            Api::Gl,
+            (2, 1),
+            Profile::Compatibility,
+            Fallbacks::All,
+            extensions,
+        )
+        .write_bindings(StructGenerator, &mut out)
     });
     if let Err(e) = result {
         println!("cargo:warning=writing {}: {e}", path.display());

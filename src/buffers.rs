@@ -67,6 +67,7 @@ pub fn existing(config: &ContextConfig) -> u8 {
 /// framebuffer has (§4.2.1).
 pub fn draw_error(buf: u32, config: &ContextConfig) -> Option<u32> {
     match mask(buf) {
+        None if is_color_attachment(buf) => Some(gl::INVALID_OPERATION),
         None => Some(gl::INVALID_ENUM),
         Some(m) if buf != gl::NONE && m & existing(config) == 0 => Some(gl::INVALID_OPERATION),
         Some(_) => None,
@@ -77,9 +78,38 @@ pub fn draw_error(buf: u32, config: &ContextConfig) -> Option<u32> {
 /// ReadBuffer does not take, INVALID_OPERATION for a buffer the framebuffer lacks (§4.3.2).
 pub fn read_error(buf: u32, config: &ContextConfig) -> Option<u32> {
     match read_mask(buf) {
+        None if is_color_attachment(buf) => Some(gl::INVALID_OPERATION),
         None => Some(gl::INVALID_ENUM),
         Some(m) if m & existing(config) == 0 => Some(gl::INVALID_OPERATION),
         Some(_) => None,
+    }
+}
+
+/// COLOR_ATTACHMENT0 to COLOR_ATTACHMENT15 (GL_EXT_framebuffer_object): buffers of a
+/// framebuffer object, which the window's framebuffer lacks (INVALID_OPERATION there, as Mesa).
+pub fn is_color_attachment(buf: u32) -> bool {
+    (gl::COLOR_ATTACHMENT0..=gl::COLOR_ATTACHMENT15).contains(&buf)
+}
+
+/// `DrawBuffer(buf)`'s error while a framebuffer object is bound (GL 3.0 §4.2.1): NONE and
+/// COLOR_ATTACHMENT0 (MAX_COLOR_ATTACHMENTS is 1) are taken; another attachment or a window
+/// buffer (FRONT, BACK, ...) is INVALID_OPERATION; anything else INVALID_ENUM.
+pub fn fbo_draw_error(buf: u32) -> Option<u32> {
+    match buf {
+        gl::NONE | gl::COLOR_ATTACHMENT0 => None,
+        _ if is_color_attachment(buf) || mask(buf).is_some() => Some(gl::INVALID_OPERATION),
+        _ => Some(gl::INVALID_ENUM),
+    }
+}
+
+/// `ReadBuffer(buf)`'s error while a framebuffer object is bound: COLOR_ATTACHMENT0 is taken;
+/// another attachment or a window buffer is INVALID_OPERATION; anything else (NONE among them,
+/// as GL 2.1's ReadBuffer) INVALID_ENUM.
+pub fn fbo_read_error(buf: u32) -> Option<u32> {
+    match buf {
+        gl::COLOR_ATTACHMENT0 => None,
+        _ if is_color_attachment(buf) || read_mask(buf).is_some() => Some(gl::INVALID_OPERATION),
+        _ => Some(gl::INVALID_ENUM),
     }
 }
 

@@ -3,9 +3,10 @@
 //! under the pixel storage modes, the reading of one group, the transfer state (scale and bias,
 //! index shift and offset, the ten pixel maps) and its application to colours, indices and depths.
 //!
-//! DrawPixels, Bitmap, CopyPixels and ReadPixels share this module, and so do the GL backend's
-//! guards (how many bytes the driver will read): one table of formats and types, one layout
-//! computation (`crate::pixel_store`), one transfer.
+//! DrawPixels, Bitmap, CopyPixels, ReadPixels, TexImage/TexSubImage (`crate::texture::unpack_into`)
+//! and GetTexImage share this module, and so do the GL backend's guards (how many bytes the
+//! driver will read): one table of formats and types, one layout computation
+//! (`crate::pixel_store`), one transfer.
 //!
 //! Design decision: validation follows GL 2.1 in Mesa's order. BITMAP with a format that is not
 //! an index is INVALID_ENUM, a packed type whose component count the format does not have is
@@ -67,6 +68,7 @@ impl Group {
             gl::RGBA => Group::Color(&[R, G, B, A]),
             gl::BGR => Group::Color(&[B, G, R]),
             gl::BGRA => Group::Color(&[B, G, R, A]),
+            gl::ABGR_EXT => Group::Color(&[A, B, G, R]),
             gl::LUMINANCE => Group::Color(&[L]),
             gl::LUMINANCE_ALPHA => Group::Color(&[L, A]),
             _ => return None,
@@ -189,11 +191,12 @@ pub fn check(format: u32, ty: u32) -> Result<Format, u32> {
     match t {
         Some(Ty::Bitmap) if !group.is_some_and(Group::is_index) => return Err(gl::INVALID_ENUM),
         // Table 3.8: a packed type needs a format with as many components (RGB for the
-        // three-component types; RGBA or BGRA for the four-component ones, as Mesa).
+        // three-component types; RGBA, BGRA or EXT_abgr's ABGR for the four-component ones, as
+        // Mesa).
         Some(Ty::Packed { fields, .. }) => {
             let ok = match fields.len() {
                 3 => format == gl::RGB,
-                _ => format == gl::RGBA || format == gl::BGRA,
+                _ => matches!(format, gl::RGBA | gl::BGRA | gl::ABGR_EXT),
             };
             if !ok {
                 return Err(gl::INVALID_OPERATION);

@@ -283,6 +283,9 @@ pub struct Current {
     pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
     pub fog_coord: f32,
     pub edge_flag: bool,
+    /// CURRENT_INDEX: the current colour index (§2.7, initially 1), held and pushed in
+    /// colour-index mode's place; an RGBA context draws nothing with it.
+    pub index: f32,
 }
 
 impl Default for Current {
@@ -294,6 +297,7 @@ impl Default for Current {
             tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
             fog_coord: 0.0,
             edge_flag: true,
+            index: 1.0,
         }
     }
 }

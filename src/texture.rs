@@ -1,6 +1,7 @@
 //! Texture state as plain data (GL 2.1 §3.8, tables 6.15 to 6.19): texture objects with their
-//! images and parameters, the per-unit environment and coordinate generation, the pixel
-//! unpacking of `TexImage2D` (§3.6), and helpers that make textures without data files.
+//! images and parameters, the per-unit environment and coordinate generation, the unpacking of
+//! TexImage's client data into texels (§3.8.1: groups read by `crate::pixels`, as DrawPixels
+//! reads them), and helpers that make textures without data files.
 //!
 //! Design decision: a texture object lives behind an `Arc`, so `State` stays cheap to clone (a
 //! PushAttrib or a test's "state unchanged" snapshot shares the images) and a flush hands the
@@ -15,9 +16,9 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
-use crate::convert;
 use crate::gl;
-use crate::pixel_store::Layout;
+use crate::pixel_store::PixelModes;
+use crate::pixels::{Format, Group, Image, ImageLayout, PixelMaps, PixelTransfer};
 use crate::state::MAX_TEXTURE_UNITS;
 
 /// `MAX_TEXTURE_SIZE` (as `glGet` reports it).
@@ -760,93 +761,109 @@ pub fn format_components(format: u32) -> Option<usize> {
     })
 }
 
-/// Bytes per component of a client pixel `type_` this crate unpacks (table 3.5), or None.
-/// Packed types (UNSIGNED_SHORT_5_6_5 ...) and BITMAP are not supported.
-pub fn type_size(type_: u32) -> Option<usize> {
-    Some(match type_ {
-        gl::UNSIGNED_BYTE | gl::BYTE => 1,
-        gl::UNSIGNED_SHORT | gl::SHORT => 2,
-        gl::UNSIGNED_INT | gl::INT | gl::FLOAT => 4,
-        _ => return None,
+/// The unpack (or pack) modes that place image `k` of a 3D image of `height` rows (GL 2.1
+/// §3.8.1) as a 2D image: SKIP_ROWS advanced by SKIP_IMAGES + `k` images of IMAGE_HEIGHT (or
+/// `height`) rows. With `three_d` false (a 1D or 2D image) IMAGE_HEIGHT and SKIP_IMAGES do not
+/// apply. None when the row count does not fit an i32 (no client buffer is that long).
+pub fn slice_modes(modes: &PixelModes, height: i32, k: usize, three_d: bool) -> Option<PixelModes> {
+    let flat = PixelModes {
+        image_height: 0,
+        skip_images: 0,
+        ..*modes
+    };
+    if !three_d {
+        return Some(flat);
+    }
+    let img = i64::from(if modes.image_height > 0 {
+        modes.image_height
+    } else {
+        height.max(0)
+    });
+    let images = i64::from(modes.skip_images.max(0)).checked_add(i64::try_from(k).ok()?)?;
+    let rows = i64::from(modes.skip_rows.max(0)).checked_add(images.checked_mul(img)?)?;
+    Some(PixelModes {
+        skip_rows: i32::try_from(rows).ok()?,
+        ..flat
     })
 }
 
-/// One component of client data as a float: unsigned and signed integers by table 2.9
-/// (c / (2^b - 1), (2c + 1) / (2^b - 1)), FLOAT as it is. The element's bytes are in the
-/// client's order, reversed first when UNPACK_SWAP_BYTES is on (§3.6.4, table 3.7).
-fn component(data: &[u8], at: usize, type_: u32, layout: &Layout) -> f32 {
-    let mut e = [0u8; 4];
-    let n = layout.size.min(4);
-    for (k, slot) in e[..n].iter_mut().enumerate() {
-        *slot = data.get(at + k).copied().unwrap_or(0);
-    }
-    layout.order(&mut e[..n]);
-    let (u8max, u16max, u32max) = (f64::from(u8::MAX), f64::from(u16::MAX), f64::from(u32::MAX));
-    let c = match type_ {
-        gl::UNSIGNED_BYTE => convert::unsigned_to_unit(f64::from(e[0]), u8max),
-        gl::BYTE => convert::signed_to_unit(f64::from(e[0] as i8), u8max),
-        gl::UNSIGNED_SHORT => {
-            convert::unsigned_to_unit(f64::from(u16::from_ne_bytes([e[0], e[1]])), u16max)
-        }
-        gl::SHORT => convert::signed_to_unit(f64::from(i16::from_ne_bytes([e[0], e[1]])), u16max),
-        gl::UNSIGNED_INT => convert::unsigned_to_unit(f64::from(u32::from_ne_bytes(e)), u32max),
-        gl::INT => convert::signed_to_unit(f64::from(i32::from_ne_bytes(e)), u32max),
-        _ => return f32::from_ne_bytes(e),
-    };
-    c as f32
-}
-
-/// Unpacks `width` x `height` pixels of `format`/`type_` (already validated, `data` at least
-/// `layout.need` long) into texels of base format `base`: each pixel where `layout` puts it
-/// (UNPACK_ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS, ALIGNMENT, SWAP_BYTES: see
-/// [`crate::pixel_store::PixelModes::layout`]), components to RGBA (§3.6.4 "conversion to
-/// RGB"; a missing R, G, B is 0, a missing A is 1; L goes to R), then the components `base`
-/// keeps (table 3.15), clamped and reduced to the stored precision.
-pub fn unpack(
-    data: &[u8],
+/// Where image `k` of a `width` x `height` x `depth` client image of `f` lies under `modes`
+/// ([`slice_modes`]); every pixel transfer command's layout (`PixelModes::image_layout`), so
+/// BITMAP and the packed types are placed as DrawPixels places them.
+pub fn slice_layout(
+    modes: &PixelModes,
+    f: Format,
     width: i32,
     height: i32,
-    format: u32,
-    type_: u32,
-    layout: &Layout,
-    base: u32,
-) -> Vec<[f32; 4]> {
-    let mut out = Vec::new();
-    unpack_into(&mut out, data, width, height, format, type_, layout, base);
-    out
+    k: usize,
+    three_d: bool,
+) -> Option<ImageLayout> {
+    slice_modes(modes, height, k, three_d)?.image_layout(f, width, height)
 }
 
-/// [`unpack`], appending to `out` (which the caller may have reserved fallibly).
-#[allow(clippy::too_many_arguments)]
+/// The bytes a `width` x `height` x `depth` image of `f` spans under `modes` (the last image's
+/// end; 0 for an empty image, whatever the skips), or None when that does not fit a usize.
+pub fn image_need3(
+    modes: &PixelModes,
+    f: Format,
+    width: i32,
+    height: i32,
+    depth: i32,
+    three_d: bool,
+) -> Option<usize> {
+    if width <= 0 || height <= 0 || depth <= 0 {
+        return Some(0);
+    }
+    let last = usize::try_from(depth - 1).ok()?;
+    slice_layout(modes, f, width, height, last, three_d).map(|l| l.need())
+}
+
+/// Appends the `width` x `height` groups of `img` (validated: its data spans its layout) to
+/// `out` (which the caller may have reserved fallibly) as texels of base format `base`: each
+/// group made RGBA as DrawPixels makes it (§3.8.1 refers to §3.6.4 and §3.6.5: colours with
+/// the colour transfer, colour indices through the I_TO_R/G/B/A maps after the index shift and
+/// offset, depths scaled and biased), then the components `base` keeps (table 3.15), clamped
+/// and reduced to the stored precision.
 pub fn unpack_into(
     out: &mut Vec<[f32; 4]>,
-    data: &[u8],
+    img: &Image,
     width: i32,
     height: i32,
-    format: u32,
-    type_: u32,
-    layout: &Layout,
     base: u32,
+    t: &PixelTransfer,
+    maps: &PixelMaps,
 ) {
-    let s = layout.size;
-    for j in 0..height.max(0) as usize {
-        for i in 0..width.max(0) as usize {
-            let at = layout.at(i, j);
-            let c = |k: usize| component(data, at + k * s, type_, layout);
-            let rgba = match format {
-                gl::RED => [c(0), 0.0, 0.0, 1.0],
-                gl::GREEN => [0.0, c(0), 0.0, 1.0],
-                gl::BLUE => [0.0, 0.0, c(0), 1.0],
-                gl::ALPHA => [0.0, 0.0, 0.0, c(0)],
-                gl::LUMINANCE | gl::DEPTH_COMPONENT => [c(0), c(0), c(0), 1.0],
-                gl::LUMINANCE_ALPHA => [c(0), c(0), c(0), c(1)],
-                gl::RGB => [c(0), c(1), c(2), 1.0],
-                gl::BGR => [c(2), c(1), c(0), 1.0],
-                gl::BGRA => [c(2), c(1), c(0), c(3)],
-                _ => [c(0), c(1), c(2), c(3)],
-            };
-            out.push(quantize(base, keep(base, rgba)));
+    let (w, h) = (width.max(0) as usize, height.max(0) as usize);
+    let first = out.len();
+    match img.format.group {
+        Group::Color(_) => {
+            let cols: Vec<usize> = (0..w).collect();
+            let rows: Vec<usize> = (0..h).collect();
+            img.colors(&cols, &rows, out);
+            if !t.color_is_identity() {
+                for c in &mut out[first..] {
+                    *c = t.color(maps, *c);
+                }
+            }
         }
+        group => {
+            for j in 0..h {
+                for i in 0..w {
+                    out.push(match group {
+                        Group::Index => t.index_to_rgba(maps, img.index(i, j)),
+                        Group::Depth => {
+                            let d = t.depth(img.depth(i, j)) as f32;
+                            [d, d, d, 1.0]
+                        }
+                        // Rejected by the commands (INVALID_OPERATION, as Mesa).
+                        _ => [0.0, 0.0, 0.0, 1.0],
+                    });
+                }
+            }
+        }
+    }
+    for c in &mut out[first..] {
+        *c = quantize(base, keep(base, *c));
     }
 }
 

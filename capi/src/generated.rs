@@ -775,49 +775,81 @@ pub unsafe extern "C" fn glEnd() {
 /// `glIndexd(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexd(c: f64) {
-    unimplemented("glIndexd");
+    with_gl("glIndexd", |gl| {
+        gl.ctx.indexd(c);
+    })
 }
 
 /// `glIndexdv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexdv(c: *const f64) {
-    unimplemented("glIndexdv");
+    with_gl("glIndexdv", |gl| {
+        let c = match read::array::<f64, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexdv(c));
+    })
 }
 
 /// `glIndexf(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexf(c: f32) {
-    unimplemented("glIndexf");
+    with_gl("glIndexf", |gl| {
+        gl.ctx.indexf(c);
+    })
 }
 
 /// `glIndexfv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexfv(c: *const f32) {
-    unimplemented("glIndexfv");
+    with_gl("glIndexfv", |gl| {
+        let c = match read::array::<f32, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexfv(c));
+    })
 }
 
 /// `glIndexi(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexi(c: i32) {
-    unimplemented("glIndexi");
+    with_gl("glIndexi", |gl| {
+        gl.ctx.indexi(c);
+    })
 }
 
 /// `glIndexiv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexiv(c: *const i32) {
-    unimplemented("glIndexiv");
+    with_gl("glIndexiv", |gl| {
+        let c = match read::array::<i32, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexiv(c));
+    })
 }
 
 /// `glIndexs(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexs(c: i16) {
-    unimplemented("glIndexs");
+    with_gl("glIndexs", |gl| {
+        gl.ctx.indexs(c);
+    })
 }
 
 /// `glIndexsv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexsv(c: *const i16) {
-    unimplemented("glIndexsv");
+    with_gl("glIndexsv", |gl| {
+        let c = match read::array::<i16, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexsv(c));
+    })
 }
 
 /// `glNormal3b(nx, ny, nz)`.
@@ -2920,13 +2952,21 @@ pub unsafe extern "C" fn glPrioritizeTextures(
 /// `glIndexub(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexub(c: u8) {
-    unimplemented("glIndexub");
+    with_gl("glIndexub", |gl| {
+        gl.ctx.indexub(c);
+    })
 }
 
 /// `glIndexubv(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexubv(c: *const u8) {
-    unimplemented("glIndexubv");
+    with_gl("glIndexubv", |gl| {
+        let c = match read::array::<u8, 1>(c) {
+            Some(a) => a,
+            None => return gl.null_pointer(),
+        };
+        gl.ctx.execute(&Call::Indexubv(c));
+    })
 }
 
 /// `glPopClientAttrib()`.
@@ -4125,6 +4165,122 @@ pub unsafe extern "C" fn glStencilMaskSeparate(face: u32, mask: u32) {
     })
 }
 
+/// `glBindRenderbuffer(target, renderbuffer)`.
+#[no_mangle]
+pub unsafe extern "C" fn glBindRenderbuffer(target: u32, renderbuffer: u32) {
+    with_gl("glBindRenderbuffer", |gl| {
+        gl.ctx.bind_renderbuffer(target, renderbuffer);
+    })
+}
+
+/// `glDeleteRenderbuffers(n, renderbuffers)`.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteRenderbuffers(n: i32, renderbuffers: *const u32) {
+    with_gl("glDeleteRenderbuffers", |gl| {
+        let renderbuffers = read::names(renderbuffers, n);
+        gl.ctx.execute(&Call::DeleteRenderbuffers(n, renderbuffers));
+    })
+}
+
+/// `glRenderbufferStorage(target, internalformat, width, height)`.
+#[no_mangle]
+pub unsafe extern "C" fn glRenderbufferStorage(
+    target: u32,
+    internalformat: u32,
+    width: i32,
+    height: i32,
+) {
+    with_gl("glRenderbufferStorage", |gl| {
+        gl.ctx
+            .renderbuffer_storage(target, internalformat, width, height);
+    })
+}
+
+/// `glBindFramebuffer(target, framebuffer)`.
+#[no_mangle]
+pub unsafe extern "C" fn glBindFramebuffer(target: u32, framebuffer: u32) {
+    with_gl("glBindFramebuffer", |gl| {
+        gl.ctx.bind_framebuffer(target, framebuffer);
+    })
+}
+
+/// `glDeleteFramebuffers(n, framebuffers)`.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteFramebuffers(n: i32, framebuffers: *const u32) {
+    with_gl("glDeleteFramebuffers", |gl| {
+        let framebuffers = read::names(framebuffers, n);
+        gl.ctx.execute(&Call::DeleteFramebuffers(n, framebuffers));
+    })
+}
+
+/// `glFramebufferTexture1D(target, attachment, textarget, texture, level)`.
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture1D(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+) {
+    with_gl("glFramebufferTexture1D", |gl| {
+        gl.ctx
+            .framebuffer_texture_1d(target, attachment, textarget, texture, level);
+    })
+}
+
+/// `glFramebufferTexture2D(target, attachment, textarget, texture, level)`.
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture2D(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+) {
+    with_gl("glFramebufferTexture2D", |gl| {
+        gl.ctx
+            .framebuffer_texture_2d(target, attachment, textarget, texture, level);
+    })
+}
+
+/// `glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)`.
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture3D(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+    zoffset: i32,
+) {
+    with_gl("glFramebufferTexture3D", |gl| {
+        gl.ctx
+            .framebuffer_texture_3d(target, attachment, textarget, texture, level, zoffset);
+    })
+}
+
+/// `glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)`.
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferRenderbuffer(
+    target: u32,
+    attachment: u32,
+    renderbuffertarget: u32,
+    renderbuffer: u32,
+) {
+    with_gl("glFramebufferRenderbuffer", |gl| {
+        gl.ctx
+            .framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer);
+    })
+}
+
+/// `glGenerateMipmap(target)`.
+#[no_mangle]
+pub unsafe extern "C" fn glGenerateMipmap(target: u32) {
+    with_gl("glGenerateMipmap", |gl| {
+        gl.ctx.generate_mipmap(target);
+    })
+}
+
 /// `glActiveTextureARB`: [`glActiveTexture`].
 #[no_mangle]
 pub unsafe extern "C" fn glActiveTextureARB(texture: u32) {
@@ -4217,6 +4373,12 @@ pub unsafe extern "C" fn glBufferSubDataARB(
     glBufferSubData(target, offset, size, data)
 }
 
+/// `glCheckFramebufferStatusEXT`: [`glCheckFramebufferStatus`].
+#[no_mangle]
+pub unsafe extern "C" fn glCheckFramebufferStatusEXT(target: u32) -> u32 {
+    glCheckFramebufferStatus(target)
+}
+
 /// `glClientActiveTextureARB`: [`glClientActiveTexture`].
 #[no_mangle]
 pub unsafe extern "C" fn glClientActiveTextureARB(texture: u32) {
@@ -4304,10 +4466,22 @@ pub unsafe extern "C" fn glDeleteBuffersARB(n: i32, buffers: *const u32) {
     glDeleteBuffers(n, buffers)
 }
 
+/// `glDeleteFramebuffersEXT`: [`glDeleteFramebuffers`].
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteFramebuffersEXT(n: i32, framebuffers: *const u32) {
+    glDeleteFramebuffers(n, framebuffers)
+}
+
 /// `glDeleteQueriesARB`: [`glDeleteQueries`].
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteQueriesARB(n: i32, ids: *const u32) {
     glDeleteQueries(n, ids)
+}
+
+/// `glDeleteRenderbuffersEXT`: [`glDeleteRenderbuffers`].
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteRenderbuffersEXT(n: i32, renderbuffers: *const u32) {
+    glDeleteRenderbuffers(n, renderbuffers)
 }
 
 /// `glDrawArraysEXT`: [`glDrawArrays`].
@@ -4365,16 +4539,82 @@ pub unsafe extern "C" fn glFogCoordfvEXT(coord: *const f32) {
     glFogCoordfv(coord)
 }
 
+/// `glFramebufferRenderbufferEXT`: [`glFramebufferRenderbuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferRenderbufferEXT(
+    target: u32,
+    attachment: u32,
+    renderbuffertarget: u32,
+    renderbuffer: u32,
+) {
+    glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+}
+
+/// `glFramebufferTexture1DEXT`: [`glFramebufferTexture1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture1DEXT(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+) {
+    glFramebufferTexture1D(target, attachment, textarget, texture, level)
+}
+
+/// `glFramebufferTexture2DEXT`: [`glFramebufferTexture2D`].
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture2DEXT(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+) {
+    glFramebufferTexture2D(target, attachment, textarget, texture, level)
+}
+
+/// `glFramebufferTexture3DEXT`: [`glFramebufferTexture3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glFramebufferTexture3DEXT(
+    target: u32,
+    attachment: u32,
+    textarget: u32,
+    texture: u32,
+    level: i32,
+    zoffset: i32,
+) {
+    glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)
+}
+
 /// `glGenBuffersARB`: [`glGenBuffers`].
 #[no_mangle]
 pub unsafe extern "C" fn glGenBuffersARB(n: i32, buffers: *mut u32) {
     glGenBuffers(n, buffers)
 }
 
+/// `glGenFramebuffersEXT`: [`glGenFramebuffers`].
+#[no_mangle]
+pub unsafe extern "C" fn glGenFramebuffersEXT(n: i32, framebuffers: *mut u32) {
+    glGenFramebuffers(n, framebuffers)
+}
+
 /// `glGenQueriesARB`: [`glGenQueries`].
 #[no_mangle]
 pub unsafe extern "C" fn glGenQueriesARB(n: i32, ids: *mut u32) {
     glGenQueries(n, ids)
+}
+
+/// `glGenRenderbuffersEXT`: [`glGenRenderbuffers`].
+#[no_mangle]
+pub unsafe extern "C" fn glGenRenderbuffersEXT(n: i32, renderbuffers: *mut u32) {
+    glGenRenderbuffers(n, renderbuffers)
+}
+
+/// `glGenerateMipmapEXT`: [`glGenerateMipmap`].
+#[no_mangle]
+pub unsafe extern "C" fn glGenerateMipmapEXT(target: u32) {
+    glGenerateMipmap(target)
 }
 
 /// `glGetBufferParameterivARB`: [`glGetBufferParameteriv`].
@@ -4404,6 +4644,17 @@ pub unsafe extern "C" fn glGetBufferSubDataARB(
     data: *mut c_void,
 ) {
     glGetBufferSubData(target, offset, size, data)
+}
+
+/// `glGetFramebufferAttachmentParameterivEXT`: [`glGetFramebufferAttachmentParameteriv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivEXT(
+    target: u32,
+    attachment: u32,
+    pname: u32,
+    params: *mut i32,
+) {
+    glGetFramebufferAttachmentParameteriv(target, attachment, pname, params)
 }
 
 /// `glGetPointervEXT`: [`glGetPointerv`].
@@ -4442,16 +4693,38 @@ pub unsafe extern "C" fn glGetQueryivARB(target: u32, pname: u32, params: *mut i
     glGetQueryiv(target, pname, params)
 }
 
+/// `glGetRenderbufferParameterivEXT`: [`glGetRenderbufferParameteriv`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetRenderbufferParameterivEXT(
+    target: u32,
+    pname: u32,
+    params: *mut i32,
+) {
+    glGetRenderbufferParameteriv(target, pname, params)
+}
+
 /// `glIsBufferARB`: [`glIsBuffer`].
 #[no_mangle]
 pub unsafe extern "C" fn glIsBufferARB(buffer: u32) -> u8 {
     glIsBuffer(buffer)
 }
 
+/// `glIsFramebufferEXT`: [`glIsFramebuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glIsFramebufferEXT(framebuffer: u32) -> u8 {
+    glIsFramebuffer(framebuffer)
+}
+
 /// `glIsQueryARB`: [`glIsQuery`].
 #[no_mangle]
 pub unsafe extern "C" fn glIsQueryARB(id: u32) -> u8 {
     glIsQuery(id)
+}
+
+/// `glIsRenderbufferEXT`: [`glIsRenderbuffer`].
+#[no_mangle]
+pub unsafe extern "C" fn glIsRenderbufferEXT(renderbuffer: u32) -> u8 {
+    glIsRenderbuffer(renderbuffer)
 }
 
 /// `glLoadTransposeMatrixdARB`: [`glLoadTransposeMatrixd`].
@@ -4767,6 +5040,17 @@ pub unsafe extern "C" fn glPrioritizeTexturesEXT(
     priorities: *const f32,
 ) {
     glPrioritizeTextures(n, textures, priorities)
+}
+
+/// `glRenderbufferStorageEXT`: [`glRenderbufferStorage`].
+#[no_mangle]
+pub unsafe extern "C" fn glRenderbufferStorageEXT(
+    target: u32,
+    internalformat: u32,
+    width: i32,
+    height: i32,
+) {
+    glRenderbufferStorage(target, internalformat, width, height)
 }
 
 /// `glSecondaryColor3bEXT`: [`glSecondaryColor3b`].
@@ -5183,6 +5467,10 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glBeginQueryARB" => glBeginQuery as *const c_void,
         b"glBindBuffer" => glBindBuffer as *const c_void,
         b"glBindBufferARB" => glBindBuffer as *const c_void,
+        b"glBindFramebuffer" => glBindFramebuffer as *const c_void,
+        b"glBindFramebufferEXT" => glBindFramebufferEXT as *const c_void,
+        b"glBindRenderbuffer" => glBindRenderbuffer as *const c_void,
+        b"glBindRenderbufferEXT" => glBindRenderbufferEXT as *const c_void,
         b"glBindTexture" => glBindTexture as *const c_void,
         b"glBindTextureEXT" => glBindTexture as *const c_void,
         b"glBitmap" => glBitmap as *const c_void,
@@ -5202,6 +5490,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glBufferSubDataARB" => glBufferSubData as *const c_void,
         b"glCallList" => glCallList as *const c_void,
         b"glCallLists" => glCallLists as *const c_void,
+        b"glCheckFramebufferStatus" => glCheckFramebufferStatus as *const c_void,
+        b"glCheckFramebufferStatusEXT" => glCheckFramebufferStatus as *const c_void,
         b"glClear" => glClear as *const c_void,
         b"glClearAccum" => glClearAccum as *const c_void,
         b"glClearColor" => glClearColor as *const c_void,
@@ -5260,9 +5550,13 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glCullFace" => glCullFace as *const c_void,
         b"glDeleteBuffers" => glDeleteBuffers as *const c_void,
         b"glDeleteBuffersARB" => glDeleteBuffers as *const c_void,
+        b"glDeleteFramebuffers" => glDeleteFramebuffers as *const c_void,
+        b"glDeleteFramebuffersEXT" => glDeleteFramebuffers as *const c_void,
         b"glDeleteLists" => glDeleteLists as *const c_void,
         b"glDeleteQueries" => glDeleteQueries as *const c_void,
         b"glDeleteQueriesARB" => glDeleteQueries as *const c_void,
+        b"glDeleteRenderbuffers" => glDeleteRenderbuffers as *const c_void,
+        b"glDeleteRenderbuffersEXT" => glDeleteRenderbuffers as *const c_void,
         b"glDeleteTextures" => glDeleteTextures as *const c_void,
         b"glDepthFunc" => glDepthFunc as *const c_void,
         b"glDepthMask" => glDepthMask as *const c_void,
@@ -5315,14 +5609,28 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glFogfv" => glFogfv as *const c_void,
         b"glFogi" => glFogi as *const c_void,
         b"glFogiv" => glFogiv as *const c_void,
+        b"glFramebufferRenderbuffer" => glFramebufferRenderbuffer as *const c_void,
+        b"glFramebufferRenderbufferEXT" => glFramebufferRenderbuffer as *const c_void,
+        b"glFramebufferTexture1D" => glFramebufferTexture1D as *const c_void,
+        b"glFramebufferTexture1DEXT" => glFramebufferTexture1D as *const c_void,
+        b"glFramebufferTexture2D" => glFramebufferTexture2D as *const c_void,
+        b"glFramebufferTexture2DEXT" => glFramebufferTexture2D as *const c_void,
+        b"glFramebufferTexture3D" => glFramebufferTexture3D as *const c_void,
+        b"glFramebufferTexture3DEXT" => glFramebufferTexture3D as *const c_void,
         b"glFrontFace" => glFrontFace as *const c_void,
         b"glFrustum" => glFrustum as *const c_void,
         b"glGenBuffers" => glGenBuffers as *const c_void,
         b"glGenBuffersARB" => glGenBuffers as *const c_void,
+        b"glGenFramebuffers" => glGenFramebuffers as *const c_void,
+        b"glGenFramebuffersEXT" => glGenFramebuffers as *const c_void,
         b"glGenLists" => glGenLists as *const c_void,
         b"glGenQueries" => glGenQueries as *const c_void,
         b"glGenQueriesARB" => glGenQueries as *const c_void,
+        b"glGenRenderbuffers" => glGenRenderbuffers as *const c_void,
+        b"glGenRenderbuffersEXT" => glGenRenderbuffers as *const c_void,
         b"glGenTextures" => glGenTextures as *const c_void,
+        b"glGenerateMipmap" => glGenerateMipmap as *const c_void,
+        b"glGenerateMipmapEXT" => glGenerateMipmap as *const c_void,
         b"glGetBooleanv" => glGetBooleanv as *const c_void,
         b"glGetBufferParameteriv" => glGetBufferParameteriv as *const c_void,
         b"glGetBufferParameterivARB" => glGetBufferParameteriv as *const c_void,
@@ -5335,6 +5643,12 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetDoublev" => glGetDoublev as *const c_void,
         b"glGetError" => glGetError as *const c_void,
         b"glGetFloatv" => glGetFloatv as *const c_void,
+        b"glGetFramebufferAttachmentParameteriv" => {
+            glGetFramebufferAttachmentParameteriv as *const c_void
+        }
+        b"glGetFramebufferAttachmentParameterivEXT" => {
+            glGetFramebufferAttachmentParameteriv as *const c_void
+        }
         b"glGetIntegerv" => glGetIntegerv as *const c_void,
         b"glGetLightfv" => glGetLightfv as *const c_void,
         b"glGetLightiv" => glGetLightiv as *const c_void,
@@ -5357,6 +5671,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetQueryObjectuivARB" => glGetQueryObjectuiv as *const c_void,
         b"glGetQueryiv" => glGetQueryiv as *const c_void,
         b"glGetQueryivARB" => glGetQueryiv as *const c_void,
+        b"glGetRenderbufferParameteriv" => glGetRenderbufferParameteriv as *const c_void,
+        b"glGetRenderbufferParameterivEXT" => glGetRenderbufferParameteriv as *const c_void,
         b"glGetString" => glGetString as *const c_void,
         b"glGetTexEnvfv" => glGetTexEnvfv as *const c_void,
         b"glGetTexEnviv" => glGetTexEnviv as *const c_void,
@@ -5371,14 +5687,28 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glHint" => glHint as *const c_void,
         b"glIndexPointer" => glIndexPointer as *const c_void,
         b"glIndexPointerEXT" => glIndexPointerEXT as *const c_void,
+        b"glIndexd" => glIndexd as *const c_void,
+        b"glIndexdv" => glIndexdv as *const c_void,
+        b"glIndexf" => glIndexf as *const c_void,
+        b"glIndexfv" => glIndexfv as *const c_void,
+        b"glIndexi" => glIndexi as *const c_void,
+        b"glIndexiv" => glIndexiv as *const c_void,
+        b"glIndexs" => glIndexs as *const c_void,
+        b"glIndexsv" => glIndexsv as *const c_void,
+        b"glIndexub" => glIndexub as *const c_void,
+        b"glIndexubv" => glIndexubv as *const c_void,
         b"glInitNames" => glInitNames as *const c_void,
         b"glInterleavedArrays" => glInterleavedArrays as *const c_void,
         b"glIsBuffer" => glIsBuffer as *const c_void,
         b"glIsBufferARB" => glIsBuffer as *const c_void,
         b"glIsEnabled" => glIsEnabled as *const c_void,
+        b"glIsFramebuffer" => glIsFramebuffer as *const c_void,
+        b"glIsFramebufferEXT" => glIsFramebuffer as *const c_void,
         b"glIsList" => glIsList as *const c_void,
         b"glIsQuery" => glIsQuery as *const c_void,
         b"glIsQueryARB" => glIsQuery as *const c_void,
+        b"glIsRenderbuffer" => glIsRenderbuffer as *const c_void,
+        b"glIsRenderbufferEXT" => glIsRenderbuffer as *const c_void,
         b"glIsTexture" => glIsTexture as *const c_void,
         b"glLightModelf" => glLightModelf as *const c_void,
         b"glLightModelfv" => glLightModelfv as *const c_void,
@@ -5575,6 +5905,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glRects" => glRects as *const c_void,
         b"glRectsv" => glRectsv as *const c_void,
         b"glRenderMode" => glRenderMode as *const c_void,
+        b"glRenderbufferStorage" => glRenderbufferStorage as *const c_void,
+        b"glRenderbufferStorageEXT" => glRenderbufferStorage as *const c_void,
         b"glRotated" => glRotated as *const c_void,
         b"glRotatef" => glRotatef as *const c_void,
         b"glScaled" => glScaled as *const c_void,

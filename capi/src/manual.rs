@@ -546,3 +546,84 @@ pub unsafe extern "C" fn glAreTexturesResidentEXT(
     // SAFETY: as glAreTexturesResident.
     unsafe { glAreTexturesResident(n, textures, residences) }
 }
+
+// GL_EXT_framebuffer_object (fixedgl's context/fbo.rs). The generator exports the GL 3.0
+// names of the recorded commands and gl.xml's EXT aliases of them and of these; BindFramebuffer
+// and BindRenderbuffer have no alias in gl.xml (the EXT ones take names never generated), so
+// their EXT names are here: fixedgl's bindings take any name, as the extension's.
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsFramebuffer(framebuffer: u32) -> u8 {
+    with_gl("glIsFramebuffer", |gl| {
+        u8::from(gl.ctx.is_framebuffer(framebuffer))
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glIsRenderbuffer(renderbuffer: u32) -> u8 {
+    with_gl("glIsRenderbuffer", |gl| {
+        u8::from(gl.ctx.is_renderbuffer(renderbuffer))
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glCheckFramebufferStatus(target: u32) -> u32 {
+    with_gl("glCheckFramebufferStatus", |gl| {
+        gl.ctx.check_framebuffer_status(target)
+    })
+}
+
+getter!(
+    glGetRenderbufferParameteriv,
+    get_renderbuffer_parameteriv,
+    i32,
+    |_| Some(1)
+);
+
+#[no_mangle]
+pub unsafe extern "C" fn glGetFramebufferAttachmentParameteriv(
+    target: u32,
+    attachment: u32,
+    pname: u32,
+    params: *mut i32,
+) {
+    with_gl("glGetFramebufferAttachmentParameteriv", |gl| {
+        // SAFETY: every pname has one value.
+        unsafe {
+            through(params, 1, |v| {
+                gl.ctx
+                    .get_framebuffer_attachment_parameteriv(target, attachment, pname, v)
+            })
+        }
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glBindFramebufferEXT(target: u32, framebuffer: u32) {
+    // SAFETY: no pointers.
+    unsafe { crate::generated::glBindFramebuffer(target, framebuffer) }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glBindRenderbufferEXT(target: u32, renderbuffer: u32) {
+    // SAFETY: no pointers.
+    unsafe { crate::generated::glBindRenderbuffer(target, renderbuffer) }
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenFramebuffers(n: i32, ids: *mut u32) {
+    with_gl("glGenFramebuffers", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(ids, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_framebuffers(n, out);
+    })
+}
+
+#[no_mangle]
+pub unsafe extern "C" fn glGenRenderbuffers(n: i32, ids: *mut u32) {
+    with_gl("glGenRenderbuffers", |gl| {
+        // SAFETY: room for `n` names.
+        let out = unsafe { read::slice_mut(ids, usize::try_from(n).unwrap_or(0)) };
+        gl.ctx.gen_renderbuffers(n, out);
+    })
+}

@@ -320,6 +320,26 @@ pub enum Call {
     EdgeFlag(bool),
     /// `glEdgeFlagv(flag)`.
     EdgeFlagv([bool; 1]),
+    /// `glIndexs(c)`.
+    Indexs(i16),
+    /// `glIndexi(c)`.
+    Indexi(i32),
+    /// `glIndexf(c)`.
+    Indexf(f32),
+    /// `glIndexd(c)`.
+    Indexd(f64),
+    /// `glIndexub(c)`.
+    Indexub(u8),
+    /// `glIndexsv(c)`.
+    Indexsv([i16; 1]),
+    /// `glIndexiv(c)`.
+    Indexiv([i32; 1]),
+    /// `glIndexfv(c)`.
+    Indexfv([f32; 1]),
+    /// `glIndexdv(c)`.
+    Indexdv([f64; 1]),
+    /// `glIndexubv(c)`.
+    Indexubv([u8; 1]),
 
     // Lighting and shading (GL 2.1 §2.14): context/lighting.rs
     /// `glMaterialf(face, pname, param)`.
@@ -806,6 +826,37 @@ pub enum Call {
     /// `glEndQuery(target)`.
     EndQuery(u32),
 
+    // Framebuffer objects (GL_EXT_framebuffer_object, GL 3.0 names; GL 3.0 §4.4): context/fbo.rs. All
+    // execute immediately under NewList (GL 3.0 §5.4), as Mesa.
+    /// `glBindRenderbuffer(target, renderbuffer)`.
+    BindRenderbuffer(u32, u32),
+    /// `glDeleteRenderbuffers(n, renderbuffers)`.
+    DeleteRenderbuffers(i32, Vec<u32>),
+    /// `glGenRenderbuffers(n, renderbuffers)`.
+    ///
+    /// `GenRenderbuffers(n, names)`: the names the call returned (empty when it failed).
+    GenRenderbuffers(i32, Vec<u32>),
+    /// `glRenderbufferStorage(target, internalformat, width, height)`.
+    RenderbufferStorage(u32, u32, i32, i32),
+    /// `glBindFramebuffer(target, framebuffer)`.
+    BindFramebuffer(u32, u32),
+    /// `glDeleteFramebuffers(n, framebuffers)`.
+    DeleteFramebuffers(i32, Vec<u32>),
+    /// `glGenFramebuffers(n, framebuffers)`.
+    ///
+    /// `GenFramebuffers(n, names)`: the names the call returned (empty when it failed).
+    GenFramebuffers(i32, Vec<u32>),
+    /// `glFramebufferTexture1D(target, attachment, textarget, texture, level)`.
+    FramebufferTexture1D(u32, u32, u32, u32, i32),
+    /// `glFramebufferTexture2D(target, attachment, textarget, texture, level)`.
+    FramebufferTexture2D(u32, u32, u32, u32, i32),
+    /// `glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)`.
+    FramebufferTexture3D(u32, u32, u32, u32, i32, i32),
+    /// `glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)`.
+    FramebufferRenderbuffer(u32, u32, u32, u32),
+    /// `glGenerateMipmap(target)`.
+    GenerateMipmap(u32),
+
     // Colour buffers and the accumulation buffer (GL 2.1 §4.2.1, §4.2.4, §4.3.2): context/buffers.rs
     /// `glDrawBuffer(buf)`.
     DrawBuffer(u32),
@@ -1064,6 +1115,16 @@ pub const NAMES: &[&str] = &[
     "FogCoorddv",
     "EdgeFlag",
     "EdgeFlagv",
+    "Indexs",
+    "Indexi",
+    "Indexf",
+    "Indexd",
+    "Indexub",
+    "Indexsv",
+    "Indexiv",
+    "Indexfv",
+    "Indexdv",
+    "Indexubv",
     "Materialf",
     "Materiali",
     "Materialfv",
@@ -1271,6 +1332,18 @@ pub const NAMES: &[&str] = &[
     "DeleteQueries",
     "BeginQuery",
     "EndQuery",
+    "BindRenderbuffer",
+    "DeleteRenderbuffers",
+    "GenRenderbuffers",
+    "RenderbufferStorage",
+    "BindFramebuffer",
+    "DeleteFramebuffers",
+    "GenFramebuffers",
+    "FramebufferTexture1D",
+    "FramebufferTexture2D",
+    "FramebufferTexture3D",
+    "FramebufferRenderbuffer",
+    "GenerateMipmap",
     "DrawBuffer",
     "ReadBuffer",
     "ClearAccum",
@@ -1469,6 +1542,16 @@ impl Call {
             Call::FogCoorddv(..) => "FogCoorddv",
             Call::EdgeFlag(..) => "EdgeFlag",
             Call::EdgeFlagv(..) => "EdgeFlagv",
+            Call::Indexs(..) => "Indexs",
+            Call::Indexi(..) => "Indexi",
+            Call::Indexf(..) => "Indexf",
+            Call::Indexd(..) => "Indexd",
+            Call::Indexub(..) => "Indexub",
+            Call::Indexsv(..) => "Indexsv",
+            Call::Indexiv(..) => "Indexiv",
+            Call::Indexfv(..) => "Indexfv",
+            Call::Indexdv(..) => "Indexdv",
+            Call::Indexubv(..) => "Indexubv",
             Call::Materialf(..) => "Materialf",
             Call::Materiali(..) => "Materiali",
             Call::Materialfv(..) => "Materialfv",
@@ -1676,6 +1759,18 @@ impl Call {
             Call::DeleteQueries(..) => "DeleteQueries",
             Call::BeginQuery(..) => "BeginQuery",
             Call::EndQuery(..) => "EndQuery",
+            Call::BindRenderbuffer(..) => "BindRenderbuffer",
+            Call::DeleteRenderbuffers(..) => "DeleteRenderbuffers",
+            Call::GenRenderbuffers(..) => "GenRenderbuffers",
+            Call::RenderbufferStorage(..) => "RenderbufferStorage",
+            Call::BindFramebuffer(..) => "BindFramebuffer",
+            Call::DeleteFramebuffers(..) => "DeleteFramebuffers",
+            Call::GenFramebuffers(..) => "GenFramebuffers",
+            Call::FramebufferTexture1D(..) => "FramebufferTexture1D",
+            Call::FramebufferTexture2D(..) => "FramebufferTexture2D",
+            Call::FramebufferTexture3D(..) => "FramebufferTexture3D",
+            Call::FramebufferRenderbuffer(..) => "FramebufferRenderbuffer",
+            Call::GenerateMipmap(..) => "GenerateMipmap",
             Call::DrawBuffer(..) => "DrawBuffer",
             Call::ReadBuffer(..) => "ReadBuffer",
             Call::ClearAccum(..) => "ClearAccum",
@@ -1845,6 +1940,16 @@ impl Call {
                 | Call::FogCoorddv(..)
                 | Call::EdgeFlag(..)
                 | Call::EdgeFlagv(..)
+                | Call::Indexs(..)
+                | Call::Indexi(..)
+                | Call::Indexf(..)
+                | Call::Indexd(..)
+                | Call::Indexub(..)
+                | Call::Indexsv(..)
+                | Call::Indexiv(..)
+                | Call::Indexfv(..)
+                | Call::Indexdv(..)
+                | Call::Indexubv(..)
                 | Call::Materialf(..)
                 | Call::Materiali(..)
                 | Call::Materialfv(..)
@@ -1937,6 +2042,18 @@ impl Call {
                 | Call::UnmapBuffer(..)
                 | Call::GenQueries(..)
                 | Call::DeleteQueries(..)
+                | Call::BindRenderbuffer(..)
+                | Call::DeleteRenderbuffers(..)
+                | Call::GenRenderbuffers(..)
+                | Call::RenderbufferStorage(..)
+                | Call::BindFramebuffer(..)
+                | Call::DeleteFramebuffers(..)
+                | Call::GenFramebuffers(..)
+                | Call::FramebufferTexture1D(..)
+                | Call::FramebufferTexture2D(..)
+                | Call::FramebufferTexture3D(..)
+                | Call::FramebufferRenderbuffer(..)
+                | Call::GenerateMipmap(..)
                 | Call::SwapBuffers
                 | Call::RenderMode(..)
                 | Call::SelectBuffer(..)
@@ -2098,6 +2215,16 @@ impl Call {
             Call::FogCoorddv(..) => &[],
             Call::EdgeFlag(..) => &[],
             Call::EdgeFlagv(..) => &[],
+            Call::Indexs(..) => &[],
+            Call::Indexi(..) => &[],
+            Call::Indexf(..) => &[],
+            Call::Indexd(..) => &[],
+            Call::Indexub(..) => &[],
+            Call::Indexsv(..) => &[],
+            Call::Indexiv(..) => &[],
+            Call::Indexfv(..) => &[],
+            Call::Indexdv(..) => &[],
+            Call::Indexubv(..) => &[],
             Call::Materialf(..) => &[Enum, Enum],
             Call::Materiali(..) => &[Enum, Enum],
             Call::Materialfv(..) => &[Enum, Enum],
@@ -2305,6 +2432,18 @@ impl Call {
             Call::DeleteQueries(..) => &[],
             Call::BeginQuery(..) => &[Enum],
             Call::EndQuery(..) => &[Enum],
+            Call::BindRenderbuffer(..) => &[Enum],
+            Call::DeleteRenderbuffers(..) => &[],
+            Call::GenRenderbuffers(..) => &[],
+            Call::RenderbufferStorage(..) => &[Enum, Enum],
+            Call::BindFramebuffer(..) => &[Enum],
+            Call::DeleteFramebuffers(..) => &[],
+            Call::GenFramebuffers(..) => &[],
+            Call::FramebufferTexture1D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferTexture2D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferTexture3D(..) => &[Enum, Enum, Enum],
+            Call::FramebufferRenderbuffer(..) => &[Enum, Enum, Enum],
+            Call::GenerateMipmap(..) => &[Enum],
             Call::DrawBuffer(..) => &[Enum],
             Call::ReadBuffer(..) => &[Enum],
             Call::ClearAccum(..) => &[],

@@ -429,6 +429,10 @@ impl Context {
     /// `Begin(mode)` (when given), ArrayElement(i) for each index, `End`; the indices are
     /// already checked against every enabled array, and the largest is below `reach`.
     fn draw(&mut self, mode: Option<u32>, indices: impl IntoIterator<Item = usize>, reach: usize) {
+        // GL 3.0 §4.4.4: nothing is drawn into an incomplete framebuffer object.
+        if mode.is_some() && self.framebuffer_incomplete() {
+            return;
+        }
         let arrays = std::mem::take(&mut self.state.arrays);
         let sources = arrays.sources(reach);
         // DrawArrays and DrawElements leave the current attributes (and the materials

@@ -27,10 +27,15 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
-        if let Some(e) = buffers::draw_error(buf, &self.state.config) {
+        let error = match self.fbos.bound_fb {
+            0 => buffers::draw_error(buf, &self.state.config),
+            _ => buffers::fbo_draw_error(buf),
+        };
+        if let Some(e) = error {
             return self.error(e);
         }
         self.state.draw_buffer = buf;
+        self.fbo_buffers_changed();
     }
 
     /// `glReadBuffer` (GL 2.1 §4.3.2): the colour buffer ReadPixels, CopyTexImage and
@@ -42,10 +47,15 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
-        if let Some(e) = buffers::read_error(buf, &self.state.config) {
+        let error = match self.fbos.bound_fb {
+            0 => buffers::read_error(buf, &self.state.config),
+            _ => buffers::fbo_read_error(buf),
+        };
+        if let Some(e) = error {
             return self.error(e);
         }
         self.state.read_buffer = buf;
+        self.fbo_buffers_changed();
     }
 
     /// `glClearAccum`: the accumulation buffer's clear value, each component clamped to
@@ -105,7 +115,10 @@ impl Context {
             return;
         }
         self.renderer.flush(&self.state);
-        self.renderer.framebuffer_mut().swap();
+        // A framebuffer object bound: the window's framebuffer is set aside (context/fbo.rs).
+        if !self.fbos.swap_window() {
+            self.renderer.framebuffer_mut().swap();
+        }
     }
 
     /// The front colour buffer (the only one of a single-buffered context: what a window
@@ -115,6 +128,10 @@ impl Context {
     pub fn front_rgba(&mut self) -> Vec<u8> {
         if self.begin_mode.is_none() {
             self.renderer.flush(&self.state);
+        }
+        // A framebuffer object bound: the window's framebuffer is set aside (context/fbo.rs).
+        if let Some(bytes) = self.fbos.window_front_rgba() {
+            return bytes;
         }
         let buf = match self.state.config.double_buffered {
             true => ColorBuf::Front,
@@ -138,6 +155,13 @@ impl Context {
             return Err(Error::InvalidSize { width, height });
         }
         let open = self.begin_mode.is_some();
+        // A framebuffer object bound: the window's framebuffer is set aside (context/fbo.rs).
+        if self.fbos.resize_window(width, height) {
+            return Ok(());
+        }
+        if self.fbos.bound_fb != 0 {
+            return Err(Error::OutOfMemory { width, height });
+        }
         if !self.renderer.resize(&self.state, width, height, open) {
             return Err(Error::OutOfMemory { width, height });
         }

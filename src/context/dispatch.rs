@@ -164,6 +164,16 @@ impl Context {
             Call::FogCoorddv(ref coord) => self.fog_coorddv(coord),
             Call::EdgeFlag(flag) => self.edge_flag(flag),
             Call::EdgeFlagv(ref flag) => self.edge_flagv(flag),
+            Call::Indexs(c) => self.indexs(c),
+            Call::Indexi(c) => self.indexi(c),
+            Call::Indexf(c) => self.indexf(c),
+            Call::Indexd(c) => self.indexd(c),
+            Call::Indexub(c) => self.indexub(c),
+            Call::Indexsv(ref c) => self.indexsv(c),
+            Call::Indexiv(ref c) => self.indexiv(c),
+            Call::Indexfv(ref c) => self.indexfv(c),
+            Call::Indexdv(ref c) => self.indexdv(c),
+            Call::Indexubv(ref c) => self.indexubv(c),
             Call::Materialf(face, pname, param) => self.materialf(face, pname, param),
             Call::Materiali(face, pname, param) => self.materiali(face, pname, param),
             Call::Materialfv(face, pname, ref params) => self.materialfv(face, pname, params),
@@ -536,6 +546,40 @@ impl Context {
             Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
             Call::BeginQuery(target, id) => self.begin_query(target, id),
             Call::EndQuery(target) => self.end_query(target),
+            Call::BindRenderbuffer(target, renderbuffer) => {
+                self.bind_renderbuffer(target, renderbuffer)
+            }
+            Call::DeleteRenderbuffers(n, ref renderbuffers) => {
+                self.delete_renderbuffers(n, renderbuffers)
+            }
+            Call::GenRenderbuffers(n, ref renderbuffers) => {
+                self.replay_gen_renderbuffers(n, renderbuffers)
+            }
+            Call::RenderbufferStorage(target, internalformat, width, height) => {
+                self.renderbuffer_storage(target, internalformat, width, height)
+            }
+            Call::BindFramebuffer(target, framebuffer) => {
+                self.bind_framebuffer(target, framebuffer)
+            }
+            Call::DeleteFramebuffers(n, ref framebuffers) => {
+                self.delete_framebuffers(n, framebuffers)
+            }
+            Call::GenFramebuffers(n, ref framebuffers) => {
+                self.replay_gen_framebuffers(n, framebuffers)
+            }
+            Call::FramebufferTexture1D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_1d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture2D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_2d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset) => {
+                self.framebuffer_texture_3d(target, attachment, textarget, texture, level, zoffset)
+            }
+            Call::FramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer) => {
+                self.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+            }
+            Call::GenerateMipmap(target) => self.generate_mipmap(target),
             Call::DrawBuffer(buf) => self.draw_buffer(buf),
             Call::ReadBuffer(src) => self.read_buffer(src),
             Call::ClearAccum(red, green, blue, alpha) => self.clear_accum(red, green, blue, alpha),

@@ -394,6 +394,9 @@ impl Context {
             gl::LINE => gl::LINE_STRIP,
             _ => return self.error(gl::INVALID_ENUM),
         };
+        if self.framebuffer_incomplete() {
+            return;
+        }
         let e = &self.state.enables;
         if !e.map1[VERTEX_3] && !e.map1[VERTEX_4] {
             return;
@@ -424,6 +427,9 @@ impl Context {
         }
         if !matches!(mode, gl::POINT | gl::LINE | gl::FILL) {
             return self.error(gl::INVALID_ENUM);
+        }
+        if self.framebuffer_incomplete() {
+            return;
         }
         let e = &self.state.enables;
         if !e.map2[VERTEX_3] && !e.map2[VERTEX_4] {

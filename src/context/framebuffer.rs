@@ -58,6 +58,9 @@ impl Context {
         if mask & !CLEAR_BITS != 0 {
             return self.error(gl::INVALID_VALUE);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         if self.state.render_mode != gl::RENDER {
             return;
         }

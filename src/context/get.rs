@@ -39,9 +39,12 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_depth_texture ",        // DEPTH_COMPONENT textures (GL 1.4)
     "GL_ARB_multitexture ",         // ActiveTexture, MultiTexCoord (GL 1.3)
     "GL_ARB_shadow ",               // TEXTURE_COMPARE_MODE (GL 1.4)
+    "GL_ARB_texture_env_combine ",  // TexEnv COMBINE (GL 1.3)
     "GL_ARB_vertex_buffer_object ", // buffer objects, MapBuffer (GL 1.5)
     "GL_ARB_window_pos ",           // WindowPos (GL 1.4)
+    "GL_EXT_abgr ",                 // the ABGR_EXT pixel format (every pixel command)
     "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
+    "GL_EXT_framebuffer_object ",   // framebuffer objects (context/fbo.rs; GL 3.0 names too)
     "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
     "GL_EXT_texture3D ",            // TexImage3D, TexSubImage3D (GL 1.2)
     "GL_EXT_vertex_array ",         // the *PointerEXT commands with a count (capi; GL 1.1 core)
@@ -152,6 +155,7 @@ impl Context {
             gl::CURRENT_NORMAL => norm(s.current.normal.to_array()),
             gl::CURRENT_FOG_COORD => f(s.current.fog_coord),
             gl::EDGE_FLAG => b(s.current.edge_flag),
+            gl::CURRENT_INDEX => f(s.current.index),
             // The raster position (table 6.5).
             gl::CURRENT_RASTER_POSITION => floats(s.raster_pos.window.to_array()),
             gl::CURRENT_RASTER_POSITION_VALID => b(s.raster_pos.valid),
@@ -291,6 +295,11 @@ impl Context {
             gl::NAME_STACK_DEPTH => i(self.renderer.sink.name_stack_depth() as i32),
             gl::MAX_NAME_STACK_DEPTH => i(crate::cpu::feedback::MAX_NAME_STACK_DEPTH as i32),
             gl::SELECTION_BUFFER_SIZE => i(self.renderer.sink.select_size.unwrap_or(0) as i32),
+            // GL_EXT_framebuffer_object (context/fbo.rs).
+            gl::FRAMEBUFFER_BINDING => i(self.fbos.bound_fb as i32),
+            gl::RENDERBUFFER_BINDING => i(self.fbos.bound_rb as i32),
+            gl::MAX_RENDERBUFFER_SIZE => i(super::fbo::MAX_RENDERBUFFER_SIZE),
+            gl::MAX_COLOR_ATTACHMENTS => i(super::fbo::MAX_COLOR_ATTACHMENTS),
             gl::FEEDBACK_BUFFER_SIZE => i(self.renderer.sink.feedback_size.unwrap_or(0) as i32),
             gl::FEEDBACK_BUFFER_TYPE => e(self.renderer.sink.feedback_type),
             // Display lists, attribute stacks (table 6.36, 6.35)

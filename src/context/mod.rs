@@ -22,6 +22,9 @@ mod buffers;
 mod control;
 mod dispatch;
 mod eval;
+mod fbo;
+#[cfg(feature = "gl")]
+pub(crate) use fbo::renderbuffer_base;
 mod framebuffer;
 mod lighting;
 mod raster;
@@ -84,6 +87,9 @@ pub struct Context {
     /// The share group this context's lists, textures and buffers live in, if any
     /// (context/share.rs).
     pub(crate) share: Option<Box<share::Link>>,
+    /// Framebuffer and renderbuffer objects, and the window's framebuffer while one is bound
+    /// (context/fbo.rs).
+    pub(crate) fbos: fbo::Fbos,
 }
 
 impl Context {
@@ -123,6 +129,7 @@ impl Context {
             map_snapshots: Default::default(),
             queries: Default::default(),
             share: None,
+            fbos: Default::default(),
         })
     }
 
@@ -134,8 +141,9 @@ impl Context {
     /// the group's objects stay, and the context sees them again). Not a GL entry point: never
     /// recorded.
     pub fn reset(&mut self) {
-        let (w, h) = self.size();
         self.renderer.discard_batch();
+        self.fbo_reset();
+        let (w, h) = self.size();
         self.renderer.sink = Default::default();
         self.state = State::with_config(w, h, self.state.config);
         self.error = gl::NO_ERROR;
@@ -241,6 +249,9 @@ impl Context {
         }
         if mode > gl::POLYGON {
             return self.error(gl::INVALID_ENUM);
+        }
+        if self.framebuffer_incomplete() {
+            return;
         }
         self.pull_objects();
         self.begin_mode = Some(mode);

@@ -286,6 +286,9 @@ impl Context {
             }
             _ => None,
         };
+        if self.framebuffer_incomplete() {
+            return;
+        }
         if !self.state.raster_pos.valid {
             return;
         }
@@ -337,6 +340,9 @@ impl Context {
             Ok(f) => f,
             Err(code) => return self.error(code),
         };
+        if self.framebuffer_incomplete() {
+            return;
+        }
         let Some(layout) = self
             .unpack_modes()
             .image_layout(f, width, height)
@@ -473,6 +479,9 @@ impl Context {
         }
         if !matches!(type_, gl::COLOR | gl::DEPTH | gl::STENCIL) {
             return self.error(gl::INVALID_ENUM);
+        }
+        if self.framebuffer_incomplete() {
+            return;
         }
         // An empty rectangle writes no feedback token either (Mesa's `_mesa_CopyPixels`).
         if !self.state.raster_pos.valid

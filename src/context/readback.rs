@@ -51,6 +51,9 @@ impl Context {
         if f.group == Group::Index {
             return self.error(gl::INVALID_OPERATION);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         // §4.3.2: DEPTH_COMPONENT without a depth buffer, STENCIL_INDEX without a stencil
         // buffer.
         let missing = match f.group {
@@ -142,15 +145,21 @@ impl Context {
     /// The colour buffer as an image, top row first (flushes batched drawing first; between
     /// Begin and End it returns what is drawn so far): the back buffer of a double-buffered
     /// context (where drawing goes unless DrawBuffer says otherwise), the only colour buffer of
-    /// a single-buffered one; [`Context::front_rgba`] reads the front buffer.
+    /// a single-buffered one; [`Context::front_rgba`] reads the front buffer. The window's
+    /// buffer, also while a framebuffer object is bound.
     pub fn to_image(&mut self) -> image::RgbaImage {
         if self.begin_mode.is_none() {
             self.renderer.flush(&self.state);
         }
-        let (w, h) = self.renderer.size();
-        let bytes = self
-            .renderer
-            .color_bytes_top_down(crate::cpu::framebuffer::ColorBuf::Main);
+        // The window's, also while a framebuffer object is bound (context/fbo.rs).
+        let (bytes, (w, h)) = match self.fbos.window_main_rgba() {
+            Some(found) => found,
+            None => (
+                self.renderer
+                    .color_bytes_top_down(crate::cpu::framebuffer::ColorBuf::Main),
+                self.renderer.size(),
+            ),
+        };
         // The buffer holds exactly w·h pixels, so `from_raw` cannot fail (asserted in debug
         // builds); a blank image if it did.
         debug_assert_eq!(bytes.len(), w as usize * h as usize * 4);
@@ -158,9 +167,9 @@ impl Context {
     }
 }
 
-/// One component before conversion to the client's type.
+/// One component before conversion to the client's type (ReadPixels and GetTexImage).
 #[derive(Clone, Copy, Debug)]
-enum Value {
+pub(super) enum Value {
     /// A colour or depth in [0, 1].
     Norm(f64),
     /// A stencil index.
@@ -168,8 +177,15 @@ enum Value {
 }
 
 /// Places the components `comps` of pixel (`i`, `j`) of the request in `out` as type `ty` under
-/// `layout` (which `out` is long enough for).
-fn store(out: &mut [u8], layout: &ImageLayout, ty: Ty, i: usize, j: usize, comps: &[Value]) {
+/// `layout` (which `out` is long enough for). GetTexImage packs its texels with it too.
+pub(super) fn store(
+    out: &mut [u8],
+    layout: &ImageLayout,
+    ty: Ty,
+    i: usize,
+    j: usize,
+    comps: &[Value],
+) {
     match (layout, ty) {
         (ImageLayout::Bits(b), _) => {
             // BITMAP (stencil only): the index's low bit (§4.3.2).

@@ -10,7 +10,9 @@
 //! (§3.8.1) take TexImage1D/2D/3D and keep only level state (`Textures::proxies`); a border of
 //! 1 is stripped off real images as Mesa does for llvmpipe ([`strip_border`]). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
 //! is allocated with undefined, here zero, contents); FLOAT data is native-endian bytes
-//! (`texture::f32_bytes`).
+//! (`texture::f32_bytes`). Every format and type DrawPixels takes is read exactly as DrawPixels
+//! reads it (`crate::pixels`: the packed types, COLOR_INDEX and BITMAP through the I_TO_* maps,
+//! the pixel transfer), and GetTexImage packs as ReadPixels packs.
 //!
 //! Design decision: a slice shorter than the unpack parameters say the image needs is
 //! INVALID_OPERATION with nothing changed, the error GL gives for a read past the end of a
@@ -21,13 +23,14 @@
 
 use std::sync::Arc;
 
+use super::readback::{store, Value};
 use super::Context;
 use crate::call::Call;
-use crate::convert;
 use crate::gl;
+use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
-    as_rgba, base_internal_format, format_components, image_binding, keep, proxy_index, quantize,
-    target_index, type_size, unpack, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
+    as_rgba, base_internal_format, image_binding, image_need3, keep, proxy_index, quantize,
+    slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
     MAX_TEXTURE_SIZE,
 };
 
@@ -103,22 +106,6 @@ pub fn legal_dimensions(dims: usize, target: u32, level: i32, size: [i32; 3], bo
     fits && !(cube && size[0] != size[1])
 }
 
-/// The packed pixel types of GL 1.2 (table 3.5) this crate knows the component count of, but
-/// does not unpack into textures: a format with another count is INVALID_OPERATION (table
-/// 3.8, Mesa's order: before the type's INVALID_ENUM).
-fn packed_type_mismatch(format: u32, type_: u32) -> bool {
-    match crate::pixels::Ty::of(type_) {
-        Some(crate::pixels::Ty::Packed { .. }) => {
-            format_components(format).is_some()
-                && matches!(
-                    crate::pixels::check(format, type_),
-                    Err(gl::INVALID_OPERATION)
-                )
-        }
-        _ => false,
-    }
-}
-
 /// The error `TexImage1D` (dims 1), `TexImage2D` (2) or `TexImage3D` (3) raises for these
 /// arguments before looking at state or data (GL 2.1 §3.8.1); `size` is width, height, depth
 /// (1 for the dimensions the command does not have), border included. A proxy target's
@@ -137,12 +124,12 @@ pub fn tex_image_nd_args_error(
     if !image_target_ok(dims, target) {
         return Some(gl::INVALID_ENUM);
     }
-    if packed_type_mismatch(format, type_) {
-        return Some(gl::INVALID_OPERATION);
-    }
-    if format_components(format).is_none() || type_size(type_).is_none() {
-        return Some(gl::INVALID_ENUM);
-    }
+    // The format and type as DrawPixels takes them (§3.8.1 refers to §3.6.4; Mesa's order):
+    // INVALID_ENUM, or INVALID_OPERATION for a packed type the format does not fit.
+    let f = match check(format, type_) {
+        Ok(f) => f,
+        Err(code) => return Some(code),
+    };
     if level < 0 || level >= MAX_LEVELS as i32 {
         return Some(gl::INVALID_VALUE);
     }
@@ -155,7 +142,7 @@ pub fn tex_image_nd_args_error(
     }
     // §3.8.1: depth data only into a depth format, and a depth format only from depth data;
     // depth textures only for the 1D and 2D targets.
-    if (format == gl::DEPTH_COMPONENT) != (base == gl::DEPTH_COMPONENT) {
+    if !formats_agree(f.group, base) {
         return Some(gl::INVALID_OPERATION);
     }
     if dims == 3 && base == gl::DEPTH_COMPONENT {
@@ -192,6 +179,18 @@ pub fn strip_border(lv: Level) -> Level {
         depth: nd,
         texels,
         ..lv
+    }
+}
+
+/// Whether client data of `group` may specify a texture of base format `base` (§3.8.1, as
+/// Mesa's `texture_formats_agree`): depth data only for a depth format and the reverse; colour
+/// data and colour indices (made RGBA through the I_TO_* maps) for a colour format; never
+/// stencil indices (INVALID_OPERATION, Mesa's error for a format no texture takes).
+fn formats_agree(group: Group, base: u32) -> bool {
+    match group {
+        Group::Depth => base == gl::DEPTH_COMPONENT,
+        Group::Color(_) | Group::Index => base != gl::DEPTH_COMPONENT,
+        Group::Stencil => false,
     }
 }
 
@@ -263,6 +262,13 @@ impl Context {
         if n < 0 || textures.len() < n as usize {
             return self.error(gl::INVALID_VALUE);
         }
+        // A texture attached to the bound framebuffer object is detached first (GL 3.0
+        // §4.4.2), what was drawn into it stored.
+        self.fbo_store();
+        for &name in textures.iter().take(n as usize) {
+            self.fbo_detach_texture(name);
+        }
+        self.fbo_load();
         let t = &mut self.state.textures;
         for &name in textures.iter().take(n as usize) {
             if name == 0 {
@@ -484,6 +490,9 @@ impl Context {
         }
         let [width, height, depth] = size;
         let base = base_internal_format(internal_format).unwrap_or(gl::RGBA);
+        let Ok(f) = check(format, type_) else {
+            return;
+        };
         let texels_n = width as usize * height as usize * depth as usize;
         if let Some(k) = proxy_index(target) {
             // §3.8.1: a proxy reads no pixels and raises no error for an image that does not
@@ -510,21 +519,18 @@ impl Context {
             }
             return;
         }
-        let (n, s) = (
-            format_components(format).unwrap_or(4),
-            type_size(type_).unwrap_or(1),
-        );
         if texels_n > MAX_IMAGE_TEXELS {
             return self.error(gl::OUT_OF_MEMORY);
         }
         // With no data (NULL) nothing is read, whatever the skips.
-        let data = match pixels {
-            Some(p) => match self.unpack_layout3(width, height, depth, n, s, p.len()) {
-                Some(layout) => Some((p, layout)),
-                None => return self.error(gl::INVALID_OPERATION),
-            },
-            None => None,
-        };
+        let three_d = dims == 3;
+        let modes = self.state.unpack;
+        if let Some(p) = pixels {
+            let need = image_need3(&modes, f, width, height, depth, three_d);
+            if need.map_or(true, |n| p.len() < n) {
+                return self.error(gl::INVALID_OPERATION);
+            }
+        }
         // Up to MAX_IMAGE_TEXELS texels of 16 bytes (64 MiB) per call: reserved first, so an
         // allocation the machine cannot make is OUT_OF_MEMORY with nothing changed (GL 2.1
         // §2.5), not an abort.
@@ -532,14 +538,19 @@ impl Context {
         if texels.try_reserve_exact(texels_n).is_err() {
             return self.error(gl::OUT_OF_MEMORY);
         }
-        match data {
-            Some((p, (l, img))) => {
+        match pixels {
+            Some(p) => {
+                let (t, maps) = (self.state.pixel, Arc::clone(&self.state.pixel_maps));
                 for k in 0..depth as usize {
-                    let slice = crate::pixel_store::Layout {
-                        offset: l.offset + k * img * l.stride,
-                        ..l
+                    let Some(layout) = slice_layout(&modes, f, width, height, k, three_d) else {
+                        return self.error(gl::INVALID_OPERATION);
                     };
-                    unpack_into(&mut texels, p, width, height, format, type_, &slice, base);
+                    let img = Image {
+                        data: p,
+                        format: f,
+                        layout,
+                    };
+                    unpack_into(&mut texels, &img, width, height, base, &t, &maps);
                 }
             }
             None => texels.resize(texels_n, quantize(base, [0.0; 4])),
@@ -559,9 +570,13 @@ impl Context {
     /// Stores `lv` as level `level` of the active unit's texture of `target`, then
     /// GENERATE_MIPMAP.
     fn store_level(&mut self, target: u32, level: i32, lv: Level) {
+        // The image may be attached to the bound framebuffer object: what was drawn into it
+        // is stored first, and the framebuffer loaded again after (context/fbo.rs).
+        self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
             ctx.store_level_now(target, level, lv)
         });
+        self.fbo_load();
     }
 
     fn store_level_now(&mut self, target: u32, level: i32, lv: Level) {
@@ -575,31 +590,6 @@ impl Context {
                 obj.generate_mipmaps();
             }
         }
-    }
-
-    /// Where a `w` x `h` x `d` image of `n` components of `s` bytes lies in client data of
-    /// `len` bytes under the UNPACK_ modes (§3.6.4, §3.8.1), with the rows between images, or
-    /// None when `len` is shorter than the skips and the image need (or the need overflows).
-    fn unpack_layout3(
-        &self,
-        w: i32,
-        h: i32,
-        d: i32,
-        n: usize,
-        s: usize,
-        len: usize,
-    ) -> Option<(crate::pixel_store::Layout, usize)> {
-        let modes = if d == 1 {
-            // A 1D or 2D image: IMAGE_HEIGHT and SKIP_IMAGES do not apply.
-            crate::pixel_store::PixelModes {
-                image_height: 0,
-                skip_images: 0,
-                ..self.state.unpack
-            }
-        } else {
-            self.state.unpack
-        };
-        modes.layout3(w, h, d, n, s).filter(|(l, _)| len >= l.need)
     }
 
     /// `glTexSubImage1D` (§3.8.2): replaces texels `xoffset..xoffset + width` of an existing
@@ -745,23 +735,31 @@ impl Context {
         let Some(base) = self.check_sub_image(dims, target, level, offset, size) else {
             return;
         };
-        let (Some(n), Some(s)) = (format_components(format), type_size(type_)) else {
-            return self.error(gl::INVALID_ENUM);
+        let f = match check(format, type_) {
+            Ok(f) => f,
+            Err(code) => return self.error(code),
         };
-        if (format == gl::DEPTH_COMPONENT) != (base == gl::DEPTH_COMPONENT) {
+        if !formats_agree(f.group, base) {
             return self.error(gl::INVALID_OPERATION);
         }
         let [width, height, depth] = size;
-        let Some((l, img)) = self.unpack_layout3(width, height, depth, n, s, pixels.len()) else {
+        let (three_d, modes) = (dims == 3, self.state.unpack);
+        let need = image_need3(&modes, f, width, height, depth, three_d);
+        if need.map_or(true, |n| pixels.len() < n) {
             return self.error(gl::INVALID_OPERATION);
-        };
+        }
+        let (t, maps) = (self.state.pixel, Arc::clone(&self.state.pixel_maps));
         let mut texels = Vec::new();
         for k in 0..depth.max(0) as usize {
-            let slice = crate::pixel_store::Layout {
-                offset: l.offset + k * img * l.stride,
-                ..l
+            let Some(layout) = slice_layout(&modes, f, width, height, k, three_d) else {
+                return self.error(gl::INVALID_OPERATION);
             };
-            texels.extend(unpack(pixels, width, height, format, type_, &slice, base));
+            let img = Image {
+                data: pixels,
+                format: f,
+                layout,
+            };
+            unpack_into(&mut texels, &img, width, height, base, &t, &maps);
         }
         self.write_box(target, level, offset, size, &texels);
     }
@@ -819,9 +817,12 @@ impl Context {
         size: [i32; 3],
         texels: &[[f32; 4]],
     ) {
+        // As `store_level`: the bound framebuffer object's images stay coherent.
+        self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
             ctx.write_box_now(target, level, offset, size, texels)
         });
+        self.fbo_load();
     }
 
     fn write_box_now(
@@ -959,6 +960,9 @@ impl Context {
         if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
             return self.error(gl::INVALID_OPERATION);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         // A border is stripped as Mesa does for its gallium drivers (`strip_border`): here by
         // copying the rectangle inside it (for 2D both dimensions, whatever the height).
         let (x, y, width, height) = match (border, dims) {
@@ -1083,6 +1087,9 @@ impl Context {
         if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
             return self.error(gl::INVALID_OPERATION);
         }
+        if self.framebuffer_incomplete() {
+            return;
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
@@ -1138,6 +1145,10 @@ impl Context {
         if self.begin_mode.is_some() {
             return self.error(gl::INVALID_OPERATION);
         }
+        // A level attached to the bound framebuffer object holds what was drawn once stored
+        // (context/fbo.rs).
+        self.fbo_store();
+        self.fbo_load();
         self.pull_objects();
         if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
             && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
@@ -1145,9 +1156,15 @@ impl Context {
         {
             return self.error(gl::INVALID_ENUM);
         }
-        let (Some(n), Some(s)) = (format_components(format), type_size(type_)) else {
-            return self.error(gl::INVALID_ENUM);
+        // §6.1.4: the formats and types of ReadPixels (GL 2.1 table 3.6, the packed types of
+        // table 3.8 with their INVALID_OPERATION), but no colour or stencil index.
+        let f = match check(format, type_) {
+            Ok(f) => f,
+            Err(code) => return self.error(code),
         };
+        if matches!(f.group, Group::Index | Group::Stencil) {
+            return self.error(gl::INVALID_ENUM);
+        }
         if level < 0 || level >= MAX_LEVELS as i32 {
             return self.error(gl::INVALID_VALUE);
         }
@@ -1162,79 +1179,60 @@ impl Context {
         else {
             return;
         };
-        if (format == gl::DEPTH_COMPONENT) != (lv.base == gl::DEPTH_COMPONENT) {
+        if (f.group == Group::Depth) != (lv.base == gl::DEPTH_COMPONENT) {
             return self.error(gl::INVALID_OPERATION);
         }
         // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).
-        let modes = if target == gl::TEXTURE_3D {
-            self.state.pack
-        } else {
-            crate::pixel_store::PixelModes {
-                image_height: 0,
-                skip_images: 0,
-                ..self.state.pack
-            }
-        };
-        let Some((layout, img)) = modes
-            .layout3(lv.width, lv.height, lv.depth, n, s)
-            .filter(|(l, _)| pixels.len() >= l.need)
-        else {
+        let (modes, three_d) = (self.state.pack, target == gl::TEXTURE_3D);
+        let need = image_need3(&modes, f, lv.width, lv.height, lv.depth, three_d);
+        if need.map_or(true, |n| pixels.len() < n) {
             return self.error(gl::INVALID_OPERATION);
-        };
-        for k in 0..lv.depth {
-            for j in 0..lv.height {
-                for i in 0..lv.width {
+        }
+        // §6.1.4: the colour goes through the pixel transfer as ReadPixels' does (Mesa's
+        // `_mesa_GetTexImage` applies scale, bias and MAP_COLOR too).
+        let (t, maps) = (self.state.pixel, Arc::clone(&self.state.pixel_maps));
+        for k in 0..lv.depth.max(0) as usize {
+            let Some(layout) = slice_layout(&modes, f, lv.width, lv.height, k, three_d) else {
+                return self.error(gl::INVALID_OPERATION);
+            };
+            for j in 0..lv.height.max(0) as usize {
+                for i in 0..lv.width.max(0) as usize {
                     // Table 6.1: L and I are returned as R alone, (L, 0, 0, 1) as RGBA (Mesa
                     // agrees; piglit `getteximage-luminance`).
-                    let t = lv.texel3(i, j, k);
-                    let [r, g, b, a] = match lv.base {
-                        gl::LUMINANCE | gl::INTENSITY => [t[0], 0.0, 0.0, 1.0],
-                        gl::LUMINANCE_ALPHA => [t[0], 0.0, 0.0, t[3]],
-                        base => as_rgba(base, t),
+                    let tx = lv.texel3(i as i32, j as i32, k as i32);
+                    let rgba = match lv.base {
+                        gl::LUMINANCE | gl::INTENSITY => [tx[0], 0.0, 0.0, 1.0],
+                        gl::LUMINANCE_ALPHA => [tx[0], 0.0, 0.0, tx[3]],
+                        gl::DEPTH_COMPONENT => [t.depth(f64::from(tx[0])) as f32, 0.0, 0.0, 1.0],
+                        base => as_rgba(base, tx),
                     };
-                    // §6.1.4: luminance is returned as R (no sum), as Mesa does.
-                    let comps: &[f32] = &match format {
-                        gl::RED | gl::LUMINANCE | gl::DEPTH_COMPONENT => [r, 0.0, 0.0, 0.0],
-                        gl::GREEN => [g, 0.0, 0.0, 0.0],
-                        gl::BLUE => [b, 0.0, 0.0, 0.0],
-                        gl::ALPHA => [a, 0.0, 0.0, 0.0],
-                        gl::LUMINANCE_ALPHA => [r, a, 0.0, 0.0],
-                        gl::BGR | gl::BGRA => [b, g, r, a],
-                        _ => [r, g, b, a],
+                    let [r, g, b, a] = if t.color_is_identity() || lv.base == gl::DEPTH_COMPONENT {
+                        rgba
+                    } else {
+                        t.color(&maps, rgba)
                     };
-                    let at = layout.at(i as usize, k as usize * img + j as usize);
-                    for (c, &v) in comps.iter().take(n).enumerate() {
-                        pack(pixels, at + c * s, type_, v);
-                        // PACK_SWAP_BYTES: each element's bytes reversed (§4.3.2).
-                        if let Some(e) = pixels.get_mut(at + c * s..at + (c + 1) * s) {
-                            layout.order(e);
+                    let mut comps = [Value::Norm(0.0); 4];
+                    let n = match f.group {
+                        Group::Color(slots) => {
+                            for (c, slot) in comps.iter_mut().zip(slots) {
+                                // §6.1.4: luminance is returned as R (no sum), as Mesa does.
+                                *c = Value::Norm(f64::from(match slot {
+                                    Slot::R | Slot::L => r,
+                                    Slot::G => g,
+                                    Slot::B => b,
+                                    Slot::A => a,
+                                }));
+                            }
+                            slots.len()
                         }
-                    }
+                        _ => {
+                            comps[0] = Value::Norm(f64::from(r));
+                            1
+                        }
+                    };
+                    store(pixels, &layout, f.ty, i, j, &comps[..n]);
                 }
             }
         }
-    }
-}
-
-/// Writes one component `c` in [0, 1] as `type_` at byte `at` (table 4.7's conversions).
-fn pack(dst: &mut [u8], at: usize, type_: u32, c: f32) {
-    let c = f64::from(c);
-    let bytes: Vec<u8> = match type_ {
-        gl::UNSIGNED_BYTE => vec![(c * 255.0).round() as u8],
-        gl::BYTE => vec![convert::unit_to_signed(c, 255.0).round() as i8 as u8],
-        gl::UNSIGNED_SHORT => ((c * 65535.0).round() as u16).to_ne_bytes().to_vec(),
-        gl::SHORT => (convert::unit_to_signed(c, 65535.0).round() as i16)
-            .to_ne_bytes()
-            .to_vec(),
-        gl::UNSIGNED_INT => ((c * f64::from(u32::MAX)).round() as u32)
-            .to_ne_bytes()
-            .to_vec(),
-        gl::INT => (convert::unit_to_signed(c, f64::from(u32::MAX)).round() as i32)
-            .to_ne_bytes()
-            .to_vec(),
-        _ => (c as f32).to_ne_bytes().to_vec(),
-    };
-    if let Some(d) = dst.get_mut(at..at + bytes.len()) {
-        d.copy_from_slice(&bytes);
     }
 }

@@ -202,6 +202,14 @@ impl Context {
         self.state.current.fog_coord = f;
     }
 
+    /// `Index*` sets CURRENT_INDEX (GL 2.1 §2.7): the value as it is, unnormalised, as Mesa
+    /// converts it (an unsigned byte as 0..255). In an RGBA context nothing reads it but
+    /// `glGet` and PushAttrib(CURRENT_BIT).
+    #[inline]
+    fn set_index(&mut self, c: f32) {
+        self.state.current.index = c;
+    }
+
     attrib! { vertex, xyzw2, i16, 2, vertex2s / Vertex2s, vertex2sv / Vertex2sv, (x, y) }
     attrib! { vertex, xyzw2, i32, 2, vertex2i / Vertex2i, vertex2iv / Vertex2iv, (x, y) }
     attrib! { vertex, xyzw2, f32, 2, vertex2f / Vertex2f, vertex2fv / Vertex2fv, (x, y) }
@@ -297,6 +305,12 @@ impl Context {
     fog_coordf / FogCoordf, fog_coordfv / FogCoordfv, (coord) }
     attrib! { set_fog_coord, fog1, f64, 1,
     fog_coordd / FogCoordd, fog_coorddv / FogCoorddv, (coord) }
+
+    attrib! { set_index, fog1, i16, 1, indexs / Indexs, indexsv / Indexsv, (c) }
+    attrib! { set_index, fog1, i32, 1, indexi / Indexi, indexiv / Indexiv, (c) }
+    attrib! { set_index, fog1, f32, 1, indexf / Indexf, indexfv / Indexfv, (c) }
+    attrib! { set_index, fog1, f64, 1, indexd / Indexd, indexdv / Indexdv, (c) }
+    attrib! { set_index, fog1, u8, 1, indexub / Indexub, indexubv / Indexubv, (c) }
 
     /// `glEdgeFlag`: whether the following vertices start boundary edges (GL 2.1 §2.6.2).
     #[inline]

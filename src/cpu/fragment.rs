@@ -8,14 +8,16 @@
 //! stencil, blend or logic op enabled (`FragCtx::ops` is `None`, as in the lecture's surface
 //! scenes), the depth test runs over the whole span first and produces a coverage mask, and
 //! colours are computed only for the surviving pixels, returning at once when the mask is empty
-//! (Mesa `swrast/s_span.h`). Otherwise every pixel takes the full sequence, in spec order,
-//! because the alpha test needs the colour before the stencil and depth tests may write.
+//! (Mesa `swrast/s_span.h`). Otherwise the span takes the full sequence in spec order, eight
+//! fragments at a time (`oplanes`), because the alpha test needs the colour before the stencil
+//! and depth tests may write.
 
 use glam::{Vec3, Vec4};
 
 use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
-use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG};
+use super::lanes::LANES;
+use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG, MAXV};
 use super::texture::Sampler;
 use super::vertex::Lighting;
 use crate::gl;
@@ -441,31 +443,62 @@ impl FragCtx<'_> {
                 return;
             }
         }
-        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
-        let mut v = [0.0f32; super::setup::MAXV];
+        // The general path (textured spans among them), eight fragments at a time: their
+        // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
+        // colour, stored on lanes when one colour buffer is written whole.
+        let mut v = [0.0f32; MAXV];
         let nv = nv.min(v.len());
-        // The quad whose λ is in `lambda` (none yet)
-        let mut quad_x = i32::MIN;
-        let mut lambda = [0.0f32; MAX_TEXTURE_UNITS];
-        while mask != 0 {
-            let k = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
-            let fx = (x0 - ox + k as i32) as f32;
-            let iw = pl(0) + pl(1) * fx + pl(2) * fy;
-            let inv = 1.0 / iw;
-            for (j, vj) in v.iter_mut().enumerate().take(nv) {
-                let o = 3 + 3 * j;
-                let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
-                *vj = if j < nflat { val } else { val * inv };
+        let mut vl = [[0.0f32; LANES]; MAXV];
+        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
+        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
+        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        let qy = ((y & !1) - oy) as f32;
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut g = 0;
+        while g < n.min(64) {
+            let m = (mask >> g) & ((1 << LANES) - 1);
+            if m == 0 {
+                g += LANES;
+                continue;
             }
-            // λ once per 2x2 quad
-            let qx = (x0 + k as i32) & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                lambda = self.quad_lambda(planes, qx, y, ox, oy);
+            let vs = &mut vl[..nv];
+            super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
+            if lod {
+                let qx: [f32; LANES] =
+                    std::array::from_fn(|l| (((x0 + (g + l) as i32) & !1) - ox) as f32);
+                for (lu, t) in lam.iter_mut().zip(&self.tex) {
+                    let Some((tx, to)) = *t else { break };
+                    if tx.needs_lambda() {
+                        *lu = tx.quad_lambda_lanes(planes, to, qx, qy);
+                    }
+                }
             }
-            let c = self.color(p, &v[..nv], lambda);
-            self.write(bufs, base + k, c);
+            let mut col = [[0.0f32; LANES]; 4];
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                for (vj, lj) in v.iter_mut().zip(vs.iter()) {
+                    *vj = lj[l];
+                }
+                let k = g + l;
+                let lambda = lam.map(|u| u[l]);
+                let c = self.color(p, &v[..nv], lambda);
+                if whole {
+                    for (ch, x) in col.iter_mut().zip(c.to_array()) {
+                        ch[l] = x;
+                    }
+                } else {
+                    self.write(bufs, base + k, c);
+                }
+            }
+            if whole {
+                if let Some(dst) = bufs.color.get_mut(base + g..) {
+                    super::lanes::store_rgba(dst, m, &col);
+                }
+            }
+            g += LANES;
         }
     }
 
@@ -618,7 +651,11 @@ impl FragCtx<'_> {
         lambda
     }
 
-    /// A span through the full sequence (`ops` enabled): every pixel in order.
+    /// A span through the full sequence (`ops` enabled), eight fragments at a time
+    /// (`oplanes`): varyings, colour, clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil
+    /// and depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write;
+    /// each lane computes what `full` computes for its fragment. The colour of a textured or
+    /// PHONG_WIN fragment comes from `color` one fragment at a time.
     #[allow(clippy::too_many_arguments)]
     fn full_span(
         &self,
@@ -632,6 +669,8 @@ impl FragCtx<'_> {
         x0: i32,
         n: usize,
     ) {
+        use super::lanes::{depth_lanes, lane_x, recip, unorm8_lanes, LANES};
+        use super::oplanes as ol;
         let ox = p.bbox[0];
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
@@ -639,12 +678,174 @@ impl FragCtx<'_> {
             0
         };
         let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
-        let mut v = [0.0f32; super::setup::MAXV];
-        let nv = self.rl.n.min(v.len());
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let nv = self.rl.n.min(super::setup::MAXV);
+        let n = n.min(TILE);
         // A polygon stipple (§3.5.6) removes fragments before any test.
         let y = p.bbox[1] + fy as i32;
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
         let live = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => all & stipple_mask(&rows, x0, y),
+            _ => all,
+        };
+        // The colour is the interpolated primary (plus the secondary): computed on lanes.
+        let plain = self.tex[0].is_none() && p.flags & F_PHONG == 0;
+        let spec = self.rl.spec.filter(|&s| self.color_sum && s + 3 <= nv);
+        let fog_at = self.rl.fog.filter(|&o| o < nv);
+        let side = ops
+            .stencil
+            .as_ref()
+            .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
+        let depth = self
+            .depth_test
+            .then_some((self.depth_func, self.depth_mask));
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let mut v = [[0.0f32; LANES]; super::setup::MAXV];
+        let mut c = 0;
+        while c < n {
+            let m = ((live >> c) & 0xFF) as u8;
+            let i0 = base + c;
+            if m == 0 {
+                c += LANES;
+                continue;
+            }
+            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+            let fx = lane_x(x0 - ox + c as i32);
+            let (w0, wx, wy) = (pl(0), pl(1), pl(2));
+            let inv = recip(fx.map(|x| w0 + wx * x + wy * fy));
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let o = 3 + 3 * j;
+                let (a, b, d) = (pl(o), pl(o + 1), pl(o + 2));
+                *vj = if j < nflat {
+                    fx.map(|x| a + b * x + d * fy)
+                } else {
+                    std::array::from_fn(|l| (a + b * fx[l] + d * fy) * inv[l])
+                };
+            }
+            let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
+            if plain {
+                if let Some(s) = spec {
+                    for (k, ch) in col.iter_mut().enumerate() {
+                        let add = if k < 3 { v[s + k] } else { [0.0; LANES] };
+                        *ch = std::array::from_fn(|l| ch[l] + add[l]);
+                    }
+                }
+            } else {
+                let mut vv = [0.0f32; super::setup::MAXV];
+                for l in 0..LANES {
+                    if m & (1 << l) == 0 {
+                        continue;
+                    }
+                    for (d, s) in vv.iter_mut().zip(&v).take(nv) {
+                        *d = s[l];
+                    }
+                    let qx = (x0 + (c + l) as i32) & !1;
+                    if qx != quad_x {
+                        quad_x = qx;
+                        lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+                    }
+                    let cc = self.color(p, &vv[..nv], lambda).to_array();
+                    for (ch, cc) in col.iter_mut().zip(cc) {
+                        ch[l] = cc;
+                    }
+                }
+            }
+            let [r, g, b, a] = col.map(ol::clamp01);
+            let mut rgb = [r, g, b];
+            if let Some(f) = &ops.fog {
+                ol::fog(f, &mut rgb, fog_at.map_or([0.0; LANES], |o| v[o]));
+            }
+            let mut m = m;
+            if let Some((func, reference)) = ops.alpha {
+                m &= ol::alpha_test(func, reference, a);
+            }
+            if m == 0 {
+                c += LANES;
+                continue;
+            }
+            let d = if self.depth_test {
+                depth_lanes(fx.map(|x| zrow + p.z[1] * x))
+            } else {
+                [0; LANES]
+            };
+            let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+            m = match side {
+                Some(side) => {
+                    let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                    ol::stencil_depth(side, depth, st, dp, d, m)
+                }
+                None if self.depth_test => {
+                    ol::depth_test(self.depth_func, self.depth_mask, dp, d, m)
+                }
+                None => m,
+            };
+            if m == 0 {
+                c += LANES;
+                continue;
+            }
+            if self.samples {
+                bufs.samples += u64::from(m.count_ones());
+            }
+            let src = [rgb[0], rgb[1], rgb[2], a].map(unorm8_lanes);
+            // Blending and the logic op read each colour buffer's own contents (§4.1.8,
+            // §4.1.10).
+            let combine = |row: &[[u8; 4]]| match ops.write {
+                ColorWrite::Replace => src,
+                ColorWrite::Blend(b) => ol::blend(&b, &src, &ol::load(row)),
+                ColorWrite::Logic(op) => ol::logic(op, &src, &ol::load(row)),
+            };
+            for buf in [Some(&mut *bufs.color), bufs.color2.as_deref_mut()]
+                .into_iter()
+                .flatten()
+            {
+                let row = buf.get_mut(i0..).unwrap_or_default();
+                let out = combine(row);
+                for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        self.store_one(dst, out.map(|ch| ch[l]));
+                    }
+                }
+            }
+            c += LANES;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! `full_span` (eight fragments at a time) against the scalar sequence it replaced, each
+    //! fragment through `full`, on random states, spans and buffers: byte for byte.
+
+    use super::*;
+    use crate::cpu::fragops::{BlendEval, FogEval, StencilSide};
+    use crate::cpu::framebuffer::DEPTH_MAX;
+    use crate::cpu::setup::{PrimKind, RLayout};
+
+    /// The scalar span: every fragment in order through `full` (the code before `oplanes`).
+    #[allow(clippy::too_many_arguments)]
+    fn scalar_span(
+        f: &FragCtx,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+    ) {
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            f.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; super::super::setup::MAXV];
+        let nv = f.rl.n.min(v.len());
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let y = p.bbox[1] + fy as i32;
+        let live = match f.stipple {
             Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
             _ => u64::MAX,
         };
@@ -663,13 +864,209 @@ impl FragCtx<'_> {
             let qx = (x0 + k as i32) & !1;
             if qx != quad_x {
                 quad_x = qx;
-                // `fy` is the row's offset from the bounding box's bottom (an integer).
-                let y = p.bbox[1] + fy as i32;
-                lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
+                lambda = f.quad_lambda(planes, qx, y, ox, p.bbox[1]);
             }
-            let c = self.color(p, &v[..nv], lambda);
-            let fogc = self.fog_coord(&v[..nv]);
-            self.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
+            let c = f.color(p, &v[..nv], lambda);
+            let fogc = f.fog_coord(&v[..nv]);
+            f.full(ops, bufs, p, base + k, f64::from(z), c, fogc);
+        }
+    }
+
+    struct Gen(u64);
+    impl Gen {
+        fn next(&mut self) -> u64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            self.0 >> 11
+        }
+        fn pick(&mut self, v: &[u32]) -> u32 {
+            v[(self.next() % v.len() as u64) as usize]
+        }
+        /// Mostly in [−0.25, 1.25], now and then NaN or huge.
+        fn float(&mut self) -> f32 {
+            match self.next() % 40 {
+                0 => f32::NAN,
+                1 => 1e30,
+                _ => (self.next() % 1_000_000) as f32 * 1.5e-6 - 0.25,
+            }
+        }
+    }
+
+    const FUNCS: [u32; 8] = [
+        gl::NEVER,
+        gl::LESS,
+        gl::EQUAL,
+        gl::LEQUAL,
+        gl::GREATER,
+        gl::NOTEQUAL,
+        gl::GEQUAL,
+        gl::ALWAYS,
+    ];
+
+    #[test]
+    fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
+        let mut g = Gen(21);
+        let sops = [
+            gl::KEEP,
+            gl::ZERO,
+            gl::REPLACE,
+            gl::INCR,
+            gl::DECR_WRAP,
+            gl::INVERT,
+        ];
+        let factors = [
+            gl::ZERO,
+            gl::ONE,
+            gl::SRC_ALPHA,
+            gl::ONE_MINUS_SRC_ALPHA,
+            gl::DST_COLOR,
+            gl::CONSTANT_COLOR,
+            gl::SRC_ALPHA_SATURATE,
+        ];
+        let eqs = [gl::FUNC_ADD, gl::FUNC_SUBTRACT, gl::MIN];
+        for round in 0..3000 {
+            let spec = g.next() % 2 == 0;
+            let fog_on = g.next() % 2 == 0;
+            let mut rl = RLayout {
+                n: 4,
+                ..Default::default()
+            };
+            if spec {
+                rl.spec = Some(rl.n);
+                rl.n += 4;
+            }
+            if fog_on || g.next() % 3 == 0 {
+                rl.fog = Some(rl.n);
+                rl.n += 1;
+            }
+            let mut side = || StencilSide {
+                func: g.pick(&FUNCS),
+                reference: g.next() as u8 % 4,
+                mask: if g.next() % 2 == 0 { 0xFF } else { 3 },
+                ops: [g.pick(&sops), g.pick(&sops), g.pick(&sops)],
+                write: if g.next() % 2 == 0 {
+                    0xFF
+                } else {
+                    g.next() as u8
+                },
+            };
+            let sides = [side(), side()];
+            let stencil = (g.next() % 2 == 0).then_some(sides);
+            let write = match g.next() % 3 {
+                0 => ColorWrite::Replace,
+                1 => ColorWrite::Blend(BlendEval {
+                    src_rgb: g.pick(&factors),
+                    dst_rgb: g.pick(&factors),
+                    src_alpha: g.pick(&factors),
+                    dst_alpha: g.pick(&factors),
+                    eq_rgb: g.pick(&eqs),
+                    eq_alpha: g.pick(&eqs),
+                    constant: [g.next() as u8, 7, 200, g.next() as u8],
+                }),
+                _ => ColorWrite::Logic(gl::CLEAR + (g.next() % 16) as u32),
+            };
+            let ops = Ops {
+                fog: fog_on.then(|| FogEval {
+                    mode: g.pick(&[gl::LINEAR, gl::EXP, gl::EXP2]),
+                    density: (g.next() % 100) as f32 * 0.05,
+                    start: 0.1,
+                    end: if g.next() % 5 == 0 { 0.1 } else { 0.9 },
+                    color: Vec3::new(g.float(), 0.5, g.float()),
+                }),
+                alpha: (g.next() % 2 == 0).then(|| (g.pick(&FUNCS), g.next() as u8)),
+                stencil,
+                write,
+            };
+            let stipple = (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32));
+            let f = FragCtx {
+                depth_test: g.next() % 4 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: if g.next() % 3 == 0 {
+                    std::array::from_fn(|_| g.next() % 2 == 0)
+                } else {
+                    [true; 4]
+                },
+                color_sum: spec && g.next() % 4 != 0,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: g.next() % 8 == 0,
+                samples: g.next() % 2 == 0,
+                stipple,
+                ops: Some(ops),
+                tex: [None; MAX_TEXTURE_UNITS],
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
+            // Depths: a plane crossing the stored values, sometimes outside [0, 1].
+            let z = [g.float(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags,
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z,
+            };
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for _ in 0..rl.n {
+                planes.extend([g.float(), g.float() * 1e-2, g.float() * 1e-2]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let two = g.next() % 4 == 0;
+            let color2: Vec<[u8; 4]> = color.iter().map(|c| c.map(|x| x ^ 0x5A)).collect();
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let stencil: Vec<u8> = (0..TILE * TILE).map(|_| g.next() as u8 % 4).collect();
+            let y = ty + (g.next() % TILE as u64) as i32;
+            let x0 = tx + (g.next() % TILE as u64) as i32;
+            let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) = (
+                    color.clone(),
+                    color2.clone(),
+                    depth.clone(),
+                    stencil.clone(),
+                );
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                } else {
+                    let fy = (y - p.bbox[1]) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
+                    let n = (x1 - x0 + 1) as usize;
+                    scalar_span(&f, &ops, &mut bufs, &p, &planes, fy, zrow, base, x0, n);
+                }
+                let samples = bufs.samples;
+                (c, c2, d, s, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(
+                got == want,
+                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
         }
     }
 }

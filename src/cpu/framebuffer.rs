@@ -117,6 +117,13 @@ impl Targets {
     /// FRONT_AND_BACK the back buffer (GL 2.1 table 4.4); a single-buffered framebuffer's only
     /// buffer is its front.
     pub fn of(state: &State) -> Self {
+        // A framebuffer object's one colour buffer (context/fbo.rs).
+        if state.draw_buffer == crate::gl::COLOR_ATTACHMENT0 {
+            return Targets {
+                main: true,
+                front: false,
+            };
+        }
         let mask = crate::buffers::mask(state.draw_buffer).unwrap_or(0);
         let (front, back) = (
             mask & crate::buffers::FRONT_LEFT != 0,
@@ -275,6 +282,21 @@ impl Framebuffer {
     pub fn index(&self, x: usize, y: usize) -> usize {
         let tile = (y / TILE) * self.tiles_x + x / TILE;
         tile * TILE_PIXELS + (y % TILE) * TILE + x % TILE
+    }
+
+    /// Writes the main colour and depth of pixel (x, y) (those given), inside the framebuffer,
+    /// which has no pending clear (a new one): how a framebuffer object's images are loaded.
+    pub(crate) fn set_pixel(&mut self, x: u32, y: u32, color: Option<[u8; 4]>, depth: Option<u32>) {
+        if x >= self.width || y >= self.height {
+            return;
+        }
+        let i = self.index(x as usize, y as usize);
+        if let (Some(c), Some(px)) = (color, self.color.get_mut(i)) {
+            *px = c;
+        }
+        if let (Some(d), Some(px)) = (depth, self.depth.get_mut(i)) {
+            *px = d;
+        }
     }
 
     /// Colour (of the main colour buffer), depth and stencil of pixel (x, y), or `None`

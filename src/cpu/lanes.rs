@@ -17,7 +17,7 @@ pub const LANES: usize = 8;
 /// `x`, `x` + 1, ... as floats, one a lane: the same values as `(x + l) as f32`, since every
 /// integer involved is far below 2^24 (window offsets are at most 16384) and so exact.
 #[inline(always)]
-fn lane_x(x: i32) -> [f32; LANES] {
+pub(super) fn lane_x(x: i32) -> [f32; LANES] {
     const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
     let b = x as f32;
     IOTA.map(|l| b + l)
@@ -27,7 +27,7 @@ fn lane_x(x: i32) -> [f32; LANES] {
 /// SSE2 `divps` of the x86-64 baseline gives the same correctly rounded quotients four at a
 /// time.
 #[inline(always)]
-fn recip(d: [f32; LANES]) -> [f32; LANES] {
+pub(super) fn recip(d: [f32; LANES]) -> [f32; LANES] {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{__m128, _mm_div_ps, _mm_set1_ps, _mm_set_ps};
@@ -54,7 +54,7 @@ fn recip(d: [f32; LANES]) -> [f32; LANES] {
 /// `framebuffer::unorm8` on every lane: NaN and negative to 0, above 1 to 1, then
 /// `c·(255/256) + 2^15`, whose low mantissa byte is the result.
 #[inline(always)]
-fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
+pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
     let mut out = [0u8; LANES];
     for (o, c) in out.iter_mut().zip(c) {
         // `!(c >= 0)` is true for NaN as for negatives: both give 0, as `unorm8` does.
@@ -122,7 +122,7 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
 
 /// `framebuffer::depth_unorm(f64::from(z))` on every lane (a NaN gives 0, as there).
 #[inline(always)]
-fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
+pub(super) fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
     std::array::from_fn(|l| {
         let z = f64::from(z[l]);
         // `clamp` keeps a NaN, which the final cast turns into 0; so do these comparisons.
@@ -172,6 +172,50 @@ pub fn depth_span(
         c += LANES;
     }
     mask
+}
+
+/// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'
+/// lane kernels (texture λ).
+#[inline(always)]
+pub fn recip_lanes(d: [f32; LANES]) -> [f32; LANES] {
+    recip(d)
+}
+
+/// The perspective-correct varyings of eight fragments of a span (the general path of
+/// `FragCtx::tri_span`, textured spans among them): with fx = `fx0` + l for lane l and `pl(j)`
+/// the j-th pool float of `planes` (0 past its end), 1/w = (pl(0) + pl(1)·fx) + pl(2)·`fy`, and
+/// varying j < `out.len()` (its plane at o = 3 + 3j) is (pl(o) + pl(o+1)·fx) + pl(o+2)·`fy`,
+/// multiplied by w = 1/(1/w) unless j < `nflat` (a flat varying is not divided). Lane l of
+/// `out[j]` receives it, exactly the scalar expression's bits.
+#[inline(always)]
+pub fn varyings(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32; LANES]]) {
+    let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+    let fx = lane_x(fx0);
+    // `pl(2) * fy` is the same product in every lane.
+    let (w0, wx, wy) = (pl(0), pl(1), pl(2) * fy);
+    let inv = recip(fx.map(|x| (w0 + wx * x) + wy));
+    for (j, o) in out.iter_mut().enumerate() {
+        let k = 3 + 3 * j;
+        let (a, dx, yt) = (pl(k), pl(k + 1), pl(k + 2) * fy);
+        let val = fx.map(|x| (a + dx * x) + yt);
+        *o = if j < nflat {
+            val
+        } else {
+            std::array::from_fn(|l| val[l] * inv[l])
+        };
+    }
+}
+
+/// Stores the unorm8 colour (`framebuffer::unorm8` of each channel of `c`, channel-major) of
+/// every lane whose bit is set in `m` into `dst[l]`: a colour write with ColorMask all true.
+#[inline(always)]
+pub fn store_rgba(dst: &mut [[u8; 4]], m: u64, c: &[[f32; LANES]; 4]) {
+    let [r, g, b, a] = c.map(unorm8_lanes);
+    for (l, px) in dst.iter_mut().take(LANES).enumerate() {
+        if m & (1 << l) != 0 {
+            *px = [r[l], g[l], b[l], a[l]];
+        }
+    }
 }
 
 #[cfg(test)]
@@ -286,6 +330,61 @@ mod tests {
                 }
             }
             assert_eq!((mask, &got), (want_mask, &want), "zrow {zrow} dz {dz}");
+        }
+    }
+    #[test]
+    fn varyings_are_the_scalar_expression_bit_for_bit() {
+        let mut g = Gen(13);
+        for _ in 0..3000 {
+            let np = 3 + 3 * (g.next() % 12) as usize + (g.next() % 3) as usize;
+            let planes: Vec<f32> = (0..np)
+                .map(|k| match k {
+                    0 => 0.5 + (g.next() % 1000) as f32 * 1e-3,
+                    1 | 2 => (g.next() % 100) as f32 * 1e-4 - 5e-3,
+                    _ => g.float(),
+                })
+                .collect();
+            let nv = (g.next() % 14) as usize;
+            let nflat = (g.next() % 6) as usize;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let fy = (g.next() % 900) as f32;
+            let mut got = vec![[7.0f32; LANES]; nv];
+            varyings(&planes, nflat, fx0, fy, &mut got);
+            let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+            for l in 0..LANES {
+                // `FragCtx::tri_span`'s scalar loop, fragment by fragment.
+                let fx = (fx0 + l as i32) as f32;
+                let iw = pl(0) + pl(1) * fx + pl(2) * fy;
+                let inv = 1.0 / iw;
+                for (j, lanes) in got.iter().enumerate() {
+                    let o = 3 + 3 * j;
+                    let val = pl(o) + pl(o + 1) * fx + pl(o + 2) * fy;
+                    let want = if j < nflat { val } else { val * inv };
+                    // A NaN's payload may differ (operand order); nothing reads it.
+                    let same =
+                        lanes[l].to_bits() == want.to_bits() || lanes[l].is_nan() && want.is_nan();
+                    assert!(same, "l {l} j {j}: {} vs {want} {planes:?}", lanes[l]);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn store_rgba_is_unorm8_of_each_lane() {
+        let mut g = Gen(17);
+        for _ in 0..2000 {
+            let c: [[f32; LANES]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| g.float()));
+            let n = 1 + (g.next() % 8) as usize;
+            let m = g.next() & 0xff;
+            let mut got = vec![[9u8; 4]; n];
+            store_rgba(&mut got, m, &c);
+            for (l, px) in got.iter().enumerate() {
+                let want = match m & (1 << l) != 0 {
+                    true => std::array::from_fn(|k| unorm8(c[k][l])),
+                    false => [9; 4],
+                };
+                assert_eq!(*px, want, "l {l} {c:?}");
+            }
         }
     }
 }

@@ -46,6 +46,7 @@ pub mod fragops;
 pub mod framebuffer;
 pub mod lanes;
 mod line;
+pub mod oplanes;
 pub mod pixels;
 mod polygon;
 pub mod raster;
@@ -220,6 +221,16 @@ impl Renderer {
         self.size = (width, height);
         self.core().fb = fb;
         true
+    }
+
+    /// Draws what is batched (under `state`), then makes `fb` the framebuffer drawing and
+    /// reading use and returns the one it replaces (a framebuffer object bound or unbound,
+    /// context/fbo.rs).
+    pub fn swap_framebuffer(&mut self, state: &State, fb: Framebuffer) -> Framebuffer {
+        self.flush(state);
+        self.tiles = fb.tiles();
+        self.size = fb.size();
+        std::mem::replace(&mut self.core().fb, fb)
     }
 
     /// The framebuffer, to modify (Accum, SwapBuffers), once everything drawn so far is in it.

@@ -20,6 +20,7 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
+use super::lanes::{recip_lanes, LANES};
 use crate::gl;
 use crate::state::State;
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
@@ -191,6 +192,63 @@ impl Sampler {
         };
         let rho2 = len2(px).max(len2(py));
         0.5 * fast_log2(rho2)
+    }
+
+    /// [`Sampler::quad_lambda`] for eight quads at once, lane l's quad at (`qx[l]`, `qy`): the
+    /// same operations in the same order on lanes (the division by q as `divps`), so each lane
+    /// holds exactly the scalar result's bits. A cube map takes the scalar routine lane by lane
+    /// (its face choice differs between lanes).
+    #[inline]
+    pub fn quad_lambda_lanes(
+        &self,
+        planes: &[f32],
+        to: usize,
+        qx: [f32; LANES],
+        qy: f32,
+    ) -> [f32; LANES] {
+        if self.cube {
+            return qx.map(|x| self.quad_lambda(planes, to, x, qy));
+        }
+        let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+        let plane = |j: usize| (g(3 * j), g(3 * j + 1), g(3 * j + 2));
+        // (a + dx·x) + dy·y, as `pl` in `quad_lambda` evaluates a plane.
+        let ev = |(a, dx, dy): (f32, f32, f32), x: [f32; LANES], y: f32| {
+            let yt = dy * y;
+            x.map(|x| (a + dx * x) + yt)
+        };
+        let (ps, pt, pr, pq) = (plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to));
+        let at = |x: [f32; LANES], y: f32| -> [[f32; LANES]; 3] {
+            let q = ev(pq, x, y);
+            let rq = recip_lanes(q);
+            let inv: [f32; LANES] = std::array::from_fn(|l| if q[l] != 0.0 { rq[l] } else { 0.0 });
+            let scaled = |p: (f32, f32, f32), size: f32| {
+                let c = ev(p, x, y);
+                std::array::from_fn(|l| c[l] * inv[l] * size)
+            };
+            let u = scaled(ps, self.size[0]);
+            let v = if self.dims >= 2 {
+                scaled(pt, self.size[1])
+            } else {
+                [0.0; LANES]
+            };
+            let w = if self.dims == 3 {
+                scaled(pr, self.size[2])
+            } else {
+                [0.0; LANES]
+            };
+            [u, v, w]
+        };
+        let p0 = at(qx, qy);
+        let px = at(qx.map(|x| x + 1.0), qy);
+        let py = at(qx, qy + 1.0);
+        let len2 = |a: &[[f32; LANES]; 3]| -> [f32; LANES] {
+            std::array::from_fn(|l| {
+                let d = [a[0][l] - p0[0][l], a[1][l] - p0[1][l], a[2][l] - p0[2][l]];
+                d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+            })
+        };
+        let (lx, ly) = (len2(&px), len2(&py));
+        std::array::from_fn(|l| 0.5 * fast_log2(lx[l].max(ly[l])))
     }
 
     /// The texture-environment result for fragment colour `cf` (the previous unit's result),
@@ -375,7 +433,11 @@ impl Sampler {
             1 => self.fetch(lv, i, Some(0), Some(0), r),
             2 => {
                 let j = wrap_nearest(self.wrap[1], t, lv.height);
-                self.fetch(lv, i, j, Some(0), r)
+                match (self.compare, i, j) {
+                    // Inside the image, no comparison: `fetch`'s texel without its choices.
+                    (None, Some(i), Some(j)) => lv.texel(i, j),
+                    _ => self.fetch(lv, i, j, Some(0), r),
+                }
             }
             _ => {
                 let j = wrap_nearest(self.wrap[1], t, lv.height);
@@ -399,6 +461,21 @@ impl Sampler {
             return std::array::from_fn(|c| (1.0 - a) * t0[c] + a * t1[c]);
         }
         let (j0, j1, b) = wrap_linear(self.wrap[1], t, lv.height);
+        // A 2D image with four texels inside it and no depth comparison (the common case):
+        // the same texels (`texel` is `texel3` at k = 0) and weights, without the border and
+        // comparison choices made per texel.
+        if let (2, None, Some(i0), Some(i1), Some(j0), Some(j1)) =
+            (self.dims, self.compare, i0, i1, j0, j1)
+        {
+            let (t00, t10) = (lv.texel(i0, j0), lv.texel(i1, j0));
+            let (t01, t11) = (lv.texel(i0, j1), lv.texel(i1, j1));
+            return std::array::from_fn(|c| {
+                (1.0 - a) * (1.0 - b) * t00[c]
+                    + a * (1.0 - b) * t10[c]
+                    + (1.0 - a) * b * t01[c]
+                    + a * b * t11[c]
+            });
+        }
         let plane = |k: Option<i32>| {
             let t00 = self.fetch(lv, i0, j0, k, r);
             let t10 = self.fetch(lv, i1, j0, k, r);
@@ -607,12 +684,24 @@ fn mirror(s: f32) -> f32 {
     }
 }
 
+/// REPEAT's texel index `i.rem_euclid(n)` for `n` >= 1 (§3.8.7): a mask when `n` is a power
+/// of two (the usual texture, and the same value for every i32 in two's complement), sparing
+/// the integer division that dominated a bilinear REPEAT sample (four per 2D sample).
+#[inline(always)]
+fn repeat(i: i32, n: i32) -> i32 {
+    if n & (n - 1) == 0 {
+        i & (n - 1)
+    } else {
+        i.rem_euclid(n)
+    }
+}
+
 /// The NEAREST texel index along an axis of `n` texels; None: the border colour.
 #[inline(always)]
 fn wrap_nearest(mode: u32, s: f32, n: i32) -> Option<i32> {
     let n = n.max(1);
     match mode {
-        gl::REPEAT => Some(ifloor(s * n as f32).rem_euclid(n)),
+        gl::REPEAT => Some(repeat(ifloor(s * n as f32), n)),
         gl::MIRRORED_REPEAT => Some(ifloor(mirror(s) * n as f32).clamp(0, n - 1)),
         gl::CLAMP_TO_BORDER => {
             let i = ifloor(s * n as f32);
@@ -642,7 +731,7 @@ fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
     let i1 = i0.saturating_add(1);
     let inside = |i: i32| (0..n).contains(&i).then_some(i);
     match mode {
-        gl::REPEAT => (Some(i0.rem_euclid(n)), Some(i1.rem_euclid(n)), a),
+        gl::REPEAT => (Some(repeat(i0, n)), Some(repeat(i1, n)), a),
         gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
         // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
         _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),

@@ -213,6 +213,14 @@ impl GlBackend {
         if self.compile_only() {
             return;
         }
+        // A framebuffer object of the program's bound: its own buffer, sent as given.
+        if self.user_fbos.bound_fb != 0 {
+            if let Some(e) = buffers::fbo_draw_error(buf) {
+                return self.raise(e);
+            }
+            // SAFETY: context current; no pointers.
+            return unsafe { self.raw.DrawBuffer(buf) };
+        }
         if let Some(e) = buffers::draw_error(buf, &self.config) {
             return self.raise(e);
         }
@@ -226,6 +234,13 @@ impl GlBackend {
         if self.compile_only() {
             return;
         }
+        if self.user_fbos.bound_fb != 0 {
+            if let Some(e) = buffers::fbo_read_error(buf) {
+                return self.raise(e);
+            }
+            // SAFETY: context current; no pointers.
+            return unsafe { self.raw.ReadBuffer(buf) };
+        }
         if let Some(e) = buffers::read_error(buf, &self.config) {
             return self.raise(e);
         }
@@ -238,6 +253,12 @@ impl GlBackend {
     /// SELECTION_BUFFER_SIZE and FEEDBACK_BUFFER_SIZE as given.
     pub(super) fn winsys_value(&self, pname: u32) -> Option<f64> {
         let c = &self.config;
+        if let Some(v) = self.fbo_binding_value(pname) {
+            return Some(v);
+        }
+        if self.user_fbos.bound_fb != 0 && matches!(pname, gl::DRAW_BUFFER | gl::READ_BUFFER) {
+            return None; // the program's framebuffer object: the driver's own answer
+        }
         Some(match pname {
             gl::DRAW_BUFFER => f64::from(self.draw_buffer),
             gl::READ_BUFFER => f64::from(self.read_buffer),

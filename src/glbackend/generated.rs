@@ -169,6 +169,16 @@ impl GlBackend {
             Call::FogCoorddv(ref coord) => gl.fog_coorddv(coord),
             Call::EdgeFlag(flag) => gl.edge_flag(flag),
             Call::EdgeFlagv(ref flag) => gl.edge_flagv(flag),
+            Call::Indexs(c) => gl.indexs(c),
+            Call::Indexi(c) => gl.indexi(c),
+            Call::Indexf(c) => gl.indexf(c),
+            Call::Indexd(c) => gl.indexd(c),
+            Call::Indexub(c) => gl.indexub(c),
+            Call::Indexsv(ref c) => gl.indexsv(c),
+            Call::Indexiv(ref c) => gl.indexiv(c),
+            Call::Indexfv(ref c) => gl.indexfv(c),
+            Call::Indexdv(ref c) => gl.indexdv(c),
+            Call::Indexubv(ref c) => gl.indexubv(c),
             Call::Materialf(face, pname, param) => gl.materialf(face, pname, param),
             Call::Materiali(face, pname, param) => gl.materiali(face, pname, param),
             Call::Materialfv(face, pname, ref params) => {
@@ -563,6 +573,38 @@ impl GlBackend {
             Call::DeleteQueries(n, ref ids) => self.delete_queries(n, ids),
             Call::BeginQuery(target, id) => gl.begin_query(target, id),
             Call::EndQuery(target) => gl.end_query(target),
+            Call::BindRenderbuffer(target, renderbuffer) => {
+                self.bind_renderbuffer(target, renderbuffer)
+            }
+            Call::DeleteRenderbuffers(n, ref renderbuffers) => {
+                self.delete_renderbuffers(n, renderbuffers)
+            }
+            Call::GenRenderbuffers(n, ref renderbuffers) => {
+                self.gen_renderbuffers(n, renderbuffers)
+            }
+            Call::RenderbufferStorage(target, internalformat, width, height) => {
+                self.renderbuffer_storage(target, internalformat, width, height)
+            }
+            Call::BindFramebuffer(target, framebuffer) => {
+                self.bind_framebuffer(target, framebuffer)
+            }
+            Call::DeleteFramebuffers(n, ref framebuffers) => {
+                self.delete_framebuffers(n, framebuffers)
+            }
+            Call::GenFramebuffers(n, ref framebuffers) => self.gen_framebuffers(n, framebuffers),
+            Call::FramebufferTexture1D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_1d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture2D(target, attachment, textarget, texture, level) => {
+                self.framebuffer_texture_2d(target, attachment, textarget, texture, level)
+            }
+            Call::FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset) => {
+                self.framebuffer_texture_3d(target, attachment, textarget, texture, level, zoffset)
+            }
+            Call::FramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer) => {
+                self.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+            }
+            Call::GenerateMipmap(target) => self.generate_mipmap(target),
             Call::DrawBuffer(buf) => self.draw_buffer(buf),
             Call::ReadBuffer(src) => self.read_buffer(src),
             Call::ClearAccum(red, green, blue, alpha) => gl.clear_accum(red, green, blue, alpha),
@@ -1554,6 +1596,66 @@ impl Safe<'_> {
     pub(super) fn edge_flagv(self, flag: &[bool; 1]) {
         // SAFETY: the context is current (see `Safe`); `flag` holds the 1 values the driver reads.
         unsafe { self.0.EdgeFlagv(flag.map(u8::from).as_ptr()) }
+    }
+
+    /// `glIndexs(c)`.
+    pub(super) fn indexs(self, c: i16) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexs(c) }
+    }
+
+    /// `glIndexi(c)`.
+    pub(super) fn indexi(self, c: i32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexi(c) }
+    }
+
+    /// `glIndexf(c)`.
+    pub(super) fn indexf(self, c: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexf(c) }
+    }
+
+    /// `glIndexd(c)`.
+    pub(super) fn indexd(self, c: f64) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexd(c) }
+    }
+
+    /// `glIndexub(c)`.
+    pub(super) fn indexub(self, c: u8) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.Indexub(c) }
+    }
+
+    /// `glIndexsv(c)`.
+    pub(super) fn indexsv(self, c: &[i16; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexsv(c.as_ptr()) }
+    }
+
+    /// `glIndexiv(c)`.
+    pub(super) fn indexiv(self, c: &[i32; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexiv(c.as_ptr()) }
+    }
+
+    /// `glIndexfv(c)`.
+    pub(super) fn indexfv(self, c: &[f32; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexfv(c.as_ptr()) }
+    }
+
+    /// `glIndexdv(c)`.
+    pub(super) fn indexdv(self, c: &[f64; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexdv(c.as_ptr()) }
+    }
+
+    /// `glIndexubv(c)`.
+    pub(super) fn indexubv(self, c: &[u8; 1]) {
+        // SAFETY: the context is current (see `Safe`); `c` holds the 1 values the driver reads.
+        unsafe { self.0.Indexubv(c.as_ptr()) }
     }
 
     /// `glMaterialf(face, pname, param)`.
@@ -2765,6 +2867,103 @@ impl Safe<'_> {
     pub(super) fn end_query(self, target: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.EndQuery(target) }
+    }
+
+    /// `glBindRenderbuffer(target, renderbuffer)`.
+    pub(super) fn bind_renderbuffer(self, target: u32, renderbuffer: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.BindRenderbuffer(target, renderbuffer) }
+    }
+
+    /// `glRenderbufferStorage(target, internalformat, width, height)`.
+    pub(super) fn renderbuffer_storage(
+        self,
+        target: u32,
+        internalformat: u32,
+        width: i32,
+        height: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .RenderbufferStorage(target, internalformat, width, height)
+        }
+    }
+
+    /// `glBindFramebuffer(target, framebuffer)`.
+    pub(super) fn bind_framebuffer(self, target: u32, framebuffer: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.BindFramebuffer(target, framebuffer) }
+    }
+
+    /// `glFramebufferTexture1D(target, attachment, textarget, texture, level)`.
+    pub(super) fn framebuffer_texture_1d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture1D(target, attachment, textarget, texture, level)
+        }
+    }
+
+    /// `glFramebufferTexture2D(target, attachment, textarget, texture, level)`.
+    pub(super) fn framebuffer_texture_2d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture2D(target, attachment, textarget, texture, level)
+        }
+    }
+
+    /// `glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)`.
+    pub(super) fn framebuffer_texture_3d(
+        self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+        zoffset: i32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset)
+        }
+    }
+
+    /// `glFramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)`.
+    pub(super) fn framebuffer_renderbuffer(
+        self,
+        target: u32,
+        attachment: u32,
+        renderbuffertarget: u32,
+        renderbuffer: u32,
+    ) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe {
+            self.0
+                .FramebufferRenderbuffer(target, attachment, renderbuffertarget, renderbuffer)
+        }
+    }
+
+    /// `glGenerateMipmap(target)`.
+    pub(super) fn generate_mipmap(self, target: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.GenerateMipmap(target) }
     }
 
     /// `glDrawBuffer(buf)`.

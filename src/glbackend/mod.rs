@@ -17,6 +17,7 @@
 mod buffers;
 mod egl;
 mod eval;
+mod fbo;
 mod generated;
 mod lists;
 mod osmesa;
@@ -100,6 +101,8 @@ pub struct GlBackend {
     _not_send: PhantomData<*const ()>,
     // The shadow array state; the driver's client pointers point into it.
     arrays: crate::arrays::ArrayState,
+    /// The program's framebuffer and renderbuffer objects (fbo.rs).
+    user_fbos: fbo::UserFbos,
 }
 
 /// How the backend reaches the driver.
@@ -292,6 +295,7 @@ impl GlBackend {
             platform,
             _not_send: PhantomData,
             arrays: crate::arrays::ArrayState::default(),
+            user_fbos: fbo::UserFbos::default(),
         })
     }
 

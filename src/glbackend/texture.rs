@@ -15,12 +15,13 @@ use crate::context::texture::{
 };
 use crate::gl;
 use crate::pixel_store::PixelModes;
-use crate::texture::{format_components, type_size};
+use crate::pixels::check;
+use crate::texture::image_need3;
 
 impl GlBackend {
     /// The bytes the driver reads for a `width` x `height` image of `format` / `type_` under
-    /// its current unpack state (the same `PixelModes::layout` the CPU front end uses, from the
-    /// driver's own values), or None for a format or type this crate does not unpack or a
+    /// its current unpack state (the same `texture::image_need3` the CPU front end uses, from
+    /// the driver's own values), or None for a format or type this crate does not unpack or a
     /// layout whose size overflows (no recording holds that many bytes). SWAP_BYTES, LSB_FIRST,
     /// IMAGE_HEIGHT and SKIP_IMAGES change nothing a 2D image reads.
     fn driver_unpack_need(
@@ -44,7 +45,7 @@ impl GlBackend {
         format: u32,
         type_: u32,
     ) -> Option<usize> {
-        let (n, s) = (format_components(format)?, type_size(type_)?);
+        let f = check(format, type_).ok()?;
         let mut v = [0i32; 6];
         for (slot, pname) in v.iter_mut().zip([
             gl::UNPACK_ALIGNMENT,
@@ -66,9 +67,7 @@ impl GlBackend {
             skip_images: if three_d { v[5] } else { 0 },
             ..PixelModes::default()
         };
-        modes
-            .layout3(width, height, depth, n, s)
-            .map(|(l, _)| l.need)
+        image_need3(&modes, f, width, height, depth, three_d)
     }
 
     /// `glGenTextures(n)` with a scratch buffer for the names (the front end's bound on n).

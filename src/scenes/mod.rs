@@ -20,6 +20,7 @@ pub mod transforms;
 pub mod lists;
 // Seed 004's VBO/EBO examples
 pub mod arrays;
+pub mod fbo;
 pub mod fragment;
 pub mod projective;
 pub mod texture;
@@ -45,6 +46,8 @@ pub mod antialiasing;
 pub mod sprites;
 // Accumulation buffer: motion blur, depth of field (scenes/accum.rs)
 pub mod accum;
+// Occlusion queries driving what is drawn (scenes/occlusion.rs)
+pub mod occlusion;
 
 /// The lecture scenes' target: at most 0.05% of pixels off by more than 2/255 from the driver.
 pub const LECTURE: Tolerance = Tolerance {
@@ -168,6 +171,7 @@ static SCENES: &[Scene] = &[
     targets::SCENES[0],
     projective::SCENES[0],
     projective::SCENES[1],
+    fbo::SCENES[0],
     pixels::SCENES[0],
     picking::SCENES[0],
     evaluators::SCENES[0],
@@ -179,6 +183,7 @@ static SCENES: &[Scene] = &[
     sprites::SCENES[0],
     accum::SCENES[0],
     accum::SCENES[1],
+    occlusion::SCENES[0],
 ];
 
 /// Every registered scene, in listing order.

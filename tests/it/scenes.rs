@@ -269,3 +269,53 @@ fn gauss_smooth_40_replay_is_pixel_identical_to_direct_driver_calls() {
     assert_eq!(a.get_pixel(0, 0).0, [255, 255, 255, 255]);
     assert!(a.pixels().filter(|p| p.0 != [255, 255, 255, 255]).count() > 100_000);
 }
+
+/// `occlusion-query` chooses what to draw from query results the CPU computed at record time;
+/// the replay makes the same draws whatever the driver counts. So the counts themselves are
+/// checked: the recorded calls run one at a time on a CPU context and on the driver, and after
+/// every EndQuery both answer QUERY_RESULT for the query just ended — equal, and some zero
+/// (culled) and some not (drawn), so the scene exercises both branches.
+#[test]
+fn occlusion_query_scene_counts_what_the_driver_counts() {
+    let Some(scene) = scenes::find("occlusion-query") else {
+        panic!("occlusion-query is registered")
+    };
+    let (w, h) = scene.default_size;
+    let (_, calls) = scene.record(w, h).unwrap();
+    let Some(mut driver) = crate::common::test_backend_with(w, h, scene.config) else {
+        return;
+    };
+    let mut cpu = fixedgl::Context::with_config(w, h, scene.config).unwrap();
+    let (mut active, mut pairs) = (0u32, Vec::new());
+    for call in &calls {
+        cpu.replay(std::slice::from_ref(call));
+        driver.replay(std::slice::from_ref(call));
+        match *call {
+            fixedgl::Call::BeginQuery(_, id) => active = id,
+            fixedgl::Call::EndQuery(_) => {
+                let mut c = [u32::MAX];
+                cpu.get_query_objectuiv(active, gl::QUERY_RESULT, &mut c);
+                let mut d = u32::MAX - 1;
+                // SAFETY: QUERY_RESULT writes one GLuint; this thread's backend is current.
+                unsafe {
+                    driver
+                        .raw()
+                        .GetQueryObjectuiv(active, gl::QUERY_RESULT, &mut d)
+                };
+                pairs.push((c[0], d));
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(cpu.get_error(), gl::NO_ERROR);
+    assert_eq!(driver.get_error(), gl::NO_ERROR);
+    assert_eq!(pairs.len(), 5);
+    assert!(
+        pairs.iter().all(|(c, d)| c == d),
+        "cpu vs driver counts: {pairs:?}"
+    );
+    assert!(
+        pairs.iter().any(|p| p.0 == 0) && pairs.iter().any(|p| p.0 > 0),
+        "{pairs:?}"
+    );
+}

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use super::*;
+use crate::cpu::lanes::LANES;
 use crate::texture::{Level, TexObject};
 
 /// A level of `w` x `h` texels of base format `base`, from `f(i, j)`.
@@ -312,4 +313,87 @@ fn lod_log2_is_piecewise_linear_like_llvmpipe() {
     assert_eq!(fast_log2(3.0), 1.5);
     assert_eq!(fast_log2(0.75), -0.5);
     assert_eq!(fast_log2(0.0), f32::NEG_INFINITY);
+}
+
+#[test]
+fn repeat_index_is_rem_euclid_for_every_size() {
+    // The mask of a power-of-two size gives rem_euclid's value for every i32 (extremes too),
+    // and other sizes take rem_euclid itself.
+    let is = [
+        i32::MIN,
+        i32::MIN + 1,
+        -65537,
+        -64,
+        -63,
+        -1,
+        0,
+        1,
+        63,
+        64,
+        65,
+        1 << 30,
+        i32::MAX,
+    ];
+    for n in 1..=257 {
+        for &i in &is {
+            assert_eq!(repeat(i, n), i.rem_euclid(n), "i {i} n {n}");
+        }
+        for i in -600..600 {
+            assert_eq!(repeat(i, n), i.rem_euclid(n), "i {i} n {n}");
+        }
+    }
+}
+
+#[test]
+fn quad_lambda_lanes_is_the_scalar_lambda_bit_for_bit() {
+    // Every target's sampler (1D, 2D, 3D, cube) over awkward planes: each lane holds exactly
+    // what `quad_lambda` gives for its quad.
+    let mut seed = 3u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
+    let mut samplers = Vec::new();
+    for dims in [1, 2, 3] {
+        let mut s = sampler(
+            obj_with(vec![lv(64, 32)], gl::NEAREST, gl::LINEAR),
+            gl::MODULATE,
+        );
+        s.dims = dims;
+        s.size = [
+            64.0,
+            if dims >= 2 { 32.0 } else { 0.0 },
+            if dims == 3 { 8.0 } else { 0.0 },
+        ];
+        samplers.push(s.clone());
+        if dims == 2 {
+            s.cube = true;
+            samplers.push(s);
+        }
+    }
+    for round in 0..3000 {
+        let s = &samplers[round % samplers.len()];
+        let np = 3 + 3 * (1 + (next() % 9) as usize);
+        let planes: Vec<f32> = (0..np)
+            .map(|_| match next() % 8 {
+                0 => 0.0,
+                1 => f32::from_bits(next() as u32),
+                2 => -((next() % 1000) as f32) * 1e-3,
+                _ => (next() % 100_000) as f32 * 1e-4 - 2.0,
+            })
+            .collect();
+        let to = (next() % 4) as usize;
+        let qx: [f32; LANES] = std::array::from_fn(|_| ((next() % 400) as i32 - 50) as f32);
+        let qy = ((next() % 400) as i32 - 50) as f32;
+        let got = s.quad_lambda_lanes(&planes, to, qx, qy);
+        for l in 0..LANES {
+            let want = s.quad_lambda(&planes, to, qx[l], qy);
+            // A NaN's payload may differ (operand order); every use of λ treats NaN alike.
+            let same = got[l].to_bits() == want.to_bits() || got[l].is_nan() && want.is_nan();
+            assert!(same, "lane {l}: {} vs {want} {planes:?}", got[l]);
+        }
+    }
 }
