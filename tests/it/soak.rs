@@ -1430,7 +1430,11 @@ fn textures_diff(a: &Textures, b: &Textures) -> Option<&'static str> {
     first_diff!(
         a,
         b,
-        Textures { names, units },
+        Textures {
+            names,
+            units,
+            proxies
+        },
         special { objects, defaults }
     )
     .map(|_| "textures")
