@@ -28,7 +28,9 @@ pub use tess::*;
 
 // gluScaleImage, gluBuild2DMipmaps (glu/mipmap.rs)
 mod mipmap;
-pub use mipmap::{build_2d_mipmaps, scale_image};
+pub use mipmap::{
+    build_1d_mipmap_levels, build_1d_mipmaps, build_2d_mipmap_levels, build_2d_mipmaps, scale_image,
+};
 
 /// `v / |v|`, or `v` unchanged when it has zero length (as the reference GLU does).
 fn normalize(v: [f64; 3]) -> [f64; 3] {

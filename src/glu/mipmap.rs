@@ -1,22 +1,93 @@
-//! `gluScaleImage` and `gluBuild2DMipmaps` (GLU 1.3 §3.1, §3.2) for UNSIGNED_BYTE images,
-//! with libGLU 9.0's filters, so the images come out byte for byte as libGLU's
-//! (`tests/it/glu_mipmap.rs` holds both against the real libGLU on llvmpipe):
+//! GLU 1.3 §3's image helpers, byte for byte as Mesa's libGLU 9.0 computes them
+//! (`tests/it/glu_mipmap.rs` holds every one against the real libGLU on llvmpipe):
 //!
-//! - `scale_image` widens each component to 16 bits (× 257), box-filters with single-precision
-//!   coverage weights (libGLU's `scale_internal`; an exact halving is a 2x2 average rounded
-//!   `(a + b + c + d + 2) / 4`), and narrows back (`>> 8`);
-//! - `build_2d_mipmaps` rounds each size to the nearest power of two (3·2ⁿ up), scales to it
-//!   in 8 bits (libGLU's `scale_internal_ubyte`, including its drifting edge weights), and
-//!   halves level by level: 2x2 blocks rounded as above, 2x1 and 1x2 blocks truncated
-//!   (`(a + b) / 2`), as libGLU's `halveImage_ubyte` does.
+//! - `scale_image` (`gluScaleImage`) takes any format and any GL 1.2 type libGLU takes (BITMAP,
+//!   BYTE .. FLOAT and the twelve packed types) in and out: the image is unpacked under the
+//!   UNPACK_ modes to 16-bit components (libGLU's `fill_image`: UNSIGNED_BYTE × 257, BYTE × 516,
+//!   SHORT × 2, UNSIGNED_INT >> 16, INT >> 15, FLOAT × 65535, packed fields scaled to 65535,
+//!   bits to 0 or 65535; colour indices kept), box-filtered with single-precision coverage
+//!   weights (`scale_internal`; an exact halving is a 2x2 average rounded `(a + b + c + d +
+//!   2) / 4`) and packed back under the PACK_ modes (`empty_image`);
+//! - `build_1d_mipmaps` / `build_1d_mipmap_levels` go through the same 16-bit image and upload
+//!   every level as UNSIGNED_SHORT with UNPACK_ALIGNMENT 2, as libGLU does;
+//! - `build_2d_mipmaps` / `build_2d_mipmap_levels` work in the caller's own type: libGLU's
+//!   per-type filters (`scale_internal_<type>` with its drifting edge weights,
+//!   `halveImage_<type>` with integer rounding for the 8- and 16-bit types, double or float
+//!   sums for the 32-bit ones, the packed types through float components), BITMAP through the
+//!   16-bit path; sizes from libGLU's `closestFit`, which asks the driver through
+//!   PROXY_TEXTURE_1D/2D/CUBE_MAP whether level 1 fits and halves until it does.
 
-use crate::texture::format_components;
 use crate::{gl, Context};
 
-use super::{GLU_INVALID_ENUM, GLU_INVALID_VALUE};
+use super::{GLU_INVALID_ENUM, GLU_INVALID_OPERATION, GLU_INVALID_VALUE};
 
 fn is_index(format: u32) -> bool {
     format == gl::COLOR_INDEX || format == gl::STENCIL_INDEX
+}
+
+/// libGLU's `legalFormat`.
+fn legal_format(format: u32) -> bool {
+    matches!(
+        format,
+        gl::COLOR_INDEX
+            | gl::STENCIL_INDEX
+            | gl::DEPTH_COMPONENT
+            | gl::RED
+            | gl::GREEN
+            | gl::BLUE
+            | gl::ALPHA
+            | gl::RGB
+            | gl::RGBA
+            | gl::LUMINANCE
+            | gl::LUMINANCE_ALPHA
+            | gl::BGR
+            | gl::BGRA
+    )
+}
+
+/// libGLU's `legalType`: BITMAP, the six integer types, FLOAT and the packed types.
+fn legal_type(t: u32) -> bool {
+    t == gl::BITMAP || elem_of(t).is_some() || packed_of(t).is_some()
+}
+
+/// libGLU's `isLegalFormatForPackedPixelType`: 3_3_2 and 5_6_5 (and REVs) want RGB, the
+/// four-component packed types RGBA or BGRA.
+fn legal_format_for_type(format: u32, t: u32) -> bool {
+    match packed_of(t) {
+        None => true,
+        Some(p) if p.comps == 3 => format == gl::RGB,
+        Some(_) => format == gl::RGBA || format == gl::BGRA,
+    }
+}
+
+/// libGLU's `checkMipmapArgs`.
+fn check_mipmap_args(format: u32, t: u32) -> i32 {
+    if !legal_format(format) || !legal_type(t) || format == gl::STENCIL_INDEX {
+        return GLU_INVALID_ENUM;
+    }
+    if !legal_format_for_type(format, t) {
+        return GLU_INVALID_OPERATION;
+    }
+    0
+}
+
+/// Components of `format` ignoring the type (`elements_per_group(format, 0)`).
+fn format_comps(format: u32) -> usize {
+    match format {
+        gl::RGB | gl::BGR => 3,
+        gl::LUMINANCE_ALPHA => 2,
+        gl::RGBA | gl::BGRA => 4,
+        _ => 1,
+    }
+}
+
+/// libGLU's `elements_per_group`: 1 for a packed type.
+fn elements_per_group(format: u32, t: u32) -> usize {
+    if packed_of(t).is_some() {
+        1
+    } else {
+        format_comps(format)
+    }
 }
 
 /// libGLU's `nearestPower`: the power of two nearest `value` (a value 3·2ⁿ goes up).
@@ -30,20 +101,877 @@ fn nearest_power(value: u32) -> i32 {
         if v == 1 {
             return i;
         } else if v == 3 {
-            return i * 4;
+            return i.saturating_mul(4);
         }
         v >>= 1;
-        i *= 2;
+        i = i.saturating_mul(2);
     }
 }
 
+/// libGLU's `computeLog`: log2 of a power of two, -1 for anything else.
 fn compute_log(value: i32) -> i32 {
-    if value <= 0 {
+    if value <= 0 || value & (value - 1) != 0 {
         return -1;
     }
     value.trailing_zeros() as i32
 }
 
+/// C's float-to-int conversion as x86-64 performs it: truncation, and INT_MIN (the
+/// "indefinite" result) for NaN or a value out of range.
+fn c_i32(x: f64) -> i32 {
+    if x.is_nan() || x >= 2_147_483_648.0 || x <= -2_147_483_649.0 {
+        i32::MIN
+    } else {
+        x as i32
+    }
+}
+
+/// The six integer types and FLOAT, as libGLU's per-type filters take them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Elem {
+    UByte,
+    Byte,
+    UShort,
+    Short,
+    UInt,
+    Int,
+    Float,
+}
+
+fn elem_of(t: u32) -> Option<Elem> {
+    Some(match t {
+        gl::UNSIGNED_BYTE => Elem::UByte,
+        gl::BYTE => Elem::Byte,
+        gl::UNSIGNED_SHORT => Elem::UShort,
+        gl::SHORT => Elem::Short,
+        gl::UNSIGNED_INT => Elem::UInt,
+        gl::INT => Elem::Int,
+        gl::FLOAT => Elem::Float,
+        _ => return None,
+    })
+}
+
+impl Elem {
+    fn size(self) -> usize {
+        match self {
+            Elem::UByte | Elem::Byte => 1,
+            Elem::UShort | Elem::Short => 2,
+            _ => 4,
+        }
+    }
+}
+
+/// One field of a packed type: mask, shift, maximum; `dbl`: libGLU's shove multiplies in
+/// double (`* 7.0`) rather than float (`* 7`).
+#[derive(Clone, Copy)]
+struct Field(u32, u32, u32);
+
+/// A GL 1.2 packed type as libGLU's extract/shove routines read and write it.
+#[derive(Clone, Copy)]
+struct Packed {
+    size: usize,
+    comps: usize,
+    fields: [Field; 4],
+    dbl: bool,
+}
+
+fn packed_of(t: u32) -> Option<Packed> {
+    const Z: Field = Field(0, 0, 1);
+    let p = |size, fields: &[Field], dbl| {
+        let mut f = [Z; 4];
+        f[..fields.len()].copy_from_slice(fields);
+        Packed {
+            size,
+            comps: fields.len(),
+            fields: f,
+            dbl,
+        }
+    };
+    Some(match t {
+        gl::UNSIGNED_BYTE_3_3_2 => p(
+            1,
+            &[Field(0xe0, 5, 7), Field(0x1c, 2, 7), Field(0x03, 0, 3)],
+            false,
+        ),
+        gl::UNSIGNED_BYTE_2_3_3_REV => p(
+            1,
+            &[Field(0x07, 0, 7), Field(0x38, 3, 7), Field(0xc0, 6, 3)],
+            true,
+        ),
+        gl::UNSIGNED_SHORT_5_6_5 => p(
+            2,
+            &[Field(0xf800, 11, 31), Field(0x07e0, 5, 63), Field(0x1f, 0, 31)],
+            false,
+        ),
+        gl::UNSIGNED_SHORT_5_6_5_REV => p(
+            2,
+            &[Field(0x1f, 0, 31), Field(0x07e0, 5, 63), Field(0xf800, 11, 31)],
+            true,
+        ),
+        gl::UNSIGNED_SHORT_4_4_4_4 => p(
+            2,
+            &[
+                Field(0xf000, 12, 15),
+                Field(0x0f00, 8, 15),
+                Field(0xf0, 4, 15),
+                Field(0xf, 0, 15),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_SHORT_4_4_4_4_REV => p(
+            2,
+            &[
+                Field(0xf, 0, 15),
+                Field(0xf0, 4, 15),
+                Field(0x0f00, 8, 15),
+                Field(0xf000, 12, 15),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_SHORT_5_5_5_1 => p(
+            2,
+            &[
+                Field(0xf800, 11, 31),
+                Field(0x07c0, 6, 31),
+                Field(0x3e, 1, 31),
+                Field(0x1, 0, 1),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_SHORT_1_5_5_5_REV => p(
+            2,
+            &[
+                Field(0x1f, 0, 31),
+                Field(0x3e0, 5, 31),
+                Field(0x7c00, 10, 31),
+                Field(0x8000, 15, 1),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_INT_8_8_8_8 => p(
+            4,
+            &[
+                Field(0xff00_0000, 24, 255),
+                Field(0xff_0000, 16, 255),
+                Field(0xff00, 8, 255),
+                Field(0xff, 0, 255),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_INT_8_8_8_8_REV => p(
+            4,
+            &[
+                Field(0xff, 0, 255),
+                Field(0xff00, 8, 255),
+                Field(0xff_0000, 16, 255),
+                Field(0xff00_0000, 24, 255),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_INT_10_10_10_2 => p(
+            4,
+            &[
+                Field(0xffc0_0000, 22, 1023),
+                Field(0x003f_f000, 12, 1023),
+                Field(0xffc, 2, 1023),
+                Field(0x3, 0, 3),
+            ],
+            false,
+        ),
+        gl::UNSIGNED_INT_2_10_10_10_REV => p(
+            4,
+            &[
+                Field(0x3ff, 0, 1023),
+                Field(0xf_fc00, 10, 1023),
+                Field(0x3ff0_0000, 20, 1023),
+                Field(0xc000_0000, 30, 3),
+            ],
+            false,
+        ),
+        _ => return None,
+    })
+}
+
+/// `n` bytes of `d` at `at` as a little-endian integer (reversed with `swap`); bytes outside
+/// `d` read as 0 (where libGLU's filters read past their image with a zero weight).
+fn rd(d: &[u8], at: isize, n: usize, swap: bool) -> u32 {
+    let mut v = 0u32;
+    for i in 0..n {
+        let b = if at < 0 {
+            0
+        } else {
+            d.get(at as usize + i).copied().unwrap_or(0)
+        };
+        let sh = if swap { n - 1 - i } else { i };
+        v |= u32::from(b) << (8 * sh);
+    }
+    v
+}
+
+impl Packed {
+    /// libGLU's `extract*`: each field over its maximum, divided in double, kept as float.
+    fn extract(&self, d: &[u8], at: isize, swap: bool) -> [f32; 4] {
+        let v = rd(d, at, self.size, swap && self.size > 1);
+        let mut out = [0f32; 4];
+        for (o, f) in out.iter_mut().zip(&self.fields).take(self.comps) {
+            *o = (f64::from((v & f.0) >> f.1) / f64::from(f.2)) as f32;
+        }
+        out
+    }
+
+    /// libGLU's `shove*`: each component times its maximum (float or double) plus 0.5,
+    /// truncated, shifted and masked.
+    fn shove(&self, c: &[f32; 4]) -> u32 {
+        let mut v = 0u32;
+        for (x, f) in c.iter().zip(&self.fields).take(self.comps) {
+            let m = if self.dbl {
+                f64::from(*x) * f64::from(f.2)
+            } else {
+                f64::from(*x * f.2 as f32)
+            };
+            v |= ((m + 0.5) as u32) << f.1 & f.0;
+        }
+        v
+    }
+
+    fn put(&self, out: &mut Vec<u8>, v: u32) {
+        out.extend_from_slice(&v.to_le_bytes()[..self.size]);
+    }
+}
+
+/// libGLU's addressing of a client image (`fill_image`/`empty_image`, the 2D core): row
+/// stride, first byte, and the bytes it touches, with checked arithmetic (None: no slice is
+/// that long).
+struct Place {
+    rowsize: usize,
+    start: usize,
+    need: usize,
+    /// BITMAP: the first bit's offset within its byte.
+    bit0: usize,
+}
+
+#[allow(clippy::too_many_arguments)]
+fn place(
+    row_length: i32,
+    alignment: i32,
+    skip_rows: i32,
+    skip_pixels: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    t: u32,
+) -> Option<Place> {
+    let comps = elements_per_group(format, t) as u64;
+    let gpl = u64::try_from(if row_length > 0 { row_length } else { width }).ok()?;
+    let (w, h) = (u64::try_from(width).ok()?, u64::try_from(height).ok()?);
+    let (sr, sp) = (
+        u64::try_from(skip_rows).ok()?,
+        u64::try_from(skip_pixels).ok()?,
+    );
+    let align = u64::try_from(alignment.max(1)).ok()?;
+    let pad = |r: u64| -> Option<u64> {
+        let p = r % align;
+        if p == 0 {
+            Some(r)
+        } else {
+            r.checked_add(align - p)
+        }
+    };
+    let (rowsize, start, last, bit0) = if t == gl::BITMAP {
+        let rowsize = pad(gpl.checked_mul(comps)?.checked_add(7)? / 8)?;
+        let bits0 = sp.checked_mul(comps)?;
+        let start = sr.checked_mul(rowsize)?.checked_add(bits0 / 8)?;
+        let last = ((bits0 % 8) + w * comps).div_ceil(8);
+        (rowsize, start, last, (bits0 % 8) as usize)
+    } else {
+        let es = bytes_per_element(t) as u64;
+        let gs = es * comps;
+        let rowsize = pad(gpl.checked_mul(gs)?)?;
+        let start = sr
+            .checked_mul(rowsize)?
+            .checked_add(sp.checked_mul(gs)?)?;
+        (rowsize, start, w.checked_mul(gs)?, 0)
+    };
+    let need = if h == 0 || w == 0 {
+        0
+    } else {
+        start
+            .checked_add((h - 1).checked_mul(rowsize)?)?
+            .checked_add(last)?
+    };
+    Some(Place {
+        rowsize: usize::try_from(rowsize).ok()?,
+        start: usize::try_from(start).ok()?,
+        need: usize::try_from(need).ok()?,
+        bit0,
+    })
+}
+
+/// Bytes per element (BITMAP handled apart).
+fn bytes_per_element(t: u32) -> usize {
+    match (elem_of(t), packed_of(t)) {
+        (Some(e), _) => e.size(),
+        (_, Some(p)) => p.size,
+        _ => 4,
+    }
+}
+
+/// libGLU's `fill_image`: the user's `width` x `height` image of `format`/`t`, read under the
+/// UNPACK_ modes `m` at `pl`, as 16-bit components (tight, `format_comps` a pixel).
+fn fill_image(
+    m: &crate::pixel_store::PixelModes,
+    pl: &Place,
+    width: usize,
+    height: usize,
+    format: u32,
+    t: u32,
+    data: &[u8],
+) -> Vec<u16> {
+    let index = is_index(format);
+    let comps = elements_per_group(format, t);
+    let mut out = Vec::with_capacity(width * height * format_comps(format));
+    if t == gl::BITMAP {
+        for i in 0..height {
+            let mut at = pl.start + i * pl.rowsize;
+            let mut bit = pl.bit0;
+            for _ in 0..width * comps {
+                let byte = data[at];
+                let set = if m.lsb_first {
+                    byte & (1 << bit)
+                } else {
+                    byte & (1 << (7 - bit))
+                };
+                out.push(match (set != 0, index) {
+                    (false, _) => 0,
+                    (true, true) => 1,
+                    (true, false) => 65535,
+                });
+                bit += 1;
+                if bit == 8 {
+                    bit = 0;
+                    at += 1;
+                }
+            }
+        }
+        return out;
+    }
+    let es = bytes_per_element(t);
+    let swap = m.swap_bytes && es > 1;
+    for i in 0..height {
+        let row = pl.start + i * pl.rowsize;
+        for j in 0..width * comps {
+            let at = (row + j * es) as isize;
+            if let Some(p) = packed_of(t) {
+                let c = p.extract(data, at, swap);
+                for v in c.iter().take(p.comps) {
+                    out.push((v * 65535.0) as u16);
+                }
+                continue;
+            }
+            let raw = rd(data, at, es, swap);
+            out.push(match t {
+                gl::UNSIGNED_BYTE if index => raw as u16,
+                gl::UNSIGNED_BYTE => (raw * 257) as u16,
+                gl::BYTE if index => i16::from(raw as u8 as i8) as u16,
+                gl::BYTE => (i32::from(raw as u8 as i8) * 516) as u16,
+                gl::UNSIGNED_SHORT => raw as u16,
+                gl::SHORT if index => raw as u16,
+                gl::SHORT => (i32::from(raw as u16 as i16) * 2) as u16,
+                gl::UNSIGNED_INT if index => raw as u16,
+                gl::UNSIGNED_INT => (raw >> 16) as u16,
+                gl::INT if index => raw as u16,
+                gl::INT => ((raw as i32) >> 15) as u16,
+                // FLOAT: float to GLushort as x86-64 converts it (through a 32-bit int).
+                _ if index => c_i32(f64::from(f32::from_bits(raw))) as u16,
+                _ => c_i32(f64::from(65535.0 * f32::from_bits(raw))) as u16,
+            });
+        }
+    }
+    out
+}
+
+/// libGLU's `empty_image`: 16-bit components written into the user's image of
+/// `format`/`t` under the PACK_ modes `m` at `pl` (bytes between the groups untouched).
+#[allow(clippy::too_many_arguments)]
+fn empty_image(
+    m: &crate::pixel_store::PixelModes,
+    pl: &Place,
+    width: usize,
+    height: usize,
+    format: u32,
+    t: u32,
+    img: &[u16],
+    data: &mut [u8],
+) {
+    let index = is_index(format);
+    let comps = elements_per_group(format, t);
+    let mut src = img.iter().copied();
+    if t == gl::BITMAP {
+        for i in 0..height {
+            let mut at = pl.start + i * pl.rowsize;
+            let mut bit = pl.bit0;
+            for _ in 0..width * comps {
+                let v = src.next().unwrap_or(0);
+                let set = if index { v & 1 != 0 } else { v > 32767 };
+                let mask = if m.lsb_first { 1u8 << bit } else { 1u8 << (7 - bit) };
+                if set {
+                    data[at] |= mask;
+                } else {
+                    data[at] &= !mask;
+                }
+                bit += 1;
+                if bit == 8 {
+                    bit = 0;
+                    at += 1;
+                }
+            }
+        }
+        return;
+    }
+    let es = bytes_per_element(t);
+    let swap = m.swap_bytes && es > 1;
+    let mut put = |at: usize, v: u32| {
+        let b = v.to_le_bytes();
+        for i in 0..es {
+            data[at + i] = if swap { b[es - 1 - i] } else { b[i] };
+        }
+    };
+    for i in 0..height {
+        let row = pl.start + i * pl.rowsize;
+        for j in 0..width * comps {
+            let at = row + j * es;
+            if let Some(p) = packed_of(t) {
+                let mut c = [0f32; 4];
+                for x in c.iter_mut().take(p.comps) {
+                    *x = (f64::from(src.next().unwrap_or(0)) / 65535.0) as f32;
+                }
+                put(at, p.shove(&c));
+                continue;
+            }
+            let v = src.next().unwrap_or(0);
+            let v32 = u32::from(v);
+            put(
+                at,
+                match t {
+                    gl::UNSIGNED_BYTE if index => v32 & 0xff,
+                    gl::UNSIGNED_BYTE => v32 >> 8,
+                    gl::BYTE if index => v32 & 0xff,
+                    gl::BYTE => v32 >> 9,
+                    gl::UNSIGNED_SHORT => v32,
+                    gl::SHORT if index => v32,
+                    gl::SHORT => v32 >> 1,
+                    gl::UNSIGNED_INT if index => v32,
+                    gl::UNSIGNED_INT => v32.wrapping_mul(65537),
+                    gl::INT if index => v32,
+                    gl::INT => v32.wrapping_mul(65537) / 2,
+                    _ if index => f32::from(v).to_bits(),
+                    _ => (f32::from(v) / 65535.0).to_bits(),
+                },
+            );
+        }
+    }
+}
+
+/// `gluScaleImage`: scales `data_in` (`width_in` x `height_in` of `format` / `type_in`, read
+/// under the context's UNPACK_ modes) to `width_out` x `height_out` of `type_out`, written
+/// into `data_out` under the PACK_ modes (ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS,
+/// SWAP_BYTES, LSB_FIRST). Types: BITMAP, BYTE .. FLOAT and the twelve packed types of GL 1.2;
+/// formats: COLOR_INDEX, STENCIL_INDEX, DEPTH_COMPONENT, RED .. ALPHA, RGB, RGBA, BGR, BGRA,
+/// LUMINANCE, LUMINANCE_ALPHA (colour indices are scaled unnormalised). Returns 0 (also for a
+/// zero size, nothing written), GLU_INVALID_VALUE for a negative size or a buffer too short
+/// for the modes (libGLU reads or writes past it), GLU_INVALID_ENUM for another format or
+/// type, GLU_INVALID_OPERATION for a packed type of the wrong format. Bytes of `data_out`
+/// outside the image (skips, row padding) are left as they were.
+#[allow(clippy::too_many_arguments)]
+pub fn scale_image(
+    ctx: &Context,
+    format: u32,
+    width_in: i32,
+    height_in: i32,
+    type_in: u32,
+    data_in: &[u8],
+    width_out: i32,
+    height_out: i32,
+    type_out: u32,
+    data_out: &mut [u8],
+) -> i32 {
+    if width_in == 0 || height_in == 0 || width_out == 0 || height_out == 0 {
+        return 0;
+    }
+    if width_in < 0 || height_in < 0 || width_out < 0 || height_out < 0 {
+        return GLU_INVALID_VALUE;
+    }
+    if !legal_format(format) || !legal_type(type_in) || !legal_type(type_out) {
+        return GLU_INVALID_ENUM;
+    }
+    if !legal_format_for_type(format, type_in) || !legal_format_for_type(format, type_out) {
+        return GLU_INVALID_OPERATION;
+    }
+    let st = ctx.state();
+    let (u, p) = (st.unpack, st.pack);
+    let Some(lin) = place(
+        u.row_length,
+        u.alignment,
+        u.skip_rows,
+        u.skip_pixels,
+        width_in,
+        height_in,
+        format,
+        type_in,
+    )
+    .filter(|l| data_in.len() >= l.need) else {
+        return GLU_INVALID_VALUE;
+    };
+    let Some(lout) = place(
+        p.row_length,
+        p.alignment,
+        p.skip_rows,
+        p.skip_pixels,
+        width_out,
+        height_out,
+        format,
+        type_out,
+    )
+    .filter(|l| data_out.len() >= l.need) else {
+        return GLU_INVALID_VALUE;
+    };
+    let before = fill_image(
+        &u,
+        &lin,
+        width_in as usize,
+        height_in as usize,
+        format,
+        type_in,
+        data_in,
+    );
+    let c = format_comps(format);
+    let after = scale_internal(c, width_in, height_in, &before, width_out, height_out);
+    empty_image(
+        &p,
+        &lout,
+        width_out as usize,
+        height_out as usize,
+        format,
+        type_out,
+        &after,
+        data_out,
+    );
+    0
+}
+
+/// The UNPACK_ modes libGLU reads at entry and restores at exit.
+fn restore_unpack(ctx: &mut Context, m: &crate::pixel_store::PixelModes) {
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, m.alignment);
+    ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, m.skip_rows);
+    ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, m.skip_pixels);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, m.row_length);
+    ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, i32::from(m.swap_bytes));
+}
+
+/// libGLU's `closestFit`: the nearest powers of two, both halved while the driver's proxy
+/// (PROXY_TEXTURE_2D, PROXY_TEXTURE_CUBE_MAP for a cube face, else PROXY_TEXTURE_1D) answers
+/// width 0 for level 1 at half those sizes; if even 1x1 does not fit, the nearest powers
+/// clamped to MAX_TEXTURE_SIZE.
+#[allow(clippy::too_many_arguments)]
+fn closest_fit(
+    ctx: &mut Context,
+    target: u32,
+    width: i32,
+    height: i32,
+    internal_format: i32,
+    format: u32,
+    t: u32,
+) -> (i32, i32) {
+    let mut w2 = nearest_power(width as u32);
+    let mut h2 = nearest_power(height as u32);
+    loop {
+        let w1 = if w2 > 1 { w2 >> 1 } else { w2 };
+        let h1 = if h2 > 1 { h2 >> 1 } else { h2 };
+        let proxy = if target == gl::TEXTURE_2D || target == gl::PROXY_TEXTURE_2D {
+            ctx.tex_image_2d(
+                gl::PROXY_TEXTURE_2D,
+                1,
+                internal_format,
+                w1,
+                h1,
+                0,
+                format,
+                t,
+                None,
+            );
+            gl::PROXY_TEXTURE_2D
+        } else if (gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
+            .contains(&target)
+        {
+            ctx.tex_image_2d(
+                gl::PROXY_TEXTURE_CUBE_MAP,
+                1,
+                internal_format,
+                w1,
+                h1,
+                0,
+                format,
+                t,
+                None,
+            );
+            gl::PROXY_TEXTURE_CUBE_MAP
+        } else {
+            ctx.tex_image_1d(
+                gl::PROXY_TEXTURE_1D,
+                1,
+                internal_format,
+                w1,
+                0,
+                format,
+                t,
+                None,
+            );
+            gl::PROXY_TEXTURE_1D
+        };
+        let mut pw = [0i32];
+        ctx.get_tex_level_parameteriv(proxy, 1, gl::TEXTURE_WIDTH, &mut pw);
+        if pw[0] != 0 {
+            return (w2, h2);
+        }
+        if w2 == 1 && h2 == 1 {
+            break;
+        }
+        w2 = w1;
+        h2 = h1;
+    }
+    let mut max = [0i32];
+    ctx.get_integerv(gl::MAX_TEXTURE_SIZE, &mut max);
+    (
+        nearest_power(width as u32).min(max[0]),
+        nearest_power(height as u32).min(max[0]),
+    )
+}
+
+/// libGLU's `isLegalLevels`.
+fn legal_levels(user: i32, base: i32, max: i32, total: i32) -> bool {
+    !(base < 0 || base < user || max < base || total < max)
+}
+
+/// Checks `data` holds a `width` x `height` image of `format`/`t` under the UNPACK_ modes.
+fn unpack_place(ctx: &Context, width: i32, height: i32, format: u32, t: u32, data: &[u8]) -> Option<Place> {
+    let u = ctx.state().unpack;
+    place(
+        u.row_length,
+        u.alignment,
+        u.skip_rows,
+        u.skip_pixels,
+        width,
+        height,
+        format,
+        t,
+    )
+    .filter(|l| data.len() >= l.need)
+}
+
+/// Rows of 16-bit components as the little-endian bytes GL reads for UNSIGNED_SHORT.
+fn u16_bytes(img: &[u16]) -> Vec<u8> {
+    img.iter().flat_map(|v| v.to_le_bytes()).collect()
+}
+
+/// `gluBuild1DMipmaps`: a 1D mipmap pyramid of `data` (`width` of `format`/`type_`, read
+/// under the UNPACK_ modes) for `target`: the width rounded to the nearest power of two that
+/// the driver's PROXY_TEXTURE_1D takes (libGLU's `closestFit`), the image scaled to it and
+/// each next level scaled from the last, all in 16-bit components and uploaded with
+/// `tex_image_1d` as UNSIGNED_SHORT under UNPACK_ALIGNMENT 2, the skips and ROW_LENGTH 0 and
+/// SWAP_BYTES false, which are restored at the end, as libGLU does. Returns 0,
+/// GLU_INVALID_VALUE for a width below 1 or data too short, GLU_INVALID_ENUM for a format or
+/// type libGLU does not take (STENCIL_INDEX included), GLU_INVALID_OPERATION for a packed
+/// type of the wrong format.
+#[allow(clippy::too_many_arguments)]
+pub fn build_1d_mipmaps(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    format: u32,
+    type_: u32,
+    data: &[u8],
+) -> i32 {
+    let rc = check_mipmap_args(format, type_);
+    if rc != 0 {
+        return rc;
+    }
+    if width < 1 {
+        return GLU_INVALID_VALUE;
+    }
+    if unpack_place(ctx, width, 1, format, type_, data).is_none() {
+        return GLU_INVALID_VALUE;
+    }
+    let (w2, _) = closest_fit(ctx, target, width, 1, internal_format, format, type_);
+    let levels = compute_log(w2);
+    build_1d_core(
+        ctx,
+        target,
+        internal_format,
+        width,
+        w2,
+        format,
+        type_,
+        [0, 0, levels],
+        data,
+    )
+}
+
+/// `gluBuild1DMipmapLevels`: as [`build_1d_mipmaps`] without the size fit: `width` must be a
+/// power of two; levels `level` .. `level` + log2(width) are made and those within
+/// `base` ..= `max` uploaded. GLU_INVALID_VALUE also where libGLU's `isLegalLevels` fails
+/// (base below 0 or `level`, `max` below `base` or past the last level).
+#[allow(clippy::too_many_arguments)]
+pub fn build_1d_mipmap_levels(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    format: u32,
+    type_: u32,
+    level: i32,
+    base: i32,
+    max: i32,
+    data: &[u8],
+) -> i32 {
+    let rc = check_mipmap_args(format, type_);
+    if rc != 0 {
+        return rc;
+    }
+    if width < 1 {
+        return GLU_INVALID_VALUE;
+    }
+    let levels = compute_log(width).saturating_add(level);
+    if !legal_levels(level, base, max, levels) {
+        return GLU_INVALID_VALUE;
+    }
+    if unpack_place(ctx, width, 1, format, type_, data).is_none() {
+        return GLU_INVALID_VALUE;
+    }
+    build_1d_core(
+        ctx,
+        target,
+        internal_format,
+        width,
+        width,
+        format,
+        type_,
+        [level, base, max],
+        data,
+    )
+}
+
+/// libGLU's `gluBuild1DMipmapLevelsCore`. Deviation: for a packed type libGLU filters the
+/// levels it scales with one component a pixel (`elements_per_group` of a packed type) and
+/// uploads memory it never wrote; fixedgl filters all the format's components.
+#[allow(clippy::too_many_arguments)]
+fn build_1d_core(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    width2: i32,
+    format: u32,
+    t: u32,
+    [user, base, max]: [i32; 3],
+    data: &[u8],
+) -> i32 {
+    let psm = ctx.state().unpack;
+    let Some(pl) = unpack_place(ctx, width, 1, format, t, data) else {
+        return GLU_INVALID_VALUE;
+    };
+    let mut newwidth = width2;
+    let levels = compute_log(newwidth).saturating_add(user);
+    let mut img = fill_image(&psm, &pl, width as usize, 1, format, t, data);
+    let mut img_w = width;
+    let cmpts = format_comps(format);
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 2);
+    ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, 0);
+    ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, 0);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
+    ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, 0);
+    let mut level = user;
+    while level <= levels {
+        if img_w != newwidth {
+            img = scale_internal(cmpts, img_w, 1, &img, newwidth, 1);
+            img_w = newwidth;
+        }
+        if base <= level && level <= max {
+            ctx.tex_image_1d(
+                target,
+                level,
+                internal_format,
+                img_w,
+                0,
+                format,
+                gl::UNSIGNED_SHORT,
+                Some(&u16_bytes(&img)),
+            );
+        }
+        if newwidth > 1 {
+            newwidth /= 2;
+        }
+        level += 1;
+    }
+    restore_unpack(ctx, &psm);
+    0
+}
+
+/// libGLU's `bitmapBuild2DMipmaps` (BITMAP data): the 16-bit path of 1D for two dimensions,
+/// every level uploaded as UNSIGNED_SHORT under UNPACK_ALIGNMENT 2. libGLU takes this path for
+/// `gluBuild2DMipmapLevels` too, ignoring its levels.
+#[allow(clippy::too_many_arguments)]
+fn bitmap_build_2d(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    t: u32,
+    data: &[u8],
+) -> i32 {
+    let psm = ctx.state().unpack;
+    let Some(pl) = unpack_place(ctx, width, height, format, t, data) else {
+        return GLU_INVALID_VALUE;
+    };
+    let (mut nw, mut nh) = closest_fit(ctx, target, width, height, internal_format, format, t);
+    let levels = compute_log(nw).max(compute_log(nh));
+    let mut img = fill_image(&psm, &pl, width as usize, height as usize, format, t, data);
+    let (mut iw, mut ih) = (width, height);
+    let cmpts = format_comps(format);
+    ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 2);
+    ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, 0);
+    ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, 0);
+    ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
+    ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, 0);
+    for level in 0..=levels {
+        if iw != nw || ih != nh {
+            img = scale_internal(cmpts, iw, ih, &img, nw, nh);
+            iw = nw;
+            ih = nh;
+        }
+        ctx.tex_image_2d(
+            target,
+            level,
+            internal_format,
+            iw,
+            ih,
+            0,
+            format,
+            gl::UNSIGNED_SHORT,
+            Some(&u16_bytes(&img)),
+        );
+        if nw > 1 {
+            nw /= 2;
+        }
+        if nh > 1 {
+            nh /= 2;
+        }
+    }
+    restore_unpack(ctx, &psm);
+    0
+}
 /// `halveImage` on 16-bit components.
 fn halve_u16(c: usize, w: usize, h: usize, input: &[u16]) -> Vec<u16> {
     let (nw, nh) = (w / 2, h / 2);
@@ -131,127 +1059,236 @@ fn scale_internal(c: usize, win: i32, hin: i32, input: &[u16], wout: i32, hout: 
     out
 }
 
-/// `gluScaleImage` for UNSIGNED_BYTE data: scales `data_in` (`width_in` x `height_in`, read
-/// under the context's UNPACK_ modes) to `width_out` x `height_out` written into `data_out`
-/// under the PACK_ modes (ALIGNMENT, ROW_LENGTH, SKIP_ROWS, SKIP_PIXELS). Returns 0 (also for
-/// a zero size, nothing written), GLU_INVALID_VALUE for a negative size or a buffer too short
-/// (libGLU reads or writes past it), GLU_INVALID_ENUM for a format GL has no components for
-/// or a type other than UNSIGNED_BYTE (deviation: libGLU scales every GL 1.2 type; fixedgl
-/// UNSIGNED_BYTE only).
-#[allow(clippy::too_many_arguments)]
-pub fn scale_image(
-    ctx: &Context,
-    format: u32,
-    width_in: i32,
-    height_in: i32,
-    type_in: u32,
-    data_in: &[u8],
-    width_out: i32,
-    height_out: i32,
-    type_out: u32,
-    data_out: &mut [u8],
-) -> i32 {
-    if width_in == 0 || height_in == 0 || width_out == 0 || height_out == 0 {
-        return 0;
-    }
-    if width_in < 0 || height_in < 0 || width_out < 0 || height_out < 0 {
-        return GLU_INVALID_VALUE;
-    }
-    let Some(n) = format_components(format) else {
-        return GLU_INVALID_ENUM;
-    };
-    if type_in != gl::UNSIGNED_BYTE || type_out != gl::UNSIGNED_BYTE {
-        return GLU_INVALID_ENUM;
-    }
-    let st = ctx.state();
-    let Some(lin) = st
-        .unpack
-        .layout(width_in, height_in, n, 1)
-        .filter(|l| data_in.len() >= l.need)
-    else {
-        return GLU_INVALID_VALUE;
-    };
-    let Some(lout) = st
-        .pack
-        .layout(width_out, height_out, n, 1)
-        .filter(|l| data_out.len() >= l.need)
-    else {
-        return GLU_INVALID_VALUE;
-    };
-    let index = is_index(format);
-    let mut before = Vec::with_capacity((width_in * height_in) as usize * n);
-    for j in 0..height_in as usize {
-        for i in 0..width_in as usize {
-            let at = lin.at(i, j);
-            for k in 0..n {
-                let b = u16::from(data_in[at + k]);
-                before.push(if index { b } else { b * 257 });
-            }
-        }
-    }
-    let after = scale_internal(n, width_in, height_in, &before, width_out, height_out);
-    for j in 0..height_out as usize {
-        for i in 0..width_out as usize {
-            let at = lout.at(i, j);
-            for k in 0..n {
-                let v = after[(j * width_out as usize + i) * n + k];
-                data_out[at + k] = if index { v as u8 } else { (v >> 8) as u8 };
-            }
-        }
-    }
-    0
+
+/// An image in the caller's type as libGLU's 2D core filters it: element kind or packed type,
+/// components a group, bytes an element and a group, SWAP_BYTES applied on reading.
+#[derive(Clone, Copy)]
+struct Typed {
+    elem: Option<Elem>,
+    packed: Option<Packed>,
+    comps: usize,
+    es: usize,
+    gs: usize,
+    swap: bool,
 }
 
-/// Reads byte `at` of `img`, 0 past its end (where libGLU's filters read past their image).
-#[inline]
-fn px(img: &[u8], at: usize) -> u8 {
-    img.get(at).copied().unwrap_or(0)
-}
+impl Typed {
+    fn new(format: u32, t: u32, swap: bool) -> Self {
+        let es = bytes_per_element(t);
+        let cmpts = elements_per_group(format, t);
+        Typed {
+            elem: elem_of(t),
+            packed: packed_of(t),
+            comps: packed_of(t).map_or(cmpts, |p| p.comps),
+            es,
+            gs: es * cmpts,
+            swap: swap && es > 1,
+        }
+    }
 
-/// `halveImage_ubyte`: `img` rows are `ysize` bytes apart; the result is tightly packed.
-fn halve_u8(c: usize, w: usize, h: usize, img: &[u8], ysize: usize) -> Vec<u8> {
-    let g = c;
-    let mut out = Vec::new();
-    if w == 1 || h == 1 {
-        if h == 1 {
-            for jj in 0..w / 2 {
-                for k in 0..c {
-                    let s = jj * 2 * g + k;
-                    out.push(((u32::from(px(img, s)) + u32::from(px(img, s + g))) / 2) as u8);
+    /// The components of the pixel at byte `at` as the float libGLU multiplies.
+    fn px(&self, d: &[u8], at: isize) -> [f32; 4] {
+        if let Some(p) = self.packed {
+            return p.extract(d, at, self.swap);
+        }
+        let mut out = [0f32; 4];
+        let e = self.elem.unwrap_or(Elem::UByte);
+        for (k, o) in out.iter_mut().enumerate().take(self.comps) {
+            let r = rd(d, at + (k * self.es) as isize, self.es, self.swap);
+            *o = match e {
+                Elem::UByte => r as f32,
+                Elem::Byte => f32::from(r as u8 as i8),
+                Elem::UShort => r as f32,
+                Elem::Short => f32::from(r as u16 as i16),
+                Elem::UInt => r as f32,
+                Elem::Int => r as i32 as f32,
+                Elem::Float => f32::from_bits(r),
+            };
+        }
+        out
+    }
+
+    /// libGLU's left/right column sums for SHORT, INT and FLOAT under SWAP_BYTES add the two
+    /// products one at a time (elsewhere their sum at once).
+    fn split_lr(&self) -> bool {
+        self.swap && matches!(self.elem, Some(Elem::Short | Elem::Int | Elem::Float))
+    }
+
+    /// Writes one filtered pixel (`totals / area` per component) in the type.
+    fn put(&self, out: &mut Vec<u8>, v: [f32; 4]) {
+        if let Some(p) = self.packed {
+            p.put(out, p.shove(&v));
+            return;
+        }
+        for x in v.iter().take(self.comps) {
+            let x = *x;
+            match self.elem.unwrap_or(Elem::UByte) {
+                Elem::UByte => out.push(c_i32(f64::from(x)) as u8),
+                Elem::Byte => out.push(c_i32(f64::from(x)) as u8),
+                Elem::UShort => out.extend_from_slice(&(c_i32(f64::from(x)) as u16).to_le_bytes()),
+                Elem::Short => out.extend_from_slice(&(c_i32(f64::from(x)) as u16).to_le_bytes()),
+                Elem::UInt => {
+                    let u = if x >= 4_294_967_296.0 {
+                        u32::MAX
+                    } else {
+                        f64::from(x) as u32
+                    };
+                    out.extend_from_slice(&u.to_le_bytes());
                 }
+                Elem::Int => out.extend_from_slice(&c_i32(f64::from(x)).to_le_bytes()),
+                Elem::Float => out.extend_from_slice(&x.to_le_bytes()),
+            }
+        }
+    }
+
+    /// The 2x2 average of `halveImage_<type>` of the elements at `o` (k-th component).
+    fn avg4(&self, d: &[u8], o: [isize; 4], out: &mut Vec<u8>) {
+        let e = self.elem.unwrap_or(Elem::UByte);
+        let r = |a: isize| rd(d, a, self.es, self.swap);
+        match e {
+            Elem::UByte | Elem::Byte | Elem::UShort | Elem::Short => {
+                let v = |a| -> i32 {
+                    let x = r(a);
+                    match e {
+                        Elem::Byte => i32::from(x as u8 as i8),
+                        Elem::Short => i32::from(x as u16 as i16),
+                        _ => x as i32,
+                    }
+                };
+                let s = (v(o[0]) + v(o[1]) + v(o[2]) + v(o[3]) + 2) / 4;
+                out.extend_from_slice(&s.to_le_bytes()[..self.es]);
+            }
+            Elem::UInt => {
+                let s = f64::from(r(o[0])) + f64::from(r(o[1])) + f64::from(r(o[2]))
+                    + f64::from(r(o[3]));
+                out.extend_from_slice(&((s / 4.0 + 0.5) as u32).to_le_bytes());
+            }
+            Elem::Int => {
+                let f = |a| r(a) as i32 as f32;
+                let s = f(o[0]) + f(o[1]) + f(o[2]) + f(o[3]);
+                out.extend_from_slice(&c_i32(f64::from(s / 4.0) + 0.5).to_le_bytes());
+            }
+            Elem::Float => {
+                let f = |a| f32::from_bits(r(a));
+                let s = (f(o[0]) + f(o[1]) + f(o[2]) + f(o[3])) / 4.0;
+                out.extend_from_slice(&s.to_le_bytes());
+            }
+        }
+    }
+
+    /// The 2x1 average of `halve1Dimage_<type>`: truncating integer means; INT through
+    /// the elements' unsigned values in float and FLOAT under SWAP_BYTES through the swapped
+    /// bits' integer value, as libGLU computes them.
+    fn avg2(&self, d: &[u8], a: isize, b: isize, out: &mut Vec<u8>) {
+        let e = self.elem.unwrap_or(Elem::UByte);
+        let r = |x: isize| rd(d, x, self.es, self.swap);
+        match e {
+            Elem::UByte | Elem::Byte | Elem::UShort | Elem::Short => {
+                let v = |x| -> i32 {
+                    let y = r(x);
+                    match e {
+                        Elem::Byte => i32::from(y as u8 as i8),
+                        Elem::Short => i32::from(y as u16 as i16),
+                        _ => y as i32,
+                    }
+                };
+                let s = (v(a) + v(b)) / 2;
+                out.extend_from_slice(&s.to_le_bytes()[..self.es]);
+            }
+            Elem::UInt => {
+                let s = (f64::from(r(a)) + f64::from(r(b))) / 2.0;
+                out.extend_from_slice(&(s as u32).to_le_bytes());
+            }
+            Elem::Int => {
+                let s = f64::from(r(a) as f32 + r(b) as f32) / 2.0;
+                out.extend_from_slice(&c_i32(s).to_le_bytes());
+            }
+            Elem::Float => {
+                let f = |x| {
+                    if self.swap {
+                        r(x) as f32
+                    } else {
+                        f32::from_bits(r(x))
+                    }
+                };
+                let s = (f64::from(f(a) + f(b)) / 2.0) as f32;
+                out.extend_from_slice(&s.to_le_bytes());
+            }
+        }
+    }
+}
+
+/// libGLU's `halveImage_<type>` / `halveImagePackedPixel` (and their 1D forms for a single
+/// row or column): `img` rows `ysize` bytes apart; the result is tightly packed.
+fn halve_typed(ty: &Typed, w: usize, h: usize, img: &[u8], ysize: usize) -> Vec<u8> {
+    let mut out = Vec::new();
+    let (gs, es) = (ty.gs as isize, ty.es as isize);
+    let ys = ysize as isize;
+    if let Some(p) = ty.packed {
+        let mean = |pix: &[isize], out: &mut Vec<u8>| {
+            let mut t = [0f32; 4];
+            let ex: Vec<[f32; 4]> = pix.iter().map(|&a| p.extract(img, a, ty.swap)).collect();
+            for (c, tc) in t.iter_mut().enumerate().take(p.comps) {
+                let mut s = 0f32;
+                for e in &ex {
+                    s += e[c];
+                }
+                *tc = s / pix.len() as f32;
+            }
+            p.put(out, p.shove(&t));
+        };
+        if h == 1 {
+            for jj in 0..(w / 2) as isize {
+                mean(&[jj * 2 * gs, jj * 2 * gs + gs], &mut out);
+            }
+        } else if w == 1 {
+            for jj in 0..(h / 2) as isize {
+                mean(&[jj * 2 * ys, jj * 2 * ys + ys], &mut out);
             }
         } else {
-            for jj in 0..h / 2 {
-                for k in 0..c {
-                    let s = jj * 2 * ysize + k;
-                    out.push(((u32::from(px(img, s)) + u32::from(px(img, s + ysize))) / 2) as u8);
+            for i in 0..(h / 2) as isize {
+                for j in 0..(w / 2) as isize {
+                    let s = i * 2 * ys + j * 2 * gs;
+                    mean(&[s, s + gs, s + ys, s + ys + gs], &mut out);
                 }
             }
         }
         return out;
     }
-    for i in 0..h / 2 {
-        for j in 0..w / 2 {
-            for k in 0..c {
-                let t = i * 2 * ysize + j * 2 * g + k;
-                let s = u32::from(px(img, t))
-                    + u32::from(px(img, t + g))
-                    + u32::from(px(img, t + ysize))
-                    + u32::from(px(img, t + ysize + g))
-                    + 2;
-                out.push((s / 4) as u8);
+    if h == 1 {
+        for jj in 0..(w / 2) as isize {
+            for k in 0..ty.comps as isize {
+                let s = jj * 2 * gs + k * es;
+                ty.avg2(img, s, s + gs, &mut out);
+            }
+        }
+    } else if w == 1 {
+        for jj in 0..(h / 2) as isize {
+            for k in 0..ty.comps as isize {
+                let s = jj * 2 * ys + k * es;
+                ty.avg2(img, s, s + ys, &mut out);
+            }
+        }
+    } else {
+        for i in 0..(h / 2) as isize {
+            for j in 0..(w / 2) as isize {
+                for k in 0..ty.comps as isize {
+                    let t = i * 2 * ys + j * 2 * gs + k * es;
+                    ty.avg4(img, [t, t + gs, t + ys, t + ys + gs], &mut out);
+                }
             }
         }
     }
     out
 }
 
-/// `scale_internal_ubyte`: libGLU's 8-bit box filter for sizes that are not an exact halving
-/// (edge weights accumulate in float; the left and right edge pointers of a block's middle rows
-/// drift by a pixel a row, as in libGLU).
+/// libGLU's `scale_internal_<type>` / `scaleInternalPackedPixel`: the box filter for sizes
+/// that are not an exact halving (edge weights accumulate in float; the left and right edge
+/// pointers of a block's middle rows drift by an element a component, as in libGLU; the
+/// packed form does not clamp the last row).
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)]
-fn scale_u8(
-    c: usize,
+fn scale_typed(
+    ty: &Typed,
     win: i32,
     hin: i32,
     data: &[u8],
@@ -259,11 +1296,15 @@ fn scale_u8(
     hout: i32,
     ysize: usize,
 ) -> Vec<u8> {
-    let g = c;
     if win == wout * 2 && hin == hout * 2 {
-        return halve_u8(c, win as usize, hin as usize, data, ysize);
+        return halve_typed(ty, win as usize, hin as usize, data, ysize);
     }
-    let mut out = vec![0u8; (wout * hout) as usize * c];
+    let c = ty.comps;
+    let gs = ty.gs as isize;
+    let ys = ysize as isize;
+    let split = ty.split_lr();
+    let px = |at: isize| ty.px(data, at);
+    let mut out = Vec::with_capacity((wout * hout) as usize * ty.gs);
     let convy = hin as f32 / hout as f32;
     let convx = win as f32 / wout as f32;
     let convy_int = f64::from(convy).floor() as i32;
@@ -275,131 +1316,111 @@ fn scale_u8(
     let mut lowy_float = 0f32;
     let mut highy_int = convy_int;
     let mut highy_float = convy_float;
-    let d = |at: isize| -> f32 {
-        if at < 0 {
-            0.0
-        } else {
-            f32::from(px(data, at as usize))
+    let add = |totals: &mut [f32; 4], v: [f32; 4], w: f32| {
+        for k in 0..c {
+            totals[k] += v[k] * w;
         }
     };
-    let ys = ysize as isize;
-    let gs = g as isize;
-    for i in 0..hout {
-        if highy_int >= hin {
+    for _ in 0..hout {
+        if ty.packed.is_none() && highy_int >= hin {
             highy_int = hin - 1;
         }
         let mut lowx_int = 0i32;
         let mut lowx_float = 0f32;
         let mut highx_int = convx_int;
         let mut highx_float = convx_float;
-        for j in 0..wout {
+        for _ in 0..wout {
             let mut totals = [0f32; 4];
             let xindex = lowx_int as isize * gs;
             if highy_int > lowy_int && highx_int > lowx_int {
                 let mut y_percent = 1.0 - lowy_float;
                 let mut temp = xindex + lowy_int as isize * ys;
-                let mut percent = y_percent * (1.0 - lowx_float);
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), y_percent * (1.0 - lowx_float));
                 let mut left = temp;
                 for _ in lowx_int + 1..highx_int {
                     temp += gs;
-                    for k in 0..c {
-                        totals[k] += d(temp + k as isize) * y_percent;
-                    }
+                    add(&mut totals, px(temp), y_percent);
                 }
                 temp += gs;
                 let mut right = temp;
-                percent = y_percent * highx_float;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), y_percent * highx_float);
                 y_percent = highy_float;
-                percent = y_percent * (1.0 - lowx_float);
                 temp = xindex + highy_int as isize * ys;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), y_percent * (1.0 - lowx_float));
                 for _ in lowx_int + 1..highx_int {
                     temp += gs;
-                    for k in 0..c {
-                        totals[k] += d(temp + k as isize) * y_percent;
-                    }
+                    add(&mut totals, px(temp), y_percent);
                 }
                 temp += gs;
-                percent = y_percent * highx_float;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), y_percent * highx_float);
                 for _ in lowy_int + 1..highy_int {
                     left += ys;
                     right += ys;
-                    for t in totals.iter_mut().take(c) {
-                        *t += d(left) * (1.0 - lowx_float) + d(right) * highx_float;
-                        left += 1;
-                        right += 1;
+                    if ty.packed.is_some() {
+                        let (l, r) = (px(left), px(right));
+                        for k in 0..c {
+                            totals[k] += l[k] * (1.0 - lowx_float) + r[k] * highx_float;
+                        }
+                    } else {
+                        // libGLU advances `left`/`right` by an element per component, so
+                        // component k of row m reads element k of the pixel m·(gs/es)... as
+                        // a pointer walk: the pixel at left + k·es, then left moves on.
+                        for k in 0..c {
+                            let l = ty.px(data, left)[0];
+                            let r = ty.px(data, right)[0];
+                            if split {
+                                totals[k] += l * (1.0 - lowx_float);
+                                totals[k] += r * highx_float;
+                            } else {
+                                totals[k] += l * (1.0 - lowx_float) + r * highx_float;
+                            }
+                            left += ty.es as isize;
+                            right += ty.es as isize;
+                        }
                     }
                 }
             } else if highy_int > lowy_int {
                 let x_percent = highx_float - lowx_float;
-                let mut percent = (1.0 - lowy_float) * x_percent;
                 let mut temp = xindex + lowy_int as isize * ys;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), (1.0 - lowy_float) * x_percent);
                 for _ in lowy_int + 1..highy_int {
                     temp += ys;
-                    for k in 0..c {
-                        totals[k] += d(temp + k as isize) * x_percent;
-                    }
+                    add(&mut totals, px(temp), x_percent);
                 }
-                percent = x_percent * highy_float;
                 temp += ys;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), x_percent * highy_float);
             } else if highx_int > lowx_int {
                 let y_percent = highy_float - lowy_float;
-                let mut percent = (1.0 - lowx_float) * y_percent;
                 let mut temp = xindex + lowy_int as isize * ys;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), (1.0 - lowx_float) * y_percent);
                 for _ in lowx_int + 1..highx_int {
                     temp += gs;
-                    for k in 0..c {
-                        totals[k] += d(temp + k as isize) * y_percent;
-                    }
+                    add(&mut totals, px(temp), y_percent);
                 }
                 temp += gs;
-                percent = y_percent * highx_float;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), y_percent * highx_float);
             } else {
                 let percent = (highy_float - lowy_float) * (highx_float - lowx_float);
                 let temp = xindex + lowy_int as isize * ys;
-                for k in 0..c {
-                    totals[k] += d(temp + k as isize) * percent;
-                }
+                add(&mut totals, px(temp), percent);
             }
             let mut temp0 = xindex + gs + (lowy_int + 1) as isize * ys;
             for _ in lowy_int + 1..highy_int {
                 let mut temp = temp0;
                 for _ in lowx_int + 1..highx_int {
+                    let v = px(temp);
                     for k in 0..c {
-                        totals[k] += d(temp + k as isize);
+                        totals[k] += v[k];
                     }
                     temp += gs;
                 }
                 temp0 += ys;
             }
-            let outindex = (j + i * wout) as usize * c;
+            let mut v = [0f32; 4];
             for k in 0..c {
-                // float to GLubyte: truncation (values stay within 0..=255).
-                out[outindex + k] = (totals[k] / area) as u8;
+                v[k] = totals[k] / area;
             }
+            ty.put(&mut out, v);
             lowx_int = highx_int;
             lowx_float = highx_float;
             highx_int += convx_int;
@@ -420,7 +1441,6 @@ fn scale_u8(
     }
     out
 }
-
 /// Rows of `row` bytes copied to a stride padded to `alignment` (what GL will read).
 fn pad_rows(img: &[u8], row: usize, rows: usize, alignment: usize) -> Vec<u8> {
     let pad = row % alignment;
@@ -435,18 +1455,21 @@ fn pad_rows(img: &[u8], row: usize, rows: usize, alignment: usize) -> Vec<u8> {
     out
 }
 
-/// `gluBuild2DMipmaps` for UNSIGNED_BYTE data: libGLU 9.0's calls and images. Level 0 is
-/// `data` itself when both sizes are powers of two (read by GL under the user's ROW_LENGTH and
-/// ALIGNMENT, GLU having applied the skips), else `data` scaled to the nearest powers of two;
-/// each next level halves the previous; every level goes to `tex_image_2d` with UNPACK_
-/// SKIP_ROWS, SKIP_PIXELS, ROW_LENGTH 0 and SWAP_BYTES false, rows padded to the user's
-/// ALIGNMENT, and those modes are restored at the end, as libGLU sets them. A size over
-/// MAX_TEXTURE_SIZE halves both sizes until it fits (libGLU's proxy-texture fit).
-/// Returns 0, GLU_INVALID_VALUE for a size below 1 or data too short for the unpack modes,
-/// GLU_INVALID_ENUM for a format GL has no components for or a type other than
-/// UNSIGNED_BYTE (deviation: libGLU takes every type). Deviation: where libGLU uploads a
-/// level whose rows are not a multiple of ALIGNMENT without padding them (the first scaled or
-/// halved level: GL then reads past its buffer), fixedgl pads them.
+
+/// `gluBuild2DMipmaps`: a mipmap pyramid of `data` (`width` x `height` of `format`/`type_`,
+/// read under the UNPACK_ modes) for `target` (TEXTURE_2D or a cube-map face), as libGLU
+/// 9.0 builds it: sizes rounded to the nearest powers of two (3·2ⁿ up) and halved together
+/// while the driver's proxy (PROXY_TEXTURE_2D or PROXY_TEXTURE_CUBE_MAP, level 1) answers
+/// width 0; level 0 is `data` itself when the sizes are already those (read by GL under the
+/// user's ROW_LENGTH, ALIGNMENT and SWAP_BYTES, GLU having applied the skips), else `data`
+/// scaled to them in its own type; each next level halves the last; UNPACK_SKIP_ROWS,
+/// SKIP_PIXELS, ROW_LENGTH 0 and SWAP_BYTES false while the levels go up, those modes restored
+/// at the end. BITMAP images (COLOR_INDEX) go through 16-bit components as libGLU's
+/// `bitmapBuild2DMipmaps`. Returns 0, GLU_INVALID_VALUE for a size below 1 or data too short
+/// for the unpack modes, GLU_INVALID_ENUM for a format or type libGLU does not take
+/// (STENCIL_INDEX included), GLU_INVALID_OPERATION for a packed type of the wrong format.
+/// Deviation: where libGLU uploads the first scaled or halved level with rows not a multiple
+/// of UNPACK_ALIGNMENT unpadded (GL then reads past its buffer), fixedgl pads the rows.
 #[allow(clippy::too_many_arguments)]
 pub fn build_2d_mipmaps(
     ctx: &mut Context,
@@ -458,105 +1481,143 @@ pub fn build_2d_mipmaps(
     type_: u32,
     data: &[u8],
 ) -> i32 {
-    let Some(n) = format_components(format) else {
-        return GLU_INVALID_ENUM;
-    };
-    if type_ != gl::UNSIGNED_BYTE {
-        return GLU_INVALID_ENUM;
+    let rc = check_mipmap_args(format, type_);
+    if rc != 0 {
+        return rc;
     }
     if width < 1 || height < 1 {
         return GLU_INVALID_VALUE;
     }
+    if unpack_place(ctx, width, height, format, type_, data).is_none() {
+        return GLU_INVALID_VALUE;
+    }
+    if type_ == gl::BITMAP {
+        return bitmap_build_2d(ctx, target, internal_format, width, height, format, type_, data);
+    }
+    let (w2, h2) = closest_fit(ctx, target, width, height, internal_format, format, type_);
+    let levels = compute_log(w2).max(compute_log(h2));
+    build_2d_core(
+        ctx,
+        target,
+        internal_format,
+        [width, height, w2, h2],
+        format,
+        type_,
+        [0, 0, levels],
+        data,
+    )
+}
+
+/// `gluBuild2DMipmapLevels`: as [`build_2d_mipmaps`] without the size fit (both sizes must be
+/// powers of two): levels `level` .. `level` + log2(max(width, height)) are made and those
+/// within `base` ..= `max` uploaded. GLU_INVALID_VALUE also where libGLU's `isLegalLevels`
+/// fails. BITMAP data takes libGLU's bitmap path, which ignores the three levels.
+#[allow(clippy::too_many_arguments)]
+pub fn build_2d_mipmap_levels(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    type_: u32,
+    level: i32,
+    base: i32,
+    max: i32,
+    data: &[u8],
+) -> i32 {
+    let rc = check_mipmap_args(format, type_);
+    if rc != 0 {
+        return rc;
+    }
+    if width < 1 || height < 1 {
+        return GLU_INVALID_VALUE;
+    }
+    let levels = compute_log(width)
+        .max(compute_log(height))
+        .saturating_add(level);
+    if !legal_levels(level, base, max, levels) {
+        return GLU_INVALID_VALUE;
+    }
+    if unpack_place(ctx, width, height, format, type_, data).is_none() {
+        return GLU_INVALID_VALUE;
+    }
+    if type_ == gl::BITMAP {
+        return bitmap_build_2d(ctx, target, internal_format, width, height, format, type_, data);
+    }
+    build_2d_core(
+        ctx,
+        target,
+        internal_format,
+        [width, height, width, height],
+        format,
+        type_,
+        [level, base, max],
+        data,
+    )
+}
+
+/// libGLU's `gluBuild2DMipmapLevelsCore` for every type but BITMAP.
+#[allow(clippy::too_many_arguments)]
+fn build_2d_core(
+    ctx: &mut Context,
+    target: u32,
+    internal_format: i32,
+    [width, height, w2, h2]: [i32; 4],
+    format: u32,
+    t: u32,
+    [user, base, max]: [i32; 3],
+    data: &[u8],
+) -> i32 {
     let psm = ctx.state().unpack;
-    // Checked (the row length and skips are the user's): an overflow is data too short.
-    let Some(layout) = psm
-        .layout(width, height, n, 1)
-        .filter(|l| data.len() >= l.need)
-    else {
+    let Some(pl) = unpack_place(ctx, width, height, format, t, data) else {
         return GLU_INVALID_VALUE;
     };
-    // closestFit: the nearest powers of two, halved together while level 1 would not fit.
-    let max = crate::texture::MAX_TEXTURE_SIZE;
-    let (mut nw, mut nh) = (nearest_power(width as u32), nearest_power(height as u32));
-    loop {
-        let w1 = if nw > 1 { nw >> 1 } else { nw };
-        let h1 = if nh > 1 { nh >> 1 } else { nh };
-        if w1 <= max >> 1 && h1 <= max >> 1 || (nw == 1 && nh == 1) {
-            break;
-        }
-        nw = w1;
-        nh = h1;
-    }
-    let levels = compute_log(nw).max(compute_log(nh));
+    let (mut nw, mut nh) = (w2, h2);
+    let levels = compute_log(nw)
+        .max(compute_log(nh))
+        .saturating_add(user);
+    let user_ty = Typed::new(format, t, psm.swap_bytes);
+    let ty = Typed::new(format, t, false);
     let alignment = psm.alignment.max(1) as usize;
-    let group = n;
-    let ysize = layout.stride;
-    let user = &data[layout.offset.min(data.len())..];
+    let users = &data[pl.start.min(data.len())..];
 
     ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, 0);
     ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, 0);
     ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
-    let restore = |ctx: &mut Context| {
-        ctx.pixel_storei(gl::UNPACK_ALIGNMENT, psm.alignment);
-        ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, psm.skip_rows);
-        ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, psm.skip_pixels);
-        ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, psm.row_length);
-        ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, i32::from(psm.swap_bytes));
-    };
-    let mut level;
+    let mut level = user;
     let mut img;
     if width == nw && height == nh {
-        level = 0;
-        ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, psm.row_length);
-        let need = layout.need - layout.offset;
-        ctx.tex_image_2d(
-            target,
-            level,
-            internal_format,
-            width,
-            height,
-            0,
-            format,
-            type_,
-            Some(&user[..need.min(user.len())]),
-        );
+        if base <= level && level <= max {
+            ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, psm.row_length);
+            let need = pl.need - pl.start;
+            ctx.tex_image_2d(
+                target,
+                level,
+                internal_format,
+                width,
+                height,
+                0,
+                format,
+                t,
+                Some(&users[..need.min(users.len())]),
+            );
+        }
         ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
         if levels == 0 {
-            restore(ctx);
+            restore_unpack(ctx, &psm);
             return 0;
         }
-        img = halve_u8(n, width as usize, height as usize, user, ysize);
+        img = halve_typed(&user_ty, width as usize, height as usize, users, pl.rowsize);
         nw = (width / 2).max(1);
         nh = (height / 2).max(1);
-        level += 1;
+        level = user + 1;
     } else {
-        img = scale_u8(n, width, height, user, nw, nh, ysize);
-        level = 0;
+        img = scale_typed(&user_ty, width, height, users, nw, nh, pl.rowsize);
     }
-    let mut rowsize = nw as usize * group;
+    let mut rowsize = nw as usize * ty.gs;
     ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, 0);
-    let up = pad_rows(&img, rowsize, nh as usize, alignment);
-    ctx.tex_image_2d(
-        target,
-        level,
-        internal_format,
-        nw,
-        nh,
-        0,
-        format,
-        type_,
-        Some(&up),
-    );
-    level += 1;
-    while level <= levels {
-        img = halve_u8(n, nw as usize, nh as usize, &img, rowsize);
-        if nw > 1 {
-            nw /= 2;
-            rowsize /= 2;
-        }
-        if nh > 1 {
-            nh /= 2;
-        }
+    if base <= level && level <= max {
         let up = pad_rows(&img, rowsize, nh as usize, alignment);
         ctx.tex_image_2d(
             target,
@@ -566,11 +1627,36 @@ pub fn build_2d_mipmaps(
             nh,
             0,
             format,
-            type_,
+            t,
             Some(&up),
         );
+    }
+    level += 1;
+    while level <= levels {
+        img = halve_typed(&ty, nw as usize, nh as usize, &img, rowsize);
+        if nw > 1 {
+            nw /= 2;
+            rowsize /= 2;
+        }
+        if nh > 1 {
+            nh /= 2;
+        }
+        if base <= level && level <= max {
+            let up = pad_rows(&img, rowsize, nh as usize, alignment);
+            ctx.tex_image_2d(
+                target,
+                level,
+                internal_format,
+                nw,
+                nh,
+                0,
+                format,
+                t,
+                Some(&up),
+            );
+        }
         level += 1;
     }
-    restore(ctx);
+    restore_unpack(ctx, &psm);
     0
 }

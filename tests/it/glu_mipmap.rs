@@ -34,7 +34,13 @@ fn scale_image_errors_and_zero_sizes() {
         f(-1, 2, gl::UNSIGNED_BYTE, &mut out),
         glu::GLU_INVALID_VALUE
     );
-    assert_eq!(f(2, 2, gl::FLOAT, &mut out), glu::GLU_INVALID_ENUM);
+    assert_eq!(f(2, 2, 0x140B, &mut out), glu::GLU_INVALID_ENUM);
+    // A packed type of the wrong format (RGBA with 5_6_5) is libGLU's INVALID_OPERATION.
+    assert_eq!(
+        f(2, 2, gl::UNSIGNED_SHORT_5_6_5, &mut out),
+        glu::GLU_INVALID_OPERATION
+    );
+    assert_eq!(f(2, 2, gl::FLOAT, &mut out[..15]), glu::GLU_INVALID_VALUE);
     assert_eq!(
         f(2, 2, gl::UNSIGNED_BYTE, &mut out[..15]),
         glu::GLU_INVALID_VALUE
