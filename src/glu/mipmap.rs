@@ -310,8 +310,11 @@ fn rd(d: &[u8], at: isize, n: usize, swap: bool) -> u32 {
 
 impl Packed {
     /// libGLU's `extract*`: each field over its maximum, divided in double, kept as float.
-    fn extract(&self, d: &[u8], at: isize, swap: bool) -> [f32; 4] {
-        let v = rd(d, at, self.size, swap && self.size > 1);
+    /// Their SWAP_BYTES reading (`__GLU_SWAP_2_BYTES`/`_4_BYTES`, which assemble the bytes
+    /// little-endian) is the native order on the little-endian machines libGLU runs on here,
+    /// so it swaps nothing, and neither does this.
+    fn extract(&self, d: &[u8], at: isize) -> [f32; 4] {
+        let v = rd(d, at, self.size, false);
         let mut out = [0f32; 4];
         for (o, f) in out.iter_mut().zip(&self.fields).take(self.comps) {
             *o = (f64::from((v & f.0) >> f.1) / f64::from(f.2)) as f32;
@@ -462,7 +465,7 @@ fn fill_image(
         for j in 0..width * comps {
             let at = (row + j * es) as isize;
             if let Some(p) = packed_of(t) {
-                let c = p.extract(data, at, swap);
+                let c = p.extract(data, at);
                 for v in c.iter().take(p.comps) {
                     out.push((v * 65535.0) as u16);
                 }
@@ -1061,7 +1064,10 @@ fn scale_internal(c: usize, win: i32, hin: i32, input: &[u16], wout: i32, hout: 
 
 
 /// An image in the caller's type as libGLU's 2D core filters it: element kind or packed type,
-/// components a group, bytes an element and a group, SWAP_BYTES applied on reading.
+/// components a group, bytes an element and a group, and libGLU's `myswap_bytes`. That flag
+/// reorders no bytes (libGLU's swap macros read little-endian, the native order here), but it
+/// selects code paths that round differently: separate left/right sums for SHORT, INT and
+/// FLOAT, and FLOAT 2x1 means of the elements' bits taken as integers.
 #[derive(Clone, Copy)]
 struct Typed {
     elem: Option<Elem>,
@@ -1089,12 +1095,12 @@ impl Typed {
     /// The components of the pixel at byte `at` as the float libGLU multiplies.
     fn px(&self, d: &[u8], at: isize) -> [f32; 4] {
         if let Some(p) = self.packed {
-            return p.extract(d, at, self.swap);
+            return p.extract(d, at);
         }
         let mut out = [0f32; 4];
         let e = self.elem.unwrap_or(Elem::UByte);
         for (k, o) in out.iter_mut().enumerate().take(self.comps) {
-            let r = rd(d, at + (k * self.es) as isize, self.es, self.swap);
+            let r = rd(d, at + (k * self.es) as isize, self.es, false);
             *o = match e {
                 Elem::UByte => r as f32,
                 Elem::Byte => f32::from(r as u8 as i8),
@@ -1144,7 +1150,7 @@ impl Typed {
     /// The 2x2 average of `halveImage_<type>` of the elements at `o` (k-th component).
     fn avg4(&self, d: &[u8], o: [isize; 4], out: &mut Vec<u8>) {
         let e = self.elem.unwrap_or(Elem::UByte);
-        let r = |a: isize| rd(d, a, self.es, self.swap);
+        let r = |a: isize| rd(d, a, self.es, false);
         match e {
             Elem::UByte | Elem::Byte | Elem::UShort | Elem::Short => {
                 let v = |a| -> i32 {
@@ -1181,7 +1187,7 @@ impl Typed {
     /// bits' integer value, as libGLU computes them.
     fn avg2(&self, d: &[u8], a: isize, b: isize, out: &mut Vec<u8>) {
         let e = self.elem.unwrap_or(Elem::UByte);
-        let r = |x: isize| rd(d, x, self.es, self.swap);
+        let r = |x: isize| rd(d, x, self.es, false);
         match e {
             Elem::UByte | Elem::Byte | Elem::UShort | Elem::Short => {
                 let v = |x| -> i32 {
@@ -1227,7 +1233,7 @@ fn halve_typed(ty: &Typed, w: usize, h: usize, img: &[u8], ysize: usize) -> Vec<
     if let Some(p) = ty.packed {
         let mean = |pix: &[isize], out: &mut Vec<u8>| {
             let mut t = [0f32; 4];
-            let ex: Vec<[f32; 4]> = pix.iter().map(|&a| p.extract(img, a, ty.swap)).collect();
+            let ex: Vec<[f32; 4]> = pix.iter().map(|&a| p.extract(img, a)).collect();
             for (c, tc) in t.iter_mut().enumerate().take(p.comps) {
                 let mut s = 0f32;
                 for e in &ex {

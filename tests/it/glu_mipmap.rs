@@ -75,10 +75,17 @@ mod with_libglu {
     type Scale =
         unsafe extern "C" fn(u32, i32, i32, u32, *const c_void, i32, i32, u32, *mut c_void) -> i32;
     type Build = unsafe extern "C" fn(u32, i32, i32, i32, u32, u32, *const c_void) -> i32;
+    type Build1 = unsafe extern "C" fn(u32, i32, i32, u32, u32, *const c_void) -> i32;
+    type Build2L =
+        unsafe extern "C" fn(u32, i32, i32, i32, u32, u32, i32, i32, i32, *const c_void) -> i32;
+    type Build1L = unsafe extern "C" fn(u32, i32, i32, u32, u32, i32, i32, i32, *const c_void) -> i32;
 
     struct LibGlu {
         scale: Scale,
         build: Build,
+        build1: Build1,
+        build2l: Build2L,
+        build1l: Build1L,
     }
 
     fn libglu() -> Option<LibGlu> {
@@ -91,13 +98,19 @@ mod with_libglu {
             }
             let s = dlsym(h, c"gluScaleImage".as_ptr());
             let b = dlsym(h, c"gluBuild2DMipmaps".as_ptr());
-            if s.is_null() || b.is_null() {
+            let b1 = dlsym(h, c"gluBuild1DMipmaps".as_ptr());
+            let b2l = dlsym(h, c"gluBuild2DMipmapLevels".as_ptr());
+            let b1l = dlsym(h, c"gluBuild1DMipmapLevels".as_ptr());
+            if s.is_null() || b.is_null() || b1.is_null() || b2l.is_null() || b1l.is_null() {
                 eprintln!("SKIPPED: libGLU lacks gluScaleImage/gluBuild2DMipmaps");
                 return None;
             }
             Some(LibGlu {
                 scale: std::mem::transmute::<*mut c_void, Scale>(s),
                 build: std::mem::transmute::<*mut c_void, Build>(b),
+                build1: std::mem::transmute::<*mut c_void, Build1>(b1),
+                build2l: std::mem::transmute::<*mut c_void, Build2L>(b2l),
+                build1l: std::mem::transmute::<*mut c_void, Build1L>(b1l),
             })
         }
     }
@@ -190,6 +203,96 @@ mod with_libglu {
             let _ = n;
             assert!(want == got, "case {i}: scaled images differ");
         }
+    }
+
+    /// Sets `modes` on the driver's context (and returns them to their initial values with
+    /// `reset`).
+    unsafe fn set_modes(raw: &fixedgl::glbackend::raw::Gl, modes: Modes, reset: bool) {
+        for &(p, v) in modes {
+            let v = if !reset {
+                v
+            } else if p == gl::UNPACK_ALIGNMENT || p == gl::PACK_ALIGNMENT {
+                4
+            } else {
+                0
+            };
+            raw.PixelStorei(p, v);
+        }
+    }
+
+    const SWAPPED: Modes = &[(gl::UNPACK_SWAP_BYTES, 1), (gl::PACK_SWAP_BYTES, 1)];
+    const PLACED: Modes = &[
+        (gl::UNPACK_ALIGNMENT, 1),
+        (gl::PACK_ALIGNMENT, 8),
+        (gl::UNPACK_ROW_LENGTH, 9),
+        (gl::UNPACK_SKIP_ROWS, 1),
+        (gl::UNPACK_SKIP_PIXELS, 2),
+        (gl::UNPACK_LSB_FIRST, 1),
+        (gl::PACK_ROW_LENGTH, 14),
+        (gl::PACK_SKIP_ROWS, 2),
+        (gl::PACK_SKIP_PIXELS, 1),
+    ];
+
+    /// gluScaleImage over every format/type pair libGLU takes (in and out the same type, and
+    /// out as UNSIGNED_BYTE), four size pairs (up, down, exact halving, odd) and three sets of
+    /// pixel store modes (initial; SWAP_BYTES both ways; alignment, row length, skips and
+    /// LSB_FIRST): the output buffers, skipped and padding bytes included, byte for byte.
+    #[test]
+    fn scale_image_every_type_matches_libglu() {
+        let Some(lib) = libglu() else { return };
+        let Some(backend) = crate::common::test_backend(8, 8) else {
+            return;
+        };
+        let sizes = [(7, 5, 13, 11), (8, 8, 4, 4), (10, 6, 3, 7), (5, 1, 9, 2)];
+        let mut runs = 0;
+        let mut bad = Vec::new();
+        for (pi, &(format, t)) in sweep_pairs().iter().enumerate() {
+            for out_t in [t, gl::UNSIGNED_BYTE] {
+                for (si, &(wi, hi, wo, ho)) in sizes.iter().enumerate() {
+                    for (mi, modes) in [&[][..], SWAPPED, PLACED].into_iter().enumerate() {
+                        let seed = (pi * 97 + si * 7 + mi) as u32;
+                        let src = typed_image(8192, seed, format, t);
+                        let mut want = vec![0xA5u8; 8192];
+                        let mut got = want.clone();
+                        // SAFETY: the backend's context is current; libGLU reads the modes
+                        // set here (reset below) and stays inside the 8 KiB buffers, larger
+                        // than any layout of these cases.
+                        let r = unsafe {
+                            let raw = backend.raw();
+                            set_modes(raw, modes, false);
+                            let r = (lib.scale)(
+                                format,
+                                wi,
+                                hi,
+                                t,
+                                src.as_ptr().cast(),
+                                wo,
+                                ho,
+                                out_t,
+                                want.as_mut_ptr().cast(),
+                            );
+                            set_modes(raw, modes, true);
+                            r
+                        };
+                        let mut ctx = Context::new(4, 4).unwrap();
+                        for &(p, v) in modes {
+                            ctx.pixel_storei(p, v);
+                        }
+                        let g = glu::scale_image(
+                            &ctx, format, wi, hi, t, &src, wo, ho, out_t, &mut got,
+                        );
+                        runs += 1;
+                        if r != g || want != got {
+                            let at = want.iter().zip(&got).position(|(a, b)| a != b);
+                            bad.push(format!(
+                                "format {format:#x} type {t:#x} -> {out_t:#x} size {si} modes {mi}: rc {r}/{g}, first byte off {at:?}"
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+        assert!(bad.is_empty(), "{} of {runs} differ:\n{}", bad.len(), bad.join("\n"));
     }
 
     #[test]
@@ -311,4 +414,75 @@ mod with_libglu {
             }
         }
     }
+}
+
+/// Every format/type pair the sweeps run: (format, type), packed types with the formats
+/// libGLU pairs them with.
+#[cfg(feature = "gl")]
+fn sweep_pairs() -> Vec<(u32, u32)> {
+    let plain = [
+        gl::UNSIGNED_BYTE,
+        gl::BYTE,
+        gl::UNSIGNED_SHORT,
+        gl::SHORT,
+        gl::UNSIGNED_INT,
+        gl::INT,
+        gl::FLOAT,
+    ];
+    let mut v = Vec::new();
+    for f in [
+        gl::RGBA,
+        gl::RGB,
+        gl::BGRA,
+        gl::LUMINANCE,
+        gl::LUMINANCE_ALPHA,
+        gl::ALPHA,
+        gl::COLOR_INDEX,
+    ] {
+        for t in plain {
+            v.push((f, t));
+        }
+    }
+    for t in [
+        gl::UNSIGNED_BYTE_3_3_2,
+        gl::UNSIGNED_BYTE_2_3_3_REV,
+        gl::UNSIGNED_SHORT_5_6_5,
+        gl::UNSIGNED_SHORT_5_6_5_REV,
+    ] {
+        v.push((gl::RGB, t));
+    }
+    for t in [
+        gl::UNSIGNED_SHORT_4_4_4_4,
+        gl::UNSIGNED_SHORT_4_4_4_4_REV,
+        gl::UNSIGNED_SHORT_5_5_5_1,
+        gl::UNSIGNED_SHORT_1_5_5_5_REV,
+        gl::UNSIGNED_INT_8_8_8_8,
+        gl::UNSIGNED_INT_8_8_8_8_REV,
+        gl::UNSIGNED_INT_10_10_10_2,
+        gl::UNSIGNED_INT_2_10_10_10_REV,
+    ] {
+        v.push((gl::RGBA, t));
+        v.push((gl::BGRA, t));
+    }
+    v.push((gl::COLOR_INDEX, gl::BITMAP));
+    v.push((gl::RGB, gl::BITMAP));
+    v
+}
+
+/// Source data for `t`: random bytes, except FLOAT, whose values stay in [0, 1.2) (colour) or
+/// [0, 300) (indices), where C's float-to-integer conversions are defined.
+#[cfg(feature = "gl")]
+fn typed_image(n: usize, seed: u32, format: u32, t: u32) -> Vec<u8> {
+    let raw = image(n, seed);
+    if t != gl::FLOAT {
+        return raw;
+    }
+    let scale = if format == gl::COLOR_INDEX { 300.0 } else { 1.2 };
+    raw.chunks(4)
+        .flat_map(|c| {
+            let u = u32::from_le_bytes([c[0], c[1], c.get(2).copied().unwrap_or(0), 0]);
+            ((u as f32 / 16_777_216.0) * scale).to_le_bytes()
+        })
+        .take(n)
+        .collect()
 }
