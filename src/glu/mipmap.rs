@@ -200,12 +200,20 @@ fn packed_of(t: u32) -> Option<Packed> {
         ),
         gl::UNSIGNED_SHORT_5_6_5 => p(
             2,
-            &[Field(0xf800, 11, 31), Field(0x07e0, 5, 63), Field(0x1f, 0, 31)],
+            &[
+                Field(0xf800, 11, 31),
+                Field(0x07e0, 5, 63),
+                Field(0x1f, 0, 31),
+            ],
             false,
         ),
         gl::UNSIGNED_SHORT_5_6_5_REV => p(
             2,
-            &[Field(0x1f, 0, 31), Field(0x07e0, 5, 63), Field(0xf800, 11, 31)],
+            &[
+                Field(0x1f, 0, 31),
+                Field(0x07e0, 5, 63),
+                Field(0xf800, 11, 31),
+            ],
             true,
         ),
         gl::UNSIGNED_SHORT_4_4_4_4 => p(
@@ -390,9 +398,7 @@ fn place(
         let es = bytes_per_element(t) as u64;
         let gs = es * comps;
         let rowsize = pad(gpl.checked_mul(gs)?)?;
-        let start = sr
-            .checked_mul(rowsize)?
-            .checked_add(sp.checked_mul(gs)?)?;
+        let start = sr.checked_mul(rowsize)?.checked_add(sp.checked_mul(gs)?)?;
         (rowsize, start, w.checked_mul(gs)?, 0)
     };
     let need = if h == 0 || w == 0 {
@@ -516,7 +522,11 @@ fn empty_image(
             for _ in 0..width * comps {
                 let v = src.next().unwrap_or(0);
                 let set = if index { v & 1 != 0 } else { v > 32767 };
-                let mask = if m.lsb_first { 1u8 << bit } else { 1u8 << (7 - bit) };
+                let mask = if m.lsb_first {
+                    1u8 << bit
+                } else {
+                    1u8 << (7 - bit)
+                };
                 if set {
                     data[at] |= mask;
                 } else {
@@ -756,7 +766,14 @@ fn legal_levels(user: i32, base: i32, max: i32, total: i32) -> bool {
 }
 
 /// Checks `data` holds a `width` x `height` image of `format`/`t` under the UNPACK_ modes.
-fn unpack_place(ctx: &Context, width: i32, height: i32, format: u32, t: u32, data: &[u8]) -> Option<Place> {
+fn unpack_place(
+    ctx: &Context,
+    width: i32,
+    height: i32,
+    format: u32,
+    t: u32,
+    data: &[u8],
+) -> Option<Place> {
     let u = ctx.state().unpack;
     place(
         u.row_length,
@@ -1062,7 +1079,6 @@ fn scale_internal(c: usize, win: i32, hin: i32, input: &[u16], wout: i32, hout: 
     out
 }
 
-
 /// An image in the caller's type as libGLU's 2D core filters it: element kind or packed type,
 /// components a group, bytes an element and a group, and libGLU's `myswap_bytes`. That flag
 /// reorders no bytes (libGLU's swap macros read little-endian, the native order here), but it
@@ -1165,7 +1181,9 @@ impl Typed {
                 out.extend_from_slice(&s.to_le_bytes()[..self.es]);
             }
             Elem::UInt => {
-                let s = f64::from(r(o[0])) + f64::from(r(o[1])) + f64::from(r(o[2]))
+                let s = f64::from(r(o[0]))
+                    + f64::from(r(o[1]))
+                    + f64::from(r(o[2]))
                     + f64::from(r(o[3]));
                 out.extend_from_slice(&((s / 4.0 + 0.5) as u32).to_le_bytes());
             }
@@ -1461,7 +1479,6 @@ fn pad_rows(img: &[u8], row: usize, rows: usize, alignment: usize) -> Vec<u8> {
     out
 }
 
-
 /// `gluBuild2DMipmaps`: a mipmap pyramid of `data` (`width` x `height` of `format`/`type_`,
 /// read under the UNPACK_ modes) for `target` (TEXTURE_2D or a cube-map face), as libGLU
 /// 9.0 builds it: sizes rounded to the nearest powers of two (3·2ⁿ up) and halved together
@@ -1498,7 +1515,16 @@ pub fn build_2d_mipmaps(
         return GLU_INVALID_VALUE;
     }
     if type_ == gl::BITMAP {
-        return bitmap_build_2d(ctx, target, internal_format, width, height, format, type_, data);
+        return bitmap_build_2d(
+            ctx,
+            target,
+            internal_format,
+            width,
+            height,
+            format,
+            type_,
+            data,
+        );
     }
     let (w2, h2) = closest_fit(ctx, target, width, height, internal_format, format, type_);
     let levels = compute_log(w2).max(compute_log(h2));
@@ -1549,7 +1575,16 @@ pub fn build_2d_mipmap_levels(
         return GLU_INVALID_VALUE;
     }
     if type_ == gl::BITMAP {
-        return bitmap_build_2d(ctx, target, internal_format, width, height, format, type_, data);
+        return bitmap_build_2d(
+            ctx,
+            target,
+            internal_format,
+            width,
+            height,
+            format,
+            type_,
+            data,
+        );
     }
     build_2d_core(
         ctx,
@@ -1580,9 +1615,7 @@ fn build_2d_core(
         return GLU_INVALID_VALUE;
     };
     let (mut nw, mut nh) = (w2, h2);
-    let levels = compute_log(nw)
-        .max(compute_log(nh))
-        .saturating_add(user);
+    let levels = compute_log(nw).max(compute_log(nh)).saturating_add(user);
     let user_ty = Typed::new(format, t, psm.swap_bytes);
     let ty = Typed::new(format, t, false);
     let alignment = psm.alignment.max(1) as usize;
