@@ -529,6 +529,75 @@ mod with_libglu {
         assert!(bad.is_empty(), "{} differ:\n{}", bad.len(), bad.join("\n"));
     }
 
+    /// The builders' argument errors as libGLU returns them (checked before any GL call on
+    /// both sides): unknown format or type, STENCIL_INDEX, a packed type of the wrong format,
+    /// sizes below 1, illegal level ranges, non-power-of-two sizes for the Levels forms.
+    #[test]
+    fn builder_errors_match_libglu() {
+        let Some(lib) = libglu() else { return };
+        let Some(mut backend) = crate::common::test_backend(8, 8) else {
+            return;
+        };
+        let cases: &[(Builder, u32, u32, (i32, i32))] = &[
+            (Builder::Mip2, 0x1234, gl::UNSIGNED_BYTE, (4, 4)),
+            (Builder::Mip2, gl::RGBA, 0x1234, (4, 4)),
+            (Builder::Mip2, gl::STENCIL_INDEX, gl::UNSIGNED_BYTE, (4, 4)),
+            (Builder::Mip2, gl::RGBA, gl::UNSIGNED_SHORT_5_6_5, (4, 4)),
+            (Builder::Mip2, gl::RGB, gl::UNSIGNED_INT_8_8_8_8, (4, 4)),
+            (Builder::Mip2, gl::RGBA, gl::UNSIGNED_BYTE, (0, 4)),
+            (Builder::Mip2, gl::RGBA, gl::UNSIGNED_BYTE, (4, -1)),
+            (Builder::Mip1, gl::RGBA, gl::UNSIGNED_BYTE, (0, 1)),
+            (
+                Builder::Mip1,
+                gl::LUMINANCE,
+                gl::UNSIGNED_BYTE_3_3_2,
+                (4, 1),
+            ),
+            (
+                Builder::Levels2(0, 1, 0),
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                (4, 4),
+            ),
+            (
+                Builder::Levels2(2, 1, 3),
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                (4, 4),
+            ),
+            (
+                Builder::Levels2(0, 0, 3),
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                (4, 4),
+            ),
+            (
+                Builder::Levels2(0, 0, 3),
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                (5, 4),
+            ),
+            (
+                Builder::Levels2(0, -1, 2),
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                (4, 4),
+            ),
+            (Builder::Levels1(0, 0, 3), gl::RGBA, gl::FLOAT, (4, 1)),
+            (Builder::Levels1(1, 1, 4), gl::RGBA, gl::FLOAT, (4, 1)),
+            (Builder::Levels1(0, 0, 0), gl::RGBA, gl::FLOAT, (3, 1)),
+        ];
+        let src = vec![0u8; 4096];
+        for &(b, f, t, size) in cases {
+            let (want, got, ..) = run_builder(&lib, &mut backend, b, f, t, size, &[], &src);
+            assert_eq!(want, got, "{b:?} format {f:#x} type {t:#x} {size:?}");
+            assert_ne!(
+                got, 0,
+                "{b:?} format {f:#x} type {t:#x} {size:?} is an error"
+            );
+        }
+    }
+
     #[test]
     fn build_2d_mipmaps_matches_libglu() {
         let Some(lib) = libglu() else { return };
