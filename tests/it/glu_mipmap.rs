@@ -349,7 +349,7 @@ mod with_libglu {
     /// recorded on a CPU context (texture 900) and replayed on the same driver. Returns the
     /// two return codes, libGLU's levels, the replayed levels and the CPU context's own
     /// levels (`get_tex_image`), each RGBA UNSIGNED_BYTE.
-    #[allow(clippy::type_complexity)]
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
     fn run_builder(
         lib: &LibGlu,
         backend: &mut fixedgl::glbackend::GlBackend,
