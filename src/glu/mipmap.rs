@@ -901,7 +901,7 @@ fn build_1d_core(
         return GLU_INVALID_VALUE;
     };
     let mut newwidth = width2;
-    let levels = compute_log(newwidth).saturating_add(user);
+    let levels = i64::from(compute_log(newwidth)) + i64::from(user);
     let mut img = fill_image(&psm, &pl, width as usize, 1, format, t, data);
     let mut img_w = width;
     let cmpts = format_comps(format);
@@ -910,16 +910,16 @@ fn build_1d_core(
     ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, 0);
     ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
     ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, 0);
-    let mut level = user;
+    let mut level = i64::from(user);
     while level <= levels {
         if img_w != newwidth {
             img = scale_internal(cmpts, img_w, 1, &img, newwidth, 1);
             img_w = newwidth;
         }
-        if base <= level && level <= max {
+        if i64::from(base) <= level && level <= i64::from(max) {
             ctx.tex_image_1d(
                 target,
-                level,
+                level as i32,
                 internal_format,
                 img_w,
                 0,
@@ -1615,7 +1615,7 @@ fn build_2d_core(
         return GLU_INVALID_VALUE;
     };
     let (mut nw, mut nh) = (w2, h2);
-    let levels = compute_log(nw).max(compute_log(nh)).saturating_add(user);
+    let levels = i64::from(compute_log(nw).max(compute_log(nh))) + i64::from(user);
     let user_ty = Typed::new(format, t, psm.swap_bytes);
     let ty = Typed::new(format, t, false);
     let alignment = psm.alignment.max(1) as usize;
@@ -1624,15 +1624,15 @@ fn build_2d_core(
     ctx.pixel_storei(gl::UNPACK_SKIP_ROWS, 0);
     ctx.pixel_storei(gl::UNPACK_SKIP_PIXELS, 0);
     ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, 0);
-    let mut level = user;
+    let mut level = i64::from(user);
     let mut img;
     if width == nw && height == nh {
-        if base <= level && level <= max {
+        if i64::from(base) <= level && level <= i64::from(max) {
             ctx.pixel_storei(gl::UNPACK_ROW_LENGTH, psm.row_length);
             let need = pl.need - pl.start;
             ctx.tex_image_2d(
                 target,
-                level,
+                level as i32,
                 internal_format,
                 width,
                 height,
@@ -1650,17 +1650,17 @@ fn build_2d_core(
         img = halve_typed(&user_ty, width as usize, height as usize, users, pl.rowsize);
         nw = (width / 2).max(1);
         nh = (height / 2).max(1);
-        level = user + 1;
+        level = i64::from(user) + 1;
     } else {
         img = scale_typed(&user_ty, width, height, users, nw, nh, pl.rowsize);
     }
     let mut rowsize = nw as usize * ty.gs;
     ctx.pixel_storei(gl::UNPACK_SWAP_BYTES, 0);
-    if base <= level && level <= max {
+    if i64::from(base) <= level && level <= i64::from(max) {
         let up = pad_rows(&img, rowsize, nh as usize, alignment);
         ctx.tex_image_2d(
             target,
-            level,
+            level as i32,
             internal_format,
             nw,
             nh,
@@ -1680,11 +1680,11 @@ fn build_2d_core(
         if nh > 1 {
             nh /= 2;
         }
-        if base <= level && level <= max {
+        if i64::from(base) <= level && level <= i64::from(max) {
             let up = pad_rows(&img, rowsize, nh as usize, alignment);
             ctx.tex_image_2d(
                 target,
-                level,
+                level as i32,
                 internal_format,
                 nw,
                 nh,

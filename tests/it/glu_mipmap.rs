@@ -793,3 +793,53 @@ fn typed_image(n: usize, seed: u32, format: u32, t: u32) -> Vec<u8> {
         .take(n)
         .collect()
 }
+
+/// Level numbers near i32::MAX end (the level loop cannot wrap around and run forever): the
+/// levels past GL's range are GL's INVALID_VALUE, nothing else happens.
+#[test]
+fn mipmap_levels_near_i32_max_terminate() {
+    let mut ctx = Context::new(4, 4).unwrap();
+    let src = [7u8; 64];
+    let top = i32::MAX;
+    let r = glu::build_2d_mipmap_levels(
+        &mut ctx,
+        gl::TEXTURE_2D,
+        gl::RGBA as i32,
+        4,
+        4,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        top - 1,
+        top - 1,
+        top,
+        &src,
+    );
+    assert_eq!(r, 0);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    let r = glu::build_1d_mipmap_levels(
+        &mut ctx,
+        gl::TEXTURE_1D,
+        gl::RGBA as i32,
+        4,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        top - 1,
+        top - 1,
+        top,
+        &src,
+    );
+    assert_eq!(r, 0);
+    assert_eq!(ctx.get_error(), gl::INVALID_VALUE);
+    // Data shorter than the unpack modes need is GLU_INVALID_VALUE, with no GL call made.
+    let r = glu::build_1d_mipmaps(
+        &mut ctx,
+        gl::TEXTURE_1D,
+        gl::RGBA as i32,
+        17,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        &src,
+    );
+    assert_eq!(r, glu::GLU_INVALID_VALUE);
+    assert_eq!(ctx.get_error(), gl::NO_ERROR);
+}
