@@ -51,8 +51,19 @@ pub type CompressedTexSubImage1DArgs = (u32, i32, i32, i32, u32, i32, Option<Vec
 pub type CompressedTexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, i32, Option<Vec<u8>>);
 /// `CompressedTexSubImage3D`'s arguments: target, level, xoffset, yoffset, zoffset, width,
 /// height, depth, format, imageSize, data (as `CompressedTexImage1DArgs`).
-pub type CompressedTexSubImage3DArgs =
-    (u32, i32, i32, i32, i32, i32, i32, i32, u32, i32, Option<Vec<u8>>);
+pub type CompressedTexSubImage3DArgs = (
+    u32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    u32,
+    i32,
+    Option<Vec<u8>>,
+);
 
 /// `MultiDrawArrays`' arguments: mode, first, count, drawcount (the slices as the caller passed
 /// them, however long).

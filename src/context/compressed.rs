@@ -22,7 +22,8 @@
 //!   compressed format is INVALID_ENUM if it is one of the generic compressed formats, else
 //!   INVALID_OPERATION.
 //! - GetCompressedTexImage: target (INVALID_ENUM: no proxy, no TEXTURE_CUBE_MAP), level
-//!   (INVALID_VALUE), a level without an image writes nothing, and an uncompressed image is
+//!   (INVALID_VALUE), a level without an image INVALID_VALUE for TEXTURE_1D and _2D and
+//!   nothing for the others (Mesa's size check, measured), and an uncompressed image
 //!   INVALID_OPERATION ("texture is not compressed").
 //!
 //! Design decision: the checks are pure functions of the arguments ([`compressed_image_error`],
@@ -343,9 +344,9 @@ impl Context {
     /// `glGetCompressedTexImage` (§6.1.4): would write level `level` of the bound texture of
     /// `target` as stored, compressed. INVALID_OPERATION between Begin and End; a target other
     /// than TEXTURE_1D, _2D, _3D or a cube-map face is INVALID_ENUM; a level outside
-    /// [0, MAX_LEVELS) is INVALID_VALUE; a level without an image writes nothing (as
-    /// GetTexImage, and Mesa); any image is uncompressed here, which is INVALID_OPERATION (as
-    /// Mesa). `img` is never written.
+    /// [0, MAX_LEVELS) is INVALID_VALUE; a level without an image is INVALID_VALUE for
+    /// TEXTURE_1D and _2D and nothing for TEXTURE_3D and the faces (Mesa's answers); any image
+    /// is uncompressed here, which is INVALID_OPERATION (as Mesa). `img` is never written.
     pub fn get_compressed_tex_image(&mut self, target: u32, level: i32, img: &mut [u8]) {
         let _ = img;
         if self.begin_mode.is_some() {
@@ -369,8 +370,14 @@ impl Context {
             .bound(unit, bind)
             .and_then(|o| o.face_level(face, level))
             .is_some();
+        // A level without an image: Mesa checks the whole image's size as a sub-image of 0 x 0
+        // x 0 (`dimensions_error_check`), in which a 1D image must be 1 high and a 2D one 1
+        // deep: INVALID_VALUE for TEXTURE_1D and _2D, nothing for a cube face or TEXTURE_3D
+        // (measured on llvmpipe: tests/it/compressed_gl.rs). An image is never compressed.
         if has_image {
             self.error(gl::INVALID_OPERATION);
+        } else if matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D) {
+            self.error(gl::INVALID_VALUE);
         }
     }
 }

@@ -592,15 +592,14 @@ impl Context {
             gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.1),
             gl::TEXTURE_DEPTH => lv.map_or(0, |l| l.2),
             gl::TEXTURE_BORDER => lv.map_or(0, |l| l.3),
-            // No image is compressed (context/compressed.rs). TEXTURE_COMPRESSED_IMAGE_SIZE of
-            // an uncompressed image is INVALID_OPERATION, as Mesa; of a level without an
-            // image it reads 0 like every other parameter of such a level.
+            // No image is compressed (context/compressed.rs): TEXTURE_COMPRESSED_IMAGE_SIZE of
+            // an uncompressed level, with an image or without, is INVALID_OPERATION (§6.1.3;
+            // Mesa, measured).
             gl::TEXTURE_COMPRESSED => 0,
-            gl::TEXTURE_COMPRESSED_IMAGE_SIZE if lv.is_some() => {
+            gl::TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.error(gl::INVALID_OPERATION);
                 return None;
             }
-            gl::TEXTURE_COMPRESSED_IMAGE_SIZE => 0,
             // A generic compressed format (table 3.17) stored uncompressed answers its base
             // format, as GL 1.3 §3.8.1 says ("internalformat is instead replaced by the
             // corresponding base internal format") and Mesa answers.

@@ -32,8 +32,9 @@ fn uncompressed(format: u32) -> bool {
 
 /// Whether `data` holds the `image_size` bytes the driver may read (NULL reads none).
 fn holds(data: &Option<Vec<u8>>, image_size: i32) -> bool {
-    data.as_ref()
-        .map_or(true, |d| d.len() >= usize::try_from(image_size).unwrap_or(0))
+    data.as_ref().map_or(true, |d| {
+        d.len() >= usize::try_from(image_size).unwrap_or(0)
+    })
 }
 
 /// The data pointer for the driver: NULL or the recorded bytes.
@@ -46,8 +47,7 @@ impl GlBackend {
     /// `CompressedTexImage1D/2D/3D` and `CompressedTexSubImage1D/2D/3D` (see the module docs).
     pub(super) fn compressed_image(&mut self, call: &Call) {
         // (dims, target, format, imageSize, data, sub-image?)
-        let (dims, target, format, size, data, sub): (usize, u32, u32, i32, _, bool) = match call
-        {
+        let (dims, target, format, size, data, sub): (usize, u32, u32, i32, _, bool) = match call {
             Call::CompressedTexImage1D(a) => (1, a.0, a.2, a.5, &a.6, false),
             Call::CompressedTexImage2D(a) => (2, a.0, a.2, a.6, &a.7, false),
             Call::CompressedTexImage3D(a) => (3, a.0, a.2, a.7, &a.8, false),
@@ -91,9 +91,9 @@ impl GlBackend {
                 Call::CompressedTexSubImage2D(a) => {
                     raw.CompressedTexSubImage2D(a.0, a.1, a.2, a.3, a.4, a.5, a.6, a.7, p)
                 }
-                Call::CompressedTexSubImage3D(a) => raw.CompressedTexSubImage3D(
-                    a.0, a.1, a.2, a.3, a.4, a.5, a.6, a.7, a.8, a.9, p,
-                ),
+                Call::CompressedTexSubImage3D(a) => {
+                    raw.CompressedTexSubImage3D(a.0, a.1, a.2, a.3, a.4, a.5, a.6, a.7, a.8, a.9, p)
+                }
                 _ => {}
             }
         }

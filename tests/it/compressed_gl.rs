@@ -159,16 +159,40 @@ fn compressed_commands_raise_the_drivers_errors_and_change_nothing() {
     let rows = [
         // CompressedTexImage: every format is INVALID_ENUM, generic or not, whatever else is
         // wrong; so is a target the command does not take.
-        (img2(TEXTURE_2D, 0, COMPRESSED_RGB, 4, 8, d(8)), INVALID_ENUM),
-        (img2(TEXTURE_2D, 0, COMPRESSED_RGBA, 4, 16, d(16)), INVALID_ENUM),
-        (img2(TEXTURE_2D, 0, COMPRESSED_LUMINANCE, 4, 8, None), INVALID_ENUM),
+        (
+            img2(TEXTURE_2D, 0, COMPRESSED_RGB, 4, 8, d(8)),
+            INVALID_ENUM,
+        ),
+        (
+            img2(TEXTURE_2D, 0, COMPRESSED_RGBA, 4, 16, d(16)),
+            INVALID_ENUM,
+        ),
+        (
+            img2(TEXTURE_2D, 0, COMPRESSED_LUMINANCE, 4, 8, None),
+            INVALID_ENUM,
+        ),
         (img2(TEXTURE_2D, 0, RGBA, 4, 64, d(64)), INVALID_ENUM),
         (img2(TEXTURE_2D, 0, RGBA8, 4, 64, None), INVALID_ENUM),
-        (img2(TEXTURE_2D, -1, COMPRESSED_RGBA, -4, -1, d(0)), INVALID_ENUM),
-        (img2(TEXTURE_2D, 40, COMPRESSED_INTENSITY, 4, 8, d(8)), INVALID_ENUM),
-        (img2(TEXTURE_CUBE_MAP_POSITIVE_X, 0, RGB, 4, 48, d(48)), INVALID_ENUM),
-        (img2(PROXY_TEXTURE_2D, 0, COMPRESSED_RGB, 4, 8, None), INVALID_ENUM),
-        (img2(PROXY_TEXTURE_CUBE_MAP, 0, COMPRESSED_RGB, 4, 8, None), INVALID_ENUM),
+        (
+            img2(TEXTURE_2D, -1, COMPRESSED_RGBA, -4, -1, d(0)),
+            INVALID_ENUM,
+        ),
+        (
+            img2(TEXTURE_2D, 40, COMPRESSED_INTENSITY, 4, 8, d(8)),
+            INVALID_ENUM,
+        ),
+        (
+            img2(TEXTURE_CUBE_MAP_POSITIVE_X, 0, RGB, 4, 48, d(48)),
+            INVALID_ENUM,
+        ),
+        (
+            img2(PROXY_TEXTURE_2D, 0, COMPRESSED_RGB, 4, 8, None),
+            INVALID_ENUM,
+        ),
+        (
+            img2(PROXY_TEXTURE_CUBE_MAP, 0, COMPRESSED_RGB, 4, 8, None),
+            INVALID_ENUM,
+        ),
         (img2(TEXTURE_1D, 0, RGBA, 4, 64, None), INVALID_ENUM),
         (img2(TEXTURE_CUBE_MAP, 0, RGBA, 4, 64, None), INVALID_ENUM),
         (img2(0x1234, 0, RGBA, 4, 64, None), INVALID_ENUM),
@@ -188,11 +212,20 @@ fn compressed_commands_raise_the_drivers_errors_and_change_nothing() {
         // INVALID_OPERATION; a 1D target INVALID_ENUM; TEXTURE_3D INVALID_OPERATION.
         (sub2(TEXTURE_2D, 0, RGBA, 64), INVALID_OPERATION),
         (sub2(TEXTURE_2D, 0, COMPRESSED_RGBA, 16), INVALID_ENUM),
-        (sub2(TEXTURE_2D, 0, COMPRESSED_LUMINANCE_ALPHA, 16), INVALID_ENUM),
+        (
+            sub2(TEXTURE_2D, 0, COMPRESSED_LUMINANCE_ALPHA, 16),
+            INVALID_ENUM,
+        ),
         (sub2(TEXTURE_2D, 5, RGBA, 64), INVALID_OPERATION),
         (sub2(TEXTURE_2D, -1, LUMINANCE8, 64), INVALID_OPERATION),
-        (sub2(TEXTURE_CUBE_MAP_POSITIVE_Y, 0, RGB, 48), INVALID_OPERATION),
-        (sub2(TEXTURE_CUBE_MAP_POSITIVE_X, 0, COMPRESSED_RGB, 8), INVALID_ENUM),
+        (
+            sub2(TEXTURE_CUBE_MAP_POSITIVE_Y, 0, RGB, 48),
+            INVALID_OPERATION,
+        ),
+        (
+            sub2(TEXTURE_CUBE_MAP_POSITIVE_X, 0, COMPRESSED_RGB, 8),
+            INVALID_ENUM,
+        ),
         (sub2(PROXY_TEXTURE_2D, 0, RGBA, 64), INVALID_ENUM),
         (sub2(TEXTURE_1D, 0, RGBA, 64), INVALID_ENUM),
         (sub2(TEXTURE_CUBE_MAP, 0, RGBA, 64), INVALID_ENUM),
@@ -209,7 +242,10 @@ fn compressed_commands_raise_the_drivers_errors_and_change_nothing() {
         (sub2(TEXTURE_2D, 0, COMPRESSED_SRGB, 8), INVALID_ENUM),
     ];
     run_rows(&mut cpu, &mut gl, &rows);
-    assert!(cpu.state() == &before, "an erroneous call changed the state");
+    assert!(
+        cpu.state() == &before,
+        "an erroneous call changed the state"
+    );
     for (target, ifmt) in [
         (TEXTURE_1D, RGBA),
         (TEXTURE_2D, RGBA),
@@ -335,9 +371,11 @@ fn get_compressed_tex_image_errors_agree() {
         (PROXY_TEXTURE_2D, 0, INVALID_ENUM),
         (TEXTURE_CUBE_MAP, 0, INVALID_ENUM),
         (0x1234, 0, INVALID_ENUM),
-        // A level without an image: nothing, as GetTexImage.
-        (TEXTURE_2D, 3, NO_ERROR),
+        // A level without an image: Mesa's size check (a 1D image 1 high, a 2D one 1 deep).
+        (TEXTURE_2D, 3, INVALID_VALUE),
+        (TEXTURE_1D, 2, INVALID_VALUE),
         (TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, NO_ERROR),
+        (TEXTURE_3D, 1, NO_ERROR),
     ];
     for (target, level, expected) in rows {
         let mut out = [0xA5u8; 4096];
@@ -345,7 +383,10 @@ fn get_compressed_tex_image_errors_agree() {
         let mut drv = [0xA5u8; 4096];
         // SAFETY: the context is current; no image is compressed, so the driver writes nothing,
         // and 4096 bytes hold any 4x4x4 image it could.
-        unsafe { gl.raw().GetCompressedTexImage(target, level, drv.as_mut_ptr().cast()) };
+        unsafe {
+            gl.raw()
+                .GetCompressedTexImage(target, level, drv.as_mut_ptr().cast())
+        };
         assert_eq!(cpu.get_error(), expected, "CPU {target:#x} level {level}");
         assert_eq!(gl.get_error(), expected, "GL {target:#x} level {level}");
         assert!(out.iter().all(|&b| b == 0xA5), "nothing written");
@@ -359,10 +400,12 @@ fn get_compressed_tex_image_errors_agree() {
 #[test]
 fn generic_compressed_formats_are_stored_uncompressed_as_mesa_answers() {
     use fixedgl::gl::*;
+    use std::io::Write as _;
     let Some(mut gl) = test_backend(8, 8) else {
         return;
     };
     let mut cpu = Context::new(8, 8).unwrap();
+    let mut driver = Vec::new();
     for (generic, base) in [
         (COMPRESSED_ALPHA, ALPHA),
         (COMPRESSED_LUMINANCE, LUMINANCE),
@@ -387,26 +430,46 @@ fn generic_compressed_formats_are_stored_uncompressed_as_mesa_answers() {
             gl.execute(&c);
             assert_eq!(cpu.get_error(), NO_ERROR);
             assert_eq!(gl.get_error(), NO_ERROR);
-            let (a, b) = level_param(&mut cpu, &gl, target, TEXTURE_INTERNAL_FORMAT);
-            assert_eq!((a, b), (base as i32, base as i32), "{generic:#x} on {target:#x}");
-            let (a, b) = level_param(&mut cpu, &gl, target, TEXTURE_COMPRESSED);
-            assert_eq!((a, b), (0, 0), "{generic:#x} on {target:#x}: not compressed");
-            let (a, b) = level_param(&mut cpu, &gl, target, TEXTURE_COMPRESSED_IMAGE_SIZE);
-            assert_eq!(
-                (cpu.get_error(), gl.get_error()),
-                (INVALID_OPERATION, INVALID_OPERATION),
-                "{generic:#x} on {target:#x}: COMPRESSED_IMAGE_SIZE ({a}, {b})"
-            );
+            let what = format!("{generic:#x} on {target:#x}");
+            // fixedgl: stored uncompressed, answering its base format (GL 1.3 §3.8.1).
+            let (ifmt, g_ifmt) = level_param(&mut cpu, &gl, target, TEXTURE_INTERNAL_FORMAT);
+            let (comp, g_comp) = level_param(&mut cpu, &gl, target, TEXTURE_COMPRESSED);
+            assert_eq!((ifmt, comp), (base as i32, 0), "{what}");
+            let (_, g_size) = level_param(&mut cpu, &gl, target, TEXTURE_COMPRESSED_IMAGE_SIZE);
+            let g_err = gl.get_error();
+            assert_eq!(cpu.get_error(), INVALID_OPERATION, "{what}: image size");
+            // The driver answers the same where it stores the image uncompressed; where it
+            // has a format for it (S3TC, LATC) it compresses and says so (Mesa answers the
+            // specific format it chose).
+            if g_comp == 0 {
+                assert_eq!((g_ifmt, g_err), (ifmt, INVALID_OPERATION), "driver {what}");
+            } else {
+                assert_ne!(g_ifmt, generic as i32, "driver {what}");
+                let proxy = target == PROXY_TEXTURE_2D;
+                assert_eq!(
+                    g_err != NO_ERROR,
+                    proxy,
+                    "driver {what}: image size {g_size}"
+                );
+            }
+            driver.push(format!("{what}: {g_ifmt:#x} compressed {g_comp}"));
         }
     }
-    // A level without an image reads 0, no error.
+    let _ = writeln!(std::io::stderr(), "driver: {driver:#?}");
+    // A level without an image is uncompressed too: INVALID_OPERATION, nothing written.
     let mut a = [-7];
     cpu.get_tex_level_parameteriv(TEXTURE_2D, 5, TEXTURE_COMPRESSED_IMAGE_SIZE, &mut a);
     let mut b = -7;
     // SAFETY: as in `level_param`.
-    unsafe { gl.raw().GetTexLevelParameteriv(TEXTURE_2D, 5, TEXTURE_COMPRESSED_IMAGE_SIZE, &mut b) };
-    assert_eq!((a[0], b), (0, 0));
-    assert_eq!((cpu.get_error(), gl.get_error()), (NO_ERROR, NO_ERROR));
+    unsafe {
+        gl.raw()
+            .GetTexLevelParameteriv(TEXTURE_2D, 5, TEXTURE_COMPRESSED_IMAGE_SIZE, &mut b)
+    };
+    assert_eq!((a[0], b), (-7, -7));
+    assert_eq!(
+        (cpu.get_error(), gl.get_error()),
+        (INVALID_OPERATION, INVALID_OPERATION)
+    );
     // Queries a context with no compressed format answers.
     let mut n = [-1];
     cpu.get_integerv(NUM_COMPRESSED_TEXTURE_FORMATS, &mut n);
