@@ -440,6 +440,90 @@ fn copy_pixels_matches_the_driver() {
         c.color3f(1.0, 1.0, 0.0);
         c.rectf(0.0, 0.0, 64.0, 32.0);
     });
+    // GL_EXT_packed_depth_stencil: both buffers copied and written as GL 3.0 §4.3.1 says: the
+    // depth and stencil tests and the stencil operations (all set to change things here) are
+    // ignored; the scissor box, the stencil write mask and DepthMask hold. Zoomed and
+    // overlapping, llvmpipe draws it with a stencil-exporting shader; unzoomed and apart, it
+    // blits (which honours the scissor box but not the write masks: those stay at their
+    // defaults there). The transfer stays the identity (llvmpipe ignores it, see the docs).
+    let scene = |c: &mut Context| {
+        c.enable(gl::DEPTH_TEST);
+        c.enable(gl::STENCIL_TEST);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::REPLACE);
+        c.stencil_func(gl::ALWAYS, 3, 0xFF);
+        c.color3f(1.0, 0.0, 0.0);
+        c.begin(gl::TRIANGLES);
+        c.vertex3f(0.0, 0.0, -0.9);
+        c.vertex3f(40.0, 0.0, 0.5);
+        c.vertex3f(0.0, 30.0, 0.9);
+        c.end();
+        c.stencil_func(gl::ALWAYS, 7, 0xFF);
+        c.rectf(20.0, 5.0, 30.0, 25.0);
+        c.stencil_func(gl::EQUAL, 3, 0xFF);
+        c.stencil_op(gl::INCR, gl::INCR, gl::DECR);
+        c.depth_func(gl::LESS);
+        c.color3f(0.0, 1.0, 0.0);
+    };
+    // What the buffers hold, shown in colour: a rectangle for each stencil value, then a quad
+    // at depth 0.5 where the stored depth is less.
+    let show = |c: &mut Context| {
+        c.disable(gl::SCISSOR_TEST);
+        c.stencil_mask(0xFF);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::KEEP);
+        c.depth_func(gl::ALWAYS);
+        c.depth_mask(false);
+        for (k, col) in [
+            (1, [0.5, 0.0, 0.0]),
+            (2, [0.5, 0.5, 0.5]),
+            (3, [0.0, 0.0, 1.0]),
+            (4, [1.0, 1.0, 0.0]),
+            (5, [0.0, 0.0, 0.5]),
+            (6, [0.0, 0.5, 0.0]),
+            (7, [1.0, 0.0, 1.0]),
+        ] {
+            c.stencil_func(gl::EQUAL, k, 0xFF);
+            c.color3f(col[0], col[1], col[2]);
+            c.rectf(0.0, 0.0, 64.0, 32.0);
+        }
+        c.disable(gl::STENCIL_TEST);
+        c.depth_func(gl::GREATER);
+        c.color3f(0.0, 1.0, 1.0);
+        c.begin(gl::QUADS);
+        c.vertex3f(0.0, 0.0, 0.0);
+        c.vertex3f(64.0, 0.0, 0.0);
+        c.vertex3f(64.0, 32.0, 0.0);
+        c.vertex3f(0.0, 32.0, 0.0);
+        c.end();
+    };
+    same(
+        "DEPTH_STENCIL, zoomed, overlapping, masked",
+        64,
+        32,
+        0,
+        |c| {
+            scene(c);
+            c.raster_pos2i(6, 3);
+            c.pixel_zoom(2.0, 1.0);
+            c.stencil_mask(0x05);
+            c.copy_pixels(0, 0, 28, 24, gl::DEPTH_STENCIL);
+            // DepthMask FALSE: only the indices (all bits) move.
+            c.stencil_mask(0xFF);
+            c.depth_mask(false);
+            c.pixel_zoom(1.0, 2.0);
+            c.raster_pos2i(40, 2);
+            c.copy_pixels(10, 4, 12, 14, gl::DEPTH_STENCIL);
+            c.pixel_zoom(1.0, 1.0);
+            show(c);
+        },
+    );
+    same("DEPTH_STENCIL, unzoomed, scissored", 64, 32, 0, |c| {
+        scene(c);
+        c.enable(gl::SCISSOR_TEST);
+        c.scissor(36, 4, 20, 30);
+        c.raster_pos2i(34, 3);
+        c.copy_pixels(0, 0, 28, 24, gl::DEPTH_STENCIL);
+        show(c);
+    });
 }
 
 #[test]
@@ -758,7 +842,14 @@ fn errors_match_the_driver() {
             }
         }
     }
-    for t in [gl::COLOR, gl::DEPTH, gl::STENCIL, gl::RGBA, 0] {
+    for t in [
+        gl::COLOR,
+        gl::DEPTH,
+        gl::STENCIL,
+        gl::DEPTH_STENCIL,
+        gl::RGBA,
+        0,
+    ] {
         for (w, h) in [(2, 2), (-1, 2)] {
             cpu.copy_pixels(0, 0, w, h, t);
             // SAFETY: context current; no pointers.
