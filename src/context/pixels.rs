@@ -343,6 +343,12 @@ impl Context {
         if self.framebuffer_incomplete() {
             return;
         }
+        // GL_EXT_packed_depth_stencil: DEPTH_STENCIL needs both buffers (Mesa's
+        // `_mesa_dest_buffer_exists`).
+        if f.group == Group::DepthStencil && !(self.state.config.depth && self.state.config.stencil)
+        {
+            return self.error(gl::INVALID_OPERATION);
+        }
         let Some(layout) = self
             .unpack_modes()
             .image_layout(f, width, height)
@@ -445,6 +451,14 @@ impl Context {
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Depth(&out))),
             Group::Stencil => gather(&gi, &gj, |i, j| t.stencil(&maps, img.index(i, j)))
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Stencil(&out))),
+            // GL 3.0 §4.3.1: written to both buffers, as CopyPixels(DEPTH_STENCIL) writes.
+            Group::DepthStencil => {
+                let depths = gather(&gi, &gj, |i, j| t.depth(img.depth(i, j)));
+                let indices = gather(&gi, &gj, |i, j| t.stencil(&maps, img.index(i, j)));
+                depths
+                    .zip(indices)
+                    .map(|(d, s)| self.draw_groups(cols, rows, n, Groups::DepthStencil(&d, &s)))
+            }
         };
         if drawn.is_none() {
             self.error(gl::OUT_OF_MEMORY);

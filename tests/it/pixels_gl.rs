@@ -777,6 +777,7 @@ fn errors_match_the_driver() {
         gl::BGRA,
         gl::LUMINANCE,
         gl::LUMINANCE_ALPHA,
+        gl::DEPTH_STENCIL,
         gl::TRIANGLES,
         gl::RGBA8,
     ];
@@ -801,6 +802,7 @@ fn errors_match_the_driver() {
         gl::UNSIGNED_INT_8_8_8_8_REV,
         gl::UNSIGNED_INT_10_10_10_2,
         gl::UNSIGNED_INT_2_10_10_10_REV,
+        gl::UNSIGNED_INT_24_8,
         gl::RGBA,
         gl::DOUBLE,
     ];
@@ -1038,4 +1040,142 @@ fn pixel_map_sizes_follow_gl_2_1() {
     drv.replay(&cpu.stop_recording());
     assert_eq!(cpu.get_error(), gl::INVALID_OPERATION);
     assert_eq!(drv.get_error(), gl::INVALID_OPERATION);
+}
+
+/// Reads `format`/`ty` (`bpp` bytes a pixel) of the whole `w` x `h` window from both backends.
+fn read_both(
+    cpu: &mut Context,
+    drv: &mut fixedgl::glbackend::GlBackend,
+    (w, h): (i32, i32),
+    format: u32,
+    ty: u32,
+    bpp: usize,
+) -> (Vec<u8>, Vec<u8>) {
+    let n = w as usize * h as usize * bpp;
+    let (mut a, mut b) = (vec![0xEEu8; n + 8], vec![0xEEu8; n + 8]);
+    cpu.read_pixels(0, 0, w, h, format, ty, &mut a);
+    // SAFETY: the backend's context is current (replay made it so); the driver writes w x h
+    // pixels of `bpp` bytes (rows 4-aligned: `bpp` · w is a multiple of 4 here) into n + 8 bytes.
+    unsafe {
+        drv.raw()
+            .ReadPixels(0, 0, w, h, format, ty, b.as_mut_ptr().cast())
+    };
+    assert_eq!(cpu.get_error(), gl::NO_ERROR, "{format:#x} {ty:#x}");
+    assert_eq!(drv.get_error(), gl::NO_ERROR, "{format:#x} {ty:#x}");
+    (a, b)
+}
+
+/// Asserts that two UNSIGNED_INT_24_8 images (`n` words) hold the same indices and depths
+/// within 1 in 2^24 − 1: llvmpipe draws depths through a 32-bit float, whose rounding moves some
+/// 24-bit values by one (docs/conformance.md); fixedgl keeps them exactly.
+fn same_24_8(label: &str, a: &[u8], b: &[u8], n: usize) {
+    let words = |v: &[u8]| -> Vec<u32> {
+        v.chunks_exact(4)
+            .take(n)
+            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+            .collect()
+    };
+    let (a, b) = (words(a), words(b));
+    for (k, (p, q)) in a.iter().zip(&b).enumerate() {
+        assert_eq!(p & 0xFF, q & 0xFF, "{label}: index of pixel {k}");
+        assert!(
+            (p >> 8).abs_diff(q >> 8) <= 1,
+            "{label}: depth of pixel {k}: {:#x} {:#x}",
+            p >> 8,
+            q >> 8
+        );
+    }
+}
+
+/// GL_EXT_packed_depth_stencil's DrawPixels and ReadPixels of DEPTH_STENCIL / UNSIGNED_INT_24_8:
+/// both buffers written (the depth and stencil tests ignored, the write masks and the zoom
+/// applied, GL 3.0 §4.3.1) and read back through the transfer: the indices exactly the
+/// driver's, the depths within 1 (see `same_24_8`), and fixedgl's depths exactly the values
+/// drawn.
+#[test]
+fn depth_stencil_pixels_match_the_driver() {
+    let (w, h) = (16i32, 8i32);
+    let Some(mut drv) = test_backend(w as u32, h as u32) else {
+        return;
+    };
+    let mut cpu = Context::new(w as u32, h as u32).expect("context");
+    let packed: Vec<u32> = (0..(w * h) as u32)
+        .map(|k| ((k.wrapping_mul(104_729) + 12_345) & 0xFF_FFFF) << 8 | ((k * 37 + 5) & 0xFF))
+        .collect();
+    let bytes: Vec<u8> = packed.iter().flat_map(|v| v.to_ne_bytes()).collect();
+    cpu.start_recording();
+    cpu.enable(gl::DEPTH_TEST);
+    cpu.depth_func(gl::NEVER);
+    cpu.enable(gl::STENCIL_TEST);
+    cpu.stencil_func(gl::NEVER, 0, 0xFF);
+    cpu.stencil_op(gl::INCR, gl::INCR, gl::INCR);
+    cpu.window_pos2i(0, 0);
+    cpu.draw_pixels(w, h, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &bytes);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    let n = (w * h) as usize;
+    same_24_8("DEPTH_STENCIL read back", &a, &b, n);
+    assert_eq!(a[..bytes.len()], bytes[..], "the values drawn");
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::STENCIL_INDEX,
+        gl::UNSIGNED_BYTE,
+        1,
+    );
+    assert_eq!(a, b, "STENCIL_INDEX");
+    // Read through the depth and index transfers.
+    cpu.start_recording();
+    cpu.push_attrib(gl::PIXEL_MODE_BIT);
+    cpu.pixel_transferf(gl::DEPTH_SCALE, 0.5);
+    cpu.pixel_transferf(gl::DEPTH_BIAS, 0.25);
+    cpu.pixel_transferi(gl::INDEX_SHIFT, 1);
+    cpu.pixel_transferi(gl::INDEX_OFFSET, 3);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    same_24_8("DEPTH_STENCIL through the transfer", &a, &b, n);
+    // Zoomed, through the stencil write mask, DepthMask FALSE then TRUE.
+    cpu.start_recording();
+    cpu.pop_attrib();
+    cpu.stencil_mask(0x0F);
+    cpu.depth_mask(false);
+    cpu.pixel_zoom(2.0, 1.0);
+    cpu.window_pos2i(3, 1);
+    let rev: Vec<u8> = bytes.iter().rev().copied().collect();
+    cpu.draw_pixels(5, 4, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &rev);
+    cpu.stencil_mask(0xF0);
+    cpu.depth_mask(true);
+    cpu.pixel_zoom(1.0, 2.0);
+    cpu.window_pos2i(9, 2);
+    cpu.draw_pixels(6, 3, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &rev);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    same_24_8("zoomed and masked", &a, &b, n);
+    assert_ne!(
+        a[..bytes.len()],
+        bytes[..],
+        "the second draws changed something"
+    );
 }
