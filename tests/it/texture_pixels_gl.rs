@@ -319,7 +319,7 @@ fn depth_stencil_data_makes_the_depth_textures_the_driver_makes() {
     use fixedgl::gl::*;
     let data: Vec<u8> = (0..16u32)
         .flat_map(|k| {
-            ((((k * 0x0F_1234 + 0x3456) & 0xFF_FFFF) << 8) | (k * 41 & 0xFF)).to_ne_bytes()
+            ((((k * 0x0F_1234 + 0x3456) & 0xFF_FFFF) << 8) | ((k * 41) & 0xFF)).to_ne_bytes()
         })
         .collect();
     let Some((n, first)) = cpu_vs_gl(16, 1, |c| {
