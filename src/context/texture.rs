@@ -766,8 +766,9 @@ impl Context {
         self.write_box(target, level, offset, size, &texels);
     }
 
-    /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target, a specified
-    /// level, the box inside it. Returns the level's base format, or None after raising.
+    /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target (TexImage's
+    /// but the proxies, INVALID_ENUM as Mesa's `legal_texsubimage_target`), a specified level,
+    /// the box inside it. Returns the level's base format, or None after raising.
     fn check_sub_image(
         &mut self,
         dims: usize,
@@ -776,7 +777,7 @@ impl Context {
         offset: [i32; 3],
         size: [i32; 3],
     ) -> Option<u32> {
-        if !image_target_ok(dims, target) {
+        if !image_target_ok(dims, target) || is_proxy(target) {
             self.error(gl::INVALID_ENUM);
             return None;
         }
