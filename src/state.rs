@@ -433,6 +433,11 @@ pub struct State {
     pub depth_mask: bool,
     pub stencil_writemask: u32,
     pub clear_color: Vec4,
+    /// `INDEX_CLEAR_VALUE`: what `ClearIndex` stored, truncated to an unsigned integer as Mesa
+    /// does (`(GLuint) c`); an RGBA framebuffer never uses it.
+    pub clear_index: u32,
+    /// `INDEX_WRITEMASK`: all ones at first; an RGBA framebuffer never uses it.
+    pub index_writemask: u32,
     pub clear_depth: f64,
     pub clear_stencil: i32,
     /// `DRAW_BUFFER` (table 6.22) as given to DrawBuffer: FRONT when single-buffered, BACK when
@@ -539,6 +544,8 @@ impl State {
             // fragment ops: "1's" for the 8-bit stencil buffer, 0xFF as the driver reports it.
             stencil_writemask: 0xFF,
             clear_color: Vec4::ZERO,
+            clear_index: 0,
+            index_writemask: u32::MAX,
             clear_depth: 1.0,
             clear_stencil: 0,
             draw_buffer: buffer,

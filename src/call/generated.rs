@@ -392,6 +392,8 @@ pub enum Call {
     ClearDepth(f64),
     /// `glClearStencil(s)`.
     ClearStencil(i32),
+    /// `glClearIndex(c)`.
+    ClearIndex(f32),
     /// `glClear(mask)`.
     Clear(u32),
     /// `glDepthFunc(func)`.
@@ -400,6 +402,8 @@ pub enum Call {
     DepthMask(bool),
     /// `glColorMask(red, green, blue, alpha)`.
     ColorMask(bool, bool, bool, bool),
+    /// `glIndexMask(mask)`.
+    IndexMask(u32),
     /// `glScissor(x, y, width, height)`.
     Scissor(i32, i32, i32, i32),
 
@@ -1144,10 +1148,12 @@ pub const NAMES: &[&str] = &[
     "ClearColor",
     "ClearDepth",
     "ClearStencil",
+    "ClearIndex",
     "Clear",
     "DepthFunc",
     "DepthMask",
     "ColorMask",
+    "IndexMask",
     "Scissor",
     "Hint",
     "PixelStorei",
@@ -1570,10 +1576,12 @@ impl Call {
             Call::ClearColor(..) => "ClearColor",
             Call::ClearDepth(..) => "ClearDepth",
             Call::ClearStencil(..) => "ClearStencil",
+            Call::ClearIndex(..) => "ClearIndex",
             Call::Clear(..) => "Clear",
             Call::DepthFunc(..) => "DepthFunc",
             Call::DepthMask(..) => "DepthMask",
             Call::ColorMask(..) => "ColorMask",
+            Call::IndexMask(..) => "IndexMask",
             Call::Scissor(..) => "Scissor",
             Call::Hint(..) => "Hint",
             Call::PixelStorei(..) => "PixelStorei",
@@ -2242,10 +2250,12 @@ impl Call {
             Call::ClearColor(..) => &[],
             Call::ClearDepth(..) => &[],
             Call::ClearStencil(..) => &[],
+            Call::ClearIndex(..) => &[],
             Call::Clear(..) => &[ClearBits],
             Call::DepthFunc(..) => &[Enum],
             Call::DepthMask(..) => &[],
             Call::ColorMask(..) => &[],
+            Call::IndexMask(..) => &[],
             Call::Scissor(..) => &[],
             Call::Hint(..) => &[Enum, Enum],
             Call::PixelStorei(..) => &[Enum],

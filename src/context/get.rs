@@ -233,6 +233,8 @@ impl Context {
             gl::DEPTH_WRITEMASK => b(s.depth_mask),
             // fragment ops: masks are unsigned; past i32::MAX GetIntegerv saturates (§6.1.2).
             gl::STENCIL_WRITEMASK => e(s.stencil_writemask),
+            gl::INDEX_WRITEMASK => e(s.index_writemask),
+            gl::INDEX_CLEAR_VALUE => e(s.clear_index),
             gl::COLOR_CLEAR_VALUE => norm(s.clear_color.to_array()),
             gl::DEPTH_CLEAR_VALUE => Value::new(Conversion::Normalized, [s.clear_depth]),
             gl::STENCIL_CLEAR_VALUE => i(s.clear_stencil),

@@ -96,6 +96,32 @@ impl GlBackend {
         }
     }
 
+    /// `Materialf`: a vector pname is sent as `Materialfv([param, 0, 0, 0])`, the values the
+    /// front end stores (`Context::material`); the driver's own `Materialf` would read three
+    /// uninitialised floats after `param`. SHININESS and bad pnames go to the driver as they are.
+    pub(super) fn materialf(&mut self, face: u32, pname: u32, param: f32) {
+        if counts::material(pname).is_some_and(|n| n > 1) {
+            let mut v = [0.0; counts::MAX_VALUES];
+            v[0] = param;
+            return Safe(&self.raw).materialfv(face, pname, &v);
+        }
+        Safe(&self.raw).materialf(face, pname, param);
+    }
+
+    /// `Materiali`: as `materialf`, `param` converted as a float (not normalised), as Mesa's
+    /// `_mesa_Materiali` does.
+    pub(super) fn materiali(&mut self, face: u32, pname: u32, param: i32) {
+        if counts::material(pname).is_some_and(|n| n > 1) {
+            let mut v = [0.0; counts::MAX_VALUES];
+            #[allow(clippy::cast_precision_loss)]
+            {
+                v[0] = param as f32;
+            }
+            return Safe(&self.raw).materialfv(face, pname, &v);
+        }
+        Safe(&self.raw).materiali(face, pname, param);
+    }
+
     /// `Hint`: PHONG_HINT_WIN (GL_WIN_phong_shading) is not a target the driver knows, so it is
     /// validated here with the rules of GL 2.1 §5.6 (INVALID_OPERATION inside Begin/End, then
     /// INVALID_ENUM for a bad mode) and, having no effect on the emulation, not sent on.
@@ -165,7 +191,6 @@ fn gl21_error(call: &Call) -> Option<u32> {
     };
     let wrong = match *call {
         Call::Lightf(_, p, _) | Call::Lighti(_, p, _) => vector(counts::light(p)),
-        Call::Materialf(_, p, _) | Call::Materiali(_, p, _) => vector(counts::material(p)),
         Call::LightModelf(p, _) | Call::LightModeli(p, _) => vector(counts::light_model(p)),
         Call::Fogf(p, _) | Call::Fogi(p, _) => vector(counts::fog(p)),
         Call::PointParameterf(p, _) | Call::PointParameteri(p, _) => {

