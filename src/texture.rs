@@ -94,6 +94,17 @@ pub fn target_dims(target: u32) -> usize {
     }
 }
 
+/// For a proxy target, the index in [`TARGETS`] of the target it stands for.
+pub fn proxy_index(target: u32) -> Option<usize> {
+    match target {
+        gl::PROXY_TEXTURE_1D => Some(0),
+        gl::PROXY_TEXTURE_2D => Some(1),
+        gl::PROXY_TEXTURE_3D => Some(2),
+        gl::PROXY_TEXTURE_CUBE_MAP => Some(3),
+        _ => None,
+    }
+}
+
 /// The texture targets of GL 1.2/1.3 (§3.8.12), in the order of their bindings
 /// (TEXTURE_BINDING_1D, _2D, _3D, _CUBE_MAP) and of §3.8.15's precedence, lowest first.
 pub const TARGETS: [u32; 4] = [
@@ -598,6 +609,25 @@ impl NameSet {
     }
 }
 
+/// The state of one level of a proxy texture (GL 2.1 §3.8.1, table 6.17): what a TexImage of a
+/// proxy target would have made of the image, without texels. A level that would not fit is
+/// `None` in [`Textures::proxies`] and reads as zero sizes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ProxyLevel {
+    /// TEXTURE_WIDTH, border included.
+    pub width: i32,
+    /// TEXTURE_HEIGHT, border included (1 for 1D).
+    pub height: i32,
+    /// TEXTURE_DEPTH, border included (1 for 1D and 2D).
+    pub depth: i32,
+    /// TEXTURE_BORDER (0 or 1: a proxy keeps the border Mesa strips from real images).
+    pub border: i32,
+    /// TEXTURE_INTERNAL_FORMAT as the application gave it.
+    pub internal_format: i32,
+    /// The base internal format (table 3.15), for the component sizes.
+    pub base: u32,
+}
+
 /// Every piece of texture state: objects, names, units (the unpack modes are `State::unpack`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Textures {
@@ -610,6 +640,10 @@ pub struct Textures {
     pub defaults: [Arc<TexObject>; 4],
     /// Per-unit state.
     pub units: [TexUnit; MAX_TEXTURE_UNITS],
+    /// The proxy textures' levels (§3.8.1), PROXY_TEXTURE_1D, _2D, _3D, _CUBE_MAP in
+    /// [`TARGETS`] order, MAX_LEVELS each: the context's own (not shared, not bound, no
+    /// parameters; PushAttrib does not save them, as Mesa).
+    pub proxies: [Vec<Option<ProxyLevel>>; 4],
 }
 
 impl Default for Textures {
@@ -619,6 +653,7 @@ impl Default for Textures {
             objects: BTreeMap::new(),
             defaults: TARGETS.map(|t| Arc::new(TexObject::new(t))),
             units: Default::default(),
+            proxies: std::array::from_fn(|_| vec![None; MAX_LEVELS]),
         }
     }
 }

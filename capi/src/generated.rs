@@ -2937,17 +2937,6 @@ pub unsafe extern "C" fn glVertexPointer(
     })
 }
 
-/// `glAreTexturesResident(n, textures, residences)`.
-#[no_mangle]
-pub unsafe extern "C" fn glAreTexturesResident(
-    n: i32,
-    textures: *const u32,
-    residences: *mut u8,
-) -> u8 {
-    unimplemented("glAreTexturesResident");
-    0
-}
-
 /// `glPrioritizeTextures(n, textures, priorities)`.
 #[no_mangle]
 pub unsafe extern "C" fn glPrioritizeTextures(
@@ -2955,7 +2944,13 @@ pub unsafe extern "C" fn glPrioritizeTextures(
     textures: *const u32,
     priorities: *const f32,
 ) {
-    unimplemented("glPrioritizeTextures");
+    with_gl("glPrioritizeTextures", |gl| {
+        let textures = read::names(textures, n);
+        let priorities = read::values(priorities, n, usize::MAX);
+        gl.ctx.execute(&Call::PrioritizeTextures(Box::new((
+            n, textures, priorities,
+        ))));
+    })
 }
 
 /// `glIndexub(c)`.
@@ -5041,6 +5036,16 @@ pub unsafe extern "C" fn glPolygonModeNV(face: u32, mode: u32) {
     glPolygonMode(face, mode)
 }
 
+/// `glPrioritizeTexturesEXT`: [`glPrioritizeTextures`].
+#[no_mangle]
+pub unsafe extern "C" fn glPrioritizeTexturesEXT(
+    n: i32,
+    textures: *const u32,
+    priorities: *const f32,
+) {
+    glPrioritizeTextures(n, textures, priorities)
+}
+
 /// `glRenderbufferStorageEXT`: [`glRenderbufferStorage`].
 #[no_mangle]
 pub unsafe extern "C" fn glRenderbufferStorageEXT(
@@ -5457,6 +5462,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glActiveTexture" => glActiveTexture as *const c_void,
         b"glActiveTextureARB" => glActiveTexture as *const c_void,
         b"glAlphaFunc" => glAlphaFunc as *const c_void,
+        b"glAreTexturesResident" => glAreTexturesResident as *const c_void,
+        b"glAreTexturesResidentEXT" => glAreTexturesResidentEXT as *const c_void,
         b"glArrayElement" => glArrayElement as *const c_void,
         b"glArrayElementEXT" => glArrayElement as *const c_void,
         b"glBegin" => glBegin as *const c_void,
@@ -5863,6 +5870,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glPopClientAttrib" => glPopClientAttrib as *const c_void,
         b"glPopMatrix" => glPopMatrix as *const c_void,
         b"glPopName" => glPopName as *const c_void,
+        b"glPrioritizeTextures" => glPrioritizeTextures as *const c_void,
+        b"glPrioritizeTexturesEXT" => glPrioritizeTextures as *const c_void,
         b"glPushAttrib" => glPushAttrib as *const c_void,
         b"glPushClientAttrib" => glPushClientAttrib as *const c_void,
         b"glPushMatrix" => glPushMatrix as *const c_void,

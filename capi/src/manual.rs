@@ -519,6 +519,34 @@ pub unsafe extern "C" fn glGetMapiv(target: u32, query: u32, v: *mut i32) {
     })
 }
 
+/// `glAreTexturesResident(n, textures, residences)`: the front end's answer (every texture is
+/// resident, so `residences` is never written); the names read as `n` of them.
+#[no_mangle]
+pub unsafe extern "C" fn glAreTexturesResident(
+    n: i32,
+    textures: *const u32,
+    residences: *mut u8,
+) -> u8 {
+    let _ = residences;
+    with_gl("glAreTexturesResident", |gl| {
+        // SAFETY: the caller's promise that `n` names live at `textures` (none read for NULL
+        // or a negative n).
+        let names = unsafe { read::names(textures, n) };
+        u8::from(gl.ctx.are_textures_resident(n, &names, &mut []))
+    })
+}
+
+/// `glAreTexturesResidentEXT`: [`glAreTexturesResident`].
+#[no_mangle]
+pub unsafe extern "C" fn glAreTexturesResidentEXT(
+    n: i32,
+    textures: *const u32,
+    residences: *mut u8,
+) -> u8 {
+    // SAFETY: as glAreTexturesResident.
+    unsafe { glAreTexturesResident(n, textures, residences) }
+}
+
 // GL_EXT_framebuffer_object (fixedgl's context/fbo.rs). The generator exports the GL 3.0
 // names of the recorded commands and gl.xml's EXT aliases of them and of these; BindFramebuffer
 // and BindRenderbuffer have no alias in gl.xml (the EXT ones take names never generated), so

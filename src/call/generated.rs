@@ -5,8 +5,8 @@ use serde::{Deserialize, Serialize};
 
 use super::{
     ArgKind, Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MapWrites,
-    MultiDrawArraysArgs, MultiDrawElementsArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs,
-    TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs,
+    MultiDrawArraysArgs, MultiDrawElementsArgs, PrioritizeTexturesArgs, TexImage1DArgs,
+    TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs,
 };
 use crate::arrays::Pointer;
 
@@ -533,6 +533,10 @@ pub enum Call {
     GenTextures(i32),
     /// `glDeleteTextures(n, textures)`.
     DeleteTextures(i32, Vec<u32>),
+    /// `glPrioritizeTextures(n, textures, priorities)`.
+    ///
+    /// n, textures, priorities (boxed: two vectors would grow every call).
+    PrioritizeTextures(Box<PrioritizeTexturesArgs>),
     /// `glBindTexture(target, texture)`.
     BindTexture(u32, u32),
     /// `glTexImage2D(target, level, internalformat, width, height, border, format, type, pixels)`.
@@ -1210,6 +1214,7 @@ pub const NAMES: &[&str] = &[
     "LogicOp",
     "GenTextures",
     "DeleteTextures",
+    "PrioritizeTextures",
     "BindTexture",
     "TexImage2D",
     "TexSubImage2D",
@@ -1638,6 +1643,7 @@ impl Call {
             Call::LogicOp(..) => "LogicOp",
             Call::GenTextures(..) => "GenTextures",
             Call::DeleteTextures(..) => "DeleteTextures",
+            Call::PrioritizeTextures(..) => "PrioritizeTextures",
             Call::BindTexture(..) => "BindTexture",
             Call::TexImage2D(..) => "TexImage2D",
             Call::TexSubImage2D(..) => "TexSubImage2D",
@@ -2312,6 +2318,7 @@ impl Call {
             Call::LogicOp(..) => &[Enum],
             Call::GenTextures(..) => &[],
             Call::DeleteTextures(..) => &[],
+            Call::PrioritizeTextures(..) => &[],
             Call::BindTexture(..) => &[Enum],
             Call::TexImage2D(..) => &[],
             Call::TexSubImage2D(..) => &[],

@@ -37,6 +37,9 @@ pub type TexSubImage3DArgs = (u32, i32, i32, i32, i32, i32, i32, i32, u32, u32, 
 /// `MultiDrawArrays`' arguments: mode, first, count, drawcount (the slices as the caller passed
 /// them, however long).
 pub type MultiDrawArraysArgs = (u32, Vec<i32>, Vec<i32>, i32);
+/// `PrioritizeTextures`' arguments: n, textures, priorities (the slices as the caller passed
+/// them, however long).
+pub type PrioritizeTexturesArgs = (i32, Vec<u32>, Vec<f32>);
 /// `MultiDrawElements`' arguments: mode, count, type, indices (one pointer per draw: client
 /// bytes or an offset into the element buffer), drawcount.
 pub type MultiDrawElementsArgs = (u32, Vec<i32>, u32, Vec<crate::arrays::Pointer>, i32);

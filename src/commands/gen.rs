@@ -569,7 +569,7 @@ fn gen_call(cmds: &[Implemented]) -> String {
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
          Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MultiDrawArraysArgs, \
-         MultiDrawElementsArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, \
+         MultiDrawElementsArgs, PrioritizeTexturesArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, \
          TexSubImage2DArgs, TexSubImage3DArgs};\nuse crate::arrays::Pointer;\n\n",
     );
     s.push_str("/// One GL call with its arguments: one variant per command of the table.\n");
@@ -1054,8 +1054,14 @@ fn capi_field(c: &Implemented, f: &Field) -> Option<String> {
         Shape::Values(_) => {
             // PixelMap's values: `mapsize` of them, none when the size is past the table's
             // (the command answers INVALID_VALUE without reading).
+            // PrioritizeTextures' priorities: `n` of them, as many as its names.
             let n = ident(f.param.len.as_deref().expect("values have a length"));
-            format!("read::values({b}, {n}, fixedgl::pixels::MAX_PIXEL_MAP_TABLE)")
+            let max = if c.xml.name.starts_with("PixelMap") {
+                "fixedgl::pixels::MAX_PIXEL_MAP_TABLE"
+            } else {
+                "usize::MAX"
+            };
+            format!("read::values({b}, {n}, {max})")
         }
         Shape::Pointer | Shape::Bytes | Shape::OptBytes | Shape::Pointers | Shape::Points(_) => {
             return None

@@ -8088,7 +8088,7 @@ pub static COMMANDS: &[Command] = &[
                 group: None,
             },
         ],
-        method: None,
+        method: Some("prioritize_textures"),
         count: None,
         inside: false,
         immediate: false,

@@ -295,6 +295,10 @@ impl Context {
             Call::LogicOp(opcode) => self.logic_op(opcode),
             Call::GenTextures(n) => self.replay_gen_textures(n),
             Call::DeleteTextures(n, ref textures) => self.delete_textures(n, textures),
+            Call::PrioritizeTextures(ref args) => {
+                let (n, ref textures, ref priorities) = **args;
+                self.prioritize_textures(n, textures, priorities)
+            }
             Call::BindTexture(target, texture) => self.bind_texture(target, texture),
             Call::TexImage2D(ref args) => {
                 let (

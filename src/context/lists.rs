@@ -179,7 +179,7 @@ impl Context {
     /// does; returns true when the command must not be executed now (COMPILE mode).
     pub(crate) fn capture(&mut self, call: Call) -> bool {
         match self.lists.compiling.as_ref() {
-            Some(_) if !call.executes_immediately() => {
+            Some(_) if !call.executes_immediately() && !proxy_image(&call) => {
                 if let Some(rec) = self.recording.as_mut() {
                     rec.push(call.clone());
                 }
@@ -430,6 +430,19 @@ impl Context {
     /// point: for tests and tools.
     pub fn list_calls(&self, name: u32) -> Option<&[Call]> {
         self.lists.defined.get(&name).map(|c| c.calls.as_slice())
+    }
+}
+
+/// Is `call` a TexImage with its own proxy target (TexImage1D of PROXY_TEXTURE_1D, TexImage2D
+/// of PROXY_TEXTURE_2D or PROXY_TEXTURE_CUBE_MAP, TexImage3D of PROXY_TEXTURE_3D)? GL 2.1 §5.4:
+/// those are executed immediately, not compiled, whatever the list's mode; another command's
+/// proxy (an INVALID_ENUM) is compiled like any error.
+fn proxy_image(call: &Call) -> bool {
+    match call {
+        Call::TexImage1D(a) => a.0 == gl::PROXY_TEXTURE_1D,
+        Call::TexImage2D(a) => matches!(a.0, gl::PROXY_TEXTURE_2D | gl::PROXY_TEXTURE_CUBE_MAP),
+        Call::TexImage3D(a) => a.0 == gl::PROXY_TEXTURE_3D,
+        _ => false,
     }
 }
 

@@ -457,3 +457,4 @@ mod fragment;
 pub(crate) mod texture;
 mod texture_coords;
 mod texture_params;
+mod texture_residency;

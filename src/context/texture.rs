@@ -6,8 +6,9 @@
 //! Objects of every GL 1.3 target exist (TEXTURE_1D, _2D, _3D, _CUBE_MAP: BindTexture, the
 //! bindings, parameters, deletion); images for TEXTURE_1D, _2D, _3D and the six faces of
 //! TEXTURE_CUBE_MAP (TexImage1D/2D/3D, TexSubImage1D/2D/3D, CopyTexImage1D/2D,
-//! CopyTexSubImage1D/2D/3D; the faces through the 2D commands, square). The proxy targets are
-//! INVALID_ENUM (issue #14). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
+//! CopyTexSubImage1D/2D/3D; the faces through the 2D commands, square). The proxy targets
+//! (§3.8.1) take TexImage1D/2D/3D and keep only level state (`Textures::proxies`); a border of
+//! 1 is stripped off real images as Mesa does for llvmpipe ([`strip_border`]). Client pixels are `Option<&[u8]>` (`None` is GL's NULL: the image
 //! is allocated with undefined, here zero, contents); FLOAT data is native-endian bytes
 //! (`texture::f32_bytes`). Every format and type DrawPixels takes is read exactly as DrawPixels
 //! reads it (`crate::pixels`: the packed types, COLOR_INDEX and BITMAP through the I_TO_* maps,
@@ -28,8 +29,9 @@ use crate::call::Call;
 use crate::gl;
 use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
-    as_rgba, base_internal_format, image_binding, image_need3, keep, quantize, slice_layout,
-    target_index, unpack_into, Level, TexObject, MAX_LEVELS, MAX_TEXTURE_SIZE,
+    as_rgba, base_internal_format, image_binding, image_need3, keep, proxy_index, quantize,
+    slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
+    MAX_TEXTURE_SIZE,
 };
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
@@ -61,23 +63,53 @@ pub fn tex_image_args_error(
     )
 }
 
-/// Is `target` one TexImage{dims}D takes: TEXTURE_1D, TEXTURE_3D, or TEXTURE_2D and the six
-/// cube-map faces (proxies are not supported: INVALID_ENUM)?
+/// Is `target` one TexImage{dims}D takes: TEXTURE_1D / PROXY_TEXTURE_1D, TEXTURE_3D /
+/// PROXY_TEXTURE_3D, or TEXTURE_2D, the six cube-map faces, PROXY_TEXTURE_2D and
+/// PROXY_TEXTURE_CUBE_MAP (GL 2.1 §3.8.1)?
 fn image_target_ok(dims: usize, target: u32) -> bool {
     match dims {
-        1 => target == gl::TEXTURE_1D,
-        3 => target == gl::TEXTURE_3D,
+        1 => matches!(target, gl::TEXTURE_1D | gl::PROXY_TEXTURE_1D),
+        3 => matches!(target, gl::TEXTURE_3D | gl::PROXY_TEXTURE_3D),
         _ => {
-            target == gl::TEXTURE_2D
-                || (gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
-                    .contains(&target)
+            matches!(
+                target,
+                gl::TEXTURE_2D | gl::PROXY_TEXTURE_2D | gl::PROXY_TEXTURE_CUBE_MAP
+            ) || (gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
+                .contains(&target)
         }
     }
 }
 
+/// Is `target` one of the proxy targets of §3.8.1 (PROXY_TEXTURE_1D, _2D, _3D, _CUBE_MAP)?
+pub fn is_proxy(target: u32) -> bool {
+    matches!(
+        target,
+        gl::PROXY_TEXTURE_1D
+            | gl::PROXY_TEXTURE_2D
+            | gl::PROXY_TEXTURE_3D
+            | gl::PROXY_TEXTURE_CUBE_MAP
+    )
+}
+
+/// Whether a TexImage{dims}D image of `size` (border included) with `border` fits level
+/// `level` of `target` (Mesa's `_mesa_legal_texture_dimensions`): each of the command's
+/// dimensions between 2·border and 2·border + MAX_TEXTURE_SIZE >> level (any size between:
+/// ARB_texture_non_power_of_two, which Mesa offers in every context), cube-map faces square.
+/// A real target that fails this is INVALID_VALUE; a proxy gets a zeroed level instead (§3.8.1).
+pub fn legal_dimensions(dims: usize, target: u32, level: i32, size: [i32; 3], border: i32) -> bool {
+    let max = MAX_TEXTURE_SIZE >> level.clamp(0, 31);
+    let fits = size
+        .iter()
+        .take(dims)
+        .all(|&n| n >= 2 * border && n - 2 * border <= max);
+    let cube = dims == 2 && !matches!(target, gl::TEXTURE_2D | gl::PROXY_TEXTURE_2D);
+    fits && !(cube && size[0] != size[1])
+}
+
 /// The error `TexImage1D` (dims 1), `TexImage2D` (2) or `TexImage3D` (3) raises for these
 /// arguments before looking at state or data (GL 2.1 §3.8.1); `size` is width, height, depth
-/// (1 for the dimensions the command does not have).
+/// (1 for the dimensions the command does not have), border included. A proxy target's
+/// sizes that do not fit ([`legal_dimensions`]) are no error here.
 #[allow(clippy::too_many_arguments)]
 pub fn tex_image_nd_args_error(
     dims: usize,
@@ -104,13 +136,8 @@ pub fn tex_image_nd_args_error(
     let Some(base) = base_internal_format(internal_format) else {
         return Some(gl::INVALID_VALUE);
     };
-    // Border 1 is legal GL 2.1 but not supported here (documented deviation).
-    let max = MAX_TEXTURE_SIZE >> level;
-    if border != 0 || size.iter().any(|&n| n < 0 || n > max) {
-        return Some(gl::INVALID_VALUE);
-    }
-    // §3.8.1: cube-map faces are square.
-    if target != gl::TEXTURE_2D && dims == 2 && size[0] != size[1] {
+    // §3.8.1: border 0 or 1 (Mesa strips a border of 1 off the image: `tex_image`).
+    if !(0..=1).contains(&border) || size.iter().any(|&n| n < 0) {
         return Some(gl::INVALID_VALUE);
     }
     // §3.8.1: depth data only into a depth format, and a depth format only from depth data;
@@ -121,7 +148,38 @@ pub fn tex_image_nd_args_error(
     if dims == 3 && base == gl::DEPTH_COMPONENT {
         return Some(gl::INVALID_OPERATION);
     }
+    if !is_proxy(target) && !legal_dimensions(dims, target, level, size, border) {
+        return Some(gl::INVALID_VALUE);
+    }
     None
+}
+
+/// The image Mesa keeps of an image specified with a border of 1 (`strip_texture_border`,
+/// which its gallium drivers, llvmpipe among them, ask for: `StripTextureBorder`): the border
+/// texels dropped, width - 2 wide, height - 2 high and depth - 2 deep where that dimension is
+/// at least 3 (a 2-high image keeps its two rows, as Mesa does), the level then a border-0
+/// image. GL 2.1 §3.8.1/§3.8.8 would keep and sample the border texels; Mesa's comment calls
+/// stripping "fast but wrong", and llvmpipe is the reference here (docs/conformance.md §3.8).
+pub fn strip_border(lv: Level) -> Level {
+    let (w, h, d) = (lv.width, lv.height, lv.depth);
+    let nw = (w - 2).max(0);
+    let (nh, y0) = if h >= 3 { (h - 2, 1) } else { (h, 0) };
+    let (nd, z0) = if d >= 3 { (d - 2, 1) } else { (d, 0) };
+    let mut texels = Vec::with_capacity(nw as usize * nh as usize * nd as usize);
+    for k in z0..z0 + nd {
+        for j in y0..y0 + nh {
+            for i in 1..1 + nw {
+                texels.push(lv.texel3(i, j, k));
+            }
+        }
+    }
+    Level {
+        width: nw,
+        height: nh,
+        depth: nd,
+        texels,
+        ..lv
+    }
 }
 
 /// Whether client data of `group` may specify a texture of base format `base` (§3.8.1, as
@@ -436,6 +494,31 @@ impl Context {
             return;
         };
         let texels_n = width as usize * height as usize * depth as usize;
+        if let Some(k) = proxy_index(target) {
+            // §3.8.1: a proxy reads no pixels and raises no error for an image that does not
+            // fit: its level is zeroed instead (the sizes of `legal_dimensions`; more than
+            // MAX_IMAGE_TEXELS texels, the bound on memory a real image has here).
+            let fits =
+                legal_dimensions(dims, target, level, size, border) && texels_n <= MAX_IMAGE_TEXELS;
+            let lv = fits.then_some(ProxyLevel {
+                width,
+                height,
+                depth,
+                border,
+                internal_format,
+                base,
+            });
+            if let Some(slot) = self
+                .state
+                .textures
+                .proxies
+                .get_mut(k)
+                .and_then(|v| v.get_mut(level as usize))
+            {
+                *slot = lv;
+            }
+            return;
+        }
         if texels_n > MAX_IMAGE_TEXELS {
             return self.error(gl::OUT_OF_MEMORY);
         }
@@ -480,6 +563,7 @@ impl Context {
             base,
             texels,
         };
+        let lv = if border == 1 { strip_border(lv) } else { lv };
         self.store_level(target, level, lv);
     }
 
@@ -838,6 +922,10 @@ impl Context {
         if !self.outside_begin_end() {
             return;
         }
+        // §3.8.2: CopyTexImage takes no proxy target.
+        if is_proxy(target) {
+            return self.error(gl::INVALID_ENUM);
+        }
         let ifmt = internal_format as i32;
         let size = [width, height, 1];
         // Target and level errors first (INVALID_ENUM, INVALID_VALUE), then an internal format
@@ -875,6 +963,13 @@ impl Context {
         if self.framebuffer_incomplete() {
             return;
         }
+        // A border is stripped as Mesa does for its gallium drivers (`strip_border`): here by
+        // copying the rectangle inside it (for 2D both dimensions, whatever the height).
+        let (x, y, width, height) = match (border, dims) {
+            (1, 1) => (x + 1, y, width - 2, height),
+            (1, _) => (x + 1, y + 1, width - 2, height - 2),
+            _ => (x, y, width, height),
+        };
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };

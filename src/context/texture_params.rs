@@ -533,17 +533,21 @@ impl Context {
         }
     }
 
-    /// One level parameter (table 6.17) of the active unit's 1D, 2D or 3D texture; a level without an
-    /// image reports zero sizes and internal format 1, as the spec's initial values.
+    /// One level parameter (table 6.17) of the active unit's 1D, 2D or 3D texture, a cube-map
+    /// face, or a proxy target's level (§3.8.1); a level without an image (or a proxy level
+    /// zeroed because its image did not fit) reports zero sizes and internal format 1, as the
+    /// spec's initial values.
     fn tex_level_value(&mut self, target: u32, level: i32, pname: u32, len: usize) -> Option<i32> {
         if self.begin_mode.is_some() {
             self.error(gl::INVALID_OPERATION);
             return None;
         }
         self.pull_objects();
+        let proxy = crate::texture::proxy_index(target);
         if !matches!(target, gl::TEXTURE_1D | gl::TEXTURE_2D | gl::TEXTURE_3D)
             && !(gl::TEXTURE_CUBE_MAP_POSITIVE_X..=gl::TEXTURE_CUBE_MAP_NEGATIVE_Z)
                 .contains(&target)
+            && proxy.is_none()
         {
             self.error(gl::INVALID_ENUM);
             return None;
@@ -552,20 +556,44 @@ impl Context {
             self.error(gl::INVALID_VALUE);
             return None;
         }
-        let unit = self.state.active_texture;
-        let lv = self
-            .state
-            .textures
-            .bound(unit, crate::texture::image_binding(target).0)
-            .and_then(|o| o.face_level(crate::texture::image_binding(target).1, level));
-        let base = lv.map_or(0, |l| l.base);
+        // (width, height, depth, border, internal format, base) of the level, if any: a real
+        // image (its border stripped, `context::texture::strip_border`) or a proxy's.
+        let lv = match proxy {
+            Some(k) => self
+                .state
+                .textures
+                .proxies
+                .get(k)
+                .and_then(|v| v.get(level as usize).copied().flatten())
+                .map(|p| {
+                    (
+                        p.width,
+                        p.height,
+                        p.depth,
+                        p.border,
+                        p.internal_format,
+                        p.base,
+                    )
+                }),
+            None => {
+                let unit = self.state.active_texture;
+                let (bind, face) = crate::texture::image_binding(target);
+                self.state
+                    .textures
+                    .bound(unit, bind)
+                    .and_then(|o| o.face_level(face, level))
+                    .map(|l| (l.width, l.height, l.depth, 0, l.internal_format, l.base))
+            }
+        };
+        let base = lv.map_or(0, |l| l.5);
         let bits = |has: bool, n: i32| if has { n } else { 0 };
         let v = match pname {
-            gl::TEXTURE_WIDTH => lv.map_or(0, |l| l.width),
-            gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.height),
-            gl::TEXTURE_DEPTH => lv.map_or(0, |l| l.depth),
-            gl::TEXTURE_BORDER | gl::TEXTURE_COMPRESSED => 0,
-            gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| l.internal_format),
+            gl::TEXTURE_WIDTH => lv.map_or(0, |l| l.0),
+            gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.1),
+            gl::TEXTURE_DEPTH => lv.map_or(0, |l| l.2),
+            gl::TEXTURE_BORDER => lv.map_or(0, |l| l.3),
+            gl::TEXTURE_COMPRESSED => 0,
+            gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| l.4),
             gl::TEXTURE_RED_SIZE | gl::TEXTURE_GREEN_SIZE | gl::TEXTURE_BLUE_SIZE => {
                 bits(matches!(base, gl::RGB | gl::RGBA), 8)
             }

@@ -306,6 +306,10 @@ impl GlBackend {
             Call::LogicOp(opcode) => gl.logic_op(opcode),
             Call::GenTextures(n) => self.gen_textures(n),
             Call::DeleteTextures(n, ref textures) => self.delete_textures(n, textures),
+            Call::PrioritizeTextures(ref args) => {
+                let (n, ref textures, ref priorities) = **args;
+                self.prioritize_textures(n, textures, priorities)
+            }
             Call::BindTexture(target, texture) => gl.bind_texture(target, texture),
             Call::TexImage2D(ref args) => {
                 let (

@@ -10,7 +10,9 @@
 //! its own error and reads nothing.
 
 use super::GlBackend;
-use crate::context::texture::{tex_image_args_error, tex_image_nd_args_error, MAX_GEN_TEXTURES};
+use crate::context::texture::{
+    is_proxy, tex_image_args_error, tex_image_nd_args_error, MAX_GEN_TEXTURES,
+};
 use crate::gl;
 use crate::pixel_store::PixelModes;
 use crate::pixels::check;
@@ -136,7 +138,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need(width, height, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
@@ -237,7 +240,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need(width, 1, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
@@ -293,7 +297,8 @@ impl GlBackend {
             .is_some();
         match pixels {
             None => call(std::ptr::null()),
-            Some(_) if bad => call(std::ptr::null()),
+            // A proxy reads no pixels (§3.8.1): the driver gets NULL.
+            Some(_) if bad || is_proxy(target) => call(std::ptr::null()),
             Some(p) => match self.driver_unpack_need3(width, height, depth, true, format, type_) {
                 Some(need) if p.len() >= need => call(p.as_ptr()),
                 _ => self.raise(gl::INVALID_OPERATION),
@@ -386,5 +391,35 @@ impl GlBackend {
             )
         };
         self.short_sub_image(enough);
+    }
+}
+
+impl GlBackend {
+    /// `glPrioritizeTextures(n, textures, priorities)`: slices shorter than n are INVALID_VALUE
+    /// without the driver reading them, as in the front end.
+    pub(super) fn prioritize_textures(&mut self, n: i32, textures: &[u32], priorities: &[f32]) {
+        let count = usize::try_from(n).unwrap_or(0);
+        if (textures.len() < count || priorities.len() < count) && !self.inside_begin_end {
+            return self.raise(gl::INVALID_VALUE);
+        }
+        let n = if textures.len() < count || priorities.len() < count {
+            0
+        } else {
+            n
+        };
+        let (t, p) = ([0u32], [0f32]);
+        let tp = if textures.is_empty() {
+            t.as_ptr()
+        } else {
+            textures.as_ptr()
+        };
+        let pp = if priorities.is_empty() {
+            p.as_ptr()
+        } else {
+            priorities.as_ptr()
+        };
+        // SAFETY: the driver reads at most n values of each, and n <= both lengths (0 inside
+        // Begin/End when short, where the driver only raises INVALID_OPERATION).
+        unsafe { self.raw.PrioritizeTextures(n, tp, pp) };
     }
 }

@@ -46,6 +46,7 @@ mod soak;
 mod state_initial;
 mod stipple;
 mod texture;
+mod texture_border_proxy_gl;
 mod texture_errors;
 mod texture_gl;
 mod texture_pixels_gl;
