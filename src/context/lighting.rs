@@ -197,10 +197,9 @@ impl Context {
         let Some(len) = counts::light(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
         let (p, n) = p;
+        // A scalar form takes a vector pname as `[param, 0, 0, 0]`, as Mesa does (`Context::material`).
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }
@@ -238,13 +237,13 @@ impl Context {
         }
     }
 
-    /// `glLightf`: scalar pnames only (SPOT_EXPONENT, SPOT_CUTOFF, the attenuations).
+    /// `glLightf`: a vector pname takes `[param, 0, 0, 0]`, as Mesa does.
     pub fn lightf(&mut self, light: u32, pname: u32, param: f32) {
         record!(self, Call::Lightf(light, pname, param));
         self.light(light, pname, convert(&[param], false), true);
     }
 
-    /// `glLighti`: scalar pnames only.
+    /// `glLighti`: as [`Context::lightf`].
     pub fn lighti(&mut self, light: u32, pname: u32, param: i32) {
         record!(self, Call::Lighti(light, pname, param));
         self.light(light, pname, convert(&[param], false), true);
@@ -270,10 +269,9 @@ impl Context {
         let Some(len) = counts::light_model(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
         let (p, n) = p;
+        // A scalar form takes a vector pname as `[param, 0, 0, 0]`, as Mesa does (`Context::material`).
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }

@@ -75,9 +75,10 @@ const ROWS: &[(&str, Step, Step, u32)] = &[
     ("Light LIGHT8", none, |c| c.lightf(gl::LIGHT7 + 1, gl::SPOT_EXPONENT, 1.0), IE),
     ("Light below LIGHT0", none, |c| c.lightf(gl::LIGHT0 - 1, gl::SPOT_EXPONENT, 1.0), IE),
     ("Light light 0", none, |c| c.lightfv(0, gl::AMBIENT, &[1.0; 4]), IE),
-    ("Lightf POSITION", none, |c| c.lightf(gl::LIGHT0, gl::POSITION, 1.0), IE),
-    ("Lighti AMBIENT", none, |c| c.lighti(gl::LIGHT0, gl::AMBIENT, 1), IE),
-    ("Lightf SPOT_DIRECTION", none, |c| c.lightf(gl::LIGHT0, gl::SPOT_DIRECTION, 1.0), IE),
+    // A scalar form takes a vector pname as Mesa does ([param, 0, 0, 0]), the light still checked.
+    ("Lightf POSITION, bad light", none, |c| c.lightf(gl::LIGHT0 + 8, gl::POSITION, 1.0), IE),
+    ("Lighti AMBIENT, bad pname", none, |c| c.lighti(gl::LIGHT0, gl::EMISSION, 1), IE),
+    ("Lightf SPOT_DIRECTION inside", inside, |c| c.lightf(gl::LIGHT0, gl::SPOT_DIRECTION, 1.0), IO),
     ("Lightf SHININESS", none, |c| c.lightf(gl::LIGHT0, gl::SHININESS, 1.0), IE),
     ("Lightfv bad pname", none, |c| c.lightfv(gl::LIGHT2, gl::EMISSION, &[1.0; 4]), IE),
     ("Light spot exponent < 0", none, |c| c.lightf(gl::LIGHT0, gl::SPOT_EXPONENT, -1.0), IV),
@@ -99,8 +100,7 @@ const ROWS: &[(&str, Step, Step, u32)] = &[
     ("Light inside", inside, |c| c.lightfv(gl::LIGHT0, gl::AMBIENT, &[1.0; 4]), IO),
     ("Light bad light inside", inside, |c| c.lightf(99, 99, 1.0), IO),
     // LightModel (GL 2.1 §2.14.2, table 2.10).
-    ("LightModelf AMBIENT", none, |c| c.light_modelf(gl::LIGHT_MODEL_AMBIENT, 1.0), IE),
-    ("LightModeli AMBIENT", none, |c| c.light_modeli(gl::LIGHT_MODEL_AMBIENT, 1), IE),
+    ("LightModelf bad pname", none, |c| c.light_modelf(gl::AMBIENT, 1.0), IE),
     ("LightModel bogus pname", none, |c| c.light_modeli(gl::LIGHTING, 1), IE),
     ("LightModelfv short AMBIENT", none, |c| c.light_modelfv(gl::LIGHT_MODEL_AMBIENT, &[1.0, 2.0, 3.0]), IV),
     ("LightModeliv empty TWO_SIDE", none, |c| c.light_modeliv(gl::LIGHT_MODEL_TWO_SIDE, &[]), IV),

@@ -39,6 +39,7 @@ mod recording;
 mod report;
 mod report_browser;
 mod robustness;
+mod scalar_vector_pnames;
 mod scenes;
 mod select;
 mod share;
