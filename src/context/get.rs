@@ -276,7 +276,8 @@ impl Context {
             gl::SMOOTH_POINT_SIZE_GRANULARITY => f(POINT_SIZE_GRANULARITY),
             gl::ALIASED_LINE_WIDTH_RANGE | gl::SMOOTH_LINE_WIDTH_RANGE => floats(LINE_WIDTH_RANGE),
             gl::SMOOTH_LINE_WIDTH_GRANULARITY => f(LINE_WIDTH_GRANULARITY),
-            gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS | gl::ALPHA_BITS => i(8),
+            gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS => i(8),
+            gl::ALPHA_BITS => i(if s.config.alpha { 8 } else { 0 }),
             // The framebuffer's buffers (table 6.33), as the context was made.
             gl::DEPTH_BITS => i(if s.config.depth { 24 } else { 0 }),
             gl::STENCIL_BITS => i(if s.config.stencil { 8 } else { 0 }),

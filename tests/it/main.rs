@@ -38,6 +38,7 @@ mod raster_gl;
 mod recording;
 mod report;
 mod report_browser;
+mod rgb_framebuffer;
 mod robustness;
 mod scalar_vector_pnames;
 mod scenes;

@@ -646,6 +646,7 @@ fn configured_framebuffers_report_their_buffers() {
         depth: false,
         stencil: true,
         accum: true,
+        alpha: true,
     };
     let mut c = Context::with_config(16, 16, config).expect("context");
     for (name, pname, want) in [
