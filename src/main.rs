@@ -553,6 +553,7 @@ fn bench(
         .and_then(|v| v.parse::<usize>().ok())
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     let api_ns = api_call_ns()?;
+    let capi_ns = run::capi_call_ns();
     if json {
         let scenes: Vec<serde_json::Value> = rows
             .iter()
@@ -574,6 +575,7 @@ fn bench(
             "geomean_ratio": geomean,
             "worst": worst.map(|r| r.name),
             "rust_api_ns_per_call": api_ns,
+            "c_abi_ns_per_call": capi_ns.as_ref().ok(),
             "scenes": scenes,
         });
         println!("{out}");
@@ -586,6 +588,13 @@ fn bench(
             "Rust API: {api_ns:.1} ns a call (Color3f + Vertex3f pairs, points outside the view \
              volume: validation, batching and the vertex stage, no fragments)"
         );
+        match &capi_ns {
+            Ok(ns) => println!(
+                "C ABI: {ns:.1} ns a call (the same pairs through libfixedgl_capi.so's glColor3f \
+                 and glVertex3f on an OSMesa context)"
+            ),
+            Err(why) => println!("C ABI: not measured: {why}"),
+        }
     }
     Ok(ExitCode::SUCCESS)
 }

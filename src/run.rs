@@ -299,3 +299,85 @@ fn compare_frames(
     );
     Ok(failed == 0)
 }
+
+/// Nanoseconds a call through the C ABI costs, measured as [`crate::api_call_ns`] measures the
+/// Rust API: the library beside this binary opened with `dlopen`, an OSMesa context (RGBA,
+/// 64x64, the library's own memory) made current, then five runs of 100k `glColor3f` +
+/// `glVertex3f` pairs inside `glBegin(GL_POINTS)`/`glEnd`, every point clipped, up to
+/// `glFinish`; the median. `Err` says why it could not be measured (library not built, a
+/// symbol missing, no context).
+pub fn capi_call_ns() -> Result<f64, String> {
+    type Begin = unsafe extern "C" fn(u32);
+    type Color3f = unsafe extern "C" fn(f32, f32, f32);
+    type Vertex3f = unsafe extern "C" fn(f32, f32, f32);
+    type NoArgs = unsafe extern "C" fn();
+    type Create = unsafe extern "C" fn(u32, *mut std::ffi::c_void) -> *mut std::ffi::c_void;
+    type MakeCurrent =
+        unsafe extern "C" fn(*mut std::ffi::c_void, *mut std::ffi::c_void, u32, i32, i32) -> u8;
+    type Destroy = unsafe extern "C" fn(*mut std::ffi::c_void);
+    const PAIRS: u32 = 100_000;
+    const SIDE: i32 = 64;
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let lib_path = exe.parent().unwrap_or(Path::new(".")).join(LIBRARY);
+    if !lib_path.exists() {
+        return Err(format!(
+            "{} is not built (`cargo build --release` builds it)",
+            lib_path.display()
+        ));
+    }
+    // SAFETY: the library is this workspace's C ABI, whose initialisers only set up its own
+    // statics; every symbol below is looked up with the signature it is exported with
+    // (capi/src/generated.rs, capi/src/osmesa.rs), and the context is made current on this
+    // thread with a buffer that outlives every call, then destroyed before the library closes.
+    unsafe {
+        let lib = libloading::Library::new(&lib_path).map_err(|e| e.to_string())?;
+        fn sym<'l, T>(
+            lib: &'l libloading::Library,
+            name: &str,
+        ) -> Result<libloading::Symbol<'l, T>, String> {
+            // SAFETY: the caller names the type the symbol is exported with.
+            unsafe { lib.get(name.as_bytes()) }.map_err(|e| format!("{name}: {e}"))
+        }
+        let create: libloading::Symbol<Create> = sym(&lib, "OSMesaCreateContext")?;
+        let make_current: libloading::Symbol<MakeCurrent> = sym(&lib, "OSMesaMakeCurrent")?;
+        let destroy: libloading::Symbol<Destroy> = sym(&lib, "OSMesaDestroyContext")?;
+        let begin: libloading::Symbol<Begin> = sym(&lib, "glBegin")?;
+        let color3f: libloading::Symbol<Color3f> = sym(&lib, "glColor3f")?;
+        let vertex3f: libloading::Symbol<Vertex3f> = sym(&lib, "glVertex3f")?;
+        let end: libloading::Symbol<NoArgs> = sym(&lib, "glEnd")?;
+        let finish: libloading::Symbol<NoArgs> = sym(&lib, "glFinish")?;
+        let ctx = create(fixedgl::gl::RGBA, std::ptr::null_mut());
+        if ctx.is_null() {
+            return Err("OSMesaCreateContext failed".into());
+        }
+        let mut buffer = vec![0u8; (SIDE * SIDE * 4) as usize];
+        if make_current(
+            ctx,
+            buffer.as_mut_ptr().cast(),
+            fixedgl::gl::UNSIGNED_BYTE,
+            SIDE,
+            SIDE,
+        ) == 0
+        {
+            destroy(ctx);
+            return Err("OSMesaMakeCurrent failed".into());
+        }
+        let mut runs: Vec<f64> = (0..5)
+            .map(|_| {
+                let start = std::time::Instant::now();
+                begin(fixedgl::gl::POINTS);
+                for i in 0..PAIRS {
+                    let f = i as f32 * 1e-6;
+                    color3f(f, 0.5, 0.25);
+                    vertex3f(2.0 + f, 0.0, 0.0);
+                }
+                end();
+                finish();
+                start.elapsed().as_secs_f64() * 1e9 / f64::from(2 * PAIRS)
+            })
+            .collect();
+        destroy(ctx);
+        drop(buffer);
+        Ok(crate::median_ms(&mut runs))
+    }
+}

@@ -872,27 +872,7 @@ mod tests {
         }
     }
 
-    struct Gen(u64);
-    impl Gen {
-        fn next(&mut self) -> u64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            self.0 >> 11
-        }
-        fn pick(&mut self, v: &[u32]) -> u32 {
-            v[(self.next() % v.len() as u64) as usize]
-        }
-        /// Mostly in [−0.25, 1.25], now and then NaN or huge.
-        fn float(&mut self) -> f32 {
-            match self.next() % 40 {
-                0 => f32::NAN,
-                1 => 1e30,
-                _ => (self.next() % 1_000_000) as f32 * 1.5e-6 - 0.25,
-            }
-        }
-    }
+    use crate::cpu::testgen::Gen;
 
     const FUNCS: [u32; 8] = [
         gl::NEVER,
@@ -973,7 +953,7 @@ mod tests {
                     density: (g.next() % 100) as f32 * 0.05,
                     start: 0.1,
                     end: if g.next() % 5 == 0 { 0.1 } else { 0.9 },
-                    color: Vec3::new(g.float(), 0.5, g.float()),
+                    color: Vec3::new(g.mostly_unit(), 0.5, g.mostly_unit()),
                 }),
                 alpha: (g.next() % 2 == 0).then(|| (g.pick(&FUNCS), g.next() as u8)),
                 stencil,
@@ -1006,7 +986,7 @@ mod tests {
                 ty + (g.next() % 40) as i32 - 20,
             ];
             // Depths: a plane crossing the stored values, sometimes outside [0, 1].
-            let z = [g.float(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+            let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
             let p = RPrim {
                 kind: PrimKind::Tri,
                 flags,
@@ -1020,7 +1000,11 @@ mod tests {
             };
             let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
             for _ in 0..rl.n {
-                planes.extend([g.float(), g.float() * 1e-2, g.float() * 1e-2]);
+                planes.extend([
+                    g.mostly_unit(),
+                    g.mostly_unit() * 1e-2,
+                    g.mostly_unit() * 1e-2,
+                ]);
             }
             let color: Vec<[u8; 4]> = (0..TILE * TILE)
                 .map(|_| (g.next() as u32).to_le_bytes())

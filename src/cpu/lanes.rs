@@ -222,27 +222,7 @@ pub fn store_rgba(dst: &mut [[u8; 4]], m: u64, c: &[[f32; LANES]; 4]) {
 mod tests {
     use super::*;
     use crate::cpu::framebuffer::{depth_unorm, unorm8};
-
-    /// A small deterministic generator of awkward floats (NaN, ±0, tiny, huge, ordinary).
-    struct Gen(u64);
-    impl Gen {
-        fn next(&mut self) -> u64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            self.0 >> 11
-        }
-        fn float(&mut self) -> f32 {
-            match self.next() % 10 {
-                0 => f32::NAN,
-                1 => -0.0,
-                2 => f32::from_bits(self.next() as u32),
-                3 => (self.next() % 2000) as f32 * 1e-3 - 0.5,
-                _ => (self.next() % 1_000_000) as f32 * 1e-6 * 1.5 - 0.25,
-            }
-        }
-    }
+    use crate::cpu::testgen::Gen;
 
     #[test]
     fn smooth_rgba_is_the_scalar_expression_bit_for_bit() {

@@ -51,6 +51,8 @@ pub mod pixels;
 mod polygon;
 pub mod raster;
 pub mod setup;
+#[cfg(test)]
+mod testgen;
 pub mod texgen;
 pub mod texture;
 pub mod vertex;

@@ -270,34 +270,15 @@ mod tests {
     use super::*;
     use crate::cpu::fragops::{logic_op, BlendEval};
     use crate::cpu::framebuffer::unorm8;
+    use crate::cpu::testgen::Gen;
     use glam::{Vec3, Vec4};
 
-    /// A small deterministic generator (as in `lanes`' tests).
-    struct Gen(u64);
-    impl Gen {
-        fn next(&mut self) -> u64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            self.0 >> 11
-        }
-        fn float(&mut self) -> f32 {
-            match self.next() % 10 {
-                0 => f32::NAN,
-                1 => -0.0,
-                2 => f32::from_bits(self.next() as u32),
-                3 => (self.next() % 2000) as f32 * 1e-3 - 0.5,
-                _ => (self.next() % 1_000_000) as f32 * 1e-6 * 1.5 - 0.25,
-            }
-        }
-        fn byte(&mut self) -> u8 {
-            match self.next() % 6 {
-                0 => 0,
-                1 => 255,
-                _ => self.next() as u8,
-            }
-        }
+    /// Whole lanes of the generator's floats and bytes.
+    trait Lanes {
+        fn lanes(&mut self) -> F;
+        fn bytes(&mut self) -> B;
+    }
+    impl Lanes for Gen {
         fn lanes(&mut self) -> F {
             std::array::from_fn(|_| self.float())
         }

@@ -276,4 +276,58 @@ fn bench_json_gives_ratios_their_geometric_mean_the_worst_scene_and_threads() {
         "rect-wire"
     };
     assert_eq!(v["worst"], worst);
+    assert!(v["rust_api_ns_per_call"]
+        .as_f64()
+        .is_some_and(|ns| ns > 0.0));
+}
+
+/// `fixedgl bench` times a call through the C ABI library beside the binary (as `cargo build
+/// --release` places them), and says why when there is none. Cargo keeps the test build's
+/// library in `deps/`, so the test puts hard links of both side by side in a fresh folder (the
+/// binary finds the library through its own path, which a symbolic link would not change).
+#[test]
+fn bench_times_a_call_through_the_c_abi_library_beside_it() {
+    if crate::common::test_backend(8, 8).is_none() {
+        return;
+    }
+    let exe = Path::new(env!("CARGO_BIN_EXE_fixedgl"));
+    let lib = exe.with_file_name("deps").join("libfixedgl_capi.so");
+    let dir =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bench-capi-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temporary folder");
+    let linked = dir.join("fixedgl");
+    std::fs::hard_link(exe, &linked).expect("hard link of the binary");
+    let bench = |bin: &Path| -> Value {
+        let out = Command::new(bin)
+            .args(["bench", "triangle", "--frames", "1", "--cpu-only", "--json"])
+            .output()
+            .unwrap_or_else(|e| panic!("cannot run fixedgl: {e}"));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).expect("JSON")
+    };
+    // No library beside it: no figure (the text output says why).
+    assert!(bench(&linked)["c_abi_ns_per_call"].is_null());
+    if !lib.exists() {
+        let _ = std::fs::remove_dir_all(&dir);
+        assert!(
+            std::env::var_os("FIXEDGL_REQUIRE_GL").is_none(),
+            "FIXEDGL_REQUIRE_GL is set but {} is not built",
+            lib.display()
+        );
+        println!(
+            "SKIPPED: {} is not built (cargo test --workspace builds it)",
+            lib.display()
+        );
+        return;
+    }
+    std::fs::hard_link(&lib, dir.join("libfixedgl_capi.so")).expect("hard link of the library");
+    let v = bench(&linked);
+    let _ = std::fs::remove_dir_all(&dir);
+    let ns = v["c_abi_ns_per_call"].as_f64();
+    assert!(ns.is_some_and(|ns| ns > 0.0 && ns < 1e6), "{v}");
 }
