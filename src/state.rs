@@ -470,6 +470,11 @@ pub struct State {
     // Their own structs, one line each for PushAttrib
     pub fog: Fog,
     pub alpha: AlphaTest,
+    /// `SAMPLE_COVERAGE_VALUE` (table 6.15, multisample group), clamped to [0, 1] when
+    /// specified.
+    pub sample_coverage_value: f32,
+    /// `SAMPLE_COVERAGE_INVERT` (table 6.15, multisample group).
+    pub sample_coverage_invert: bool,
     pub stencil: Stencil,
     pub blend: Blend,
     /// `LOGIC_OP_MODE` (table 6.21).
@@ -573,6 +578,8 @@ impl State {
             arrays: crate::arrays::ArrayState::default(),
             fog: Fog::default(),
             alpha: AlphaTest::default(),
+            sample_coverage_value: 1.0,
+            sample_coverage_invert: false,
             stencil: Stencil::default(),
             blend: Blend::default(),
             logic_op: gl::COPY,

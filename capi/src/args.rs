@@ -499,3 +499,121 @@ pub fn map2d(
     // SAFETY: as `points`.
     unsafe { points(p, n) }
 }
+
+/// The most bytes of a compressed image the call keeps (64 MiB, a 4096 x 4096 RGBA8 image):
+/// fixedgl offers no compressed format, so these commands never read their data; a recording
+/// keeps it for the replay, and more than this is not copied (the recorded call then holds the
+/// first 64 MiB, which the GL backend treats as a short image: fixedgl's error, no driver call).
+const MAX_COMPRESSED_BYTES: usize = 1 << 26;
+
+/// A compressed image's `imageSize` bytes (at most [`MAX_COMPRESSED_BYTES`]; none for a
+/// negative size); None for NULL.
+unsafe fn compressed(image_size: i32, p: *const c_void) -> Option<Vec<u8>> {
+    if p.is_null() {
+        return None;
+    }
+    let len = usize::try_from(image_size)
+        .unwrap_or(0)
+        .min(MAX_COMPRESSED_BYTES);
+    // SAFETY: the caller's promise that `imageSize` bytes are there (GL reads as many).
+    Some(unsafe { read::bytes(p, len) }.to_vec())
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_image_1d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: u32,
+    _width: i32,
+    _border: i32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_image_2d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: u32,
+    _width: i32,
+    _height: i32,
+    _border: i32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_image_3d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _internal: u32,
+    _width: i32,
+    _height: i32,
+    _depth: i32,
+    _border: i32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_sub_image_1d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    _width: i32,
+    _format: u32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_sub_image_2d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    _y: i32,
+    _width: i32,
+    _height: i32,
+    _format: u32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}
+
+#[allow(clippy::too_many_arguments)] // the C signature
+pub unsafe fn compressed_tex_sub_image_3d(
+    _gl: &mut Gl,
+    _target: u32,
+    _level: i32,
+    _x: i32,
+    _y: i32,
+    _z: i32,
+    _width: i32,
+    _height: i32,
+    _depth: i32,
+    _format: u32,
+    image_size: i32,
+    p: *const c_void,
+) -> Option<Vec<u8>> {
+    // SAFETY: as `compressed`.
+    unsafe { compressed(image_size, p) }
+}

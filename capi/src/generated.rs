@@ -3109,7 +3109,10 @@ pub unsafe extern "C" fn glActiveTexture(texture: u32) {
 /// `glSampleCoverage(value, invert)`.
 #[no_mangle]
 pub unsafe extern "C" fn glSampleCoverage(value: f32, invert: u8) {
-    unimplemented("glSampleCoverage");
+    with_gl("glSampleCoverage", |gl| {
+        let invert = invert != 0;
+        gl.ctx.sample_coverage(value, invert);
+    })
 }
 
 /// `glCompressedTexImage3D(target, level, internalformat, width, height, depth, border, imageSize, data)`.
@@ -3125,7 +3128,31 @@ pub unsafe extern "C" fn glCompressedTexImage3D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexImage3D");
+    with_gl("glCompressedTexImage3D", |gl| {
+        let data = args::compressed_tex_image_3d(
+            gl,
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            image_size,
+            data,
+        );
+        gl.ctx.execute(&Call::CompressedTexImage3D(Box::new((
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            depth,
+            border,
+            image_size,
+            data,
+        ))));
+    })
 }
 
 /// `glCompressedTexImage2D(target, level, internalformat, width, height, border, imageSize, data)`.
@@ -3140,7 +3167,29 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexImage2D");
+    with_gl("glCompressedTexImage2D", |gl| {
+        let data = args::compressed_tex_image_2d(
+            gl,
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            image_size,
+            data,
+        );
+        gl.ctx.execute(&Call::CompressedTexImage2D(Box::new((
+            target,
+            level,
+            internalformat,
+            width,
+            height,
+            border,
+            image_size,
+            data,
+        ))));
+    })
 }
 
 /// `glCompressedTexImage1D(target, level, internalformat, width, border, imageSize, data)`.
@@ -3154,7 +3203,27 @@ pub unsafe extern "C" fn glCompressedTexImage1D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexImage1D");
+    with_gl("glCompressedTexImage1D", |gl| {
+        let data = args::compressed_tex_image_1d(
+            gl,
+            target,
+            level,
+            internalformat,
+            width,
+            border,
+            image_size,
+            data,
+        );
+        gl.ctx.execute(&Call::CompressedTexImage1D(Box::new((
+            target,
+            level,
+            internalformat,
+            width,
+            border,
+            image_size,
+            data,
+        ))));
+    })
 }
 
 /// `glCompressedTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data)`.
@@ -3172,7 +3241,16 @@ pub unsafe extern "C" fn glCompressedTexSubImage3D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexSubImage3D");
+    with_gl("glCompressedTexSubImage3D", |gl| {
+        let data = args::compressed_tex_sub_image_3d(
+            gl, target, level, xoffset, yoffset, zoffset, width, height, depth, format, image_size,
+            data,
+        );
+        gl.ctx.execute(&Call::CompressedTexSubImage3D(Box::new((
+            target, level, xoffset, yoffset, zoffset, width, height, depth, format, image_size,
+            data,
+        ))));
+    })
 }
 
 /// `glCompressedTexSubImage2D(target, level, xoffset, yoffset, width, height, format, imageSize, data)`.
@@ -3188,7 +3266,14 @@ pub unsafe extern "C" fn glCompressedTexSubImage2D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexSubImage2D");
+    with_gl("glCompressedTexSubImage2D", |gl| {
+        let data = args::compressed_tex_sub_image_2d(
+            gl, target, level, xoffset, yoffset, width, height, format, image_size, data,
+        );
+        gl.ctx.execute(&Call::CompressedTexSubImage2D(Box::new((
+            target, level, xoffset, yoffset, width, height, format, image_size, data,
+        ))));
+    })
 }
 
 /// `glCompressedTexSubImage1D(target, level, xoffset, width, format, imageSize, data)`.
@@ -3202,13 +3287,14 @@ pub unsafe extern "C" fn glCompressedTexSubImage1D(
     image_size: i32,
     data: *const c_void,
 ) {
-    unimplemented("glCompressedTexSubImage1D");
-}
-
-/// `glGetCompressedTexImage(target, level, img)`.
-#[no_mangle]
-pub unsafe extern "C" fn glGetCompressedTexImage(target: u32, level: i32, img: *mut c_void) {
-    unimplemented("glGetCompressedTexImage");
+    with_gl("glCompressedTexSubImage1D", |gl| {
+        let data = args::compressed_tex_sub_image_1d(
+            gl, target, level, xoffset, width, format, image_size, data,
+        );
+        gl.ctx.execute(&Call::CompressedTexSubImage1D(Box::new((
+            target, level, xoffset, width, format, image_size, data,
+        ))));
+    })
 }
 
 /// `glClientActiveTexture(texture)`.
@@ -4389,6 +4475,130 @@ pub unsafe extern "C" fn glClientActiveTextureARB(texture: u32) {
     glClientActiveTexture(texture)
 }
 
+/// `glCompressedTexImage1DARB`: [`glCompressedTexImage1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexImage1DARB(
+    target: u32,
+    level: i32,
+    internalformat: u32,
+    width: i32,
+    border: i32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexImage1D(
+        target,
+        level,
+        internalformat,
+        width,
+        border,
+        image_size,
+        data,
+    )
+}
+
+/// `glCompressedTexImage2DARB`: [`glCompressedTexImage2D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexImage2DARB(
+    target: u32,
+    level: i32,
+    internalformat: u32,
+    width: i32,
+    height: i32,
+    border: i32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexImage2D(
+        target,
+        level,
+        internalformat,
+        width,
+        height,
+        border,
+        image_size,
+        data,
+    )
+}
+
+/// `glCompressedTexImage3DARB`: [`glCompressedTexImage3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexImage3DARB(
+    target: u32,
+    level: i32,
+    internalformat: u32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    border: i32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexImage3D(
+        target,
+        level,
+        internalformat,
+        width,
+        height,
+        depth,
+        border,
+        image_size,
+        data,
+    )
+}
+
+/// `glCompressedTexSubImage1DARB`: [`glCompressedTexSubImage1D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexSubImage1DARB(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    width: i32,
+    format: u32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexSubImage1D(target, level, xoffset, width, format, image_size, data)
+}
+
+/// `glCompressedTexSubImage2DARB`: [`glCompressedTexSubImage2D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexSubImage2DARB(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    yoffset: i32,
+    width: i32,
+    height: i32,
+    format: u32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexSubImage2D(
+        target, level, xoffset, yoffset, width, height, format, image_size, data,
+    )
+}
+
+/// `glCompressedTexSubImage3DARB`: [`glCompressedTexSubImage3D`].
+#[no_mangle]
+pub unsafe extern "C" fn glCompressedTexSubImage3DARB(
+    target: u32,
+    level: i32,
+    xoffset: i32,
+    yoffset: i32,
+    zoffset: i32,
+    width: i32,
+    height: i32,
+    depth: i32,
+    format: u32,
+    image_size: i32,
+    data: *const c_void,
+) {
+    glCompressedTexSubImage3D(
+        target, level, xoffset, yoffset, zoffset, width, height, depth, format, image_size, data,
+    )
+}
+
 /// `glCopyTexImage1DEXT`: [`glCopyTexImage1D`].
 #[no_mangle]
 pub unsafe extern "C" fn glCopyTexImage1DEXT(
@@ -4648,6 +4858,12 @@ pub unsafe extern "C" fn glGetBufferSubDataARB(
     data: *mut c_void,
 ) {
     glGetBufferSubData(target, offset, size, data)
+}
+
+/// `glGetCompressedTexImageARB`: [`glGetCompressedTexImage`].
+#[no_mangle]
+pub unsafe extern "C" fn glGetCompressedTexImageARB(target: u32, level: i32, img: *mut c_void) {
+    glGetCompressedTexImage(target, level, img)
 }
 
 /// `glGetFramebufferAttachmentParameterivEXT`: [`glGetFramebufferAttachmentParameteriv`].
@@ -5055,6 +5271,12 @@ pub unsafe extern "C" fn glRenderbufferStorageEXT(
     height: i32,
 ) {
     glRenderbufferStorage(target, internalformat, width, height)
+}
+
+/// `glSampleCoverageARB`: [`glSampleCoverage`].
+#[no_mangle]
+pub unsafe extern "C" fn glSampleCoverageARB(value: f32, invert: u8) {
+    glSampleCoverage(value, invert)
 }
 
 /// `glSecondaryColor3bEXT`: [`glSecondaryColor3b`].
@@ -5541,6 +5763,18 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glColorMaterial" => glColorMaterial as *const c_void,
         b"glColorPointer" => glColorPointer as *const c_void,
         b"glColorPointerEXT" => glColorPointerEXT as *const c_void,
+        b"glCompressedTexImage1D" => glCompressedTexImage1D as *const c_void,
+        b"glCompressedTexImage1DARB" => glCompressedTexImage1D as *const c_void,
+        b"glCompressedTexImage2D" => glCompressedTexImage2D as *const c_void,
+        b"glCompressedTexImage2DARB" => glCompressedTexImage2D as *const c_void,
+        b"glCompressedTexImage3D" => glCompressedTexImage3D as *const c_void,
+        b"glCompressedTexImage3DARB" => glCompressedTexImage3D as *const c_void,
+        b"glCompressedTexSubImage1D" => glCompressedTexSubImage1D as *const c_void,
+        b"glCompressedTexSubImage1DARB" => glCompressedTexSubImage1D as *const c_void,
+        b"glCompressedTexSubImage2D" => glCompressedTexSubImage2D as *const c_void,
+        b"glCompressedTexSubImage2DARB" => glCompressedTexSubImage2D as *const c_void,
+        b"glCompressedTexSubImage3D" => glCompressedTexSubImage3D as *const c_void,
+        b"glCompressedTexSubImage3DARB" => glCompressedTexSubImage3D as *const c_void,
         b"glCopyPixels" => glCopyPixels as *const c_void,
         b"glCopyTexImage1D" => glCopyTexImage1D as *const c_void,
         b"glCopyTexImage1DEXT" => glCopyTexImage1D as *const c_void,
@@ -5645,6 +5879,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetBufferSubData" => glGetBufferSubData as *const c_void,
         b"glGetBufferSubDataARB" => glGetBufferSubData as *const c_void,
         b"glGetClipPlane" => glGetClipPlane as *const c_void,
+        b"glGetCompressedTexImage" => glGetCompressedTexImage as *const c_void,
+        b"glGetCompressedTexImageARB" => glGetCompressedTexImage as *const c_void,
         b"glGetDoublev" => glGetDoublev as *const c_void,
         b"glGetError" => glGetError as *const c_void,
         b"glGetFloatv" => glGetFloatv as *const c_void,
@@ -5915,6 +6151,8 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glRenderbufferStorageEXT" => glRenderbufferStorage as *const c_void,
         b"glRotated" => glRotated as *const c_void,
         b"glRotatef" => glRotatef as *const c_void,
+        b"glSampleCoverage" => glSampleCoverage as *const c_void,
+        b"glSampleCoverageARB" => glSampleCoverage as *const c_void,
         b"glScaled" => glScaled as *const c_void,
         b"glScalef" => glScalef as *const c_void,
         b"glScissor" => glScissor as *const c_void,

@@ -4,9 +4,11 @@
 use serde::{Deserialize, Serialize};
 
 use super::{
-    ArgKind, Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MapWrites,
-    MultiDrawArraysArgs, MultiDrawElementsArgs, PrioritizeTexturesArgs, TexImage1DArgs,
-    TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs,
+    ArgKind, CompressedTexImage1DArgs, CompressedTexImage2DArgs, CompressedTexImage3DArgs,
+    CompressedTexSubImage1DArgs, CompressedTexSubImage2DArgs, CompressedTexSubImage3DArgs,
+    Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MapWrites, MultiDrawArraysArgs,
+    MultiDrawElementsArgs, PrioritizeTexturesArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs,
+    TexSubImage1DArgs, TexSubImage2DArgs, TexSubImage3DArgs,
 };
 use crate::arrays::Pointer;
 
@@ -527,6 +529,10 @@ pub enum Call {
     BlendColor(f32, f32, f32, f32),
     /// `glLogicOp(opcode)`.
     LogicOp(u32),
+    /// `glSampleCoverage(value, invert)`.
+    ///
+    /// value, invert (GL 2.1 §4.1.3; context/fragment.rs).
+    SampleCoverage(f32, bool),
 
     // Textures (GL 2.1 §2.11.4, §3.8): context/texture.rs, texture_params.rs, texture_coords.rs
     /// `glGenTextures(n, textures)`.
@@ -583,6 +589,30 @@ pub enum Call {
     ///
     /// target, level, xoffset, yoffset, zoffset, x, y, width, height.
     CopyTexSubImage3D(u32, i32, i32, i32, i32, i32, i32, i32, i32),
+    /// `glCompressedTexImage1D(target, level, internalformat, width, border, imageSize, data)`.
+    ///
+    /// target, level, internalformat, width, border, imageSize, data (None: NULL); no format is supported (GL 1.3 allows none): context/compressed.rs.
+    CompressedTexImage1D(Box<CompressedTexImage1DArgs>),
+    /// `glCompressedTexImage2D(target, level, internalformat, width, height, border, imageSize, data)`.
+    ///
+    /// target, level, internalformat, width, height, border, imageSize, data (None: NULL).
+    CompressedTexImage2D(Box<CompressedTexImage2DArgs>),
+    /// `glCompressedTexImage3D(target, level, internalformat, width, height, depth, border, imageSize, data)`.
+    ///
+    /// target, level, internalformat, width, height, depth, border, imageSize, data (None: NULL).
+    CompressedTexImage3D(Box<CompressedTexImage3DArgs>),
+    /// `glCompressedTexSubImage1D(target, level, xoffset, width, format, imageSize, data)`.
+    ///
+    /// target, level, xoffset, width, format, imageSize, data (None: NULL).
+    CompressedTexSubImage1D(Box<CompressedTexSubImage1DArgs>),
+    /// `glCompressedTexSubImage2D(target, level, xoffset, yoffset, width, height, format, imageSize, data)`.
+    ///
+    /// target, level, xoffset, yoffset, width, height, format, imageSize, data (None: NULL).
+    CompressedTexSubImage2D(Box<CompressedTexSubImage2DArgs>),
+    /// `glCompressedTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data)`.
+    ///
+    /// target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data (None: NULL).
+    CompressedTexSubImage3D(Box<CompressedTexSubImage3DArgs>),
     /// `glTexParameteri(target, pname, param)`.
     TexParameteri(u32, u32, i32),
     /// `glTexParameterf(target, pname, param)`.
@@ -1212,6 +1242,7 @@ pub const NAMES: &[&str] = &[
     "BlendEquationSeparate",
     "BlendColor",
     "LogicOp",
+    "SampleCoverage",
     "GenTextures",
     "DeleteTextures",
     "PrioritizeTextures",
@@ -1227,6 +1258,12 @@ pub const NAMES: &[&str] = &[
     "CopyTexImage1D",
     "CopyTexSubImage1D",
     "CopyTexSubImage3D",
+    "CompressedTexImage1D",
+    "CompressedTexImage2D",
+    "CompressedTexImage3D",
+    "CompressedTexSubImage1D",
+    "CompressedTexSubImage2D",
+    "CompressedTexSubImage3D",
     "TexParameteri",
     "TexParameterf",
     "TexParameteriv",
@@ -1641,6 +1678,7 @@ impl Call {
             Call::BlendEquationSeparate(..) => "BlendEquationSeparate",
             Call::BlendColor(..) => "BlendColor",
             Call::LogicOp(..) => "LogicOp",
+            Call::SampleCoverage(..) => "SampleCoverage",
             Call::GenTextures(..) => "GenTextures",
             Call::DeleteTextures(..) => "DeleteTextures",
             Call::PrioritizeTextures(..) => "PrioritizeTextures",
@@ -1656,6 +1694,12 @@ impl Call {
             Call::CopyTexImage1D(..) => "CopyTexImage1D",
             Call::CopyTexSubImage1D(..) => "CopyTexSubImage1D",
             Call::CopyTexSubImage3D(..) => "CopyTexSubImage3D",
+            Call::CompressedTexImage1D(..) => "CompressedTexImage1D",
+            Call::CompressedTexImage2D(..) => "CompressedTexImage2D",
+            Call::CompressedTexImage3D(..) => "CompressedTexImage3D",
+            Call::CompressedTexSubImage1D(..) => "CompressedTexSubImage1D",
+            Call::CompressedTexSubImage2D(..) => "CompressedTexSubImage2D",
+            Call::CompressedTexSubImage3D(..) => "CompressedTexSubImage3D",
             Call::TexParameteri(..) => "TexParameteri",
             Call::TexParameterf(..) => "TexParameterf",
             Call::TexParameteriv(..) => "TexParameteriv",
@@ -2316,6 +2360,7 @@ impl Call {
             Call::BlendEquationSeparate(..) => &[Enum, Enum],
             Call::BlendColor(..) => &[],
             Call::LogicOp(..) => &[Enum],
+            Call::SampleCoverage(..) => &[],
             Call::GenTextures(..) => &[],
             Call::DeleteTextures(..) => &[],
             Call::PrioritizeTextures(..) => &[],
@@ -2331,6 +2376,12 @@ impl Call {
             Call::CopyTexImage1D(..) => &[Enum, Plain, Enum],
             Call::CopyTexSubImage1D(..) => &[Enum],
             Call::CopyTexSubImage3D(..) => &[Enum],
+            Call::CompressedTexImage1D(..) => &[],
+            Call::CompressedTexImage2D(..) => &[],
+            Call::CompressedTexImage3D(..) => &[],
+            Call::CompressedTexSubImage1D(..) => &[],
+            Call::CompressedTexSubImage2D(..) => &[],
+            Call::CompressedTexSubImage3D(..) => &[],
             Call::TexParameteri(..) => &[Enum, Enum],
             Call::TexParameterf(..) => &[Enum, Enum],
             Call::TexParameteriv(..) => &[Enum, Enum],

@@ -34,6 +34,37 @@ pub type TexSubImage1DArgs = (u32, i32, i32, i32, u32, u32, Vec<u8>);
 /// format, type, pixels.
 pub type TexSubImage3DArgs = (u32, i32, i32, i32, i32, i32, i32, i32, u32, u32, Vec<u8>);
 
+/// `CompressedTexImage1D`'s arguments: target, level, internalformat, width, border, imageSize,
+/// data (`None`: a NULL pointer; otherwise the bytes as the caller passed them).
+pub type CompressedTexImage1DArgs = (u32, i32, u32, i32, i32, i32, Option<Vec<u8>>);
+/// `CompressedTexImage2D`'s arguments: target, level, internalformat, width, height, border,
+/// imageSize, data (as `CompressedTexImage1DArgs`).
+pub type CompressedTexImage2DArgs = (u32, i32, u32, i32, i32, i32, i32, Option<Vec<u8>>);
+/// `CompressedTexImage3D`'s arguments: target, level, internalformat, width, height, depth,
+/// border, imageSize, data (as `CompressedTexImage1DArgs`).
+pub type CompressedTexImage3DArgs = (u32, i32, u32, i32, i32, i32, i32, i32, Option<Vec<u8>>);
+/// `CompressedTexSubImage1D`'s arguments: target, level, xoffset, width, format, imageSize,
+/// data (as `CompressedTexImage1DArgs`).
+pub type CompressedTexSubImage1DArgs = (u32, i32, i32, i32, u32, i32, Option<Vec<u8>>);
+/// `CompressedTexSubImage2D`'s arguments: target, level, xoffset, yoffset, width, height,
+/// format, imageSize, data (as `CompressedTexImage1DArgs`).
+pub type CompressedTexSubImage2DArgs = (u32, i32, i32, i32, i32, i32, u32, i32, Option<Vec<u8>>);
+/// `CompressedTexSubImage3D`'s arguments: target, level, xoffset, yoffset, zoffset, width,
+/// height, depth, format, imageSize, data (as `CompressedTexImage1DArgs`).
+pub type CompressedTexSubImage3DArgs = (
+    u32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    i32,
+    u32,
+    i32,
+    Option<Vec<u8>>,
+);
+
 /// `MultiDrawArrays`' arguments: mode, first, count, drawcount (the slices as the caller passed
 /// them, however long).
 pub type MultiDrawArraysArgs = (u32, Vec<i32>, Vec<i32>, i32);

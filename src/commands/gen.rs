@@ -444,6 +444,13 @@ impl Implemented {
                 } else {
                     Shape::Bytes
                 }
+            } else if p.ptype == "void" && p.len.as_deref() == Some("imageSize") {
+                // Compressed image data (CompressedTex*Image): `imageSize` bytes.
+                if ann.null {
+                    Shape::OptBytes
+                } else {
+                    Shape::Bytes
+                }
             } else if p.ptype == "void" && p.c_type.contains("*const*") {
                 Shape::Pointers
             } else if p.ptype == "void" && matches!(p.name.as_str(), "pointer" | "indices" | "data")
@@ -568,6 +575,8 @@ fn gen_call(cmds: &[Implemented]) -> String {
     let mut s = String::from(HEADER);
     s.push_str(
         "\nuse serde::{Deserialize, Serialize};\n\nuse super::{ArgKind, MapWrites, \
+         CompressedTexImage1DArgs, CompressedTexImage2DArgs, CompressedTexImage3DArgs, \
+         CompressedTexSubImage1DArgs, CompressedTexSubImage2DArgs, CompressedTexSubImage3DArgs, \
          Map1dArgs, Map1fArgs, Map2dArgs, Map2fArgs, MapGrid2dArgs, MultiDrawArraysArgs, \
          MultiDrawElementsArgs, PrioritizeTexturesArgs, TexImage1DArgs, TexImage2DArgs, TexImage3DArgs, TexSubImage1DArgs, \
          TexSubImage2DArgs, TexSubImage3DArgs};\nuse crate::arrays::Pointer;\n\n",

@@ -122,8 +122,10 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
         copy!(d, s; enables.auto_normal, enables.map1, enables.map2, eval_grid);
     }
     if has(gl::MULTISAMPLE_BIT) {
+        // Table 6.15: the enables, SAMPLE_COVERAGE_VALUE and _INVERT.
         copy!(d, s; enables.multisample, enables.sample_alpha_to_coverage,
             enables.sample_alpha_to_one, enables.sample_coverage);
+        copy!(d, s; sample_coverage_value, sample_coverage_invert);
     }
     if has(gl::LIST_BIT) {
         copy!(d, s; list_base);

@@ -293,6 +293,7 @@ impl Context {
             }
             Call::BlendColor(red, green, blue, alpha) => self.blend_color(red, green, blue, alpha),
             Call::LogicOp(opcode) => self.logic_op(opcode),
+            Call::SampleCoverage(value, invert) => self.sample_coverage(value, invert),
             Call::GenTextures(n) => self.replay_gen_textures(n),
             Call::DeleteTextures(n, ref textures) => self.delete_textures(n, textures),
             Call::PrioritizeTextures(ref args) => {
@@ -419,6 +420,111 @@ impl Context {
             ) => self.copy_tex_sub_image_3d(
                 target, level, xoffset, yoffset, zoffset, x, y, width, height,
             ),
+            Call::CompressedTexImage1D(ref args) => {
+                let (target, level, internalformat, width, border, image_size, ref data) = **args;
+                self.compressed_tex_image_1d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    border,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
+            Call::CompressedTexImage2D(ref args) => {
+                let (target, level, internalformat, width, height, border, image_size, ref data) =
+                    **args;
+                self.compressed_tex_image_2d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    border,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
+            Call::CompressedTexImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    image_size,
+                    ref data,
+                ) = **args;
+                self.compressed_tex_image_3d(
+                    target,
+                    level,
+                    internalformat,
+                    width,
+                    height,
+                    depth,
+                    border,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
+            Call::CompressedTexSubImage1D(ref args) => {
+                let (target, level, xoffset, width, format, image_size, ref data) = **args;
+                self.compressed_tex_sub_image_1d(
+                    target,
+                    level,
+                    xoffset,
+                    width,
+                    format,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
+            Call::CompressedTexSubImage2D(ref args) => {
+                let (target, level, xoffset, yoffset, width, height, format, image_size, ref data) =
+                    **args;
+                self.compressed_tex_sub_image_2d(
+                    target,
+                    level,
+                    xoffset,
+                    yoffset,
+                    width,
+                    height,
+                    format,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
+            Call::CompressedTexSubImage3D(ref args) => {
+                let (
+                    target,
+                    level,
+                    xoffset,
+                    yoffset,
+                    zoffset,
+                    width,
+                    height,
+                    depth,
+                    format,
+                    image_size,
+                    ref data,
+                ) = **args;
+                self.compressed_tex_sub_image_3d(
+                    target,
+                    level,
+                    xoffset,
+                    yoffset,
+                    zoffset,
+                    width,
+                    height,
+                    depth,
+                    format,
+                    image_size,
+                    data.as_deref(),
+                )
+            }
             Call::TexParameteri(target, pname, param) => self.tex_parameteri(target, pname, param),
             Call::TexParameterf(target, pname, param) => self.tex_parameterf(target, pname, param),
             Call::TexParameteriv(target, pname, ref params) => {

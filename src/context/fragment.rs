@@ -1,6 +1,7 @@
 //! Per-fragment state: `Fog` (GL 2.1 §3.10), `AlphaFunc` (§4.1.4), `StencilFunc`/`StencilOp`/
 //! `StencilMask` and their `Separate` forms (§4.1.5, §4.2.2), `BlendFunc`, `BlendFuncSeparate`,
-//! `BlendEquation`, `BlendEquationSeparate`, `BlendColor` (§4.1.8) and `LogicOp` (§4.1.10).
+//! `BlendEquation`, `BlendEquationSeparate`, `BlendColor` (§4.1.8), `LogicOp` (§4.1.10) and
+//! `SampleCoverage` (§4.1.3).
 //!
 //! Each command is outside-Begin/End only (§2.6.3): it raises INVALID_OPERATION there, and
 //! otherwise flushes the vertex batch before validating, so an erroneous call changes nothing
@@ -188,6 +189,23 @@ impl Context {
         } else {
             reference.clamp(0.0, 1.0)
         };
+    }
+
+    /// `glSampleCoverage` (GL 2.1 §4.1.3): SAMPLE_COVERAGE_VALUE, clamped to [0, 1] (NaN
+    /// stored as 0, as Mesa's SATURATE does), and SAMPLE_COVERAGE_INVERT. fixedgl's
+    /// framebuffers are single-sampled (SAMPLE_BUFFERS 0), so, as §4.1.3 says, the values have
+    /// no effect on rendering; they are state (multisample group, table 6.15) all the same.
+    pub fn sample_coverage(&mut self, value: f32, invert: bool) {
+        record!(self, Call::SampleCoverage(value, invert));
+        if !self.outside_begin_end() {
+            return;
+        }
+        self.state.sample_coverage_value = if value.is_nan() {
+            0.0
+        } else {
+            value.clamp(0.0, 1.0)
+        };
+        self.state.sample_coverage_invert = invert;
     }
 
     /// `glStencilFunc`: both faces (GL 2.1 §4.1.5).

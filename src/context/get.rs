@@ -367,6 +367,9 @@ impl Context {
             gl::FOG_INDEX => f(s.fog.index),
             gl::FOG_COLOR => norm(s.fog.color.to_array()),
             gl::FOG_COORD_SRC => e(s.fog.coord_src),
+            // Table 6.15 (§4.1.3): as Mesa, a float (GetIntegerv rounds) and a boolean.
+            gl::SAMPLE_COVERAGE_VALUE => f(s.sample_coverage_value),
+            gl::SAMPLE_COVERAGE_INVERT => b(s.sample_coverage_invert),
             gl::ALPHA_TEST_FUNC => e(s.alpha.func),
             gl::ALPHA_TEST_REF => norm([s.alpha.reference]),
             gl::STENCIL_FUNC => e(s.stencil.faces[FRONT].func),

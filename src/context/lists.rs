@@ -434,14 +434,20 @@ impl Context {
 }
 
 /// Is `call` a TexImage with its own proxy target (TexImage1D of PROXY_TEXTURE_1D, TexImage2D
-/// of PROXY_TEXTURE_2D or PROXY_TEXTURE_CUBE_MAP, TexImage3D of PROXY_TEXTURE_3D)? GL 2.1 §5.4:
+/// of PROXY_TEXTURE_2D or PROXY_TEXTURE_CUBE_MAP, TexImage3D of PROXY_TEXTURE_3D, and the
+/// CompressedTexImage commands of their 1D, 2D, 3D proxy)? GL 2.1 §5.4:
 /// those are executed immediately, not compiled, whatever the list's mode; another command's
 /// proxy (an INVALID_ENUM) is compiled like any error.
-fn proxy_image(call: &Call) -> bool {
+pub(crate) fn proxy_image(call: &Call) -> bool {
     match call {
         Call::TexImage1D(a) => a.0 == gl::PROXY_TEXTURE_1D,
         Call::TexImage2D(a) => matches!(a.0, gl::PROXY_TEXTURE_2D | gl::PROXY_TEXTURE_CUBE_MAP),
         Call::TexImage3D(a) => a.0 == gl::PROXY_TEXTURE_3D,
+        // CompressedTexImage as Mesa's `dlist.c` (`save_CompressedTexImage1D/2D/3D`): only the
+        // command's own 1D, 2D or 3D proxy (not PROXY_TEXTURE_CUBE_MAP) runs immediately.
+        Call::CompressedTexImage1D(a) => a.0 == gl::PROXY_TEXTURE_1D,
+        Call::CompressedTexImage2D(a) => a.0 == gl::PROXY_TEXTURE_2D,
+        Call::CompressedTexImage3D(a) => a.0 == gl::PROXY_TEXTURE_3D,
         _ => false,
     }
 }

@@ -449,12 +449,14 @@ pub use attrib::MAX_ATTRIB_STACK_DEPTH;
 pub use lists::MAX_LIST_NESTING;
 // The GL backend reads CallLists arrays as the front end does.
 #[cfg(feature = "gl")]
-pub(crate) use lists::{name_offset, name_size};
+pub(crate) use lists::{name_offset, name_size, proxy_image};
 // Fog, AlphaFunc, Stencil*, Blend*, LogicOp (context/fragment.rs)
 mod fragment;
 // Objects, images, parameters (context/texture.rs, context/texture_params.rs); the GL backend
 // shares TexImage2D's argument checks.
 pub(crate) mod texture;
+// CompressedTexImage*, CompressedTexSubImage*, GetCompressedTexImage (context/compressed.rs).
+pub(crate) mod compressed;
 mod texture_coords;
 mod texture_params;
 mod texture_residency;

@@ -595,8 +595,23 @@ impl Context {
             gl::TEXTURE_HEIGHT => lv.map_or(0, |l| l.1),
             gl::TEXTURE_DEPTH => lv.map_or(0, |l| l.2),
             gl::TEXTURE_BORDER => lv.map_or(0, |l| l.3),
+            // No image is compressed (context/compressed.rs): TEXTURE_COMPRESSED_IMAGE_SIZE of
+            // an uncompressed level, with an image or without, is INVALID_OPERATION (§6.1.3;
+            // Mesa, measured).
             gl::TEXTURE_COMPRESSED => 0,
-            gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| l.4),
+            gl::TEXTURE_COMPRESSED_IMAGE_SIZE => {
+                self.error(gl::INVALID_OPERATION);
+                return None;
+            }
+            // A generic compressed format (table 3.17) stored uncompressed answers its base
+            // format, as GL 1.3 §3.8.1 says ("internalformat is instead replaced by the
+            // corresponding base internal format") and Mesa answers.
+            gl::TEXTURE_INTERNAL_FORMAT => lv.map_or(1, |l| {
+                u32::try_from(l.4)
+                    .ok()
+                    .and_then(super::compressed::generic_compressed_base)
+                    .map_or(l.4, |b| b as i32)
+            }),
             gl::TEXTURE_RED_SIZE | gl::TEXTURE_GREEN_SIZE | gl::TEXTURE_BLUE_SIZE => {
                 bits(matches!(base, gl::RGB | gl::RGBA), 8)
             }

@@ -304,6 +304,7 @@ impl GlBackend {
             }
             Call::BlendColor(red, green, blue, alpha) => gl.blend_color(red, green, blue, alpha),
             Call::LogicOp(opcode) => gl.logic_op(opcode),
+            Call::SampleCoverage(value, invert) => gl.sample_coverage(value, invert),
             Call::GenTextures(n) => self.gen_textures(n),
             Call::DeleteTextures(n, ref textures) => self.delete_textures(n, textures),
             Call::PrioritizeTextures(ref args) => {
@@ -430,6 +431,12 @@ impl GlBackend {
             ) => gl.copy_tex_sub_image_3d(
                 target, level, xoffset, yoffset, zoffset, x, y, width, height,
             ),
+            Call::CompressedTexImage1D(..) => self.compressed_image(call),
+            Call::CompressedTexImage2D(..) => self.compressed_image(call),
+            Call::CompressedTexImage3D(..) => self.compressed_image(call),
+            Call::CompressedTexSubImage1D(..) => self.compressed_image(call),
+            Call::CompressedTexSubImage2D(..) => self.compressed_image(call),
+            Call::CompressedTexSubImage3D(..) => self.compressed_image(call),
             Call::TexParameteri(target, pname, param) => gl.tex_parameteri(target, pname, param),
             Call::TexParameterf(target, pname, param) => gl.tex_parameterf(target, pname, param),
             Call::TexParameteriv(target, pname, ref params) => {
@@ -2132,6 +2139,12 @@ impl Safe<'_> {
     pub(super) fn logic_op(self, opcode: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
         unsafe { self.0.LogicOp(opcode) }
+    }
+
+    /// `glSampleCoverage(value, invert)`.
+    pub(super) fn sample_coverage(self, value: f32, invert: bool) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.SampleCoverage(value, u8::from(invert)) }
     }
 
     /// `glBindTexture(target, texture)`.

@@ -20,7 +20,7 @@ use std::sync::Arc;
 
 use super::replay::phong_neutral;
 use super::GlBackend;
-use crate::context::{name_offset as offset, name_size};
+use crate::context::{name_offset as offset, name_size, proxy_image};
 use crate::gl;
 use crate::Call;
 
@@ -59,7 +59,9 @@ pub(crate) struct ListMirror {
 impl GlBackend {
     /// Called first for every call: copies it into the mirror of the list being defined.
     pub(crate) fn mirror_call(&mut self, call: &Call) {
-        if self.lists.depth > 0 || call.executes_immediately() {
+        // A TexImage or CompressedTexImage of its own proxy target is executed, not compiled
+        // (GL 2.1 §5.4), by the driver too.
+        if self.lists.depth > 0 || call.executes_immediately() || proxy_image(call) {
             return;
         }
         if self.lists.compiling.is_some() {

@@ -30,6 +30,8 @@ mod arrays;
 mod query;
 mod stipple;
 mod texture;
+// CompressedTexImage*, CompressedTexSubImage*: fixedgl's errors where the driver could differ
+mod compressed;
 // DrawPixels, Bitmap, PixelMap on the driver
 mod pixels;
 

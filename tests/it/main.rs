@@ -11,6 +11,7 @@ mod arrays;
 mod attrib;
 mod buffer_map;
 mod buffers;
+mod compressed_gl;
 mod error_agreement;
 mod errors;
 mod eval;

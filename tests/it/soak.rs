@@ -1397,6 +1397,8 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             arrays,
             fog,
             alpha,
+            sample_coverage_value,
+            sample_coverage_invert,
             stencil,
             blend,
             logic_op,

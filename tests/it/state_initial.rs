@@ -171,6 +171,8 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(SAMPLE_ALPHA_TO_COVERAGE, B(&[false])),
     row!(SAMPLE_ALPHA_TO_ONE, B(&[false])),
     row!(SAMPLE_COVERAGE, B(&[false])),
+    row!(SAMPLE_COVERAGE_VALUE, F(&[1.0])),
+    row!(SAMPLE_COVERAGE_INVERT, B(&[false])),
     // Tables 6.16, 6.19: texture enables and generation (unit 0).
     row!(TEXTURE_1D, B(&[false])),
     row!(TEXTURE_2D, B(&[false])),
