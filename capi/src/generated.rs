@@ -13,7 +13,7 @@ use fixedgl::{counts, Call};
 
 use crate::current::with_gl;
 use crate::manual::*;
-use crate::{args, read, unimplemented};
+use crate::{args, read};
 
 /// `glCullFace(mode)`.
 #[no_mangle]
