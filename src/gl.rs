@@ -559,6 +559,14 @@ pub const BGR: u32 = 0x80E0;
 pub const BGRA: u32 = 0x80E1;
 /// GL_EXT_abgr's pixel format: A, B, G, R in that order.
 pub const ABGR_EXT: u32 = 0x8000;
+/// GL_EXT_packed_depth_stencil's format (GL 3.0 name): a depth and a stencil index per group;
+/// also CopyPixels' type that copies both.
+pub const DEPTH_STENCIL: u32 = 0x84F9;
+/// GL_EXT_packed_depth_stencil's type (GL 3.0 name): depth in the high 24 bits, stencil in the
+/// low 8.
+pub const UNSIGNED_INT_24_8: u32 = 0x84FA;
+/// GL_EXT_packed_depth_stencil's internal format (GL 3.0 name).
+pub const DEPTH24_STENCIL8: u32 = 0x88F0;
 pub const MAX_ELEMENTS_VERTICES: u32 = 0x80E8;
 pub const MAX_ELEMENTS_INDICES: u32 = 0x80E9;
 pub const CLAMP_TO_EDGE: u32 = 0x812F;
@@ -1489,6 +1497,9 @@ pub const NAMES: &[(&str, u32)] = &[
     ("BGR", BGR),
     ("BGRA", BGRA),
     ("ABGR_EXT", ABGR_EXT),
+    ("DEPTH_STENCIL", DEPTH_STENCIL),
+    ("UNSIGNED_INT_24_8", UNSIGNED_INT_24_8),
+    ("DEPTH24_STENCIL8", DEPTH24_STENCIL8),
     ("MAX_ELEMENTS_VERTICES", MAX_ELEMENTS_VERTICES),
     ("MAX_ELEMENTS_INDICES", MAX_ELEMENTS_INDICES),
     ("CLAMP_TO_EDGE", CLAMP_TO_EDGE),

@@ -12,8 +12,11 @@
 //! an index is INVALID_ENUM, a packed type whose component count the format does not have is
 //! INVALID_OPERATION (both checked on the type first, as Mesa's `_mesa_error_check_format_and_type`
 //! does), then an unknown format or a type the format does not take is INVALID_ENUM. What GL 2.1
-//! does not have (HALF_FLOAT, RG, DEPTH_STENCIL, the integer formats) is INVALID_ENUM here; Mesa
-//! takes some of it, and the GL backend raises the GL 2.1 error itself.
+//! does not have (HALF_FLOAT, RG, the integer formats) is INVALID_ENUM here; Mesa takes some of
+//! it, and the GL backend raises the GL 2.1 error itself. GL_EXT_packed_depth_stencil's
+//! DEPTH_STENCIL format and UNSIGNED_INT_24_8 type are taken, as Mesa takes them in its GL 1.5
+//! context: each only with the other (UNSIGNED_INT_24_8 with another format is
+//! INVALID_OPERATION, DEPTH_STENCIL with another type INVALID_ENUM, as Mesa answers).
 
 use std::sync::Arc;
 
@@ -50,6 +53,9 @@ pub enum Group {
     Stencil,
     /// DEPTH_COMPONENT: one depth.
     Depth,
+    /// GL_EXT_packed_depth_stencil's DEPTH_STENCIL: a depth and a stencil index (type
+    /// UNSIGNED_INT_24_8 only).
+    DepthStencil,
 }
 
 impl Group {
@@ -60,6 +66,7 @@ impl Group {
             gl::COLOR_INDEX => Group::Index,
             gl::STENCIL_INDEX => Group::Stencil,
             gl::DEPTH_COMPONENT => Group::Depth,
+            gl::DEPTH_STENCIL => Group::DepthStencil,
             gl::RED => Group::Color(&[R]),
             gl::GREEN => Group::Color(&[G]),
             gl::BLUE => Group::Color(&[B]),
@@ -79,6 +86,7 @@ impl Group {
     pub fn components(self) -> usize {
         match self {
             Group::Color(c) => c.len(),
+            Group::DepthStencil => 2,
             _ => 1,
         }
     }
@@ -168,6 +176,8 @@ impl Ty {
             gl::UNSIGNED_INT_8_8_8_8_REV => (4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
             gl::UNSIGNED_INT_10_10_10_2 => (4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
             gl::UNSIGNED_INT_2_10_10_10_REV => (4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+            // GL_EXT_packed_depth_stencil: the depth in the high 24 bits, the index in the low 8.
+            gl::UNSIGNED_INT_24_8 => (4, &[(8, 24), (0, 8)]),
             _ => return None,
         };
         Some(Ty::Packed { size, fields })
@@ -188,13 +198,19 @@ pub struct Format {
 pub fn check(format: u32, ty: u32) -> Result<Format, u32> {
     let group = Group::of(format);
     let t = Ty::of(ty);
+    // DEPTH_STENCIL takes UNSIGNED_INT_24_8 only: any other type, packed ones included, is
+    // INVALID_ENUM (the driver's answer).
+    if group == Some(Group::DepthStencil) && ty != gl::UNSIGNED_INT_24_8 {
+        return Err(gl::INVALID_ENUM);
+    }
     match t {
         Some(Ty::Bitmap) if !group.is_some_and(Group::is_index) => return Err(gl::INVALID_ENUM),
         // Table 3.8: a packed type needs a format with as many components (RGB for the
         // three-component types; RGBA, BGRA or EXT_abgr's ABGR for the four-component ones, as
-        // Mesa).
+        // Mesa; DEPTH_STENCIL for UNSIGNED_INT_24_8).
         Some(Ty::Packed { fields, .. }) => {
             let ok = match fields.len() {
+                2 => format == gl::DEPTH_STENCIL,
                 3 => format == gl::RGB,
                 _ => matches!(format, gl::RGBA | gl::BGRA | gl::ABGR_EXT),
             };
@@ -544,16 +560,23 @@ impl Image<'_> {
                     _ => f64::from(normalized(s, bits)),
                 }
             }
+            // UNSIGNED_INT_24_8: the 24-bit field over 2^24 − 1, in double precision.
+            (ImageLayout::Bytes(l), Ty::Packed { .. }) => {
+                let (v, bits) = self.raw(l, i, j, 0);
+                f64::from(v) / f64::from((1u32 << bits.unwrap_or(1)) - 1)
+            }
             _ => 0.0,
         }
     }
 
-    /// The index of group (`i`, `j`) of a COLOR_INDEX or STENCIL_INDEX image, before any
-    /// transfer (BITMAP: 0 or 1).
+    /// The index of group (`i`, `j`) of a COLOR_INDEX, STENCIL_INDEX or DEPTH_STENCIL image,
+    /// before any transfer (BITMAP: 0 or 1).
     pub fn index(&self, i: usize, j: usize) -> i64 {
         match (&self.layout, self.format.ty) {
             (ImageLayout::Bits(b), _) => i64::from(b.bit(self.data, i, j)),
             (ImageLayout::Bytes(l), Ty::Scalar(s)) => index_value(s, self.raw(l, i, j, 0).0),
+            // UNSIGNED_INT_24_8: the low 8 bits, after the depth.
+            (ImageLayout::Bytes(l), Ty::Packed { .. }) => i64::from(self.raw(l, i, j, 1).0),
             _ => 0,
         }
     }

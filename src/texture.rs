@@ -851,7 +851,8 @@ pub fn unpack_into(
                 for i in 0..w {
                     out.push(match group {
                         Group::Index => t.index_to_rgba(maps, img.index(i, j)),
-                        Group::Depth => {
+                        // DEPTH_STENCIL data: the depth (the index is dropped).
+                        Group::Depth | Group::DepthStencil => {
                             let d = t.depth(img.depth(i, j)) as f32;
                             [d, d, d, 1.0]
                         }

@@ -343,6 +343,12 @@ impl Context {
         if self.framebuffer_incomplete() {
             return;
         }
+        // GL_EXT_packed_depth_stencil: DEPTH_STENCIL needs both buffers (Mesa's
+        // `_mesa_dest_buffer_exists`).
+        if f.group == Group::DepthStencil && !(self.state.config.depth && self.state.config.stencil)
+        {
+            return self.error(gl::INVALID_OPERATION);
+        }
         let Some(layout) = self
             .unpack_modes()
             .image_layout(f, width, height)
@@ -445,6 +451,14 @@ impl Context {
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Depth(&out))),
             Group::Stencil => gather(&gi, &gj, |i, j| t.stencil(&maps, img.index(i, j)))
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Stencil(&out))),
+            // GL 3.0 §4.3.1: written to both buffers, as CopyPixels(DEPTH_STENCIL) writes.
+            Group::DepthStencil => {
+                let depths = gather(&gi, &gj, |i, j| t.depth(img.depth(i, j)));
+                let indices = gather(&gi, &gj, |i, j| t.stencil(&maps, img.index(i, j)));
+                depths
+                    .zip(indices)
+                    .map(|(d, s)| self.draw_groups(cols, rows, n, Groups::DepthStencil(&d, &s)))
+            }
         };
         if drawn.is_none() {
             self.error(gl::OUT_OF_MEMORY);
@@ -467,8 +481,14 @@ impl Context {
     /// DEPTH_SCALE and DEPTH_BIAS) or STENCIL (shift, offset, MAP_STENCIL; written to the
     /// stencil buffer only), zoomed. The source is read whole before anything is written, so
     /// overlapping rectangles copy as if from a copy; pixels outside the window read as 0.
+    /// DEPTH_STENCIL (GL_EXT_packed_depth_stencil) reads both buffers (depths through DEPTH_SCALE
+    /// and DEPTH_BIAS, indices through the index transfer) and writes both as a DrawPixels of
+    /// DEPTH_STENCIL does (GL 3.0 §4.3.1): no fragments, only the scissor test, each index
+    /// through the stencil write mask and each depth when DepthMask is TRUE, the depth and
+    /// stencil tests ignored; no colour.
     /// Errors: INVALID_OPERATION between Begin and End, INVALID_VALUE for a negative size,
-    /// INVALID_ENUM for another type.
+    /// INVALID_ENUM for another type, INVALID_OPERATION for DEPTH_STENCIL without both a depth
+    /// and a stencil buffer (the extension's §4.3.3 rule, Mesa's `_mesa_source_buffer_exists`).
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, type_: u32) {
         record!(self, Call::CopyPixels(x, y, width, height, type_));
         if self.begin_mode.is_some() {
@@ -477,11 +497,17 @@ impl Context {
         if width < 0 || height < 0 {
             return self.error(gl::INVALID_VALUE);
         }
-        if !matches!(type_, gl::COLOR | gl::DEPTH | gl::STENCIL) {
+        if !matches!(
+            type_,
+            gl::COLOR | gl::DEPTH | gl::STENCIL | gl::DEPTH_STENCIL
+        ) {
             return self.error(gl::INVALID_ENUM);
         }
         if self.framebuffer_incomplete() {
             return;
+        }
+        if type_ == gl::DEPTH_STENCIL && !(self.state.config.depth && self.state.config.stencil) {
+            return self.error(gl::INVALID_OPERATION);
         }
         // An empty rectangle writes no feedback token either (Mesa's `_mesa_CopyPixels`).
         if !self.state.raster_pos.valid
@@ -491,6 +517,12 @@ impl Context {
         {
             return;
         }
+        self.copy_rect(x, y, width, height, type_);
+    }
+
+    /// The copy of [`Context::copy_pixels`], once its errors are checked and its feedback token
+    /// written (`width`, `height` > 0, raster position valid).
+    fn copy_rect(&mut self, x: i32, y: i32, width: i32, height: i32, type_: u32) {
         let t = self.state.pixel;
         let maps = std::sync::Arc::clone(&self.state.pixel_maps);
         let r = self.state.raster_pos.window;
@@ -530,10 +562,23 @@ impl Context {
                 })
                 .map(|out| self.draw_groups(cols, rows, n, Groups::Depth(&out)))
             }
-            _ => gather(&gi, &gj, |i, j| {
+            gl::STENCIL => gather(&gi, &gj, |i, j| {
                 t.stencil(&maps, at(i, j).map_or(0, |(_, _, s)| i64::from(s)))
             })
             .map(|out| self.draw_groups(cols, rows, n, Groups::Stencil(&out))),
+            // DEPTH_STENCIL: both read first, then written together.
+            _ => {
+                let max = f64::from(crate::cpu::framebuffer::DEPTH_MAX);
+                let depths = gather(&gi, &gj, |i, j| {
+                    t.depth(at(i, j).map_or(0.0, |(_, d, _)| f64::from(d) / max))
+                });
+                let indices = gather(&gi, &gj, |i, j| {
+                    t.stencil(&maps, at(i, j).map_or(0, |(_, _, s)| i64::from(s)))
+                });
+                depths
+                    .zip(indices)
+                    .map(|(d, s)| self.draw_groups(cols, rows, n, Groups::DepthStencil(&d, &s)))
+            }
         };
         if drawn.is_none() {
             self.error(gl::OUT_OF_MEMORY);

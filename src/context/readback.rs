@@ -59,6 +59,8 @@ impl Context {
         let missing = match f.group {
             Group::Depth => !self.state.config.depth,
             Group::Stencil => !self.state.config.stencil,
+            // GL_EXT_packed_depth_stencil: both buffers.
+            Group::DepthStencil => !(self.state.config.depth && self.state.config.stencil),
             _ => false,
         };
         if missing {
@@ -126,6 +128,13 @@ impl Context {
                         let z = f64::from(d) / f64::from((1u32 << 24) - 1);
                         comps[0] = Value::Norm(t.depth(z));
                         1
+                    }
+                    // The depth as DEPTH_COMPONENT's, the index as STENCIL_INDEX's.
+                    Group::DepthStencil => {
+                        let z = f64::from(d) / f64::from((1u32 << 24) - 1);
+                        comps[0] = Value::Norm(t.depth(z));
+                        comps[1] = Value::Int(u32::from(t.stencil(&maps, i64::from(s))));
+                        2
                     }
                     _ => {
                         let v = if t.stencil_is_identity() {

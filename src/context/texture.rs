@@ -186,9 +186,11 @@ pub fn strip_border(lv: Level) -> Level {
 /// Mesa's `texture_formats_agree`): depth data only for a depth format and the reverse; colour
 /// data and colour indices (made RGBA through the I_TO_* maps) for a colour format; never
 /// stencil indices (INVALID_OPERATION, Mesa's error for a format no texture takes).
+/// GL_EXT_packed_depth_stencil's DEPTH_STENCIL data counts as depth data, as Mesa counts it: a
+/// depth texture takes its depths, the indices dropped.
 fn formats_agree(group: Group, base: u32) -> bool {
     match group {
-        Group::Depth => base == gl::DEPTH_COMPONENT,
+        Group::Depth | Group::DepthStencil => base == gl::DEPTH_COMPONENT,
         Group::Color(_) | Group::Index => base != gl::DEPTH_COMPONENT,
         Group::Stencil => false,
     }
@@ -764,8 +766,9 @@ impl Context {
         self.write_box(target, level, offset, size, &texels);
     }
 
-    /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target, a specified
-    /// level, the box inside it. Returns the level's base format, or None after raising.
+    /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target (TexImage's
+    /// but the proxies, INVALID_ENUM as Mesa's `legal_texsubimage_target`), a specified level,
+    /// the box inside it. Returns the level's base format, or None after raising.
     fn check_sub_image(
         &mut self,
         dims: usize,
@@ -774,7 +777,7 @@ impl Context {
         offset: [i32; 3],
         size: [i32; 3],
     ) -> Option<u32> {
-        if !image_target_ok(dims, target) {
+        if !image_target_ok(dims, target) || is_proxy(target) {
             self.error(gl::INVALID_ENUM);
             return None;
         }
@@ -1179,7 +1182,11 @@ impl Context {
         else {
             return;
         };
-        if (f.group == Group::Depth) != (lv.base == gl::DEPTH_COMPONENT) {
+        // DEPTH_STENCIL only from a depth-stencil image, which no internal format here makes
+        // (Mesa's INVALID_OPERATION for a format that does not match the image's).
+        if f.group == Group::DepthStencil
+            || (f.group == Group::Depth) != (lv.base == gl::DEPTH_COMPONENT)
+        {
             return self.error(gl::INVALID_OPERATION);
         }
         // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).

@@ -21,7 +21,7 @@ use rayon::prelude::*;
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::{
-    scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
+    depth_unorm, scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
 };
 use super::texture::Sampler;
 use super::Renderer;
@@ -40,6 +40,10 @@ pub enum Groups<'a> {
     Depth(&'a [f64]),
     /// Stencil indices (STENCIL_INDEX, CopyPixels STENCIL): written to the stencil buffer only.
     Stencil(&'a [u8]),
+    /// Depths in [0, 1] and stencil indices of the same groups (GL_EXT_packed_depth_stencil's
+    /// DEPTH_STENCIL, CopyPixels DEPTH_STENCIL): written to the depth and stencil buffers only,
+    /// each through its write mask (GL 3.0 §4.3.1).
+    DepthStencil(&'a [f64], &'a [u8]),
     /// A bitmap's bits (nonzero: a fragment of the raster colour at the raster depth).
     Bits(&'a [u8]),
 }
@@ -351,6 +355,19 @@ fn fragment(
                 return;
             };
             *dst = (*dst & !stencil_mask) | (v & stencil_mask);
+            return;
+        }
+        Groups::DepthStencil(d, s) => {
+            // GL 3.0 §4.3.1 (EXT_packed_depth_stencil): as a stencil index, and the depth is
+            // written too when DepthMask is TRUE, whatever the depth test; no colour.
+            if let (Some(&v), Some(dst)) = (s.get(g), bufs.stencil.get_mut(i)) {
+                *dst = (*dst & !stencil_mask) | (v & stencil_mask);
+            }
+            if fctx.depth_mask {
+                if let (Some(&z), Some(dst)) = (d.get(g), bufs.depth.get_mut(i)) {
+                    *dst = depth_unorm(z);
+                }
+            }
             return;
         }
     };

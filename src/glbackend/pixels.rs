@@ -6,7 +6,7 @@
 //! driver's own unpack state (queried at the call, the same `PixelModes` layout the front end
 //! uses). A short recording gets the front end's error without the driver seeing the pointer.
 //! DrawPixels' format and type are checked here with the front end's GL 2.1 table
-//! (`pixels::check`): the driver also takes GL 3.0's HALF_FLOAT, RG and DEPTH_STENCIL, which GL
+//! (`pixels::check`): the driver also takes GL 3.0's HALF_FLOAT and RG, which GL
 //! 2.1 does not have. I_TO_I's size must be a power of two in GL 2.1 (§3.6.3), which Mesa does
 //! not check, so that INVALID_VALUE is raised here too.
 

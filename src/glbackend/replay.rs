@@ -248,10 +248,13 @@ fn gl21_error(call: &Call) -> Option<u32> {
         Call::BlendFuncSeparate(_, d, _, da) => {
             d == gl::SRC_ALPHA_SATURATE || da == gl::SRC_ALPHA_SATURATE
         }
-        // GL 2.1 §4.3.3: COLOR, DEPTH or STENCIL; a newer driver also takes DEPTH_STENCIL (after
-        // its INVALID_VALUE for a negative size, which stays the driver's).
+        // GL 2.1 §4.3.3: COLOR, DEPTH or STENCIL, and GL_EXT_packed_depth_stencil's
+        // DEPTH_STENCIL, as the driver (after its INVALID_VALUE for a negative size, which stays
+        // the driver's). A newer driver takes its own further types (NV_copy_depth_to_color).
         Call::CopyPixels(_, _, w, h, t) => {
-            w >= 0 && h >= 0 && !matches!(t, gl::COLOR | gl::DEPTH | gl::STENCIL)
+            w >= 0
+                && h >= 0
+                && !matches!(t, gl::COLOR | gl::DEPTH | gl::STENCIL | gl::DEPTH_STENCIL)
         }
         // SAMPLES_PASSED is GL 2.1's only query target (§4.1.7); a 4.5 driver takes more.
         Call::BeginQuery(t, _) | Call::EndQuery(t) => t != gl::SAMPLES_PASSED,

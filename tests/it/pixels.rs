@@ -171,6 +171,52 @@ fn copy_pixels_applies_depth_scale_and_index_offset() {
 }
 
 #[test]
+fn copy_pixels_depth_stencil_copies_both_buffers() {
+    let mut c = ctx(16, 8);
+    c.clear_depth(0.5);
+    c.clear_stencil(3);
+    c.clear(gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
+    // GL 3.0 §4.3.1: the depth and stencil tests are ignored.
+    c.enable(gl::DEPTH_TEST);
+    c.depth_func(gl::NEVER);
+    c.enable(gl::STENCIL_TEST);
+    c.stencil_func(gl::NEVER, 0, 0xFF);
+    c.pixel_transferf(gl::DEPTH_BIAS, 0.125);
+    c.pixel_transferi(gl::INDEX_OFFSET, 2);
+    c.window_pos2i(8, 0);
+    c.copy_pixels(0, 0, 4, 4, gl::DEPTH_STENCIL);
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    c.pixel_transferf(gl::DEPTH_BIAS, 0.0);
+    c.pixel_transferi(gl::INDEX_OFFSET, 0);
+    // Pixel 7 untouched; pixel 8 copied through each buffer's own transfer.
+    let mut raw = [0u8; 8];
+    c.read_pixels(7, 0, 2, 1, gl::DEPTH_COMPONENT, gl::FLOAT, &mut raw);
+    let v: Vec<f32> = raw
+        .chunks(4)
+        .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
+    assert!(
+        (v[0] - 0.5).abs() < 1e-6 && (v[1] - 0.625).abs() < 1e-6,
+        "{v:?}"
+    );
+    let mut s = [0u8; 2];
+    c.read_pixels(7, 0, 2, 1, gl::STENCIL_INDEX, gl::UNSIGNED_BYTE, &mut s);
+    assert_eq!(s, [3, 5]);
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    // Both buffers are needed: INVALID_OPERATION, nothing written.
+    for (depth, stencil) in [(true, false), (false, true)] {
+        let config = fixedgl::ContextConfig {
+            depth,
+            stencil,
+            ..fixedgl::ContextConfig::default()
+        };
+        let mut c = fixedgl::Context::with_config(4, 4, config).expect("context");
+        c.copy_pixels(0, 0, 1, 1, gl::DEPTH_STENCIL);
+        assert_eq!(c.get_error(), gl::INVALID_OPERATION, "{depth} {stencil}");
+    }
+}
+
+#[test]
 fn stencil_indices_take_the_index_transfer() {
     let mut c = ctx(8, 4);
     c.pixel_transferi(gl::INDEX_SHIFT, 1);

@@ -440,6 +440,90 @@ fn copy_pixels_matches_the_driver() {
         c.color3f(1.0, 1.0, 0.0);
         c.rectf(0.0, 0.0, 64.0, 32.0);
     });
+    // GL_EXT_packed_depth_stencil: both buffers copied and written as GL 3.0 §4.3.1 says: the
+    // depth and stencil tests and the stencil operations (all set to change things here) are
+    // ignored; the scissor box, the stencil write mask and DepthMask hold. Zoomed and
+    // overlapping, llvmpipe draws it with a stencil-exporting shader; unzoomed and apart, it
+    // blits (which honours the scissor box but not the write masks: those stay at their
+    // defaults there). The transfer stays the identity (llvmpipe ignores it, see the docs).
+    let scene = |c: &mut Context| {
+        c.enable(gl::DEPTH_TEST);
+        c.enable(gl::STENCIL_TEST);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::REPLACE);
+        c.stencil_func(gl::ALWAYS, 3, 0xFF);
+        c.color3f(1.0, 0.0, 0.0);
+        c.begin(gl::TRIANGLES);
+        c.vertex3f(0.0, 0.0, -0.9);
+        c.vertex3f(40.0, 0.0, 0.5);
+        c.vertex3f(0.0, 30.0, 0.9);
+        c.end();
+        c.stencil_func(gl::ALWAYS, 7, 0xFF);
+        c.rectf(20.0, 5.0, 30.0, 25.0);
+        c.stencil_func(gl::EQUAL, 3, 0xFF);
+        c.stencil_op(gl::INCR, gl::INCR, gl::DECR);
+        c.depth_func(gl::LESS);
+        c.color3f(0.0, 1.0, 0.0);
+    };
+    // What the buffers hold, shown in colour: a rectangle for each stencil value, then a quad
+    // at depth 0.5 where the stored depth is less.
+    let show = |c: &mut Context| {
+        c.disable(gl::SCISSOR_TEST);
+        c.stencil_mask(0xFF);
+        c.stencil_op(gl::KEEP, gl::KEEP, gl::KEEP);
+        c.depth_func(gl::ALWAYS);
+        c.depth_mask(false);
+        for (k, col) in [
+            (1, [0.5, 0.0, 0.0]),
+            (2, [0.5, 0.5, 0.5]),
+            (3, [0.0, 0.0, 1.0]),
+            (4, [1.0, 1.0, 0.0]),
+            (5, [0.0, 0.0, 0.5]),
+            (6, [0.0, 0.5, 0.0]),
+            (7, [1.0, 0.0, 1.0]),
+        ] {
+            c.stencil_func(gl::EQUAL, k, 0xFF);
+            c.color3f(col[0], col[1], col[2]);
+            c.rectf(0.0, 0.0, 64.0, 32.0);
+        }
+        c.disable(gl::STENCIL_TEST);
+        c.depth_func(gl::GREATER);
+        c.color3f(0.0, 1.0, 1.0);
+        c.begin(gl::QUADS);
+        c.vertex3f(0.0, 0.0, 0.0);
+        c.vertex3f(64.0, 0.0, 0.0);
+        c.vertex3f(64.0, 32.0, 0.0);
+        c.vertex3f(0.0, 32.0, 0.0);
+        c.end();
+    };
+    same(
+        "DEPTH_STENCIL, zoomed, overlapping, masked",
+        64,
+        32,
+        0,
+        |c| {
+            scene(c);
+            c.raster_pos2i(6, 3);
+            c.pixel_zoom(2.0, 1.0);
+            c.stencil_mask(0x05);
+            c.copy_pixels(0, 0, 28, 24, gl::DEPTH_STENCIL);
+            // DepthMask FALSE: only the indices (all bits) move.
+            c.stencil_mask(0xFF);
+            c.depth_mask(false);
+            c.pixel_zoom(1.0, 2.0);
+            c.raster_pos2i(40, 2);
+            c.copy_pixels(10, 4, 12, 14, gl::DEPTH_STENCIL);
+            c.pixel_zoom(1.0, 1.0);
+            show(c);
+        },
+    );
+    same("DEPTH_STENCIL, unzoomed, scissored", 64, 32, 0, |c| {
+        scene(c);
+        c.enable(gl::SCISSOR_TEST);
+        c.scissor(36, 4, 20, 30);
+        c.raster_pos2i(34, 3);
+        c.copy_pixels(0, 0, 28, 24, gl::DEPTH_STENCIL);
+        show(c);
+    });
 }
 
 #[test]
@@ -693,6 +777,7 @@ fn errors_match_the_driver() {
         gl::BGRA,
         gl::LUMINANCE,
         gl::LUMINANCE_ALPHA,
+        gl::DEPTH_STENCIL,
         gl::TRIANGLES,
         gl::RGBA8,
     ];
@@ -717,6 +802,7 @@ fn errors_match_the_driver() {
         gl::UNSIGNED_INT_8_8_8_8_REV,
         gl::UNSIGNED_INT_10_10_10_2,
         gl::UNSIGNED_INT_2_10_10_10_REV,
+        gl::UNSIGNED_INT_24_8,
         gl::RGBA,
         gl::DOUBLE,
     ];
@@ -758,7 +844,14 @@ fn errors_match_the_driver() {
             }
         }
     }
-    for t in [gl::COLOR, gl::DEPTH, gl::STENCIL, gl::RGBA, 0] {
+    for t in [
+        gl::COLOR,
+        gl::DEPTH,
+        gl::STENCIL,
+        gl::DEPTH_STENCIL,
+        gl::RGBA,
+        0,
+    ] {
         for (w, h) in [(2, 2), (-1, 2)] {
             cpu.copy_pixels(0, 0, w, h, t);
             // SAFETY: context current; no pointers.
@@ -947,4 +1040,142 @@ fn pixel_map_sizes_follow_gl_2_1() {
     drv.replay(&cpu.stop_recording());
     assert_eq!(cpu.get_error(), gl::INVALID_OPERATION);
     assert_eq!(drv.get_error(), gl::INVALID_OPERATION);
+}
+
+/// Reads `format`/`ty` (`bpp` bytes a pixel) of the whole `w` x `h` window from both backends.
+fn read_both(
+    cpu: &mut Context,
+    drv: &mut fixedgl::glbackend::GlBackend,
+    (w, h): (i32, i32),
+    format: u32,
+    ty: u32,
+    bpp: usize,
+) -> (Vec<u8>, Vec<u8>) {
+    let n = w as usize * h as usize * bpp;
+    let (mut a, mut b) = (vec![0xEEu8; n + 8], vec![0xEEu8; n + 8]);
+    cpu.read_pixels(0, 0, w, h, format, ty, &mut a);
+    // SAFETY: the backend's context is current (replay made it so); the driver writes w x h
+    // pixels of `bpp` bytes (rows 4-aligned: `bpp` · w is a multiple of 4 here) into n + 8 bytes.
+    unsafe {
+        drv.raw()
+            .ReadPixels(0, 0, w, h, format, ty, b.as_mut_ptr().cast())
+    };
+    assert_eq!(cpu.get_error(), gl::NO_ERROR, "{format:#x} {ty:#x}");
+    assert_eq!(drv.get_error(), gl::NO_ERROR, "{format:#x} {ty:#x}");
+    (a, b)
+}
+
+/// Asserts that two UNSIGNED_INT_24_8 images (`n` words) hold the same indices and depths
+/// within 1 in 2^24 − 1: llvmpipe draws depths through a 32-bit float, whose rounding moves some
+/// 24-bit values by one (docs/conformance.md); fixedgl keeps them exactly.
+fn same_24_8(label: &str, a: &[u8], b: &[u8], n: usize) {
+    let words = |v: &[u8]| -> Vec<u32> {
+        v.chunks_exact(4)
+            .take(n)
+            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+            .collect()
+    };
+    let (a, b) = (words(a), words(b));
+    for (k, (p, q)) in a.iter().zip(&b).enumerate() {
+        assert_eq!(p & 0xFF, q & 0xFF, "{label}: index of pixel {k}");
+        assert!(
+            (p >> 8).abs_diff(q >> 8) <= 1,
+            "{label}: depth of pixel {k}: {:#x} {:#x}",
+            p >> 8,
+            q >> 8
+        );
+    }
+}
+
+/// GL_EXT_packed_depth_stencil's DrawPixels and ReadPixels of DEPTH_STENCIL / UNSIGNED_INT_24_8:
+/// both buffers written (the depth and stencil tests ignored, the write masks and the zoom
+/// applied, GL 3.0 §4.3.1) and read back through the transfer: the indices exactly the
+/// driver's, the depths within 1 (see `same_24_8`), and fixedgl's depths exactly the values
+/// drawn.
+#[test]
+fn depth_stencil_pixels_match_the_driver() {
+    let (w, h) = (16i32, 8i32);
+    let Some(mut drv) = test_backend(w as u32, h as u32) else {
+        return;
+    };
+    let mut cpu = Context::new(w as u32, h as u32).expect("context");
+    let packed: Vec<u32> = (0..(w * h) as u32)
+        .map(|k| ((k.wrapping_mul(104_729) + 12_345) & 0xFF_FFFF) << 8 | ((k * 37 + 5) & 0xFF))
+        .collect();
+    let bytes: Vec<u8> = packed.iter().flat_map(|v| v.to_ne_bytes()).collect();
+    cpu.start_recording();
+    cpu.enable(gl::DEPTH_TEST);
+    cpu.depth_func(gl::NEVER);
+    cpu.enable(gl::STENCIL_TEST);
+    cpu.stencil_func(gl::NEVER, 0, 0xFF);
+    cpu.stencil_op(gl::INCR, gl::INCR, gl::INCR);
+    cpu.window_pos2i(0, 0);
+    cpu.draw_pixels(w, h, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &bytes);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    let n = (w * h) as usize;
+    same_24_8("DEPTH_STENCIL read back", &a, &b, n);
+    assert_eq!(a[..bytes.len()], bytes[..], "the values drawn");
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::STENCIL_INDEX,
+        gl::UNSIGNED_BYTE,
+        1,
+    );
+    assert_eq!(a, b, "STENCIL_INDEX");
+    // Read through the depth and index transfers.
+    cpu.start_recording();
+    cpu.push_attrib(gl::PIXEL_MODE_BIT);
+    cpu.pixel_transferf(gl::DEPTH_SCALE, 0.5);
+    cpu.pixel_transferf(gl::DEPTH_BIAS, 0.25);
+    cpu.pixel_transferi(gl::INDEX_SHIFT, 1);
+    cpu.pixel_transferi(gl::INDEX_OFFSET, 3);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    same_24_8("DEPTH_STENCIL through the transfer", &a, &b, n);
+    // Zoomed, through the stencil write mask, DepthMask FALSE then TRUE.
+    cpu.start_recording();
+    cpu.pop_attrib();
+    cpu.stencil_mask(0x0F);
+    cpu.depth_mask(false);
+    cpu.pixel_zoom(2.0, 1.0);
+    cpu.window_pos2i(3, 1);
+    let rev: Vec<u8> = bytes.iter().rev().copied().collect();
+    cpu.draw_pixels(5, 4, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &rev);
+    cpu.stencil_mask(0xF0);
+    cpu.depth_mask(true);
+    cpu.pixel_zoom(1.0, 2.0);
+    cpu.window_pos2i(9, 2);
+    cpu.draw_pixels(6, 3, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, &rev);
+    drv.replay(&cpu.stop_recording());
+    let (a, b) = read_both(
+        &mut cpu,
+        &mut drv,
+        (w, h),
+        gl::DEPTH_STENCIL,
+        gl::UNSIGNED_INT_24_8,
+        4,
+    );
+    same_24_8("zoomed and masked", &a, &b, n);
+    assert_ne!(
+        a[..bytes.len()],
+        bytes[..],
+        "the second draws changed something"
+    );
 }

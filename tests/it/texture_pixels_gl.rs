@@ -273,7 +273,58 @@ fn pixel_data_errors_match_the_driver() {
             tex(DEPTH_COMPONENT, COLOR_INDEX, UNSIGNED_BYTE, 4),
             INVALID_OPERATION,
         ),
+        // GL_EXT_packed_depth_stencil: DEPTH_STENCIL data is depth data to a depth texture;
+        // UNSIGNED_INT_24_8 only with DEPTH_STENCIL and the reverse.
+        (
+            tex(DEPTH_COMPONENT, DEPTH_STENCIL, UNSIGNED_INT_24_8, 16),
+            NO_ERROR,
+        ),
+        (sub(DEPTH_STENCIL, UNSIGNED_INT_24_8, 16), NO_ERROR),
+        (
+            sub(DEPTH_COMPONENT, UNSIGNED_INT_24_8, 16),
+            INVALID_OPERATION,
+        ),
+        (sub(DEPTH_STENCIL, UNSIGNED_INT, 16), INVALID_ENUM),
+        (
+            tex(RGBA, DEPTH_STENCIL, UNSIGNED_INT_24_8, 16),
+            INVALID_OPERATION,
+        ),
+        (
+            tex(DEPTH_COMPONENT, DEPTH_COMPONENT, UNSIGNED_INT_24_8, 16),
+            INVALID_OPERATION,
+        ),
+        (tex(DEPTH_COMPONENT, DEPTH_STENCIL, FLOAT, 16), INVALID_ENUM),
         (tex(RGBA, RGBA, UNSIGNED_BYTE, 16), NO_ERROR),
+        (sub(DEPTH_STENCIL, UNSIGNED_INT_24_8, 16), INVALID_OPERATION),
+        // §3.8.2: no proxy target for TexSubImage, even with a proxy image there.
+        (
+            Call::TexImage2D(Box::new((
+                PROXY_TEXTURE_2D,
+                0,
+                RGBA as i32,
+                2,
+                2,
+                0,
+                RGBA,
+                UNSIGNED_BYTE,
+                None,
+            ))),
+            NO_ERROR,
+        ),
+        (
+            Call::TexSubImage2D(Box::new((
+                PROXY_TEXTURE_2D,
+                0,
+                0,
+                0,
+                2,
+                2,
+                RGBA,
+                UNSIGNED_BYTE,
+                vec![7u8; 16],
+            ))),
+            INVALID_ENUM,
+        ),
         (sub(BGRA, UNSIGNED_SHORT_1_5_5_5_REV, 8), NO_ERROR),
         (sub(RGB, UNSIGNED_SHORT_1_5_5_5_REV, 8), INVALID_OPERATION),
         (sub(COLOR_INDEX, UNSIGNED_BYTE, 4), NO_ERROR),
@@ -287,6 +338,51 @@ fn pixel_data_errors_match_the_driver() {
         assert_eq!(cpu.get_error(), *expected, "CPU after row {i}: {call:?}");
         assert_eq!(gl.get_error(), *expected, "GL after row {i}: {call:?}");
     }
+}
+
+/// GL_EXT_packed_depth_stencil's DEPTH_STENCIL / UNSIGNED_INT_24_8 data makes a DEPTH_COMPONENT
+/// texture of its depths (the indices dropped, as Mesa drops them), by TexImage and by
+/// TexSubImage through DEPTH_SCALE and DEPTH_BIAS; drawn as luminance.
+#[test]
+fn depth_stencil_data_makes_the_depth_textures_the_driver_makes() {
+    use fixedgl::gl::*;
+    let data: Vec<u8> = (0..16u32)
+        .flat_map(|k| {
+            ((((k * 0x0F_1234 + 0x3456) & 0xFF_FFFF) << 8) | ((k * 41) & 0xFF)).to_ne_bytes()
+        })
+        .collect();
+    let Some((n, first)) = cpu_vs_gl(16, 1, |c| {
+        c.tex_image_2d(
+            TEXTURE_2D,
+            0,
+            DEPTH_COMPONENT as i32,
+            4,
+            4,
+            0,
+            DEPTH_STENCIL,
+            UNSIGNED_INT_24_8,
+            Some(&data),
+        );
+        c.pixel_transferf(DEPTH_SCALE, 0.5);
+        c.pixel_transferf(DEPTH_BIAS, 0.25);
+        c.tex_sub_image_2d(
+            TEXTURE_2D,
+            0,
+            1,
+            1,
+            2,
+            2,
+            DEPTH_STENCIL,
+            UNSIGNED_INT_24_8,
+            &data,
+        );
+        c.pixel_transferf(DEPTH_SCALE, 1.0);
+        c.pixel_transferf(DEPTH_BIAS, 0.0);
+        draw_textured(c);
+    }) else {
+        return;
+    };
+    assert_eq!(n, 0, "{first}");
 }
 
 /// GetTexImage packs into the packed types field by field (§6.1.4 through §4.3.2, table 3.8):
@@ -359,6 +455,8 @@ fn get_tex_image_packs_the_packed_types() {
         (STENCIL_INDEX, UNSIGNED_BYTE, INVALID_ENUM),
         (COLOR_INDEX, BITMAP, INVALID_ENUM),
         (RGBA, BITMAP, INVALID_ENUM),
+        // DEPTH_STENCIL only from a depth-stencil image (Mesa's format mismatch).
+        (DEPTH_STENCIL, UNSIGNED_INT_24_8, INVALID_OPERATION),
     ] {
         c.get_tex_image(TEXTURE_2D, 0, format, ty, &mut out);
         assert_eq!(c.get_error(), want, "{format:#x} {ty:#x}");
