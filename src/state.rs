@@ -50,6 +50,11 @@ pub struct ContextConfig {
     /// An accumulation buffer of 16 signed bits per channel, as llvmpipe's (ACCUM_*_BITS 16;
     /// GL 2.1 §4.2.4). Without one `Accum` is INVALID_OPERATION. Default: false.
     pub accum: bool,
+    /// Alpha bits in the colour buffers (ALPHA_BITS 8). Without them (ALPHA_BITS 0, an RGB
+    /// visual or EGL config) alpha writes are dropped and the destination alpha reads as 1, in
+    /// blending, ReadPixels, CopyPixels, CopyTexImage and Accum (GL 2.1 §4.1.8, §4.3.2).
+    /// Default: true.
+    pub alpha: bool,
 }
 
 impl Default for ContextConfig {
@@ -59,6 +64,7 @@ impl Default for ContextConfig {
             depth: true,
             stencil: true,
             accum: false,
+            alpha: true,
         }
     }
 }
@@ -433,6 +439,11 @@ pub struct State {
     pub depth_mask: bool,
     pub stencil_writemask: u32,
     pub clear_color: Vec4,
+    /// `INDEX_CLEAR_VALUE`: what `ClearIndex` stored, truncated to an unsigned integer as Mesa
+    /// does (`(GLuint) c`); an RGBA framebuffer never uses it.
+    pub clear_index: u32,
+    /// `INDEX_WRITEMASK`: all ones at first; an RGBA framebuffer never uses it.
+    pub index_writemask: u32,
     pub clear_depth: f64,
     pub clear_stencil: i32,
     /// `DRAW_BUFFER` (table 6.22) as given to DrawBuffer: FRONT when single-buffered, BACK when
@@ -487,6 +498,14 @@ pub struct State {
 }
 
 impl State {
+    /// COLOR_WRITEMASK as the colour buffers take it: without alpha bits the alpha channel is
+    /// never written, so the stored alpha stays 1 (255), which is what the destination alpha
+    /// reads as in a framebuffer without alpha (GL 2.1 §4.1.8, §4.3.2).
+    pub(crate) fn color_write_mask(&self) -> [bool; 4] {
+        let [r, g, b, a] = self.color_mask;
+        [r, g, b, a && self.config.alpha]
+    }
+
     /// The initial state of a context whose framebuffer is `width` x `height`, of the default
     /// [`ContextConfig`] (single-buffered, depth and stencil, no accumulation buffer).
     pub fn new(width: u32, height: u32) -> Self {
@@ -544,6 +563,8 @@ impl State {
             // fragment ops: "1's" for the 8-bit stencil buffer, 0xFF as the driver reports it.
             stencil_writemask: 0xFF,
             clear_color: Vec4::ZERO,
+            clear_index: 0,
+            index_writemask: u32::MAX,
             clear_depth: 1.0,
             clear_stencil: 0,
             draw_buffer: buffer,

@@ -1,5 +1,6 @@
 //! EGL 1.4 for headless programs: the surfaceless platform (`EGL_MESA_platform_surfaceless`)
-//! and the default display, one RGBA8 config with 24-bit depth and 8-bit stencil, pbuffer
+//! and the default display, two configs with 24-bit depth and 8-bit stencil (RGBA8, and RGB8
+//! without alpha bits, which a caller not asking for alpha gets first, as from Mesa), pbuffer
 //! surfaces, and contexts without a surface (`EGL_KHR_surfaceless_context`). That is what
 //! waffle (piglit's window-system layer) and headless renderers use. Window surfaces are not
 //! offered: programs with windows use GLX (`EGL_BAD_NATIVE_WINDOW`, said once on stderr).
@@ -100,8 +101,13 @@ const CLIENT_EXTENSIONS: &CStr =
 const DISPLAY_EXTENSIONS: &CStr = c"EGL_KHR_create_context EGL_KHR_surfaceless_context";
 /// The one display.
 static DISPLAY: u8 = 0;
-/// The one config: RGBA8, depth 24, stencil 8, pbuffers, OpenGL.
-static CONFIG: u8 = 0;
+/// The RGBA8 config (EGL_CONFIG_ID 1): depth 24, stencil 8, pbuffers, OpenGL.
+static CONFIG: u8 = 1;
+/// The RGB8 config (EGL_CONFIG_ID 2): as [`CONFIG`] without alpha bits (ALPHA_BITS 0), as
+/// Mesa's XRGB8888 configs. EGL 1.4 §3.4.1.2 sorts it first for a caller that does not ask for
+/// alpha (equal colour bits counted over the components asked for, then the smaller
+/// EGL_BUFFER_SIZE), which is how piglit's RGB visuals get a framebuffer without alpha.
+static CONFIG_RGB: u8 = 2;
 const MAX_SIDE: EGLint = 16384;
 
 thread_local! {
@@ -114,6 +120,26 @@ thread_local! {
 static INITIALIZED: Mutex<bool> = Mutex::new(false);
 /// Live pbuffer surfaces: address → size.
 static SURFACES: Mutex<Vec<(usize, (u32, u32))>> = Mutex::new(Vec::new());
+/// The EGL_CONFIG_ID each live surface and context was made with (RGBA8's 1 when missing).
+static CONFIG_IDS: Mutex<Vec<(usize, EGLint)>> = Mutex::new(Vec::new());
+
+fn remember_config(handle: usize, id: EGLint) {
+    let mut all = CONFIG_IDS.lock().unwrap_or_else(|e| e.into_inner());
+    all.retain(|(h, _)| *h != handle);
+    all.push((handle, id));
+}
+
+fn forget_config(handle: usize) {
+    let mut all = CONFIG_IDS.lock().unwrap_or_else(|e| e.into_inner());
+    all.retain(|(h, _)| *h != handle);
+}
+
+fn config_id_of(handle: Handle) -> EGLint {
+    let all = CONFIG_IDS.lock().unwrap_or_else(|e| e.into_inner());
+    all.iter()
+        .find(|(h, _)| *h == handle as usize)
+        .map_or(1, |(_, id)| *id)
+}
 
 fn set_error(e: EGLint) {
     let _ = ERROR.try_with(|c| c.set(e));
@@ -130,6 +156,30 @@ fn display() -> Handle {
 
 fn config() -> Handle {
     std::ptr::addr_of!(CONFIG).cast_mut().cast()
+}
+
+fn config_rgb() -> Handle {
+    std::ptr::addr_of!(CONFIG_RGB).cast_mut().cast()
+}
+
+/// EGL_CONFIG_ID of the RGBA8 config (`alpha`) or the RGB8 one.
+fn config_id(alpha: bool) -> EGLint {
+    if alpha {
+        1
+    } else {
+        2
+    }
+}
+
+/// Whether `cfg`, one of our configs, has alpha bits; `None` for what is not a config of ours.
+fn config_alpha(cfg: Handle) -> Option<bool> {
+    if cfg == config() {
+        Some(true)
+    } else if cfg == config_rgb() {
+        Some(false)
+    } else {
+        None
+    }
 }
 
 /// `Ok` for our display once initialised; the EGL error otherwise.
@@ -159,15 +209,17 @@ unsafe fn attributes(list: *const EGLint) -> Vec<(EGLint, EGLint)> {
     out
 }
 
-/// The one config's attributes; `None` for what is not a config attribute.
-fn config_attrib(attr: EGLint) -> Option<EGLint> {
+/// A config's attributes (`alpha`: the RGBA8 one, else the RGB8 one); `None` for what is not a
+/// config attribute.
+fn config_attrib(alpha: bool, attr: EGLint) -> Option<EGLint> {
     Some(match attr {
-        EGL_BUFFER_SIZE => 32,
-        EGL_RED_SIZE | EGL_GREEN_SIZE | EGL_BLUE_SIZE | EGL_ALPHA_SIZE => 8,
+        EGL_BUFFER_SIZE => 24 + if alpha { 8 } else { 0 },
+        EGL_ALPHA_SIZE => 8 * EGLint::from(alpha),
+        EGL_RED_SIZE | EGL_GREEN_SIZE | EGL_BLUE_SIZE => 8,
         EGL_DEPTH_SIZE => 24,
         EGL_STENCIL_SIZE => 8,
         EGL_CONFIG_CAVEAT => EGL_NONE,
-        EGL_CONFIG_ID => 1,
+        EGL_CONFIG_ID => config_id(alpha),
         EGL_LEVEL => 0,
         EGL_MAX_PBUFFER_WIDTH | EGL_MAX_PBUFFER_HEIGHT => MAX_SIDE,
         EGL_MAX_PBUFFER_PIXELS => MAX_SIDE * MAX_SIDE / 4,
@@ -185,12 +237,12 @@ fn config_attrib(attr: EGLint) -> Option<EGLint> {
     })
 }
 
-/// Whether the config meets one requested attribute (EGL 1.4 table 3.4's matching rules).
-fn matches(attr: EGLint, want: EGLint) -> Result<bool, EGLint> {
+/// Whether a config meets one requested attribute (EGL 1.4 table 3.4's matching rules).
+fn matches(alpha: bool, attr: EGLint, want: EGLint) -> Result<bool, EGLint> {
     if want == EGL_DONT_CARE {
         return Ok(true);
     }
-    let have = config_attrib(attr).ok_or(EGL_BAD_ATTRIBUTE)?;
+    let have = config_attrib(alpha, attr).ok_or(EGL_BAD_ATTRIBUTE)?;
     Ok(match attr {
         // Bit masks: every requested bit.
         EGL_SURFACE_TYPE | EGL_RENDERABLE_TYPE | EGL_CONFORMANT => have & want == want,
@@ -317,13 +369,14 @@ pub unsafe extern "C" fn eglGetConfigs(
         if let Err(e) = check_display(dpy) {
             return fail(e, EGL_FALSE);
         }
+        let all = [config(), config_rgb()];
         // SAFETY: `size` handles where given; one count.
         unsafe {
-            let mut n = 1;
+            let mut n = all.len() as EGLint;
             if !configs.is_null() {
-                n = size.clamp(0, 1);
-                if let Some(c) = read::slice_mut(configs, n as usize).first_mut() {
-                    *c = config();
+                n = size.clamp(0, n);
+                for (c, h) in read::slice_mut(configs, n as usize).iter_mut().zip(all) {
+                    *c = h;
                 }
             }
             match read::slice_mut(num, 1).first_mut() {
@@ -348,14 +401,24 @@ pub unsafe extern "C" fn eglChooseConfig(
             return fail(e, EGL_FALSE);
         }
         // SAFETY: EGL's attribute list.
-        let mut ok = true;
-        for (k, v) in unsafe { attributes(attribs) } {
-            match matches(k, v) {
-                Ok(m) => ok &= m,
-                Err(e) => return fail(e, EGL_FALSE),
+        let wanted = unsafe { attributes(attribs) };
+        // EGL 1.4 §3.4.1.2's order: the two differ only in alpha, and the RGB8 one comes
+        // first whenever both match (equal colour bits over the components asked for, a
+        // smaller EGL_BUFFER_SIZE); asking for alpha leaves the RGBA8 one alone.
+        let mut chosen = Vec::new();
+        for (alpha, handle) in [(false, config_rgb()), (true, config())] {
+            let mut ok = true;
+            for &(k, v) in &wanted {
+                match matches(alpha, k, v) {
+                    Ok(m) => ok &= m,
+                    Err(e) => return fail(e, EGL_FALSE),
+                }
+            }
+            if ok {
+                chosen.push(handle);
             }
         }
-        let n = i32::from(ok);
+        let n = chosen.len() as EGLint;
         // SAFETY: `size` handles where given; one count.
         unsafe {
             let n = if configs.is_null() {
@@ -363,10 +426,8 @@ pub unsafe extern "C" fn eglChooseConfig(
             } else {
                 n.min(size.max(0))
             };
-            if n > 0 {
-                if let Some(c) = read::slice_mut(configs, 1).first_mut() {
-                    *c = config();
-                }
+            for (c, h) in read::slice_mut(configs, n as usize).iter_mut().zip(chosen) {
+                *c = h;
             }
             match read::slice_mut(num, 1).first_mut() {
                 Some(c) => *c = n,
@@ -388,10 +449,10 @@ pub unsafe extern "C" fn eglGetConfigAttrib(
         if let Err(e) = check_display(dpy) {
             return fail(e, EGL_FALSE);
         }
-        if cfg != config() {
+        let Some(alpha) = config_alpha(cfg) else {
             return fail(EGL_BAD_CONFIG, EGL_FALSE);
-        }
-        let Some(v) = config_attrib(attr) else {
+        };
+        let Some(v) = config_attrib(alpha, attr) else {
             return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE);
         };
         // SAFETY: one value.
@@ -431,9 +492,14 @@ pub unsafe extern "C" fn eglCreateContext(
         if let Err(e) = check_display(dpy) {
             return fail(e, std::ptr::null_mut());
         }
-        if cfg != config() && !cfg.is_null() {
+        // EGL_NO_CONFIG_KHR (NULL): the RGBA8 framebuffer.
+        let Some(alpha) = (if cfg.is_null() {
+            Some(true)
+        } else {
+            config_alpha(cfg)
+        }) else {
             return fail(EGL_BAD_CONFIG, std::ptr::null_mut());
-        }
+        };
         if !share.is_null() && !current::is_live(share.cast()) {
             return fail(EGL_BAD_CONTEXT, std::ptr::null_mut());
         }
@@ -461,8 +527,16 @@ pub unsafe extern "C" fn eglCreateContext(
             return fail(EGL_BAD_MATCH, std::ptr::null_mut());
         }
         // share_context: display lists, textures and buffer objects shared (GL appendix D).
-        match Gl::with_config_shared(1, 1, fixedgl::ContextConfig::default(), share.cast()) {
-            Some(gl) => fail(EGL_SUCCESS, current::register(gl).cast()),
+        let config = fixedgl::ContextConfig {
+            alpha,
+            ..Default::default()
+        };
+        match Gl::with_config_shared(1, 1, config, share.cast()) {
+            Some(gl) => {
+                let p = current::register(gl);
+                remember_config(p as usize, config_id(alpha));
+                fail(EGL_SUCCESS, p.cast())
+            }
             None => fail(EGL_BAD_ALLOC, std::ptr::null_mut()),
         }
     })
@@ -477,6 +551,7 @@ pub extern "C" fn eglDestroyContext(dpy: Handle, ctx: Handle) -> EGLBoolean {
             return fail(e, EGL_FALSE);
         }
         if current::destroy(ctx.cast()) {
+            forget_config(ctx as usize);
             fail(EGL_SUCCESS, EGL_TRUE)
         } else {
             fail(EGL_BAD_CONTEXT, EGL_FALSE)
@@ -501,9 +576,9 @@ pub unsafe extern "C" fn eglCreatePbufferSurface(
         if let Err(e) = check_display(dpy) {
             return fail(e, std::ptr::null_mut());
         }
-        if cfg != config() {
+        let Some(alpha) = config_alpha(cfg) else {
             return fail(EGL_BAD_CONFIG, std::ptr::null_mut());
-        }
+        };
         let (mut w, mut h) = (0, 0);
         // SAFETY: EGL's attribute list.
         for (k, v) in unsafe { attributes(attribs) } {
@@ -524,6 +599,7 @@ pub unsafe extern "C" fn eglCreatePbufferSurface(
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .push((p, (w as u32, h as u32)));
+        remember_config(p, config_id(alpha));
         fail(EGL_SUCCESS, p as Handle)
     })
 }
@@ -567,6 +643,7 @@ pub extern "C" fn eglDestroySurface(dpy: Handle, surface: Handle) -> EGLBoolean 
             return fail(EGL_BAD_SURFACE, EGL_FALSE);
         };
         let (a, _) = all.remove(i);
+        forget_config(a);
         // SAFETY: made by eglCreatePbufferSurface, removed from the registry just now.
         drop(unsafe { Box::from_raw(a as *mut u64) });
         fail(EGL_SUCCESS, EGL_TRUE)
@@ -590,7 +667,7 @@ pub unsafe extern "C" fn eglQuerySurface(
         let v = match attr {
             EGL_WIDTH => w as EGLint,
             EGL_HEIGHT => h as EGLint,
-            EGL_CONFIG_ID => 1,
+            EGL_CONFIG_ID => config_id_of(surface),
             EGL_LARGEST_PBUFFER => 0,
             EGL_RENDER_BUFFER => EGL_BACK_BUFFER,
             _ => return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE),
@@ -700,7 +777,7 @@ pub unsafe extern "C" fn eglQueryContext(
             return fail(EGL_BAD_CONTEXT, EGL_FALSE);
         }
         let v = match attr {
-            EGL_CONFIG_ID => 1,
+            EGL_CONFIG_ID => config_id_of(ctx),
             EGL_CONTEXT_CLIENT_TYPE => EGL_OPENGL_API as EGLint,
             EGL_RENDER_BUFFER => EGL_SINGLE_BUFFER,
             _ => return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE),

@@ -13,7 +13,7 @@ use fixedgl::{counts, Call};
 
 use crate::current::with_gl;
 use crate::manual::*;
-use crate::{args, read, unimplemented};
+use crate::{args, read};
 
 /// `glCullFace(mode)`.
 #[no_mangle]
@@ -2165,13 +2165,17 @@ pub unsafe extern "C" fn glClearAccum(red: f32, green: f32, blue: f32, alpha: f3
 /// `glClearIndex(c)`.
 #[no_mangle]
 pub unsafe extern "C" fn glClearIndex(c: f32) {
-    unimplemented("glClearIndex");
+    with_gl("glClearIndex", |gl| {
+        gl.ctx.clear_index(c);
+    })
 }
 
 /// `glIndexMask(mask)`.
 #[no_mangle]
 pub unsafe extern "C" fn glIndexMask(mask: u32) {
-    unimplemented("glIndexMask");
+    with_gl("glIndexMask", |gl| {
+        gl.ctx.index_mask(mask);
+    })
 }
 
 /// `glAccum(op, value)`.
@@ -5718,6 +5722,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glClearAccum" => glClearAccum as *const c_void,
         b"glClearColor" => glClearColor as *const c_void,
         b"glClearDepth" => glClearDepth as *const c_void,
+        b"glClearIndex" => glClearIndex as *const c_void,
         b"glClearStencil" => glClearStencil as *const c_void,
         b"glClientActiveTexture" => glClientActiveTexture as *const c_void,
         b"glClientActiveTextureARB" => glClientActiveTexture as *const c_void,
@@ -5921,6 +5926,7 @@ pub fn proc_address(name: &[u8]) -> Option<*const c_void> {
         b"glGetTexParameterfv" => glGetTexParameterfv as *const c_void,
         b"glGetTexParameteriv" => glGetTexParameteriv as *const c_void,
         b"glHint" => glHint as *const c_void,
+        b"glIndexMask" => glIndexMask as *const c_void,
         b"glIndexPointer" => glIndexPointer as *const c_void,
         b"glIndexPointerEXT" => glIndexPointerEXT as *const c_void,
         b"glIndexd" => glIndexd as *const c_void,

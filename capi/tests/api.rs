@@ -86,6 +86,32 @@ fn egl_surfaceless_sequence_as_waffle_runs_it() {
             1
         );
         assert_eq!(n, 1);
+        // Two configs: RGB8 first for a caller that does not ask for alpha (as Mesa's
+        // XRGB8888, EGL 1.4 §3.4.1.2's smaller EGL_BUFFER_SIZE), RGBA8 alone when it does.
+        let mut two = [null_mut(); 2];
+        assert_eq!(
+            eglChooseConfig(dpy, attribs.as_ptr(), two.as_mut_ptr(), 2, &mut n),
+            1
+        );
+        assert_eq!(n, 2);
+        let attrib = |c, a| {
+            let mut v = -1;
+            assert_eq!(eglGetConfigAttrib(dpy, c, a, &mut v), 1);
+            v
+        };
+        // EGL_ALPHA_SIZE, EGL_BUFFER_SIZE, EGL_CONFIG_ID.
+        let sizes = |c| [attrib(c, 0x3021), attrib(c, 0x3020), attrib(c, 0x3028)];
+        assert_eq!(sizes(two[0]), [0, 24, 2]);
+        assert_eq!(sizes(two[1]), [8, 32, 1]);
+        let rgba = two[1];
+        let with_alpha = [0x3021, 1, EGL_NONE];
+        assert_eq!(
+            eglChooseConfig(dpy, with_alpha.as_ptr(), two.as_mut_ptr(), 2, &mut n),
+            1
+        );
+        assert_eq!((n, two[0]), (1, rgba));
+        assert_eq!(eglGetConfigs(dpy, null_mut(), 0, &mut n), 1);
+        assert_eq!(n, 2);
         // OpenGL ES is not offered: no config.
         let es = [0x3040, 0x4, EGL_NONE];
         assert_eq!(eglChooseConfig(dpy, es.as_ptr(), &mut config, 1, &mut n), 1);
@@ -105,6 +131,13 @@ fn egl_surfaceless_sequence_as_waffle_runs_it() {
         let mut vp = [0i32; 4];
         glGetIntegerv(gl::VIEWPORT, vp.as_mut_ptr());
         assert_eq!(vp, [0, 0, 160, 160]);
+        // The first config chosen has no alpha bits.
+        let mut bits = [-1i32];
+        glGetIntegerv(gl::ALPHA_BITS, bits.as_mut_ptr());
+        assert_eq!(bits, [0]);
+        let mut id = 0;
+        assert_eq!(eglQueryContext(dpy, ctx, 0x3028, &mut id), 1);
+        assert_eq!(id, 2);
         assert_eq!(eglGetCurrentContext(), ctx);
         // A stale handle is refused, not followed.
         assert_eq!(

@@ -394,6 +394,8 @@ pub enum Call {
     ClearDepth(f64),
     /// `glClearStencil(s)`.
     ClearStencil(i32),
+    /// `glClearIndex(c)`.
+    ClearIndex(f32),
     /// `glClear(mask)`.
     Clear(u32),
     /// `glDepthFunc(func)`.
@@ -402,6 +404,8 @@ pub enum Call {
     DepthMask(bool),
     /// `glColorMask(red, green, blue, alpha)`.
     ColorMask(bool, bool, bool, bool),
+    /// `glIndexMask(mask)`.
+    IndexMask(u32),
     /// `glScissor(x, y, width, height)`.
     Scissor(i32, i32, i32, i32),
 
@@ -1178,10 +1182,12 @@ pub const NAMES: &[&str] = &[
     "ClearColor",
     "ClearDepth",
     "ClearStencil",
+    "ClearIndex",
     "Clear",
     "DepthFunc",
     "DepthMask",
     "ColorMask",
+    "IndexMask",
     "Scissor",
     "Hint",
     "PixelStorei",
@@ -1612,10 +1618,12 @@ impl Call {
             Call::ClearColor(..) => "ClearColor",
             Call::ClearDepth(..) => "ClearDepth",
             Call::ClearStencil(..) => "ClearStencil",
+            Call::ClearIndex(..) => "ClearIndex",
             Call::Clear(..) => "Clear",
             Call::DepthFunc(..) => "DepthFunc",
             Call::DepthMask(..) => "DepthMask",
             Call::ColorMask(..) => "ColorMask",
+            Call::IndexMask(..) => "IndexMask",
             Call::Scissor(..) => "Scissor",
             Call::Hint(..) => "Hint",
             Call::PixelStorei(..) => "PixelStorei",
@@ -2292,10 +2300,12 @@ impl Call {
             Call::ClearColor(..) => &[],
             Call::ClearDepth(..) => &[],
             Call::ClearStencil(..) => &[],
+            Call::ClearIndex(..) => &[],
             Call::Clear(..) => &[ClearBits],
             Call::DepthFunc(..) => &[Enum],
             Call::DepthMask(..) => &[],
             Call::ColorMask(..) => &[],
+            Call::IndexMask(..) => &[],
             Call::Scissor(..) => &[],
             Call::Hint(..) => &[Enum, Enum],
             Call::PixelStorei(..) => &[Enum],

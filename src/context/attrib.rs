@@ -99,7 +99,7 @@ pub(crate) fn copy_groups(mask: u32, d: &mut State, s: &State) {
     }
     if has(gl::COLOR_BUFFER_BIT) {
         // Tables 6.21, 6.22.
-        copy!(d, s; color_mask, clear_color, enables.alpha_test, enables.blend, enables.dither,
+        copy!(d, s; color_mask, clear_color, clear_index, index_writemask, enables.alpha_test, enables.blend, enables.dither,
             enables.color_logic_op, enables.index_logic_op);
         copy!(d, s; alpha, blend, logic_op);
         // Table 6.22: DRAW_BUFFER.

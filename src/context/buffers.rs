@@ -88,7 +88,7 @@ impl Context {
         }
         let rect = scissor_rect(&self.state);
         let (read, targets) = (read_buf(&self.state), Targets::of(&self.state));
-        let mask = self.state.color_mask;
+        let mask = self.state.color_write_mask();
         self.renderer
             .framebuffer_mut()
             .accum(op, value, rect, read, targets, mask);

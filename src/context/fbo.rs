@@ -950,6 +950,7 @@ impl Context {
                 depth: false,
                 stencil: false,
                 accum: false,
+                alpha: true,
             };
             let Some(placeholder) = Framebuffer::try_new(1, 1, config) else {
                 self.fbos.bound_fb = old;
@@ -982,6 +983,7 @@ impl Context {
             depth: false,
             stencil: false,
             accum: false,
+            alpha: true,
         };
     }
 
@@ -997,6 +999,7 @@ impl Context {
             depth: false,
             stencil: false,
             accum: false,
+            alpha: true,
         };
         let Some(placeholder) = Framebuffer::try_new(1, 1, config) else {
             // Keep drawing into the loaded framebuffer rather than lose it.
@@ -1069,6 +1072,7 @@ impl Context {
             depth: obj.depth != Attachment::None,
             stencil: false,
             accum: false,
+            alpha: true,
         };
         let Some(mut fb) = Framebuffer::try_new(w, h, config) else {
             return self.error(gl::OUT_OF_MEMORY);

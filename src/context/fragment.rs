@@ -133,9 +133,8 @@ impl Context {
         let Some(len) = counts::fog(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
+        // A scalar form takes a vector pname (FOG_COLOR) as `[param, 0, 0, 0]`, as Mesa does.
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }

@@ -29,6 +29,18 @@ impl Context {
         self.state.clear_color = Vec4::new(red, green, blue, alpha).clamp(Vec4::ZERO, Vec4::ONE);
     }
 
+    /// `glClearIndex` (GL 2.1 §4.2.3): stored as Mesa does, the integer part as an unsigned
+    /// integer (`(GLuint) c`; a negative or NaN index is 0 here, where C leaves it undefined).
+    /// Only a colour-index framebuffer uses it, and fixedgl's are RGBA: nothing else changes.
+    pub fn clear_index(&mut self, c: f32) {
+        record!(self, Call::ClearIndex(c));
+        if !self.outside_begin_end() {
+            return;
+        }
+        // `as` saturates: negative and NaN give 0, past u32::MAX gives u32::MAX.
+        self.state.clear_index = c as u32;
+    }
+
     /// `glClearDepth`: clamped to [0, 1].
     pub fn clear_depth(&mut self, depth: f64) {
         record!(self, Call::ClearDepth(depth));
@@ -101,6 +113,16 @@ impl Context {
             return;
         }
         self.state.color_mask = [red, green, blue, alpha];
+    }
+
+    /// `glIndexMask` (GL 2.1 §4.2.2): the colour-index write mask, all ones at first. Only a
+    /// colour-index framebuffer uses it, and fixedgl's are RGBA: nothing else changes.
+    pub fn index_mask(&mut self, mask: u32) {
+        record!(self, Call::IndexMask(mask));
+        if !self.outside_begin_end() {
+            return;
+        }
+        self.state.index_writemask = mask;
     }
 
     /// `glScissor`: INVALID_VALUE if `width` or `height` is negative (GL 2.1 §4.1.2).

@@ -233,6 +233,8 @@ impl Context {
             gl::DEPTH_WRITEMASK => b(s.depth_mask),
             // fragment ops: masks are unsigned; past i32::MAX GetIntegerv saturates (§6.1.2).
             gl::STENCIL_WRITEMASK => e(s.stencil_writemask),
+            gl::INDEX_WRITEMASK => e(s.index_writemask),
+            gl::INDEX_CLEAR_VALUE => e(s.clear_index),
             gl::COLOR_CLEAR_VALUE => norm(s.clear_color.to_array()),
             gl::DEPTH_CLEAR_VALUE => Value::new(Conversion::Normalized, [s.clear_depth]),
             gl::STENCIL_CLEAR_VALUE => i(s.clear_stencil),
@@ -274,7 +276,8 @@ impl Context {
             gl::SMOOTH_POINT_SIZE_GRANULARITY => f(POINT_SIZE_GRANULARITY),
             gl::ALIASED_LINE_WIDTH_RANGE | gl::SMOOTH_LINE_WIDTH_RANGE => floats(LINE_WIDTH_RANGE),
             gl::SMOOTH_LINE_WIDTH_GRANULARITY => f(LINE_WIDTH_GRANULARITY),
-            gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS | gl::ALPHA_BITS => i(8),
+            gl::RED_BITS | gl::GREEN_BITS | gl::BLUE_BITS => i(8),
+            gl::ALPHA_BITS => i(if s.config.alpha { 8 } else { 0 }),
             // The framebuffer's buffers (table 6.33), as the context was made.
             gl::DEPTH_BITS => i(if s.config.depth { 24 } else { 0 }),
             gl::STENCIL_BITS => i(if s.config.stencil { 8 } else { 0 }),

@@ -98,8 +98,12 @@ impl Context {
         }
     }
 
-    /// The validating body of every `Material` form. `scalar`: the `f`/`i` forms, which take
-    /// SHININESS only (GL 2.1 §2.14.2).
+    /// The validating body of every `Material` form. `scalar`: the `f`/`i` forms. GL 2.1
+    /// §2.14.2 gives them SHININESS, but Mesa (GL 1.5 through 4.x compatibility) takes every
+    /// material pname there: `_mesa_Materialf` puts `param` first in a four-float array and calls
+    /// `Materialfv`, whose other elements are uninitialised stack. fixedgl takes the pname too
+    /// and makes those elements 0 (`[param, 0, 0, 0]`, `[param, 0, 0]` for COLOR_INDEXES); the GL
+    /// backend replays the call as that vector so the driver holds the same values.
     fn material(&mut self, face: u32, pname: u32, p: (Params, usize), scalar: bool) {
         // A short vector is INVALID_VALUE as soon as its pname names a length, whatever the face
         // (the GL backend checks it there, before the driver sees the call).
@@ -112,10 +116,9 @@ impl Context {
         let Some(len) = counts::material(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && pname != gl::SHININESS {
-            return self.error(gl::INVALID_ENUM);
-        }
         let (p, n) = p;
+        // The scalar's missing elements are the zeros `convert` left there.
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }
@@ -153,13 +156,14 @@ impl Context {
         }
     }
 
-    /// `glMaterialf`: `pname` must be SHININESS.
+    /// `glMaterialf`: a vector pname takes `[param, 0, 0, 0]` (see `material`).
     pub fn materialf(&mut self, face: u32, pname: u32, param: f32) {
         record!(self, Call::Materialf(face, pname, param));
         self.material(face, pname, convert(&[param], false), true);
     }
 
-    /// `glMateriali`: `pname` must be SHININESS.
+    /// `glMateriali`: `param` converted as a float, not normalised, as Mesa does; a vector pname
+    /// takes `[param, 0, 0, 0]` (see `material`).
     pub fn materiali(&mut self, face: u32, pname: u32, param: i32) {
         record!(self, Call::Materiali(face, pname, param));
         self.material(face, pname, convert(&[param], false), true);
@@ -193,10 +197,9 @@ impl Context {
         let Some(len) = counts::light(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
         let (p, n) = p;
+        // A scalar form takes a vector pname as `[param, 0, 0, 0]`, as Mesa does (`Context::material`).
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }
@@ -234,13 +237,13 @@ impl Context {
         }
     }
 
-    /// `glLightf`: scalar pnames only (SPOT_EXPONENT, SPOT_CUTOFF, the attenuations).
+    /// `glLightf`: a vector pname takes `[param, 0, 0, 0]`, as Mesa does.
     pub fn lightf(&mut self, light: u32, pname: u32, param: f32) {
         record!(self, Call::Lightf(light, pname, param));
         self.light(light, pname, convert(&[param], false), true);
     }
 
-    /// `glLighti`: scalar pnames only.
+    /// `glLighti`: as [`Context::lightf`].
     pub fn lighti(&mut self, light: u32, pname: u32, param: i32) {
         record!(self, Call::Lighti(light, pname, param));
         self.light(light, pname, convert(&[param], false), true);
@@ -266,10 +269,9 @@ impl Context {
         let Some(len) = counts::light_model(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
         let (p, n) = p;
+        // A scalar form takes a vector pname as `[param, 0, 0, 0]`, as Mesa does (`Context::material`).
+        let n = if scalar { len } else { n };
         if n < len {
             return self.error(gl::INVALID_VALUE);
         }

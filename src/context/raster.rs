@@ -129,9 +129,9 @@ impl Context {
         let Some(len) = counts::point_parameter(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if scalar && len != 1 {
-            return self.error(gl::INVALID_ENUM);
-        }
+        // A scalar form takes POINT_DISTANCE_ATTENUATION as `[param, 0, 0]`, as Mesa does.
+        let padded = [v.first().copied().unwrap_or(0.0), 0.0, 0.0];
+        let v = if scalar { &padded[..] } else { v };
         if v.len() < len {
             return self.error(gl::INVALID_VALUE);
         }

@@ -106,6 +106,77 @@ fn materials_by_face() {
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }
 
+/// The scalar forms take a vector pname as Mesa does (piglit gl-1.0-beginend-coverage): the
+/// value first, zeros after it, inside Begin/End too; the face and pname are still checked.
+#[test]
+fn scalar_material_forms_take_vector_pnames() {
+    let mut c = ctx();
+    c.materialfv(gl::FRONT_AND_BACK, gl::SPECULAR, &[0.5; 4]);
+    c.materialf(gl::FRONT, gl::AMBIENT, 0.25);
+    c.materiali(gl::BACK, gl::DIFFUSE, 2);
+    c.materialf(gl::FRONT_AND_BACK, gl::EMISSION, 0.75);
+    c.materialf(gl::FRONT, gl::COLOR_INDEXES, 4.0);
+    c.begin(gl::POINTS);
+    c.materialf(gl::FRONT_AND_BACK, gl::SPECULAR, 0.5);
+    c.materiali(gl::FRONT, gl::AMBIENT_AND_DIFFUSE, 0);
+    c.end();
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    let [f, b] = c.state.materials;
+    assert_eq!(f.ambient, Vec4::ZERO);
+    assert_eq!(f.diffuse, Vec4::ZERO);
+    assert_eq!(b.ambient, Vec4::new(0.2, 0.2, 0.2, 1.0));
+    // Materiali converts as a float, not as a normalised colour.
+    assert_eq!(b.diffuse, Vec4::new(2.0, 0.0, 0.0, 0.0));
+    assert_eq!(f.emission, Vec4::new(0.75, 0.0, 0.0, 0.0));
+    assert_eq!(b.emission, f.emission);
+    assert_eq!(f.specular, Vec4::new(0.5, 0.0, 0.0, 0.0));
+    assert_eq!(b.specular, f.specular);
+    assert_eq!(f.color_indexes, [4.0, 0.0, 0.0]);
+    // Still errors: a bad face, a non-material pname, and shininess out of range.
+    let before = c.state.materials;
+    c.materialf(gl::LEFT, gl::AMBIENT, 1.0);
+    assert_eq!(c.get_error(), gl::INVALID_ENUM);
+    c.materiali(gl::FRONT, gl::POSITION, 1);
+    assert_eq!(c.get_error(), gl::INVALID_ENUM);
+    c.materialf(gl::FRONT, gl::SHININESS, 129.0);
+    assert_eq!(c.get_error(), gl::INVALID_VALUE);
+    assert_eq!(c.state.materials, before);
+}
+
+/// ClearIndex and IndexMask store their values (Mesa's `(GLuint) c` truncation; a negative or
+/// NaN index is 0) and change nothing an RGBA framebuffer uses; INVALID_OPERATION inside.
+#[test]
+fn clear_index_and_index_mask() {
+    let mut c = ctx();
+    assert_eq!(
+        (c.state.clear_index, c.state.index_writemask),
+        (0, u32::MAX)
+    );
+    let before = c.state.clone();
+    c.clear_index(7.9);
+    c.index_mask(0x0f);
+    assert_eq!((c.state.clear_index, c.state.index_writemask), (7, 0x0f));
+    let mut s = c.state.clone();
+    (s.clear_index, s.index_writemask) = (before.clear_index, before.index_writemask);
+    assert_eq!(s, before);
+    let mut v = [0.0f32];
+    c.get_floatv(gl::INDEX_CLEAR_VALUE, &mut v);
+    assert_eq!(v, [7.0]);
+    let mut m = [0i32];
+    c.get_integerv(gl::INDEX_WRITEMASK, &mut m);
+    assert_eq!(m, [0x0f]);
+    for bad in [-3.0, f32::NAN] {
+        c.clear_index(bad);
+        assert_eq!(c.state.clear_index, 0);
+    }
+    c.begin(gl::POINTS);
+    c.clear_index(2.0);
+    c.index_mask(1);
+    c.end();
+    assert_eq!(c.get_error(), gl::INVALID_OPERATION);
+    assert_eq!((c.state.clear_index, c.state.index_writemask), (0, 0x0f));
+}
+
 /// §2.14.3: with COLOR_MATERIAL on, the selected material values track the current colour
 /// from the Enable, on every Color call and on ColorMaterial; Material cannot override them.
 #[test]

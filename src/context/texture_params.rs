@@ -10,6 +10,13 @@
 
 use glam::{DVec4, Vec4};
 
+/// What a scalar form (TexParameter{f,i}, TexEnv{f,i}, TexGen{d,f,i}) hands the validator: Mesa
+/// passes `param` on to the vector form as `[param, 0, 0, 0]`, so a vector pname (BORDER_COLOR,
+/// TEXTURE_ENV_COLOR, OBJECT_PLANE, EYE_PLANE) is taken, not INVALID_ENUM as GL 2.1 says.
+fn scalar(param: f64) -> [f64; 4] {
+    [param, 0.0, 0.0, 0.0]
+}
+
 /// `GL_TEXTURE_STENCIL_SIZE` (GL 3.0, EXT_packed_depth_stencil; not in the GL 2.1 constants).
 pub(crate) const TEXTURE_STENCIL_SIZE: u32 = 0x88F1;
 
@@ -40,13 +47,13 @@ impl Context {
     /// `glTexParameteri`.
     pub fn tex_parameteri(&mut self, target: u32, pname: u32, param: i32) {
         record!(self, Call::TexParameteri(target, pname, param));
-        self.tex_parameter(target, pname, &[f64::from(param)], true, false);
+        self.tex_parameter(target, pname, &scalar(f64::from(param)), true, false);
     }
 
     /// `glTexParameterf`.
     pub fn tex_parameterf(&mut self, target: u32, pname: u32, param: f32) {
         record!(self, Call::TexParameterf(target, pname, param));
-        self.tex_parameter(target, pname, &[f64::from(param)], false, false);
+        self.tex_parameter(target, pname, &scalar(f64::from(param)), false, false);
     }
 
     /// `glTexParameteriv`.
@@ -65,7 +72,6 @@ impl Context {
 
     /// The body of the TexParameter forms (§3.8.4, table 3.19): validate, then set on the
     /// object bound to `target` (TEXTURE_1D, _2D, _3D or _CUBE_MAP) on the active unit.
-    /// `vector`: BORDER_COLOR needs a vector form.
     fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f64], int: bool, vector: bool) {
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
             ctx.tex_parameter_now(target, pname, v, int, vector)
@@ -87,9 +93,6 @@ impl Context {
         let Some(count) = counts::tex_parameter(pname) else {
             return self.error(gl::INVALID_ENUM);
         };
-        if count > 1 && !vector {
-            return self.error(gl::INVALID_ENUM);
-        }
         if v.len() < count {
             return self.error(gl::INVALID_VALUE);
         }
@@ -171,13 +174,13 @@ impl Context {
     /// `glTexEnvi`.
     pub fn tex_envi(&mut self, target: u32, pname: u32, param: i32) {
         record!(self, Call::TexEnvi(target, pname, param));
-        self.tex_env(target, pname, &[f64::from(param)], true, false);
+        self.tex_env(target, pname, &scalar(f64::from(param)), true, false);
     }
 
     /// `glTexEnvf`.
     pub fn tex_envf(&mut self, target: u32, pname: u32, param: f32) {
         record!(self, Call::TexEnvf(target, pname, param));
-        self.tex_env(target, pname, &[f64::from(param)], false, false);
+        self.tex_env(target, pname, &scalar(f64::from(param)), false, false);
     }
 
     /// `glTexEnviv`.
@@ -239,7 +242,7 @@ impl Context {
         }
         let pair_ok = (target == gl::TEXTURE_ENV && env_pname)
             || (target, pname) == (gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS);
-        if !pair_ok || (pname == gl::TEXTURE_ENV_COLOR && !vector) {
+        if !pair_ok {
             return self.error(gl::INVALID_ENUM);
         }
         let need = if pname == gl::TEXTURE_ENV_COLOR { 4 } else { 1 };
@@ -325,19 +328,19 @@ impl Context {
     /// `glTexGeni`.
     pub fn tex_geni(&mut self, coord: u32, pname: u32, param: i32) {
         record!(self, Call::TexGeni(coord, pname, param));
-        self.tex_gen(coord, pname, &[f64::from(param)], false);
+        self.tex_gen(coord, pname, &scalar(f64::from(param)), false);
     }
 
     /// `glTexGenf`.
     pub fn tex_genf(&mut self, coord: u32, pname: u32, param: f32) {
         record!(self, Call::TexGenf(coord, pname, param));
-        self.tex_gen(coord, pname, &[f64::from(param)], false);
+        self.tex_gen(coord, pname, &scalar(f64::from(param)), false);
     }
 
     /// `glTexGend`.
     pub fn tex_gend(&mut self, coord: u32, pname: u32, param: f64) {
         record!(self, Call::TexGend(coord, pname, param));
-        self.tex_gen(coord, pname, &[param], false);
+        self.tex_gen(coord, pname, &scalar(param), false);
     }
 
     /// `glTexGeniv`.
@@ -381,7 +384,7 @@ impl Context {
             _ => return self.error(gl::INVALID_ENUM),
         };
         let plane = matches!(pname, gl::OBJECT_PLANE | gl::EYE_PLANE);
-        if !(pname == gl::TEXTURE_GEN_MODE || plane) || (plane && !vector) {
+        if !(pname == gl::TEXTURE_GEN_MODE || plane) {
             return self.error(gl::INVALID_ENUM);
         }
         let need = if plane { 4 } else { 1 };

@@ -171,14 +171,16 @@ impl Framebuffer {
     /// allocation is tried, never assumed.
     pub fn try_new(width: u32, height: u32, config: ContextConfig) -> Option<Self> {
         let (tiles_x, tiles_y, n) = Self::layout(width, height);
+        // Without alpha bits the stored alpha is 1 everywhere, and stays so (`color_write_mask`).
+        let empty = [0, 0, 0, if config.alpha { 0 } else { 255 }];
         Some(Self {
             width,
             height,
             tiles_x,
             tiles_y,
-            color: filled(n, [0; 4])?,
+            color: filled(n, empty)?,
             front: match config.double_buffered {
-                true => Some(filled(n, [0; 4])?),
+                true => Some(filled(n, empty)?),
                 false => None,
             },
             depth: filled(n, DEPTH_MAX)?,
@@ -419,7 +421,16 @@ impl Framebuffer {
             let c = state.clear_color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
             [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)]
         });
-        let cmask = state.color_mask;
+        let mut cmask = state.color_mask;
+        // Without alpha bits the stored alpha is 255 and stays so: writing 255 leaves a
+        // colour-only clear whole-tile lazy.
+        let color = match self.config.alpha {
+            true => color,
+            false => {
+                cmask[3] = true;
+                color.map(|[r, g, b, _]| [r, g, b, 255])
+            }
+        };
         let depth =
             (mask & crate::gl::DEPTH_BUFFER_BIT != 0 && state.depth_mask && self.config.depth)
                 .then(|| depth_unorm(state.clear_depth.clamp(0.0, 1.0)));

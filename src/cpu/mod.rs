@@ -539,7 +539,7 @@ impl Core {
             color_mask: if targets.none() {
                 [false; 4]
             } else {
-                state.color_mask
+                state.color_write_mask()
             },
             color_sum: layout.spec.is_some(),
             rl: ctx.rl,

@@ -200,7 +200,7 @@ impl Renderer {
             color_mask: if targets.none() {
                 [false; 4]
             } else {
-                state.color_mask
+                state.color_write_mask()
             },
             color_sum: false,
             rl: Default::default(),

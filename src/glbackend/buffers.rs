@@ -63,7 +63,14 @@ impl Fbo {
         for k in 0..if config.double_buffered { 2 } else { 1 } {
             let rb = glow.create_renderbuffer().map_err(Error::Backend)?;
             glow.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
-            glow.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
+            // RGB8 for a framebuffer without alpha bits: the driver then drops alpha writes
+            // and reads the destination alpha as 1 itself (ALPHA_BITS 0).
+            let format = if config.alpha {
+                glow::RGBA8
+            } else {
+                glow::RGB8
+            };
+            glow.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
             glow.framebuffer_renderbuffer(
                 glow::FRAMEBUFFER,
                 glow::COLOR_ATTACHMENT0 + k,

@@ -179,8 +179,8 @@ impl GlBackend {
             Call::Indexfv(ref c) => gl.indexfv(c),
             Call::Indexdv(ref c) => gl.indexdv(c),
             Call::Indexubv(ref c) => gl.indexubv(c),
-            Call::Materialf(face, pname, param) => gl.materialf(face, pname, param),
-            Call::Materiali(face, pname, param) => gl.materiali(face, pname, param),
+            Call::Materialf(face, pname, param) => self.materialf(face, pname, param),
+            Call::Materiali(face, pname, param) => self.materiali(face, pname, param),
             Call::Materialfv(face, pname, ref params) => {
                 self.with_params(params, counts::material(pname), true, |gl, params| {
                     gl.materialfv(face, pname, params)
@@ -226,10 +226,12 @@ impl GlBackend {
             Call::ClearColor(red, green, blue, alpha) => gl.clear_color(red, green, blue, alpha),
             Call::ClearDepth(depth) => gl.clear_depth(depth),
             Call::ClearStencil(s) => gl.clear_stencil(s),
+            Call::ClearIndex(c) => gl.clear_index(c),
             Call::Clear(mask) => self.clear(mask),
             Call::DepthFunc(func) => gl.depth_func(func),
             Call::DepthMask(flag) => gl.depth_mask(flag),
             Call::ColorMask(red, green, blue, alpha) => gl.color_mask(red, green, blue, alpha),
+            Call::IndexMask(mask) => gl.index_mask(mask),
             Call::Scissor(x, y, width, height) => gl.scissor(x, y, width, height),
             Call::Hint(target, mode) => self.hint(target, mode),
             Call::PixelStorei(pname, param) => gl.pixel_storei(pname, param),
@@ -1845,6 +1847,12 @@ impl Safe<'_> {
         unsafe { self.0.ClearStencil(s) }
     }
 
+    /// `glClearIndex(c)`.
+    pub(super) fn clear_index(self, c: f32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.ClearIndex(c) }
+    }
+
     /// `glClear(mask)`.
     pub(super) fn clear(self, mask: u32) {
         // SAFETY: the context is current (see `Safe`); no pointer is passed.
@@ -1874,6 +1882,12 @@ impl Safe<'_> {
                 u8::from(alpha),
             )
         }
+    }
+
+    /// `glIndexMask(mask)`.
+    pub(super) fn index_mask(self, mask: u32) {
+        // SAFETY: the context is current (see `Safe`); no pointer is passed.
+        unsafe { self.0.IndexMask(mask) }
     }
 
     /// `glScissor(x, y, width, height)`.

@@ -153,6 +153,14 @@ impl GlBackend {
         if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
             return Err(Error::InvalidSize { width, height });
         }
+        if config.accum && !config.alpha {
+            // The emulated accumulation buffer moves RGBA8 images in and out of the colour
+            // attachments (glCopyImageSubData), which an RGB8 attachment cannot take.
+            return Err(Error::Backend(
+                "an accumulation buffer with a colour buffer without alpha is not emulated on EGL"
+                    .into(),
+            ));
+        }
         let egl = egl::create(choice)?;
         // The new context is current now, whatever backend was before (and should this
         // constructor fail below, none of ours is).
@@ -183,6 +191,11 @@ impl GlBackend {
             return Err(Error::Backend(
                 "OSMesa's framebuffer has no back buffer (a double-buffered config needs EGL)"
                     .into(),
+            ));
+        }
+        if !config.alpha {
+            return Err(Error::Backend(
+                "the OSMesa backend draws into RGBA (a config without alpha needs EGL)".into(),
             ));
         }
         let bits = |on: bool, n: i32| if on { n } else { 0 };

@@ -42,6 +42,9 @@ impl GlBackend {
             }
             return self.raise(code);
         }
+        if let Some(vector) = scalar_as_vector(call) {
+            return self.dispatch(&vector);
+        }
         match *call {
             Call::PixelStorei(pname, param) => self.pixel_store(pname, param),
             Call::PixelStoref(pname, param) => {
@@ -94,6 +97,32 @@ impl GlBackend {
         if !self.compile_only() {
             self.inside_begin_end = false;
         }
+    }
+
+    /// `Materialf`: a vector pname is sent as `Materialfv([param, 0, 0, 0])`, the values the
+    /// front end stores (`Context::material`); the driver's own `Materialf` would read three
+    /// uninitialised floats after `param`. SHININESS and bad pnames go to the driver as they are.
+    pub(super) fn materialf(&mut self, face: u32, pname: u32, param: f32) {
+        if counts::material(pname).is_some_and(|n| n > 1) {
+            let mut v = [0.0; counts::MAX_VALUES];
+            v[0] = param;
+            return Safe(&self.raw).materialfv(face, pname, &v);
+        }
+        Safe(&self.raw).materialf(face, pname, param);
+    }
+
+    /// `Materiali`: as `materialf`, `param` converted as a float (not normalised), as Mesa's
+    /// `_mesa_Materiali` does.
+    pub(super) fn materiali(&mut self, face: u32, pname: u32, param: i32) {
+        if counts::material(pname).is_some_and(|n| n > 1) {
+            let mut v = [0.0; counts::MAX_VALUES];
+            #[allow(clippy::cast_precision_loss)]
+            {
+                v[0] = param as f32;
+            }
+            return Safe(&self.raw).materialfv(face, pname, &v);
+        }
+        Safe(&self.raw).materiali(face, pname, param);
     }
 
     /// `Hint`: PHONG_HINT_WIN (GL_WIN_phong_shading) is not a target the driver knows, so it is
@@ -152,33 +181,65 @@ impl GlBackend {
     }
 }
 
+/// A scalar form (f, i, d) given a multi-valued pname, as the vector form the front end stores:
+/// `[param, 0, 0, 0]` (three values for POINT_DISTANCE_ATTENUATION), converted as the front end
+/// converts the scalar. GL 2.1 makes these calls INVALID_ENUM (§2.11.4, §2.14.2, §3.4, §3.8.4,
+/// §3.8.13, §3.10), but Mesa in every version takes them, passing `param` on to the vector form,
+/// and programs (piglit's gl-1.0-beginend-coverage among them) rely on it, so fixedgl takes them
+/// too; sending the vector leaves nothing for the driver to fill in its own way.
+fn scalar_as_vector(call: &Call) -> Option<Call> {
+    let vector = |count: Option<usize>| count.is_some_and(|n| n > 1);
+    let f4 = |x: f32| vec![x, 0.0, 0.0, 0.0];
+    #[allow(clippy::cast_precision_loss)]
+    let i2f = |x: i32| x as f32;
+    Some(match *call {
+        Call::Lightf(l, p, x) if vector(counts::light(p)) => Call::Lightfv(l, p, f4(x)),
+        Call::Lighti(l, p, x) if vector(counts::light(p)) => Call::Lightfv(l, p, f4(i2f(x))),
+        Call::LightModelf(p, x) if vector(counts::light_model(p)) => Call::LightModelfv(p, f4(x)),
+        Call::LightModeli(p, x) if vector(counts::light_model(p)) => {
+            Call::LightModelfv(p, f4(i2f(x)))
+        }
+        Call::Fogf(p, x) if vector(counts::fog(p)) => Call::Fogfv(p, f4(x)),
+        Call::Fogi(p, x) if vector(counts::fog(p)) => Call::Fogfv(p, f4(i2f(x))),
+        Call::PointParameterf(p, x) if vector(counts::point_parameter(p)) => {
+            Call::PointParameterfv(p, vec![x, 0.0, 0.0])
+        }
+        Call::PointParameteri(p, x) if vector(counts::point_parameter(p)) => {
+            Call::PointParameterfv(p, vec![i2f(x), 0.0, 0.0])
+        }
+        // TexParameter and TexEnv: an integer colour is normalised, as the iv form's.
+        Call::TexParameterf(t, p, x) if vector(counts::tex_parameter(p)) => {
+            Call::TexParameterfv(t, p, f4(x))
+        }
+        Call::TexParameteri(t, p, x) if vector(counts::tex_parameter(p)) => {
+            Call::TexParameteriv(t, p, vec![x, 0, 0, 0])
+        }
+        Call::TexEnvf(t, p, x) if vector(counts::tex_env(p)) => Call::TexEnvfv(t, p, f4(x)),
+        Call::TexEnvi(t, p, x) if vector(counts::tex_env(p)) => {
+            Call::TexEnviv(t, p, vec![x, 0, 0, 0])
+        }
+        Call::TexGenf(c, p, x) if vector(counts::tex_gen(p)) => Call::TexGenfv(c, p, f4(x)),
+        Call::TexGend(c, p, x) if vector(counts::tex_gen(p)) => {
+            Call::TexGendv(c, p, vec![x, 0.0, 0.0, 0.0])
+        }
+        Call::TexGeni(c, p, x) if vector(counts::tex_gen(p)) => {
+            Call::TexGeniv(c, p, vec![x, 0, 0, 0])
+        }
+        _ => return None,
+    })
+}
+
 /// The GL 2.1 errors a newer driver does not raise, because a later version or an extension it
 /// implements relaxes the rule; the backend raises them itself, so that both backends give the
 /// spec's error (the error-agreement test walks every pname-taking command for this).
 fn gl21_error(call: &Call) -> Option<u32> {
-    // The f/i/d forms take single-valued pnames only (GL 2.1 §2.11.4, §2.14.2, §3.8.4, §3.8.13,
-    // §3.10); Mesa passes the value on as the first of four.
-    let vector = |count: Option<usize>| count.is_some_and(|n| n > 1);
     // GL 2.1 table 3.21's sources; ZERO and ONE come with ATI_texture_env_combine3.
     let zero_one_source = |pname: u32, v: f64| {
         (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname) && (0.0..2.0).contains(&v)
     };
     let wrong = match *call {
-        Call::Lightf(_, p, _) | Call::Lighti(_, p, _) => vector(counts::light(p)),
-        Call::Materialf(_, p, _) | Call::Materiali(_, p, _) => vector(counts::material(p)),
-        Call::LightModelf(p, _) | Call::LightModeli(p, _) => vector(counts::light_model(p)),
-        Call::Fogf(p, _) | Call::Fogi(p, _) => vector(counts::fog(p)),
-        Call::PointParameterf(p, _) | Call::PointParameteri(p, _) => {
-            vector(counts::point_parameter(p))
-        }
-        Call::TexParameterf(_, p, _) | Call::TexParameteri(_, p, _) => {
-            vector(counts::tex_parameter(p))
-        }
-        Call::TexGenf(_, p, _) | Call::TexGeni(_, p, _) | Call::TexGend(_, p, _) => {
-            vector(counts::tex_gen(p))
-        }
-        Call::TexEnvf(_, p, v) => vector(counts::tex_env(p)) || zero_one_source(p, f64::from(v)),
-        Call::TexEnvi(_, p, v) => vector(counts::tex_env(p)) || zero_one_source(p, f64::from(v)),
+        Call::TexEnvf(_, p, v) => zero_one_source(p, f64::from(v)),
+        Call::TexEnvi(_, p, v) => zero_one_source(p, f64::from(v)),
         Call::TexEnvfv(_, p, ref v) => v.first().is_some_and(|&x| zero_one_source(p, f64::from(x))),
         Call::TexEnviv(_, p, ref v) => v.first().is_some_and(|&x| zero_one_source(p, f64::from(x))),
         // SRC_ALPHA_SATURATE is a source factor only (§4.1.8); ARB_blend_func_extended takes it

@@ -26,6 +26,7 @@ pub const ACCUM_CONFIG: ContextConfig = ContextConfig {
     depth: true,
     stencil: true,
     accum: true,
+    alpha: true,
 };
 
 /// The scenes of this module, for the registry.

@@ -62,6 +62,7 @@ pub const DEFAULT_CONFIG: ContextConfig = ContextConfig {
     depth: true,
     stencil: true,
     accum: false,
+    alpha: true,
 };
 
 /// How close the CPU and GL renderings of a scene must be.

@@ -200,6 +200,16 @@ const ROWS: &[(u32, Setter, u32)] = &[
     (gl::COLOR_BUFFER_BIT, |c| c.enable(gl::BLEND), gl::BLEND),
     (
         gl::COLOR_BUFFER_BIT,
+        |c| c.clear_index(3.75),
+        gl::INDEX_CLEAR_VALUE,
+    ),
+    (
+        gl::COLOR_BUFFER_BIT,
+        |c| c.index_mask(5),
+        gl::INDEX_WRITEMASK,
+    ),
+    (
+        gl::COLOR_BUFFER_BIT,
         |c| c.enable(gl::ALPHA_TEST),
         gl::ALPHA_TEST,
     ),

@@ -15,12 +15,14 @@ const DOUBLE: ContextConfig = ContextConfig {
     depth: true,
     stencil: true,
     accum: false,
+    alpha: true,
 };
 const ACCUM: ContextConfig = ContextConfig {
     double_buffered: false,
     depth: true,
     stencil: true,
     accum: true,
+    alpha: true,
 };
 
 fn ctx(w: u32, h: u32, config: ContextConfig) -> Context {

@@ -187,7 +187,6 @@ const ROWS: &[(&str, Step, Step, u32)] = &[
     ("Fogf negative density", set, |c| c.fogf(gl::FOG_DENSITY, -0.01), IV),
     ("Fogfv negative density", set, |c| c.fogfv(gl::FOG_DENSITY, &[-1.0]), IV),
     ("Fogi bad coord src", set, |c| c.fogi(gl::FOG_COORD_SRC, gl::FOG_HINT as i32), IE),
-    ("Fogf FOG_COLOR (vector only)", set, |c| c.fogf(gl::FOG_COLOR, 1.0), IE),
     ("Fogfv short FOG_COLOR", set, |c| c.fogfv(gl::FOG_COLOR, &[1.0, 1.0, 1.0]), IV),
     ("Fogiv short FOG_COLOR", set, |c| c.fogiv(gl::FOG_COLOR, &[1, 1]), IV),
     ("Fogfv empty", set, |c| c.fogfv(gl::FOG_START, &[]), IV),

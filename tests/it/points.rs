@@ -87,7 +87,7 @@ fn sequences() -> Vec<(&'static str, Vec<Call>)> {
                 C::PointParameterf(gl::POINT_SIZE_MIN, -1.0),
                 C::PointParameterf(gl::POINT_SIZE_MAX, -0.5),
                 C::PointParameteri(gl::POINT_FADE_THRESHOLD_SIZE, -2),
-                C::PointParameterf(gl::POINT_DISTANCE_ATTENUATION, 2.0),
+                C::PointParameterfv(gl::POINT_DISTANCE_ATTENUATION, vec![2.0]),
                 C::PointParameteri(gl::POINT_SPRITE_COORD_ORIGIN, gl::LEFT as i32),
                 C::PointParameterf(gl::POINT_SIZE, 3.0),
                 C::PointParameterfv(gl::LINE_WIDTH, vec![3.0]),
@@ -147,13 +147,15 @@ fn point_state_on_the_front_end() {
         v[..8],
         [1.0, 0.0, 255.0, 1.0, 1.0, 0.0, 0.0, gl::UPPER_LEFT as f32]
     );
-    c.point_parameterf(gl::POINT_DISTANCE_ATTENUATION, 1.0);
-    assert_eq!(c.get_error(), gl::INVALID_ENUM);
     c.point_parameterfv(gl::POINT_DISTANCE_ATTENUATION, &[1.0, 2.0]);
     assert_eq!(c.get_error(), gl::INVALID_VALUE);
     c.point_parameterf(gl::POINT_SIZE_MIN, -1.0);
     assert_eq!(c.get_error(), gl::INVALID_VALUE);
     assert_eq!(cpu_values(&mut c), v, "errors change nothing");
+    // The scalar form takes the three-valued pname as Mesa does: [param, 0, 0].
+    c.point_parameterf(gl::POINT_DISTANCE_ATTENUATION, 0.5);
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    assert_eq!(cpu_values(&mut c)[4..7], [0.5, 0.0, 0.0]);
 }
 
 #[cfg(feature = "gl")]

@@ -1382,6 +1382,8 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             depth_mask,
             stencil_writemask,
             clear_color,
+            clear_index,
+            index_writemask,
             clear_depth,
             clear_stencil,
             draw_buffer,

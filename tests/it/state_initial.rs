@@ -202,6 +202,11 @@ const GET_ROWS: &[(&str, u32, Want)] = &[
     row!(DEPTH_CLEAR_VALUE, D(&[1.0])),
     row!(DEPTH_CLEAR_VALUE, I(&[ONE_I])),
     row!(STENCIL_CLEAR_VALUE, I(&[0])),
+    // INDEX_WRITEMASK: "1's", 32 of them; GetIntegerv saturates an unsigned value past i32::MAX
+    // as it does STENCIL_WRITEMASK's (Mesa's int field gives -1).
+    row!(INDEX_WRITEMASK, I(&[i32::MAX])),
+    row!(INDEX_WRITEMASK, D(&[4_294_967_295.0])),
+    row!(INDEX_CLEAR_VALUE, F(&[0.0])),
     // Table 6.24: pixel store.
     row!(UNPACK_ALIGNMENT, I(&[4])),
     row!(PACK_ALIGNMENT, I(&[4])),
@@ -643,6 +648,7 @@ fn configured_framebuffers_report_their_buffers() {
         depth: false,
         stencil: true,
         accum: true,
+        alpha: true,
     };
     let mut c = Context::with_config(16, 16, config).expect("context");
     for (name, pname, want) in [

@@ -317,8 +317,8 @@ fn error_rows_change_nothing() {
             INVALID_ENUM,
         ),
         (
-            "TexParameteri border colour scalar",
-            |g| g.tex_parameteri(TEXTURE_2D, TEXTURE_BORDER_COLOR, 0),
+            "TexParameteri border colour scalar, bad target",
+            |g| g.tex_parameteri(TEXTURE_ENV, TEXTURE_BORDER_COLOR, 0),
             INVALID_ENUM,
         ),
         (
@@ -362,8 +362,8 @@ fn error_rows_change_nothing() {
             INVALID_ENUM,
         ),
         (
-            "TexGenf plane scalar",
-            |g| g.tex_genf(S, EYE_PLANE, 1.0),
+            "TexGenf plane scalar, bad coord",
+            |g| g.tex_genf(TEXTURE_2D, EYE_PLANE, 1.0),
             INVALID_ENUM,
         ),
         (
