@@ -243,55 +243,80 @@ impl Renderer {
             _ => (color, None),
         };
         let seconds = tile_slices(secondary, tiles_x * tiles_y);
-        let counted: u64 = primary
-            .par_chunks_mut(TILE_PIXELS)
-            .zip(seconds)
-            .zip(depth.par_chunks_mut(TILE_PIXELS))
-            .zip(stencil.par_chunks_mut(TILE_PIXELS))
-            .enumerate()
-            .map(|(t, (((color, color2), depth), stencil))| {
-                let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
-                let (tx0, ty0) = (x0.max(ox), y0.max(oy));
-                let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
-                if tx0 > tx1 || ty0 > ty1 {
-                    return 0;
-                }
-                let mut bufs = TileBufs {
-                    color,
-                    color2,
-                    depth,
-                    stencil,
-                    x: ox,
-                    y: oy,
-                    samples: 0,
+        let tile_rect = |t: usize| {
+            let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
+            let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+            let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+            (ox, oy, tx0, ty0, tx1, ty1)
+        };
+        let work = |t: usize, color, color2, depth, stencil| -> u64 {
+            let (ox, oy, tx0, ty0, tx1, ty1) = tile_rect(t);
+            if tx0 > tx1 || ty0 > ty1 {
+                return 0;
+            }
+            let mut bufs = TileBufs {
+                color,
+                color2,
+                depth,
+                stencil,
+                x: ox,
+                y: oy,
+                samples: 0,
+            };
+            for y in ty0..=ty1 {
+                let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
+                    continue;
                 };
-                for y in ty0..=ty1 {
-                    let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
+                let row = gj as usize * d.width;
+                let base = (y - oy) as usize * TILE;
+                for x in tx0..=tx1 {
+                    let Some(&gi) = d.cols.groups.get((x - x0) as usize) else {
                         continue;
                     };
-                    let row = gj as usize * d.width;
-                    let base = (y - oy) as usize * TILE;
-                    for x in tx0..=tx1 {
-                        let Some(&gi) = d.cols.groups.get((x - x0) as usize) else {
-                            continue;
-                        };
-                        let g = row + gi as usize;
-                        let i = base + (x - ox) as usize;
-                        fragment(
-                            &fctx,
-                            &shared,
-                            &mut bufs,
-                            d.groups,
-                            g,
-                            i,
-                            plain,
-                            stencil_mask,
-                        );
-                    }
+                    let g = row + gi as usize;
+                    let i = base + (x - ox) as usize;
+                    fragment(
+                        &fctx,
+                        &shared,
+                        &mut bufs,
+                        d.groups,
+                        g,
+                        i,
+                        plain,
+                        stencil_mask,
+                    );
                 }
-                bufs.samples
+            }
+            bufs.samples
+        };
+        // A rectangle within one or two tiles (a glyph, a small image) is drawn on this
+        // thread: handing it to the pool costs more than drawing it (`bench bitmap-text`).
+        // Tiles are independent, so the pixels are the same either way.
+        let busy = (0..tiles_x * tiles_y)
+            .filter(|&t| {
+                let (_, _, tx0, ty0, tx1, ty1) = tile_rect(t);
+                tx0 <= tx1 && ty0 <= ty1
             })
-            .sum();
+            .count();
+        let counted: u64 = if busy <= 2 {
+            primary
+                .chunks_mut(TILE_PIXELS)
+                .zip(seconds)
+                .zip(depth.chunks_mut(TILE_PIXELS))
+                .zip(stencil.chunks_mut(TILE_PIXELS))
+                .enumerate()
+                .map(|(t, (((c, c2), d), s))| work(t, c, c2, d, s))
+                .sum()
+        } else {
+            primary
+                .par_chunks_mut(TILE_PIXELS)
+                .zip(seconds)
+                .zip(depth.par_chunks_mut(TILE_PIXELS))
+                .zip(stencil.par_chunks_mut(TILE_PIXELS))
+                .enumerate()
+                .map(|(t, (((c, c2), d), s))| work(t, c, c2, d, s))
+                .sum()
+        };
         core.samples_passed += counted;
     }
 }
