@@ -700,47 +700,68 @@ fn rasterise(
         _ => (color, None, false),
     };
     let seconds = framebuffer::tile_slices(secondary, tx * ty);
-    primary
-        .par_chunks_mut(TILE_PIXELS)
-        .zip(seconds)
-        .zip(depth.par_chunks_mut(TILE_PIXELS))
-        .zip(stencil.par_chunks_mut(TILE_PIXELS))
-        .zip(pending.par_iter_mut())
-        .enumerate()
-        .map(|(t, ((((color, mut color2), depth), stencil), fill))| {
-            if workers
-                .iter()
-                .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
-            {
-                return 0;
+    let idle = |t: usize| {
+        workers
+            .iter()
+            .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
+    };
+    let work = |t: usize,
+                color: &mut [[u8; 4]],
+                mut color2: Option<&mut [[u8; 4]]>,
+                depth: &mut [u32],
+                stencil: &mut [u8],
+                fill: &mut framebuffer::Fill|
+     -> u64 {
+        if idle(t) {
+            return 0;
+        }
+        // A lazily cleared tile is written before its first primitive (the colour buffer
+        // not drawn stays pending).
+        if !fill.is_empty() {
+            match front_first {
+                true => fill.materialize(None, Some(&mut *color), depth, stencil),
+                false => fill.materialize(Some(&mut *color), color2.as_deref_mut(), depth, stencil),
             }
-            // A lazily cleared tile is written before its first primitive (the colour buffer
-            // not drawn stays pending).
-            if !fill.is_empty() {
-                match front_first {
-                    true => fill.materialize(None, Some(&mut *color), depth, stencil),
-                    false => {
-                        fill.materialize(Some(&mut *color), color2.as_deref_mut(), depth, stencil)
-                    }
+        }
+        let mut bufs = TileBufs {
+            color,
+            color2,
+            depth,
+            stencil,
+            x: ((t % tiles_x) * TILE) as i32,
+            y: ((t / tiles_x) * TILE) as i32,
+            samples: 0,
+        };
+        for w in workers {
+            for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
+                if let Some(p) = w.prims.get(pi as usize) {
+                    raster::prim(fctx, &mut bufs, p, &w.pool);
                 }
             }
-            let mut bufs = TileBufs {
-                color,
-                color2,
-                depth,
-                stencil,
-                x: ((t % tiles_x) * TILE) as i32,
-                y: ((t / tiles_x) * TILE) as i32,
-                samples: 0,
-            };
-            for w in workers {
-                for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
-                    if let Some(p) = w.prims.get(pi as usize) {
-                        raster::prim(fctx, &mut bufs, p, &w.pool);
-                    }
-                }
-            }
-            bufs.samples
-        })
-        .sum()
+        }
+        bufs.samples
+    };
+    // Primitives within one or two tiles are drawn on this thread: handing them to the pool
+    // costs more than drawing them. Tiles are independent, so the pixels are the same.
+    if (0..tx * ty).filter(|&t| !idle(t)).take(3).count() <= 2 {
+        primary
+            .chunks_mut(TILE_PIXELS)
+            .zip(seconds)
+            .zip(depth.chunks_mut(TILE_PIXELS))
+            .zip(stencil.chunks_mut(TILE_PIXELS))
+            .zip(pending.iter_mut())
+            .enumerate()
+            .map(|(t, ((((c, c2), d), s), f))| work(t, c, c2, d, s, f))
+            .sum()
+    } else {
+        primary
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(seconds)
+            .zip(depth.par_chunks_mut(TILE_PIXELS))
+            .zip(stencil.par_chunks_mut(TILE_PIXELS))
+            .zip(pending.par_iter_mut())
+            .enumerate()
+            .map(|(t, ((((c, c2), d), s), f))| work(t, c, c2, d, s, f))
+            .sum()
+    }
 }
