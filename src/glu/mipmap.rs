@@ -175,128 +175,30 @@ struct Packed {
     dbl: bool,
 }
 
+/// The packed type `t` as libGLU reads it: the field layout of GL 1.2 table 3.8, which
+/// `src/pixels.rs` holds for every pixel command (`Ty::of`), each field as mask, shift and
+/// maximum; libGLU's shove multiplies in double for 2_3_3_REV and 5_6_5_REV only.
+/// UNSIGNED_INT_24_8 (GL_EXT_packed_depth_stencil) is no type of libGLU's.
 fn packed_of(t: u32) -> Option<Packed> {
-    const Z: Field = Field(0, 0, 1);
-    let p = |size, fields: &[Field], dbl| {
-        let mut f = [Z; 4];
-        f[..fields.len()].copy_from_slice(fields);
-        Packed {
-            size,
-            comps: fields.len(),
-            fields: f,
-            dbl,
-        }
+    let Some(crate::pixels::Ty::Packed { size, fields }) = crate::pixels::Ty::of(t) else {
+        return None;
     };
-    Some(match t {
-        gl::UNSIGNED_BYTE_3_3_2 => p(
-            1,
-            &[Field(0xe0, 5, 7), Field(0x1c, 2, 7), Field(0x03, 0, 3)],
-            false,
+    if t == gl::UNSIGNED_INT_24_8 {
+        return None;
+    }
+    let mut f = [Field(0, 0, 1); 4];
+    for (o, &(shift, bits)) in f.iter_mut().zip(fields) {
+        let max = (1u32 << bits) - 1;
+        *o = Field(max << shift, shift, max);
+    }
+    Some(Packed {
+        size,
+        comps: fields.len(),
+        fields: f,
+        dbl: matches!(
+            t,
+            gl::UNSIGNED_BYTE_2_3_3_REV | gl::UNSIGNED_SHORT_5_6_5_REV
         ),
-        gl::UNSIGNED_BYTE_2_3_3_REV => p(
-            1,
-            &[Field(0x07, 0, 7), Field(0x38, 3, 7), Field(0xc0, 6, 3)],
-            true,
-        ),
-        gl::UNSIGNED_SHORT_5_6_5 => p(
-            2,
-            &[
-                Field(0xf800, 11, 31),
-                Field(0x07e0, 5, 63),
-                Field(0x1f, 0, 31),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_SHORT_5_6_5_REV => p(
-            2,
-            &[
-                Field(0x1f, 0, 31),
-                Field(0x07e0, 5, 63),
-                Field(0xf800, 11, 31),
-            ],
-            true,
-        ),
-        gl::UNSIGNED_SHORT_4_4_4_4 => p(
-            2,
-            &[
-                Field(0xf000, 12, 15),
-                Field(0x0f00, 8, 15),
-                Field(0xf0, 4, 15),
-                Field(0xf, 0, 15),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_SHORT_4_4_4_4_REV => p(
-            2,
-            &[
-                Field(0xf, 0, 15),
-                Field(0xf0, 4, 15),
-                Field(0x0f00, 8, 15),
-                Field(0xf000, 12, 15),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_SHORT_5_5_5_1 => p(
-            2,
-            &[
-                Field(0xf800, 11, 31),
-                Field(0x07c0, 6, 31),
-                Field(0x3e, 1, 31),
-                Field(0x1, 0, 1),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_SHORT_1_5_5_5_REV => p(
-            2,
-            &[
-                Field(0x1f, 0, 31),
-                Field(0x3e0, 5, 31),
-                Field(0x7c00, 10, 31),
-                Field(0x8000, 15, 1),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_INT_8_8_8_8 => p(
-            4,
-            &[
-                Field(0xff00_0000, 24, 255),
-                Field(0xff_0000, 16, 255),
-                Field(0xff00, 8, 255),
-                Field(0xff, 0, 255),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_INT_8_8_8_8_REV => p(
-            4,
-            &[
-                Field(0xff, 0, 255),
-                Field(0xff00, 8, 255),
-                Field(0xff_0000, 16, 255),
-                Field(0xff00_0000, 24, 255),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_INT_10_10_10_2 => p(
-            4,
-            &[
-                Field(0xffc0_0000, 22, 1023),
-                Field(0x003f_f000, 12, 1023),
-                Field(0xffc, 2, 1023),
-                Field(0x3, 0, 3),
-            ],
-            false,
-        ),
-        gl::UNSIGNED_INT_2_10_10_10_REV => p(
-            4,
-            &[
-                Field(0x3ff, 0, 1023),
-                Field(0xf_fc00, 10, 1023),
-                Field(0x3ff0_0000, 20, 1023),
-                Field(0xc000_0000, 30, 3),
-            ],
-            false,
-        ),
-        _ => return None,
     })
 }
 
