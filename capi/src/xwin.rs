@@ -372,12 +372,20 @@ impl XDrawable {
     /// The program destroyed the drawable (glXDestroyWindow ...): frees what fixedgl made on
     /// the server for it, while the display is still open, and sends nothing more.
     pub fn release(&mut self) {
+        self.let_go(true);
+    }
+
+    /// As `release`; `detach`: whether to detach the shared-memory segment from the server too.
+    /// Not when the display is closing: the server detaches it when the connection ends, and
+    /// libXext may already have dropped the display's MIT-SHM record (XShmDetach would then
+    /// make a new one that outlives the display, for a later display at the same address).
+    fn let_go(&mut self, detach: bool) {
         if self.gone {
             return;
         }
         self.gone = true;
         let Some(x) = xlib() else { return };
-        self.drop_image(x);
+        self.drop_image(x, detach);
         if !self.gc.is_null() {
             // SAFETY: a GC fixedgl made on this display.
             unsafe { (x.XFreeGC)(self.dpy, self.gc) };
@@ -385,17 +393,18 @@ impl XDrawable {
         }
     }
 
-    fn drop_image(&mut self, x: &Xlib) {
+    fn drop_image(&mut self, x: &Xlib, detach: bool) {
         match self.image.take() {
             Some(Image::Shm { image, info }) => {
-                if let Some(ext) = xext() {
-                    // SAFETY: the segment fixedgl attached on this display; the image Xlib
-                    // made for it, whose data (the segment) is detached here, not freed by Xlib.
-                    unsafe {
-                        (ext.XShmDetach)(self.dpy, &*info as *const _ as *mut _);
-                        (*image).data = std::ptr::null_mut();
-                        (x.XDestroyImage)(image);
-                    }
+                if let (Some(ext), true) = (xext(), detach) {
+                    // SAFETY: the segment fixedgl attached on this display.
+                    unsafe { (ext.XShmDetach)(self.dpy, &*info as *const _ as *mut _) };
+                }
+                // SAFETY: the image Xlib made for the segment, whose data (the segment) is
+                // detached below, not freed by Xlib.
+                unsafe {
+                    (*image).data = std::ptr::null_mut();
+                    (x.XDestroyImage)(image);
                 }
                 // SAFETY: the segment fixedgl attached to this process.
                 unsafe { libc::shmdt(info.shmaddr as *const libc::c_void) };
@@ -412,7 +421,7 @@ impl XDrawable {
             im.width == w as c_int && im.height == h as c_int
         });
         if !fits {
-            self.drop_image(x);
+            self.drop_image(x, true);
             if self.shm.is_none() {
                 self.shm = Some(
                     std::env::var_os("FIXEDGL_NO_SHM").is_none()
@@ -712,6 +721,7 @@ pub(crate) fn find(dpy: *mut Display, xid: c_ulong) -> Option<Shared> {
 
 /// Keeps `d` (replacing an older drawable of the same XID: windows' XIDs are reused).
 pub(crate) fn insert(d: XDrawable) -> Shared {
+    watch_close(d.dpy);
     let key = (d.dpy as usize, d.xid);
     let shared = Arc::new(Mutex::new(d));
     drawables(|all| {
@@ -719,6 +729,52 @@ pub(crate) fn insert(d: XDrawable) -> Shared {
         all.push((key.0, key.1, shared.clone()));
     });
     shared
+}
+
+/// The displays whose closing fixedgl hears of (`XESetCloseDisplay`).
+static WATCHED: Mutex<Vec<usize>> = Mutex::new(Vec::new());
+
+/// Asks Xlib to tell fixedgl when `dpy` is closed (as Mesa's GLX does, through an extension
+/// record of the display's own): its drawables are forgotten then. Without this, a display
+/// opened later at the same address, on a server that hands out the same XIDs (a fresh server
+/// does), would find the closed display's drawables, with their GCs and shared-memory segments
+/// of a connection that no longer exists.
+fn watch_close(dpy: *mut Display) {
+    let Some(x) = xlib() else { return };
+    let mut watched = WATCHED.lock().unwrap_or_else(|e| e.into_inner());
+    if dpy.is_null() || watched.contains(&(dpy as usize)) {
+        return;
+    }
+    // SAFETY: an open display; Xlib owns the record it returns and frees it at XCloseDisplay.
+    unsafe {
+        let codes = (x.XAddExtension)(dpy);
+        if codes.is_null() {
+            return;
+        }
+        (x.XESetCloseDisplay)(dpy, (*codes).extension, Some(display_closing));
+    }
+    watched.push(dpy as usize);
+}
+
+/// XCloseDisplay's call-out (the display still works here): every drawable of `dpy` lets go of
+/// its X resources and is marked gone (a context still current on one presents nothing), and is
+/// forgotten.
+unsafe extern "C" fn display_closing(dpy: *mut Display, _codes: *mut xlib::XExtCodes) -> c_int {
+    WATCHED
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .retain(|d| *d != dpy as usize);
+    let closing = drawables(|all| {
+        let (closing, kept) = std::mem::take(all)
+            .into_iter()
+            .partition(|(d, _, _)| *d == dpy as usize);
+        *all = kept;
+        closing
+    });
+    for (_, _, s) in closing {
+        lock(&s).let_go(false);
+    }
+    0
 }
 
 /// Forgets a drawable the program destroyed; what it was, if fixedgl knew it.
