@@ -1,6 +1,6 @@
 //! The GLU 1.3 helpers lecture code leans on: `gluLookAt`, `gluPerspective`, `gluOrtho2D`,
 //! `gluPickMatrix`, `gluProject` and `gluUnProject` (GLU 1.3 §4.1, §4.2); `gluScaleImage`,
-//! `gluBuild1D/2DMipmaps` and their `Levels` forms (§3, `mipmap.rs`); the tessellator (§5, `tess.rs`: `new_tess`,
+//! `gluBuild1D/2D/3DMipmaps` and their `Levels` forms (§3, `mipmap.rs`); the tessellator (§5, `tess.rs`: `new_tess`,
 //! callbacks, winding rules, contours); the quadrics (§6, `quadric.rs`: `new_quadric`,
 //! `sphere`, `cylinder`, `disk`, `partial_disk`); `gluErrorString`. NURBS (§7) are not there.
 //!
@@ -26,10 +26,11 @@ mod tess_mesh;
 mod tess_sweep;
 pub use tess::*;
 
-// gluScaleImage, gluBuild1D/2DMipmaps[Levels] (glu/mipmap.rs)
+// gluScaleImage, gluBuild1D/2D/3DMipmaps[Levels] (glu/mipmap.rs, glu/mipmap/three_d.rs)
 mod mipmap;
 pub use mipmap::{
-    build_1d_mipmap_levels, build_1d_mipmaps, build_2d_mipmap_levels, build_2d_mipmaps, scale_image,
+    build_1d_mipmap_levels, build_1d_mipmaps, build_2d_mipmap_levels, build_2d_mipmaps,
+    build_3d_mipmap_levels, build_3d_mipmaps, scale_image,
 };
 
 /// `v / |v|`, or `v` unchanged when it has zero length (as the reference GLU does).

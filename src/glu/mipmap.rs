@@ -15,11 +15,17 @@
 //!   `halveImage_<type>` with integer rounding for the 8- and 16-bit types, double or float
 //!   sums for the 32-bit ones, the packed types through float components), BITMAP through the
 //!   16-bit path; sizes from libGLU's `closestFit`, which asks the driver through
-//!   PROXY_TEXTURE_1D/2D/CUBE_MAP whether level 1 fits and halves until it does.
+//!   PROXY_TEXTURE_1D/2D/CUBE_MAP whether level 1 fits and halves until it does;
+//! - `build_3d_mipmaps` / `build_3d_mipmap_levels` (`three_d.rs`) likewise in the caller's
+//!   type, with libGLU's 3D filters and `gluScaleImage3D`, sized through PROXY_TEXTURE_3D.
 
 use crate::{gl, Context};
 
 use super::{GLU_INVALID_ENUM, GLU_INVALID_OPERATION, GLU_INVALID_VALUE};
+
+// gluBuild3DMipmaps[Levels] (glu/mipmap/three_d.rs), on this file's machinery.
+mod three_d;
+pub use three_d::{build_3d_mipmap_levels, build_3d_mipmaps};
 
 fn is_index(format: u32) -> bool {
     format == gl::COLOR_INDEX || format == gl::STENCIL_INDEX

@@ -11,7 +11,7 @@ use fixedgl::glu;
 use fixedgl::{gl, Context};
 
 /// A deterministic image: `n` bytes of varied values.
-fn image(n: usize, seed: u32) -> Vec<u8> {
+pub(crate) fn image(n: usize, seed: u32) -> Vec<u8> {
     let mut s = seed.wrapping_mul(2_654_435_761).wrapping_add(12345);
     (0..n)
         .map(|_| {
@@ -731,7 +731,7 @@ mod with_libglu {
 /// Every format/type pair the sweeps run: (format, type), packed types with the formats
 /// libGLU pairs them with.
 #[cfg(feature = "gl")]
-fn sweep_pairs() -> Vec<(u32, u32)> {
+pub(crate) fn sweep_pairs() -> Vec<(u32, u32)> {
     let plain = [
         gl::UNSIGNED_BYTE,
         gl::BYTE,
@@ -784,7 +784,7 @@ fn sweep_pairs() -> Vec<(u32, u32)> {
 /// Source data for `t`: random bytes, except FLOAT, whose values stay in [0, 1.2) (colour) or
 /// [0, 300) (indices), where C's float-to-integer conversions are defined.
 #[cfg(feature = "gl")]
-fn typed_image(n: usize, seed: u32, format: u32, t: u32) -> Vec<u8> {
+pub(crate) fn typed_image(n: usize, seed: u32, format: u32, t: u32) -> Vec<u8> {
     let raw = image(n, seed);
     if t != gl::FLOAT {
         return raw;

@@ -21,6 +21,7 @@ mod fragment_state;
 mod gl_backend;
 mod gl_lists;
 mod glu_mipmap;
+mod glu_mipmap3d;
 mod glu_quadric;
 mod glu_tess;
 mod glut;
