@@ -389,6 +389,12 @@ mod with_libglu {
         (gl::UNPACK_SWAP_BYTES, 1),
     ];
 
+    /// Sizes left out of the sweep because libGLU's own result is not defined there: a size
+    /// scaled to a width whose rows PACK_ALIGNMENT pads (libGLU's `emptyImage3D` writes past
+    /// its tight buffer and corrupts its heap: 1x9x3 aborts the process in realloc), and a
+    /// scaled 1-high image halved at depth > 1 twice (7x1x5: the stale image stride reads past
+    /// libGLU's smaller level buffer, heap contents).
+    ///
     /// gluBuild3DMipmaps and gluBuild3DMipmapLevels over every format/type pair libGLU's 3D
     /// builders take, sizes that are powers of two and not (scaled), 1 deep, deeper than wide,
     /// 1-wide/1-high slices and columns, two sets of unpack modes (the second with row length,
@@ -411,8 +417,8 @@ mod with_libglu {
             (Builder::Mip3, (3, 7, 2)),
             (Builder::Mip3, (16, 2, 4)),
             (Builder::Mip3, (1, 1, 4)),
-            (Builder::Mip3, (7, 1, 5)),
-            (Builder::Mip3, (1, 9, 3)),
+            (Builder::Mip3, (7, 2, 5)),
+            (Builder::Mip3, (1, 8, 4)),
             (Builder::Levels3(1, 2, 4), (8, 4, 8)),
             (Builder::Levels3(0, 0, 2), (5, 4, 4)),
             (Builder::Levels3(0, 0, 3), (8, 8, 2)),

@@ -301,7 +301,8 @@ fn scale_internal_3d(
     input: &[u16],
     (wout, hout, dout): (i32, i32, i32),
 ) -> Vec<u16> {
-    let mut out = vec![0u16; (wout * hout * dout) as usize * c];
+    let (wo, ho, wi, hi) = (wout as usize, hout as usize, win as usize, hin as usize);
+    let mut out = vec![0u16; wo * ho * dout as usize * c];
     let convz = din as f32 / dout as f32;
     let convy = hin as f32 / hout as f32;
     let convx = win as f32 / wout as f32;
@@ -349,14 +350,14 @@ fn scale_internal_3d(
                         for &(xi, xp) in &xs {
                             let percent = xp * yp * zp;
                             volume += percent;
-                            let temp = (xi + yi * win + zi * win * hin) as usize * c;
+                            let temp = (xi as usize + yi as usize * wi + zi as usize * wi * hi) * c;
                             for k in 0..c {
                                 totals[k] += f32::from(input[temp + k]) * percent;
                             }
                         }
                     }
                 }
-                let temp = (j + i * wout + d * wout * hout) as usize * c;
+                let temp = (j as usize + i as usize * wo + d as usize * wo * ho) * c;
                 for k in 0..c {
                     out[temp + k] = ((f64::from(totals[k]) + 0.5) / f64::from(volume)) as u16;
                 }
