@@ -327,8 +327,20 @@ fn get_tex_image_round_trips_match_the_driver() {
             assert_eq!(a[k] & 0xFF, b[k] & 0xFF, "index of texel {k}");
         }
     }
-    // CopyTexSubImage and CopyTexImage from the depth and stencil buffers.
+    // CopyTexSubImage and CopyTexImage from the depth and stencil buffers, into an image
+    // whose every index is defined on both.
     cpu.start_recording();
+    cpu.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        DEPTH24_STENCIL8 as i32,
+        4,
+        4,
+        0,
+        DEPTH_STENCIL,
+        UNSIGNED_INT_24_8,
+        Some(&bytes_of(&words)),
+    );
     cpu.clear_depth(0.25);
     cpu.clear_stencil(0x5A);
     cpu.clear(DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
