@@ -433,7 +433,11 @@ pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
         t.map(|c| (c.clamp(0.0, 1.0) * s).round() / s)
     } else if base == gl::DEPTH_STENCIL {
         let d = (t[0].clamp(0.0, 1.0) * s).round() / s;
-        let st = if t[1].is_nan() { 0.0 } else { t[1].clamp(0.0, 255.0).round() };
+        let st = if t[1].is_nan() {
+            0.0
+        } else {
+            t[1].clamp(0.0, 255.0).round()
+        };
         [d, st, 0.0, 0.0]
     } else {
         t.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0)

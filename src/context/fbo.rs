@@ -1046,9 +1046,14 @@ impl Context {
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(&mut self.state.textures.objects, &att, w, h, None, |x, y| {
-                    pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0))
-                });
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    None,
+                    |x, y| pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0)),
+                );
             }
             Attachment::None => {}
         }
@@ -1066,9 +1071,16 @@ impl Context {
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(&mut self.state.textures.objects, &att, w, h, Some(0), |x, y| {
-                    pixel(x, y).map(|(_, d, _)| [d as f32 / DEPTH_MAX as f32, 0.0, 0.0, 0.0])
-                });
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    Some(0),
+                    |x, y| {
+                        pixel(x, y).map(|(_, d, _)| [d as f32 / DEPTH_MAX as f32, 0.0, 0.0, 0.0])
+                    },
+                );
             }
             Attachment::None => {}
         }
@@ -1086,9 +1098,14 @@ impl Context {
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(&mut self.state.textures.objects, &att, w, h, Some(1), |x, y| {
-                    pixel(x, y).map(|(_, _, s)| [0.0, f32::from(s), 0.0, 0.0])
-                });
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    Some(1),
+                    |x, y| pixel(x, y).map(|(_, _, s)| [0.0, f32::from(s), 0.0, 0.0]),
+                );
             }
             Attachment::None => {}
         }

@@ -30,8 +30,7 @@ use crate::gl;
 use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
     as_rgba, base_internal_format, image_binding, image_need3, is_depth, keep, proxy_index,
-    quantize,
-    slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
+    quantize, slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
     MAX_TEXTURE_SIZE,
 };
 

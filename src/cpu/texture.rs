@@ -132,7 +132,7 @@ impl Sampler {
             },
             compare: (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
                 && crate::texture::is_depth(b.base))
-                .then_some(obj.compare_func),
+            .then_some(obj.compare_func),
             depth_mode: obj.depth_texture_mode,
             obj: Arc::clone(obj),
         })

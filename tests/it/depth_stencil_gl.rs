@@ -179,7 +179,12 @@ fn sub_image_and_copy_errors_match_the_driver() {
     let rows: Vec<(Call, u32)> = vec![
         (Call::BindTexture(TEXTURE_2D, 1), NO_ERROR),
         (
-            tex_image(TEXTURE_2D, DEPTH24_STENCIL8, DEPTH_STENCIL, UNSIGNED_INT_24_8),
+            tex_image(
+                TEXTURE_2D,
+                DEPTH24_STENCIL8,
+                DEPTH_STENCIL,
+                UNSIGNED_INT_24_8,
+            ),
             NO_ERROR,
         ),
         (sub(DEPTH_STENCIL, UNSIGNED_INT_24_8), NO_ERROR),
@@ -189,7 +194,10 @@ fn sub_image_and_copy_errors_match_the_driver() {
         (sub(STENCIL_INDEX, UNSIGNED_BYTE), INVALID_OPERATION),
         (sub(DEPTH_STENCIL, UNSIGNED_INT), INVALID_ENUM),
         (sub(DEPTH_COMPONENT, UNSIGNED_INT_24_8), INVALID_OPERATION),
-        (Call::CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 1, 2), NO_ERROR),
+        (
+            Call::CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 1, 2),
+            NO_ERROR,
+        ),
         (
             Call::CopyTexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 0, 0, 2, 2, 0),
             NO_ERROR,
@@ -202,10 +210,7 @@ fn sub_image_and_copy_errors_match_the_driver() {
             Call::CopyTexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 0, 0, 4, 4, 1),
             NO_ERROR,
         ),
-        (
-            tex_image(TEXTURE_2D, RGBA8, RGBA, UNSIGNED_BYTE),
-            NO_ERROR,
-        ),
+        (tex_image(TEXTURE_2D, RGBA8, RGBA, UNSIGNED_BYTE), NO_ERROR),
         (sub(DEPTH_STENCIL, UNSIGNED_INT_24_8), INVALID_OPERATION),
         (
             tex_image(TEXTURE_2D, DEPTH_COMPONENT24, DEPTH_COMPONENT, FLOAT),
@@ -217,10 +222,7 @@ fn sub_image_and_copy_errors_match_the_driver() {
             Call::CopyTexImage1D(TEXTURE_1D, 0, DEPTH24_STENCIL8, 0, 0, 4, 0),
             NO_ERROR,
         ),
-        (
-            Call::CopyTexSubImage1D(TEXTURE_1D, 0, 1, 2, 2, 2),
-            NO_ERROR,
-        ),
+        (Call::CopyTexSubImage1D(TEXTURE_1D, 0, 1, 2, 2, 2), NO_ERROR),
         (Call::BindTexture(TEXTURE_CUBE_MAP, 3), NO_ERROR),
         (
             Call::CopyTexImage2D(TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, DEPTH_STENCIL, 0, 0, 4, 4, 0),
@@ -236,7 +238,13 @@ fn sub_image_and_copy_errors_match_the_driver() {
 }
 
 /// Reads level 0 of the bound 2D texture as `format`/`type_` (4-byte groups) on both.
-fn get_both(cpu: &mut Context, drv: &GlBackend, n: usize, format: u32, type_: u32) -> (Vec<u32>, Vec<u32>) {
+fn get_both(
+    cpu: &mut Context,
+    drv: &GlBackend,
+    n: usize,
+    format: u32,
+    type_: u32,
+) -> (Vec<u32>, Vec<u32>) {
     let mut bytes = vec![0u8; n * 4];
     cpu.get_tex_image(TEXTURE_2D, 0, format, type_, &mut bytes);
     let a = bytes
@@ -302,7 +310,10 @@ fn get_tex_image_round_trips_match_the_driver() {
     let (a, b) = get_both(&mut cpu, &drv, 16, DEPTH_COMPONENT, UNSIGNED_INT);
     // llvmpipe converts through a float: the low bits below the 24 stored ones differ.
     for (k, (x, y)) in a.iter().zip(&b).enumerate() {
-        assert!((x >> 8).abs_diff(y >> 8) <= 1, "depth {k}: {x:#x} vs {y:#x}");
+        assert!(
+            (x >> 8).abs_diff(y >> 8) <= 1,
+            "depth {k}: {x:#x} vs {y:#x}"
+        );
     }
     // DEPTH_COMPONENT data replaces the depths; llvmpipe's stencil there is undefined
     // (measured: other bytes), fixedgl keeps it. Compared: the depths everywhere, the
@@ -322,7 +333,11 @@ fn get_tex_image_round_trips_match_the_driver() {
         // Float depths: llvmpipe truncates where fixedgl rounds (within 1 of 2^24 - 1).
         assert!((a[k] >> 8).abs_diff(b[k] >> 8) <= 1, "depth of texel {k}");
         if replaced {
-            assert_eq!(a[k] & 0xFF, before[k], "fixedgl keeps the index of texel {k}");
+            assert_eq!(
+                a[k] & 0xFF,
+                before[k],
+                "fixedgl keeps the index of texel {k}"
+            );
         } else {
             assert_eq!(a[k] & 0xFF, b[k] & 0xFF, "index of texel {k}");
         }
@@ -396,7 +411,11 @@ fn get_stencils_before(words: &[u32]) -> Vec<u32> {
 /// buffer passes through a float on the way from DrawPixels).
 fn assert_ds_close(a: &[u32], b: &[u32], what: &str) {
     for (k, (x, y)) in a.iter().zip(b).enumerate() {
-        assert_eq!(x & 0xFF, y & 0xFF, "{what}: index of texel {k} ({x:#x} vs {y:#x})");
+        assert_eq!(
+            x & 0xFF,
+            y & 0xFF,
+            "{what}: index of texel {k} ({x:#x} vs {y:#x})"
+        );
         assert!(
             (x >> 8).abs_diff(y >> 8) <= 1,
             "{what}: depth of texel {k} ({x:#x} vs {y:#x})"
@@ -474,24 +493,90 @@ fn fbo_statuses(c: &mut Context, drv: &mut GlBackend) {
             Call::BindFramebuffer(FRAMEBUFFER, 1),
             Call::FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, 2),
         ],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 1)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 1)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 0)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 3)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 4)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 0)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 1)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 5)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, 5)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 3)],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            1,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            RENDERBUFFER,
+            1,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            0,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            3,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            RENDERBUFFER,
+            4,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            0,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            1,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            RENDERBUFFER,
+            5,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            DEPTH_ATTACHMENT,
+            RENDERBUFFER,
+            5,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            RENDERBUFFER,
+            3,
+        )],
         vec![
             Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 0),
             Call::BindTexture(TEXTURE_2D, 1),
-            tex_image(TEXTURE_2D, DEPTH24_STENCIL8, DEPTH_STENCIL, UNSIGNED_INT_24_8),
+            tex_image(
+                TEXTURE_2D,
+                DEPTH24_STENCIL8,
+                DEPTH_STENCIL,
+                UNSIGNED_INT_24_8,
+            ),
             Call::FramebufferTexture2D(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D, 1, 0),
         ],
-        vec![Call::FramebufferTexture2D(FRAMEBUFFER, STENCIL_ATTACHMENT, TEXTURE_2D, 1, 0)],
-        vec![Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 5)],
+        vec![Call::FramebufferTexture2D(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            TEXTURE_2D,
+            1,
+            0,
+        )],
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            STENCIL_ATTACHMENT,
+            RENDERBUFFER,
+            5,
+        )],
         vec![
             Call::BindTexture(TEXTURE_2D, 2),
             tex_image(TEXTURE_2D, DEPTH_COMPONENT24, DEPTH_COMPONENT, FLOAT),
@@ -521,7 +606,10 @@ fn fbo_statuses(c: &mut Context, drv: &mut GlBackend) {
             c.get_renderbuffer_parameteriv(RENDERBUFFER, p, &mut a);
             let mut b = -7;
             // SAFETY: the backend's context is current; one value written.
-            unsafe { drv.raw().GetRenderbufferParameteriv(RENDERBUFFER, p, &mut b) };
+            unsafe {
+                drv.raw()
+                    .GetRenderbufferParameteriv(RENDERBUFFER, p, &mut b)
+            };
             got.push(a[0]);
             want.push(b);
         }
@@ -558,7 +646,17 @@ fn packed_framebuffers_draw_as_the_driver_draws() {
     c.start_recording();
     // Colour texture 1, depth-stencil renderbuffer 1, framebuffer 1.
     c.bind_texture(TEXTURE_2D, 1);
-    c.tex_image_2d(TEXTURE_2D, 0, RGBA8 as i32, 16, 16, 0, RGBA, UNSIGNED_BYTE, None);
+    c.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        RGBA8 as i32,
+        16,
+        16,
+        0,
+        RGBA,
+        UNSIGNED_BYTE,
+        None,
+    );
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
     c.bind_renderbuffer(RENDERBUFFER, 1);
@@ -625,7 +723,17 @@ fn packed_framebuffers_draw_as_the_driver_draws() {
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
     c.bind_texture(TEXTURE_2D, 3);
-    c.tex_image_2d(TEXTURE_2D, 0, RGBA8 as i32, 16, 16, 0, RGBA, UNSIGNED_BYTE, None);
+    c.tex_image_2d(
+        TEXTURE_2D,
+        0,
+        RGBA8 as i32,
+        16,
+        16,
+        0,
+        RGBA,
+        UNSIGNED_BYTE,
+        None,
+    );
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST as i32);
     c.tex_parameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST as i32);
     c.bind_framebuffer(FRAMEBUFFER, 2);
@@ -656,8 +764,13 @@ fn packed_framebuffers_draw_as_the_driver_draws() {
     // SAFETY: the backend's context is current, texture 2 bound; 16x16 4-byte groups.
     unsafe {
         drv.raw().BindTexture(TEXTURE_2D, 2);
-        drv.raw()
-            .GetTexImage(TEXTURE_2D, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, b.as_mut_ptr().cast());
+        drv.raw().GetTexImage(
+            TEXTURE_2D,
+            0,
+            DEPTH_STENCIL,
+            UNSIGNED_INT_24_8,
+            b.as_mut_ptr().cast(),
+        );
     }
     assert_eq!(drv.get_error(), NO_ERROR);
     assert_ds_close(&a, &b, "GetTexImage of the drawn texture");
