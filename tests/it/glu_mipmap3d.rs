@@ -499,7 +499,8 @@ mod with_libglu {
         let Some(mut backend) = crate::common::test_backend(8, 8) else {
             return;
         };
-        let cases: &[(Builder, u32, u32, (i32, i32, i32))] = &[
+        type ErrCase = (Builder, u32, u32, (i32, i32, i32));
+        let cases: &[ErrCase] = &[
             (Builder::Mip3, 0x1234, gl::UNSIGNED_BYTE, (4, 4, 4)),
             (Builder::Mip3, gl::RGBA, 0x1234, (4, 4, 4)),
             (
