@@ -25,6 +25,9 @@ use crate::gl;
 use crate::state::State;
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
 
+/// Eight fragments' texels, lane-major (each lane's RGBA as `shade`'s filters return it).
+pub type TexelLanes = [[f32; 4]; LANES];
+
 /// Which sampling routine a flush uses (chosen once in [`Sampler::new`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Route {
@@ -277,6 +280,232 @@ impl Sampler {
             return self.combine(cf, prim, texel);
         }
         self.env(cf, texel)
+    }
+
+    /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes`] stand for [`Sampler::shade`]:
+    /// a 2D texture (not a cube map), no depth comparison, not a depth texture, an environment
+    /// other than COMBINE. Chosen once per span.
+    #[inline]
+    pub fn lanes_ok(&self) -> bool {
+        self.dims == 2
+            && !self.cube
+            && self.compare.is_none()
+            && self.base != gl::DEPTH_COMPONENT
+            && self.env != gl::COMBINE
+    }
+
+    /// The filtered texels of eight fragments (the texel `shade` filters for each, lane-major)
+    /// from their coordinates `coords` (s, t, r, q lanes, perspective-correct) and λ before
+    /// bias; lanes outside `m` are left zero. Only for a sampler with [`Sampler::lanes_ok`].
+    /// The wrap modes and filters are chosen once for the group, the levels once per group of
+    /// lanes that share one; each lane computes `shade`'s expressions in the same order (the
+    /// division by q as `divps`), so its texel has the scalar texel's bits.
+    #[inline]
+    pub fn texels_lanes(
+        &self,
+        coords: [&[f32; LANES]; 4],
+        lambda: &[f32; LANES],
+        m: u8,
+    ) -> TexelLanes {
+        let [s, t, r, q] = coords;
+        let rq = recip_lanes(*q);
+        let inv: [f32; LANES] = std::array::from_fn(|l| if q[l] != 0.0 { rq[l] } else { 0.0 });
+        let s: [f32; LANES] = std::array::from_fn(|l| s[l] * inv[l]);
+        let t: [f32; LANES] = std::array::from_fn(|l| t[l] * inv[l]);
+        let r: [f32; LANES] = std::array::from_fn(|l| r[l] * inv[l]);
+        let mut out = [[0.0f32; 4]; LANES];
+        match self.route {
+            Route::Nearest => self.filter_lanes(self.base_level, gl::NEAREST, &s, &t, m, &mut out),
+            Route::Linear => self.filter_lanes(self.base_level, gl::LINEAR, &s, &t, m, &mut out),
+            Route::Lod => self.lod_lanes(&s, &t, &r, lambda, m, &mut out),
+        }
+        out
+    }
+
+    /// `sample_face` for the lanes of `m` (face 0, 2D): each lane's level(s), filter and
+    /// weight as `sample_face` chooses them, then one filter call per group of lanes sharing a
+    /// level and filter.
+    #[inline]
+    fn lod_lanes(
+        &self,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        _r: &[f32; LANES],
+        lambda: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let lin = |f: u32| {
+            if matches!(
+                f,
+                gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
+            ) {
+                gl::LINEAR
+            } else {
+                gl::NEAREST
+            }
+        };
+        let span = (self.last - self.base_level) as f32;
+        // Per lane: the first level and its filter, the second level (trilinear) and its weight.
+        let mut la = [self.base_level; LANES];
+        let mut fa = [self.mag; LANES];
+        let mut second = 0u8;
+        let mut f = [0.0f32; LANES];
+        for l in 0..LANES {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            // The same steps as `sample_face`.
+            let lambda = lambda[l] + self.bias;
+            let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+            let lambda = lambda.min(self.max_lod).max(self.min_lod);
+            if lambda <= self.c {
+                continue;
+            }
+            match self.min {
+                gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                    let d = if lambda <= 0.5 {
+                        0.0
+                    } else {
+                        ((lambda + 0.5).ceil() - 1.0).min(span)
+                    };
+                    la[l] = self.base_level + d as i32;
+                    fa[l] = lin(self.min);
+                }
+                gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                    fa[l] = lin(self.min);
+                    if lambda >= span {
+                        la[l] = self.last;
+                        continue;
+                    }
+                    let d1 = lambda.floor();
+                    f[l] = lambda - d1;
+                    la[l] = self.base_level + d1 as i32;
+                    if f[l] != 0.0 {
+                        second |= 1 << l;
+                    }
+                }
+                min => fa[l] = min,
+            }
+        }
+        self.grouped_lanes(&la, &fa, s, t, m, out);
+        if second == 0 {
+            return;
+        }
+        let lb: [i32; LANES] = std::array::from_fn(|l| la[l].saturating_add(1));
+        let mut b = [[0.0f32; 4]; LANES];
+        self.grouped_lanes(&lb, &fa, s, t, second, &mut b);
+        for l in 0..LANES {
+            if second & (1 << l) != 0 {
+                let (a, b, f) = (out[l], b[l], f[l]);
+                out[l] = std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f);
+            }
+        }
+    }
+
+    /// `filter` for the lanes of `m`, lane l on level `lv[l]` with filter `fl[l]`: one
+    /// [`Sampler::filter_lanes`] per distinct (level, filter) among the lanes.
+    #[inline(always)]
+    fn grouped_lanes(
+        &self,
+        lv: &[i32; LANES],
+        fl: &[u32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let mut rest = m;
+        while rest != 0 {
+            let first = rest.trailing_zeros() as usize;
+            let key = (lv[first], fl[first]);
+            let mut sub = 0u8;
+            for l in first..LANES {
+                if rest & (1 << l) != 0 && (lv[l], fl[l]) == key {
+                    sub |= 1 << l;
+                }
+            }
+            self.filter_lanes(key.0, key.1, s, t, sub, out);
+            rest &= !sub;
+        }
+    }
+
+    /// NEAREST or LINEAR on level `level` of a 2D texture for the lanes of `m`: `nearest` and
+    /// `linear` (dims 2, no comparison) with the wrap mode chosen once.
+    #[inline(always)]
+    fn filter_lanes(
+        &self,
+        level: i32,
+        filter: u32,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let Some(lv) = self.obj.face_level(0, level) else {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = [0.0; 4];
+                }
+            }
+            return;
+        };
+        // `fetch`'s border colour (no comparison).
+        let border = crate::texture::keep(self.base, self.border);
+        let texel = |i: Option<i32>, j: Option<i32>| match (i, j) {
+            (Some(i), Some(j)) => lv.texel(i, j),
+            _ => border,
+        };
+        if filter == gl::NEAREST {
+            let i = wrap_nearest_lanes(self.wrap[0], s, lv.width);
+            let j = wrap_nearest_lanes(self.wrap[1], t, lv.height);
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = texel(i[l], j[l]);
+                }
+            }
+            return;
+        }
+        let (i0, i1, a) = wrap_linear_lanes(self.wrap[0], s, lv.width);
+        let (j0, j1, b) = wrap_linear_lanes(self.wrap[1], t, lv.height);
+        for (l, o) in out.iter_mut().enumerate() {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let (t00, t10) = (texel(i0[l], j0[l]), texel(i1[l], j0[l]));
+            let (t01, t11) = (texel(i0[l], j1[l]), texel(i1[l], j1[l]));
+            let (a, b) = (a[l], b[l]);
+            *o = std::array::from_fn(|c| {
+                (1.0 - a) * (1.0 - b) * t00[c]
+                    + a * (1.0 - b) * t10[c]
+                    + (1.0 - a) * b * t01[c]
+                    + a * b * t11[c]
+            });
+        }
+    }
+
+    /// Table 3.21 for the lanes of `m`: `env` of each lane's colour `cf[l]` and texel `t[l]`,
+    /// the (environment, base format) pair chosen once for the group. Only for a sampler with
+    /// [`Sampler::lanes_ok`] (not a depth texture, not COMBINE).
+    #[inline]
+    pub fn env_lanes(&self, cf: &mut [Vec4; LANES], t: &TexelLanes, m: u8) {
+        macro_rules! each {
+            ($e:expr, $b:expr) => {
+                for l in 0..LANES {
+                    if m & (1 << l) != 0 {
+                        cf[l] = env_of($e, $b, self.env_color, cf[l], t[l]);
+                    }
+                }
+            };
+        }
+        match (self.env, self.base) {
+            (gl::MODULATE, gl::RGBA) => each!(gl::MODULATE, gl::RGBA),
+            (gl::MODULATE, gl::RGB) => each!(gl::MODULATE, gl::RGB),
+            (gl::REPLACE, gl::RGBA) => each!(gl::REPLACE, gl::RGBA),
+            (gl::REPLACE, gl::RGB) => each!(gl::REPLACE, gl::RGB),
+            (gl::DECAL, gl::RGBA) => each!(gl::DECAL, gl::RGBA),
+            (e, b) => each!(e, b),
+        }
     }
 
     /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
@@ -544,48 +773,53 @@ impl Sampler {
         } else {
             (self.base, t)
         };
-        let ct = Vec4::new(t[0], t[1], t[2], 0.0);
-        let l = t[0];
-        let at = t[3];
-        let (cfr, af) = (cf.truncate().extend(0.0), cf.w);
-        let cc = self.env_color.truncate().extend(0.0);
-        let lum = Vec4::new(l, l, l, 0.0);
-        let (c, a) = match (self.env, base) {
-            (gl::REPLACE, gl::ALPHA) => (cfr, at),
-            (gl::REPLACE, gl::LUMINANCE) => (lum, af),
-            (gl::REPLACE, gl::LUMINANCE_ALPHA) => (lum, at),
-            (gl::REPLACE, gl::INTENSITY) => (lum, l),
-            (gl::REPLACE, gl::RGB) => (ct, af),
-            (gl::REPLACE, _) => (ct, at),
-            (gl::MODULATE, gl::ALPHA) => (cfr, af * at),
-            (gl::MODULATE, gl::LUMINANCE) => (cfr * l, af),
-            (gl::MODULATE, gl::LUMINANCE_ALPHA) => (cfr * l, af * at),
-            (gl::MODULATE, gl::INTENSITY) => (cfr * l, af * l),
-            (gl::MODULATE, gl::RGB) => (cfr * ct, af),
-            (gl::MODULATE, _) => (cfr * ct, af * at),
-            // DECAL is undefined for the one- and two-component formats: the fragment passes.
-            (gl::DECAL, gl::RGB) => (ct, af),
-            (gl::DECAL, gl::RGBA) => (cfr * (1.0 - at) + ct * at, af),
-            (gl::DECAL, _) => (cfr, af),
-            (gl::BLEND, gl::ALPHA) => (cfr, af * at),
-            (gl::BLEND, gl::LUMINANCE) => (cfr * (1.0 - l) + cc * l, af),
-            (gl::BLEND, gl::LUMINANCE_ALPHA) => (cfr * (1.0 - l) + cc * l, af * at),
-            (gl::BLEND, gl::INTENSITY) => (
-                cfr * (1.0 - l) + cc * l,
-                af * (1.0 - l) + self.env_color.w * l,
-            ),
-            (gl::BLEND, gl::RGB) => (cfr * (Vec4::ONE - ct) + cc * ct, af),
-            (gl::BLEND, _) => (cfr * (Vec4::ONE - ct) + cc * ct, af * at),
-            (gl::ADD, gl::ALPHA) => (cfr, af * at),
-            (gl::ADD, gl::LUMINANCE) => (cfr + lum, af),
-            (gl::ADD, gl::LUMINANCE_ALPHA) => (cfr + lum, af * at),
-            (gl::ADD, gl::INTENSITY) => (cfr + lum, af + l),
-            (gl::ADD, gl::RGB) => (cfr + ct, af),
-            (gl::ADD, _) => (cfr + ct, af * at),
-            _ => (cfr, af),
-        };
-        Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
+        env_of(self.env, base, self.env_color, cf, t)
     }
+}
+
+/// Table 3.21: texture function `env` of fragment colour `cf` and filtered texel `t` read as
+/// base format `base`, with TEXTURE_ENV_COLOR `env_color` (what [`Sampler::env`] and
+/// [`Sampler::env_lanes`] compute; inlined so that constant `env` and `base` fold the match).
+#[inline(always)]
+fn env_of(env: u32, base: u32, env_color: Vec4, cf: Vec4, t: [f32; 4]) -> Vec4 {
+    let ct = Vec4::new(t[0], t[1], t[2], 0.0);
+    let l = t[0];
+    let at = t[3];
+    let (cfr, af) = (cf.truncate().extend(0.0), cf.w);
+    let cc = env_color.truncate().extend(0.0);
+    let lum = Vec4::new(l, l, l, 0.0);
+    let (c, a) = match (env, base) {
+        (gl::REPLACE, gl::ALPHA) => (cfr, at),
+        (gl::REPLACE, gl::LUMINANCE) => (lum, af),
+        (gl::REPLACE, gl::LUMINANCE_ALPHA) => (lum, at),
+        (gl::REPLACE, gl::INTENSITY) => (lum, l),
+        (gl::REPLACE, gl::RGB) => (ct, af),
+        (gl::REPLACE, _) => (ct, at),
+        (gl::MODULATE, gl::ALPHA) => (cfr, af * at),
+        (gl::MODULATE, gl::LUMINANCE) => (cfr * l, af),
+        (gl::MODULATE, gl::LUMINANCE_ALPHA) => (cfr * l, af * at),
+        (gl::MODULATE, gl::INTENSITY) => (cfr * l, af * l),
+        (gl::MODULATE, gl::RGB) => (cfr * ct, af),
+        (gl::MODULATE, _) => (cfr * ct, af * at),
+        // DECAL is undefined for the one- and two-component formats: the fragment passes.
+        (gl::DECAL, gl::RGB) => (ct, af),
+        (gl::DECAL, gl::RGBA) => (cfr * (1.0 - at) + ct * at, af),
+        (gl::DECAL, _) => (cfr, af),
+        (gl::BLEND, gl::ALPHA) => (cfr, af * at),
+        (gl::BLEND, gl::LUMINANCE) => (cfr * (1.0 - l) + cc * l, af),
+        (gl::BLEND, gl::LUMINANCE_ALPHA) => (cfr * (1.0 - l) + cc * l, af * at),
+        (gl::BLEND, gl::INTENSITY) => (cfr * (1.0 - l) + cc * l, af * (1.0 - l) + env_color.w * l),
+        (gl::BLEND, gl::RGB) => (cfr * (Vec4::ONE - ct) + cc * ct, af),
+        (gl::BLEND, _) => (cfr * (Vec4::ONE - ct) + cc * ct, af * at),
+        (gl::ADD, gl::ALPHA) => (cfr, af * at),
+        (gl::ADD, gl::LUMINANCE) => (cfr + lum, af),
+        (gl::ADD, gl::LUMINANCE_ALPHA) => (cfr + lum, af * at),
+        (gl::ADD, gl::INTENSITY) => (cfr + lum, af + l),
+        (gl::ADD, gl::RGB) => (cfr + ct, af),
+        (gl::ADD, _) => (cfr + ct, af * at),
+        _ => (cfr, af),
+    };
+    Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
 }
 
 /// The target and texture object unit `unit` samples, or None when texturing is off for the
@@ -735,6 +969,39 @@ fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
         gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
         // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
         _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),
+    }
+}
+
+/// [`wrap_nearest`] on eight lanes, the mode chosen once (each arm inlines the scalar
+/// function with a constant mode, so every lane is the scalar index).
+#[inline(always)]
+fn wrap_nearest_lanes(mode: u32, s: &[f32; LANES], n: i32) -> [Option<i32>; LANES] {
+    match mode {
+        gl::REPEAT => s.map(|s| wrap_nearest(gl::REPEAT, s, n)),
+        gl::MIRRORED_REPEAT => s.map(|s| wrap_nearest(gl::MIRRORED_REPEAT, s, n)),
+        gl::CLAMP_TO_BORDER => s.map(|s| wrap_nearest(gl::CLAMP_TO_BORDER, s, n)),
+        _ => s.map(|s| wrap_nearest(mode, s, n)),
+    }
+}
+
+/// The pairs of LINEAR indices and weights of [`wrap_linear`] on eight lanes, the mode chosen
+/// once.
+type LinearLanes = ([Option<i32>; LANES], [Option<i32>; LANES], [f32; LANES]);
+
+/// [`wrap_linear`] on eight lanes, the mode chosen once (as [`wrap_nearest_lanes`]).
+#[inline(always)]
+fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: i32) -> LinearLanes {
+    let each = |mode: u32| {
+        let w = s.map(|s| wrap_linear(mode, s, n));
+        (w.map(|w| w.0), w.map(|w| w.1), w.map(|w| w.2))
+    };
+    match mode {
+        gl::REPEAT => each(gl::REPEAT),
+        gl::MIRRORED_REPEAT => each(gl::MIRRORED_REPEAT),
+        gl::CLAMP => each(gl::CLAMP),
+        gl::CLAMP_TO_BORDER => each(gl::CLAMP_TO_BORDER),
+        gl::CLAMP_TO_EDGE => each(gl::CLAMP_TO_EDGE),
+        _ => each(mode),
     }
 }
 
