@@ -283,15 +283,11 @@ impl Sampler {
     }
 
     /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes`] stand for [`Sampler::shade`]:
-    /// a 2D texture (not a cube map), no depth comparison, not a depth texture, an environment
-    /// other than COMBINE. Chosen once per span.
+    /// a 2D texture (not a cube map; depth textures and the depth comparison included), an
+    /// environment other than COMBINE. Chosen once per span.
     #[inline]
     pub fn lanes_ok(&self) -> bool {
-        self.dims == 2
-            && !self.cube
-            && self.compare.is_none()
-            && self.base != gl::DEPTH_COMPONENT
-            && self.env != gl::COMBINE
+        self.dims == 2 && !self.cube && self.env != gl::COMBINE
     }
 
     /// The filtered texels of eight fragments (the texel `shade` filters for each, lane-major)
@@ -315,8 +311,12 @@ impl Sampler {
         let r: [f32; LANES] = std::array::from_fn(|l| r[l] * inv[l]);
         let mut out = [[0.0f32; 4]; LANES];
         match self.route {
-            Route::Nearest => self.filter_lanes(self.base_level, gl::NEAREST, &s, &t, m, &mut out),
-            Route::Linear => self.filter_lanes(self.base_level, gl::LINEAR, &s, &t, m, &mut out),
+            Route::Nearest => {
+                self.filter_lanes(self.base_level, gl::NEAREST, &s, &t, &r, m, &mut out)
+            }
+            Route::Linear => {
+                self.filter_lanes(self.base_level, gl::LINEAR, &s, &t, &r, m, &mut out)
+            }
             Route::Lod => self.lod_lanes(&s, &t, &r, lambda, m, &mut out),
         }
         out
@@ -330,7 +330,7 @@ impl Sampler {
         &self,
         s: &[f32; LANES],
         t: &[f32; LANES],
-        _r: &[f32; LANES],
+        r: &[f32; LANES],
         lambda: &[f32; LANES],
         m: u8,
         out: &mut TexelLanes,
@@ -388,13 +388,13 @@ impl Sampler {
                 min => fa[l] = min,
             }
         }
-        self.grouped_lanes(&la, &fa, s, t, m, out);
+        self.grouped_lanes(&la, &fa, s, t, r, m, out);
         if second == 0 {
             return;
         }
         let lb: [i32; LANES] = std::array::from_fn(|l| la[l].saturating_add(1));
         let mut b = [[0.0f32; 4]; LANES];
-        self.grouped_lanes(&lb, &fa, s, t, second, &mut b);
+        self.grouped_lanes(&lb, &fa, s, t, r, second, &mut b);
         for l in 0..LANES {
             if second & (1 << l) != 0 {
                 let (a, b, f) = (out[l], b[l], f[l]);
@@ -412,6 +412,7 @@ impl Sampler {
         fl: &[u32; LANES],
         s: &[f32; LANES],
         t: &[f32; LANES],
+        r: &[f32; LANES],
         m: u8,
         out: &mut TexelLanes,
     ) {
@@ -425,13 +426,15 @@ impl Sampler {
                     sub |= 1 << l;
                 }
             }
-            self.filter_lanes(key.0, key.1, s, t, sub, out);
+            self.filter_lanes(key.0, key.1, s, t, r, sub, out);
             rest &= !sub;
         }
     }
 
     /// NEAREST or LINEAR on level `level` of a 2D texture for the lanes of `m`: `nearest` and
-    /// `linear` (dims 2, no comparison) with the wrap mode chosen once.
+    /// `linear` (dims 2) with the wrap mode chosen once; each texel through `fetch`'s depth
+    /// comparison against the lane's `r` when comparison is on.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn filter_lanes(
         &self,
@@ -439,6 +442,7 @@ impl Sampler {
         filter: u32,
         s: &[f32; LANES],
         t: &[f32; LANES],
+        r: &[f32; LANES],
         m: u8,
         out: &mut TexelLanes,
     ) {
@@ -450,18 +454,58 @@ impl Sampler {
             }
             return;
         };
-        // `fetch`'s border colour (no comparison).
+        match self.compare {
+            None => self.filter_on(lv, filter, s, t, m, out, |_, t| t),
+            Some(func) => self.filter_on(lv, filter, s, t, m, out, |l, t| {
+                // `fetch`'s comparison.
+                let d = t[0];
+                let r = r[l].clamp(0.0, 1.0);
+                let pass = match func {
+                    gl::LEQUAL => r <= d,
+                    gl::GEQUAL => r >= d,
+                    gl::LESS => r < d,
+                    gl::GREATER => r > d,
+                    gl::EQUAL => r == d,
+                    gl::NOTEQUAL => r != d,
+                    gl::ALWAYS => true,
+                    _ => false,
+                };
+                [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
+            }),
+        }
+    }
+
+    /// `filter_lanes` on level `lv`, `cmp(l, texel)` giving what `fetch` makes of lane l's
+    /// texel (itself, or the comparison result).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn filter_on(
+        &self,
+        lv: &Level,
+        filter: u32,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+        cmp: impl Fn(usize, [f32; 4]) -> [f32; 4],
+    ) {
+        // `fetch`'s texel: the image's (`texel3` at k = 0 is `texel`) or the border colour.
         let border = crate::texture::keep(self.base, self.border);
-        let texel = |i: Option<i32>, j: Option<i32>| match (i, j) {
-            (Some(i), Some(j)) => lv.texel(i, j),
-            _ => border,
+        let texel = |l: usize, i: Option<i32>, j: Option<i32>| {
+            cmp(
+                l,
+                match (i, j) {
+                    (Some(i), Some(j)) => lv.texel(i, j),
+                    _ => border,
+                },
+            )
         };
         if filter == gl::NEAREST {
             let i = wrap_nearest_lanes(self.wrap[0], s, lv.width);
             let j = wrap_nearest_lanes(self.wrap[1], t, lv.height);
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
-                    *o = texel(i[l], j[l]);
+                    *o = texel(l, i[l], j[l]);
                 }
             }
             return;
@@ -472,8 +516,8 @@ impl Sampler {
             if m & (1 << l) == 0 {
                 continue;
             }
-            let (t00, t10) = (texel(i0[l], j0[l]), texel(i1[l], j0[l]));
-            let (t01, t11) = (texel(i0[l], j1[l]), texel(i1[l], j1[l]));
+            let (t00, t10) = (texel(l, i0[l], j0[l]), texel(l, i1[l], j0[l]));
+            let (t01, t11) = (texel(l, i0[l], j1[l]), texel(l, i1[l], j1[l]));
             let (a, b) = (a[l], b[l]);
             *o = std::array::from_fn(|c| {
                 (1.0 - a) * (1.0 - b) * t00[c]
@@ -486,9 +530,25 @@ impl Sampler {
 
     /// Table 3.21 for the lanes of `m`: `env` of each lane's colour `cf[l]` and texel `t[l]`,
     /// the (environment, base format) pair chosen once for the group. Only for a sampler with
-    /// [`Sampler::lanes_ok`] (not a depth texture, not COMBINE).
+    /// [`Sampler::lanes_ok`] (not COMBINE). A depth texture reads as DEPTH_TEXTURE_MODE, as in
+    /// `env`.
     #[inline]
     pub fn env_lanes(&self, cf: &mut [Vec4; LANES], t: &TexelLanes, m: u8) {
+        if self.base == gl::DEPTH_COMPONENT {
+            let alpha = self.depth_mode == gl::ALPHA;
+            let base = if alpha { gl::ALPHA } else { self.depth_mode };
+            for l in 0..LANES {
+                if m & (1 << l) != 0 {
+                    let t = if alpha {
+                        [0.0, 0.0, 0.0, t[l][0]]
+                    } else {
+                        t[l]
+                    };
+                    cf[l] = env_of(self.env, base, self.env_color, cf[l], t);
+                }
+            }
+            return;
+        }
         macro_rules! each {
             ($e:expr, $b:expr) => {
                 for l in 0..LANES {

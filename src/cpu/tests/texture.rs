@@ -438,7 +438,13 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
     let sizes = [(1, 1), (4, 4), (8, 2), (5, 3), (16, 16), (7, 1), (64, 32)];
     let mut checked = 0;
     for round in 0..1500 {
-        let base = bases[round % bases.len()];
+        // Every seventh round a depth texture, with or without comparison.
+        let depth = round % 7 == 6;
+        let base = if depth {
+            gl::DEPTH_COMPONENT
+        } else {
+            bases[round % bases.len()]
+        };
         let env = envs[(next() % 5) as usize];
         let (w, h) = sizes[(next() % sizes.len() as u64) as usize];
         let min = mins[(next() % 6) as usize];
@@ -469,8 +475,28 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
             obj.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
             obj.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
         }
+        if depth {
+            obj.compare_mode = if next() % 4 == 0 {
+                gl::NONE
+            } else {
+                gl::COMPARE_R_TO_TEXTURE
+            };
+            obj.compare_func = [
+                gl::LEQUAL,
+                gl::GEQUAL,
+                gl::LESS,
+                gl::GREATER,
+                gl::EQUAL,
+                gl::NOTEQUAL,
+                gl::ALWAYS,
+                gl::NEVER,
+            ][(next() % 8) as usize];
+            obj.depth_texture_mode =
+                [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
+        }
         let s = sampler(obj, env);
         assert!(s.lanes_ok());
+        assert_eq!(s.compare.is_some(), depth && obj_compare(&s));
         let coord = |next: &mut dyn FnMut() -> u64| match next() % 16 {
             0 => 0.0,
             1 => f32::from_bits(next() as u32),
@@ -523,4 +549,9 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
         }
     }
     assert!(checked > 40_000, "{checked}");
+}
+
+/// Did `Sampler::new` turn comparison on (COMPARE_R_TO_TEXTURE on a depth texture)?
+fn obj_compare(s: &Sampler) -> bool {
+    s.obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
 }
