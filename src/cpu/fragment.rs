@@ -548,11 +548,9 @@ impl FragCtx<'_> {
                     super::lanes::store_rgba(dst, m, &col);
                 }
             } else {
-                for l in 0..LANES {
-                    if m & (1 << l) != 0 {
-                        let c = Vec4::new(col[0][l], col[1][l], col[2][l], col[3][l]);
-                        self.write(bufs, base + g + l, c);
-                    }
+                for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
+                    let c = Vec4::new(col[0][l], col[1][l], col[2][l], col[3][l]);
+                    self.write(bufs, base + g + l, c);
                 }
             }
             g += LANES;

@@ -405,6 +405,7 @@ impl Sampler {
 
     /// `filter` for the lanes of `m`, lane l on level `lv[l]` with filter `fl[l]`: one
     /// [`Sampler::filter_lanes`] per distinct (level, filter) among the lanes.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn grouped_lanes(
         &self,
