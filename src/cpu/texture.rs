@@ -535,7 +535,7 @@ impl Sampler {
     /// `env`.
     #[inline]
     pub fn env_lanes(&self, cf: &mut [Vec4; LANES], t: &TexelLanes, m: u8) {
-        if self.base == gl::DEPTH_COMPONENT {
+        if crate::texture::is_depth(self.base) {
             let alpha = self.depth_mode == gl::ALPHA;
             let base = if alpha { gl::ALPHA } else { self.depth_mode };
             for l in 0..LANES {

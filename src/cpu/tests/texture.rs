@@ -438,10 +438,10 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
     let sizes = [(1, 1), (4, 4), (8, 2), (5, 3), (16, 16), (7, 1), (64, 32)];
     let mut checked = 0;
     for round in 0..1500 {
-        // Every seventh round a depth texture, with or without comparison.
+        // Every seventh round a depth (or depth-stencil) texture, with or without comparison.
         let depth = round % 7 == 6;
         let base = if depth {
-            gl::DEPTH_COMPONENT
+            [gl::DEPTH_COMPONENT, gl::DEPTH_STENCIL][round / 7 % 2]
         } else {
             bases[round % bases.len()]
         };
