@@ -40,7 +40,8 @@ pub struct Level {
     /// The internal format as the application gave it (`TEXTURE_INTERNAL_FORMAT`).
     pub internal_format: i32,
     /// The base internal format (table 3.15): ALPHA, LUMINANCE, LUMINANCE_ALPHA, INTENSITY, RGB,
-    /// RGBA or DEPTH_COMPONENT.
+    /// RGBA, DEPTH_COMPONENT or GL_EXT_packed_depth_stencil's DEPTH_STENCIL (the depth in R,
+    /// the stencil index in G as an integer in [0, 255]).
     pub base: u32,
     /// `width * height * depth` texels, bottom row first (t = 0 first, §3.8.1), the images of
     /// a 3D texture one after the other (r = 0 first).
@@ -418,11 +419,26 @@ pub fn halve(src: &Level) -> Level {
     }
 }
 
-/// Reduces a texel to the stored precision: 8-bit unsigned normalised colour, 24-bit depth.
+/// Whether base format `base` is a depth format (DEPTH_COMPONENT, or DEPTH_STENCIL, whose
+/// depth is sampled and whose stencil is not: GL_EXT_packed_depth_stencil).
+pub fn is_depth(base: u32) -> bool {
+    matches!(base, gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL)
+}
+
+/// Reduces a texel to the stored precision: 8-bit unsigned normalised colour, 24-bit depth,
+/// an 8-bit stencil index (DEPTH_STENCIL's G, an integer).
 pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
+    let s = 16_777_215.0;
     if base == gl::DEPTH_COMPONENT {
-        let s = 16_777_215.0;
         t.map(|c| (c.clamp(0.0, 1.0) * s).round() / s)
+    } else if base == gl::DEPTH_STENCIL {
+        let d = (t[0].clamp(0.0, 1.0) * s).round() / s;
+        let st = if t[1].is_nan() {
+            0.0
+        } else {
+            t[1].clamp(0.0, 255.0).round()
+        };
+        [d, st, 0.0, 0.0]
     } else {
         t.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0)
     }
@@ -746,6 +762,8 @@ pub fn base_internal_format(internal: i32) -> Option<u32> {
         | gl::DEPTH_COMPONENT16
         | gl::DEPTH_COMPONENT24
         | gl::DEPTH_COMPONENT32 => gl::DEPTH_COMPONENT,
+        // GL_EXT_packed_depth_stencil (as Mesa takes it in a compatibility context).
+        gl::DEPTH_STENCIL | gl::DEPTH24_STENCIL8 => gl::DEPTH_STENCIL,
         _ => return None,
     })
 }
@@ -851,8 +869,22 @@ pub fn unpack_into(
                 for i in 0..w {
                     out.push(match group {
                         Group::Index => t.index_to_rgba(maps, img.index(i, j)),
-                        // DEPTH_STENCIL data: the depth (the index is dropped).
-                        Group::Depth | Group::DepthStencil => {
+                        // DEPTH_COMPONENT data into a DEPTH_STENCIL image: stencil 0.
+                        Group::Depth if base == gl::DEPTH_STENCIL => {
+                            [t.depth(img.depth(i, j)) as f32, 0.0, 0.0, 1.0]
+                        }
+                        Group::Depth => {
+                            let d = t.depth(img.depth(i, j)) as f32;
+                            [d, d, d, 1.0]
+                        }
+                        // DEPTH_STENCIL data: the depth, and for a DEPTH_STENCIL image the
+                        // index through the index transfer (shift, offset, MAP_STENCIL), as
+                        // Mesa's `_mesa_texstore_z24_s8`; a DEPTH_COMPONENT image drops it.
+                        Group::DepthStencil if base == gl::DEPTH_STENCIL => {
+                            let d = t.depth(img.depth(i, j)) as f32;
+                            [d, f32::from(t.stencil(maps, img.index(i, j))), 0.0, 1.0]
+                        }
+                        Group::DepthStencil => {
                             let d = t.depth(img.depth(i, j)) as f32;
                             [d, d, d, 1.0]
                         }
@@ -874,6 +906,7 @@ pub fn keep(base: u32, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
     match base {
         gl::ALPHA => [0.0, 0.0, 0.0, a],
         gl::LUMINANCE | gl::INTENSITY | gl::DEPTH_COMPONENT => [r, 0.0, 0.0, 0.0],
+        gl::DEPTH_STENCIL => [r, g, 0.0, 0.0],
         gl::LUMINANCE_ALPHA => [r, 0.0, 0.0, a],
         gl::RGB => [r, g, b, 0.0],
         _ => [r, g, b, a],
@@ -886,7 +919,7 @@ pub fn keep(base: u32, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
 pub fn as_rgba(base: u32, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
     match base {
         gl::ALPHA => [0.0, 0.0, 0.0, a],
-        gl::LUMINANCE | gl::DEPTH_COMPONENT => [r, r, r, 1.0],
+        gl::LUMINANCE | gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL => [r, r, r, 1.0],
         gl::LUMINANCE_ALPHA => [r, r, r, a],
         gl::INTENSITY => [r, r, r, r],
         gl::RGB => [r, g, b, 1.0],

@@ -21,10 +21,12 @@
 //! BindRenderbuffer take any name, creating the object, as EXT_framebuffer_object allows (and
 //! Mesa in its compatibility context). One colour attachment (MAX_COLOR_ATTACHMENTS 1, the
 //! extension's minimum), a depth and a stencil attachment; colour-renderable are RGB and RGBA
-//! textures and the RGB/RGBA renderbuffer formats, depth-renderable DEPTH_COMPONENT ones. A
-//! framebuffer with a stencil attachment is FRAMEBUFFER_UNSUPPORTED (Mesa's state tracker
-//! wants depth and stencil in one image, which GL 1.5, without a packed depth-stencil format,
-//! cannot make). Completeness is decided as Mesa decides it (see `status_of`).
+//! textures and the RGB/RGBA renderbuffer formats, depth-renderable DEPTH_COMPONENT and
+//! DEPTH_STENCIL ones, stencil-renderable STENCIL_INDEX renderbuffers and DEPTH_STENCIL
+//! textures and renderbuffers (GL_EXT_packed_depth_stencil). A framebuffer with both a depth
+//! and a stencil attachment that are not the same image is FRAMEBUFFER_UNSUPPORTED (Mesa's
+//! state tracker wants depth and stencil in one image). Completeness is decided as Mesa
+//! decides it (see `status_of`).
 //! Objects are the context's own, not shared with a share group.
 
 use std::collections::BTreeMap;
@@ -113,6 +115,7 @@ struct Window {
 struct Loaded {
     color: Attachment,
     depth: Attachment,
+    stencil: Attachment,
 }
 
 /// The context's framebuffer and renderbuffer objects and bindings.
@@ -192,7 +195,8 @@ fn color_renderable(base: u32) -> bool {
 
 /// The base format of a renderbuffer internal format RenderbufferStorage takes in GL 1.5
 /// (EXT_framebuffer_object: the colour formats of table 3.16 with base RGB or RGBA,
-/// DEPTH_COMPONENT[16|24|32], STENCIL_INDEX[1|4|8|16]), or `None`.
+/// DEPTH_COMPONENT[16|24|32], STENCIL_INDEX[1|4|8|16]; EXT_packed_depth_stencil's
+/// DEPTH_STENCIL and DEPTH24_STENCIL8), or `None`.
 pub(crate) fn renderbuffer_base(internal: u32) -> Option<u32> {
     match internal {
         gl::STENCIL_INDEX
@@ -206,7 +210,11 @@ pub(crate) fn renderbuffer_base(internal: u32) -> Option<u32> {
             if (1..=4).contains(&internal) {
                 return None;
             }
-            matches!(base, gl::RGB | gl::RGBA | gl::DEPTH_COMPONENT).then_some(base)
+            matches!(
+                base,
+                gl::RGB | gl::RGBA | gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL
+            )
+            .then_some(base)
         }
     }
 }
@@ -504,6 +512,9 @@ impl Context {
         let ok = match base {
             gl::DEPTH_COMPONENT => filled(&mut rb.depth, n, DEPTH_MAX),
             gl::STENCIL_INDEX => filled(&mut rb.stencil, n, 0),
+            gl::DEPTH_STENCIL => {
+                filled(&mut rb.depth, n, DEPTH_MAX) && filled(&mut rb.stencil, n, 0)
+            }
             _ => filled(
                 &mut rb.color,
                 n,
@@ -753,8 +764,8 @@ impl Context {
             }
         };
         let fits = match point {
-            gl::DEPTH_ATTACHMENT => base == gl::DEPTH_COMPONENT,
-            gl::STENCIL_ATTACHMENT => base == gl::STENCIL_INDEX,
+            gl::DEPTH_ATTACHMENT => crate::texture::is_depth(base),
+            gl::STENCIL_ATTACHMENT => matches!(base, gl::STENCIL_INDEX | gl::DEPTH_STENCIL),
             _ => color_renderable(base),
         };
         if w <= 0 || h <= 0 || !fits {
@@ -769,7 +780,9 @@ impl Context {
     /// sizes are complete, drawing covering the smallest (no INCOMPLETE_DIMENSIONS), and
     /// DRAW_BUFFER or READ_BUFFER naming an empty attachment is no INCOMPLETE_DRAW_BUFFER or
     /// INCOMPLETE_READ_BUFFER (a depth-only object is complete); attachments are checked
-    /// depth, stencil, colour, as Mesa's loop.
+    /// depth, stencil, colour, as Mesa's loop. Depth and stencil attachments that are not the
+    /// same image (one DEPTH_STENCIL renderbuffer or texture level on both points) are
+    /// FRAMEBUFFER_UNSUPPORTED, as llvmpipe answers (measured); either alone is complete.
     fn status_of(&self, obj: &FboObject) -> Result<(u32, u32), u32> {
         let d = self.attachment_image(&obj.depth, gl::DEPTH_ATTACHMENT)?;
         let s = self.attachment_image(&obj.stencil, gl::STENCIL_ATTACHMENT)?;
@@ -778,7 +791,7 @@ impl Context {
         if sizes.is_empty() {
             return Err(gl::FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT);
         }
-        if s.is_some() {
+        if d.is_some() && s.is_some() && obj.depth != obj.stencil {
             return Err(gl::FRAMEBUFFER_UNSUPPORTED);
         }
         let w = sizes.iter().map(|s| s.0).min().unwrap_or(0);
@@ -865,8 +878,14 @@ impl Context {
             | gl::RENDERBUFFER_GREEN_SIZE
             | gl::RENDERBUFFER_BLUE_SIZE => bits(matches!(base, Some(gl::RGB | gl::RGBA)), 8),
             gl::RENDERBUFFER_ALPHA_SIZE => bits(base == Some(gl::RGBA), 8),
-            gl::RENDERBUFFER_DEPTH_SIZE => bits(base == Some(gl::DEPTH_COMPONENT), 24),
-            gl::RENDERBUFFER_STENCIL_SIZE => bits(base == Some(gl::STENCIL_INDEX), 8),
+            gl::RENDERBUFFER_DEPTH_SIZE => bits(
+                matches!(base, Some(gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL)),
+                24,
+            ),
+            gl::RENDERBUFFER_STENCIL_SIZE => bits(
+                matches!(base, Some(gl::STENCIL_INDEX | gl::DEPTH_STENCIL)),
+                8,
+            ),
             _ => return self.error(gl::INVALID_ENUM),
         };
         match params.first_mut() {
@@ -1027,9 +1046,14 @@ impl Context {
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(&mut self.state.textures.objects, &att, w, h, |x, y| {
-                    pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0))
-                });
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    None,
+                    |x, y| pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0)),
+                );
             }
             Attachment::None => {}
         }
@@ -1047,9 +1071,41 @@ impl Context {
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(&mut self.state.textures.objects, &att, w, h, |x, y| {
-                    pixel(x, y).map(|(_, d, _)| [d as f32 / DEPTH_MAX as f32, 0.0, 0.0, 0.0])
-                });
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    Some(0),
+                    |x, y| {
+                        pixel(x, y).map(|(_, d, _)| [d as f32 / DEPTH_MAX as f32, 0.0, 0.0, 0.0])
+                    },
+                );
+            }
+            Attachment::None => {}
+        }
+        // Stencil (a STENCIL_INDEX or DEPTH_STENCIL renderbuffer, a DEPTH_STENCIL texture's G).
+        match loaded.stencil {
+            Attachment::Renderbuffer(id) => {
+                if let Some(rb) = self.fbos.renderbuffers.get_mut(&id) {
+                    let rw = rb.width.max(1) as u32;
+                    for (k, px) in rb.stencil.iter_mut().enumerate() {
+                        let (x, y) = ((k as u32) % rw, (k as u32) / rw);
+                        if let Some((_, _, s)) = pixel(x, y).filter(|_| x < w && y < h) {
+                            *px = s;
+                        }
+                    }
+                }
+            }
+            att @ Attachment::Texture { .. } => {
+                store_texture(
+                    &mut self.state.textures.objects,
+                    &att,
+                    w,
+                    h,
+                    Some(1),
+                    |x, y| pixel(x, y).map(|(_, _, s)| [0.0, f32::from(s), 0.0, 0.0]),
+                );
             }
             Attachment::None => {}
         }
@@ -1070,7 +1126,7 @@ impl Context {
         let config = ContextConfig {
             double_buffered: false,
             depth: obj.depth != Attachment::None,
-            stencil: false,
+            stencil: obj.stencil != Attachment::None,
             accum: false,
             alpha: true,
         };
@@ -1122,6 +1178,27 @@ impl Context {
             }
             Attachment::None => {}
         }
+        match obj.stencil {
+            Attachment::Renderbuffer(rid) => {
+                if let Some(rb) = self.fbos.renderbuffers.get(&rid) {
+                    let rw = rb.width.max(1) as u32;
+                    for (k, &s) in rb.stencil.iter().enumerate() {
+                        fb.set_stencil((k as u32) % rw, (k as u32) / rw, s);
+                    }
+                }
+            }
+            att @ Attachment::Texture { zoffset, .. } => {
+                if let Some(lv) = attached_level(objects, &att) {
+                    for y in 0..h as i32 {
+                        for x in 0..w as i32 {
+                            let s = lv.texel3(x, y, zoffset)[1].clamp(0.0, 255.0) as u8;
+                            fb.set_stencil(x as u32, y as u32, s);
+                        }
+                    }
+                }
+            }
+            Attachment::None => {}
+        }
         self.renderer.swap_framebuffer(&self.state, fb);
         self.state.width = w;
         self.state.height = h;
@@ -1129,6 +1206,7 @@ impl Context {
         self.fbos.loaded = Some(Loaded {
             color: obj.color,
             depth: obj.depth,
+            stencil: obj.stencil,
         });
     }
 
@@ -1142,12 +1220,15 @@ impl Context {
 }
 
 /// Writes a `w` x `h` rectangle of texels, `get(x, y)` as [0, 1] RGBA (or depth in the first
-/// component), into the texture image `att` names, quantised to its format.
+/// component, a stencil index in the second), into the texture image `att` names, quantised to
+/// its format; with `only` Some(k), component k alone (a DEPTH_STENCIL texture's depth or
+/// stencil, the other kept).
 fn store_texture(
     objects: &mut BTreeMap<u32, Arc<TexObject>>,
     att: &Attachment,
     w: u32,
     h: u32,
+    only: Option<usize>,
     get: impl Fn(u32, u32) -> Option<[f32; 4]>,
 ) {
     let Attachment::Texture {
@@ -1174,6 +1255,14 @@ fn store_texture(
             let Some(t) = get(x, y) else { continue };
             let i = ((zoffset.max(0) as u32 * lh + y) * lw + x) as usize;
             if let Some(dst) = lv.texels.get_mut(i) {
+                let t = match only {
+                    Some(k) => {
+                        let mut merged = *dst;
+                        merged[k] = t[k];
+                        merged
+                    }
+                    None => t,
+                };
                 *dst = quantize(base, crate::texture::keep(base, t));
             }
         }

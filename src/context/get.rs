@@ -46,6 +46,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_EXT_abgr ",                 // the ABGR_EXT pixel format (every pixel command)
     "GL_EXT_blend_minmax ",         // MIN and MAX blend equations (GL 1.4)
     "GL_EXT_framebuffer_object ",   // framebuffer objects (context/fbo.rs; GL 3.0 names too)
+    "GL_EXT_packed_depth_stencil ", // DEPTH_STENCIL pixels, textures, renderbuffers
     "GL_EXT_shadow_funcs ",         // every TEXTURE_COMPARE_FUNC (GL 1.5)
     "GL_EXT_texture3D ",            // TexImage3D, TexSubImage3D (GL 1.2)
     "GL_EXT_vertex_array ",         // the *PointerEXT commands with a count (capi; GL 1.1 core)

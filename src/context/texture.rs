@@ -29,8 +29,8 @@ use crate::call::Call;
 use crate::gl;
 use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
-    as_rgba, base_internal_format, image_binding, image_need3, keep, proxy_index, quantize,
-    slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
+    as_rgba, base_internal_format, image_binding, image_need3, is_depth, keep, proxy_index,
+    quantize, slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
     MAX_TEXTURE_SIZE,
 };
 
@@ -145,7 +145,7 @@ pub fn tex_image_nd_args_error(
     if !formats_agree(f.group, base) {
         return Some(gl::INVALID_OPERATION);
     }
-    if dims == 3 && base == gl::DEPTH_COMPONENT {
+    if dims == 3 && is_depth(base) {
         return Some(gl::INVALID_OPERATION);
     }
     if !is_proxy(target) && !legal_dimensions(dims, target, level, size, border) {
@@ -187,11 +187,12 @@ pub fn strip_border(lv: Level) -> Level {
 /// data and colour indices (made RGBA through the I_TO_* maps) for a colour format; never
 /// stencil indices (INVALID_OPERATION, Mesa's error for a format no texture takes).
 /// GL_EXT_packed_depth_stencil's DEPTH_STENCIL data counts as depth data, as Mesa counts it: a
-/// depth texture takes its depths, the indices dropped.
+/// DEPTH_COMPONENT texture takes its depths, the indices dropped; a DEPTH_STENCIL texture takes
+/// both, and DEPTH_COMPONENT data too (measured on llvmpipe).
 fn formats_agree(group: Group, base: u32) -> bool {
     match group {
-        Group::Depth | Group::DepthStencil => base == gl::DEPTH_COMPONENT,
-        Group::Color(_) | Group::Index => base != gl::DEPTH_COMPONENT,
+        Group::Depth | Group::DepthStencil => is_depth(base),
+        Group::Color(_) | Group::Index => !is_depth(base),
         Group::Stencil => false,
     }
 }
@@ -763,7 +764,10 @@ impl Context {
             };
             unpack_into(&mut texels, &img, width, height, base, &t, &maps);
         }
-        self.write_box(target, level, offset, size, &texels);
+        // DEPTH_COMPONENT data into a DEPTH_STENCIL image replaces the depths only (Mesa's
+        // `_mesa_texstore_z24_s8` keeps the stencil; llvmpipe measured: see docs).
+        let depth_only = base == gl::DEPTH_STENCIL && f.group == Group::Depth;
+        self.write_box(target, level, offset, size, &texels, depth_only);
     }
 
     /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target (TexImage's
@@ -811,7 +815,8 @@ impl Context {
     }
 
     /// Writes `texels` (rows of `size[0]`, images of `size[1]` rows) into level `level` of the
-    /// texture of `target` at `offset`, then GENERATE_MIPMAP.
+    /// texture of `target` at `offset` (with `depth_only`, only their first component: the
+    /// depths of a DEPTH_STENCIL image, its stencil kept), then GENERATE_MIPMAP.
     fn write_box(
         &mut self,
         target: u32,
@@ -819,11 +824,12 @@ impl Context {
         offset: [i32; 3],
         size: [i32; 3],
         texels: &[[f32; 4]],
+        depth_only: bool,
     ) {
         // As `store_level`: the bound framebuffer object's images stay coherent.
         self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
-            ctx.write_box_now(target, level, offset, size, texels)
+            ctx.write_box_now(target, level, offset, size, texels, depth_only)
         });
         self.fbo_load();
     }
@@ -835,6 +841,7 @@ impl Context {
         offset: [i32; 3],
         size: [i32; 3],
         texels: &[[f32; 4]],
+        depth_only: bool,
     ) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
@@ -849,7 +856,13 @@ impl Context {
                 let at = ((offset[2] as usize + k) * lh + offset[1] as usize + j) * lw
                     + offset[0] as usize;
                 if let Some(dst) = lv.texels.get_mut(at..at + row.len()) {
-                    dst.copy_from_slice(row);
+                    if depth_only {
+                        for (d, s) in dst.iter_mut().zip(row) {
+                            d[0] = s[0];
+                        }
+                    } else {
+                        dst.copy_from_slice(row);
+                    }
                 }
             }
         }
@@ -949,18 +962,19 @@ impl Context {
             );
             return self.error(code.unwrap_or(gl::INVALID_ENUM));
         };
-        let fmt = if base == gl::DEPTH_COMPONENT {
-            gl::DEPTH_COMPONENT
-        } else {
-            gl::RGBA
+        let (fmt, ty) = match base {
+            gl::DEPTH_COMPONENT => (gl::DEPTH_COMPONENT, gl::FLOAT),
+            gl::DEPTH_STENCIL => (gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8),
+            _ => (gl::RGBA, gl::FLOAT),
         };
         if let Some(code) =
-            tex_image_nd_args_error(dims, target, level, ifmt, size, border, fmt, gl::FLOAT)
+            tex_image_nd_args_error(dims, target, level, ifmt, size, border, fmt, ty)
         {
             return self.error(code);
         }
-        // §3.8.2: a depth format without a depth buffer to copy from.
-        if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
+        // §3.8.2: a depth format without a depth buffer to copy from (DEPTH_STENCIL: without
+        // a depth and a stencil buffer, as Mesa's `copytexture_error_check`).
+        if self.copy_source_missing(base) {
             return self.error(gl::INVALID_OPERATION);
         }
         if self.framebuffer_incomplete() {
@@ -1087,7 +1101,7 @@ impl Context {
         let Some(base) = self.check_sub_image(dims, target, level, offset, size) else {
             return;
         };
-        if base == gl::DEPTH_COMPONENT && !self.state.config.depth {
+        if self.copy_source_missing(base) {
             return self.error(gl::INVALID_OPERATION);
         }
         if self.framebuffer_incomplete() {
@@ -1096,10 +1110,22 @@ impl Context {
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
-        self.write_box(target, level, offset, size, &texels);
+        self.write_box(target, level, offset, size, &texels, false);
     }
 
-    /// Framebuffer pixels as texels of `base`: depth (as [0, 1]) for DEPTH_COMPONENT, else the
+    /// Whether the framebuffer lacks a buffer CopyTex(Sub)Image into base format `base` reads:
+    /// depth for DEPTH_COMPONENT, depth and stencil for DEPTH_STENCIL (INVALID_OPERATION).
+    fn copy_source_missing(&self, base: u32) -> bool {
+        let c = &self.state.config;
+        match base {
+            gl::DEPTH_COMPONENT => !c.depth,
+            gl::DEPTH_STENCIL => !(c.depth && c.stencil),
+            _ => false,
+        }
+    }
+
+    /// Framebuffer pixels as texels of `base`: depth (as [0, 1]) for DEPTH_COMPONENT, depth and
+    /// stencil index for DEPTH_STENCIL, else the
     /// colour converted as TexImage converts RGBA data.
     /// `None` when the texels cannot be allocated (w and h are validated, at most
     /// MAX_TEXTURE_SIZE).
@@ -1121,6 +1147,10 @@ impl Context {
                     (Some((_, d, _)), gl::DEPTH_COMPONENT) => {
                         let z = d as f32 / crate::cpu::framebuffer::DEPTH_MAX as f32;
                         [z, 0.0, 0.0, 0.0]
+                    }
+                    (Some((_, d, s)), gl::DEPTH_STENCIL) => {
+                        let z = d as f32 / crate::cpu::framebuffer::DEPTH_MAX as f32;
+                        [z, f32::from(s), 0.0, 0.0]
                     }
                     (Some((c, _, _)), _) => keep(base, c.map(|v| f32::from(v) / 255.0)),
                     (None, _) => [0.0; 4],
@@ -1182,11 +1212,15 @@ impl Context {
         else {
             return;
         };
-        // DEPTH_STENCIL only from a depth-stencil image, which no internal format here makes
-        // (Mesa's INVALID_OPERATION for a format that does not match the image's).
-        if f.group == Group::DepthStencil
-            || (f.group == Group::Depth) != (lv.base == gl::DEPTH_COMPONENT)
-        {
+        // DEPTH_STENCIL only from a DEPTH_STENCIL image, DEPTH_COMPONENT only from a depth
+        // one, colour only from a colour one (Mesa's INVALID_OPERATION for a format that does
+        // not match the image's).
+        let agree = match f.group {
+            Group::DepthStencil => lv.base == gl::DEPTH_STENCIL,
+            Group::Depth => is_depth(lv.base),
+            _ => !is_depth(lv.base),
+        };
+        if !agree {
             return self.error(gl::INVALID_OPERATION);
         }
         // Placed under the PACK_ modes like ReadPixels (§6.1.4 refers to §4.3.2).
@@ -1207,13 +1241,22 @@ impl Context {
                     // Table 6.1: L and I are returned as R alone, (L, 0, 0, 1) as RGBA (Mesa
                     // agrees; piglit `getteximage-luminance`).
                     let tx = lv.texel3(i as i32, j as i32, k as i32);
+                    if f.group == Group::DepthStencil {
+                        // The stored depth and index as they are, as Mesa's
+                        // `get_tex_depth_stencil` (no pixel transfer).
+                        let comps = [Value::Norm(f64::from(tx[0])), Value::Int(tx[1] as u32)];
+                        store(pixels, &layout, f.ty, i, j, &comps);
+                        continue;
+                    }
                     let rgba = match lv.base {
                         gl::LUMINANCE | gl::INTENSITY => [tx[0], 0.0, 0.0, 1.0],
                         gl::LUMINANCE_ALPHA => [tx[0], 0.0, 0.0, tx[3]],
-                        gl::DEPTH_COMPONENT => [t.depth(f64::from(tx[0])) as f32, 0.0, 0.0, 1.0],
+                        gl::DEPTH_COMPONENT | gl::DEPTH_STENCIL => {
+                            [t.depth(f64::from(tx[0])) as f32, 0.0, 0.0, 1.0]
+                        }
                         base => as_rgba(base, tx),
                     };
-                    let [r, g, b, a] = if t.color_is_identity() || lv.base == gl::DEPTH_COMPONENT {
+                    let [r, g, b, a] = if t.color_is_identity() || is_depth(lv.base) {
                         rgba
                     } else {
                         t.color(&maps, rgba)

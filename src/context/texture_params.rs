@@ -623,10 +623,9 @@ impl Context {
                 bits(matches!(base, gl::LUMINANCE | gl::LUMINANCE_ALPHA), 8)
             }
             gl::TEXTURE_INTENSITY_SIZE => bits(base == gl::INTENSITY, 8),
-            gl::TEXTURE_DEPTH_SIZE => bits(base == gl::DEPTH_COMPONENT, 24),
-            // A GL 3.0 pname (EXT_packed_depth_stencil) Mesa answers in its GL 1.5 context:
-            // no texture format here has stencil bits.
-            TEXTURE_STENCIL_SIZE => 0,
+            gl::TEXTURE_DEPTH_SIZE => bits(crate::texture::is_depth(base), 24),
+            // EXT_packed_depth_stencil's TEXTURE_STENCIL_SIZE_EXT: 8 for DEPTH_STENCIL.
+            TEXTURE_STENCIL_SIZE => bits(base == gl::DEPTH_STENCIL, 8),
             _ => {
                 self.error(gl::INVALID_ENUM);
                 return None;

@@ -301,6 +301,18 @@ impl Framebuffer {
         }
     }
 
+    /// Sets the stencil index of pixel (x, y) (nothing outside the framebuffer): a framebuffer
+    /// object's stencil attachment loaded (context/fbo.rs).
+    pub(crate) fn set_stencil(&mut self, x: u32, y: u32, s: u8) {
+        if x >= self.width || y >= self.height {
+            return;
+        }
+        let i = self.index(x as usize, y as usize);
+        if let Some(px) = self.stencil.get_mut(i) {
+            *px = s;
+        }
+    }
+
     /// Colour (of the main colour buffer), depth and stencil of pixel (x, y), or `None`
     /// outside the framebuffer. The library reads with [`Framebuffer::pixel_in`] and the read
     /// buffer (`read_buf`).

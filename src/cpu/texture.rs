@@ -149,8 +149,8 @@ impl Sampler {
                 _ => Route::Lod,
             },
             compare: (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
-                && b.base == gl::DEPTH_COMPONENT)
-                .then_some(obj.compare_func),
+                && crate::texture::is_depth(b.base))
+            .then_some(obj.compare_func),
             depth_mode: obj.depth_texture_mode,
             obj: Arc::clone(obj),
         })
@@ -320,7 +320,7 @@ impl Sampler {
     /// another unit's TEXTUREn source reads of this unit ([`UnitTexels`]).
     #[inline]
     pub fn combine_texel(&self, texel: [f32; 4]) -> Vec4 {
-        let (base, t) = if self.base == gl::DEPTH_COMPONENT {
+        let (base, t) = if crate::texture::is_depth(self.base) {
             match self.depth_mode {
                 gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, texel[0]]),
                 m => (m, texel),
@@ -602,7 +602,7 @@ impl Sampler {
     /// Table 3.21: the texture function `env` of fragment colour `cf` and filtered texel `t`.
     pub fn env(&self, cf: Vec4, t: [f32; 4]) -> Vec4 {
         // A depth texture reads as DEPTH_TEXTURE_MODE (§3.8.14).
-        let (base, t) = if self.base == gl::DEPTH_COMPONENT {
+        let (base, t) = if crate::texture::is_depth(self.base) {
             match self.depth_mode {
                 gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, t[0]]),
                 m => (m, t),

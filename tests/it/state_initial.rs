@@ -525,6 +525,7 @@ fn strings() {
         "GL_ARB_texture_env_crossbar",
         "GL_ARB_vertex_buffer_object",
         "GL_ARB_window_pos",
+        "GL_EXT_packed_depth_stencil",
         "GL_WIN_phong_shading",
     ] {
         assert!(names.contains(&want), "{want} in {ext:?}");
