@@ -444,7 +444,7 @@ fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_vo
     let buffers = ContextConfig {
         double_buffered: CONFIGS.get(config).is_some_and(|c| c.double),
         accum: true,
-        alpha: CONFIGS.get(config).is_none_or(|c| c.alpha),
+        alpha: CONFIGS.get(config).map_or(true, |c| c.alpha),
         ..ContextConfig::default()
     };
     // A share context shares its display lists, textures and buffer objects (appendix D).
