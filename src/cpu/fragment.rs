@@ -18,7 +18,7 @@ use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::lanes::LANES;
 use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG, MAXV};
-use super::texture::Sampler;
+use super::texture::{Sampler, UnitTexels};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
@@ -59,6 +59,14 @@ pub struct FragCtx<'a> {
     /// offset of its coordinates among the varyings. Each takes the previous one's result
     /// (§3.8.15); a fragment stops at the first `None`, so a flush pays for the units it uses.
     pub tex: [Option<(&'a Sampler, usize)>; MAX_TEXTURE_UNITS],
+    /// Some unit's environment reads another unit's texel (a COMBINE source TEXTUREn,
+    /// [`crossbar`]): every unit samples before the first environment runs.
+    pub crossbar: bool,
+}
+
+/// `FragCtx::crossbar` of the units `tex`.
+pub fn crossbar(tex: &[Option<(&Sampler, usize)>]) -> bool {
+    tex.iter().flatten().any(|(s, _)| s.crossbar())
 }
 
 /// `FragCtx::tex` from one optional sampler per unit and the varying layout (see there).
@@ -187,9 +195,27 @@ impl FragCtx<'_> {
         // in `full`)
         // §3.8.15: each enabled unit takes the previous unit's result as Cf.
         let prim = c;
-        for (t, l) in self.tex.iter().zip(lambda) {
-            let Some((tx, o)) = *t else { break };
-            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+        if self.crossbar {
+            // A COMBINE source TEXTUREn (GL 1.4 §3.8.13) reads unit n's texel: every unit
+            // samples first, then the environments run in unit order.
+            let mut raw = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
+            let mut units: UnitTexels = [None; MAX_TEXTURE_UNITS];
+            for ((t, l), r) in self.tex.iter().zip(lambda).zip(&mut raw) {
+                let Some((tx, o)) = *t else { break };
+                *r = tx.texel([g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+                if let Some(slot) = units.get_mut(tx.unit()) {
+                    *slot = Some(tx.combine_texel(*r));
+                }
+            }
+            for (t, r) in self.tex.iter().zip(raw) {
+                let Some((tx, _)) = *t else { break };
+                c = tx.shade_texel(c, prim, r, &units);
+            }
+        } else {
+            for (t, l) in self.tex.iter().zip(lambda) {
+                let Some((tx, o)) = *t else { break };
+                c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+            }
         }
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
@@ -1030,6 +1056,7 @@ mod tests {
                 stipple,
                 ops: Some(ops),
                 tex: [None; MAX_TEXTURE_UNITS],
+                crossbar: false,
             };
             let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
             let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];

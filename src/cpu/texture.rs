@@ -22,7 +22,7 @@ use glam::Vec4;
 
 use super::lanes::{recip_lanes, LANES};
 use crate::gl;
-use crate::state::State;
+use crate::state::{State, MAX_TEXTURE_UNITS};
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
 
 /// Eight fragments' texels, lane-major (each lane's RGBA as `shade`'s filters return it).
@@ -39,10 +39,20 @@ enum Route {
     Lod,
 }
 
+/// Each unit's filtered texel as a COMBINE source TEXTUREn reads it (ARB_texture_env_crossbar,
+/// GL 1.4 §3.8.13), by unit number: `None` for a unit that is disabled (no target enabled, or
+/// none complete), which reads as (0, 0, 0, 0) as in llvmpipe (see [`Sampler::shade_texel`]).
+pub type UnitTexels = [Option<Vec4>; MAX_TEXTURE_UNITS];
+
 /// One texture unit's sampling and environment state for a flush.
 #[derive(Clone, Debug)]
 pub struct Sampler {
     obj: Arc<TexObject>,
+    /// The texture unit (0 for TEXTURE0).
+    unit: usize,
+    /// The environment is COMBINE with a TEXTUREn source (the crossbar): the fragment stage
+    /// must sample every unit before this unit's environment runs.
+    crossbar: bool,
     /// Base internal format of the base level (DEPTH_COMPONENT read through `depth_mode`).
     base: u32,
     base_level: i32,
@@ -93,7 +103,15 @@ impl Sampler {
         } else {
             0.0
         };
+        let crossbar = u.env_mode == gl::COMBINE
+            && u.combine
+                .src_rgb
+                .iter()
+                .chain(&u.combine.src_alpha)
+                .any(|&s| unit_of_source(s).is_some());
         Some(Sampler {
+            unit,
+            crossbar,
             base: b.base,
             base_level: obj.base_level,
             last: if mipmapped {
@@ -254,11 +272,33 @@ impl Sampler {
         std::array::from_fn(|l| 0.5 * fast_log2(lx[l].max(ly[l])))
     }
 
+    /// The texture unit this sampler belongs to.
+    #[inline]
+    pub fn unit(&self) -> usize {
+        self.unit
+    }
+
+    /// Is the environment COMBINE with a TEXTUREn source? Then every unit's texel must be
+    /// known before it runs ([`Sampler::shade_texel`]).
+    #[inline]
+    pub fn crossbar(&self) -> bool {
+        self.crossbar
+    }
+
     /// The texture-environment result for fragment colour `cf` (the previous unit's result),
     /// primary colour `prim` (COMBINE's PRIMARY_COLOR), texture coordinates `(s, t, r, q)`
-    /// (already perspective-correct) and level of detail `lambda` before bias.
+    /// (already perspective-correct) and level of detail `lambda` before bias. For an
+    /// environment without TEXTUREn sources (`!self.crossbar()`).
     #[inline]
     pub fn shade(&self, cf: Vec4, prim: Vec4, coords: [f32; 4], lambda: f32) -> Vec4 {
+        let texel = self.texel(coords, lambda);
+        self.shade_texel(cf, prim, texel, &[])
+    }
+
+    /// This unit's filtered texel (internal components) at texture coordinates `(s, t, r, q)`
+    /// (already perspective-correct) and level of detail `lambda` before bias.
+    #[inline]
+    pub fn texel(&self, coords: [f32; 4], lambda: f32) -> [f32; 4] {
         let [s, t, r, q] = coords;
         let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
         let (s, t, r) = (s * inv, t * inv, r * inv);
@@ -271,15 +311,11 @@ impl Sampler {
         };
         // The route was chosen once for the flush: without mipmaps and with equal filters, λ
         // cannot matter and the base level's filter is called directly.
-        let texel = match self.route {
+        match self.route {
             Route::Nearest => self.nearest(face, self.base_level, s, t, r),
             Route::Linear => self.linear(face, self.base_level, s, t, r),
             Route::Lod => self.sample_face(face, s, t, r, lambda),
-        };
-        if self.env == gl::COMBINE {
-            return self.combine(cf, prim, texel);
         }
-        self.env(cf, texel)
     }
 
     /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes`] stand for [`Sampler::shade`]:
@@ -569,10 +605,11 @@ impl Sampler {
         }
     }
 
-    /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
-    /// primary colour `prim` and this unit's filtered texel. A TEXTUREn source naming another
-    /// unit reads this unit's texel (the crossbar is not supported).
-    fn combine(&self, cf: Vec4, prim: Vec4, texel: [f32; 4]) -> Vec4 {
+    /// `texel` (from [`Sampler::texel`]) as COMBINE reads it (table 3.23's Cs and As): the
+    /// base internal format expanded to RGBA, a depth texture through DEPTH_TEXTURE_MODE. What
+    /// another unit's TEXTUREn source reads of this unit ([`UnitTexels`]).
+    #[inline]
+    pub fn combine_texel(&self, texel: [f32; 4]) -> Vec4 {
         let (base, t) = if crate::texture::is_depth(self.base) {
             match self.depth_mode {
                 gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, texel[0]]),
@@ -581,13 +618,42 @@ impl Sampler {
         } else {
             (self.base, texel)
         };
-        let tex = Vec4::from_array(as_rgba(base, t));
+        Vec4::from_array(as_rgba(base, t))
+    }
+
+    /// The texture-environment result for fragment colour `cf`, primary colour `prim` and this
+    /// unit's filtered texel `texel` (from [`Sampler::texel`]); `units` holds every unit's
+    /// texel for COMBINE's TEXTUREn sources (only read when [`Sampler::crossbar`]).
+    #[inline]
+    pub fn shade_texel(
+        &self,
+        cf: Vec4,
+        prim: Vec4,
+        texel: [f32; 4],
+        units: &[Option<Vec4>],
+    ) -> Vec4 {
+        if self.env == gl::COMBINE {
+            return self.combine(cf, prim, self.combine_texel(texel), units);
+        }
+        self.env(cf, texel)
+    }
+
+    /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
+    /// primary colour `prim`, this unit's texel `tex` (as [`Sampler::combine_texel`] gives it)
+    /// and, for a source TEXTUREn (ARB_texture_env_crossbar, core in GL 1.4), unit n's texel in
+    /// `units`. A disabled unit n, which the spec leaves undefined, reads (0, 0, 0, 0): Mesa's
+    /// fixed-function fragment program loads zero for it (measured on llvmpipe in
+    /// tests/it/crossbar_gl.rs).
+    fn combine(&self, cf: Vec4, prim: Vec4, tex: Vec4, units: &[Option<Vec4>]) -> Vec4 {
         let c = &self.combine;
         let src = |s: u32| match s {
             gl::CONSTANT => self.env_color,
             gl::PRIMARY_COLOR => prim,
             gl::PREVIOUS => cf,
-            _ => tex,
+            gl::TEXTURE => tex,
+            s => unit_of_source(s)
+                .and_then(|n| units.get(n).copied().flatten())
+                .unwrap_or(Vec4::ZERO),
         };
         let arg_rgb = |k: usize| {
             let v = src(c.src_rgb[k]);
@@ -910,6 +976,13 @@ fn unit_texture(state: &State, unit: usize) -> Option<(u32, &Arc<TexObject>)> {
             let obj = state.textures.bound(unit, target)?;
             obj.is_complete().then_some((target, obj))
         })
+}
+
+/// The unit a COMBINE source TEXTUREn names (the front end accepts n < MAX_TEXTURE_UNITS only).
+#[inline]
+fn unit_of_source(source: u32) -> Option<usize> {
+    let n = source.wrapping_sub(gl::TEXTURE0) as usize;
+    (n < MAX_TEXTURE_UNITS).then_some(n)
 }
 
 /// The cube-map face (0 to 5: +X, -X, +Y, -Y, +Z, -Z) of direction `p` by its major axis
