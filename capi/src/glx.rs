@@ -5,9 +5,11 @@
 //!
 //! - Visuals: the screen's 24-bit TrueColor visual (`XMatchVisualInfo`), handed out in
 //!   Xlib-allocated memory (`XGetVisualInfo`), which the caller `XFree`s.
-//! - FBConfigs: two, both RGBA8 with 24-bit depth and 8-bit stencil — single-buffered (window,
-//!   pixmap, pbuffer) and double-buffered (window, pbuffer) — as handles into a static table;
-//!   the arrays of them are `malloc`ed (XFree is free()).
+//! - FBConfigs: four, RGB8 (GLX_ALPHA_SIZE 0: ALPHA_BITS 0, destination alpha reads 1) and
+//!   RGBA8, each with 24-bit depth and 8-bit stencil, single-buffered (window, pixmap, pbuffer)
+//!   and double-buffered (window, pbuffer), as handles into a static table in GLX 1.4 §3.3.3's
+//!   order (the RGB8 ones first: a request without alpha gets no alpha, as from Mesa); the arrays
+//!   of them are `malloc`ed (XFree is free()).
 //! - Contexts are the C layer's (`current.rs`) with the config they were made for; a window is
 //!   a `Surface` (`xwin.rs`) whose size is read at MakeCurrent, glViewport and after each
 //!   present, so the framebuffer follows resizes. Double-buffered drawables present at
@@ -130,27 +132,46 @@ fn say(call: &'static str, message: impl FnOnce() -> String) {
 
 // ----- FBConfigs ------------------------------------------------------------------------------
 
-/// One framebuffer configuration. Both are RGBA8 + depth 24 + stencil 8 (fixedgl's one
-/// framebuffer format); they differ in double-buffering and the drawables they allow.
+/// One framebuffer configuration: RGB8 or RGBA8, depth 24, stencil 8 (fixedgl's framebuffer
+/// formats); they differ in alpha bits, double-buffering and the drawables they allow.
 #[derive(Debug)]
 pub struct FbConfig {
     id: c_int,
     double: bool,
+    /// 8 alpha bits (RGBA8); without them ALPHA_BITS is 0 (`ContextConfig::alpha`).
+    alpha: bool,
 }
 
-/// In GLX's sort order: single-buffered first (GLX 1.4 §3.3.3, GLX_DOUBLEBUFFER "smaller").
-static CONFIGS: [FbConfig; 2] = [
+/// In GLX's sort order (GLX 1.4 §3.3.3): whatever colour sizes are asked, the two formats tie
+/// on the colour bits counted (alpha counts only when asked for, and then only RGBA8 matches),
+/// so the smaller GLX_BUFFER_SIZE (24, RGB8) comes first, as Mesa lists its alpha-less configs
+/// first (`fbconfig_compare`: PREFER_LARGER_OR_ZERO on alpha); then single-buffered first
+/// (GLX_DOUBLEBUFFER "smaller"). The RGBA8 configs keep IDs 1 and 2, which they had alone.
+static CONFIGS: [FbConfig; 4] = [
+    FbConfig {
+        id: 3,
+        double: false,
+        alpha: false,
+    },
+    FbConfig {
+        id: 4,
+        double: true,
+        alpha: false,
+    },
     FbConfig {
         id: 1,
         double: false,
+        alpha: true,
     },
     FbConfig {
         id: 2,
         double: true,
+        alpha: true,
     },
 ];
-/// The config of a visual GLX 1.2 programs got elsewhere (GLX's default: double-buffered).
-const DOUBLE: usize = 1;
+/// The config of a visual GLX 1.2 programs got elsewhere (GLX's default: double-buffered; with
+/// alpha, as fixedgl always gave, although Mesa's configs of a 24-bit visual have none).
+const DOUBLE: usize = 3;
 
 fn config_handle(i: usize) -> *mut c_void {
     std::ptr::addr_of!(CONFIGS[i]).cast_mut().cast()
@@ -185,10 +206,11 @@ fn config_attrib(
     let visual = xwin::true_color(x, dpy, screen);
     Some(match attr {
         GLX_FBCONFIG_ID => CONFIGS[i].id,
-        GLX_BUFFER_SIZE => 32,
+        GLX_BUFFER_SIZE => 24 + 8 * c_int::from(CONFIGS[i].alpha),
         GLX_LEVEL | GLX_STEREO | GLX_AUX_BUFFERS => 0,
         GLX_DOUBLEBUFFER => c_int::from(CONFIGS[i].double),
-        GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE | GLX_ALPHA_SIZE => 8,
+        GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE => 8,
+        GLX_ALPHA_SIZE => 8 * c_int::from(CONFIGS[i].alpha),
         GLX_DEPTH_SIZE => 24,
         GLX_STENCIL_SIZE => 8,
         // 16 bits a channel, signed, as llvmpipe's (fixedgl's accumulation buffer).
@@ -422,6 +444,7 @@ fn create_context(config: usize, screen: c_int, share: *mut c_void) -> *mut c_vo
     let buffers = ContextConfig {
         double_buffered: CONFIGS.get(config).is_some_and(|c| c.double),
         accum: true,
+        alpha: CONFIGS.get(config).map_or(true, |c| c.alpha),
         ..ContextConfig::default()
     };
     // A share context shares its display lists, textures and buffer objects (appendix D).
@@ -724,7 +747,7 @@ pub unsafe extern "C" fn glXChooseVisual(
                 Some(&c) => visual_of(x, dpy, screen, c),
                 None => {
                     say("glXChooseVisual", || {
-                        "no visual meets the request (fixedgl has RGBA8, depth 24, stencil 8, a 16-bit accumulation buffer, no stereo, no multisampling)".into()
+                        "no visual meets the request (fixedgl has RGB8 and RGBA8, depth 24, stencil 8, a 16-bit accumulation buffer, no stereo, no multisampling)".into()
                     });
                     std::ptr::null_mut()
                 }

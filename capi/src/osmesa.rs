@@ -92,9 +92,12 @@ impl Buffer {
                     OSMESA_BGR => o.copy_from_slice(&[b, g, r]),
                     gl::RGB => o.copy_from_slice(&[r, g, b]),
                     OSMESA_RGB_565 => {
-                        let v = (u16::from(r >> 3) << 11)
-                            | (u16::from(g >> 2) << 5)
-                            | u16::from(b >> 3);
+                        // Each 8-bit value rounded to 5 or 6 bits, as Mesa's OSMesa stored a
+                        // colour in its B5G6R5 buffer (round(c·31), round(c·63); measured with
+                        // libOSMesa 8: a clear to (0.06, 0.5, 0.1) is 2, 32, 3, where taking the
+                        // top bits of the 8-bit value gives 1, 32, 3).
+                        let to = |v: u8, max: u32| ((u32::from(v) * max + 127) / 255) as u16;
+                        let v = (to(r, 31) << 11) | (to(g, 63) << 5) | to(b, 31);
                         o.copy_from_slice(&v.to_ne_bytes());
                     }
                     _ => o.copy_from_slice(&[r, g, b, a]),
@@ -156,7 +159,12 @@ fn create(format: u32, depth: i32, stencil: i32, accum: i32, share: *mut c_void)
         eprintln!("fixedgl: OSMesa asks for {depth} depth, {stencil} stencil, {accum} accumulation bits; fixedgl has 24, 8 and 16");
         return std::ptr::null_mut();
     }
-    let config = fixedgl::ContextConfig::default();
+    // The formats without alpha get a framebuffer without alpha bits (ALPHA_BITS 0, the
+    // destination alpha reading 1), as Mesa's OSMesa gave them.
+    let config = fixedgl::ContextConfig {
+        alpha: !matches!(format, gl::RGB | OSMESA_BGR | OSMESA_RGB_565),
+        ..fixedgl::ContextConfig::default()
+    };
     let Some(gl) = Gl::with_config_shared(1, 1, config, share.cast()) else {
         return std::ptr::null_mut();
     };

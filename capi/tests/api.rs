@@ -13,6 +13,9 @@ use fixedgl_capi::osmesa::*;
 
 extern "C" {
     fn glClearColor(r: f32, g: f32, b: f32, a: f32);
+    fn glEnable(cap: u32);
+    fn glBlendFunc(src: u32, dst: u32);
+    fn glColor4f(r: f32, g: f32, b: f32, a: f32);
     fn glClear(mask: u32);
     fn glEnableClientState(cap: u32);
     fn glVertexPointer(size: i32, ty: u32, stride: i32, p: *const c_void);
@@ -224,6 +227,76 @@ fn osmesa_writes_the_frame_as_each_format_lays_it_out() {
     });
     assert_eq!(&top_down[0..4], &[0, 0, 255, 255]);
     assert_eq!(&top_down[16..20], &[255, 128, 0, 255]);
+}
+
+/// The formats without alpha (RGB, BGR, RGB_565) get a framebuffer without alpha bits, and
+/// RGB_565 stores each colour rounded to 5/6/5 bits. The expected values are what Mesa's
+/// libOSMesa 8 gave for the same calls (a clear to (0.06, 0.5, 0.1, 0.3), then a quad over the
+/// left half blended with ONE_MINUS_DST_ALPHA, DST_ALPHA; measured with a C program): without
+/// alpha the destination alpha reads 1, so the quad leaves the cleared colour; with alpha it
+/// blends. (Mesa's libOSMesa 8 refuses BGR with UNSIGNED_BYTE; fixedgl takes it.)
+#[test]
+fn osmesa_formats_without_alpha_have_no_alpha_bits() {
+    let run = |format: u32, ty: u32, bpp: usize| {
+        let mut buf = vec![0xABu8; 4 * 4 * bpp];
+        let ctx = OSMesaCreateContextExt(format, 24, 8, 0, null_mut());
+        assert!(!ctx.is_null());
+        assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), ty, 4, 4), 1);
+        let (mut bits, mut px) = ([0i32; 4], [0u8; 4]);
+        // SAFETY: a context is current; room for one value each and one pixel.
+        unsafe {
+            for (b, pname) in
+                bits.iter_mut()
+                    .zip([gl::RED_BITS, gl::GREEN_BITS, gl::BLUE_BITS, gl::ALPHA_BITS])
+            {
+                glGetIntegerv(pname, b);
+            }
+            glClearColor(0.06, 0.5, 0.1, 0.3);
+            glClear(gl::COLOR_BUFFER_BIT);
+            glEnable(gl::BLEND);
+            glBlendFunc(gl::ONE_MINUS_DST_ALPHA, gl::DST_ALPHA);
+            glColor4f(1.0, 0.2, 0.7, 0.5);
+            glBegin(gl::QUADS);
+            glVertex2f(-1.0, -1.0);
+            glVertex2f(0.0, -1.0);
+            glVertex2f(0.0, 1.0);
+            glVertex2f(-1.0, 1.0);
+            glEnd();
+            glFinish();
+            glReadPixels(
+                0,
+                0,
+                1,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                px.as_mut_ptr().cast(),
+            );
+        }
+        OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0);
+        OSMesaDestroyContext(ctx);
+        (bits[3], px, buf)
+    };
+    let (alpha, px, buf) = run(gl::RGBA, gl::UNSIGNED_BYTE, 4);
+    assert_eq!((alpha, px), (8, [183, 74, 133, 113]));
+    assert_eq!(&buf[..4], &[183, 74, 133, 113]);
+    assert_eq!(&buf[12..16], &[15, 128, 26, 76]);
+    let (alpha, px, buf) = run(gl::RGB, gl::UNSIGNED_BYTE, 3);
+    assert_eq!((alpha, px), (0, [15, 128, 26, 255]));
+    assert_eq!(&buf[..12], &[15, 128, 26].repeat(4)[..]);
+    let (alpha, px, buf) = run(0x4, gl::UNSIGNED_BYTE, 3);
+    assert_eq!((alpha, px), (0, [15, 128, 26, 255]), "BGR");
+    assert_eq!(&buf[..6], &[26, 128, 15, 26, 128, 15]);
+    // RGB_565: red 2, green 32, blue 3 (round(0.06·31), round(0.5·63), round(0.1·31)) in a
+    // native-endian u16, every pixel. (Mesa also renders in 5/6/5 bits and reports RED_BITS 5,
+    // GREEN_BITS 6, BLUE_BITS 5, and ReadPixels gives 16, 130, 24; fixedgl renders at 8 bits,
+    // docs/conformance.md §4.2.)
+    let (alpha, _, buf) = run(0x5, gl::UNSIGNED_SHORT_5_6_5, 2);
+    assert_eq!(alpha, 0);
+    let want = ((2u16 << 11) | (32 << 5) | 3).to_ne_bytes();
+    for p in buf.chunks_exact(2) {
+        assert_eq!(p, want);
+    }
 }
 
 #[test]

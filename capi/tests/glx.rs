@@ -19,6 +19,8 @@ use xsupport::{xlib, Connection, Image, Xvfb};
 const GLX_RGBA: c_int = 4;
 const GLX_DOUBLEBUFFER: c_int = 5;
 const GLX_RED_SIZE: c_int = 8;
+const GLX_ALPHA_SIZE: c_int = 11;
+const GLX_BUFFER_SIZE: c_int = 2;
 const GLX_DEPTH_SIZE: c_int = 12;
 const GLX_STENCIL_SIZE: c_int = 13;
 const GLX_ACCUM_RED_SIZE: c_int = 14;
@@ -237,16 +239,26 @@ fn queries_configs_and_visuals() {
     }
     assert!(!glXGetClientString(dpy(&c), GLX_EXTENSIONS).is_null());
 
-    // All configs: two, single-buffered first.
+    // All configs: four, RGB8 before RGBA8 (the smaller GLX_BUFFER_SIZE), single-buffered
+    // first within each.
     let mut n = 0;
     // SAFETY: a count.
     let list = unsafe { glXGetFBConfigs(dpy(&c), 0, &mut n) };
-    assert_eq!(n, 2);
+    assert_eq!(n, 4);
     xfree(list);
     let any = choose_configs(&c, &[GLX_DOUBLEBUFFER, GLX_DONT_CARE, 0]);
-    assert_eq!(any.len(), 2);
-    assert_eq!(attrib(&c, any[0], GLX_DOUBLEBUFFER), 0);
-    assert_eq!(attrib(&c, any[1], GLX_DOUBLEBUFFER), 1);
+    assert_eq!(any.len(), 4);
+    let order: Vec<_> = any
+        .iter()
+        .map(|&k| {
+            (
+                attrib(&c, k, GLX_ALPHA_SIZE),
+                attrib(&c, k, GLX_BUFFER_SIZE),
+                attrib(&c, k, GLX_DOUBLEBUFFER),
+            )
+        })
+        .collect();
+    assert_eq!(order, [(0, 24, 0), (0, 24, 1), (8, 32, 0), (8, 32, 1)]);
     // What freeglut 3 asks for GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH.
     let glut = choose_configs(
         &c,
@@ -264,7 +276,10 @@ fn queries_configs_and_visuals() {
             0,
         ],
     );
-    assert_eq!(glut.len(), 1);
+    // The RGB8 one first: GLUT_RGB does not ask for alpha, and gets none, as from Mesa.
+    assert_eq!(glut.len(), 2);
+    assert_eq!(attrib(&c, glut[0], GLX_ALPHA_SIZE), 0);
+    assert_eq!(attrib(&c, glut[1], GLX_ALPHA_SIZE), 8);
     let cfg = glut[0];
     for (a, want) in [
         (GLX_DEPTH_SIZE, 24),
@@ -281,7 +296,7 @@ fn queries_configs_and_visuals() {
     assert_eq!(attrib(&c, cfg, GLX_DRAWABLE_TYPE) & GLX_PIXMAP_BIT, 0);
     // Every config has llvmpipe's 16-bit accumulation buffer.
     assert_eq!(attrib(&c, cfg, GLX_ACCUM_RED_SIZE), 16);
-    assert_eq!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 16, 0]).len(), 2);
+    assert_eq!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 16, 0]).len(), 4);
     // What fixedgl does not have: no config; an attribute GLX does not define: none either.
     assert!(choose_configs(&c, &[GLX_ACCUM_RED_SIZE, 32, 0]).is_empty());
     assert!(choose_configs(&c, &[0x7777, 1, 0]).is_empty());
@@ -455,7 +470,7 @@ fn pixmaps_and_pbuffers() {
     };
     let gl = gl();
     let single = choose_configs(&c, &[GLX_DRAWABLE_TYPE, GLX_PIXMAP_BIT, 0]);
-    assert_eq!(single.len(), 1);
+    assert_eq!(single.len(), 2, "RGB8 and RGBA8, single-buffered");
     let x = xlib();
     // SAFETY: an open display.
     let pixmap = unsafe { (x.XCreatePixmap)(c.0, (x.XDefaultRootWindow)(c.0), 48, 40, 24) };
@@ -518,6 +533,98 @@ fn pixmaps_and_pbuffers() {
     glXDestroyContext(dpy(&c), ctx2);
     // SAFETY: the pixmap this test made.
     unsafe { (x.XFreePixmap)(c.0, pixmap) };
+}
+
+/// RGB8 configs and visuals (GLX_ALPHA_SIZE 0) make contexts without alpha bits: ALPHA_BITS 0,
+/// alpha writes dropped and the destination alpha reading 1 (GL 2.1 §4.1.8, §4.3.2); asking
+/// for alpha (GLX_ALPHA_SIZE 1 or 8) gets RGBA8. Drawn into a pbuffer and read back.
+#[test]
+fn configs_and_visuals_without_alpha() {
+    let Some((_x, c, _held)) = server() else {
+        return;
+    };
+    let gl = gl();
+    macro_rules! f {
+        ($name:literal: $t:ty) => {{
+            let p = proc($name);
+            assert!(!p.is_null(), "{} is NULL", $name);
+            // SAFETY: the address of the GL command of that name and C signature.
+            unsafe { std::mem::transmute::<*const c_void, $t>(p) }
+        }};
+    }
+    let enable = f!("glEnable": extern "C" fn(u32));
+    let blend_func = f!("glBlendFunc": extern "C" fn(u32, u32));
+    let color4f = f!("glColor4f": extern "C" fn(f32, f32, f32, f32));
+    let rectf = f!("glRectf": extern "C" fn(f32, f32, f32, f32));
+    const GL_ALPHA_BITS: u32 = 0x0D55;
+    const GL_RGBA: u32 = 0x1908;
+    const GL_BLEND: u32 = 0x0BE2;
+    const GL_DST_ALPHA: u32 = 0x0304;
+    const GL_ONE_MINUS_DST_ALPHA: u32 = 0x0305;
+
+    // GLX 1.2: a visual without GLX_ALPHA_SIZE has none; GLX_ALPHA_SIZE 1 finds 8 bits.
+    for (attribs, want) in [
+        (&[GLX_RGBA, GLX_DOUBLEBUFFER, 0][..], 0),
+        (&[GLX_RGBA, GLX_ALPHA_SIZE, 0, 0][..], 0),
+        (&[GLX_RGBA, GLX_ALPHA_SIZE, 1, 0][..], 8),
+        (&[GLX_RGBA, GLX_DOUBLEBUFFER, GLX_ALPHA_SIZE, 8, 0][..], 8),
+    ] {
+        let vis = choose_visual(&c, attribs);
+        assert!(!vis.is_null());
+        let mut a = -1;
+        // SAFETY: a visual GLX handed out, one value.
+        assert_eq!(
+            unsafe { glXGetConfig(dpy(&c), vis, GLX_ALPHA_SIZE, &mut a) },
+            0
+        );
+        assert_eq!(a, want, "{attribs:?}");
+        xfree(vis);
+    }
+    assert!(choose_configs(&c, &[GLX_ALPHA_SIZE, 9, 0]).is_empty());
+
+    // Per config: ALPHA_BITS, then a clear to alpha 0.3 and a rectangle blended with
+    // (ONE_MINUS_DST_ALPHA, DST_ALPHA) over the left half, read back as RGBA.
+    for (alpha_size, bits, left, right) in [
+        // No alpha: the destination alpha is 1, the rectangle leaves the clear colour.
+        (0, 0, [15, 128, 26, 255], [15, 128, 26, 255]),
+        // RGBA8: 0.7·(1, 0.2, 0.7, 0.5) + 0.3·(0.06, 0.5, 0.1, 0.3), as llvmpipe and Mesa's
+        // OSMesa blend it.
+        (8, 8, [183, 74, 133, 113], [15, 128, 26, 76]),
+    ] {
+        let cfg = choose_configs(&c, &[GLX_ALPHA_SIZE, alpha_size, GLX_DOUBLEBUFFER, 1, 0])[0];
+        assert_eq!(attrib(&c, cfg, GLX_ALPHA_SIZE), alpha_size);
+        let attrs = [GLX_PBUFFER_WIDTH, 8, GLX_PBUFFER_HEIGHT, 8, 0];
+        // SAFETY: a None-terminated list.
+        let pbuffer = unsafe { glXCreatePbuffer(dpy(&c), cfg, attrs.as_ptr()) };
+        assert_ne!(pbuffer, 0);
+        let ctx = glXCreateNewContext(dpy(&c), cfg, GLX_RGBA_TYPE, null_mut(), 1);
+        assert_eq!(glXMakeContextCurrent(dpy(&c), pbuffer, pbuffer, ctx), 1);
+        assert_eq!(gl.integer(GL_ALPHA_BITS), bits);
+        (gl.clear_color)(0.06, 0.5, 0.1, 0.3);
+        (gl.clear)(GL_COLOR_BUFFER_BIT);
+        enable(GL_BLEND);
+        blend_func(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA);
+        color4f(1.0, 0.2, 0.7, 0.5);
+        rectf(-1.0, -1.0, 0.0, 1.0);
+        let mut px = [0u8; 8 * 4];
+        // SAFETY: room for one row of 8 RGBA pixels.
+        unsafe {
+            (gl.read_pixels)(
+                0,
+                0,
+                8,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                px.as_mut_ptr().cast(),
+            )
+        };
+        assert_eq!(&px[..4], &left, "ALPHA_SIZE {alpha_size}: left");
+        assert_eq!(&px[28..], &right, "ALPHA_SIZE {alpha_size}: right");
+        assert_eq!(glXMakeCurrent(dpy(&c), 0, null_mut()), 1);
+        glXDestroyPbuffer(dpy(&c), pbuffer);
+        glXDestroyContext(dpy(&c), ctx);
+    }
 }
 
 /// GLX_ARB_create_context: OpenGL up to 1.5 (any profile bit below 3.2) makes a context; 2.1,

@@ -40,6 +40,7 @@ pub const EXTENSIONS: &str = concat!(
     "GL_ARB_multitexture ",         // ActiveTexture, MultiTexCoord (GL 1.3)
     "GL_ARB_shadow ",               // TEXTURE_COMPARE_MODE (GL 1.4)
     "GL_ARB_texture_env_combine ",  // TexEnv COMBINE (GL 1.3)
+    "GL_ARB_texture_env_crossbar ", // COMBINE sources TEXTUREn (GL 1.4)
     "GL_ARB_vertex_buffer_object ", // buffer objects, MapBuffer (GL 1.5)
     "GL_ARB_window_pos ",           // WindowPos (GL 1.4)
     "GL_EXT_abgr ",                 // the ABGR_EXT pixel format (every pixel command)

@@ -18,7 +18,7 @@ use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::lanes::LANES;
 use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG, MAXV};
-use super::texture::Sampler;
+use super::texture::{Sampler, UnitTexels};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
@@ -59,6 +59,14 @@ pub struct FragCtx<'a> {
     /// offset of its coordinates among the varyings. Each takes the previous one's result
     /// (§3.8.15); a fragment stops at the first `None`, so a flush pays for the units it uses.
     pub tex: [Option<(&'a Sampler, usize)>; MAX_TEXTURE_UNITS],
+    /// Some unit's environment reads another unit's texel (a COMBINE source TEXTUREn,
+    /// [`crossbar`]): every unit samples before the first environment runs.
+    pub crossbar: bool,
+}
+
+/// `FragCtx::crossbar` of the units `tex`.
+pub fn crossbar(tex: &[Option<(&Sampler, usize)>]) -> bool {
+    tex.iter().flatten().any(|(s, _)| s.crossbar())
 }
 
 /// `FragCtx::tex` from one optional sampler per unit and the varying layout (see there).
@@ -187,14 +195,100 @@ impl FragCtx<'_> {
         // in `full`)
         // §3.8.15: each enabled unit takes the previous unit's result as Cf.
         let prim = c;
-        for (t, l) in self.tex.iter().zip(lambda) {
-            let Some((tx, o)) = *t else { break };
-            c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+        if self.crossbar {
+            // A COMBINE source TEXTUREn (GL 1.4 §3.8.13) reads unit n's texel: every unit
+            // samples first, then the environments run in unit order.
+            let mut raw = [[0.0f32; 4]; MAX_TEXTURE_UNITS];
+            let mut units: UnitTexels = [None; MAX_TEXTURE_UNITS];
+            for ((t, l), r) in self.tex.iter().zip(lambda).zip(&mut raw) {
+                let Some((tx, o)) = *t else { break };
+                *r = tx.texel([g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+                if let Some(slot) = units.get_mut(tx.unit()) {
+                    *slot = Some(tx.combine_texel(*r));
+                }
+            }
+            for (t, r) in self.tex.iter().zip(raw) {
+                let Some((tx, _)) = *t else { break };
+                c = tx.shade_texel(c, prim, r, &units);
+            }
+        } else {
+            for (t, l) in self.tex.iter().zip(lambda) {
+                let Some((tx, o)) = *t else { break };
+                c = tx.shade(c, prim, [g(o), g(o + 1), g(o + 2), g(o + 3)], l);
+            }
         }
         if let (true, Some(s)) = (self.color_sum, s) {
             c += s.extend(0.0);
         }
         c
+    }
+
+    /// Can `color_lanes` texture on lanes: no PHONG_WIN and every unit's sampler
+    /// [`Sampler::lanes_ok`]. Chosen once per span.
+    #[inline]
+    fn tex_lanes_ok(&self, p: &RPrim) -> bool {
+        p.flags & F_PHONG == 0 && self.tex.iter().flatten().all(|(t, _)| t.lanes_ok())
+    }
+
+    /// The colours (channel-major) of the lanes of `m` whose varyings are `vs` (lane-major
+    /// per varying, `vs.len()` varyings) and λ `lam` (per unit, per lane): what `color` gives
+    /// for each lane's fragment, bit for bit. With `on_lanes` (`tex_lanes_ok`) every unit's
+    /// texels are filtered for the eight lanes first (`Sampler::texels_lanes`), then each
+    /// environment applies in unit order (§3.8.15) and the colour sum (§3.9) follows;
+    /// otherwise each lane takes `color`. Lanes outside `m` hold unspecified values.
+    #[inline(always)]
+    fn color_lanes(
+        &self,
+        p: &RPrim,
+        vs: &[[f32; LANES]],
+        m: u8,
+        lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
+        on_lanes: bool,
+    ) -> [[f32; LANES]; 4] {
+        let mut col = [[0.0f32; LANES]; 4];
+        if !on_lanes {
+            let mut v = [0.0f32; MAXV];
+            let nv = vs.len().min(MAXV);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                for (vj, lj) in v.iter_mut().zip(vs) {
+                    *vj = lj[l];
+                }
+                let c = self.color(p, &v[..nv], lam.map(|u| u[l]));
+                for (ch, x) in col.iter_mut().zip(c.to_array()) {
+                    ch[l] = x;
+                }
+            }
+            return col;
+        }
+        let g = |k: usize| vs.get(k).copied().unwrap_or([0.0; LANES]);
+        let (r, gr, b, a) = (g(0), g(1), g(2), g(3));
+        let mut c: [Vec4; LANES] = std::array::from_fn(|l| Vec4::new(r[l], gr[l], b[l], a[l]));
+        // Every unit's texels first, then the environments in unit order.
+        let mut texels = [[[0.0f32; 4]; LANES]; MAX_TEXTURE_UNITS];
+        for ((tl, t), lu) in texels.iter_mut().zip(&self.tex).zip(lam) {
+            let Some((tx, o)) = *t else { break };
+            let (cs, ct, cr, cq) = (g(o), g(o + 1), g(o + 2), g(o + 3));
+            *tl = tx.texels_lanes([&cs, &ct, &cr, &cq], lu, m);
+        }
+        for (tl, t) in texels.iter().zip(&self.tex) {
+            let Some((tx, _)) = *t else { break };
+            tx.env_lanes(&mut c, tl, m);
+        }
+        if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
+            let (sr, sg, sb) = (g(o), g(o + 1), g(o + 2));
+            for (l, c) in c.iter_mut().enumerate() {
+                *c += Vec3::new(sr[l], sg[l], sb[l]).extend(0.0);
+            }
+        }
+        for (l, c) in c.iter().enumerate() {
+            for (ch, x) in col.iter_mut().zip(c.to_array()) {
+                ch[l] = x;
+            }
+        }
+        col
     }
 
     /// Writes colour `c` at tile index `i` through ColorMask (§4.2.2).
@@ -446,9 +540,9 @@ impl FragCtx<'_> {
         // The general path (textured spans among them), eight fragments at a time: their
         // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
         // colour, stored on lanes when one colour buffer is written whole.
-        let mut v = [0.0f32; MAXV];
-        let nv = nv.min(v.len());
+        let nv = nv.min(MAXV);
         let mut vl = [[0.0f32; LANES]; MAXV];
+        let on_lanes = self.tex_lanes_ok(p);
         let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
         // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
         // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
@@ -474,28 +568,15 @@ impl FragCtx<'_> {
                     }
                 }
             }
-            let mut col = [[0.0f32; LANES]; 4];
-            for l in 0..LANES {
-                if m & (1 << l) == 0 {
-                    continue;
-                }
-                for (vj, lj) in v.iter_mut().zip(vs.iter()) {
-                    *vj = lj[l];
-                }
-                let k = g + l;
-                let lambda = lam.map(|u| u[l]);
-                let c = self.color(p, &v[..nv], lambda);
-                if whole {
-                    for (ch, x) in col.iter_mut().zip(c.to_array()) {
-                        ch[l] = x;
-                    }
-                } else {
-                    self.write(bufs, base + k, c);
-                }
-            }
+            let col = self.color_lanes(p, vs, m as u8, &lam, on_lanes);
             if whole {
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
                     super::lanes::store_rgba(dst, m, &col);
+                }
+            } else {
+                for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
+                    let c = Vec4::new(col[0][l], col[1][l], col[2][l], col[3][l]);
+                    self.write(bufs, base + g + l, c);
                 }
             }
             g += LANES;
@@ -698,7 +779,10 @@ impl FragCtx<'_> {
         let depth = self
             .depth_test
             .then_some((self.depth_func, self.depth_mask));
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        let on_lanes = !plain && self.tex_lanes_ok(p);
+        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        let qy = ((y & !1) - p.bbox[1]) as f32;
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut v = [[0.0f32; LANES]; super::setup::MAXV];
         let mut c = 0;
         while c < n {
@@ -730,24 +814,18 @@ impl FragCtx<'_> {
                     }
                 }
             } else {
-                let mut vv = [0.0f32; super::setup::MAXV];
-                for l in 0..LANES {
-                    if m & (1 << l) == 0 {
-                        continue;
-                    }
-                    for (d, s) in vv.iter_mut().zip(&v).take(nv) {
-                        *d = s[l];
-                    }
-                    let qx = (x0 + (c + l) as i32) & !1;
-                    if qx != quad_x {
-                        quad_x = qx;
-                        lambda = self.quad_lambda(planes, qx, y, ox, p.bbox[1]);
-                    }
-                    let cc = self.color(p, &vv[..nv], lambda).to_array();
-                    for (ch, cc) in col.iter_mut().zip(cc) {
-                        ch[l] = cc;
+                // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
+                if lod {
+                    let qx: [f32; LANES] =
+                        std::array::from_fn(|l| (((x0 + (c + l) as i32) & !1) - ox) as f32);
+                    for (lu, t) in lam.iter_mut().zip(&self.tex) {
+                        let Some((tx, to)) = *t else { break };
+                        if tx.needs_lambda() {
+                            *lu = tx.quad_lambda_lanes(planes, to, qx, qy);
+                        }
                     }
                 }
+                col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
             }
             let [r, g, b, a] = col.map(ol::clamp01);
             let mut rgb = [r, g, b];
@@ -978,6 +1056,7 @@ mod tests {
                 stipple,
                 ops: Some(ops),
                 tex: [None; MAX_TEXTURE_UNITS],
+                crossbar: false,
             };
             let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
             let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];

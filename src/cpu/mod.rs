@@ -552,6 +552,7 @@ impl Core {
                 .polygon_stipple
                 .then(|| fragment::stipple_rows(state)),
             ops: fragops::Ops::new(state),
+            crossbar: fragment::crossbar(&tex),
             tex,
         };
         // The line stipple counter runs from segment to segment in submission order: one

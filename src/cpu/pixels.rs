@@ -23,7 +23,7 @@ use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::{
     depth_unorm, scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
 };
-use super::texture::Sampler;
+use super::texture::{Sampler, UnitTexels};
 use super::Renderer;
 use crate::state::{State, MAX_TEXTURE_UNITS};
 
@@ -135,9 +135,17 @@ impl Shared<'_> {
     fn shade(&self, c: Vec4) -> Vec4 {
         let prim = c;
         let mut c = c;
-        for (tx, coords) in self.tex.iter().flatten() {
-            // The coordinates are the same for every fragment: no derivatives, λ = 0.
-            c = tx.shade(c, prim, *coords, 0.0);
+        // The coordinates are the same for every fragment: no derivatives, λ = 0. Every unit
+        // samples first: a COMBINE source TEXTUREn reads unit n's texel (GL 1.4 §3.8.13).
+        let raw: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] =
+            std::array::from_fn(|u| self.tex[u].map(|(tx, coords)| tx.texel(coords, 0.0)));
+        let units: UnitTexels = std::array::from_fn(|u| {
+            self.tex[u]
+                .zip(raw[u])
+                .map(|((tx, _), r)| tx.combine_texel(r))
+        });
+        for ((tx, _), r) in self.tex.iter().zip(raw).filter_map(|(t, r)| t.zip(r)) {
+            c = tx.shade_texel(c, prim, r, &units);
         }
         if let Some(s) = self.secondary {
             c += s.extend(0.0);
@@ -212,6 +220,7 @@ impl Renderer {
             stipple: None,
             ops: super::fragops::Ops::new(state),
             tex: [None; MAX_TEXTURE_UNITS],
+            crossbar: false,
         };
         // The colour of a fragment never changes on its way when nothing but the colour write
         // applies: the groups go straight to the buffer.

@@ -22,8 +22,11 @@ use glam::Vec4;
 
 use super::lanes::{recip_lanes, LANES};
 use crate::gl;
-use crate::state::State;
+use crate::state::{State, MAX_TEXTURE_UNITS};
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
+
+/// Eight fragments' texels, lane-major (each lane's RGBA as `shade`'s filters return it).
+pub type TexelLanes = [[f32; 4]; LANES];
 
 /// Which sampling routine a flush uses (chosen once in [`Sampler::new`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,10 +39,20 @@ enum Route {
     Lod,
 }
 
+/// Each unit's filtered texel as a COMBINE source TEXTUREn reads it (ARB_texture_env_crossbar,
+/// GL 1.4 §3.8.13), by unit number: `None` for a unit that is disabled (no target enabled, or
+/// none complete), which reads as (0, 0, 0, 0) as in llvmpipe (see [`Sampler::shade_texel`]).
+pub type UnitTexels = [Option<Vec4>; MAX_TEXTURE_UNITS];
+
 /// One texture unit's sampling and environment state for a flush.
 #[derive(Clone, Debug)]
 pub struct Sampler {
     obj: Arc<TexObject>,
+    /// The texture unit (0 for TEXTURE0).
+    unit: usize,
+    /// The environment is COMBINE with a TEXTUREn source (the crossbar): the fragment stage
+    /// must sample every unit before this unit's environment runs.
+    crossbar: bool,
     /// Base internal format of the base level (DEPTH_COMPONENT read through `depth_mode`).
     base: u32,
     base_level: i32,
@@ -90,7 +103,15 @@ impl Sampler {
         } else {
             0.0
         };
+        let crossbar = u.env_mode == gl::COMBINE
+            && u.combine
+                .src_rgb
+                .iter()
+                .chain(&u.combine.src_alpha)
+                .any(|&s| unit_of_source(s).is_some());
         Some(Sampler {
+            unit,
+            crossbar,
             base: b.base,
             base_level: obj.base_level,
             last: if mipmapped {
@@ -251,11 +272,33 @@ impl Sampler {
         std::array::from_fn(|l| 0.5 * fast_log2(lx[l].max(ly[l])))
     }
 
+    /// The texture unit this sampler belongs to.
+    #[inline]
+    pub fn unit(&self) -> usize {
+        self.unit
+    }
+
+    /// Is the environment COMBINE with a TEXTUREn source? Then every unit's texel must be
+    /// known before it runs ([`Sampler::shade_texel`]).
+    #[inline]
+    pub fn crossbar(&self) -> bool {
+        self.crossbar
+    }
+
     /// The texture-environment result for fragment colour `cf` (the previous unit's result),
     /// primary colour `prim` (COMBINE's PRIMARY_COLOR), texture coordinates `(s, t, r, q)`
-    /// (already perspective-correct) and level of detail `lambda` before bias.
+    /// (already perspective-correct) and level of detail `lambda` before bias. For an
+    /// environment without TEXTUREn sources (`!self.crossbar()`).
     #[inline]
     pub fn shade(&self, cf: Vec4, prim: Vec4, coords: [f32; 4], lambda: f32) -> Vec4 {
+        let texel = self.texel(coords, lambda);
+        self.shade_texel(cf, prim, texel, &[])
+    }
+
+    /// This unit's filtered texel (internal components) at texture coordinates `(s, t, r, q)`
+    /// (already perspective-correct) and level of detail `lambda` before bias.
+    #[inline]
+    pub fn texel(&self, coords: [f32; 4], lambda: f32) -> [f32; 4] {
         let [s, t, r, q] = coords;
         let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
         let (s, t, r) = (s * inv, t * inv, r * inv);
@@ -268,21 +311,305 @@ impl Sampler {
         };
         // The route was chosen once for the flush: without mipmaps and with equal filters, λ
         // cannot matter and the base level's filter is called directly.
-        let texel = match self.route {
+        match self.route {
             Route::Nearest => self.nearest(face, self.base_level, s, t, r),
             Route::Linear => self.linear(face, self.base_level, s, t, r),
             Route::Lod => self.sample_face(face, s, t, r, lambda),
-        };
-        if self.env == gl::COMBINE {
-            return self.combine(cf, prim, texel);
         }
-        self.env(cf, texel)
     }
 
-    /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
-    /// primary colour `prim` and this unit's filtered texel. A TEXTUREn source naming another
-    /// unit reads this unit's texel (the crossbar is not supported).
-    fn combine(&self, cf: Vec4, prim: Vec4, texel: [f32; 4]) -> Vec4 {
+    /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes`] stand for [`Sampler::shade`]:
+    /// a 2D texture (not a cube map; depth textures and the depth comparison included), an
+    /// environment other than COMBINE. Chosen once per span.
+    #[inline]
+    pub fn lanes_ok(&self) -> bool {
+        self.dims == 2 && !self.cube && self.env != gl::COMBINE
+    }
+
+    /// The filtered texels of eight fragments (the texel `shade` filters for each, lane-major)
+    /// from their coordinates `coords` (s, t, r, q lanes, perspective-correct) and λ before
+    /// bias; lanes outside `m` are left zero. Only for a sampler with [`Sampler::lanes_ok`].
+    /// The wrap modes and filters are chosen once for the group, the levels once per group of
+    /// lanes that share one; each lane computes `shade`'s expressions in the same order (the
+    /// division by q as `divps`), so its texel has the scalar texel's bits.
+    #[inline]
+    pub fn texels_lanes(
+        &self,
+        coords: [&[f32; LANES]; 4],
+        lambda: &[f32; LANES],
+        m: u8,
+    ) -> TexelLanes {
+        let [s, t, r, q] = coords;
+        let rq = recip_lanes(*q);
+        let inv: [f32; LANES] = std::array::from_fn(|l| if q[l] != 0.0 { rq[l] } else { 0.0 });
+        let s: [f32; LANES] = std::array::from_fn(|l| s[l] * inv[l]);
+        let t: [f32; LANES] = std::array::from_fn(|l| t[l] * inv[l]);
+        let r: [f32; LANES] = std::array::from_fn(|l| r[l] * inv[l]);
+        let mut out = [[0.0f32; 4]; LANES];
+        match self.route {
+            Route::Nearest => {
+                self.filter_lanes(self.base_level, gl::NEAREST, &s, &t, &r, m, &mut out)
+            }
+            Route::Linear => {
+                self.filter_lanes(self.base_level, gl::LINEAR, &s, &t, &r, m, &mut out)
+            }
+            Route::Lod => self.lod_lanes(&s, &t, &r, lambda, m, &mut out),
+        }
+        out
+    }
+
+    /// `sample_face` for the lanes of `m` (face 0, 2D): each lane's level(s), filter and
+    /// weight as `sample_face` chooses them, then one filter call per group of lanes sharing a
+    /// level and filter.
+    #[inline]
+    fn lod_lanes(
+        &self,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        lambda: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let lin = |f: u32| {
+            if matches!(
+                f,
+                gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
+            ) {
+                gl::LINEAR
+            } else {
+                gl::NEAREST
+            }
+        };
+        let span = (self.last - self.base_level) as f32;
+        // Per lane: the first level and its filter, the second level (trilinear) and its weight.
+        let mut la = [self.base_level; LANES];
+        let mut fa = [self.mag; LANES];
+        let mut second = 0u8;
+        let mut f = [0.0f32; LANES];
+        for l in 0..LANES {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            // The same steps as `sample_face`.
+            let lambda = lambda[l] + self.bias;
+            let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+            let lambda = lambda.min(self.max_lod).max(self.min_lod);
+            if lambda <= self.c {
+                continue;
+            }
+            match self.min {
+                gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                    let d = if lambda <= 0.5 {
+                        0.0
+                    } else {
+                        ((lambda + 0.5).ceil() - 1.0).min(span)
+                    };
+                    la[l] = self.base_level + d as i32;
+                    fa[l] = lin(self.min);
+                }
+                gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                    fa[l] = lin(self.min);
+                    if lambda >= span {
+                        la[l] = self.last;
+                        continue;
+                    }
+                    let d1 = lambda.floor();
+                    f[l] = lambda - d1;
+                    la[l] = self.base_level + d1 as i32;
+                    if f[l] != 0.0 {
+                        second |= 1 << l;
+                    }
+                }
+                min => fa[l] = min,
+            }
+        }
+        self.grouped_lanes(&la, &fa, s, t, r, m, out);
+        if second == 0 {
+            return;
+        }
+        let lb: [i32; LANES] = std::array::from_fn(|l| la[l].saturating_add(1));
+        let mut b = [[0.0f32; 4]; LANES];
+        self.grouped_lanes(&lb, &fa, s, t, r, second, &mut b);
+        for l in 0..LANES {
+            if second & (1 << l) != 0 {
+                let (a, b, f) = (out[l], b[l], f[l]);
+                out[l] = std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f);
+            }
+        }
+    }
+
+    /// `filter` for the lanes of `m`, lane l on level `lv[l]` with filter `fl[l]`: one
+    /// [`Sampler::filter_lanes`] per distinct (level, filter) among the lanes.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn grouped_lanes(
+        &self,
+        lv: &[i32; LANES],
+        fl: &[u32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let mut rest = m;
+        while rest != 0 {
+            let first = rest.trailing_zeros() as usize;
+            let key = (lv[first], fl[first]);
+            let mut sub = 0u8;
+            for l in first..LANES {
+                if rest & (1 << l) != 0 && (lv[l], fl[l]) == key {
+                    sub |= 1 << l;
+                }
+            }
+            self.filter_lanes(key.0, key.1, s, t, r, sub, out);
+            rest &= !sub;
+        }
+    }
+
+    /// NEAREST or LINEAR on level `level` of a 2D texture for the lanes of `m`: `nearest` and
+    /// `linear` (dims 2) with the wrap mode chosen once; each texel through `fetch`'s depth
+    /// comparison against the lane's `r` when comparison is on.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn filter_lanes(
+        &self,
+        level: i32,
+        filter: u32,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let Some(lv) = self.obj.face_level(0, level) else {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = [0.0; 4];
+                }
+            }
+            return;
+        };
+        match self.compare {
+            None => self.filter_on(lv, filter, s, t, m, out, |_, t| t),
+            Some(func) => self.filter_on(lv, filter, s, t, m, out, |l, t| {
+                // `fetch`'s comparison.
+                let d = t[0];
+                let r = r[l].clamp(0.0, 1.0);
+                let pass = match func {
+                    gl::LEQUAL => r <= d,
+                    gl::GEQUAL => r >= d,
+                    gl::LESS => r < d,
+                    gl::GREATER => r > d,
+                    gl::EQUAL => r == d,
+                    gl::NOTEQUAL => r != d,
+                    gl::ALWAYS => true,
+                    _ => false,
+                };
+                [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
+            }),
+        }
+    }
+
+    /// `filter_lanes` on level `lv`, `cmp(l, texel)` giving what `fetch` makes of lane l's
+    /// texel (itself, or the comparison result).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn filter_on(
+        &self,
+        lv: &Level,
+        filter: u32,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+        cmp: impl Fn(usize, [f32; 4]) -> [f32; 4],
+    ) {
+        // `fetch`'s texel: the image's (`texel3` at k = 0 is `texel`) or the border colour.
+        let border = crate::texture::keep(self.base, self.border);
+        let texel = |l: usize, i: Option<i32>, j: Option<i32>| {
+            cmp(
+                l,
+                match (i, j) {
+                    (Some(i), Some(j)) => lv.texel(i, j),
+                    _ => border,
+                },
+            )
+        };
+        if filter == gl::NEAREST {
+            let i = wrap_nearest_lanes(self.wrap[0], s, lv.width);
+            let j = wrap_nearest_lanes(self.wrap[1], t, lv.height);
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = texel(l, i[l], j[l]);
+                }
+            }
+            return;
+        }
+        let (i0, i1, a) = wrap_linear_lanes(self.wrap[0], s, lv.width);
+        let (j0, j1, b) = wrap_linear_lanes(self.wrap[1], t, lv.height);
+        for (l, o) in out.iter_mut().enumerate() {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let (t00, t10) = (texel(l, i0[l], j0[l]), texel(l, i1[l], j0[l]));
+            let (t01, t11) = (texel(l, i0[l], j1[l]), texel(l, i1[l], j1[l]));
+            let (a, b) = (a[l], b[l]);
+            *o = std::array::from_fn(|c| {
+                (1.0 - a) * (1.0 - b) * t00[c]
+                    + a * (1.0 - b) * t10[c]
+                    + (1.0 - a) * b * t01[c]
+                    + a * b * t11[c]
+            });
+        }
+    }
+
+    /// Table 3.21 for the lanes of `m`: `env` of each lane's colour `cf[l]` and texel `t[l]`,
+    /// the (environment, base format) pair chosen once for the group. Only for a sampler with
+    /// [`Sampler::lanes_ok`] (not COMBINE). A depth texture reads as DEPTH_TEXTURE_MODE, as in
+    /// `env`.
+    #[inline]
+    pub fn env_lanes(&self, cf: &mut [Vec4; LANES], t: &TexelLanes, m: u8) {
+        if crate::texture::is_depth(self.base) {
+            let alpha = self.depth_mode == gl::ALPHA;
+            let base = if alpha { gl::ALPHA } else { self.depth_mode };
+            for l in 0..LANES {
+                if m & (1 << l) != 0 {
+                    let t = if alpha {
+                        [0.0, 0.0, 0.0, t[l][0]]
+                    } else {
+                        t[l]
+                    };
+                    cf[l] = env_of(self.env, base, self.env_color, cf[l], t);
+                }
+            }
+            return;
+        }
+        macro_rules! each {
+            ($e:expr, $b:expr) => {
+                for l in 0..LANES {
+                    if m & (1 << l) != 0 {
+                        cf[l] = env_of($e, $b, self.env_color, cf[l], t[l]);
+                    }
+                }
+            };
+        }
+        match (self.env, self.base) {
+            (gl::MODULATE, gl::RGBA) => each!(gl::MODULATE, gl::RGBA),
+            (gl::MODULATE, gl::RGB) => each!(gl::MODULATE, gl::RGB),
+            (gl::REPLACE, gl::RGBA) => each!(gl::REPLACE, gl::RGBA),
+            (gl::REPLACE, gl::RGB) => each!(gl::REPLACE, gl::RGB),
+            (gl::DECAL, gl::RGBA) => each!(gl::DECAL, gl::RGBA),
+            (e, b) => each!(e, b),
+        }
+    }
+
+    /// `texel` (from [`Sampler::texel`]) as COMBINE reads it (table 3.23's Cs and As): the
+    /// base internal format expanded to RGBA, a depth texture through DEPTH_TEXTURE_MODE. What
+    /// another unit's TEXTUREn source reads of this unit ([`UnitTexels`]).
+    #[inline]
+    pub fn combine_texel(&self, texel: [f32; 4]) -> Vec4 {
         let (base, t) = if crate::texture::is_depth(self.base) {
             match self.depth_mode {
                 gl::ALPHA => (gl::ALPHA, [0.0, 0.0, 0.0, texel[0]]),
@@ -291,13 +618,42 @@ impl Sampler {
         } else {
             (self.base, texel)
         };
-        let tex = Vec4::from_array(as_rgba(base, t));
+        Vec4::from_array(as_rgba(base, t))
+    }
+
+    /// The texture-environment result for fragment colour `cf`, primary colour `prim` and this
+    /// unit's filtered texel `texel` (from [`Sampler::texel`]); `units` holds every unit's
+    /// texel for COMBINE's TEXTUREn sources (only read when [`Sampler::crossbar`]).
+    #[inline]
+    pub fn shade_texel(
+        &self,
+        cf: Vec4,
+        prim: Vec4,
+        texel: [f32; 4],
+        units: &[Option<Vec4>],
+    ) -> Vec4 {
+        if self.env == gl::COMBINE {
+            return self.combine(cf, prim, self.combine_texel(texel), units);
+        }
+        self.env(cf, texel)
+    }
+
+    /// The COMBINE function (§3.8.13, tables 3.23 and 3.24) of the previous result `cf`, the
+    /// primary colour `prim`, this unit's texel `tex` (as [`Sampler::combine_texel`] gives it)
+    /// and, for a source TEXTUREn (ARB_texture_env_crossbar, core in GL 1.4), unit n's texel in
+    /// `units`. A disabled unit n, which the spec leaves undefined, reads (0, 0, 0, 0): Mesa's
+    /// fixed-function fragment program loads zero for it (measured on llvmpipe in
+    /// tests/it/crossbar_gl.rs).
+    fn combine(&self, cf: Vec4, prim: Vec4, tex: Vec4, units: &[Option<Vec4>]) -> Vec4 {
         let c = &self.combine;
         let src = |s: u32| match s {
             gl::CONSTANT => self.env_color,
             gl::PRIMARY_COLOR => prim,
             gl::PREVIOUS => cf,
-            _ => tex,
+            gl::TEXTURE => tex,
+            s => unit_of_source(s)
+                .and_then(|n| units.get(n).copied().flatten())
+                .unwrap_or(Vec4::ZERO),
         };
         let arg_rgb = |k: usize| {
             let v = src(c.src_rgb[k]);
@@ -544,48 +900,53 @@ impl Sampler {
         } else {
             (self.base, t)
         };
-        let ct = Vec4::new(t[0], t[1], t[2], 0.0);
-        let l = t[0];
-        let at = t[3];
-        let (cfr, af) = (cf.truncate().extend(0.0), cf.w);
-        let cc = self.env_color.truncate().extend(0.0);
-        let lum = Vec4::new(l, l, l, 0.0);
-        let (c, a) = match (self.env, base) {
-            (gl::REPLACE, gl::ALPHA) => (cfr, at),
-            (gl::REPLACE, gl::LUMINANCE) => (lum, af),
-            (gl::REPLACE, gl::LUMINANCE_ALPHA) => (lum, at),
-            (gl::REPLACE, gl::INTENSITY) => (lum, l),
-            (gl::REPLACE, gl::RGB) => (ct, af),
-            (gl::REPLACE, _) => (ct, at),
-            (gl::MODULATE, gl::ALPHA) => (cfr, af * at),
-            (gl::MODULATE, gl::LUMINANCE) => (cfr * l, af),
-            (gl::MODULATE, gl::LUMINANCE_ALPHA) => (cfr * l, af * at),
-            (gl::MODULATE, gl::INTENSITY) => (cfr * l, af * l),
-            (gl::MODULATE, gl::RGB) => (cfr * ct, af),
-            (gl::MODULATE, _) => (cfr * ct, af * at),
-            // DECAL is undefined for the one- and two-component formats: the fragment passes.
-            (gl::DECAL, gl::RGB) => (ct, af),
-            (gl::DECAL, gl::RGBA) => (cfr * (1.0 - at) + ct * at, af),
-            (gl::DECAL, _) => (cfr, af),
-            (gl::BLEND, gl::ALPHA) => (cfr, af * at),
-            (gl::BLEND, gl::LUMINANCE) => (cfr * (1.0 - l) + cc * l, af),
-            (gl::BLEND, gl::LUMINANCE_ALPHA) => (cfr * (1.0 - l) + cc * l, af * at),
-            (gl::BLEND, gl::INTENSITY) => (
-                cfr * (1.0 - l) + cc * l,
-                af * (1.0 - l) + self.env_color.w * l,
-            ),
-            (gl::BLEND, gl::RGB) => (cfr * (Vec4::ONE - ct) + cc * ct, af),
-            (gl::BLEND, _) => (cfr * (Vec4::ONE - ct) + cc * ct, af * at),
-            (gl::ADD, gl::ALPHA) => (cfr, af * at),
-            (gl::ADD, gl::LUMINANCE) => (cfr + lum, af),
-            (gl::ADD, gl::LUMINANCE_ALPHA) => (cfr + lum, af * at),
-            (gl::ADD, gl::INTENSITY) => (cfr + lum, af + l),
-            (gl::ADD, gl::RGB) => (cfr + ct, af),
-            (gl::ADD, _) => (cfr + ct, af * at),
-            _ => (cfr, af),
-        };
-        Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
+        env_of(self.env, base, self.env_color, cf, t)
     }
+}
+
+/// Table 3.21: texture function `env` of fragment colour `cf` and filtered texel `t` read as
+/// base format `base`, with TEXTURE_ENV_COLOR `env_color` (what [`Sampler::env`] and
+/// [`Sampler::env_lanes`] compute; inlined so that constant `env` and `base` fold the match).
+#[inline(always)]
+fn env_of(env: u32, base: u32, env_color: Vec4, cf: Vec4, t: [f32; 4]) -> Vec4 {
+    let ct = Vec4::new(t[0], t[1], t[2], 0.0);
+    let l = t[0];
+    let at = t[3];
+    let (cfr, af) = (cf.truncate().extend(0.0), cf.w);
+    let cc = env_color.truncate().extend(0.0);
+    let lum = Vec4::new(l, l, l, 0.0);
+    let (c, a) = match (env, base) {
+        (gl::REPLACE, gl::ALPHA) => (cfr, at),
+        (gl::REPLACE, gl::LUMINANCE) => (lum, af),
+        (gl::REPLACE, gl::LUMINANCE_ALPHA) => (lum, at),
+        (gl::REPLACE, gl::INTENSITY) => (lum, l),
+        (gl::REPLACE, gl::RGB) => (ct, af),
+        (gl::REPLACE, _) => (ct, at),
+        (gl::MODULATE, gl::ALPHA) => (cfr, af * at),
+        (gl::MODULATE, gl::LUMINANCE) => (cfr * l, af),
+        (gl::MODULATE, gl::LUMINANCE_ALPHA) => (cfr * l, af * at),
+        (gl::MODULATE, gl::INTENSITY) => (cfr * l, af * l),
+        (gl::MODULATE, gl::RGB) => (cfr * ct, af),
+        (gl::MODULATE, _) => (cfr * ct, af * at),
+        // DECAL is undefined for the one- and two-component formats: the fragment passes.
+        (gl::DECAL, gl::RGB) => (ct, af),
+        (gl::DECAL, gl::RGBA) => (cfr * (1.0 - at) + ct * at, af),
+        (gl::DECAL, _) => (cfr, af),
+        (gl::BLEND, gl::ALPHA) => (cfr, af * at),
+        (gl::BLEND, gl::LUMINANCE) => (cfr * (1.0 - l) + cc * l, af),
+        (gl::BLEND, gl::LUMINANCE_ALPHA) => (cfr * (1.0 - l) + cc * l, af * at),
+        (gl::BLEND, gl::INTENSITY) => (cfr * (1.0 - l) + cc * l, af * (1.0 - l) + env_color.w * l),
+        (gl::BLEND, gl::RGB) => (cfr * (Vec4::ONE - ct) + cc * ct, af),
+        (gl::BLEND, _) => (cfr * (Vec4::ONE - ct) + cc * ct, af * at),
+        (gl::ADD, gl::ALPHA) => (cfr, af * at),
+        (gl::ADD, gl::LUMINANCE) => (cfr + lum, af),
+        (gl::ADD, gl::LUMINANCE_ALPHA) => (cfr + lum, af * at),
+        (gl::ADD, gl::INTENSITY) => (cfr + lum, af + l),
+        (gl::ADD, gl::RGB) => (cfr + ct, af),
+        (gl::ADD, _) => (cfr + ct, af * at),
+        _ => (cfr, af),
+    };
+    Vec4::new(c.x, c.y, c.z, a).clamp(Vec4::ZERO, Vec4::ONE)
 }
 
 /// The target and texture object unit `unit` samples, or None when texturing is off for the
@@ -615,6 +976,13 @@ fn unit_texture(state: &State, unit: usize) -> Option<(u32, &Arc<TexObject>)> {
             let obj = state.textures.bound(unit, target)?;
             obj.is_complete().then_some((target, obj))
         })
+}
+
+/// The unit a COMBINE source TEXTUREn names (the front end accepts n < MAX_TEXTURE_UNITS only).
+#[inline]
+fn unit_of_source(source: u32) -> Option<usize> {
+    let n = source.wrapping_sub(gl::TEXTURE0) as usize;
+    (n < MAX_TEXTURE_UNITS).then_some(n)
 }
 
 /// The cube-map face (0 to 5: +X, -X, +Y, -Y, +Z, -Z) of direction `p` by its major axis
@@ -735,6 +1103,39 @@ fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
         gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
         // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
         _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),
+    }
+}
+
+/// [`wrap_nearest`] on eight lanes, the mode chosen once (each arm inlines the scalar
+/// function with a constant mode, so every lane is the scalar index).
+#[inline(always)]
+fn wrap_nearest_lanes(mode: u32, s: &[f32; LANES], n: i32) -> [Option<i32>; LANES] {
+    match mode {
+        gl::REPEAT => s.map(|s| wrap_nearest(gl::REPEAT, s, n)),
+        gl::MIRRORED_REPEAT => s.map(|s| wrap_nearest(gl::MIRRORED_REPEAT, s, n)),
+        gl::CLAMP_TO_BORDER => s.map(|s| wrap_nearest(gl::CLAMP_TO_BORDER, s, n)),
+        _ => s.map(|s| wrap_nearest(mode, s, n)),
+    }
+}
+
+/// The pairs of LINEAR indices and weights of [`wrap_linear`] on eight lanes, the mode chosen
+/// once.
+type LinearLanes = ([Option<i32>; LANES], [Option<i32>; LANES], [f32; LANES]);
+
+/// [`wrap_linear`] on eight lanes, the mode chosen once (as [`wrap_nearest_lanes`]).
+#[inline(always)]
+fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: i32) -> LinearLanes {
+    let each = |mode: u32| {
+        let w = s.map(|s| wrap_linear(mode, s, n));
+        (w.map(|w| w.0), w.map(|w| w.1), w.map(|w| w.2))
+    };
+    match mode {
+        gl::REPEAT => each(gl::REPEAT),
+        gl::MIRRORED_REPEAT => each(gl::MIRRORED_REPEAT),
+        gl::CLAMP => each(gl::CLAMP),
+        gl::CLAMP_TO_BORDER => each(gl::CLAMP_TO_BORDER),
+        gl::CLAMP_TO_EDGE => each(gl::CLAMP_TO_EDGE),
+        _ => each(mode),
     }
 }
 

@@ -233,9 +233,14 @@ fn scalar_as_vector(call: &Call) -> Option<Call> {
 /// implements relaxes the rule; the backend raises them itself, so that both backends give the
 /// spec's error (the error-agreement test walks every pname-taking command for this).
 fn gl21_error(call: &Call) -> Option<u32> {
-    // GL 2.1 table 3.21's sources; ZERO and ONE come with ATI_texture_env_combine3.
+    // GL 2.1 table 3.21's sources; ZERO and ONE come with ATI_texture_env_combine3, and the
+    // driver has more units than fixedgl's MAX_TEXTURE_UNITS, whose TEXTUREn (n past the last
+    // unit, up to TEXTURE31) the spec makes INVALID_ENUM (§3.8.13).
     let zero_one_source = |pname: u32, v: f64| {
-        (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname) && (0.0..2.0).contains(&v)
+        let past_units = f64::from(gl::TEXTURE0 + crate::state::MAX_TEXTURE_UNITS as u32)
+            ..=f64::from(gl::TEXTURE0 + 31);
+        (gl::SRC0_RGB..=gl::SRC2_ALPHA).contains(&pname)
+            && ((0.0..2.0).contains(&v) || past_units.contains(&v))
     };
     let wrong = match *call {
         Call::TexEnvf(_, p, v) => zero_one_source(p, f64::from(v)),

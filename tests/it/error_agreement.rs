@@ -178,6 +178,8 @@ const VALUES: &[&str] = &[
     "DOT3_RGB",
     "TEXTURE",
     "TEXTURE1",
+    "TEXTURE3",
+    "TEXTURE4",
     "PRIMARY_COLOR",
     "CONSTANT",
     "SRC_COLOR",

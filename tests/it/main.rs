@@ -12,6 +12,7 @@ mod attrib;
 mod buffer_map;
 mod buffers;
 mod compressed_gl;
+mod crossbar_gl;
 mod depth_stencil_gl;
 mod error_agreement;
 mod errors;

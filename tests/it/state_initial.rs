@@ -522,6 +522,7 @@ fn strings() {
     );
     let names: Vec<&str> = ext.split_whitespace().collect();
     for want in [
+        "GL_ARB_texture_env_crossbar",
         "GL_ARB_vertex_buffer_object",
         "GL_ARB_window_pos",
         "GL_EXT_packed_depth_stencil",

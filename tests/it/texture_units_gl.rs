@@ -10,7 +10,7 @@ use crate::common::cpu_vs_gl;
 use fixedgl::Context;
 
 /// Texel `k` of a colourful image (every channel varies), seeded by `seed`.
-fn texel(k: usize, seed: usize) -> [u8; 4] {
+pub(crate) fn texel(k: usize, seed: usize) -> [u8; 4] {
     let k = (k + 13 * seed) as u32;
     [
         (k * 37 % 256) as u8,
@@ -20,13 +20,13 @@ fn texel(k: usize, seed: usize) -> [u8; 4] {
     ]
 }
 
-fn image(n: usize, seed: usize) -> Vec<u8> {
+pub(crate) fn image(n: usize, seed: usize) -> Vec<u8> {
     (0..n).flat_map(|k| texel(k, seed)).collect()
 }
 
 /// Unit `u`'s texture: 0 a 2D 8x8, 1 a 1D 16, 2 a 3D 4x4x4, 3 a cube map of 4x4 faces; each
 /// NEAREST (LINEAR for the 2D one), REPEAT, and its target enabled.
-fn unit_texture(c: &mut Context, u: u32) {
+pub(crate) fn unit_texture(c: &mut Context, u: u32) {
     use fixedgl::gl::*;
     c.active_texture(TEXTURE0 + u);
     let (target, name) = match u {
@@ -86,7 +86,7 @@ fn unit_texture(c: &mut Context, u: u32) {
 }
 
 /// A quad in perspective giving each unit its own coordinates (MultiTexCoord).
-fn perspective_quad(c: &mut Context) {
+pub(crate) fn perspective_quad(c: &mut Context) {
     use fixedgl::gl::*;
     c.matrix_mode(PROJECTION);
     c.load_identity();
@@ -132,7 +132,7 @@ fn envs(c: &mut Context) {
     c.tex_envf(TEXTURE_ENV, RGB_SCALE, 2.0);
 }
 
-fn check(name: &str, got: Option<(u64, String)>, allowed: u64) {
+pub(crate) fn check(name: &str, got: Option<(u64, String)>, allowed: u64) {
     let Some((n, first)) = got else {
         eprintln!("SKIPPED: {name}: no GL backend");
         return;

@@ -397,3 +397,161 @@ fn quad_lambda_lanes_is_the_scalar_lambda_bit_for_bit() {
         }
     }
 }
+
+#[test]
+fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
+    // 2D samplers of every base format, environment, wrap mode, filter pair, mipmapped or
+    // not, power-of-two or not, with random LOD bounds and bias, over awkward coordinates
+    // (outside [0, 1], huge, q = 0, negative q, NaN, infinities) and λ: each lane of
+    // `texels_lanes` then `env_lanes` holds exactly what `shade` gives for its fragment.
+    let mut seed = 11u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let bases = [
+        gl::ALPHA,
+        gl::LUMINANCE,
+        gl::LUMINANCE_ALPHA,
+        gl::INTENSITY,
+        gl::RGB,
+        gl::RGBA,
+    ];
+    let envs = [gl::REPLACE, gl::MODULATE, gl::DECAL, gl::BLEND, gl::ADD];
+    let wraps = [
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::CLAMP_TO_BORDER,
+        gl::MIRRORED_REPEAT,
+    ];
+    let mins = [
+        gl::NEAREST,
+        gl::LINEAR,
+        gl::NEAREST_MIPMAP_NEAREST,
+        gl::LINEAR_MIPMAP_NEAREST,
+        gl::NEAREST_MIPMAP_LINEAR,
+        gl::LINEAR_MIPMAP_LINEAR,
+    ];
+    let sizes = [(1, 1), (4, 4), (8, 2), (5, 3), (16, 16), (7, 1), (64, 32)];
+    let mut checked = 0;
+    for round in 0..1500 {
+        // Every seventh round a depth (or depth-stencil) texture, with or without comparison.
+        let depth = round % 7 == 6;
+        let base = if depth {
+            [gl::DEPTH_COMPONENT, gl::DEPTH_STENCIL][round / 7 % 2]
+        } else {
+            bases[round % bases.len()]
+        };
+        let env = envs[(next() % 5) as usize];
+        let (w, h) = sizes[(next() % sizes.len() as u64) as usize];
+        let min = mins[(next() % 6) as usize];
+        let mag = if next() % 2 == 0 {
+            gl::NEAREST
+        } else {
+            gl::LINEAR
+        };
+        let mut levels = Vec::new();
+        let (mut lw, mut lh) = (w, h);
+        loop {
+            let mut vals = Vec::new();
+            for _ in 0..lw * lh {
+                vals.push(std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0));
+            }
+            levels.push(level(lw, lh, base, |i, j| vals[(j * lw + i) as usize]));
+            if lw == 1 && lh == 1 {
+                break;
+            }
+            (lw, lh) = ((lw / 2).max(1), (lh / 2).max(1));
+        }
+        let mut obj = obj_with(levels, min, mag);
+        obj.wrap_s = wraps[(next() % 5) as usize];
+        obj.wrap_t = wraps[(next() % 5) as usize];
+        obj.border_color = Vec4::new(0.25, 0.5, 0.75, 0.125);
+        if next() % 3 == 0 {
+            obj.min_lod = (next() % 40) as f32 * 0.125 - 1.0;
+            obj.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
+            obj.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
+        }
+        if depth {
+            obj.compare_mode = if next() % 4 == 0 {
+                gl::NONE
+            } else {
+                gl::COMPARE_R_TO_TEXTURE
+            };
+            obj.compare_func = [
+                gl::LEQUAL,
+                gl::GEQUAL,
+                gl::LESS,
+                gl::GREATER,
+                gl::EQUAL,
+                gl::NOTEQUAL,
+                gl::ALWAYS,
+                gl::NEVER,
+            ][(next() % 8) as usize];
+            obj.depth_texture_mode =
+                [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
+        }
+        let s = sampler(obj, env);
+        assert!(s.lanes_ok());
+        assert_eq!(s.compare.is_some(), depth && obj_compare(&s));
+        let coord = |next: &mut dyn FnMut() -> u64| match next() % 16 {
+            0 => 0.0,
+            1 => f32::from_bits(next() as u32),
+            2 => [f32::NAN, f32::INFINITY, -f32::INFINITY, 1e9, -1e9][(next() % 5) as usize],
+            3 => (next() % 64) as f32 / 8.0,
+            _ => (next() % 100_000) as f32 * 6e-5 - 3.0,
+        };
+        for _ in 0..8 {
+            let lanes = |next: &mut dyn FnMut() -> u64| -> [f32; LANES] {
+                std::array::from_fn(|_| coord(next))
+            };
+            let (cs, ct, cr) = (lanes(&mut next), lanes(&mut next), lanes(&mut next));
+            let cq: [f32; LANES] = std::array::from_fn(|_| match next() % 8 {
+                0 => 0.0,
+                1 => -1.5,
+                2 => coord(&mut next),
+                _ => 1.0 + (next() % 100) as f32 * 0.01,
+            });
+            let lambda: [f32; LANES] = std::array::from_fn(|_| match next() % 10 {
+                0 => f32::NAN,
+                1 => f32::INFINITY,
+                2 => -f32::INFINITY,
+                3 => (next() % 16) as f32 * 0.5 - 1.0,
+                _ => (next() % 10_000) as f32 * 1e-3 - 2.0,
+            });
+            let cf: [Vec4; LANES] = std::array::from_fn(|_| {
+                Vec4::from_array(std::array::from_fn(|_| (next() % 300) as f32 / 256.0))
+            });
+            let m = (next() % 256) as u8;
+            let texels = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+            let mut got = cf;
+            s.env_lanes(&mut got, &texels, m);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let want = s.shade(cf[l], cf[l], [cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                let (g, w) = (got[l].to_array(), want.to_array());
+                let same = g
+                    .iter()
+                    .zip(w)
+                    .all(|(a, b)| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan());
+                assert!(
+                    same,
+                    "round {round} lane {l}: {g:?} vs {w:?} ({}, {}, {}, {}) λ {}",
+                    cs[l], ct[l], cr[l], cq[l], lambda[l]
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 40_000, "{checked}");
+}
+
+/// Did `Sampler::new` turn comparison on (COMPARE_R_TO_TEXTURE on a depth texture)?
+fn obj_compare(s: &Sampler) -> bool {
+    s.obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
+}
