@@ -371,16 +371,6 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let lin = |f: u32| {
-            if matches!(
-                f,
-                gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
-            ) {
-                gl::LINEAR
-            } else {
-                gl::NEAREST
-            }
-        };
         let span = (self.last - self.base_level) as f32;
         // Per lane: the first level and its filter, the second level (trilinear) and its weight.
         let mut la = [self.base_level; LANES];
@@ -729,16 +719,6 @@ impl Sampler {
         if lambda <= self.c {
             return self.filter(face, self.base_level, self.mag, s, t, r);
         }
-        let lin = |f: u32| {
-            if matches!(
-                f,
-                gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
-            ) {
-                gl::LINEAR
-            } else {
-                gl::NEAREST
-            }
-        };
         let span = (self.last - self.base_level) as f32;
         match self.min {
             gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
@@ -1136,6 +1116,19 @@ fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: i32) -> LinearLanes {
         gl::CLAMP_TO_BORDER => each(gl::CLAMP_TO_BORDER),
         gl::CLAMP_TO_EDGE => each(gl::CLAMP_TO_EDGE),
         _ => each(mode),
+    }
+}
+
+/// The filter a minification filter applies within one level: LINEAR for LINEAR and the
+/// LINEAR_MIPMAP_* filters, NEAREST for the others (GL 2.1 §3.8.8).
+fn lin(filter: u32) -> u32 {
+    if matches!(
+        filter,
+        gl::LINEAR | gl::LINEAR_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_LINEAR
+    ) {
+        gl::LINEAR
+    } else {
+        gl::NEAREST
     }
 }
 
