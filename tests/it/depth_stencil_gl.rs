@@ -478,6 +478,15 @@ fn depth_stencil_textures_sample_as_depth_textures() {
 /// Runs the attachment steps on both, the status and the bound renderbuffer's parameters
 /// compared after each.
 fn fbo_statuses(c: &mut Context, drv: &mut GlBackend) {
+    // One step: renderbuffer `name` attached to `point` of the bound framebuffer.
+    let attach = |point: u32, name: u32| {
+        vec![Call::FramebufferRenderbuffer(
+            FRAMEBUFFER,
+            point,
+            RENDERBUFFER,
+            name,
+        )]
+    };
     let steps: Vec<Vec<Call>> = vec![
         vec![
             Call::BindRenderbuffer(RENDERBUFFER, 1),
@@ -493,66 +502,16 @@ fn fbo_statuses(c: &mut Context, drv: &mut GlBackend) {
             Call::BindFramebuffer(FRAMEBUFFER, 1),
             Call::FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, 2),
         ],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            1,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            STENCIL_ATTACHMENT,
-            RENDERBUFFER,
-            1,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            0,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            3,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            STENCIL_ATTACHMENT,
-            RENDERBUFFER,
-            4,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            0,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            1,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            STENCIL_ATTACHMENT,
-            RENDERBUFFER,
-            5,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            DEPTH_ATTACHMENT,
-            RENDERBUFFER,
-            5,
-        )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            STENCIL_ATTACHMENT,
-            RENDERBUFFER,
-            3,
-        )],
+        attach(DEPTH_ATTACHMENT, 1),
+        attach(STENCIL_ATTACHMENT, 1),
+        attach(DEPTH_ATTACHMENT, 0),
+        attach(DEPTH_ATTACHMENT, 3),
+        attach(STENCIL_ATTACHMENT, 4),
+        attach(DEPTH_ATTACHMENT, 0),
+        attach(DEPTH_ATTACHMENT, 1),
+        attach(STENCIL_ATTACHMENT, 5),
+        attach(DEPTH_ATTACHMENT, 5),
+        attach(STENCIL_ATTACHMENT, 3),
         vec![
             Call::FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, 0),
             Call::BindTexture(TEXTURE_2D, 1),
@@ -571,12 +530,7 @@ fn fbo_statuses(c: &mut Context, drv: &mut GlBackend) {
             1,
             0,
         )],
-        vec![Call::FramebufferRenderbuffer(
-            FRAMEBUFFER,
-            STENCIL_ATTACHMENT,
-            RENDERBUFFER,
-            5,
-        )],
+        attach(STENCIL_ATTACHMENT, 5),
         vec![
             Call::BindTexture(TEXTURE_2D, 2),
             tex_image(TEXTURE_2D, DEPTH_COMPONENT24, DEPTH_COMPONENT, FLOAT),
