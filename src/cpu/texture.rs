@@ -242,14 +242,22 @@ impl Sampler {
         let p0 = lambda_point(&ps, &pt, &pr, &pq, &qx, qy, size, dims);
         let px = lambda_point(&ps, &pt, &pr, &pq, &qx1, qy, size, dims);
         let py = lambda_point(&ps, &pt, &pr, &pq, &qx, qy + 1.0, size, dims);
+        // `len2` of `quad_lambda` for both neighbours, then the larger, lane by lane.
         let mut rho2 = [0.0f32; LANES];
         for l in 0..LANES {
-            // `len2` of `quad_lambda`, then the larger of the two.
-            let len2 = |a: &[[f32; LANES]; 3]| {
-                let d = [a[0][l] - p0[0][l], a[1][l] - p0[1][l], a[2][l] - p0[2][l]];
-                d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
-            };
-            rho2[l] = len2(&px).max(len2(&py));
+            let (ax, ay, az) = (
+                px[0][l] - p0[0][l],
+                px[1][l] - p0[1][l],
+                px[2][l] - p0[2][l],
+            );
+            let (bx, by, bz) = (
+                py[0][l] - p0[0][l],
+                py[1][l] - p0[1][l],
+                py[2][l] - p0[2][l],
+            );
+            let lx = ax * ax + ay * ay + az * az;
+            let ly = bx * bx + by * by + bz * bz;
+            rho2[l] = lx.max(ly);
         }
         let mut out = [0.0f32; LANES];
         for l in 0..LANES {
@@ -1108,14 +1116,18 @@ fn fast_log2_lane(x: f32) -> f32 {
     let e = ((bits >> 23) & 0xff) as i32 - 127;
     let m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
     let v = e as f32 + (m - 1.0);
-    if x > 0.0 && x < f32::INFINITY {
-        v
-    } else if x == 0.0 {
+    let special = if x == 0.0 {
         f32::NEG_INFINITY
     } else if x == f32::INFINITY {
         x
     } else {
         f32::NAN
+    };
+    // `&`, not `&&`: no branch.
+    if (x > 0.0) & (x < f32::INFINITY) {
+        v
+    } else {
+        special
     }
 }
 
@@ -1137,38 +1149,63 @@ fn repeat_p(i: i32, n: i32, p2: bool) -> i32 {
     }
 }
 
-/// [`wrap_nearest`] as an index and whether it is inside the image (false: the border
-/// colour), `p2` telling whether `n.max(1)` is a power of two. The clamps are written as
-/// max/min (the same values, n - 1 >= 0) so that no panic path stays in a lane loop.
+/// The value [`wrap_nearest`] floors for coordinate `s` on an axis of `n` texels (n taken as
+/// at least 1): u = s·n, of MIRRORED_REPEAT's mirrored s.
 #[inline(always)]
-fn wrap_nearest_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, bool) {
+fn nearest_u(mode: u32, s: f32, n: i32) -> f32 {
     let n = n.max(1);
     match mode {
-        gl::REPEAT => (repeat_p(ifloor(s * n as f32), n, p2), true),
-        gl::MIRRORED_REPEAT => (ifloor(mirror(s) * n as f32).max(0).min(n - 1), true),
-        gl::CLAMP_TO_BORDER => {
-            let i = ifloor(s * n as f32);
-            (i, i >= 0 && i < n)
-        }
-        // CLAMP and CLAMP_TO_EDGE agree for NEAREST: s in [0, 1], i = n taken as n - 1.
-        _ => (ifloor(s * n as f32).max(0).min(n - 1), true),
+        gl::MIRRORED_REPEAT => mirror(s) * n as f32,
+        _ => s * n as f32,
     }
 }
 
-/// [`wrap_linear`]'s indices, the weight of the second, and whether each index is inside the
-/// image (false: the border colour); `p2` as for [`wrap_nearest_i`].
+/// [`wrap_nearest`]'s index from i = floor(u) (`ifloor` of [`nearest_u`]) and whether it is
+/// inside the image (false: the border colour), `p2` telling whether `n.max(1)` is a power of
+/// two. The clamps are written as max/min (the same values, n - 1 >= 0) so that no panic path
+/// stays in a lane loop.
 #[inline(always)]
-fn wrap_linear_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, i32, f32, bool, bool) {
+fn nearest_finish(mode: u32, i: i32, n: i32, p2: bool) -> (i32, bool) {
     let n = n.max(1);
-    let nf = n as f32;
+    match mode {
+        gl::REPEAT => (repeat_p(i, n, p2), true),
+        gl::CLAMP_TO_BORDER => (i, i >= 0 && i < n),
+        // CLAMP and CLAMP_TO_EDGE agree for NEAREST: s in [0, 1], i = n taken as n - 1;
+        // MIRRORED_REPEAT's mirrored s is in [0, 1] too.
+        _ => (i.max(0).min(n - 1), true),
+    }
+}
+
+/// [`wrap_nearest`] as an index and whether it is inside the image.
+#[inline(always)]
+fn wrap_nearest_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, bool) {
+    nearest_finish(mode, ifloor(nearest_u(mode, s, n)), n, p2)
+}
+
+/// The value u = s·n - 1/2 [`wrap_linear`] floors (after MIRRORED_REPEAT's mirror or CLAMP's
+/// clamp of s; a NaN u taken as 0), on an axis of `n` texels (n taken as at least 1).
+#[inline(always)]
+fn linear_u(mode: u32, s: f32, n: i32) -> f32 {
+    let nf = n.max(1) as f32;
     let s = match mode {
         gl::MIRRORED_REPEAT => mirror(s),
         gl::CLAMP => s.clamp(0.0, 1.0),
         _ => s,
     };
     let u = s * nf - 0.5;
-    let u = if u.is_nan() { 0.0 } else { u };
-    let i0 = ifloor(u);
+    if u.is_nan() {
+        0.0
+    } else {
+        u
+    }
+}
+
+/// [`wrap_linear`]'s indices, the weight of the second, and whether each index is inside the
+/// image (false: the border colour), from u ([`linear_u`]) and i0 = floor(u) (`ifloor`);
+/// `p2` as for [`nearest_finish`].
+#[inline(always)]
+fn linear_finish(mode: u32, u: f32, i0: i32, n: i32, p2: bool) -> (i32, i32, f32, bool, bool) {
+    let n = n.max(1);
     // |u| beyond 2^24 has no fraction; a saturated i0 must not produce a weight outside [0, 1].
     let a = (u - i0 as f32).clamp(0.0, 1.0);
     let i1 = i0.saturating_add(1);
@@ -1177,6 +1214,55 @@ fn wrap_linear_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, i32, f32, bool, b
         gl::CLAMP_TO_BORDER | gl::CLAMP => (i0, i1, a, i0 >= 0 && i0 < n, i1 >= 0 && i1 < n),
         // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
         _ => (i0.max(0).min(n - 1), i1.max(0).min(n - 1), a, true, true),
+    }
+}
+
+/// [`wrap_linear`]'s indices, weight and inside flags.
+#[inline(always)]
+fn wrap_linear_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, i32, f32, bool, bool) {
+    let u = linear_u(mode, s, n);
+    linear_finish(mode, u, ifloor(u), n, p2)
+}
+
+/// [`ifloor`] on eight lanes: SSE2's `cvttps2dq` truncation with `as i32`'s saturation
+/// (2^31 and above to i32::MAX, NaN to 0; below -2^31 it already gives i32::MIN), then one
+/// step down where the truncation exceeds x, except from i32::MIN (`saturating_sub`): each
+/// lane is `ifloor`'s value. The compiler leaves the saturating cast scalar.
+#[inline(always)]
+fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let half = |h: [f32; 4]| -> [i32; 4] {
+            // SAFETY: SSE2 is part of the x86-64 baseline, so these intrinsics exist on every
+            // x86-64 CPU; `__m128`/`__m128i` are four f32/i32 lanes in memory order, the
+            // layouts of `[f32; 4]`/`[i32; 4]`, and every bit pattern is valid for all four.
+            unsafe {
+                let v = std::mem::transmute::<[f32; 4], __m128>(h);
+                let t = _mm_cvttps_epi32(v);
+                let big = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(2_147_483_648.0)));
+                let t = _mm_or_si128(
+                    _mm_andnot_si128(big, t),
+                    _mm_and_si128(big, _mm_set1_epi32(i32::MAX)),
+                );
+                let nan = _mm_castps_si128(_mm_cmpunord_ps(v, v));
+                let t = _mm_andnot_si128(nan, t);
+                // -1 where (t as f32) > x and t is not i32::MIN.
+                let gt = _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), v));
+                let at_min = _mm_cmpeq_epi32(t, _mm_set1_epi32(i32::MIN));
+                std::mem::transmute::<__m128i, [i32; 4]>(_mm_add_epi32(
+                    t,
+                    _mm_andnot_si128(at_min, gt),
+                ))
+            }
+        };
+        let lo = half([x[0], x[1], x[2], x[3]]);
+        let hi = half([x[4], x[5], x[6], x[7]]);
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x.map(ifloor)
     }
 }
 
@@ -1189,7 +1275,7 @@ fn all_pow2(n: &[i32; LANES]) -> bool {
     })
 }
 
-/// [`wrap_nearest_i`] on eight lanes, lane l along an axis of `n[l]` texels: the mode (and
+/// [`wrap_nearest_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels: the mode (and
 /// whether every n is a power of two) chosen once, each arm a plain loop over the lanes with
 /// a constant mode, so every lane is the scalar index.
 #[inline(always)]
@@ -1201,11 +1287,16 @@ fn wrap_nearest_lanes(
     let mut i = [0i32; LANES];
     let mut inside = [true; LANES];
     macro_rules! each {
-        ($mode:expr, $p2:expr) => {
+        ($mode:expr, $p2:expr) => {{
+            let mut u = [0.0f32; LANES];
             for l in 0..LANES {
-                (i[l], inside[l]) = wrap_nearest_i($mode, s[l], n[l], $p2);
+                u[l] = nearest_u($mode, s[l], n[l]);
             }
-        };
+            let fl = ifloor_lanes(&u);
+            for l in 0..LANES {
+                (i[l], inside[l]) = nearest_finish($mode, fl[l], n[l], $p2);
+            }
+        }};
     }
     match (mode, all_pow2(n)) {
         (gl::REPEAT, true) => each!(gl::REPEAT, true),
@@ -1227,7 +1318,7 @@ struct LinearLanes {
     in1: [bool; LANES],
 }
 
-/// [`wrap_linear_i`] on eight lanes, lane l along an axis of `n[l]` texels, the mode chosen
+/// [`wrap_linear_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels, the mode chosen
 /// once (as [`wrap_nearest_lanes`]).
 #[inline(always)]
 fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLanes {
@@ -1239,12 +1330,17 @@ fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLan
         in1: [true; LANES],
     };
     macro_rules! each {
-        ($mode:expr, $p2:expr) => {
+        ($mode:expr, $p2:expr) => {{
+            let mut u = [0.0f32; LANES];
+            for l in 0..LANES {
+                u[l] = linear_u($mode, s[l], n[l]);
+            }
+            let fl = ifloor_lanes(&u);
             for l in 0..LANES {
                 (o.i0[l], o.i1[l], o.w[l], o.in0[l], o.in1[l]) =
-                    wrap_linear_i($mode, s[l], n[l], $p2);
+                    linear_finish($mode, u[l], fl[l], n[l], $p2);
             }
-        };
+        }};
     }
     match (mode, all_pow2(n)) {
         (gl::REPEAT, true) => each!(gl::REPEAT, true),
@@ -1316,10 +1412,11 @@ impl SpanLambda {
             self.lam[c * LANES..(c + 1) * LANES].copy_from_slice(&v);
             self.done |= 1 << c;
         }
+        // Lane l's quad is number (x + l - q0) / 2 (q0 is even); d + 7 < 2·SPAN_QUADS here.
+        let d = (x - self.q0) as usize;
         let mut out = [0.0f32; LANES];
         for (l, o) in out.iter_mut().enumerate() {
-            let k = (((x + l as i32) & !1) - self.q0) / 2;
-            *o = self.lam.get(k as usize).copied().unwrap_or(0.0);
+            *o = self.lam.get((d + l) >> 1).copied().unwrap_or(0.0);
         }
         out
     }

@@ -841,3 +841,49 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
     }
     assert!(checked > 50_000, "{checked}");
 }
+
+#[test]
+fn ifloor_lanes_is_ifloor() {
+    // The SSE2 truncation with `as i32`'s saturation and the step down, against `ifloor`:
+    // the edges of the i32 range, NaN, infinities, signed zeros, subnormals, random bits.
+    let mut seed = 29u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let edges = [
+        f32::NAN,
+        -f32::NAN,
+        f32::INFINITY,
+        -f32::INFINITY,
+        0.0,
+        -0.0,
+        -0.5,
+        0.5,
+        -1.0,
+        f32::MIN_POSITIVE / 8.0,
+        -f32::MIN_POSITIVE / 8.0,
+        2_147_483_648.0,
+        2_147_483_520.0,
+        -2_147_483_648.0,
+        -2_147_483_904.0,
+        -2_147_483_520.5,
+        8_388_607.5,
+        -8_388_607.5,
+        f32::MAX,
+        f32::MIN,
+    ];
+    for round in 0..20_000 {
+        let x: [f32; LANES] = std::array::from_fn(|_| match (round + next() as usize) % 3 {
+            0 => edges[(next() % edges.len() as u64) as usize],
+            1 => f32::from_bits(next() as u32),
+            _ => (next() % 2_000_000) as f32 * 1e-3 - 1000.0,
+        });
+        let got = ifloor_lanes(&x);
+        for l in 0..LANES {
+            assert_eq!(got[l], ifloor(x[l]), "{} ({:#x})", x[l], x[l].to_bits());
+        }
+    }
+}
