@@ -569,6 +569,27 @@ impl Sampler {
             wt[2][l] = (1.0 - a) * b;
             wt[3][l] = a * b;
         }
+        let edge = |mode: u32| matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER);
+        if !edge(self.wrap[0]) && !edge(self.wrap[1]) {
+            // No index can fall outside the image (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT on
+            // both axes): the four texels of each lane without the border choice, the row
+            // offsets j·w once per row (`Level::texel`'s (j·w + i) as usize).
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let (tx, w) = (v.tx[l], v.w[l]);
+                let (r0, r1) = (y.i0[l] * w, y.i1[l] * w);
+                let at = |k: i32| cmp(l, tx.get(k as usize).copied().unwrap_or([0.0; 4]));
+                let (t00, t10) = (at(r0 + x.i0[l]), at(r0 + x.i1[l]));
+                let (t01, t11) = (at(r1 + x.i0[l]), at(r1 + x.i1[l]));
+                let (w00, w10, w01, w11) = (wt[0][l], wt[1][l], wt[2][l], wt[3][l]);
+                *o = std::array::from_fn(|c| {
+                    w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]
+                });
+            }
+            return;
+        }
         for (l, o) in out.iter_mut().enumerate() {
             if m & (1 << l) == 0 {
                 continue;
