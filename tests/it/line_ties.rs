@@ -164,7 +164,7 @@ fn line_ends_on_pixel_centres_as_llvmpipe_draws_a_framebuffer_object() {
     };
     let (bad, other) = differing(&mut fbo, false);
     assert!(bad.is_empty(), "{} of 769 differ: {bad:#?}", bad.len());
-    // Measured: 38 of the 513 come out differently in the window orientation.
+    // Measured: 38 of the 512 width-1 pictures come out differently in the other orientation.
     assert!(
         other >= 30,
         "only {other} cases tell the orientations apart"
