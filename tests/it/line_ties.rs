@@ -106,6 +106,10 @@ fn lit(im: &image::RgbaImage) -> Vec<(u32, u32)> {
         .collect()
 }
 
+/// A named picture to draw.
+#[cfg(feature = "gl")]
+type Case = (String, Box<dyn Fn(&mut Context)>);
+
 /// Draws each case on the CPU (as a window-system framebuffer or not) and on `backend`; the
 /// cases whose pictures differ, and how many cases the other orientation would get wrong (so
 /// that the comparison is known to tell the two apart).
@@ -114,7 +118,7 @@ fn differing(
     backend: &mut fixedgl::glbackend::GlBackend,
     window_system: bool,
 ) -> (Vec<String>, usize) {
-    let mut cases: Vec<(String, Box<dyn Fn(&mut Context)>)> = Vec::new();
+    let mut cases: Vec<Case> = Vec::new();
     for (stipple, width) in [(false, 1.0), (true, 1.0), (false, 3.0)] {
         for s in segments() {
             cases.push((
