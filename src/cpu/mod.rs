@@ -636,6 +636,10 @@ impl Core {
     }
 }
 
+/// Bounding-box pixels of a rasterisation below which its tiles are drawn on the calling
+/// thread (two tiles' worth, as the two-tile rule).
+const SERIAL_AREA: u64 = 2 * TILE_PIXELS as u64;
+
 /// Given vertices after which `flush_if_large` draws the batch.
 const FLUSH_AT: usize = 1 << 15;
 
@@ -782,9 +786,11 @@ fn rasterise(
         }
         bufs.samples
     };
-    // Primitives within one or two tiles are drawn on this thread: handing them to the pool
-    // costs more than drawing them. Tiles are independent, so the pixels are the same.
-    if jobs.len() <= 2 {
+    // Primitives within one or two tiles, or whose bounding boxes hold fewer pixels than two
+    // tiles, are drawn on this thread: handing them to the pool costs more than drawing them.
+    // Tiles are independent, so the pixels are the same.
+    let area: u64 = workers.iter().map(|w| w.area).sum();
+    if jobs.len() <= 2 || area < SERIAL_AREA {
         jobs.into_iter().map(work).sum()
     } else {
         jobs.into_par_iter().map(work).sum()

@@ -446,6 +446,9 @@ pub struct Worker {
     /// rasteriser visits and the next run empties, so that neither walks every tile of the
     /// framebuffer for a flush that reaches a few.
     pub touched: Vec<u32>,
+    /// The pixels of its primitives' bounding boxes, summed: the rasteriser's estimate of the
+    /// work, to decide whether handing the tiles to the pool pays.
+    pub area: u64,
     pub(super) a: Vec<f32>,
     pub(super) b: Vec<f32>,
     bins_x: usize,
@@ -489,6 +492,7 @@ impl Worker {
             }
         }
         self.touched.clear();
+        self.area = 0;
         // Every bin is empty now: those not touched were emptied by the run that filled them.
         debug_assert!(self.bins.iter().all(Vec::is_empty), "a bin not emptied");
         self.bins.resize_with(ctx.tiles, Vec::new);
@@ -714,6 +718,9 @@ impl Worker {
         let idx = self.prims.len() as u32;
         let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
         let tiles_x = self.bins_x;
+        let [x0, y0, x1, y1] = p.bbox.map(i64::from);
+        let pixels = ((x1 - x0 + 1).max(0) * (y1 - y0 + 1).max(0)) as u64;
+        self.area = self.area.saturating_add(pixels);
         if tx0 == tx1 && ty0 == ty1 {
             let t = ty0 * tiles_x + tx0;
             if let Some(b) = self.bins.get_mut(t) {
