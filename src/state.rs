@@ -387,6 +387,12 @@ pub struct State {
     pub height: u32,
     /// The framebuffer's buffers, fixed at context creation.
     pub config: ContextConfig,
+    /// The framebuffer drawn into is one Mesa's llvmpipe draws upside down (a window-system
+    /// framebuffer: GLX, EGL or OSMesa, Mesa's `Y_0_TOP`), so lines decide their pixel-centre
+    /// ties as the driver does there; false for a framebuffer object (`Y_0_BOTTOM`, what
+    /// `GlBackend::new` draws into). Not GL state: `Context::set_window_system_framebuffer`
+    /// sets it for the window, and binding a framebuffer object clears it while bound.
+    pub y0_top: bool,
 
     // Current values (table 6.5).
     pub current: Current,
@@ -526,6 +532,7 @@ impl State {
             width,
             height,
             config,
+            y0_top: false,
             current: Current::default(),
             matrix_mode: gl::MODELVIEW,
             modelview: MatrixStack::new(MAX_MODELVIEW_STACK_DEPTH),

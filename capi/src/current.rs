@@ -67,6 +67,13 @@ impl Gl {
             Some(group) => Context::with_config_shared(w, h, config, &group),
             None => Context::with_config(w, h, config),
         };
+        let made = made.map(|mut ctx| {
+            // Every framebuffer a C ABI context draws into by default is a window-system one
+            // (GLX drawable, EGL surface, OSMesa buffer), which llvmpipe draws upside down
+            // (Mesa's Y_0_TOP): lines with ends on pixel centres follow it there.
+            ctx.set_window_system_framebuffer(true);
+            ctx
+        });
         match made {
             Ok(mut ctx) => Some(Gl {
                 recorder: crate::record::Recorder::from_env(&mut ctx),

@@ -169,8 +169,9 @@ static CONFIGS: [FbConfig; 4] = [
         alpha: true,
     },
 ];
-/// The config of a visual GLX 1.2 programs got elsewhere (GLX's default: double-buffered; with
-/// alpha, as fixedgl always gave, although Mesa's configs of a 24-bit visual have none).
+/// The config of a visual GLX 1.2 programs got elsewhere (XMatchVisualInfo, say): RGBA8 and
+/// double-buffered, what Mesa 22.3's GLX on Xvfb gives the screen's default 24-bit TrueColor
+/// visual (GLX_ALPHA_SIZE 8, GLX_DOUBLEBUFFER 1, ALPHA_BITS 8 in a context made on it).
 const DOUBLE: usize = 3;
 
 fn config_handle(i: usize) -> *mut c_void {

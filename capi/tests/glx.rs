@@ -582,6 +582,35 @@ fn configs_and_visuals_without_alpha() {
     }
     assert!(choose_configs(&c, &[GLX_ALPHA_SIZE, 9, 0]).is_empty());
 
+    // A visual the program matched itself (XMatchVisualInfo, not glXChooseVisual): Mesa 22.3's
+    // GLX on Xvfb gives the screen's 24-bit TrueColor visual (0x21) GLX_ALPHA_SIZE 8 and
+    // GLX_DOUBLEBUFFER 1, and a context made on it reads ALPHA_BITS 8 (measured with the
+    // system's libGL); so does fixedgl.
+    // SAFETY: an open display; `found` is written by XMatchVisualInfo before it is read.
+    let mut found = unsafe {
+        let mut v: XVisualInfo = std::mem::zeroed();
+        let ok = (xlib().XMatchVisualInfo)(dpy(&c), 0, 24, xlib::TrueColor, &mut v);
+        assert_ne!(ok, 0, "no 24-bit TrueColor visual");
+        v
+    };
+    for (attr, want) in [(GLX_ALPHA_SIZE, 8), (GLX_DOUBLEBUFFER, 1), (GLX_RGBA, 1)] {
+        let mut v = -1;
+        // SAFETY: a visual of the display, one value.
+        assert_eq!(
+            unsafe { glXGetConfig(dpy(&c), &mut found, attr, &mut v) },
+            0
+        );
+        assert_eq!(v, want, "attribute {attr:#x} of a matched visual");
+    }
+    let win = window(&c, &found, 8, 8);
+    // SAFETY: a visual of the display.
+    let ctx = unsafe { glXCreateContext(dpy(&c), &mut found, null_mut(), 1) };
+    assert!(!ctx.is_null());
+    assert_eq!(glXMakeCurrent(dpy(&c), win, ctx), 1);
+    assert_eq!(gl.integer(GL_ALPHA_BITS), 8);
+    assert_eq!(glXMakeCurrent(dpy(&c), 0, null_mut()), 1);
+    glXDestroyContext(dpy(&c), ctx);
+
     // Per config: ALPHA_BITS, then a clear to alpha 0.3 and a rectangle blended with
     // (ONE_MINUS_DST_ALPHA, DST_ALPHA) over the left half, read back as RGBA.
     for (alpha_size, bits, left, right) in [

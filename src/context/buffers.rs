@@ -170,6 +170,24 @@ impl Context {
         Ok(())
     }
 
+    /// Draws the window's framebuffer as Mesa's llvmpipe draws a window-system framebuffer (a
+    /// GLX window, an EGL surface, an OSMesa buffer: `true`) or a framebuffer object (`false`,
+    /// the default, what [`crate::glbackend::GlBackend::new`] compares with). The two differ only
+    /// in which pixel a line draws when an end lies exactly on a pixel centre's row or column
+    /// (docs/conformance.md, "line ends on pixel centres"): the driver sets lines up in its own
+    /// y-down coordinates, and a window's are the other way up. The C ABI sets it for every
+    /// window-system framebuffer. Not a GL command, never recorded; vertices batched before it
+    /// are drawn first (outside Begin/End; inside, the open primitive's lines follow the new
+    /// setting). Framebuffer objects are always drawn as objects.
+    pub fn set_window_system_framebuffer(&mut self, on: bool) {
+        if self.begin_mode.is_none() {
+            self.renderer.flush(&self.state);
+        }
+        if !self.fbos.set_window_y0_top(on) {
+            self.state.y0_top = on;
+        }
+    }
+
     /// The buffers this context's framebuffer has.
     pub fn config(&self) -> ContextConfig {
         self.state.config

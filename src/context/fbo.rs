@@ -105,6 +105,7 @@ struct Window {
     width: u32,
     height: u32,
     config: ContextConfig,
+    y0_top: bool,
     draw_buffer: u32,
     read_buffer: u32,
 }
@@ -144,6 +145,16 @@ impl Fbos {
     /// Resizes the window's framebuffer set aside while an object is bound (`Context::resize`):
     /// false when none is set aside, or (the old one kept, the binding not 0) when the new
     /// buffers cannot be allocated.
+    /// Sets the window's `State::y0_top` while a framebuffer object is bound; false when the
+    /// window is bound (its value is then in the state).
+    pub(crate) fn set_window_y0_top(&mut self, on: bool) -> bool {
+        let Some(w) = self.window.as_mut() else {
+            return false;
+        };
+        w.y0_top = on;
+        true
+    }
+
     pub(crate) fn resize_window(&mut self, width: u32, height: u32) -> bool {
         let Some(w) = self.window.as_mut() else {
             return false;
@@ -956,6 +967,7 @@ impl Context {
                 self.state.width = w.width;
                 self.state.height = w.height;
                 self.state.config = w.config;
+                self.state.y0_top = w.y0_top;
                 self.state.draw_buffer = w.draw_buffer;
                 self.state.read_buffer = w.read_buffer;
             }
@@ -981,6 +993,7 @@ impl Context {
                 width: self.state.width,
                 height: self.state.height,
                 config: self.state.config,
+                y0_top: self.state.y0_top,
                 draw_buffer: self.state.draw_buffer,
                 read_buffer: self.state.read_buffer,
             });
@@ -997,6 +1010,8 @@ impl Context {
     fn placeholder_state(&mut self) {
         self.state.width = 1;
         self.state.height = 1;
+        // A framebuffer object: llvmpipe draws it the GL way up.
+        self.state.y0_top = false;
         self.state.config = ContextConfig {
             double_buffered: false,
             depth: false,

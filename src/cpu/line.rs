@@ -13,10 +13,6 @@ use super::setup::{
     geom, PrimKind, RPrim, SetupCtx, WVert, Worker, F_FLAT, F_LINE, MAXV, SNAP_LIMIT,
 };
 
-/// GL window coordinates have y up, so the fill rule's "top" edge is llvmpipe's bottom edge
-/// (its `bottom_edge_rule` for a y-up framebuffer).
-const BOTTOM_EDGE_RULE: bool = false;
-
 /// Nearest 1/256 pixel, ties to even (llvmpipe's `lrintf` in the default rounding mode),
 /// clamped to ±`SNAP_LIMIT` as triangle vertices are: the parallelogram's corners then stay
 /// under `COORD_LIMIT`, where every edge-function product of `geom` and the rasteriser fits
@@ -40,7 +36,25 @@ fn nonneg(v: f32) -> bool {
 
 /// The parallelogram of the segment (x1, y1)–(x2, y2) of width `width`, as four corners in
 /// 1/256 pixel with pixel centres at +128 (the triangle rasteriser's convention).
-fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64; 2]; 4]> {
+///
+/// `flip` is the framebuffer height when the framebuffer is one llvmpipe draws upside down (a
+/// window-system framebuffer, Mesa's `Y_0_TOP`: its state tracker negates the viewport's y
+/// scale, so the driver sees y' = height − y): the diamond tests and end offsets are then
+/// decided on y', as the driver decides them, and the corners mapped back. Without it the
+/// driver's view is GL's (a framebuffer object, `Y_0_BOTTOM`). The two differ only for ends on
+/// pixel-centre rows or columns (ties), which each orientation resolves its own way.
+fn parallelogram(
+    x1: f32,
+    y1: f32,
+    x2: f32,
+    y2: f32,
+    width: f32,
+    flip: Option<f32>,
+) -> Option<[[i64; 2]; 4]> {
+    let (y1, y2) = match flip {
+        Some(h) => (h - y1, h - y2),
+        None => (y1, y2),
+    };
     let (dx, dy) = (x1 - x2, y1 - y2);
     if dx * dx + dy * dy == 0.0 || !(dx.is_finite() && dy.is_finite()) {
         return None;
@@ -77,23 +91,28 @@ fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64
             yi > 0.0 && yi < 1.0
         };
         // Move an end by up to half a pixel where the plain parallelogram would decide
-        // differently from the diamond test.
+        // differently from the diamond test. Mesa 22.3's `will_draw_start/end` (sign tests
+        // that do not depend on the framebuffer's orientation; later Mesa made them depend on
+        // `bottom_edge_rule`): with `sign(v) = v >= 0`, sign(-x1d) != sign(dx) and
+        // sign(x2d) == sign(-dx) || x2d == 0.
+        let will_start = nonneg(-x1d) != nonneg(dx);
+        let will_end = nonneg(x2d) == nonneg(-dx) || x2d == 0.0;
         let ((ax, ay), (bx, by)) = if dx < 0.0 {
-            if (x1d <= 0.0) != start {
+            if will_start != start {
                 xoe = -x1d - 0.5;
                 yoe = xoe * dydx;
             }
-            if (x2d > 0.0) != end {
+            if will_end != end {
                 xo = -x2d - 0.5;
                 yo = xo * dydx;
             }
             ((x2, y2), (x1, y1))
         } else {
-            if (x1d > 0.0) != start {
+            if will_start != start {
                 xo = -x1d + 0.5;
                 yo = xo * dydx;
             }
-            if (x2d <= 0.0) != end {
+            if will_end != end {
                 xoe = -x2d + 0.5;
                 yoe = xoe * dydx;
             }
@@ -130,12 +149,11 @@ fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64
             let xi = frac(x2) + y2d * dxdy;
             (0.0..1.0).contains(&xi)
         };
+        // Mesa 22.3's sign tests, as for x-major lines: sign(y1d) == sign(dy) and
+        // sign(-y2d) == sign(dy) || y2d == 0.
+        let will_start = nonneg(y1d) == nonneg(dy);
+        let will_end = nonneg(-y2d) == nonneg(dy) || y2d == 0.0;
         let ((ax, ay), (bx, by)) = if dy > 0.0 {
-            let (will_start, will_end) = if BOTTOM_EDGE_RULE {
-                (y1d >= 0.0, y2d < 0.0)
-            } else {
-                (y1d > 0.0, y2d <= 0.0)
-            };
             if will_start != start {
                 yoe = -y1d + 0.5;
                 xoe = yoe * dxdy;
@@ -146,11 +164,6 @@ fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64
             }
             ((x2, y2), (x1, y1))
         } else {
-            let (will_start, will_end) = if BOTTOM_EDGE_RULE {
-                (y1d < 0.0, y2d >= 0.0)
-            } else {
-                (y1d <= 0.0, y2d > 0.0)
-            };
             if will_start != start {
                 yo = -y1d - 0.5;
                 xo = yo * dxdy;
@@ -170,8 +183,11 @@ fn parallelogram(x1: f32, y1: f32, x2: f32, y2: f32, width: f32) -> Option<[[i64
             [xa + half, ya],
         ]
     };
-    // Back to centres at +0.5 pixel.
-    Some(q.map(|[x, y]| [x + 128, y + 128]))
+    // Back to centres at +0.5 pixel; from y' = height − y, row r' is row height − 1 − r'.
+    Some(match flip {
+        Some(h) => q.map(|[x, y]| [x + 128, snap(h) - 128 - y]),
+        None => q.map(|[x, y]| [x + 128, y + 128]),
+    })
 }
 
 impl Worker {
@@ -282,7 +298,7 @@ impl Worker {
         if ctx.line_smooth {
             return self.aa_line(ctx, a, b, off, flags, mat);
         }
-        let Some(q) = parallelogram(a.x, a.y, b.x, b.y, ctx.line_width()) else {
+        let Some(q) = parallelogram(a.x, a.y, b.x, b.y, ctx.line_width(), ctx.line_flip) else {
             return;
         };
         let x_major = (a.x - b.x).abs() >= (a.y - b.y).abs();
@@ -358,7 +374,7 @@ mod tests {
             (-1e9, 5.0, 1e9, 7.0),
             (5.0, -1e9, 7.0, 1e9),
         ] {
-            let Some(q) = parallelogram(x1, y1, x2, y2, 1e9) else {
+            let Some(q) = parallelogram(x1, y1, x2, y2, 1e9, None) else {
                 panic!("no parallelogram for ({x1}, {y1}) to ({x2}, {y2})");
             };
             assert!(q.iter().flatten().all(|v| v.abs() < COORD_LIMIT), "{q:?}");

@@ -185,6 +185,9 @@ pub struct SetupCtx {
     pub(super) quads_split_last: bool,
     pub(super) phong: bool,
     line_width: f32,
+    /// The framebuffer height when lines are set up as llvmpipe sets them up in a window-system
+    /// framebuffer (`State::y0_top`; see `line::parallelogram`).
+    pub(super) line_flip: Option<f32>,
     /// LINE_STIPPLE enabled: (LINE_STIPPLE_PATTERN, LINE_STIPPLE_REPEAT).
     pub line_stipple: Option<(u16, i32)>,
     pub(super) point_size: f32,
@@ -305,6 +308,7 @@ impl SetupCtx {
             quads_split_last: state.shade_model == gl::FLAT,
             phong: layout.nrm.is_some(),
             line_width: state.line_width,
+            line_flip: state.y0_top.then_some(state.height as f32),
             line_stipple: state
                 .enables
                 .line_stipple

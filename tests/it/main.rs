@@ -28,6 +28,7 @@ mod glu_quadric;
 mod glu_tess;
 mod glut;
 mod implementation_choices;
+mod line_ties;
 mod lists;
 mod matrices;
 mod multi_draw;

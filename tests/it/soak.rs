@@ -1351,6 +1351,7 @@ fn state_diff(a: &State, b: &State) -> Option<&'static str> {
             width,
             height,
             config,
+            y0_top,
             current,
             matrix_mode,
             modelview,

@@ -105,3 +105,81 @@ fn a_panicking_background_draw_reaches_the_caller() {
     let px = gl.renderer.color();
     assert_eq!(px[0], [0, 0, 255, 255]);
 }
+
+/// Small textured draws separated by state changes (each flush goes to the pool while the
+/// front end goes on), with the texture's image replaced and a framebuffer copy into it between
+/// draws: every draw must sample the texture as it was when the draw was flushed, exactly as
+/// drawing in place does.
+fn textured_frame(gl: &mut Context) -> (Vec<u8>, u64) {
+    gl.clear_color(0.2, 0.1, 0.3, 1.0);
+    gl.clear(gl::COLOR_BUFFER_BIT);
+    let mut tex = [0u32; 1];
+    gl.gen_textures(1, &mut tex);
+    gl.bind_texture(gl::TEXTURE_2D, tex[0]);
+    gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    gl.enable(gl::TEXTURE_2D);
+    let image = |k: u8| -> Vec<u8> {
+        (0..16u8)
+            .flat_map(|i| [i * 16, k.wrapping_mul(40), 255 - i * 8, 255])
+            .collect()
+    };
+    gl.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        4,
+        4,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&image(0)),
+    );
+    for k in 0..24u8 {
+        let x = -1.0 + f32::from(k % 6) / 3.0;
+        let y = -1.0 + f32::from(k / 6) / 2.0;
+        gl.begin(gl::QUADS);
+        for (s, t) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            gl.tex_coord2f(s, t);
+            gl.vertex2f(x + s / 3.0, y + t / 2.0);
+        }
+        gl.end();
+        // A state change that flushes, then the image changed under the flushed draw.
+        gl.tex_sub_image_2d(
+            gl::TEXTURE_2D,
+            0,
+            0,
+            0,
+            4,
+            4,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            &image(k + 1),
+        );
+        if k % 5 == 4 {
+            // The pixels drawn so far become the texture's corner texels.
+            gl.copy_tex_sub_image_2d(gl::TEXTURE_2D, 0, 0, 0, 10 * i32::from(k), 20, 2, 2);
+        }
+    }
+    (gl.to_image().into_raw(), gl.renderer.background_draws)
+}
+
+#[test]
+fn flushes_at_state_changes_draw_in_the_background_with_the_state_they_were_flushed_with() {
+    let mut a = Context::new(96, 64).expect("context");
+    let (img_a, n_a) = textured_frame(&mut a);
+    assert!(n_a >= 24, "expected a background draw per flush, got {n_a}");
+    assert_eq!(a.get_error(), gl::NO_ERROR);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("pool");
+    let (img_b, n_b) = pool.install(|| {
+        let mut b = Context::new(96, 64).expect("context");
+        textured_frame(&mut b)
+    });
+    assert_eq!(n_b, 0);
+    assert!(img_a == img_b, "the images differ");
+    let distinct: std::collections::BTreeSet<&[u8]> = img_a.chunks(4).collect();
+    assert!(distinct.len() > 40, "only {} colours", distinct.len());
+}
