@@ -103,7 +103,8 @@ enum Command {
         cpu_only: bool,
         /// Time the CPU frame stage by stage instead (CPU only, no API timing): reset, replay
         /// (the front end and the draws it starts), the final flush and readback (`to_image`),
-        /// and the draws' share of the replay.
+        /// the draws, their time on the calling thread, its waits for the pool, and how many
+        /// of the draws were handed to the pool.
         #[arg(long)]
         stages: bool,
     },
@@ -528,7 +529,7 @@ fn bench_stages(
                     ms(t0, t1),
                     ms(t1, t2),
                     ms(t2, t3),
-                    (s1.draws - s0.draws) as f64,
+                    (s1.draws - s0.draws + s1.handoffs - s0.handoffs) as f64,
                     dms(s0.draw_ns, s1.draw_ns) + dms(s0.handoff_ns, s1.handoff_ns),
                     dms(s0.wait_ns, s1.wait_ns),
                     (s1.handoffs - s0.handoffs) as f64,

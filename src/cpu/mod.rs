@@ -118,11 +118,12 @@ pub struct Renderer {
 /// a draw; nothing here changes what is drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawStats {
-    /// Batches drawn on the calling thread (a state change, Clear, a read, ...).
+    /// Batches drawn in place (by a caller running on the pool itself).
     pub draws: u64,
     /// Their time: vertex stage, setup and rasterisation, including the pool's part.
     pub draw_ns: u64,
-    /// Batches of 32k vertices handed to the pool (`flush_if_large`).
+    /// Batches handed to the pool to be set up and rasterised in the background: every flush
+    /// of a caller off the pool, at 32k vertices (`flush_if_large`) or at a state change.
     pub handoffs: u64,
     /// Their time on the calling thread: the vertex stage and the hand-off.
     pub handoff_ns: u64,
@@ -329,6 +330,8 @@ impl Renderer {
         let t0 = std::time::Instant::now();
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, false);
         self.draw_in_background(state, plan);
+        self.stats.handoffs += 1;
+        self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
     }
 
     /// Hands the batch, whose vertex stage `plan` describes, to the pool to be set up and
@@ -367,8 +370,6 @@ impl Renderer {
             // The receiver lives until `wait` takes this; a send cannot fail before that.
             let _ = tx.send((core, batch, verts, panicked));
         });
-        self.stats.handoffs += 1;
-        self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
     }
 
     /// Waits for the background draw, if any, and takes back what it owned. A panic of that
@@ -516,8 +517,12 @@ impl Renderer {
             // The vertex stage splits across the pool only when nothing is drawing there;
             // otherwise it runs here, beside the draw before it.
             let parallel = self.pending.is_none() && self.batch.idx.len() >= PARALLEL_SETUP;
+            let t0 = std::time::Instant::now();
             let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, parallel);
-            return self.draw_in_background(state, plan);
+            self.draw_in_background(state, plan);
+            self.stats.handoffs += 1;
+            self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
+            return;
         }
         // A caller running on the pool itself draws in place (see `flush_if_large`).
         self.wait();
