@@ -18,7 +18,7 @@ use super::fragops::{compare, ColorWrite, Ops};
 use super::framebuffer::{depth_unorm, unorm8, TILE};
 use super::lanes::LANES;
 use super::setup::{RLayout, RPrim, F_AALINE, F_AAPOINT, F_BACK, F_FLAT, F_LINE, F_PHONG, MAXV};
-use super::texture::{Sampler, UnitTexels};
+use super::texture::{Sampler, SpanLambda, UnitTexels};
 use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
@@ -549,6 +549,8 @@ impl FragCtx<'_> {
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - oy) as f32;
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        // Each quad's λ once (not once per lane): computed as the groups reach it.
+        let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
         let mut g = 0;
         while g < n.min(64) {
             let m = (mask >> g) & ((1 << LANES) - 1);
@@ -559,12 +561,10 @@ impl FragCtx<'_> {
             let vs = &mut vl[..nv];
             super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
-                let qx: [f32; LANES] =
-                    std::array::from_fn(|l| (((x0 + (g + l) as i32) & !1) - ox) as f32);
-                for (lu, t) in lam.iter_mut().zip(&self.tex) {
+                for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
                     let Some((tx, to)) = *t else { break };
                     if tx.needs_lambda() {
-                        *lu = tx.quad_lambda_lanes(planes, to, qx, qy);
+                        *lu = sq.lanes(tx, planes, to, x0 + g as i32);
                     }
                 }
             }
@@ -783,6 +783,7 @@ impl FragCtx<'_> {
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - p.bbox[1]) as f32;
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
         let mut v = [[0.0f32; LANES]; super::setup::MAXV];
         let mut c = 0;
         while c < n {
@@ -816,12 +817,10 @@ impl FragCtx<'_> {
             } else {
                 // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
                 if lod {
-                    let qx: [f32; LANES] =
-                        std::array::from_fn(|l| (((x0 + (c + l) as i32) & !1) - ox) as f32);
-                    for (lu, t) in lam.iter_mut().zip(&self.tex) {
+                    for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
                         let Some((tx, to)) = *t else { break };
                         if tx.needs_lambda() {
-                            *lu = tx.quad_lambda_lanes(planes, to, qx, qy);
+                            *lu = sq.lanes(tx, planes, to, x0 + c as i32);
                         }
                     }
                 }

@@ -216,9 +216,10 @@ impl Sampler {
     }
 
     /// [`Sampler::quad_lambda`] for eight quads at once, lane l's quad at (`qx[l]`, `qy`): the
-    /// same operations in the same order on lanes (the division by q as `divps`), so each lane
-    /// holds exactly the scalar result's bits. A cube map takes the scalar routine lane by lane
-    /// (its face choice differs between lanes).
+    /// same operations in the same order on lanes (the division by q as `divps`), written as
+    /// plain loops over lane arrays so that the compiler keeps them in vector registers; each
+    /// lane holds exactly the scalar result's bits. A cube map takes the scalar routine lane by
+    /// lane (its face choice differs between lanes).
     #[inline]
     pub fn quad_lambda_lanes(
         &self,
@@ -231,45 +232,38 @@ impl Sampler {
             return qx.map(|x| self.quad_lambda(planes, to, x, qy));
         }
         let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-        let plane = |j: usize| (g(3 * j), g(3 * j + 1), g(3 * j + 2));
-        // (a + dx·x) + dy·y, as `pl` in `quad_lambda` evaluates a plane.
-        let ev = |(a, dx, dy): (f32, f32, f32), x: [f32; LANES], y: f32| {
-            let yt = dy * y;
-            x.map(|x| (a + dx * x) + yt)
-        };
+        let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
         let (ps, pt, pr, pq) = (plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to));
-        let at = |x: [f32; LANES], y: f32| -> [[f32; LANES]; 3] {
-            let q = ev(pq, x, y);
-            let rq = recip_lanes(q);
-            let inv: [f32; LANES] = std::array::from_fn(|l| if q[l] != 0.0 { rq[l] } else { 0.0 });
-            let scaled = |p: (f32, f32, f32), size: f32| {
-                let c = ev(p, x, y);
-                std::array::from_fn(|l| c[l] * inv[l] * size)
-            };
-            let u = scaled(ps, self.size[0]);
-            let v = if self.dims >= 2 {
-                scaled(pt, self.size[1])
-            } else {
-                [0.0; LANES]
-            };
-            let w = if self.dims == 3 {
-                scaled(pr, self.size[2])
-            } else {
-                [0.0; LANES]
-            };
-            [u, v, w]
-        };
-        let p0 = at(qx, qy);
-        let px = at(qx.map(|x| x + 1.0), qy);
-        let py = at(qx, qy + 1.0);
-        let len2 = |a: &[[f32; LANES]; 3]| -> [f32; LANES] {
-            std::array::from_fn(|l| {
-                let d = [a[0][l] - p0[0][l], a[1][l] - p0[1][l], a[2][l] - p0[2][l]];
-                d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
-            })
-        };
-        let (lx, ly) = (len2(&px), len2(&py));
-        std::array::from_fn(|l| 0.5 * fast_log2(lx[l].max(ly[l])))
+        let (size, dims) = (self.size, self.dims);
+        let mut qx1 = qx;
+        for x in &mut qx1 {
+            *x += 1.0;
+        }
+        let p0 = lambda_point(&ps, &pt, &pr, &pq, &qx, qy, size, dims);
+        let px = lambda_point(&ps, &pt, &pr, &pq, &qx1, qy, size, dims);
+        let py = lambda_point(&ps, &pt, &pr, &pq, &qx, qy + 1.0, size, dims);
+        // `len2` of `quad_lambda` for both neighbours, then the larger, lane by lane.
+        let mut rho2 = [0.0f32; LANES];
+        for l in 0..LANES {
+            let (ax, ay, az) = (
+                px[0][l] - p0[0][l],
+                px[1][l] - p0[1][l],
+                px[2][l] - p0[2][l],
+            );
+            let (bx, by, bz) = (
+                py[0][l] - p0[0][l],
+                py[1][l] - p0[1][l],
+                py[2][l] - p0[2][l],
+            );
+            let lx = ax * ax + ay * ay + az * az;
+            let ly = bx * bx + by * by + bz * bz;
+            rho2[l] = lx.max(ly);
+        }
+        let mut out = [0.0f32; LANES];
+        for l in 0..LANES {
+            out[l] = 0.5 * fast_log2_lane(rho2[l]);
+        }
+        out
     }
 
     /// The texture unit this sampler belongs to.
@@ -329,9 +323,10 @@ impl Sampler {
     /// The filtered texels of eight fragments (the texel `shade` filters for each, lane-major)
     /// from their coordinates `coords` (s, t, r, q lanes, perspective-correct) and λ before
     /// bias; lanes outside `m` are left zero. Only for a sampler with [`Sampler::lanes_ok`].
-    /// The wrap modes and filters are chosen once for the group, the levels once per group of
-    /// lanes that share one; each lane computes `shade`'s expressions in the same order (the
-    /// division by q as `divps`), so its texel has the scalar texel's bits.
+    /// Each lane's level(s), filter and weight come from [`Sampler::select`] (as in
+    /// `sample_face`), then one pass per filter (NEAREST, LINEAR) covers every lane whatever its
+    /// level; each lane computes `shade`'s expressions in the same order (the division by q as
+    /// `divps`), so its texel has the scalar texel's bits.
     #[inline]
     pub fn texels_lanes(
         &self,
@@ -341,26 +336,76 @@ impl Sampler {
     ) -> TexelLanes {
         let [s, t, r, q] = coords;
         let rq = recip_lanes(*q);
-        let inv: [f32; LANES] = std::array::from_fn(|l| if q[l] != 0.0 { rq[l] } else { 0.0 });
-        let s: [f32; LANES] = std::array::from_fn(|l| s[l] * inv[l]);
-        let t: [f32; LANES] = std::array::from_fn(|l| t[l] * inv[l]);
-        let r: [f32; LANES] = std::array::from_fn(|l| r[l] * inv[l]);
+        let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        for l in 0..LANES {
+            let inv = if q[l] != 0.0 { rq[l] } else { 0.0 };
+            ss[l] = s[l] * inv;
+            tt[l] = t[l] * inv;
+            rr[l] = r[l] * inv;
+        }
         let mut out = [[0.0f32; 4]; LANES];
+        let base = [self.base_level; LANES];
         match self.route {
-            Route::Nearest => {
-                self.filter_lanes(self.base_level, gl::NEAREST, &s, &t, &r, m, &mut out)
-            }
-            Route::Linear => {
-                self.filter_lanes(self.base_level, gl::LINEAR, &s, &t, &r, m, &mut out)
-            }
-            Route::Lod => self.lod_lanes(&s, &t, &r, lambda, m, &mut out),
+            Route::Nearest => self.pass(false, &base, &ss, &tt, &rr, m, &mut out),
+            Route::Linear => self.pass(true, &base, &ss, &tt, &rr, m, &mut out),
+            Route::Lod => self.lod_lanes(&ss, &tt, &rr, lambda, m, &mut out),
         }
         out
     }
 
+    /// The level, filter (LINEAR: true) and second-level weight f (0: one level only; else
+    /// the result is (1 - f)·level + f·(level + 1)) that λ before bias selects (§3.8.8,
+    /// §3.8.9): the choice [`Sampler::sample_face`] and [`Sampler::lod_lanes`] share. The
+    /// ceil and floor are computed by truncation (exact on the small positive values involved:
+    /// λ is bounded below by c ≥ 0 here and at most `span` + 2 after the cap), since
+    /// `f32::ceil`/`floor` are library calls on the x86-64 baseline.
+    #[inline(always)]
+    fn select(&self, lambda: f32) -> (i32, bool, f32) {
+        // §3.8.8 clamps λ to [TEXTURE_MIN_LOD, TEXTURE_MAX_LOD], but TexParameter accepts any
+        // float (§3.8.4), so min > max and NaN reach here; `f32::clamp` would panic. The order is
+        // llvmpipe's (`lp_build_lod_selector`: min with MAX_LOD, then max with MIN_LOD): when
+        // min > max, MIN_LOD wins. A NaN bound does not bound (f32::min/max ignore NaN); a NaN
+        // λ (NaN coordinates or bias) is taken as 0, before the bounds, as it always was.
+        let lambda = lambda + self.bias;
+        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        let lambda = lambda.min(self.max_lod).max(self.min_lod);
+        if lambda <= self.c {
+            return (self.base_level, self.mag != gl::NEAREST, 0.0);
+        }
+        let span = (self.last - self.base_level) as f32;
+        let lin = lin(self.min) == gl::LINEAR;
+        match self.min {
+            gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                // d = base + ceil(λ + 1/2) - 1 for λ > 1/2, else base; at most q. λ + 1/2 > 1
+                // here (not NaN, possibly infinite); capping it at span + 2 first changes no
+                // result (ceil is monotonic and ceil(span + 2) - 1 > span), and below 2^24 the
+                // truncation is exact, so ceil is the truncation plus one where it fell short.
+                let d = if lambda <= 0.5 {
+                    0.0
+                } else {
+                    let x = (lambda + 0.5).min(span + 2.0);
+                    let tr = x as i32 as f32;
+                    let c = if tr < x { tr + 1.0 } else { tr };
+                    (c - 1.0).min(span)
+                };
+                (self.base_level + d as i32, lin, 0.0)
+            }
+            gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                if lambda >= span {
+                    return (self.last, lin, 0.0);
+                }
+                // 0 <= c < λ < span: floor is the truncation, exact.
+                let d1 = lambda as i32;
+                let f = lambda - d1 as f32;
+                (self.base_level + d1, lin, f)
+            }
+            f => (self.base_level, f != gl::NEAREST, 0.0),
+        }
+    }
+
     /// `sample_face` for the lanes of `m` (face 0, 2D): each lane's level(s), filter and
-    /// weight as `sample_face` chooses them, then one filter call per group of lanes sharing a
-    /// level and filter.
+    /// weight from [`Sampler::select`], a pass per filter over the lanes using it (each lane
+    /// on its own level), then the second level of the trilinear lanes and the blend.
     #[inline]
     fn lod_lanes(
         &self,
@@ -371,56 +416,32 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let span = (self.last - self.base_level) as f32;
-        // Per lane: the first level and its filter, the second level (trilinear) and its weight.
         let mut la = [self.base_level; LANES];
-        let mut fa = [self.mag; LANES];
-        let mut second = 0u8;
+        let mut lb = [self.base_level; LANES];
         let mut f = [0.0f32; LANES];
+        let (mut linear, mut second) = (0u8, 0u8);
         for l in 0..LANES {
-            if m & (1 << l) == 0 {
-                continue;
-            }
-            // The same steps as `sample_face`.
-            let lambda = lambda[l] + self.bias;
-            let lambda = if lambda.is_nan() { 0.0 } else { lambda };
-            let lambda = lambda.min(self.max_lod).max(self.min_lod);
-            if lambda <= self.c {
-                continue;
-            }
-            match self.min {
-                gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
-                    let d = if lambda <= 0.5 {
-                        0.0
-                    } else {
-                        ((lambda + 0.5).ceil() - 1.0).min(span)
-                    };
-                    la[l] = self.base_level + d as i32;
-                    fa[l] = lin(self.min);
-                }
-                gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
-                    fa[l] = lin(self.min);
-                    if lambda >= span {
-                        la[l] = self.last;
-                        continue;
-                    }
-                    let d1 = lambda.floor();
-                    f[l] = lambda - d1;
-                    la[l] = self.base_level + d1 as i32;
-                    if f[l] != 0.0 {
-                        second |= 1 << l;
-                    }
-                }
-                min => fa[l] = min,
-            }
+            let (lv, lin, w) = self.select(lambda[l]);
+            la[l] = lv;
+            f[l] = w;
+            linear |= u8::from(lin) << l;
+            second |= u8::from(w != 0.0) << l;
         }
-        self.grouped_lanes(&la, &fa, s, t, r, m, out);
+        let (linear, second) = (linear & m, second & m);
+        self.pass(false, &la, s, t, r, m & !linear, out);
+        self.pass(true, &la, s, t, r, linear, out);
         if second == 0 {
             return;
         }
-        let lb: [i32; LANES] = std::array::from_fn(|l| la[l].saturating_add(1));
+        for l in 0..LANES {
+            if second & (1 << l) != 0 {
+                // f ≠ 0 only below `span`: level + 1 is at most `last`.
+                lb[l] = la[l].saturating_add(1);
+            }
+        }
         let mut b = [[0.0f32; 4]; LANES];
-        self.grouped_lanes(&lb, &fa, s, t, r, second, &mut b);
+        self.pass(false, &lb, s, t, r, second & !linear, &mut b);
+        self.pass(true, &lb, s, t, r, second & linear, &mut b);
         for l in 0..LANES {
             if second & (1 << l) != 0 {
                 let (a, b, f) = (out[l], b[l], f[l]);
@@ -429,61 +450,55 @@ impl Sampler {
         }
     }
 
-    /// `filter` for the lanes of `m`, lane l on level `lv[l]` with filter `fl[l]`: one
-    /// [`Sampler::filter_lanes`] per distinct (level, filter) among the lanes.
+    /// NEAREST (`linear` false) or LINEAR on a 2D texture for the lanes of `m`, lane l on
+    /// level `lv[l]`: `nearest` and `linear` (dims 2) with the wrap mode chosen once; each
+    /// texel through `fetch`'s depth comparison against the lane's `r` when comparison is on.
+    /// A lane whose level is missing gets (0, 0, 0, 0), as `nearest` and `linear` give.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn grouped_lanes(
+    fn pass(
         &self,
+        linear: bool,
         lv: &[i32; LANES],
-        fl: &[u32; LANES],
         s: &[f32; LANES],
         t: &[f32; LANES],
         r: &[f32; LANES],
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let mut rest = m;
-        while rest != 0 {
-            let first = rest.trailing_zeros() as usize;
-            let key = (lv[first], fl[first]);
-            let mut sub = 0u8;
-            for l in first..LANES {
-                if rest & (1 << l) != 0 && (lv[l], fl[l]) == key {
-                    sub |= 1 << l;
-                }
-            }
-            self.filter_lanes(key.0, key.1, s, t, r, sub, out);
-            rest &= !sub;
-        }
-    }
-
-    /// NEAREST or LINEAR on level `level` of a 2D texture for the lanes of `m`: `nearest` and
-    /// `linear` (dims 2) with the wrap mode chosen once; each texel through `fetch`'s depth
-    /// comparison against the lane's `r` when comparison is on.
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn filter_lanes(
-        &self,
-        level: i32,
-        filter: u32,
-        s: &[f32; LANES],
-        t: &[f32; LANES],
-        r: &[f32; LANES],
-        m: u8,
-        out: &mut TexelLanes,
-    ) {
-        let Some(lv) = self.obj.face_level(0, level) else {
-            for (l, o) in out.iter_mut().enumerate() {
-                if m & (1 << l) != 0 {
-                    *o = [0.0; 4];
-                }
-            }
+        if m == 0 {
             return;
-        };
+        }
+        // Each lane's level: its texels and size (looked up once per run of equal levels).
+        let empty: &[[f32; 4]] = &[];
+        let mut tx = [empty; LANES];
+        let (mut w, mut h) = ([1i32; LANES], [1i32; LANES]);
+        let mut have = 0u8;
+        let mut cur: Option<(i32, Option<&Level>)> = None;
+        for l in 0..LANES {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let level = match cur {
+                Some((k, v)) if k == lv[l] => v,
+                _ => {
+                    let v = self.obj.face_level(0, lv[l]);
+                    cur = Some((lv[l], v));
+                    v
+                }
+            };
+            if let Some(v) = level {
+                (tx[l], w[l], h[l]) = (&v.texels[..], v.width, v.height);
+                have |= 1 << l;
+            } else {
+                out[l] = [0.0; 4];
+            }
+        }
+        let m = m & have;
+        let views = Views { tx, w, h };
         match self.compare {
-            None => self.filter_on(lv, filter, s, t, m, out, |_, t| t),
-            Some(func) => self.filter_on(lv, filter, s, t, m, out, |l, t| {
+            None => self.pass_on(linear, &views, s, t, m, out, |_, t| t),
+            Some(func) => self.pass_on(linear, &views, s, t, m, out, |l, t| {
                 // `fetch`'s comparison.
                 let d = t[0];
                 let r = r[l].clamp(0.0, 1.0);
@@ -502,14 +517,16 @@ impl Sampler {
         }
     }
 
-    /// `filter_lanes` on level `lv`, `cmp(l, texel)` giving what `fetch` makes of lane l's
-    /// texel (itself, or the comparison result).
+    /// `pass` on the lanes' levels `v`, `cmp(l, texel)` giving what `fetch` makes of lane l's
+    /// texel (itself, or the comparison result). The wrap indices and weights are computed on
+    /// all eight lanes (integer indices and inside flags, no `Option`), the texels fetched lane
+    /// by lane (a gather) and blended with the weights computed on lanes.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn filter_on(
+    fn pass_on(
         &self,
-        lv: &Level,
-        filter: u32,
+        linear: bool,
+        v: &Views,
         s: &[f32; LANES],
         t: &[f32; LANES],
         m: u8,
@@ -518,40 +535,70 @@ impl Sampler {
     ) {
         // `fetch`'s texel: the image's (`texel3` at k = 0 is `texel`) or the border colour.
         let border = crate::texture::keep(self.base, self.border);
-        let texel = |l: usize, i: Option<i32>, j: Option<i32>| {
+        let texel = |l: usize, i: i32, j: i32, inside: bool| {
             cmp(
                 l,
-                match (i, j) {
-                    (Some(i), Some(j)) => lv.texel(i, j),
-                    _ => border,
+                if inside {
+                    // `Level::texel`'s expression.
+                    let k = (j * v.w[l] + i) as usize;
+                    v.tx[l].get(k).copied().unwrap_or([0.0; 4])
+                } else {
+                    border
                 },
             )
         };
-        if filter == gl::NEAREST {
-            let i = wrap_nearest_lanes(self.wrap[0], s, lv.width);
-            let j = wrap_nearest_lanes(self.wrap[1], t, lv.height);
+        if !linear {
+            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, &v.w);
+            let (j, ji) = wrap_nearest_lanes(self.wrap[1], t, &v.h);
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
-                    *o = texel(l, i[l], j[l]);
+                    *o = texel(l, i[l], j[l], ii[l] && ji[l]);
                 }
             }
             return;
         }
-        let (i0, i1, a) = wrap_linear_lanes(self.wrap[0], s, lv.width);
-        let (j0, j1, b) = wrap_linear_lanes(self.wrap[1], t, lv.height);
+        let x = wrap_linear_lanes(self.wrap[0], s, &v.w);
+        let y = wrap_linear_lanes(self.wrap[1], t, &v.h);
+        // The four weights of eq. 3.24 as the scalar expression groups them:
+        // (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11.
+        let mut wt = [[0.0f32; LANES]; 4];
+        for (l, (&a, &b)) in x.w.iter().zip(&y.w).enumerate() {
+            wt[0][l] = (1.0 - a) * (1.0 - b);
+            wt[1][l] = a * (1.0 - b);
+            wt[2][l] = (1.0 - a) * b;
+            wt[3][l] = a * b;
+        }
+        let edge = |mode: u32| matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER);
+        if !edge(self.wrap[0]) && !edge(self.wrap[1]) {
+            // No index can fall outside the image (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT on
+            // both axes): the four texels of each lane without the border choice, the row
+            // offsets j·w once per row (`Level::texel`'s (j·w + i) as usize).
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let (tx, w) = (v.tx[l], v.w[l]);
+                let (r0, r1) = (y.i0[l] * w, y.i1[l] * w);
+                let at = |k: i32| cmp(l, tx.get(k as usize).copied().unwrap_or([0.0; 4]));
+                let (t00, t10) = (at(r0 + x.i0[l]), at(r0 + x.i1[l]));
+                let (t01, t11) = (at(r1 + x.i0[l]), at(r1 + x.i1[l]));
+                let (w00, w10, w01, w11) = (wt[0][l], wt[1][l], wt[2][l], wt[3][l]);
+                *o = std::array::from_fn(|c| {
+                    w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]
+                });
+            }
+            return;
+        }
         for (l, o) in out.iter_mut().enumerate() {
             if m & (1 << l) == 0 {
                 continue;
             }
-            let (t00, t10) = (texel(l, i0[l], j0[l]), texel(l, i1[l], j0[l]));
-            let (t01, t11) = (texel(l, i0[l], j1[l]), texel(l, i1[l], j1[l]));
-            let (a, b) = (a[l], b[l]);
-            *o = std::array::from_fn(|c| {
-                (1.0 - a) * (1.0 - b) * t00[c]
-                    + a * (1.0 - b) * t10[c]
-                    + (1.0 - a) * b * t01[c]
-                    + a * b * t11[c]
-            });
+            let t00 = texel(l, x.i0[l], y.i0[l], x.in0[l] && y.in0[l]);
+            let t10 = texel(l, x.i1[l], y.i0[l], x.in1[l] && y.in0[l]);
+            let t01 = texel(l, x.i0[l], y.i1[l], x.in0[l] && y.in1[l]);
+            let t11 = texel(l, x.i1[l], y.i1[l], x.in1[l] && y.in1[l]);
+            let (w00, w10, w01, w11) = (wt[0][l], wt[1][l], wt[2][l], wt[3][l]);
+            *o = std::array::from_fn(|c| w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]);
         }
     }
 
@@ -708,44 +755,14 @@ impl Sampler {
 
     /// [`Sampler::sample`] on face `face` of a cube map (0 for the other targets).
     fn sample_face(&self, face: usize, s: f32, t: f32, r: f32, lambda: f32) -> [f32; 4] {
-        // §3.8.8 clamps λ to [TEXTURE_MIN_LOD, TEXTURE_MAX_LOD], but TexParameter accepts any
-        // float (§3.8.4), so min > max and NaN reach here; `f32::clamp` would panic. The order is
-        // llvmpipe's (`lp_build_lod_selector`: min with MAX_LOD, then max with MIN_LOD): when
-        // min > max, MIN_LOD wins. A NaN bound does not bound (f32::min/max ignore NaN); a NaN
-        // λ (NaN coordinates or bias) is taken as 0, before the bounds, as it always was.
-        let lambda = lambda + self.bias;
-        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
-        let lambda = lambda.min(self.max_lod).max(self.min_lod);
-        if lambda <= self.c {
-            return self.filter(face, self.base_level, self.mag, s, t, r);
+        let (level, linear, f) = self.select(lambda);
+        let filter = if linear { gl::LINEAR } else { gl::NEAREST };
+        let a = self.filter(face, level, filter, s, t, r);
+        if f == 0.0 {
+            return a;
         }
-        let span = (self.last - self.base_level) as f32;
-        match self.min {
-            gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
-                // d = base + ceil(λ + 1/2) - 1 for λ > 1/2, else base; at most q.
-                let d = if lambda <= 0.5 {
-                    0.0
-                } else {
-                    ((lambda + 0.5).ceil() - 1.0).min(span)
-                };
-                self.filter(face, self.base_level + d as i32, lin(self.min), s, t, r)
-            }
-            gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
-                if lambda >= span {
-                    return self.filter(face, self.last, lin(self.min), s, t, r);
-                }
-                let d1 = lambda.floor();
-                let f = lambda - d1;
-                let l1 = self.base_level + d1 as i32;
-                let a = self.filter(face, l1, lin(self.min), s, t, r);
-                if f == 0.0 {
-                    return a;
-                }
-                let b = self.filter(face, l1 + 1, lin(self.min), s, t, r);
-                std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f)
-            }
-            f => self.filter(face, self.base_level, f, s, t, r),
-        }
+        let b = self.filter(face, level + 1, filter, s, t, r);
+        std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f)
     }
 
     /// NEAREST or LINEAR on one level (§3.8.8, the wrap modes of §3.8.7).
@@ -1034,88 +1051,394 @@ fn mirror(s: f32) -> f32 {
 
 /// REPEAT's texel index `i.rem_euclid(n)` for `n` >= 1 (§3.8.7): a mask when `n` is a power
 /// of two (the usual texture, and the same value for every i32 in two's complement), sparing
-/// the integer division that dominated a bilinear REPEAT sample (four per 2D sample).
-#[inline(always)]
+/// the integer division that dominated a bilinear REPEAT sample (four per 2D sample). What
+/// [`wrap_nearest`] and [`wrap_linear`] compute through [`repeat_p`].
+#[cfg(test)]
 fn repeat(i: i32, n: i32) -> i32 {
-    if n & (n - 1) == 0 {
-        i & (n - 1)
-    } else {
-        i.rem_euclid(n)
-    }
+    repeat_p(i, n, n & (n - 1) == 0)
 }
 
 /// The NEAREST texel index along an axis of `n` texels; None: the border colour.
 #[inline(always)]
 fn wrap_nearest(mode: u32, s: f32, n: i32) -> Option<i32> {
-    let n = n.max(1);
-    match mode {
-        gl::REPEAT => Some(repeat(ifloor(s * n as f32), n)),
-        gl::MIRRORED_REPEAT => Some(ifloor(mirror(s) * n as f32).clamp(0, n - 1)),
-        gl::CLAMP_TO_BORDER => {
-            let i = ifloor(s * n as f32);
-            (0..n).contains(&i).then_some(i)
-        }
-        // CLAMP and CLAMP_TO_EDGE agree for NEAREST: s in [0, 1], i = n taken as n - 1.
-        _ => Some(ifloor(s * n as f32).clamp(0, n - 1)),
-    }
+    let m = n.max(1);
+    let (i, inside) = wrap_nearest_i(mode, s, n, m & (m - 1) == 0);
+    inside.then_some(i)
 }
 
 /// The two LINEAR texel indices along an axis and the weight of the second (§3.8.8 eq. 3.24):
 /// u = s·n - 1/2, i0 = floor(u), i1 = i0 + 1, α = frac(u); None: the border colour.
 #[inline(always)]
 fn wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
+    let m = n.max(1);
+    let (i0, i1, a, in0, in1) = wrap_linear_i(mode, s, n, m & (m - 1) == 0);
+    (in0.then_some(i0), in1.then_some(i1), a)
+}
+
+/// One perspective-correct point of [`Sampler::quad_lambda_lanes`] on lanes: planes s, t, r
+/// and q (each (a, ∂x, ∂y)) at (`x[l]`, `y`), divided by q (0 where q is 0) and scaled by
+/// `size`; the components a target of `dims` dimensions lacks are 0, as in `quad_lambda`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn lambda_point(
+    ps: &[f32; 3],
+    pt: &[f32; 3],
+    pr: &[f32; 3],
+    pq: &[f32; 3],
+    x: &[f32; LANES],
+    y: f32,
+    size: [f32; 3],
+    dims: usize,
+) -> [[f32; LANES]; 3] {
+    // (a + dx·x) + dy·y, as `pl` in `quad_lambda` evaluates a plane.
+    let ev = |p: &[f32; 3]| {
+        let yt = p[2] * y;
+        let mut v = [0.0f32; LANES];
+        for l in 0..LANES {
+            v[l] = (p[0] + p[1] * x[l]) + yt;
+        }
+        v
+    };
+    let q = ev(pq);
+    let rq = recip_lanes(q);
+    let mut inv = [0.0f32; LANES];
+    for l in 0..LANES {
+        inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
+    }
+    let scaled = |p: &[f32; 3], size: f32| {
+        let c = ev(p);
+        let mut v = [0.0f32; LANES];
+        for l in 0..LANES {
+            v[l] = c[l] * inv[l] * size;
+        }
+        v
+    };
+    let u = scaled(ps, size[0]);
+    let v = if dims >= 2 {
+        scaled(pt, size[1])
+    } else {
+        [0.0; LANES]
+    };
+    let w = if dims == 3 {
+        scaled(pr, size[2])
+    } else {
+        [0.0; LANES]
+    };
+    [u, v, w]
+}
+
+/// [`fast_log2`] without the library call on the paths a lane takes: the same value for
+/// every input (a NaN for a NaN or a negative input, whatever its payload; -∞ for ±0, +∞ for
+/// +∞), written as selects so that a loop of it stays in vector registers.
+#[inline(always)]
+fn fast_log2_lane(x: f32) -> f32 {
+    let bits = x.to_bits();
+    let e = ((bits >> 23) & 0xff) as i32 - 127;
+    let m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    let v = e as f32 + (m - 1.0);
+    let special = if x == 0.0 {
+        f32::NEG_INFINITY
+    } else if x == f32::INFINITY {
+        x
+    } else {
+        f32::NAN
+    };
+    // `&`, not `&&`: no branch.
+    if (x > 0.0) & (x < f32::INFINITY) {
+        v
+    } else {
+        special
+    }
+}
+
+/// The levels the lanes of a [`Sampler::pass`] read: lane l's texels and width and height.
+struct Views<'a> {
+    tx: [&'a [[f32; 4]]; LANES],
+    w: [i32; LANES],
+    h: [i32; LANES],
+}
+
+/// REPEAT's index `i.rem_euclid(n)` for `n` >= 1, as a mask when the caller knows `n` is a
+/// power of two (`p2`; the same value for every i32 in two's complement).
+#[inline(always)]
+fn repeat_p(i: i32, n: i32, p2: bool) -> i32 {
+    if p2 {
+        i & (n - 1)
+    } else {
+        i.rem_euclid(n)
+    }
+}
+
+/// The value [`wrap_nearest`] floors for coordinate `s` on an axis of `n` texels (n taken as
+/// at least 1): u = s·n, of MIRRORED_REPEAT's mirrored s.
+#[inline(always)]
+fn nearest_u(mode: u32, s: f32, n: i32) -> f32 {
     let n = n.max(1);
-    let nf = n as f32;
+    match mode {
+        gl::MIRRORED_REPEAT => mirror(s) * n as f32,
+        _ => s * n as f32,
+    }
+}
+
+/// [`wrap_nearest`]'s index from i = floor(u) (`ifloor` of [`nearest_u`]) and whether it is
+/// inside the image (false: the border colour), `p2` telling whether `n.max(1)` is a power of
+/// two. The clamps are written as max/min (the same values, n - 1 >= 0) so that no panic path
+/// stays in a lane loop.
+#[inline(always)]
+fn nearest_finish(mode: u32, i: i32, n: i32, p2: bool) -> (i32, bool) {
+    let n = n.max(1);
+    match mode {
+        gl::REPEAT => (repeat_p(i, n, p2), true),
+        gl::CLAMP_TO_BORDER => (i, i >= 0 && i < n),
+        // CLAMP and CLAMP_TO_EDGE agree for NEAREST: s in [0, 1], i = n taken as n - 1;
+        // MIRRORED_REPEAT's mirrored s is in [0, 1] too.
+        _ => (i.max(0).min(n - 1), true),
+    }
+}
+
+/// [`wrap_nearest`] as an index and whether it is inside the image.
+#[inline(always)]
+fn wrap_nearest_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, bool) {
+    nearest_finish(mode, ifloor(nearest_u(mode, s, n)), n, p2)
+}
+
+/// The value u = s·n - 1/2 [`wrap_linear`] floors (after MIRRORED_REPEAT's mirror or CLAMP's
+/// clamp of s; a NaN u taken as 0), on an axis of `n` texels (n taken as at least 1).
+#[inline(always)]
+fn linear_u(mode: u32, s: f32, n: i32) -> f32 {
+    let nf = n.max(1) as f32;
     let s = match mode {
         gl::MIRRORED_REPEAT => mirror(s),
         gl::CLAMP => s.clamp(0.0, 1.0),
         _ => s,
     };
     let u = s * nf - 0.5;
-    let u = if u.is_nan() { 0.0 } else { u };
-    let i0 = ifloor(u);
+    if u.is_nan() {
+        0.0
+    } else {
+        u
+    }
+}
+
+/// [`wrap_linear`]'s indices, the weight of the second, and whether each index is inside the
+/// image (false: the border colour), from u ([`linear_u`]) and i0 = floor(u) (`ifloor`);
+/// `p2` as for [`nearest_finish`].
+#[inline(always)]
+fn linear_finish(mode: u32, u: f32, i0: i32, n: i32, p2: bool) -> (i32, i32, f32, bool, bool) {
+    let n = n.max(1);
     // |u| beyond 2^24 has no fraction; a saturated i0 must not produce a weight outside [0, 1].
     let a = (u - i0 as f32).clamp(0.0, 1.0);
     let i1 = i0.saturating_add(1);
-    let inside = |i: i32| (0..n).contains(&i).then_some(i);
     match mode {
-        gl::REPEAT => (Some(repeat(i0, n)), Some(repeat(i1, n)), a),
-        gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
+        gl::REPEAT => (repeat_p(i0, n, p2), repeat_p(i1, n, p2), a, true, true),
+        gl::CLAMP_TO_BORDER | gl::CLAMP => (i0, i1, a, i0 >= 0 && i0 < n, i1 >= 0 && i1 < n),
         // CLAMP_TO_EDGE and MIRRORED_REPEAT: indices clamped to the edge texels.
-        _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),
+        _ => (i0.max(0).min(n - 1), i1.max(0).min(n - 1), a, true, true),
     }
 }
 
-/// [`wrap_nearest`] on eight lanes, the mode chosen once (each arm inlines the scalar
-/// function with a constant mode, so every lane is the scalar index).
+/// [`wrap_linear`]'s indices, weight and inside flags.
 #[inline(always)]
-fn wrap_nearest_lanes(mode: u32, s: &[f32; LANES], n: i32) -> [Option<i32>; LANES] {
-    match mode {
-        gl::REPEAT => s.map(|s| wrap_nearest(gl::REPEAT, s, n)),
-        gl::MIRRORED_REPEAT => s.map(|s| wrap_nearest(gl::MIRRORED_REPEAT, s, n)),
-        gl::CLAMP_TO_BORDER => s.map(|s| wrap_nearest(gl::CLAMP_TO_BORDER, s, n)),
-        _ => s.map(|s| wrap_nearest(mode, s, n)),
+fn wrap_linear_i(mode: u32, s: f32, n: i32, p2: bool) -> (i32, i32, f32, bool, bool) {
+    let u = linear_u(mode, s, n);
+    linear_finish(mode, u, ifloor(u), n, p2)
+}
+
+/// [`ifloor`] on eight lanes: SSE2's `cvttps2dq` truncation with `as i32`'s saturation
+/// (2^31 and above to i32::MAX, NaN to 0; below -2^31 it already gives i32::MIN), then one
+/// step down where the truncation exceeds x, except from i32::MIN (`saturating_sub`): each
+/// lane is `ifloor`'s value. The compiler leaves the saturating cast scalar.
+#[inline(always)]
+fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let half = |h: [f32; 4]| -> [i32; 4] {
+            // SAFETY: SSE2 is part of the x86-64 baseline, so these intrinsics exist on every
+            // x86-64 CPU; `__m128`/`__m128i` are four f32/i32 lanes in memory order, the
+            // layouts of `[f32; 4]`/`[i32; 4]`, and every bit pattern is valid for all four.
+            unsafe {
+                let v = std::mem::transmute::<[f32; 4], __m128>(h);
+                let t = _mm_cvttps_epi32(v);
+                let big = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(2_147_483_648.0)));
+                let t = _mm_or_si128(
+                    _mm_andnot_si128(big, t),
+                    _mm_and_si128(big, _mm_set1_epi32(i32::MAX)),
+                );
+                let nan = _mm_castps_si128(_mm_cmpunord_ps(v, v));
+                let t = _mm_andnot_si128(nan, t);
+                // -1 where (t as f32) > x and t is not i32::MIN.
+                let gt = _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), v));
+                let at_min = _mm_cmpeq_epi32(t, _mm_set1_epi32(i32::MIN));
+                std::mem::transmute::<__m128i, [i32; 4]>(_mm_add_epi32(
+                    t,
+                    _mm_andnot_si128(at_min, gt),
+                ))
+            }
+        };
+        let lo = half([x[0], x[1], x[2], x[3]]);
+        let hi = half([x[4], x[5], x[6], x[7]]);
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x.map(ifloor)
     }
 }
 
-/// The pairs of LINEAR indices and weights of [`wrap_linear`] on eight lanes, the mode chosen
-/// once.
-type LinearLanes = ([Option<i32>; LANES], [Option<i32>; LANES], [f32; LANES]);
-
-/// [`wrap_linear`] on eight lanes, the mode chosen once (as [`wrap_nearest_lanes`]).
+/// Are all of `n` (each taken as at least 1) powers of two?
 #[inline(always)]
-fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: i32) -> LinearLanes {
-    let each = |mode: u32| {
-        let w = s.map(|s| wrap_linear(mode, s, n));
-        (w.map(|w| w.0), w.map(|w| w.1), w.map(|w| w.2))
+fn all_pow2(n: &[i32; LANES]) -> bool {
+    n.iter().all(|&n| {
+        let n = n.max(1);
+        n & (n - 1) == 0
+    })
+}
+
+/// [`wrap_nearest_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels: the mode (and
+/// whether every n is a power of two) chosen once, each arm a plain loop over the lanes with
+/// a constant mode, so every lane is the scalar index.
+#[inline(always)]
+fn wrap_nearest_lanes(
+    mode: u32,
+    s: &[f32; LANES],
+    n: &[i32; LANES],
+) -> ([i32; LANES], [bool; LANES]) {
+    let mut i = [0i32; LANES];
+    let mut inside = [true; LANES];
+    macro_rules! each {
+        ($mode:expr, $p2:expr) => {{
+            let mut u = [0.0f32; LANES];
+            for l in 0..LANES {
+                u[l] = nearest_u($mode, s[l], n[l]);
+            }
+            let fl = ifloor_lanes(&u);
+            for l in 0..LANES {
+                (i[l], inside[l]) = nearest_finish($mode, fl[l], n[l], $p2);
+            }
+        }};
+    }
+    match (mode, all_pow2(n)) {
+        (gl::REPEAT, true) => each!(gl::REPEAT, true),
+        (gl::REPEAT, false) => each!(gl::REPEAT, false),
+        (gl::MIRRORED_REPEAT, _) => each!(gl::MIRRORED_REPEAT, false),
+        (gl::CLAMP_TO_BORDER, _) => each!(gl::CLAMP_TO_BORDER, false),
+        (gl::CLAMP_TO_EDGE, _) => each!(gl::CLAMP_TO_EDGE, false),
+        _ => each!(mode, false),
+    }
+    (i, inside)
+}
+
+/// The LINEAR indices, weights and inside flags of eight lanes ([`wrap_linear_i`] per lane).
+struct LinearLanes {
+    i0: [i32; LANES],
+    i1: [i32; LANES],
+    w: [f32; LANES],
+    in0: [bool; LANES],
+    in1: [bool; LANES],
+}
+
+/// [`wrap_linear_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels, the mode chosen
+/// once (as [`wrap_nearest_lanes`]).
+#[inline(always)]
+fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLanes {
+    let mut o = LinearLanes {
+        i0: [0; LANES],
+        i1: [0; LANES],
+        w: [0.0; LANES],
+        in0: [true; LANES],
+        in1: [true; LANES],
     };
-    match mode {
-        gl::REPEAT => each(gl::REPEAT),
-        gl::MIRRORED_REPEAT => each(gl::MIRRORED_REPEAT),
-        gl::CLAMP => each(gl::CLAMP),
-        gl::CLAMP_TO_BORDER => each(gl::CLAMP_TO_BORDER),
-        gl::CLAMP_TO_EDGE => each(gl::CLAMP_TO_EDGE),
-        _ => each(mode),
+    macro_rules! each {
+        ($mode:expr, $p2:expr) => {{
+            let mut u = [0.0f32; LANES];
+            for l in 0..LANES {
+                u[l] = linear_u($mode, s[l], n[l]);
+            }
+            let fl = ifloor_lanes(&u);
+            for l in 0..LANES {
+                (o.i0[l], o.i1[l], o.w[l], o.in0[l], o.in1[l]) =
+                    linear_finish($mode, u[l], fl[l], n[l], $p2);
+            }
+        }};
+    }
+    match (mode, all_pow2(n)) {
+        (gl::REPEAT, true) => each!(gl::REPEAT, true),
+        (gl::REPEAT, false) => each!(gl::REPEAT, false),
+        (gl::MIRRORED_REPEAT, _) => each!(gl::MIRRORED_REPEAT, false),
+        (gl::CLAMP, _) => each!(gl::CLAMP, false),
+        (gl::CLAMP_TO_BORDER, _) => each!(gl::CLAMP_TO_BORDER, false),
+        (gl::CLAMP_TO_EDGE, _) => each!(gl::CLAMP_TO_EDGE, false),
+        _ => each!(mode, false),
+    }
+    o
+}
+
+/// Quads of one span row whose λ [`SpanLambda`] keeps: a 64-pixel span starting on an odd x
+/// touches 33.
+const SPAN_QUADS: usize = 8 * 5;
+
+/// λ of one unit for the 2x2 quads of a span row, computed eight quads at a time as the
+/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once, where computing
+/// it per lane evaluated every quad twice (lanes 2k and 2k+1 of an aligned group share one).
+/// Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad position, so the same bits.
+#[derive(Clone, Copy, Debug)]
+pub struct SpanLambda {
+    /// Window x of the span's first quad (even).
+    q0: i32,
+    /// Window x of the planes' origin (the primitive's bounding-box corner).
+    ox: i32,
+    /// The quads' lower-left y relative to the planes' origin.
+    qy: f32,
+    /// Which groups of eight quads are computed.
+    done: u8,
+    lam: [f32; SPAN_QUADS],
+}
+
+impl SpanLambda {
+    /// For a span row whose first pixel is at window x `x0`, with the planes' origin at window
+    /// x `ox` and the row's quads at `qy` (relative to the origin, as `quad_lambda` takes it).
+    #[inline]
+    pub fn new(x0: i32, ox: i32, qy: f32) -> SpanLambda {
+        SpanLambda {
+            q0: x0 & !1,
+            ox,
+            qy,
+            done: 0,
+            lam: [0.0; SPAN_QUADS],
+        }
+    }
+
+    /// λ for the eight pixels from window x `x` (lane l at x + l): each its quad's, as
+    /// `s.quad_lambda_lanes(planes, to, ..)` gives it. `s`, `planes` and `to` must be the same
+    /// on every call for one `SpanLambda`.
+    #[inline]
+    pub fn lanes(&mut self, s: &Sampler, planes: &[f32], to: usize, x: i32) -> [f32; LANES] {
+        let last = x.saturating_add(LANES as i32 - 1);
+        let (ka, kb) = ((x & !1) - self.q0, (last & !1) - self.q0);
+        if ka < 0 || kb >= 2 * SPAN_QUADS as i32 || last == i32::MAX {
+            // Outside the row's buffer: every lane's quad directly.
+            let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(self.ox) as f32);
+            return s.quad_lambda_lanes(planes, to, qx, self.qy);
+        }
+        let (ka, kb) = ((ka / 2) as usize, (kb / 2) as usize);
+        for c in ka / LANES..=kb / LANES {
+            if self.done & (1 << c) != 0 {
+                continue;
+            }
+            let first = self.q0 + 2 * (c * LANES) as i32;
+            let qx = std::array::from_fn(|j| (first + 2 * j as i32).wrapping_sub(self.ox) as f32);
+            let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
+            self.lam[c * LANES..(c + 1) * LANES].copy_from_slice(&v);
+            self.done |= 1 << c;
+        }
+        // Lane l's quad is number (x + l - q0) / 2 (q0 is even); d + 7 < 2·SPAN_QUADS here.
+        let d = (x - self.q0) as usize;
+        let mut out = [0.0f32; LANES];
+        for (l, o) in out.iter_mut().enumerate() {
+            *o = self.lam.get((d + l) >> 1).copied().unwrap_or(0.0);
+        }
+        out
     }
 }
 

@@ -555,3 +555,335 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
 fn obj_compare(s: &Sampler) -> bool {
     s.obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
 }
+
+/// The wrap functions as they were written before the lane rewrite (`Option` indices,
+/// `clamp`, `contains`, `repeat`'s own power-of-two test): the reference the rewritten
+/// `wrap_nearest_i` / `wrap_linear_i` and their lane forms must reproduce.
+fn ref_wrap_nearest(mode: u32, s: f32, n: i32) -> Option<i32> {
+    let n = n.max(1);
+    match mode {
+        gl::REPEAT => Some(ifloor(s * n as f32).rem_euclid(n)),
+        gl::MIRRORED_REPEAT => Some(ifloor(mirror(s) * n as f32).clamp(0, n - 1)),
+        gl::CLAMP_TO_BORDER => {
+            let i = ifloor(s * n as f32);
+            (0..n).contains(&i).then_some(i)
+        }
+        _ => Some(ifloor(s * n as f32).clamp(0, n - 1)),
+    }
+}
+
+fn ref_wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32) {
+    let n = n.max(1);
+    let nf = n as f32;
+    let s = match mode {
+        gl::MIRRORED_REPEAT => mirror(s),
+        gl::CLAMP => s.clamp(0.0, 1.0),
+        _ => s,
+    };
+    let u = s * nf - 0.5;
+    let u = if u.is_nan() { 0.0 } else { u };
+    let i0 = ifloor(u);
+    let a = (u - i0 as f32).clamp(0.0, 1.0);
+    let i1 = i0.saturating_add(1);
+    let inside = |i: i32| (0..n).contains(&i).then_some(i);
+    match mode {
+        gl::REPEAT => (Some(i0.rem_euclid(n)), Some(i1.rem_euclid(n)), a),
+        gl::CLAMP_TO_BORDER | gl::CLAMP => (inside(i0), inside(i1), a),
+        _ => (Some(i0.clamp(0, n - 1)), Some(i1.clamp(0, n - 1)), a),
+    }
+}
+
+#[test]
+fn wrap_lanes_are_the_reference_wraps_for_every_mode() {
+    // Every wrap mode, lanes on axes of different sizes (all powers of two, or mixed), over
+    // awkward coordinates: each lane's index, inside flag and weight are the reference's.
+    let mut seed = 5u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let modes = [
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::CLAMP_TO_BORDER,
+        gl::MIRRORED_REPEAT,
+    ];
+    let special = [
+        f32::NAN,
+        f32::INFINITY,
+        -f32::INFINITY,
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        0.5,
+        f32::MIN_POSITIVE / 4.0,
+        -f32::MIN_POSITIVE / 4.0,
+        8_388_608.5,
+        16_777_217.0,
+        -16_777_216.0,
+        3e9,
+        -3e9,
+        1e30,
+        -1e30,
+        f32::MAX,
+        f32::MIN,
+    ];
+    let mut checked = 0;
+    for round in 0..20_000 {
+        let mode = modes[round % modes.len()];
+        let n: [i32; LANES] = std::array::from_fn(|_| match round / modes.len() % 3 {
+            0 => 1 << (next() % 12),
+            1 => 1 + (next() % 300) as i32,
+            _ => [0, 1, 2, 3, 5, 64, 1 << 20][(next() % 7) as usize],
+        });
+        let s: [f32; LANES] = std::array::from_fn(|_| match next() % 6 {
+            0 => special[(next() % special.len() as u64) as usize],
+            1 => f32::from_bits(next() as u32),
+            2 => (next() % 64) as f32 / 16.0 - 2.0,
+            _ => (next() % 1_000_000) as f32 * 1e-5 - 5.0,
+        });
+        let (i, inside) = wrap_nearest_lanes(mode, &s, &n);
+        let lin = wrap_linear_lanes(mode, &s, &n);
+        for l in 0..LANES {
+            let want = ref_wrap_nearest(mode, s[l], n[l]);
+            assert_eq!(
+                inside[l].then_some(i[l]),
+                want,
+                "NEAREST {mode:#x} {} n {}",
+                s[l],
+                n[l]
+            );
+            assert_eq!(wrap_nearest(mode, s[l], n[l]), want);
+            let (w0, w1, wa) = ref_wrap_linear(mode, s[l], n[l]);
+            let got = (
+                lin.in0[l].then_some(lin.i0[l]),
+                lin.in1[l].then_some(lin.i1[l]),
+            );
+            assert_eq!(got, (w0, w1), "LINEAR {mode:#x} {} n {}", s[l], n[l]);
+            assert_eq!(
+                lin.w[l].to_bits(),
+                wa.to_bits(),
+                "LINEAR {mode:#x} {}",
+                s[l]
+            );
+            assert_eq!(wrap_linear(mode, s[l], n[l]), (w0, w1, wa));
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 20_000 * LANES);
+}
+
+#[test]
+fn level_selection_is_the_reference_selection() {
+    // `select` (ceil and floor by truncation) against §3.8.8's selection as `sample_face`
+    // wrote it with `f32::ceil` / `floor`, for every minification filter, both switch points,
+    // random LOD bounds (min > max and NaN among them), biases and λ (NaN, infinities, huge).
+    let mut seed = 17u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let mins = [
+        gl::NEAREST,
+        gl::LINEAR,
+        gl::NEAREST_MIPMAP_NEAREST,
+        gl::LINEAR_MIPMAP_NEAREST,
+        gl::NEAREST_MIPMAP_LINEAR,
+        gl::LINEAR_MIPMAP_LINEAR,
+    ];
+    let lv = |n: i32| level(n, n, gl::LUMINANCE, |_, _| [0.5, 0.0, 0.0, 0.0]);
+    let pick = |next: &mut dyn FnMut() -> u64| match next() % 8 {
+        0 => [f32::NAN, f32::INFINITY, -f32::INFINITY, 1e30, -1e30][(next() % 5) as usize],
+        1 => (next() % 64) as f32 * 0.25 - 4.0,
+        _ => (next() % 100_000) as f32 * 3e-4 - 6.0,
+    };
+    for round in 0..6000 {
+        let min = mins[round % mins.len()];
+        let mag = [gl::NEAREST, gl::LINEAR][round / mins.len() % 2];
+        let size = 1 << (next() % 9);
+        let mut levels = Vec::new();
+        let mut n = size;
+        loop {
+            levels.push(lv(n));
+            if n == 1 {
+                break;
+            }
+            n /= 2;
+        }
+        let mut obj = obj_with(levels, min, mag);
+        obj.base_level = (next() % 2) as i32;
+        if next() % 2 == 0 {
+            obj.min_lod = pick(&mut next);
+            obj.max_lod = pick(&mut next);
+            obj.lod_bias = pick(&mut next).clamp(-20.0, 20.0);
+        }
+        if obj.base_level > 0 && size == 1 {
+            obj.base_level = 0;
+        }
+        let s = sampler(obj, gl::MODULATE);
+        for _ in 0..16 {
+            let lambda = pick(&mut next);
+            // The reference: `sample_face`'s choice before the rewrite.
+            let want = {
+                let lambda = lambda + s.bias;
+                let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+                let lambda = lambda.min(s.max_lod).max(s.min_lod);
+                let span = (s.last - s.base_level) as f32;
+                let l = |f: u32| lin(f) == gl::LINEAR;
+                if lambda <= s.c {
+                    (s.base_level, s.mag == gl::LINEAR, 0.0)
+                } else {
+                    match s.min {
+                        gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                            let d = if lambda <= 0.5 {
+                                0.0
+                            } else {
+                                ((lambda + 0.5).ceil() - 1.0).min(span)
+                            };
+                            (s.base_level + d as i32, l(s.min), 0.0)
+                        }
+                        gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                            if lambda >= span {
+                                (s.last, l(s.min), 0.0)
+                            } else {
+                                let d1 = lambda.floor();
+                                (s.base_level + d1 as i32, l(s.min), lambda - d1)
+                            }
+                        }
+                        f => (s.base_level, f == gl::LINEAR, 0.0),
+                    }
+                }
+            };
+            let got = s.select(lambda);
+            assert_eq!(
+                (got.0, got.1, got.2.to_bits()),
+                (want.0, want.1, want.2.to_bits()),
+                "min {min:#x} λ {lambda} bias {} lod [{}, {}]",
+                s.bias,
+                s.min_lod,
+                s.max_lod
+            );
+        }
+    }
+}
+
+#[test]
+fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
+    // Spans of every alignment (odd and even first pixel, odd and even plane origin), lengths
+    // up to and past the row buffer, groups visited with gaps as a span's coverage skips them:
+    // each lane's λ is `quad_lambda` of its pixel's quad, bit for bit.
+    let mut seed = 23u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
+    let mut samplers = Vec::new();
+    for dims in [1, 2, 3] {
+        let mut s = sampler(
+            obj_with(vec![lv(64, 32)], gl::NEAREST, gl::LINEAR),
+            gl::MODULATE,
+        );
+        s.dims = dims;
+        s.size = [
+            64.0,
+            if dims >= 2 { 32.0 } else { 0.0 },
+            if dims == 3 { 8.0 } else { 0.0 },
+        ];
+        samplers.push(s.clone());
+        if dims == 2 {
+            s.cube = true;
+            samplers.push(s);
+        }
+    }
+    let mut checked = 0;
+    for round in 0..3000 {
+        let s = &samplers[round % samplers.len()];
+        let np = 3 + 3 * (1 + (next() % 9) as usize);
+        let planes: Vec<f32> = (0..np)
+            .map(|_| match next() % 8 {
+                0 => 0.0,
+                1 => f32::from_bits(next() as u32),
+                2 => -((next() % 1000) as f32) * 1e-3,
+                _ => (next() % 100_000) as f32 * 1e-4 - 2.0,
+            })
+            .collect();
+        let to = (next() % 4) as usize;
+        let ox = (next() % 300) as i32 - 100;
+        let oy = (next() % 300) as i32 - 100;
+        let x0 = ox + (next() % 200) as i32;
+        let y = oy + (next() % 200) as i32;
+        let qy = ((y & !1) - oy) as f32;
+        let n = 1 + (next() % 90) as usize;
+        let mut sl = SpanLambda::new(x0, ox, qy);
+        let mut g = 0;
+        while g < n {
+            if next() % 4 != 0 {
+                let got = sl.lanes(s, &planes, to, x0 + g as i32);
+                for (l, got) in got.iter().enumerate() {
+                    let qx = (((x0 + (g + l) as i32) & !1) - ox) as f32;
+                    let want = s.quad_lambda(&planes, to, qx, qy);
+                    let same = got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan();
+                    assert!(same, "x0 {x0} ox {ox} g {g} lane {l}: {got} vs {want}");
+                    checked += 1;
+                }
+            }
+            g += LANES;
+        }
+    }
+    assert!(checked > 50_000, "{checked}");
+}
+
+#[test]
+fn ifloor_lanes_is_ifloor() {
+    // The SSE2 truncation with `as i32`'s saturation and the step down, against `ifloor`:
+    // the edges of the i32 range, NaN, infinities, signed zeros, subnormals, random bits.
+    let mut seed = 29u64;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    };
+    let edges = [
+        f32::NAN,
+        -f32::NAN,
+        f32::INFINITY,
+        -f32::INFINITY,
+        0.0,
+        -0.0,
+        -0.5,
+        0.5,
+        -1.0,
+        f32::MIN_POSITIVE / 8.0,
+        -f32::MIN_POSITIVE / 8.0,
+        2_147_483_648.0,
+        2_147_483_520.0,
+        -2_147_483_648.0,
+        -2_147_483_904.0,
+        -2_147_483_520.5,
+        8_388_607.5,
+        -8_388_607.5,
+        f32::MAX,
+        f32::MIN,
+    ];
+    for round in 0..20_000 {
+        let x: [f32; LANES] = std::array::from_fn(|_| match (round + next() as usize) % 3 {
+            0 => edges[(next() % edges.len() as u64) as usize],
+            1 => f32::from_bits(next() as u32),
+            _ => (next() % 2_000_000) as f32 * 1e-3 - 1000.0,
+        });
+        let got = ifloor_lanes(&x);
+        for l in 0..LANES {
+            assert_eq!(got[l], ifloor(x[l]), "{} ({:#x})", x[l], x[l].to_bits());
+        }
+    }
+}
