@@ -101,6 +101,12 @@ enum Command {
         /// profiling and for `perf stat`, whose counts then are the CPU side's alone.
         #[arg(long)]
         cpu_only: bool,
+        /// Time the CPU frame stage by stage instead (CPU only, no API timing): reset, replay
+        /// (the front end and the draws it starts), the final flush and readback (`to_image`),
+        /// the draws, their time on the calling thread, its waits for the pool, and how many
+        /// of the draws were handed to the pool.
+        #[arg(long)]
+        stages: bool,
     },
     /// Run a C or Python program unmodified on fixedgl: its libGL, libEGL, libOpenGL and
     /// libOSMesa are fixedgl's C ABI library (see docs/c-abi.md).
@@ -230,8 +236,18 @@ fn main() -> ExitCode {
             size,
             frames,
             threads,
+            json: _,
+            cpu_only: _,
+            stages: true,
+        } => bench_stages(&scenes, size, frames, threads),
+        Command::Bench {
+            scenes,
+            size,
+            frames,
+            threads,
             json,
             cpu_only,
+            stages: false,
         } => bench(&scenes, size, frames, threads, json, cpu_only, device),
         Command::View {
             scenes,
@@ -468,6 +484,67 @@ struct BenchRow {
     size: (u32, u32),
     cpu_ms: f64,
     gl_ms: f64,
+}
+
+/// `bench --stages`: a CPU frame's median time in each stage, in milliseconds.
+fn bench_stages(
+    names: &[String],
+    size: Option<(u32, u32)>,
+    frames: u32,
+    threads: Option<u32>,
+) -> Result<ExitCode, CliError> {
+    let selected = select(names, true)?;
+    if let Some(n) = threads {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n as usize)
+            .build_global()
+            .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
+    }
+    println!(
+        "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8}",
+        "scene", "frame", "reset", "replay", "image", "draws", "draw ms", "wait", "handoffs"
+    );
+    for scene in selected {
+        let (w, h) = size.unwrap_or(scene.default_size);
+        let (_, calls) = scene.record(w, h)?;
+        let mut ctx = Context::with_config(w, h, scene.config)?;
+        // Per frame: total, reset, replay, to_image, draws, draw ms, wait ms, hand-offs.
+        let mut rows: Vec<[f64; 8]> = Vec::new();
+        for i in 0..=frames {
+            let s0 = ctx.draw_stats();
+            let t0 = Instant::now();
+            ctx.reset();
+            let t1 = Instant::now();
+            ctx.replay(&calls);
+            let t2 = Instant::now();
+            let img = ctx.to_image();
+            let t3 = Instant::now();
+            drop(img);
+            let s1 = ctx.draw_stats();
+            let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
+            let dms = |a: u64, b: u64| (b - a) as f64 / 1e6;
+            if i > 0 {
+                rows.push([
+                    ms(t0, t3),
+                    ms(t0, t1),
+                    ms(t1, t2),
+                    ms(t2, t3),
+                    (s1.draws - s0.draws + s1.handoffs - s0.handoffs) as f64,
+                    dms(s0.draw_ns, s1.draw_ns) + dms(s0.handoff_ns, s1.handoff_ns),
+                    dms(s0.wait_ns, s1.wait_ns),
+                    (s1.handoffs - s0.handoffs) as f64,
+                ]);
+            }
+        }
+        let med: Vec<f64> = (0..8)
+            .map(|k| median_ms(&mut rows.iter().map(|r| r[k]).collect::<Vec<_>>()))
+            .collect();
+        println!(
+            "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9} {:>9.3} {:>7.3} {:>8}",
+            scene.name, med[0], med[1], med[2], med[3], med[4], med[5], med[6], med[7]
+        );
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 fn bench(

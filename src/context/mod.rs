@@ -30,6 +30,7 @@ mod lighting;
 mod raster;
 mod select;
 mod share;
+pub use crate::cpu::DrawStats;
 pub use share::ShareGroup;
 #[cfg(test)]
 mod tests;
@@ -201,6 +202,12 @@ impl Context {
     /// the context.
     pub fn pending_error(&self) -> u32 {
         self.error
+    }
+
+    /// Diagnostic: the draws made so far and the calling thread's time in them (for
+    /// `fixedgl bench --stages`). Not a GL entry point.
+    pub fn draw_stats(&self) -> DrawStats {
+        self.renderer.stats
     }
 
     /// Whether a Begin/End pair is open. Not a GL entry point (GL has no query for it): for

@@ -106,9 +106,34 @@ pub struct Renderer {
     count_samples: bool,
     /// Diagnostic: batches drawn in the background so far.
     pub(crate) background_draws: u64,
+    /// Diagnostic: draws and the calling thread's time in them (`Context::draw_stats`).
+    pub(crate) stats: DrawStats,
     /// Test hook: the next background draw panics (to test that the panic reaches the caller).
     #[cfg(test)]
     pub(crate) panic_in_background: bool,
+}
+
+/// Where a context's calling thread spends its drawing time, for `fixedgl bench --stages`
+/// (`Context::draw_stats`): counts and nanoseconds since the context was made. Two clock reads
+/// a draw; nothing here changes what is drawn.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DrawStats {
+    /// Batches drawn in place (by a caller running on the pool itself).
+    pub draws: u64,
+    /// Their time: vertex stage, setup and rasterisation, including the pool's part.
+    pub draw_ns: u64,
+    /// Batches handed to the pool to be set up and rasterised in the background: every flush
+    /// of a caller off the pool, at 32k vertices (`flush_if_large`) or at a state change.
+    pub handoffs: u64,
+    /// Their time on the calling thread: the vertex stage and the hand-off.
+    pub handoff_ns: u64,
+    /// Time the calling thread waited for a background draw to end.
+    pub wait_ns: u64,
+}
+
+/// Nanoseconds since `t`, saturated.
+fn ns_since(t: std::time::Instant) -> u64 {
+    u64::try_from(t.elapsed().as_nanos()).unwrap_or(u64::MAX)
 }
 
 /// What a background draw hands back: the core, the drawn batch and its vertex output, always
@@ -256,6 +281,7 @@ impl Renderer {
             count_coverage: false,
             count_samples: false,
             background_draws: 0,
+            stats: DrawStats::default(),
             #[cfg(test)]
             panic_in_background: false,
         }
@@ -301,8 +327,11 @@ impl Renderer {
         }
         // The vertex stage runs here, on the calling thread, while the previous batch is
         // still being drawn on the pool; the pool then only sets up and rasterises.
+        let t0 = std::time::Instant::now();
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, false);
         self.draw_in_background(state, plan);
+        self.stats.handoffs += 1;
+        self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
     }
 
     /// Hands the batch, whose vertex stage `plan` describes, to the pool to be set up and
@@ -354,7 +383,10 @@ impl Renderer {
         // The mutex only makes the receiver Sync; nothing ever locks it, so it is never
         // poisoned, and its receiver is usable either way.
         let rx = rx.into_inner().unwrap_or_else(|e| e.into_inner());
-        match rx.recv() {
+        let t0 = std::time::Instant::now();
+        let received = rx.recv();
+        self.stats.wait_ns = self.stats.wait_ns.saturating_add(ns_since(t0));
+        match received {
             Ok((core, batch, verts, panicked)) => {
                 self.core = Some(core);
                 self.spare = Some((batch, verts));
@@ -485,13 +517,18 @@ impl Renderer {
             // The vertex stage splits across the pool only when nothing is drawing there;
             // otherwise it runs here, beside the draw before it.
             let parallel = self.pending.is_none() && self.batch.idx.len() >= PARALLEL_SETUP;
+            let t0 = std::time::Instant::now();
             let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, parallel);
-            return self.draw_in_background(state, plan);
+            self.draw_in_background(state, plan);
+            self.stats.handoffs += 1;
+            self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
+            return;
         }
         // A caller running on the pool itself draws in place (see `flush_if_large`).
         self.wait();
         let count = self.count_coverage;
         let samples = self.count_samples;
+        let t0 = std::time::Instant::now();
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
             core, batch, verts, ..
@@ -501,6 +538,8 @@ impl Renderer {
             None => Self::lost(),
         }
         batch.clear();
+        self.stats.draws += 1;
+        self.stats.draw_ns = self.stats.draw_ns.saturating_add(ns_since(t0));
     }
 }
 
@@ -627,6 +666,10 @@ impl Core {
     }
 }
 
+/// Bounding-box pixels of a rasterisation below which its tiles are drawn on the calling
+/// thread (two tiles' worth, as the two-tile rule).
+const SERIAL_AREA: u64 = 2 * TILE_PIXELS as u64;
+
 /// Given vertices after which `flush_if_large` draws the batch.
 const FLUSH_AT: usize = 1 << 15;
 
@@ -725,22 +768,28 @@ fn rasterise(
         (true, Some(f)) => (color, Some(f), false),
         _ => (color, None, false),
     };
-    let seconds = framebuffer::tile_slices(secondary, tx * ty);
-    let idle = |t: usize| {
-        workers
-            .iter()
-            .all(|w| w.bins.get(t).map_or(true, |b| b.is_empty()))
-    };
-    let work = |t: usize,
-                color: &mut [[u8; 4]],
-                mut color2: Option<&mut [[u8; 4]]>,
-                depth: &mut [u32],
-                stencil: &mut [u8],
-                fill: &mut framebuffer::Fill|
-     -> u64 {
-        if idle(t) {
-            return 0;
+    // The tiles some primitive reaches, from the workers' lists, in tile order (the others
+    // are not visited: their pending clears stay pending).
+    let mut busy: Vec<usize> = workers
+        .iter()
+        .flat_map(|w| w.touched.iter().map(|&t| t as usize))
+        .filter(|&t| t < tx * ty)
+        .collect();
+    busy.sort_unstable();
+    busy.dedup();
+    let colors = tile_parts(primary, &busy, TILE_PIXELS);
+    let mut seconds = secondary.map(|s| tile_parts(s, &busy, TILE_PIXELS).into_iter());
+    let depths = tile_parts(depth, &busy, TILE_PIXELS);
+    let stencils = tile_parts(stencil, &busy, TILE_PIXELS);
+    let fills = tile_parts(pending, &busy, 1);
+    let mut jobs = Vec::with_capacity(busy.len());
+    for ((((&t, c), d), s), f) in busy.iter().zip(colors).zip(depths).zip(stencils).zip(fills) {
+        let c2 = seconds.as_mut().and_then(|it| it.next().flatten());
+        if let (Some(c), Some(d), Some(s), Some([f])) = (c, d, s, f) {
+            jobs.push((t, c, c2, d, s, f));
         }
+    }
+    let work = |(t, color, mut color2, depth, stencil, fill): Job| -> u64 {
         // A lazily cleared tile is written before its first primitive (the colour buffer
         // not drawn stays pending).
         if !fill.is_empty() {
@@ -767,27 +816,45 @@ fn rasterise(
         }
         bufs.samples
     };
-    // Primitives within one or two tiles are drawn on this thread: handing them to the pool
-    // costs more than drawing them. Tiles are independent, so the pixels are the same.
-    if (0..tx * ty).filter(|&t| !idle(t)).take(3).count() <= 2 {
-        primary
-            .chunks_mut(TILE_PIXELS)
-            .zip(seconds)
-            .zip(depth.chunks_mut(TILE_PIXELS))
-            .zip(stencil.chunks_mut(TILE_PIXELS))
-            .zip(pending.iter_mut())
-            .enumerate()
-            .map(|(t, ((((c, c2), d), s), f))| work(t, c, c2, d, s, f))
-            .sum()
+    // Primitives within one or two tiles, or whose bounding boxes hold fewer pixels than two
+    // tiles, are drawn on this thread: handing them to the pool costs more than drawing them.
+    // Tiles are independent, so the pixels are the same.
+    let area: u64 = workers.iter().map(|w| w.area).sum();
+    if jobs.len() <= 2 || area < SERIAL_AREA {
+        jobs.into_iter().map(work).sum()
     } else {
-        primary
-            .par_chunks_mut(TILE_PIXELS)
-            .zip(seconds)
-            .zip(depth.par_chunks_mut(TILE_PIXELS))
-            .zip(stencil.par_chunks_mut(TILE_PIXELS))
-            .zip(pending.par_iter_mut())
-            .enumerate()
-            .map(|(t, ((((c, c2), d), s), f))| work(t, c, c2, d, s, f))
-            .sum()
+        jobs.into_par_iter().map(work).sum()
     }
 }
+
+/// The parts `tiles` (ascending, distinct) of `buf` cut into parts of `len` elements, each
+/// `None` past the end of `buf`.
+fn tile_parts<'a, T>(
+    mut rest: &'a mut [T],
+    tiles: &[usize],
+    len: usize,
+) -> Vec<Option<&'a mut [T]>> {
+    let mut base = 0;
+    tiles
+        .iter()
+        .map(|&t| {
+            let skip = (t * len).checked_sub(base)?;
+            let (_, tail) = std::mem::take(&mut rest).split_at_mut_checked(skip)?;
+            let (part, tail) = tail.split_at_mut_checked(len)?;
+            rest = tail;
+            base = (t + 1) * len;
+            Some(part)
+        })
+        .collect()
+}
+
+/// One tile's share of a rasterisation: its index, colour slice, second colour slice, depth
+/// and stencil slices and pending clear.
+type Job<'a> = (
+    usize,
+    &'a mut [[u8; 4]],
+    Option<&'a mut [[u8; 4]]>,
+    &'a mut [u32],
+    &'a mut [u8],
+    &'a mut framebuffer::Fill,
+);

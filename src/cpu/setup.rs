@@ -446,6 +446,13 @@ pub struct Worker {
     pub pool: Vec<f32>,
     /// Per tile, indices into `prims`.
     pub bins: Vec<Vec<u32>>,
+    /// The tiles whose bins are not empty, in the order they were first reached: what the
+    /// rasteriser visits and the next run empties, so that neither walks every tile of the
+    /// framebuffer for a flush that reaches a few.
+    pub touched: Vec<u32>,
+    /// The pixels of its primitives' bounding boxes, summed: the rasteriser's estimate of the
+    /// work, to decide whether handing the tiles to the pool pays.
+    pub area: u64,
     pub(super) a: Vec<f32>,
     pub(super) b: Vec<f32>,
     bins_x: usize,
@@ -483,11 +490,17 @@ impl Worker {
     fn start(&mut self, ctx: &SetupCtx) {
         self.prims.clear();
         self.pool.clear();
+        for &t in &self.touched {
+            if let Some(b) = self.bins.get_mut(t as usize) {
+                b.clear();
+            }
+        }
+        self.touched.clear();
+        self.area = 0;
+        // Every bin is empty now: those not touched were emptied by the run that filled them.
+        debug_assert!(self.bins.iter().all(Vec::is_empty), "a bin not emptied");
         self.bins.resize_with(ctx.tiles, Vec::new);
         self.bins_x = ctx.tiles_x;
-        for b in &mut self.bins {
-            b.clear();
-        }
     }
 
     /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
@@ -709,8 +722,15 @@ impl Worker {
         let idx = self.prims.len() as u32;
         let [tx0, ty0, tx1, ty1] = tile_range(&p.bbox);
         let tiles_x = self.bins_x;
+        let [x0, y0, x1, y1] = p.bbox.map(i64::from);
+        let pixels = ((x1 - x0 + 1).max(0) * (y1 - y0 + 1).max(0)) as u64;
+        self.area = self.area.saturating_add(pixels);
         if tx0 == tx1 && ty0 == ty1 {
-            if let Some(b) = self.bins.get_mut(ty0 * tiles_x + tx0) {
+            let t = ty0 * tiles_x + tx0;
+            if let Some(b) = self.bins.get_mut(t) {
+                if b.is_empty() {
+                    self.touched.push(t as u32);
+                }
                 b.push(idx);
             }
             self.prims.push(p);
@@ -718,7 +738,11 @@ impl Worker {
         }
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
-                if let Some(b) = self.bins.get_mut(ty * tiles_x + tx) {
+                let t = ty * tiles_x + tx;
+                if let Some(b) = self.bins.get_mut(t) {
+                    if b.is_empty() {
+                        self.touched.push(t as u32);
+                    }
                     b.push(idx);
                 }
             }
