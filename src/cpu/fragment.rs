@@ -733,10 +733,11 @@ impl FragCtx<'_> {
     }
 
     /// A span through the full sequence (`ops` enabled), eight fragments at a time
-    /// (`oplanes`): varyings, colour, clamp (§3.9), fog (§3.10), alpha test (§4.1.4), stencil
-    /// and depth tests (§4.1.5, §4.1.6), blending or logic op (§4.1.8, §4.1.10), masked write;
-    /// each lane computes what `full` computes for its fragment. The colour of a textured or
-    /// PHONG_WIN fragment comes from `color` one fragment at a time.
+    /// (`oplanes`): varyings, colour, clamp (§3.9), alpha test (§4.1.4), stencil and depth
+    /// tests (§4.1.5, §4.1.6), fog (§3.10: it changes neither alpha nor anything the tests
+    /// read, so it runs on the survivors only), blending or logic op (§4.1.8, §4.1.10), masked
+    /// write; each lane computes what `full` computes for its fragment. A textured colour comes
+    /// from `color_lanes` (a PHONG_WIN one from `color`, one fragment at a time).
     #[allow(clippy::too_many_arguments)]
     fn full_span(
         &self,
@@ -750,7 +751,7 @@ impl FragCtx<'_> {
         x0: i32,
         n: usize,
     ) {
-        use super::lanes::{depth_lanes, lane_x, recip, unorm8_lanes, LANES};
+        use super::lanes::{depth_lanes, lane_x, unorm8_lanes, LANES};
         use super::oplanes as ol;
         let ox = p.bbox[0];
         let nflat = if p.flags & F_FLAT != 0 {
@@ -758,7 +759,6 @@ impl FragCtx<'_> {
         } else {
             0
         };
-        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
         let nv = self.rl.n.min(super::setup::MAXV);
         let n = n.min(TILE);
         // A polygon stipple (§3.5.6) removes fragments before any test.
@@ -794,18 +794,9 @@ impl FragCtx<'_> {
                 continue;
             }
             // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+            // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
             let fx = lane_x(x0 - ox + c as i32);
-            let (w0, wx, wy) = (pl(0), pl(1), pl(2));
-            let inv = recip(fx.map(|x| w0 + wx * x + wy * fy));
-            for (j, vj) in v.iter_mut().enumerate().take(nv) {
-                let o = 3 + 3 * j;
-                let (a, b, d) = (pl(o), pl(o + 1), pl(o + 2));
-                *vj = if j < nflat {
-                    fx.map(|x| a + b * x + d * fy)
-                } else {
-                    std::array::from_fn(|l| (a + b * fx[l] + d * fy) * inv[l])
-                };
-            }
+            super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
             let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
             if plain {
                 if let Some(s) = spec {
@@ -826,11 +817,12 @@ impl FragCtx<'_> {
                 }
                 col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
             }
-            let [r, g, b, a] = col.map(ol::clamp01);
-            let mut rgb = [r, g, b];
-            if let Some(f) = &ops.fog {
-                ol::fog(f, &mut rgb, fog_at.map_or([0.0; LANES], |o| v[o]));
-            }
+            let mut rgb = [
+                ol::clamp01(col[0]),
+                ol::clamp01(col[1]),
+                ol::clamp01(col[2]),
+            ];
+            let a = ol::clamp01(col[3]);
             let mut m = m;
             if let Some((func, reference)) = ops.alpha {
                 m &= ol::alpha_test(func, reference, a);
@@ -862,7 +854,18 @@ impl FragCtx<'_> {
             if self.samples {
                 bufs.samples += u64::from(m.count_ones());
             }
-            let src = [rgb[0], rgb[1], rgb[2], a].map(unorm8_lanes);
+            // Fog (§3.10) changes only R, G and B, which nothing before the colour write
+            // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
+            // EXP2 call `expf` only for fragments that are written.
+            if let Some(f) = &ops.fog {
+                ol::fog(f, &mut rgb, fog_at.map_or([0.0; LANES], |o| v[o]), m);
+            }
+            let src = [
+                unorm8_lanes(rgb[0]),
+                unorm8_lanes(rgb[1]),
+                unorm8_lanes(rgb[2]),
+                unorm8_lanes(a),
+            ];
             // Blending and the logic op read each colour buffer's own contents (§4.1.8,
             // §4.1.10).
             let combine = |row: &[[u8; 4]]| match ops.write {
@@ -876,10 +879,14 @@ impl FragCtx<'_> {
             {
                 let row = buf.get_mut(i0..).unwrap_or_default();
                 let out = combine(row);
-                for (l, dst) in row.iter_mut().take(LANES).enumerate() {
-                    if m & (1 << l) != 0 {
-                        self.store_one(dst, out.map(|ch| ch[l]));
+                if self.count {
+                    for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                        if m & (1 << l) != 0 {
+                            self.store_one(dst, out.map(|ch| ch[l]));
+                        }
                     }
+                } else {
+                    ol::store(row, &out, m, self.color_mask);
                 }
             }
             c += LANES;

@@ -3,8 +3,13 @@
 //! for `FragCtx::full_span`: the span runs stage by stage over eight fragments at a time with a
 //! coverage mask (bit l for lane l), each stage chosen once per group from the flush's `Ops`
 //! (the `match` on the mode, function, factor or equation sits outside the loop over lanes, so
-//! the compiler turns the loop into SIMD instructions), in the order of §4.1: fog, alpha test,
-//! stencil test, depth test, stencil update, blend or logic op, masked write.
+//! the compiler turns the loop into SIMD instructions), in the order of §4.1: alpha test,
+//! stencil test, depth test, stencil update, fog, blend or logic op, masked write. Fog (§3.10)
+//! comes before the alpha test in the spec, but it changes only R, G and B, which no test
+//! reads, so it runs after the tests on the surviving lanes alone (the same bytes; EXP and EXP2
+//! call `expf` only for fragments that are written). Blending works on 16-bit lanes (eight
+//! in one SSE2 register), the usual SRC_ALPHA/ONE_MINUS_SRC_ALPHA and ONE/ONE states by a
+//! direct route; the RGBA8 loads and the masked store take a whole group at once.
 //!
 //! Design decision: as in `lanes`, every lane computes exactly the scalar expression of
 //! `fragops` and `FragCtx::full`, operation for operation and in the same order, so the images
@@ -13,7 +18,7 @@
 //! stage over a group before the next stage gives what running each fragment through all the
 //! stages gives. Lanes outside the mask are computed and thrown away.
 
-use super::fragops::{compare, mul8, BlendEval, FogEval, StencilSide};
+use super::fragops::{compare, BlendEval, FogEval, StencilSide};
 use super::lanes::LANES;
 use crate::gl;
 
@@ -52,15 +57,21 @@ pub fn clamp01(c: F) -> F {
     }
 }
 
-/// `FogEval::factor` on every lane: LINEAR on lanes, EXP and EXP2 through the scalar `exp`.
+/// `FogEval::factor` on every lane of `live`: LINEAR on lanes, EXP and EXP2 through the scalar
+/// `exp` for the lanes of `live` only (the others get 0: they are thrown away).
 #[inline(always)]
-pub fn fog_factor(fog: &FogEval, coord: F) -> F {
+pub fn fog_factor(fog: &FogEval, coord: F, live: u8) -> F {
+    let mut out = [0.0; LANES];
     if fog.mode != gl::LINEAR {
-        return coord.map(|c| fog.factor(c));
+        for l in 0..LANES {
+            if live & (1 << l) != 0 {
+                out[l] = fog.factor(coord[l]);
+            }
+        }
+        return out;
     }
     let scale = -1.0 / (fog.end - fog.start);
     let e = fog.end * -scale;
-    let mut out = [0.0; LANES];
     for l in 0..LANES {
         let f = coord[l] * scale + e;
         // `f32::clamp(0, 1)` with a NaN counted as 0: the same selects as `FogEval::factor`.
@@ -71,11 +82,11 @@ pub fn fog_factor(fog: &FogEval, coord: F) -> F {
     out
 }
 
-/// `FogEval::apply` on every lane: `rgb` (clamped) becomes `C_f + f·(C − C_f)`; alpha is
-/// left alone.
+/// `FogEval::apply` on the lanes of `live`: `rgb` (clamped) becomes `C_f + f·(C − C_f)`; alpha
+/// is left alone. Lanes outside `live` hold unspecified values afterwards.
 #[inline(always)]
-pub fn fog(fog: &FogEval, rgb: &mut [F; 3], coord: F) {
-    let f = fog_factor(fog, coord);
+pub fn fog(fog: &FogEval, rgb: &mut [F; 3], coord: F, live: u8) {
+    let f = fog_factor(fog, coord, live);
     let cf = fog.color.to_array();
     for k in 0..3 {
         let ch = &mut rgb[k];
@@ -113,6 +124,10 @@ pub fn depth_test(func: u32, write: bool, row: &mut [u32], d: [u32; LANES], live
         }
         m
     }
+    #[cfg(target_arch = "x86_64")]
+    if let Some(r) = row.get_mut(..LANES) {
+        return depth_group(func, write, r, d, live);
+    }
     match func {
         gl::NEVER => 0,
         gl::LESS => run(row, d, live, write, |d, s| d < s),
@@ -122,6 +137,57 @@ pub fn depth_test(func: u32, write: bool, row: &mut [u32], d: [u32; LANES], live
         gl::NOTEQUAL => run(row, d, live, write, |d, s| d != s),
         gl::GEQUAL => run(row, d, live, write, |d, s| d >= s),
         _ => run(row, d, live, write, |_, _| true),
+    }
+}
+
+/// `depth_test` on a whole group (`row` holds eight values) with SSE2: the unsigned
+/// comparison as a signed one of both sides with the top bit flipped (`pcmpgtd`/`pcmpeqd`),
+/// the lanes' pass mask by `movmskps`, the write as a select. The same mask and stores as
+/// the per-lane loop.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn depth_group(func: u32, write: bool, row: &mut [u32], d: [u32; LANES], live: u8) -> u8 {
+    use std::arch::x86_64::{
+        __m128i, _mm_and_si128, _mm_andnot_si128, _mm_castsi128_ps, _mm_cmpeq_epi32,
+        _mm_cmpgt_epi32, _mm_loadu_si128, _mm_movemask_ps, _mm_or_si128, _mm_set1_epi32,
+        _mm_set_epi32, _mm_setzero_si128, _mm_storeu_si128, _mm_xor_si128,
+    };
+    if row.len() < LANES {
+        return 0;
+    }
+    // SAFETY: SSE2 is part of the x86-64 baseline; `row` holds at least eight u32 (checked
+    // above) and `d` eight, so the unaligned 16-byte loads and stores at offsets 0 and 4 are
+    // in bounds; `__m128i` has the layout of `[u32; 4]`.
+    unsafe {
+        let sign = _mm_set1_epi32(i32::MIN);
+        let ones = _mm_set1_epi32(-1);
+        let base = row.as_mut_ptr();
+        let half = |k: usize| {
+            let rp = base.add(k).cast::<__m128i>();
+            let s = _mm_loadu_si128(rp);
+            let dv = _mm_loadu_si128(d.as_ptr().add(k).cast::<__m128i>());
+            let (a, b) = (_mm_xor_si128(dv, sign), _mm_xor_si128(s, sign));
+            let pass = match func {
+                gl::NEVER => _mm_setzero_si128(),
+                gl::LESS => _mm_cmpgt_epi32(b, a),
+                gl::EQUAL => _mm_cmpeq_epi32(a, b),
+                gl::LEQUAL => _mm_xor_si128(_mm_cmpgt_epi32(a, b), ones),
+                gl::GREATER => _mm_cmpgt_epi32(a, b),
+                gl::NOTEQUAL => _mm_xor_si128(_mm_cmpeq_epi32(a, b), ones),
+                gl::GEQUAL => _mm_xor_si128(_mm_cmpgt_epi32(b, a), ones),
+                _ => ones,
+            };
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let lv = _mm_set1_epi32(i32::from(live >> k));
+            let on = _mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits);
+            let pass = _mm_and_si128(pass, on);
+            if write {
+                let v = _mm_or_si128(_mm_and_si128(pass, dv), _mm_andnot_si128(pass, s));
+                _mm_storeu_si128(rp, v);
+            }
+            _mm_movemask_ps(_mm_castsi128_ps(pass)) as u8
+        };
+        half(0) | half(4) << 4
     }
 }
 
@@ -167,11 +233,65 @@ pub fn stencil_depth(
     m
 }
 
+/// One unorm8 value a lane, widened to 16 bits: the blend arithmetic's lanes (a product of
+/// two unorm8 values and `mul8`'s rounding terms fit in 16 bits, so eight lanes take one SSE2
+/// register and the loops below become `pmullw`/`psrlw`/`paddw`).
+type W = [u16; LANES];
+
+/// `v` widened to 16-bit lanes (SSE2 `punpcklbw` with zero on x86-64).
+#[inline(always)]
+fn widen(v: B) -> W {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128i, _mm_set_epi64x, _mm_setzero_si128, _mm_unpacklo_epi8};
+        // SAFETY: SSE2 is part of the x86-64 baseline; `__m128i` has the layout of
+        // `[u16; 8]` and every bit pattern is valid for both.
+        unsafe {
+            let x = _mm_set_epi64x(0, i64::from_le_bytes(v));
+            std::mem::transmute::<__m128i, W>(_mm_unpacklo_epi8(x, _mm_setzero_si128()))
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        v.map(u16::from)
+    }
+}
+
+/// `v` (every lane in 0..=255) narrowed to bytes (SSE2 `packuswb` on x86-64).
+#[inline(always)]
+fn narrow(v: W) -> B {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128i, _mm_packus_epi16};
+        // SAFETY: SSE2 is part of the x86-64 baseline; `__m128i` has the layout of
+        // `[u16; 8]` and of `[u8; 16]`, and every bit pattern is valid for all three.
+        unsafe {
+            let x = std::mem::transmute::<W, __m128i>(v);
+            let b = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(x, x));
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        v.map(|x| x as u8)
+    }
+}
+
+/// `255 − v` on every lane.
+#[inline(always)]
+fn inv(v: W) -> W {
+    let mut o = [0u16; LANES];
+    for l in 0..LANES {
+        o[l] = 255 - v[l];
+    }
+    o
+}
+
 /// `fragops::factor` for component `k` on every lane (the factor chosen once).
 #[inline(always)]
-fn factor_lanes(f: u32, k: usize, s: &[B; 4], d: &[B; 4], c: [u8; 4]) -> B {
-    let inv = |v: B| v.map(|x| 255 - x);
-    let (sk, dk, ck) = (s[k & 3], d[k & 3], c[k & 3]);
+fn factor_lanes(f: u32, k: usize, s: &[W; 4], d: &[W; 4], c: [u8; 4]) -> W {
+    let (sk, dk, ck) = (s[k & 3], d[k & 3], u16::from(c[k & 3]));
+    let ca = u16::from(c[3]);
     match f {
         gl::ZERO => [0; LANES],
         gl::ONE => [255; LANES],
@@ -185,44 +305,111 @@ fn factor_lanes(f: u32, k: usize, s: &[B; 4], d: &[B; 4], c: [u8; 4]) -> B {
         gl::ONE_MINUS_DST_ALPHA => inv(d[3]),
         gl::CONSTANT_COLOR => [ck; LANES],
         gl::ONE_MINUS_CONSTANT_COLOR => [255 - ck; LANES],
-        gl::CONSTANT_ALPHA => [c[3]; LANES],
-        gl::ONE_MINUS_CONSTANT_ALPHA => [255 - c[3]; LANES],
-        gl::SRC_ALPHA_SATURATE if k < 3 => std::array::from_fn(|l| s[3][l].min(255 - d[3][l])),
+        gl::CONSTANT_ALPHA => [ca; LANES],
+        gl::ONE_MINUS_CONSTANT_ALPHA => [255 - ca; LANES],
+        gl::SRC_ALPHA_SATURATE if k < 3 => {
+            let (sa, ida) = (s[3], inv(d[3]));
+            let mut o = [0u16; LANES];
+            for l in 0..LANES {
+                o[l] = sa[l].min(ida[l]);
+            }
+            o
+        }
         _ => [255; LANES],
     }
 }
 
-/// `fragops::equation` on every lane (the equation chosen once).
+/// `fragops::equation` on every lane (the equation chosen once); every value is in 0..=255,
+/// so the 16-bit forms give the unorm8 results (the sum saturates at 255 by `min`).
 #[inline(always)]
-fn equation_lanes(eq: u32, s: B, d: B, sf: B, df: B) -> B {
+fn equation_lanes(eq: u32, s: W, d: W, sf: W, df: W) -> W {
+    let mut o = [0u16; LANES];
     match eq {
-        gl::FUNC_SUBTRACT => std::array::from_fn(|l| sf[l].saturating_sub(df[l])),
-        gl::FUNC_REVERSE_SUBTRACT => std::array::from_fn(|l| df[l].saturating_sub(sf[l])),
-        gl::MIN => std::array::from_fn(|l| s[l].min(d[l])),
-        gl::MAX => std::array::from_fn(|l| s[l].max(d[l])),
-        _ => std::array::from_fn(|l| sf[l].saturating_add(df[l])),
+        gl::FUNC_SUBTRACT => {
+            for l in 0..LANES {
+                o[l] = sf[l].saturating_sub(df[l]);
+            }
+        }
+        gl::FUNC_REVERSE_SUBTRACT => {
+            for l in 0..LANES {
+                o[l] = df[l].saturating_sub(sf[l]);
+            }
+        }
+        gl::MIN => {
+            for l in 0..LANES {
+                o[l] = s[l].min(d[l]);
+            }
+        }
+        gl::MAX => {
+            for l in 0..LANES {
+                o[l] = s[l].max(d[l]);
+            }
+        }
+        _ => {
+            for l in 0..LANES {
+                o[l] = (sf[l] + df[l]).min(255);
+            }
+        }
     }
+    o
 }
 
-/// `mul8` on every lane.
+/// `mul8` on every lane, in 16 bits: `x = ab` ≤ 65025 and `x + (x >> 8) + 128` ≤ 65407, so
+/// nothing wraps and the result is `mul8`'s.
 #[inline(always)]
-fn mul8_lanes(a: B, b: B) -> B {
-    std::array::from_fn(|l| mul8(a[l], b[l]))
+fn mul8_lanes(a: W, b: W) -> W {
+    let mut o = [0u16; LANES];
+    for l in 0..LANES {
+        let x = a[l] * b[l];
+        o[l] = (x + (x >> 8) + 128) >> 8;
+    }
+    o
 }
 
-/// `BlendEval::apply` on every lane: source `s` over destination `d`, channel-major.
+/// `BlendEval::apply` on every lane: source `s` over destination `d`, channel-major. The
+/// usual states take a direct route (the factors and equations checked once per group):
+/// SRC_ALPHA, ONE_MINUS_SRC_ALPHA with FUNC_ADD for RGB and alpha, and ONE, ONE with FUNC_ADD
+/// (`mul8(x, 255)` is `x`, so the sum alone, saturating).
 #[inline(always)]
 pub fn blend(b: &BlendEval, s: &[B; 4], d: &[B; 4]) -> [B; 4] {
-    std::array::from_fn(|k| {
+    let mut out = [[0u8; LANES]; 4];
+    let usual = b.eq_rgb == gl::FUNC_ADD
+        && b.eq_alpha == gl::FUNC_ADD
+        && b.src_rgb == b.src_alpha
+        && b.dst_rgb == b.dst_alpha;
+    if usual && b.src_rgb == gl::ONE && b.dst_rgb == gl::ONE {
+        for k in 0..4 {
+            for l in 0..LANES {
+                out[k][l] = s[k][l].saturating_add(d[k][l]);
+            }
+        }
+        return out;
+    }
+    let s = [widen(s[0]), widen(s[1]), widen(s[2]), widen(s[3])];
+    let d = [widen(d[0]), widen(d[1]), widen(d[2]), widen(d[3])];
+    if usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE_MINUS_SRC_ALPHA {
+        let (fs, fd) = (s[3], inv(s[3]));
+        for (k, o) in out.iter_mut().enumerate() {
+            let (sf, df) = (mul8_lanes(s[k], fs), mul8_lanes(d[k], fd));
+            let mut v = [0u16; LANES];
+            for l in 0..LANES {
+                v[l] = (sf[l] + df[l]).min(255);
+            }
+            *o = narrow(v);
+        }
+        return out;
+    }
+    for (k, o) in out.iter_mut().enumerate() {
         let (sfac, dfac, eq) = if k < 3 {
             (b.src_rgb, b.dst_rgb, b.eq_rgb)
         } else {
             (b.src_alpha, b.dst_alpha, b.eq_alpha)
         };
-        let sf = mul8_lanes(s[k], factor_lanes(sfac, k, s, d, b.constant));
-        let df = mul8_lanes(d[k], factor_lanes(dfac, k, s, d, b.constant));
-        equation_lanes(eq, s[k], d[k], sf, df)
-    })
+        let sf = mul8_lanes(s[k], factor_lanes(sfac, k, &s, &d, b.constant));
+        let df = mul8_lanes(d[k], factor_lanes(dfac, k, &s, &d, b.constant));
+        *o = narrow(equation_lanes(eq, s[k], d[k], sf, df));
+    }
+    out
 }
 
 /// `fragops::logic_op` on every lane and channel (the operation chosen once).
@@ -253,16 +440,72 @@ pub fn logic(op: u32, s: &[B; 4], d: &[B; 4]) -> [B; 4] {
 }
 
 /// The stored colours of lanes `0..LANES` from `row` (RGBA8, pixel-major) into channel-major
-/// lanes; lanes past its end read 0.
+/// lanes; lanes past its end read 0. A whole group (eight pixels in `row`) is two 16-byte
+/// loads, a shift and mask per channel and two packs (SSE2).
 #[inline(always)]
 pub fn load(row: &[[u8; 4]]) -> [B; 4] {
     let mut out = [[0u8; LANES]; 4];
+    #[cfg(target_arch = "x86_64")]
+    if let Some(px) = row.get(..LANES) {
+        use std::arch::x86_64::{
+            __m128i, _mm_and_si128, _mm_loadu_si128, _mm_packs_epi32, _mm_packus_epi16,
+            _mm_set1_epi32, _mm_srli_epi32,
+        };
+        // SAFETY: SSE2 is part of the x86-64 baseline; `px` holds eight `[u8; 4]`, 32
+        // contiguous bytes, and `_mm_loadu_si128` reads 16 bytes at offsets 0 and 16 (in
+        // bounds, no alignment needed); `__m128i` has the layout of `[u8; 16]`.
+        unsafe {
+            let p = px.as_ptr().cast::<__m128i>();
+            let (lo, hi) = (_mm_loadu_si128(p), _mm_loadu_si128(p.add(1)));
+            let low = _mm_set1_epi32(0xFF);
+            let ch = |lo: __m128i, hi: __m128i| {
+                let w = _mm_packs_epi32(_mm_and_si128(lo, low), _mm_and_si128(hi, low));
+                let v = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(w, w));
+                [v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]]
+            };
+            out[0] = ch(lo, hi);
+            out[1] = ch(_mm_srli_epi32(lo, 8), _mm_srli_epi32(hi, 8));
+            out[2] = ch(_mm_srli_epi32(lo, 16), _mm_srli_epi32(hi, 16));
+            out[3] = ch(_mm_srli_epi32(lo, 24), _mm_srli_epi32(hi, 24));
+        }
+        return out;
+    }
     for (l, px) in row.iter().take(LANES).enumerate() {
         for (k, ch) in out.iter_mut().enumerate() {
             ch[l] = px[k];
         }
     }
     out
+}
+
+/// Writes lanes `m` of `c` (channel-major) over `row[0..LANES]` through ColorMask `mask`
+/// (§4.2.2): the masked channels of a written pixel and every channel of an unwritten one
+/// keep their stored bytes. A whole group is selected and stored at once (the unwritten pixels
+/// are stored back unchanged; the tile belongs to this thread alone).
+#[inline(always)]
+pub fn store(row: &mut [[u8; 4]], c: &[B; 4], m: u8, mask: [bool; 4]) {
+    let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
+    let Some(px) = row.get_mut(..LANES) else {
+        for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+            if m & (1 << l) != 0 {
+                for (k, d) in dst.iter_mut().enumerate() {
+                    if mask[k] {
+                        *d = c[k][l];
+                    }
+                }
+            }
+        }
+        return;
+    };
+    for (l, dst) in px.iter_mut().enumerate() {
+        let v = u32::from(c[0][l])
+            | u32::from(c[1][l]) << 8
+            | u32::from(c[2][l]) << 16
+            | u32::from(c[3][l]) << 24;
+        let sel = 0u32.wrapping_sub(u32::from((m >> l) & 1)) & cm;
+        let old = u32::from_le_bytes(*dst);
+        *dst = ((old & !sel) | (v & sel)).to_le_bytes();
+    }
 }
 
 #[cfg(test)]
@@ -307,8 +550,13 @@ mod tests {
             let coord = g.lanes();
             let mut got = [clamp01(c[0]), clamp01(c[1]), clamp01(c[2])];
             let a = clamp01(c[3]);
-            fog(&f, &mut got, coord);
-            for l in 0..LANES {
+            let live = if g.next() % 2 == 0 {
+                0xFF
+            } else {
+                g.next() as u8
+            };
+            fog(&f, &mut got, coord, live);
+            for l in (0..LANES).filter(|l| live & (1 << l) != 0) {
                 let v = Vec4::new(c[0][l], c[1][l], c[2][l], c[3][l]).clamp(Vec4::ZERO, Vec4::ONE);
                 let want = f.apply(v, coord[l]);
                 let got = Vec4::new(got[0][l], got[1][l], got[2][l], a[l]);
@@ -386,7 +634,12 @@ mod tests {
             let depth = (g.next() % 4 != 0).then_some((dfunc, write));
             let n = (g.next() % 9) as usize;
             // Few distinct depths so that EQUAL passes now and then.
-            let dv = |g: &mut Gen| (g.next() % 4) as u32 * 1000;
+            // Now and then any value, the top bit set among them (the SSE2 comparison is
+            // signed with that bit flipped).
+            let dv = |g: &mut Gen| match g.next() % 8 {
+                0 => g.next() as u32,
+                _ => (g.next() % 4) as u32 * 1000,
+            };
             let d: [u32; LANES] = std::array::from_fn(|_| dv(&mut g));
             let st0: Vec<u8> = (0..n).map(|_| g.byte()).collect();
             // Now and then a shorter depth row: its missing lanes fail the depth test.
@@ -464,7 +717,7 @@ mod tests {
         let mut g = Gen(17);
         for _ in 0..6000 {
             let pick = |g: &mut Gen| factors[(g.next() % factors.len() as u64) as usize];
-            let b = BlendEval {
+            let mut b = BlendEval {
                 src_rgb: pick(&mut g),
                 dst_rgb: pick(&mut g),
                 src_alpha: pick(&mut g),
@@ -473,6 +726,18 @@ mod tests {
                 eq_alpha: eqs[(g.next() % 5) as usize],
                 constant: std::array::from_fn(|_| g.byte()),
             };
+            // The direct routes (and near misses of them) a third of the time.
+            let usual = [(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA), (gl::ONE, gl::ONE)];
+            if g.next() % 3 == 0 {
+                let (sf, df) = usual[(g.next() % 2) as usize];
+                (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) = (sf, df, sf, df);
+                (b.eq_rgb, b.eq_alpha) = (gl::FUNC_ADD, gl::FUNC_ADD);
+                match g.next() % 6 {
+                    0 => b.eq_alpha = eqs[(g.next() % 5) as usize],
+                    1 => b.dst_alpha = pick(&mut g),
+                    _ => {}
+                }
+            }
             let s: [B; 4] = std::array::from_fn(|_| g.bytes());
             let d: [B; 4] = std::array::from_fn(|_| g.bytes());
             let got = blend(&b, &s, &d);
@@ -494,5 +759,35 @@ mod tests {
         let got = load(&row);
         assert_eq!(got[1], [10, 11, 12, 13, 14, 0, 0, 0]);
         assert_eq!(got[3][4], 34);
+        let row: Vec<[u8; 4]> = (0..11u8).map(|i| [i, i + 100, 255 - i, i ^ 0x80]).collect();
+        for o in 0..4 {
+            let got = load(&row[o..]);
+            for l in 0..LANES {
+                assert_eq!(got.map(|c| c[l]), row[o + l], "offset {o} lane {l}");
+            }
+        }
+    }
+
+    #[test]
+    fn store_writes_the_covered_lanes_through_the_colour_mask() {
+        let mut g = Gen(23);
+        for _ in 0..3000 {
+            let n = (g.next() % 12) as usize;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let c: [B; 4] = std::array::from_fn(|_| g.bytes());
+            let m = g.next() as u8;
+            let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
+            let mut got = row0.clone();
+            store(&mut got, &c, m, mask);
+            let mut want = row0.clone();
+            for (l, dst) in want.iter_mut().take(LANES).enumerate() {
+                for k in 0..4 {
+                    if m & (1 << l) != 0 && mask[k] {
+                        dst[k] = c[k][l];
+                    }
+                }
+            }
+            assert_eq!(got, want, "m {m:#x} mask {mask:?}");
+        }
     }
 }
