@@ -18,15 +18,16 @@
 //! depend on it).
 //!
 //! The front end and the drawing overlap. A batch is drawn at End once it holds 32k vertices
-//! (`flush_if_large`), so memory stays bounded, and at every flush a state change causes. The
-//! calling thread runs that batch's vertex stage itself (the pool is still drawing the previous
-//! batch), then hands setup and rasterisation to the pool with a copy of the state (texture
-//! images are shared through `Arc`, not copied: a change to one still in use copies it) and
-//! goes on recording the next batch. At most one draw is in flight: the next draw and every
-//! framebuffer access (Clear, a read, a copy, a resize) wait for it first, so the draws happen
+//! (`flush_if_large`), so memory stays bounded. The calling thread runs that batch's vertex
+//! stage itself (the pool is still drawing the previous batch), then hands setup and
+//! rasterisation to the pool with a copy of the state (texture images are shared through
+//! `Arc`, not copied: a change to one still in use copies it) and goes on filling the next
+//! batch. At most one draw is in flight: the next `flush_if_large`, any other flush (a state
+//! change, Clear, a read) and every framebuffer access wait for it first, so the draws happen
 //! one after the other in call order and the pixels are exactly those of drawing in place
 //! (tested in `tests/overlap.rs` under this module). A caller running on the pool itself draws
-//! in place.
+//! in place. A flush at a state change is drawn in place: handing it to the pool too was
+//! measured slower on the fragment-heavy scenes (docs/conformance.md, Speed).
 //!
 //! Naming: the state (`crate::state`, `crate::texture`) is named after GL's state blocks
 //! (`Fog`, `Blend`, `TexGen`, `Combine`); what this module derives from it when a batch is
@@ -488,19 +489,17 @@ impl Renderer {
         self.batch.clear();
     }
 
-    /// Draws everything batched so far with `state`, leaving the batch empty: in the
-    /// background (as [`Renderer::flush_if_large`]) when called off the pool in RENDER mode, so
-    /// that the front end records, and runs the vertex stage of, the next batch while this one
-    /// is rasterised (a state change between two draws no longer leaves the pool idle while the
-    /// caller works); every framebuffer access waits for it first, so the pixels are those of
-    /// drawing in place. An empty batch waits for nothing.
+    /// Draws everything batched so far with `state`, leaving the batch empty. The draw happens
+    /// in place (setup and rasterisation still spread over the pool): handing a state change's
+    /// flush to the pool as `flush_if_large` does was measured slower (see docs/conformance.md,
+    /// Speed, fourth session).
     pub fn flush(&mut self, state: &State) {
+        self.wait();
         if self.batch.is_empty() {
             self.batch.clear();
             return;
         }
         if state.render_mode != crate::gl::RENDER {
-            self.wait();
             // Hit records or feedback tokens instead of fragments.
             let Renderer {
                 batch,
@@ -513,19 +512,6 @@ impl Renderer {
             batch.clear();
             return;
         }
-        if rayon::current_thread_index().is_none() {
-            // The vertex stage splits across the pool only when nothing is drawing there;
-            // otherwise it runs here, beside the draw before it.
-            let parallel = self.pending.is_none() && self.batch.idx.len() >= PARALLEL_SETUP;
-            let t0 = std::time::Instant::now();
-            let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, parallel);
-            self.draw_in_background(state, plan);
-            self.stats.handoffs += 1;
-            self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
-            return;
-        }
-        // A caller running on the pool itself draws in place (see `flush_if_large`).
-        self.wait();
         let count = self.count_coverage;
         let samples = self.count_samples;
         let t0 = std::time::Instant::now();
