@@ -486,6 +486,18 @@ struct BenchRow {
     gl_ms: f64,
 }
 
+/// `--threads N`: the CPU backend's pool gets N threads (before the first Context, which would
+/// start it with one thread per core).
+fn cpu_threads(threads: Option<u32>) -> Result<(), CliError> {
+    if let Some(n) = threads {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n as usize)
+            .build_global()
+            .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
+    }
+    Ok(())
+}
+
 /// `bench --stages`: a CPU frame's median time in each stage, in milliseconds.
 fn bench_stages(
     names: &[String],
@@ -494,12 +506,7 @@ fn bench_stages(
     threads: Option<u32>,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
-    if let Some(n) = threads {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n as usize)
-            .build_global()
-            .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
-    }
+    cpu_threads(threads)?;
     println!(
         "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8}",
         "scene", "frame", "reset", "replay", "image", "draws", "draw ms", "wait", "handoffs"
@@ -557,13 +564,7 @@ fn bench(
     device: &str,
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
-    if let Some(n) = threads {
-        // Before the first Context, which would start the pool with one thread per core.
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n as usize)
-            .build_global()
-            .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
-    }
+    cpu_threads(threads)?;
     if !json {
         println!(
             "{:<20} {:>11} {:>10} {:>10} {:>8}",

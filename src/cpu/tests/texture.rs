@@ -50,6 +50,41 @@ fn obj_with(levels: Vec<Level>, min: u32, mag: u32) -> TexObject {
     o
 }
 
+/// A 64-bit linear congruential generator seeded with `seed`: each call gives its next state's
+/// top 53 bits (the tests' source of random planes, coordinates and masks).
+fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    }
+}
+
+/// One sampler of a 64x32 image per kind of λ: 1D, 2D, 3D (8 deep) and cube map.
+fn lambda_samplers() -> Vec<Sampler> {
+    let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
+    let mut samplers = Vec::new();
+    for dims in [1, 2, 3] {
+        let mut s = sampler(
+            obj_with(vec![lv(64, 32)], gl::NEAREST, gl::LINEAR),
+            gl::MODULATE,
+        );
+        s.dims = dims;
+        s.size = [
+            64.0,
+            if dims >= 2 { 32.0 } else { 0.0 },
+            if dims == 3 { 8.0 } else { 0.0 },
+        ];
+        samplers.push(s.clone());
+        if dims == 2 {
+            s.cube = true;
+            samplers.push(s);
+        }
+    }
+    samplers
+}
+
 fn close(a: [f32; 4], b: [f32; 4]) -> bool {
     a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-5)
 }
@@ -348,32 +383,8 @@ fn repeat_index_is_rem_euclid_for_every_size() {
 fn quad_lambda_lanes_is_the_scalar_lambda_bit_for_bit() {
     // Every target's sampler (1D, 2D, 3D, cube) over awkward planes: each lane holds exactly
     // what `quad_lambda` gives for its quad.
-    let mut seed = 3u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
-    let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
-    let mut samplers = Vec::new();
-    for dims in [1, 2, 3] {
-        let mut s = sampler(
-            obj_with(vec![lv(64, 32)], gl::NEAREST, gl::LINEAR),
-            gl::MODULATE,
-        );
-        s.dims = dims;
-        s.size = [
-            64.0,
-            if dims >= 2 { 32.0 } else { 0.0 },
-            if dims == 3 { 8.0 } else { 0.0 },
-        ];
-        samplers.push(s.clone());
-        if dims == 2 {
-            s.cube = true;
-            samplers.push(s);
-        }
-    }
+    let mut next = lcg(3u64);
+    let samplers = lambda_samplers();
     for round in 0..3000 {
         let s = &samplers[round % samplers.len()];
         let np = 3 + 3 * (1 + (next() % 9) as usize);
@@ -404,13 +415,7 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
     // not, power-of-two or not, with random LOD bounds and bias, over awkward coordinates
     // (outside [0, 1], huge, q = 0, negative q, NaN, infinities) and λ: each lane of
     // `texels_lanes` then `env_lanes` holds exactly what `shade` gives for its fragment.
-    let mut seed = 11u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
+    let mut next = lcg(11u64);
     let bases = [
         gl::ALPHA,
         gl::LUMINANCE,
@@ -597,13 +602,7 @@ fn ref_wrap_linear(mode: u32, s: f32, n: i32) -> (Option<i32>, Option<i32>, f32)
 fn wrap_lanes_are_the_reference_wraps_for_every_mode() {
     // Every wrap mode, lanes on axes of different sizes (all powers of two, or mixed), over
     // awkward coordinates: each lane's index, inside flag and weight are the reference's.
-    let mut seed = 5u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
+    let mut next = lcg(5u64);
     let modes = [
         gl::REPEAT,
         gl::CLAMP,
@@ -682,13 +681,7 @@ fn level_selection_is_the_reference_selection() {
     // `select` (ceil and floor by truncation) against §3.8.8's selection as `sample_face`
     // wrote it with `f32::ceil` / `floor`, for every minification filter, both switch points,
     // random LOD bounds (min > max and NaN among them), biases and λ (NaN, infinities, huge).
-    let mut seed = 17u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
+    let mut next = lcg(17u64);
     let mins = [
         gl::NEAREST,
         gl::LINEAR,
@@ -778,32 +771,8 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
     // Spans of every alignment (odd and even first pixel, odd and even plane origin), lengths
     // up to and past the row buffer, groups visited with gaps as a span's coverage skips them:
     // each lane's λ is `quad_lambda` of its pixel's quad, bit for bit.
-    let mut seed = 23u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
-    let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
-    let mut samplers = Vec::new();
-    for dims in [1, 2, 3] {
-        let mut s = sampler(
-            obj_with(vec![lv(64, 32)], gl::NEAREST, gl::LINEAR),
-            gl::MODULATE,
-        );
-        s.dims = dims;
-        s.size = [
-            64.0,
-            if dims >= 2 { 32.0 } else { 0.0 },
-            if dims == 3 { 8.0 } else { 0.0 },
-        ];
-        samplers.push(s.clone());
-        if dims == 2 {
-            s.cube = true;
-            samplers.push(s);
-        }
-    }
+    let mut next = lcg(23u64);
+    let samplers = lambda_samplers();
     let mut checked = 0;
     for round in 0..3000 {
         let s = &samplers[round % samplers.len()];
@@ -846,13 +815,7 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
 fn ifloor_lanes_is_ifloor() {
     // The SSE2 truncation with `as i32`'s saturation and the step down, against `ifloor`:
     // the edges of the i32 range, NaN, infinities, signed zeros, subnormals, random bits.
-    let mut seed = 29u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    };
+    let mut next = lcg(29u64);
     let edges = [
         f32::NAN,
         -f32::NAN,
