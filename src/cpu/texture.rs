@@ -499,20 +499,7 @@ impl Sampler {
         match self.compare {
             None => self.pass_on(linear, &views, s, t, m, out, |_, t| t),
             Some(func) => self.pass_on(linear, &views, s, t, m, out, |l, t| {
-                // `fetch`'s comparison.
-                let d = t[0];
-                let r = r[l].clamp(0.0, 1.0);
-                let pass = match func {
-                    gl::LEQUAL => r <= d,
-                    gl::GEQUAL => r >= d,
-                    gl::LESS => r < d,
-                    gl::GREATER => r > d,
-                    gl::EQUAL => r == d,
-                    gl::NOTEQUAL => r != d,
-                    gl::ALWAYS => true,
-                    _ => false,
-                };
-                [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
+                depth_compare(func, r[l], t)
             }),
         }
     }
@@ -867,21 +854,7 @@ impl Sampler {
             _ => crate::texture::keep(self.base, self.border),
         };
         match self.compare {
-            Some(func) => {
-                let d = t[0];
-                let r = r.clamp(0.0, 1.0);
-                let pass = match func {
-                    gl::LEQUAL => r <= d,
-                    gl::GEQUAL => r >= d,
-                    gl::LESS => r < d,
-                    gl::GREATER => r > d,
-                    gl::EQUAL => r == d,
-                    gl::NOTEQUAL => r != d,
-                    gl::ALWAYS => true,
-                    _ => false,
-                };
-                [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
-            }
+            Some(func) => depth_compare(func, r, t),
             None => t,
         }
     }
@@ -1012,6 +985,25 @@ fn cube_project(face: usize, [x, y, z]: [f32; 3]) -> (f32, f32) {
     let m = ma.abs();
     let inv = if m > 0.0 { 0.5 / m } else { 0.0 };
     (sc * inv + 0.5, tc * inv + 0.5)
+}
+
+/// The depth comparison of §3.8.14 (TEXTURE_COMPARE_MODE COMPARE_R_TO_TEXTURE): `r` clamped
+/// to [0, 1] against the texel's depth `t[0]` under `func`; 1 where it passes, else 0.
+#[inline(always)]
+fn depth_compare(func: u32, r: f32, t: [f32; 4]) -> [f32; 4] {
+    let d = t[0];
+    let r = r.clamp(0.0, 1.0);
+    let pass = match func {
+        gl::LEQUAL => r <= d,
+        gl::GEQUAL => r >= d,
+        gl::LESS => r < d,
+        gl::GREATER => r > d,
+        gl::EQUAL => r == d,
+        gl::NOTEQUAL => r != d,
+        gl::ALWAYS => true,
+        _ => false,
+    };
+    [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
 }
 
 /// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.

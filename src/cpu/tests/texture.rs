@@ -61,6 +61,20 @@ fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
     }
 }
 
+/// A primitive's planes for the λ tests: the 1/w plane and 1 to 9 varyings' planes, with zeros,
+/// random bit patterns (NaN, infinities, subnormals), small negatives and values around 0.
+fn random_planes(next: &mut impl FnMut() -> u64) -> Vec<f32> {
+    let np = 3 + 3 * (1 + (next() % 9) as usize);
+    (0..np)
+        .map(|_| match next() % 8 {
+            0 => 0.0,
+            1 => f32::from_bits(next() as u32),
+            2 => -((next() % 1000) as f32) * 1e-3,
+            _ => (next() % 100_000) as f32 * 1e-4 - 2.0,
+        })
+        .collect()
+}
+
 /// One sampler of a 64x32 image per kind of λ: 1D, 2D, 3D (8 deep) and cube map.
 fn lambda_samplers() -> Vec<Sampler> {
     let lv = |w, h| level(w, h, gl::RGBA, |_, _| [0.5; 4]);
@@ -387,15 +401,7 @@ fn quad_lambda_lanes_is_the_scalar_lambda_bit_for_bit() {
     let samplers = lambda_samplers();
     for round in 0..3000 {
         let s = &samplers[round % samplers.len()];
-        let np = 3 + 3 * (1 + (next() % 9) as usize);
-        let planes: Vec<f32> = (0..np)
-            .map(|_| match next() % 8 {
-                0 => 0.0,
-                1 => f32::from_bits(next() as u32),
-                2 => -((next() % 1000) as f32) * 1e-3,
-                _ => (next() % 100_000) as f32 * 1e-4 - 2.0,
-            })
-            .collect();
+        let planes = random_planes(&mut next);
         let to = (next() % 4) as usize;
         let qx: [f32; LANES] = std::array::from_fn(|_| ((next() % 400) as i32 - 50) as f32);
         let qy = ((next() % 400) as i32 - 50) as f32;
@@ -776,15 +782,7 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
     let mut checked = 0;
     for round in 0..3000 {
         let s = &samplers[round % samplers.len()];
-        let np = 3 + 3 * (1 + (next() % 9) as usize);
-        let planes: Vec<f32> = (0..np)
-            .map(|_| match next() % 8 {
-                0 => 0.0,
-                1 => f32::from_bits(next() as u32),
-                2 => -((next() % 1000) as f32) * 1e-3,
-                _ => (next() % 100_000) as f32 * 1e-4 - 2.0,
-            })
-            .collect();
+        let planes = random_planes(&mut next);
         let to = (next() % 4) as usize;
         let ox = (next() % 300) as i32 - 100;
         let oy = (next() % 300) as i32 - 100;
