@@ -444,6 +444,27 @@ pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
     }
 }
 
+/// The texel CopyTexImage / CopyTexSubImage store (§3.8.2) for a framebuffer pixel `px`
+/// (colour, 24-bit depth, stencil as `Framebuffer::pixel_in` gives them; `None` outside the
+/// framebuffer, read as zero) in a texture of base format `base`: depth d as d / (2^24 - 1),
+/// DEPTH_STENCIL's stencil as an integer, colour v as v / 255 through [`keep`].
+///
+/// It is `quantize(base, ..)` of that value without the call: every such value is already at the
+/// stored precision, so [`quantize`] returns it bit for bit (for all 2^24 depths, checked by the
+/// unit test `fb_texels_are_quantized`, and all 256 colour values). That spares the per-texel
+/// `roundf` library call (f32::round on the x86-64 baseline) that dominated a shadow map's
+/// per-frame depth copy.
+#[inline]
+pub fn fb_texel(base: u32, px: Option<([u8; 4], u32, u8)>) -> [f32; 4] {
+    const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;
+    match (px, base) {
+        (Some((_, d, _)), gl::DEPTH_COMPONENT) => [d as f32 / DEPTH_MAX, 0.0, 0.0, 0.0],
+        (Some((_, d, s)), gl::DEPTH_STENCIL) => [d as f32 / DEPTH_MAX, f32::from(s), 0.0, 0.0],
+        (Some((c, _, _)), _) => keep(base, c.map(|v| f32::from(v) / 255.0)),
+        (None, _) => [0.0; 4],
+    }
+}
+
 /// Texture coordinate generation for one coordinate (GL 2.1 §2.11.4, table 6.15).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexGen {
@@ -954,4 +975,44 @@ pub fn texture_from_image(img: &image::DynamicImage) -> (i32, i32, Vec<u8>) {
 /// `f32` values as the native-endian bytes `tex_image_2d(.., FLOAT, ..)` takes.
 pub fn f32_bytes(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_ne_bytes()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`fb_texel`] is `quantize` of the value it computes, bit for bit: every 24-bit depth,
+    /// every stencil, every colour value in every base format, and a pixel outside.
+    #[test]
+    fn fb_texels_are_quantized() {
+        const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;
+        let bits = |t: [f32; 4]| t.map(f32::to_bits);
+        for d in 0..1u32 << 24 {
+            let z = d as f32 / DEPTH_MAX;
+            let want = quantize(gl::DEPTH_COMPONENT, [z, 0.0, 0.0, 0.0]);
+            let got = fb_texel(gl::DEPTH_COMPONENT, Some(([0; 4], d, 0)));
+            assert_eq!(bits(got), bits(want), "depth {d}");
+            let s = (d % 256) as u8;
+            let want = quantize(gl::DEPTH_STENCIL, [z, f32::from(s), 0.0, 0.0]);
+            let got = fb_texel(gl::DEPTH_STENCIL, Some(([0; 4], d, s)));
+            assert_eq!(bits(got), bits(want), "depth {d} stencil {s}");
+        }
+        let bases = [
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+            gl::INTENSITY,
+            gl::RGB,
+            gl::RGBA,
+        ];
+        for base in bases {
+            for v in 0..=255u8 {
+                let c = [v, 255 - v, v / 3, v ^ 0x5a];
+                let t = keep(base, c.map(|v| f32::from(v) / 255.0));
+                let got = fb_texel(base, Some((c, 0, 0)));
+                assert_eq!(bits(got), bits(quantize(base, t)), "base {base:#x} {c:?}");
+            }
+            assert_eq!(bits(fb_texel(base, None)), bits(quantize(base, [0.0; 4])));
+        }
+    }
 }

@@ -29,8 +29,8 @@ use crate::call::Call;
 use crate::gl;
 use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
-    as_rgba, base_internal_format, image_binding, image_need3, is_depth, keep, proxy_index,
-    quantize, slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
+    as_rgba, base_internal_format, image_binding, image_need3, is_depth, proxy_index, quantize,
+    slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
     MAX_TEXTURE_SIZE,
 };
 
@@ -1137,26 +1137,11 @@ impl Context {
         out.try_reserve_exact(w.max(0) as usize * h.max(0) as usize)
             .ok()?;
         for j in 0..h.max(0) {
-            for i in 0..w.max(0) {
-                let px = fb.pixel_in(
-                    buf,
-                    i64::from(x) + i64::from(i),
-                    i64::from(y) + i64::from(j),
-                );
-                let t = match (px, base) {
-                    (Some((_, d, _)), gl::DEPTH_COMPONENT) => {
-                        let z = d as f32 / crate::cpu::framebuffer::DEPTH_MAX as f32;
-                        [z, 0.0, 0.0, 0.0]
-                    }
-                    (Some((_, d, s)), gl::DEPTH_STENCIL) => {
-                        let z = d as f32 / crate::cpu::framebuffer::DEPTH_MAX as f32;
-                        [z, f32::from(s), 0.0, 0.0]
-                    }
-                    (Some((c, _, _)), _) => keep(base, c.map(|v| f32::from(v) / 255.0)),
-                    (None, _) => [0.0; 4],
-                };
-                out.push(quantize(base, t));
-            }
+            // Each texel is already at the stored precision: `quantize` would return it as is.
+            let row = i64::from(y) + i64::from(j);
+            fb.pixels_in(buf, i64::from(x), row, w.max(0) as usize, |px| {
+                out.push(crate::texture::fb_texel(base, px));
+            });
         }
         Some(out)
     }

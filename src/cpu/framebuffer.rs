@@ -346,6 +346,54 @@ impl Framebuffer {
         ))
     }
 
+    /// [`Framebuffer::pixel_in`] of the `n` pixels (x + k, y), k = 0 .. n, given to `f` in
+    /// that order: the same values, with each tile's pending clear looked up once per run of
+    /// pixels in it rather than per pixel (CopyTexImage's read of a rectangle, row by row).
+    pub fn pixels_in(
+        &self,
+        buf: ColorBuf,
+        x: i64,
+        y: i64,
+        n: usize,
+        mut f: impl FnMut(Option<([u8; 4], u32, u8)>),
+    ) {
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let src = self.buffer(buf);
+        let front = matches!((buf, &self.front), (ColorBuf::Front, Some(_)));
+        let mut k = 0usize;
+        while k < n {
+            let px = x.saturating_add(k as i64);
+            if px < 0 || y < 0 || px >= w || y >= h {
+                f(None);
+                k += 1;
+                continue;
+            }
+            // The pixels from px to the end of its tile, of the row or of the request.
+            let run = (TILE - px as usize % TILE)
+                .min(n - k)
+                .min((w - px) as usize);
+            let i0 = self.index(px as usize, y as usize);
+            let fill = self
+                .pending
+                .get(i0 / TILE_PIXELS)
+                .copied()
+                .unwrap_or_default();
+            let pending_color = if front { fill.front } else { fill.main };
+            for i in i0..i0 + run {
+                let c = pending_color.map_or_else(|| src.get(i).copied(), Some);
+                let d = fill.depth.map_or_else(|| self.depth.get(i).copied(), Some);
+                let s = fill
+                    .stencil
+                    .map_or_else(|| self.stencil.get(i).copied(), Some);
+                f(match (c, d, s) {
+                    (Some(c), Some(d), Some(s)) => Some((c, d, s)),
+                    _ => None,
+                });
+            }
+            k += run;
+        }
+    }
+
     /// The colour buffer as bottom-up rows (GL window order), `width * height` pixels.
     #[cfg(test)]
     pub fn color_rows(&self) -> Vec<[u8; 4]> {
@@ -761,6 +809,52 @@ mod tests {
         let i = fb.index(129, 69);
         assert_eq!((fb.color[i], fb.depth[i]), (mixed, 8_388_608));
         assert_eq!(fb.color_bytes_top_down()[..4], mixed);
+    }
+
+    /// `pixels_in` gives `pixel_in`'s values for spans that start and end outside the
+    /// framebuffer, cross tiles with and without pending clears, and read either colour buffer.
+    #[test]
+    fn pixels_in_is_pixel_in_per_pixel() {
+        let config = ContextConfig {
+            double_buffered: true,
+            ..ContextConfig::default()
+        };
+        let mut fb = Framebuffer::try_new(130, 70, config).expect("a test framebuffer");
+        let mut st = State::new(130, 70);
+        st.config = config;
+        let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
+        st.clear_color = Vec4::new(0.0, 1.0, 0.0, 1.0);
+        fb.clear(&st, all);
+        // The front buffer gets the green, materialised; then the back buffer a pending red.
+        fb.swap();
+        st.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
+        st.clear_depth = 0.25;
+        st.clear_stencil = 9;
+        fb.clear(&st, all);
+        // A scissored clear writes part of some tiles eagerly; the rest stay pending.
+        st.enables.scissor_test = true;
+        st.scissor = [60, 10, 20, 50];
+        st.clear_color = Vec4::new(0.0, 0.5, 1.0, 1.0);
+        st.clear_depth = 0.75;
+        st.clear_stencil = 4;
+        fb.clear(&st, all);
+        for buf in [ColorBuf::Main, ColorBuf::Front] {
+            for y in [-1i64, 0, 10, 33, 63, 64, 69, 70] {
+                for (x, n) in [
+                    (-5i64, 20usize),
+                    (0, 130),
+                    (50, 30),
+                    (120, 40),
+                    (-3, 200),
+                    (131, 4),
+                ] {
+                    let mut got = Vec::new();
+                    fb.pixels_in(buf, x, y, n, |p| got.push(p));
+                    let want: Vec<_> = (0..n as i64).map(|k| fb.pixel_in(buf, x + k, y)).collect();
+                    assert_eq!(got, want, "{buf:?} y {y} x {x} n {n}");
+                }
+            }
+        }
     }
 
     #[test]
