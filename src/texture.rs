@@ -429,19 +429,41 @@ pub fn is_depth(base: u32) -> bool {
 /// an 8-bit stencil index (DEPTH_STENCIL's G, an integer).
 pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
     let s = 16_777_215.0;
+    let mut out = [0.0f32; 4];
     if base == gl::DEPTH_COMPONENT {
-        t.map(|c| (c.clamp(0.0, 1.0) * s).round() / s)
+        for (o, c) in out.iter_mut().zip(t) {
+            *o = round_small(c.clamp(0.0, 1.0) * s) / s;
+        }
+        out
     } else if base == gl::DEPTH_STENCIL {
-        let d = (t[0].clamp(0.0, 1.0) * s).round() / s;
+        let d = round_small(t[0].clamp(0.0, 1.0) * s) / s;
         let st = if t[1].is_nan() {
             0.0
         } else {
-            t[1].clamp(0.0, 255.0).round()
+            round_small(t[1].clamp(0.0, 255.0))
         };
         [d, st, 0.0, 0.0]
     } else {
-        t.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0)
+        for (o, c) in out.iter_mut().zip(t) {
+            *o = round_small(c.clamp(0.0, 1.0) * 255.0) / 255.0;
+        }
+        out
     }
+}
+
+/// `x.round()` (half away from zero) for `x` in [-0, 2^24] or NaN, the values [`quantize`]
+/// rounds, without libm's `roundf` (what `f32::round` is on the x86-64 baseline: a call per
+/// component of every texel stored): the truncation by `as i32` (exact below 2^31), plus one
+/// where the fraction x - t (exact) is at least 1/2, with x's sign (so -0 stays -0). A NaN takes
+/// `f32::round` itself. Checked against `f32::round` in the test `round_small_is_round`.
+#[inline(always)]
+fn round_small(x: f32) -> f32 {
+    if x.is_nan() {
+        return x.round();
+    }
+    let t = x as i32 as f32;
+    let r = if x - t >= 0.5 { t + 1.0 } else { t };
+    r.copysign(x)
 }
 
 /// The texel CopyTexImage / CopyTexSubImage store (§3.8.2) for a framebuffer pixel `px`
@@ -980,6 +1002,84 @@ pub fn f32_bytes(values: &[f32]) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `quantize` as it was written with `f32::round`.
+    fn quantize_ref(base: u32, t: [f32; 4]) -> [f32; 4] {
+        let s = 16_777_215.0;
+        if base == gl::DEPTH_COMPONENT {
+            t.map(|c| (c.clamp(0.0, 1.0) * s).round() / s)
+        } else if base == gl::DEPTH_STENCIL {
+            let d = (t[0].clamp(0.0, 1.0) * s).round() / s;
+            let st = if t[1].is_nan() {
+                0.0
+            } else {
+                t[1].clamp(0.0, 255.0).round()
+            };
+            [d, st, 0.0, 0.0]
+        } else {
+            t.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0)
+        }
+    }
+
+    /// `round_small` is `f32::round` bit for bit on [-0, 2^24] and NaN: every value within
+    /// 64 ulps of each half-integer and integer up to 2^12, every 61st bit pattern of the
+    /// range, the ends; and `quantize` is the `f32::round` version on every 997th f32 bit
+    /// pattern (NaN, infinities, negatives, subnormals included) in each base format.
+    #[test]
+    fn round_small_is_round() {
+        let check = |x: f32| {
+            assert_eq!(
+                round_small(x).to_bits(),
+                x.round().to_bits(),
+                "{x:e} ({:#x})",
+                x.to_bits()
+            );
+        };
+        for k in 0..=4096u32 {
+            for c in [k as f32, k as f32 + 0.5] {
+                let b = c.to_bits();
+                for d in 0..=128u32 {
+                    check(f32::from_bits((b + d).saturating_sub(64)));
+                }
+            }
+        }
+        let top = (1u32 << 24) as f32;
+        for b in (0..=top.to_bits()).step_by(61) {
+            check(f32::from_bits(b));
+        }
+        for x in [
+            0.0,
+            -0.0,
+            top,
+            f32::NAN,
+            -f32::NAN,
+            0.5,
+            0.49999997,
+            8_388_607.5,
+        ] {
+            check(x);
+        }
+        let bases = [
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::RGB,
+            gl::RGBA,
+            gl::DEPTH_COMPONENT,
+            gl::DEPTH_STENCIL,
+        ];
+        for b in (0..=u32::MAX).step_by(997) {
+            let x = f32::from_bits(b);
+            let t = [x, f32::from_bits(b.rotate_left(7)), -x, x * 0.25];
+            for base in bases {
+                let (got, want) = (quantize(base, t), quantize_ref(base, t));
+                assert_eq!(
+                    got.map(f32::to_bits),
+                    want.map(f32::to_bits),
+                    "{base:#x} {t:?}"
+                );
+            }
+        }
+    }
 
     /// [`fb_texel`] is `quantize` of the value it computes, bit for bit: every 24-bit depth,
     /// every stencil, every colour value in every base format, and a pixel outside.

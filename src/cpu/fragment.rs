@@ -273,9 +273,10 @@ impl FragCtx<'_> {
             let (cs, ct, cr, cq) = (g(o), g(o + 1), g(o + 2), g(o + 3));
             *tl = tx.texels_lanes([&cs, &ct, &cr, &cq], lu, m);
         }
+        let prim = c;
         for (tl, t) in texels.iter().zip(&self.tex) {
             let Some((tx, _)) = *t else { break };
-            tx.env_lanes(&mut c, tl, m);
+            tx.env_lanes_with(&mut c, &prim, tl, m);
         }
         if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
             let (sr, sg, sb) = (g(o), g(o + 1), g(o + 2));

@@ -21,6 +21,8 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use super::lanes::{recip_lanes, LANES};
+
+mod targets;
 use crate::gl;
 use crate::state::{State, MAX_TEXTURE_UNITS};
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
@@ -218,8 +220,8 @@ impl Sampler {
     /// [`Sampler::quad_lambda`] for eight quads at once, lane l's quad at (`qx[l]`, `qy`): the
     /// same operations in the same order on lanes (the division by q as `divps`), written as
     /// plain loops over lane arrays so that the compiler keeps them in vector registers; each
-    /// lane holds exactly the scalar result's bits. A cube map takes the scalar routine lane by
-    /// lane (its face choice differs between lanes).
+    /// lane holds exactly the scalar result's bits. A cube map takes `cube_lambda_lanes` (its
+    /// face choice differs between lanes).
     #[inline]
     pub fn quad_lambda_lanes(
         &self,
@@ -229,7 +231,7 @@ impl Sampler {
         qy: f32,
     ) -> [f32; LANES] {
         if self.cube {
-            return qx.map(|x| self.quad_lambda(planes, to, x, qy));
+            return self.cube_lambda_lanes(planes, to, qx, qy);
         }
         let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
         let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
@@ -312,12 +314,13 @@ impl Sampler {
         }
     }
 
-    /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes`] stand for [`Sampler::shade`]:
-    /// a 2D texture (not a cube map; depth textures and the depth comparison included), an
-    /// environment other than COMBINE. Chosen once per span.
+    /// Can [`Sampler::texels_lanes`] and [`Sampler::env_lanes_with`] stand for
+    /// [`Sampler::shade`]: every target (1D, 3D and cube maps by `targets_lanes`; depth
+    /// textures and the depth comparison included) and every environment but a COMBINE with
+    /// TEXTUREn sources (the crossbar needs the other units' texels). Chosen once per span.
     #[inline]
     pub fn lanes_ok(&self) -> bool {
-        self.dims == 2 && !self.cube && self.env != gl::COMBINE
+        !self.crossbar
     }
 
     /// The filtered texels of eight fragments (the texel `shade` filters for each, lane-major)
@@ -334,6 +337,9 @@ impl Sampler {
         lambda: &[f32; LANES],
         m: u8,
     ) -> TexelLanes {
+        if self.dims != 2 || self.cube {
+            return self.targets_texels(coords, lambda, m);
+        }
         let [s, t, r, q] = coords;
         let rq = recip_lanes(*q);
         let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);

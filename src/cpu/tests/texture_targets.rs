@@ -1,0 +1,437 @@
+//! The lane routes of `texture/targets.rs` against the scalar sampler, bit for bit: 1D, 3D and
+//! cube-map textures through `texels_lanes` (every wrap mode, filter pair, mipmapped or not,
+//! power-of-two or not, border colours, depth comparison, cube edges and corners, NaN and huge
+//! coordinates, q = 0), and COMBINE through `env_lanes_with` (every function, source and
+//! operand, each scale).
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use crate::cpu::lanes::LANES;
+use crate::cpu::texture::Sampler;
+use crate::gl;
+use crate::state::State;
+use crate::texture::{Level, TexObject, MAX_LEVELS};
+
+/// A 64-bit linear congruential generator: each call gives the next state's top 53 bits.
+fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed >> 11
+    }
+}
+
+/// A `w` x `h` x `d` level of base format `base` with random texels (multiples of 1/1000).
+fn random_level(w: i32, h: i32, d: i32, base: u32, next: &mut impl FnMut() -> u64) -> Level {
+    let texels = (0..w * h * d)
+        .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
+        .collect();
+    Level {
+        width: w,
+        height: h,
+        depth: d,
+        internal_format: base as i32,
+        base,
+        texels,
+    }
+}
+
+/// The sampler of unit 0 with `obj` bound to `target` (enabled) and environment `env`.
+fn sampler_on(target: u32, obj: TexObject, env: u32, combine: crate::texture::Combine) -> Sampler {
+    let mut state = State::new(4, 4);
+    let k = match target {
+        gl::TEXTURE_1D => {
+            state.enables.texture_1d[0] = true;
+            0
+        }
+        gl::TEXTURE_2D => {
+            state.enables.texture_2d[0] = true;
+            1
+        }
+        gl::TEXTURE_3D => {
+            state.enables.texture_3d[0] = true;
+            2
+        }
+        _ => {
+            state.enables.texture_cube_map[0] = true;
+            3
+        }
+    };
+    state.textures.defaults[k] = Arc::new(obj);
+    let u = &mut state.textures.units[0];
+    u.env_mode = env;
+    u.env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
+    u.combine = combine;
+    Sampler::new(&state, 0).expect("complete texture")
+}
+
+/// Same bits, or both NaN.
+fn same(a: [f32; 4], b: [f32; 4]) -> bool {
+    a.iter()
+        .zip(b)
+        .all(|(x, y)| x.to_bits() == y.to_bits() || x.is_nan() && y.is_nan())
+}
+
+const WRAPS: [u32; 5] = [
+    gl::REPEAT,
+    gl::CLAMP,
+    gl::CLAMP_TO_EDGE,
+    gl::CLAMP_TO_BORDER,
+    gl::MIRRORED_REPEAT,
+];
+const MINS: [u32; 6] = [
+    gl::NEAREST,
+    gl::LINEAR,
+    gl::NEAREST_MIPMAP_NEAREST,
+    gl::LINEAR_MIPMAP_NEAREST,
+    gl::NEAREST_MIPMAP_LINEAR,
+    gl::LINEAR_MIPMAP_LINEAR,
+];
+const BASES: [u32; 6] = [
+    gl::ALPHA,
+    gl::LUMINANCE,
+    gl::LUMINANCE_ALPHA,
+    gl::INTENSITY,
+    gl::RGB,
+    gl::RGBA,
+];
+
+/// A random complete object of `target` (1D, 2D, 3D or cube map): random base size (power of two
+/// or not), every level down to 1 when `min` mipmaps, random wraps, LOD bounds and bias, a
+/// border colour; a depth texture with or without comparison when `depth`.
+fn random_object(target: u32, depth: bool, next: &mut impl FnMut() -> u64) -> TexObject {
+    let base = if depth {
+        [gl::DEPTH_COMPONENT, gl::DEPTH_STENCIL][(next() % 2) as usize]
+    } else {
+        BASES[(next() % 6) as usize]
+    };
+    let sizes = [1, 2, 3, 4, 5, 7, 8, 16];
+    let pick = |next: &mut dyn FnMut() -> u64| sizes[(next() % sizes.len() as u64) as usize];
+    let (mut w, mut h, mut d) = match target {
+        gl::TEXTURE_1D => (pick(next), 1, 1),
+        gl::TEXTURE_2D => (pick(next), pick(next), 1),
+        gl::TEXTURE_3D => (pick(next), pick(next), pick(next)),
+        _ => {
+            let n = pick(next);
+            (n, n, 1)
+        }
+    };
+    let mut o = TexObject::new(target);
+    o.min_filter = MINS[(next() % 6) as usize];
+    o.mag_filter = if next() % 2 == 0 {
+        gl::NEAREST
+    } else {
+        gl::LINEAR
+    };
+    let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
+    let mut k = 0;
+    loop {
+        for f in 0..faces {
+            o.levels[f * MAX_LEVELS + k] = Some(random_level(w, h, d, base, next));
+        }
+        if w == 1 && h == 1 && d == 1 {
+            break;
+        }
+        let dim = |n: i32, on: bool| if on { (n / 2).max(1) } else { 1 };
+        (w, h, d) = (
+            dim(w, true),
+            dim(h, target != gl::TEXTURE_1D),
+            dim(d, target == gl::TEXTURE_3D),
+        );
+        k += 1;
+    }
+    o.wrap_s = WRAPS[(next() % 5) as usize];
+    o.wrap_t = WRAPS[(next() % 5) as usize];
+    o.wrap_r = WRAPS[(next() % 5) as usize];
+    o.border_color = Vec4::new(0.25, 0.5, 0.75, 0.125);
+    if next() % 3 == 0 {
+        o.min_lod = (next() % 40) as f32 * 0.125 - 1.0;
+        o.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
+        o.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
+    }
+    if depth {
+        o.compare_mode = if next() % 4 == 0 {
+            gl::NONE
+        } else {
+            gl::COMPARE_R_TO_TEXTURE
+        };
+        o.compare_func = [
+            gl::LEQUAL,
+            gl::GEQUAL,
+            gl::LESS,
+            gl::GREATER,
+            gl::EQUAL,
+            gl::NOTEQUAL,
+            gl::ALWAYS,
+            gl::NEVER,
+        ][(next() % 8) as usize];
+        o.depth_texture_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
+    }
+    o
+}
+
+/// An awkward coordinate: 0, random bits (NaN, infinities, subnormals), ±1 and ±0.5 (cube
+/// edges and corners when the three agree in magnitude), huge, small steps, or spread values.
+fn coord(next: &mut dyn FnMut() -> u64) -> f32 {
+    match next() % 16 {
+        0 => 0.0,
+        1 => f32::from_bits(next() as u32),
+        2 => [f32::NAN, f32::INFINITY, -f32::INFINITY, 1e9, -1e9, -0.0][(next() % 6) as usize],
+        3 => (next() % 64) as f32 / 8.0,
+        4 | 5 => [1.0, -1.0, 0.5, -0.5, 0.25, -0.25][(next() % 6) as usize],
+        _ => (next() % 100_000) as f32 * 6e-5 - 3.0,
+    }
+}
+
+/// Eight lanes of coordinates (s, t, r, q) and λ.
+#[allow(clippy::type_complexity)]
+fn random_lanes(next: &mut dyn FnMut() -> u64) -> ([[f32; LANES]; 4], [f32; LANES]) {
+    let lanes =
+        |next: &mut dyn FnMut() -> u64| -> [f32; LANES] { std::array::from_fn(|_| coord(next)) };
+    let (s, t, r) = (lanes(next), lanes(next), lanes(next));
+    let q = std::array::from_fn(|_| match next() % 8 {
+        0 => 0.0,
+        1 => -1.5,
+        2 => coord(next),
+        _ => 1.0 + (next() % 100) as f32 * 0.01,
+    });
+    let lambda = std::array::from_fn(|_| match next() % 10 {
+        0 => f32::NAN,
+        1 => f32::INFINITY,
+        2 => -f32::INFINITY,
+        3 => (next() % 16) as f32 * 0.5 - 1.0,
+        _ => (next() % 10_000) as f32 * 1e-3 - 2.0,
+    });
+    ([s, t, r, q], lambda)
+}
+
+#[test]
+fn target_lanes_are_the_scalar_texel_bit_for_bit() {
+    let mut next = lcg(29);
+    let mut checked = [0usize; 3];
+    for round in 0..3000 {
+        let (ti, target) = [
+            (0, gl::TEXTURE_1D),
+            (1, gl::TEXTURE_3D),
+            (2, gl::TEXTURE_CUBE_MAP),
+        ][round % 3];
+        let depth = round % 5 == 4;
+        let obj = random_object(target, depth, &mut next);
+        let s = sampler_on(target, obj, gl::MODULATE, Default::default());
+        assert!(s.lanes_ok());
+        for _ in 0..6 {
+            let ([cs, ct, cr, cq], lambda) = random_lanes(&mut next);
+            let m = (next() % 256) as u8;
+            let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                assert!(
+                    same(got[l], want),
+                    "round {round} target {target:#x} lane {l}: {:?} vs {want:?} \
+                     ({}, {}, {}, {}) λ {}",
+                    got[l],
+                    cs[l],
+                    ct[l],
+                    cr[l],
+                    cq[l],
+                    lambda[l]
+                );
+                checked[ti] += 1;
+            }
+        }
+    }
+    assert!(checked.iter().all(|&n| n > 20_000), "{checked:?}");
+}
+
+/// Cube-map directions on the faces' edges and corners (|x| = |y| = |z| ties, signed zeros),
+/// where the face choice is decided by the tie order: every lane the scalar texel.
+#[test]
+fn cube_edges_and_corners_pick_the_scalar_face() {
+    let mut next = lcg(5);
+    let vals = [1.0f32, -1.0, 0.0, -0.0, 0.5, -0.5, 2.0, -2.0];
+    for round in 0..200 {
+        let obj = random_object(gl::TEXTURE_CUBE_MAP, false, &mut next);
+        let s = sampler_on(gl::TEXTURE_CUBE_MAP, obj, gl::REPLACE, Default::default());
+        for a in 0..vals.len() {
+            let mut c = [[0.0f32; LANES]; 3];
+            for (l, _) in vals.iter().enumerate() {
+                c[0][l] = vals[a];
+                c[1][l] = vals[l];
+                c[2][l] = vals[(a + l + round) % vals.len()];
+            }
+            let q = [1.0; LANES];
+            let lambda = [0.0f32; LANES].map(|_| (next() % 40) as f32 * 0.25 - 2.0);
+            let got = s.texels_lanes([&c[0], &c[1], &c[2], &q], &lambda, 0xff);
+            for l in 0..LANES {
+                let want = s.texel([c[0][l], c[1][l], c[2][l], 1.0], lambda[l]);
+                assert!(same(got[l], want), "round {round} a {a} lane {l}");
+            }
+        }
+    }
+}
+
+/// Every COMBINE function, source, operand and scale on 1D, 2D, 3D and cube textures (depth
+/// ones included): `texels_lanes` then `env_lanes_with` hold what `shade` gives for each
+/// lane's fragment with its own previous and primary colours.
+#[test]
+fn combine_lanes_are_shade_bit_for_bit() {
+    let mut next = lcg(71);
+    let funcs = [
+        gl::REPLACE,
+        gl::MODULATE,
+        gl::ADD,
+        gl::ADD_SIGNED,
+        gl::INTERPOLATE,
+        gl::SUBTRACT,
+        gl::DOT3_RGB,
+        gl::DOT3_RGBA,
+    ];
+    let alpha_funcs = [
+        gl::REPLACE,
+        gl::MODULATE,
+        gl::ADD,
+        gl::ADD_SIGNED,
+        gl::INTERPOLATE,
+        gl::SUBTRACT,
+    ];
+    let sources = [gl::CONSTANT, gl::PRIMARY_COLOR, gl::PREVIOUS, gl::TEXTURE];
+    let operands_rgb = [
+        gl::SRC_COLOR,
+        gl::ONE_MINUS_SRC_COLOR,
+        gl::SRC_ALPHA,
+        gl::ONE_MINUS_SRC_ALPHA,
+    ];
+    let operands_a = [gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA];
+    let scales = [1.0, 2.0, 4.0];
+    let targets = [
+        gl::TEXTURE_1D,
+        gl::TEXTURE_2D,
+        gl::TEXTURE_3D,
+        gl::TEXTURE_CUBE_MAP,
+    ];
+    let mut checked = 0;
+    for round in 0..2000 {
+        let target = targets[round % 4];
+        let depth = round % 7 == 6 && target != gl::TEXTURE_3D;
+        let obj = random_object(target, depth, &mut next);
+        let pick = |next: &mut dyn FnMut() -> u64, v: &[u32]| v[(next() % v.len() as u64) as usize];
+        let combine = crate::texture::Combine {
+            rgb: funcs[round % funcs.len()],
+            alpha: alpha_funcs[(round / funcs.len()) % alpha_funcs.len()],
+            src_rgb: std::array::from_fn(|_| pick(&mut next, &sources)),
+            src_alpha: std::array::from_fn(|_| pick(&mut next, &sources)),
+            operand_rgb: std::array::from_fn(|_| pick(&mut next, &operands_rgb)),
+            operand_alpha: std::array::from_fn(|_| pick(&mut next, &operands_a)),
+            rgb_scale: scales[(next() % 3) as usize],
+            alpha_scale: scales[(next() % 3) as usize],
+        };
+        let s = sampler_on(target, obj, gl::COMBINE, combine);
+        assert!(s.lanes_ok());
+        for _ in 0..4 {
+            let ([cs, ct, cr, cq], lambda) = random_lanes(&mut next);
+            let colour = |next: &mut dyn FnMut() -> u64| -> [Vec4; LANES] {
+                std::array::from_fn(|_| {
+                    Vec4::from_array(std::array::from_fn(|_| (next() % 300) as f32 / 256.0))
+                })
+            };
+            let (cf, prim) = (colour(&mut next), colour(&mut next));
+            let m = (next() % 256) as u8;
+            let texels = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+            let mut got = cf;
+            s.env_lanes_with(&mut got, &prim, &texels, m);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let want = s.shade(cf[l], prim[l], [cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                assert!(
+                    same(got[l].to_array(), want.to_array()),
+                    "round {round} lane {l}: {} vs {want} {combine:?}",
+                    got[l]
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 25_000, "{checked}");
+}
+
+/// The other environments through `env_lanes_with` are `env_lanes`, on every target.
+#[test]
+fn env_lanes_with_other_environments_is_shade() {
+    let mut next = lcg(3);
+    let envs = [gl::REPLACE, gl::MODULATE, gl::DECAL, gl::BLEND, gl::ADD];
+    for round in 0..500 {
+        let target = [gl::TEXTURE_1D, gl::TEXTURE_3D, gl::TEXTURE_CUBE_MAP][round % 3];
+        let obj = random_object(target, round % 6 == 5, &mut next);
+        let s = sampler_on(target, obj, envs[round % 5], Default::default());
+        let ([cs, ct, cr, cq], lambda) = random_lanes(&mut next);
+        let cf: [Vec4; LANES] = std::array::from_fn(|_| {
+            Vec4::from_array(std::array::from_fn(|_| (next() % 300) as f32 / 256.0))
+        });
+        let texels = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, 0xff);
+        let mut got = cf;
+        s.env_lanes_with(&mut got, &cf, &texels, 0xff);
+        for l in 0..LANES {
+            let want = s.shade(cf[l], cf[l], [cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+            assert!(
+                same(got[l].to_array(), want.to_array()),
+                "round {round} lane {l}"
+            );
+        }
+    }
+}
+
+/// A cube map's λ on lanes (`quad_lambda_lanes`, by `cube_lambda_lanes`) is `quad_lambda` per
+/// quad: random planes with NaN, infinities and zeros, directions near the faces' edges and
+/// corners (planes of equal magnitude), face sizes 1 to 64.
+#[test]
+fn cube_lambda_lanes_is_the_scalar_lambda() {
+    let mut next = lcg(17);
+    let mut samplers = Vec::new();
+    for n in [1, 4, 5, 64] {
+        let mut o = TexObject::new(gl::TEXTURE_CUBE_MAP);
+        o.min_filter = gl::NEAREST;
+        for f in 0..6 {
+            o.levels[f * MAX_LEVELS] = Some(random_level(n, n, 1, gl::RGB, &mut next));
+        }
+        samplers.push(sampler_on(
+            gl::TEXTURE_CUBE_MAP,
+            o,
+            gl::MODULATE,
+            Default::default(),
+        ));
+    }
+    for round in 0..20_000 {
+        let s = &samplers[round % samplers.len()];
+        let np = 3 + 3 * (1 + (next() % 8) as usize);
+        let planes: Vec<f32> = (0..np)
+            .map(|_| match next() % 10 {
+                0 => 0.0,
+                1 => f32::from_bits(next() as u32),
+                2 => [1.0, -1.0, 0.5, -0.5][(next() % 4) as usize],
+                3 => [f32::NAN, f32::INFINITY, -f32::INFINITY][(next() % 3) as usize],
+                _ => (next() % 100_000) as f32 * 1e-4 - 5.0,
+            })
+            .collect();
+        let to = (next() % 4) as usize;
+        let qx: [f32; LANES] = std::array::from_fn(|_| ((next() % 400) as i32 - 50) as f32);
+        let qy = ((next() % 400) as i32 - 50) as f32;
+        let got = s.quad_lambda_lanes(&planes, to, qx, qy);
+        for l in 0..LANES {
+            let want = s.quad_lambda(&planes, to, qx[l], qy);
+            let same = got[l].to_bits() == want.to_bits() || got[l].is_nan() && want.is_nan();
+            assert!(
+                same,
+                "round {round} lane {l}: {} vs {want} {planes:?}",
+                got[l]
+            );
+        }
+    }
+}

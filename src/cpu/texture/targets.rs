@@ -1,0 +1,512 @@
+//! Lane routes of [`Sampler`] beyond the 2D texture: 1D and 3D textures and cube maps
+//! ([`Sampler::targets_lanes`]), and the COMBINE environment ([`Sampler::env_lanes_with`]).
+//! Each lane computes the scalar route's expressions in the same order (`texel`'s division by q,
+//! `cube_face`/`cube_project`, `select`, `nearest`/`linear` with `fetch`'s border and depth
+//! comparison, `sample_face`'s level blend, `combine`), so each lane's result has the bits
+//! [`Sampler::texel`] and [`Sampler::shade_texel`] give for its fragment (checked bit for bit
+//! in `tests/texture_targets.rs`). The wrap indices and weights are computed on all eight lanes
+//! (`wrap_nearest_lanes`, `wrap_linear_lanes`), the texels gathered lane by lane.
+
+use glam::Vec4;
+
+use super::{
+    cube_face, cube_project, depth_compare, fast_log2_lane, lambda_point, wrap_linear_lanes,
+    wrap_nearest_lanes, Route, Sampler, TexelLanes,
+};
+use crate::cpu::lanes::{recip_lanes, LANES};
+use crate::gl;
+use crate::texture::Level;
+
+/// The images the lanes of a [`Sampler::pass_targets`] read: lane l's texels and its level's
+/// width, height and depth.
+struct Views3<'a> {
+    tx: [&'a [[f32; 4]]; LANES],
+    w: [i32; LANES],
+    h: [i32; LANES],
+    d: [i32; LANES],
+}
+
+/// At most this many lanes of a group are filtered one by one by [`Sampler::texel`] instead
+/// of by the lane passes: the passes compute their wraps and weights on all eight lanes, which
+/// costs more than the scalar route for a sparse group (the small triangles of a sphere).
+const SPARSE: u32 = 3;
+
+impl Sampler {
+    /// `texels_lanes` for a 1D or 3D texture or a cube map: the coordinates (s, t, r, q) of
+    /// the lanes, λ before bias, the lanes of `m` (the others are left zero). A group of at
+    /// most [`SPARSE`] lanes takes [`Sampler::texel`] per lane; the others `texel`'s division
+    /// by q on lanes (as `texels_lanes`), then [`Sampler::targets_lanes`].
+    #[inline]
+    pub(super) fn targets_texels(
+        &self,
+        coords: [&[f32; LANES]; 4],
+        lambda: &[f32; LANES],
+        m: u8,
+    ) -> TexelLanes {
+        let [s, t, r, q] = coords;
+        let mut out = [[0.0f32; 4]; LANES];
+        if m.count_ones() <= SPARSE {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = self.texel([s[l], t[l], r[l], q[l]], lambda[l]);
+                }
+            }
+            return out;
+        }
+        let rq = recip_lanes(*q);
+        let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        for l in 0..LANES {
+            let inv = if q[l] != 0.0 { rq[l] } else { 0.0 };
+            ss[l] = s[l] * inv;
+            tt[l] = t[l] * inv;
+            rr[l] = r[l] * inv;
+        }
+        self.targets_lanes(&ss, &tt, &rr, lambda, m, &mut out);
+        out
+    }
+
+    /// `texels_lanes` for a 1D or 3D texture or a cube map, from the lanes' coordinates
+    /// already divided by q (`s`, `t`, `r`) and λ before bias, into `out` for the lanes of `m`
+    /// (the others are left as they are). A cube map picks each lane's face and face
+    /// coordinates as `texel` does; then the flush's route (NEAREST, LINEAR, or λ's choice per
+    /// lane) on each lane's face.
+    #[inline]
+    pub(super) fn targets_lanes(
+        &self,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        lambda: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let mut face = [0usize; LANES];
+        let (mut fs, mut ft) = (*s, *t);
+        if self.cube {
+            for l in 0..LANES {
+                let p = [s[l], t[l], r[l]];
+                let (f, _) = cube_face(p);
+                (fs[l], ft[l]) = cube_project(f, p);
+                face[l] = f;
+            }
+        }
+        let base = [self.base_level; LANES];
+        match self.route {
+            Route::Nearest => self.pass_targets(false, &face, &base, &fs, &ft, r, m, out),
+            Route::Linear => self.pass_targets(true, &face, &base, &fs, &ft, r, m, out),
+            Route::Lod => self.lod_targets(&face, &fs, &ft, r, lambda, m, out),
+        }
+    }
+
+    /// `sample_face` for the lanes of `m`, lane l on face `face[l]`: each lane's level(s),
+    /// filter and weight from `select`, a pass per filter over the lanes using it, then the
+    /// second level of the lanes that blend two and the blend (`sample_face`'s expression).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn lod_targets(
+        &self,
+        face: &[usize; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        lambda: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let mut la = [self.base_level; LANES];
+        let mut lb = [self.base_level; LANES];
+        let mut f = [0.0f32; LANES];
+        let (mut linear, mut second) = (0u8, 0u8);
+        for l in 0..LANES {
+            let (lv, lin, w) = self.select(lambda[l]);
+            la[l] = lv;
+            f[l] = w;
+            linear |= u8::from(lin) << l;
+            second |= u8::from(w != 0.0) << l;
+        }
+        let (linear, second) = (linear & m, second & m);
+        self.pass_targets(false, face, &la, s, t, r, m & !linear, out);
+        self.pass_targets(true, face, &la, s, t, r, linear, out);
+        if second == 0 {
+            return;
+        }
+        for l in 0..LANES {
+            if second & (1 << l) != 0 {
+                // f ≠ 0 only below the last level: level + 1 exists.
+                lb[l] = la[l].saturating_add(1);
+            }
+        }
+        let mut b = [[0.0f32; 4]; LANES];
+        self.pass_targets(false, face, &lb, s, t, r, second & !linear, &mut b);
+        self.pass_targets(true, face, &lb, s, t, r, second & linear, &mut b);
+        for l in 0..LANES {
+            if second & (1 << l) != 0 {
+                // `sample_face`'s a·(1 - f) + b·f on the four channels at once.
+                let (a, b, f) = (Vec4::from_array(out[l]), Vec4::from_array(b[l]), f[l]);
+                out[l] = (a * Vec4::splat(1.0 - f) + b * Vec4::splat(f)).to_array();
+            }
+        }
+    }
+
+    /// NEAREST (`linear` false) or LINEAR for the lanes of `m`, lane l on level `lv[l]` of
+    /// face `face[l]`: `nearest` and `linear` for this sampler's dimensions. A lane whose level
+    /// is missing gets (0, 0, 0, 0), as the scalar filters give.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pass_targets(
+        &self,
+        linear: bool,
+        face: &[usize; LANES],
+        lv: &[i32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        if m == 0 {
+            return;
+        }
+        let empty: &[[f32; 4]] = &[];
+        let mut v = Views3 {
+            tx: [empty; LANES],
+            w: [1; LANES],
+            h: [1; LANES],
+            d: [1; LANES],
+        };
+        let mut have = 0u8;
+        // The level of each lane, looked up once per run of equal (face, level).
+        let mut cur: Option<(usize, i32, Option<&Level>)> = None;
+        for l in 0..LANES {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let level = match cur {
+                Some((f, k, x)) if f == face[l] && k == lv[l] => x,
+                _ => {
+                    let x = self.obj.face_level(face[l], lv[l]);
+                    cur = Some((face[l], lv[l], x));
+                    x
+                }
+            };
+            if let Some(x) = level {
+                (v.tx[l], v.w[l], v.h[l], v.d[l]) = (&x.texels[..], x.width, x.height, x.depth);
+                have |= 1 << l;
+            } else {
+                out[l] = [0.0; 4];
+            }
+        }
+        let m = m & have;
+        match self.compare {
+            None => self.pass_targets_on(linear, &v, s, t, r, m, out, |_, x| x),
+            Some(func) => self.pass_targets_on(linear, &v, s, t, r, m, out, |l, x| {
+                depth_compare(func, r[l], x)
+            }),
+        }
+    }
+
+    /// `pass_targets` on the lanes' images `v`, `cmp(l, texel)` giving what `fetch` makes of
+    /// lane l's texel (itself, or the comparison result against the lane's r).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pass_targets_on(
+        &self,
+        linear: bool,
+        v: &Views3,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+        cmp: impl Fn(usize, [f32; 4]) -> [f32; 4],
+    ) {
+        let dims = self.dims;
+        // `fetch`: the image's texel (`Level::texel3`'s expression; `texel` is it at k = 0,
+        // and a 1D image's at j = k = 0) or the border colour, through `cmp`.
+        let border = crate::texture::keep(self.base, self.border);
+        let texel = |l: usize, i: i32, j: i32, k: i32, inside: bool| {
+            cmp(
+                l,
+                if inside {
+                    let n = ((k * v.h[l] + j) * v.w[l] + i) as usize;
+                    v.tx[l].get(n).copied().unwrap_or([0.0; 4])
+                } else {
+                    border
+                },
+            )
+        };
+        let zero = ([0i32; LANES], [true; LANES]);
+        if !linear {
+            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, &v.w);
+            let (j, ji) = if dims >= 2 {
+                wrap_nearest_lanes(self.wrap[1], t, &v.h)
+            } else {
+                zero
+            };
+            let (k, ki) = if dims == 3 {
+                wrap_nearest_lanes(self.wrap[2], r, &v.d)
+            } else {
+                zero
+            };
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = texel(l, i[l], j[l], k[l], ii[l] && ji[l] && ki[l]);
+                }
+            }
+            return;
+        }
+        // The blends below are `linear`'s per-channel expressions on the four channels at
+        // once (`Vec4`: the same IEEE operations, in the same order, on each channel).
+        let tv = |l: usize, i: i32, j: i32, k: i32, inside: bool| {
+            Vec4::from_array(texel(l, i, j, k, inside))
+        };
+        let x = wrap_linear_lanes(self.wrap[0], s, &v.w);
+        if dims == 1 {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let t0 = tv(l, x.i0[l], 0, 0, x.in0[l]);
+                let t1 = tv(l, x.i1[l], 0, 0, x.in1[l]);
+                let a = x.w[l];
+                // (1 - α)·t0 + α·t1.
+                *o = (Vec4::splat(1.0 - a) * t0 + Vec4::splat(a) * t1).to_array();
+            }
+            return;
+        }
+        let y = wrap_linear_lanes(self.wrap[1], t, &v.h);
+        // The four weights of eq. 3.24 as `linear` groups them:
+        // (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11.
+        let mut wt = [[0.0f32; LANES]; 4];
+        for l in 0..LANES {
+            let (a, b) = (x.w[l], y.w[l]);
+            wt[0][l] = (1.0 - a) * (1.0 - b);
+            wt[1][l] = a * (1.0 - b);
+            wt[2][l] = (1.0 - a) * b;
+            wt[3][l] = a * b;
+        }
+        // `linear`'s `plane` at depth index k (inside the image or not) for lane l.
+        macro_rules! plane {
+            ($l:expr, $k:expr, $kin:expr) => {{
+                let (l, k, kin) = ($l, $k, $kin);
+                let t00 = tv(l, x.i0[l], y.i0[l], k, x.in0[l] && y.in0[l] && kin);
+                let t10 = tv(l, x.i1[l], y.i0[l], k, x.in1[l] && y.in0[l] && kin);
+                let t01 = tv(l, x.i0[l], y.i1[l], k, x.in0[l] && y.in1[l] && kin);
+                let t11 = tv(l, x.i1[l], y.i1[l], k, x.in1[l] && y.in1[l] && kin);
+                Vec4::splat(wt[0][l]) * t00
+                    + Vec4::splat(wt[1][l]) * t10
+                    + Vec4::splat(wt[2][l]) * t01
+                    + Vec4::splat(wt[3][l]) * t11
+            }};
+        }
+        if dims == 2 {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = plane!(l, 0, true).to_array();
+                }
+            }
+            return;
+        }
+        let z = wrap_linear_lanes(self.wrap[2], r, &v.d);
+        for (l, o) in out.iter_mut().enumerate() {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let p0 = plane!(l, z.i0[l], z.in0[l]);
+            let p1 = plane!(l, z.i1[l], z.in1[l]);
+            let g = z.w[l];
+            // (1 - γ)·p0 + γ·p1.
+            *o = (Vec4::splat(1.0 - g) * p0 + Vec4::splat(g) * p1).to_array();
+        }
+    }
+
+    /// [`Sampler::quad_lambda`] of a cube map for eight quads, lane l's at (`qx[l]`, `qy`):
+    /// the three points of each quad on lanes (`lambda_point` with unit sizes: the plane
+    /// values divided by q, times 1, which changes no bit of a number), then per lane the face
+    /// of the quad's first point, the three points projected on it and scaled, and
+    /// `quad_lambda`'s ρ² and λ: each lane the scalar λ (a NaN where it is NaN).
+    #[inline]
+    pub(super) fn cube_lambda_lanes(
+        &self,
+        planes: &[f32],
+        to: usize,
+        qx: [f32; LANES],
+        qy: f32,
+    ) -> [f32; LANES] {
+        let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+        let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
+        let (ps, pt, pr, pq) = (plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to));
+        let mut qx1 = qx;
+        for x in &mut qx1 {
+            *x += 1.0;
+        }
+        let one = [1.0f32; 3];
+        let p0 = lambda_point(&ps, &pt, &pr, &pq, &qx, qy, one, 3);
+        let px = lambda_point(&ps, &pt, &pr, &pq, &qx1, qy, one, 3);
+        let py = lambda_point(&ps, &pt, &pr, &pq, &qx, qy + 1.0, one, 3);
+        let size = self.size;
+        let mut out = [0.0f32; LANES];
+        for (l, o) in out.iter_mut().enumerate() {
+            let at = |p: &[[f32; LANES]; 3]| [p[0][l], p[1][l], p[2][l]];
+            let a = at(&p0);
+            let (face, _) = cube_face(a);
+            let on = |p: [f32; 3]| {
+                let (s, t) = cube_project(face, p);
+                [s * size[0], t * size[1], 0.0]
+            };
+            let (a, b, c) = (on(a), on(at(&px)), on(at(&py)));
+            let len2 = |q: [f32; 3]| {
+                let d = [q[0] - a[0], q[1] - a[1], q[2] - a[2]];
+                d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+            };
+            let rho2 = len2(b).max(len2(c));
+            *o = 0.5 * fast_log2_lane(rho2);
+        }
+        out
+    }
+
+    /// The texture environment of the lanes of `m` (what [`Sampler::shade_texel`] gives each
+    /// lane's fragment colour `cf[l]`, primary colour `prim[l]` and texel `t[l]`): COMBINE here,
+    /// the other environments by [`Sampler::env_lanes`]. Not for a COMBINE with TEXTUREn
+    /// sources (`crossbar`), which [`Sampler::lanes_ok`] keeps off the lanes.
+    #[inline]
+    pub fn env_lanes_with(
+        &self,
+        cf: &mut [Vec4; LANES],
+        prim: &[Vec4; LANES],
+        t: &TexelLanes,
+        m: u8,
+    ) {
+        if self.env != gl::COMBINE {
+            return self.env_lanes(cf, t, m);
+        }
+        let out = self.combine_lanes(cf, prim, t);
+        for l in 0..LANES {
+            if m & (1 << l) != 0 {
+                cf[l] = out[l];
+            }
+        }
+    }
+
+    /// `combine` (§3.8.13, tables 3.23 and 3.24; no TEXTUREn source) for eight lanes: each
+    /// source, operand and function chosen once for the group, then the same `Vec4` / `f32`
+    /// operations in the same order as `combine` on every lane.
+    #[inline]
+    fn combine_lanes(
+        &self,
+        cf: &[Vec4; LANES],
+        prim: &[Vec4; LANES],
+        t: &TexelLanes,
+    ) -> [Vec4; LANES] {
+        type V = [Vec4; LANES];
+        let c = &self.combine;
+        let mut tex = [Vec4::ZERO; LANES];
+        for (x, t) in tex.iter_mut().zip(t) {
+            *x = self.combine_texel(*t);
+        }
+        let src = |s: u32| -> V {
+            match s {
+                gl::CONSTANT => [self.env_color; LANES],
+                gl::PRIMARY_COLOR => *prim,
+                gl::PREVIOUS => *cf,
+                gl::TEXTURE => tex,
+                // A TEXTUREn source (the crossbar) never reaches the lanes; an unknown source
+                // reads zero, as in `combine`.
+                _ => [Vec4::ZERO; LANES],
+            }
+        };
+        let arg_rgb = |k: usize| -> V {
+            let mut v = src(c.src_rgb[k]);
+            match c.operand_rgb[k] {
+                gl::ONE_MINUS_SRC_COLOR => {
+                    for x in &mut v {
+                        *x = Vec4::ONE - *x;
+                    }
+                }
+                gl::SRC_ALPHA => {
+                    for x in &mut v {
+                        *x = Vec4::splat(x.w);
+                    }
+                }
+                gl::ONE_MINUS_SRC_ALPHA => {
+                    for x in &mut v {
+                        *x = Vec4::splat(1.0 - x.w);
+                    }
+                }
+                _ => {}
+            }
+            v
+        };
+        let arg_a = |k: usize| -> [f32; LANES] {
+            let v = src(c.src_alpha[k]);
+            let mut a = [0.0f32; LANES];
+            let minus = c.operand_alpha[k] == gl::ONE_MINUS_SRC_ALPHA;
+            for (a, v) in a.iter_mut().zip(&v) {
+                *a = if minus { 1.0 - v.w } else { v.w };
+            }
+            a
+        };
+        // Functions of two arguments, one loop each (a macro, so that each body inlines).
+        macro_rules! two {
+            ($arg:ident, $out:ident, |$a:ident, $b:ident| $e:expr) => {{
+                let (x, y) = ($arg(0), $arg(1));
+                for l in 0..LANES {
+                    let ($a, $b) = (x[l], y[l]);
+                    $out[l] = $e;
+                }
+            }};
+        }
+        let mut rgb = [Vec4::ZERO; LANES];
+        match c.rgb {
+            gl::REPLACE => rgb = arg_rgb(0),
+            gl::MODULATE => two!(arg_rgb, rgb, |a, b| a * b),
+            gl::ADD => two!(arg_rgb, rgb, |a, b| a + b),
+            gl::ADD_SIGNED => two!(arg_rgb, rgb, |a, b| a + b - Vec4::splat(0.5)),
+            gl::INTERPOLATE => {
+                let (a0, a1, a2) = (arg_rgb(0), arg_rgb(1), arg_rgb(2));
+                for l in 0..LANES {
+                    rgb[l] = a0[l] * a2[l] + a1[l] * (Vec4::ONE - a2[l]);
+                }
+            }
+            gl::SUBTRACT => two!(arg_rgb, rgb, |a, b| a - b),
+            // DOT3_RGB(A): 4·Σ (a0 - 1/2)(a1 - 1/2) over r, g, b into every channel.
+            _ => two!(arg_rgb, rgb, |a, b| {
+                let d = (a - Vec4::splat(0.5)).truncate();
+                let e = (b - Vec4::splat(0.5)).truncate();
+                Vec4::splat(4.0 * d.dot(e))
+            }),
+        }
+        let mut alpha = [0.0f32; LANES];
+        if c.rgb == gl::DOT3_RGBA {
+            for l in 0..LANES {
+                alpha[l] = rgb[l].x;
+            }
+        } else {
+            match c.alpha {
+                gl::REPLACE => alpha = arg_a(0),
+                gl::MODULATE => two!(arg_a, alpha, |a, b| a * b),
+                gl::ADD => two!(arg_a, alpha, |a, b| a + b),
+                gl::ADD_SIGNED => two!(arg_a, alpha, |a, b| a + b - 0.5),
+                gl::INTERPOLATE => {
+                    let (a0, a1, a2) = (arg_a(0), arg_a(1), arg_a(2));
+                    for l in 0..LANES {
+                        alpha[l] = a0[l] * a2[l] + a1[l] * (1.0 - a2[l]);
+                    }
+                }
+                _ => two!(arg_a, alpha, |a, b| a - b),
+            }
+        }
+        let mut out = [Vec4::ZERO; LANES];
+        for l in 0..LANES {
+            out[l] = (rgb[l] * c.rgb_scale)
+                .truncate()
+                .extend(alpha[l] * c.alpha_scale)
+                .clamp(Vec4::ZERO, Vec4::ONE);
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+#[path = "../tests/texture_targets.rs"]
+mod tests;
