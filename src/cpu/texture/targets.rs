@@ -278,8 +278,7 @@ impl Sampler {
         // The four weights of eq. 3.24 as `linear` groups them:
         // (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11.
         let mut wt = [[0.0f32; LANES]; 4];
-        for l in 0..LANES {
-            let (a, b) = (x.w[l], y.w[l]);
+        for (l, (&a, &b)) in x.w.iter().zip(&y.w).enumerate() {
             wt[0][l] = (1.0 - a) * (1.0 - b);
             wt[1][l] = a * (1.0 - b);
             wt[2][l] = (1.0 - a) * b;
