@@ -7,12 +7,13 @@
 //! bit) is stored once and referenced by index, so the vertex stage lights it once: immediate-mode
 //! meshes such as one strip per grid cell send each vertex up to four times, and the vertex
 //! stage is a pure function of these inputs, so the result is exactly the same. A cache slot
-//! holds only the serial number of a batched vertex (8-byte sets, 32 KB in all, which stay in
-//! the nearest caches while the call stream streams past), and a candidate is confirmed against
-//! the batch's own position and normal arrays, whose recent entries are warm; the other inputs
-//! (colours, texture coordinates, fog coordinate, edge flag, material), which rarely change
-//! inside a mesh, are compared only with the previous vertex's: a run of vertices with the same
-//! such inputs forms a span, and a hit counts only inside the current span. The span is also the unit of storage: its colours, texture coordinates and fog
+//! holds only the serial number of a batched vertex (8-byte sets, 32 KB in all: the load of a
+//! random set for every vertex is the front end's costliest, so the table is kept small), and a
+//! candidate is confirmed against the batch's own position and normal arrays, whose recent
+//! entries are warm; the other inputs (colours, texture coordinates, fog coordinate, edge flag,
+//! material), which rarely change inside a mesh, are compared only with the previous vertex's:
+//! a run of vertices with the same such inputs forms a span, and a hit counts only inside the
+//! current span. The span is also the unit of storage: its colours, texture coordinates and fog
 //! coordinate are stored once (`spans`), and a unique vertex stores its position, normal, edge
 //! flag, material index and span index (about 40 bytes instead of 100: the batch is written at
 //! the rate calls arrive, so its size is a per-vertex cost). The arrays are cleared, not freed,
