@@ -337,11 +337,17 @@ impl Sampler {
         let [s, t, r, q] = coords;
         let rq = recip_lanes(*q);
         let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        let mut inv = [0.0f32; LANES];
         for l in 0..LANES {
-            let inv = if q[l] != 0.0 { rq[l] } else { 0.0 };
-            ss[l] = s[l] * inv;
-            tt[l] = t[l] * inv;
-            rr[l] = r[l] * inv;
+            inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
+            ss[l] = s[l] * inv[l];
+            tt[l] = t[l] * inv[l];
+        }
+        // r/q is read by the depth comparison only.
+        if self.compare.is_some() {
+            for l in 0..LANES {
+                rr[l] = r[l] * inv[l];
+            }
         }
         let mut out = [[0.0f32; 4]; LANES];
         match self.route {

@@ -365,6 +365,43 @@ fn lod_log2_is_piecewise_linear_like_llvmpipe() {
 }
 
 #[test]
+fn fast_log2_lane_is_fast_log2() {
+    // Every special class (±0, ±∞, NaN payloads, negatives, subnormals) and random bits: the
+    // lane version gives `fast_log2`'s bits (any NaN for a NaN).
+    let mut next = lcg(23u64);
+    let special = [
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        -f32::INFINITY,
+        f32::NAN,
+        -f32::NAN,
+        f32::from_bits(0x7f80_0001),
+        f32::from_bits(0xffc0_1234),
+        f32::MIN_POSITIVE,
+        f32::MIN_POSITIVE / 8.0,
+        -f32::MIN_POSITIVE / 8.0,
+        f32::MAX,
+        f32::MIN,
+        1.0,
+        -1.0,
+        3.0,
+    ];
+    for k in 0..200_000u32 {
+        let x = match k as usize {
+            i if i < special.len() => special[i],
+            _ => f32::from_bits(next() as u32),
+        };
+        let (a, b) = (fast_log2_lane(x), fast_log2(x));
+        assert!(
+            a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan(),
+            "{x:e} ({:#x}): {a} vs {b}",
+            x.to_bits()
+        );
+    }
+}
+
+#[test]
 fn repeat_index_is_rem_euclid_for_every_size() {
     // The mask of a power-of-two size gives rem_euclid's value for every i32 (extremes too),
     // and other sizes take rem_euclid itself.
