@@ -532,7 +532,7 @@ impl Sampler {
     /// level `level`: its texels and size looked up once and passed on as scalars. A missing
     /// level gives (0, 0, 0, 0), as `nearest` and `linear` give.
     #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
+    #[inline(never)]
     fn pass_level(
         &self,
         linear: bool,
@@ -569,7 +569,7 @@ impl Sampler {
     /// texel through `fetch`'s depth comparison against the lane's `r` when comparison is on.
     /// A lane whose level is missing gets (0, 0, 0, 0), as `nearest` and `linear` give.
     #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
+    #[inline(never)]
     fn pass(
         &self,
         linear: bool,
