@@ -233,8 +233,8 @@ impl FragCtx<'_> {
     /// The colours (channel-major) of the lanes of `m` whose varyings are `vs` (lane-major
     /// per varying, `vs.len()` varyings) and λ `lam` (per unit, per lane): what `color` gives
     /// for each lane's fragment, bit for bit. With `on_lanes` (`tex_lanes_ok`) every unit's
-    /// texels are filtered for the eight lanes first (`Sampler::texels_lanes`), then each
-    /// environment applies in unit order (§3.8.15) and the colour sum (§3.9) follows;
+    /// texels are filtered for the eight lanes (`Sampler::texels_lanes`) and its environment
+    /// applied, in unit order (§3.8.15), then the colour sum (§3.9) follows (`tex_pixels`);
     /// otherwise each lane takes `color`. Lanes outside `m` hold unspecified values.
     #[inline(always)]
     fn color_lanes(
@@ -245,8 +245,8 @@ impl FragCtx<'_> {
         lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
         on_lanes: bool,
     ) -> [[f32; LANES]; 4] {
-        let mut col = [[0.0f32; LANES]; 4];
         if !on_lanes {
+            let mut col = [[0.0f32; LANES]; 4];
             let mut v = [0.0f32; MAXV];
             let nv = vs.len().min(MAXV);
             for l in 0..LANES {
@@ -263,19 +263,28 @@ impl FragCtx<'_> {
             }
             return col;
         }
-        let g = |k: usize| vs.get(k).copied().unwrap_or([0.0; LANES]);
-        let (r, gr, b, a) = (g(0), g(1), g(2), g(3));
-        let mut c: [Vec4; LANES] = std::array::from_fn(|l| Vec4::new(r[l], gr[l], b[l], a[l]));
-        // Every unit's texels first, then the environments in unit order.
-        let mut texels = [[[0.0f32; 4]; LANES]; MAX_TEXTURE_UNITS];
-        for ((tl, t), lu) in texels.iter_mut().zip(&self.tex).zip(lam) {
+        super::lanes::from_pixels(&self.tex_pixels(vs, m, lam))
+    }
+
+    /// `color_lanes` on lanes (`tex_lanes_ok`), pixel-major: the colour of lane l's fragment
+    /// in `out[l]`. Lanes outside `m` hold unspecified values.
+    #[inline(always)]
+    fn tex_pixels(
+        &self,
+        vs: &[[f32; LANES]],
+        m: u8,
+        lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
+    ) -> [Vec4; LANES] {
+        const ZERO: [f32; LANES] = [0.0; LANES];
+        let g = |k: usize| vs.get(k).unwrap_or(&ZERO);
+        let mut c: [Vec4; LANES] = super::lanes::to_pixels([g(0), g(1), g(2), g(3)]);
+        // Each unit's texels, then its environment, in unit order (§3.8.15). A sampler with
+        // `lanes_ok` is never COMBINE, so no environment reads another unit's texel and
+        // sampling unit k + 1 after unit k's environment gives the same texels.
+        for (t, lu) in self.tex.iter().zip(lam) {
             let Some((tx, o)) = *t else { break };
-            let (cs, ct, cr, cq) = (g(o), g(o + 1), g(o + 2), g(o + 3));
-            *tl = tx.texels_lanes([&cs, &ct, &cr, &cq], lu, m);
-        }
-        for (tl, t) in texels.iter().zip(&self.tex) {
-            let Some((tx, _)) = *t else { break };
-            tx.env_lanes(&mut c, tl, m);
+            let tl = tx.texels_lanes([g(o), g(o + 1), g(o + 2), g(o + 3)], lu, m);
+            tx.env_lanes(&mut c, &tl, m);
         }
         if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
             let (sr, sg, sb) = (g(o), g(o + 1), g(o + 2));
@@ -283,12 +292,7 @@ impl FragCtx<'_> {
                 *c += Vec3::new(sr[l], sg[l], sb[l]).extend(0.0);
             }
         }
-        for (l, c) in c.iter().enumerate() {
-            for (ch, x) in col.iter_mut().zip(c.to_array()) {
-                ch[l] = x;
-            }
-        }
-        col
+        c
     }
 
     /// Writes colour `c` at tile index `i` through ColorMask (§4.2.2).
@@ -568,6 +572,15 @@ impl FragCtx<'_> {
                     }
                 }
             }
+            if whole && on_lanes {
+                // Pixel-major colours straight to RGBA8 (no transposition back).
+                let px = self.tex_pixels(vs, m as u8, &lam);
+                if let Some(dst) = bufs.color.get_mut(base + g..) {
+                    super::lanes::store_pixels(dst, m as u8, &px);
+                }
+                g += LANES;
+                continue;
+            }
             let col = self.color_lanes(p, vs, m as u8, &lam, on_lanes);
             if whole {
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
@@ -782,6 +795,13 @@ impl FragCtx<'_> {
         let on_lanes = !plain && self.tex_lanes_ok(p);
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - p.bbox[1]) as f32;
+        // What each group runs, decided once per span: with ColorMask all false (and no
+        // coverage count) nothing reaches a colour buffer, so fog, blending and the stores
+        // are skipped, and without an alpha test the colour itself (the varyings, texturing)
+        // is never computed: only the stencil and depth tests and their writes remain.
+        let writes_color = self.count || self.color_mask != [false; 4];
+        let needs_color = writes_color || ops.alpha.is_some();
+        let dz = p.z[1];
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
         let mut v = [[0.0f32; LANES]; super::setup::MAXV];
@@ -793,46 +813,54 @@ impl FragCtx<'_> {
                 c += LANES;
                 continue;
             }
-            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
-            // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
             let fx = lane_x(x0 - ox + c as i32);
-            super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
-            let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
-            if plain {
-                if let Some(s) = spec {
-                    for (k, ch) in col.iter_mut().enumerate() {
-                        let add = if k < 3 { v[s + k] } else { [0.0; LANES] };
-                        *ch = std::array::from_fn(|l| ch[l] + add[l]);
+            let mut m = m;
+            let mut rgb = [[0.0f32; LANES]; 3];
+            let mut a = [0.0f32; LANES];
+            if needs_color {
+                // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+                // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
+                super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
+                let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
+                if plain {
+                    if let Some(s) = spec {
+                        for (k, ch) in col.iter_mut().enumerate().take(3) {
+                            let add = v[s + k];
+                            for l in 0..LANES {
+                                ch[l] += add[l];
+                            }
+                        }
+                        // (Alpha gains 0.0, which leaves every value's bits as they are
+                        // but −0, whose clamp below gives +0 either way.)
                     }
-                }
-            } else {
-                // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
-                if lod {
-                    for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
-                        let Some((tx, to)) = *t else { break };
-                        if tx.needs_lambda() {
-                            *lu = sq.lanes(tx, planes, to, x0 + c as i32);
+                } else {
+                    // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
+                    if lod {
+                        for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
+                            let Some((tx, to)) = *t else { break };
+                            if tx.needs_lambda() {
+                                *lu = sq.lanes(tx, planes, to, x0 + c as i32);
+                            }
                         }
                     }
+                    col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
                 }
-                col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
-            }
-            let mut rgb = [
-                ol::clamp01(col[0]),
-                ol::clamp01(col[1]),
-                ol::clamp01(col[2]),
-            ];
-            let a = ol::clamp01(col[3]);
-            let mut m = m;
-            if let Some((func, reference)) = ops.alpha {
-                m &= ol::alpha_test(func, reference, a);
-            }
-            if m == 0 {
-                c += LANES;
-                continue;
+                rgb = [
+                    ol::clamp01(col[0]),
+                    ol::clamp01(col[1]),
+                    ol::clamp01(col[2]),
+                ];
+                a = ol::clamp01(col[3]);
+                if let Some((func, reference)) = ops.alpha {
+                    m &= ol::alpha_test(func, reference, a);
+                }
+                if m == 0 {
+                    c += LANES;
+                    continue;
+                }
             }
             let d = if self.depth_test {
-                depth_lanes(fx.map(|x| zrow + p.z[1] * x))
+                depth_lanes(super::lanes::lin_lanes(zrow, dz, &fx))
             } else {
                 [0; LANES]
             };
@@ -854,6 +882,10 @@ impl FragCtx<'_> {
             if self.samples {
                 bufs.samples += u64::from(m.count_ones());
             }
+            if !writes_color {
+                c += LANES;
+                continue;
+            }
             // Fog (§3.10) changes only R, G and B, which nothing before the colour write
             // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
             // EXP2 call `expf` only for fragments that are written.
@@ -868,28 +900,33 @@ impl FragCtx<'_> {
             ];
             // Blending and the logic op read each colour buffer's own contents (§4.1.8,
             // §4.1.10).
-            let combine = |row: &[[u8; 4]]| match ops.write {
-                ColorWrite::Replace => src,
-                ColorWrite::Blend(b) => ol::blend(&b, &src, &ol::load(row)),
-                ColorWrite::Logic(op) => ol::logic(op, &src, &ol::load(row)),
-            };
-            for buf in [Some(&mut *bufs.color), bufs.color2.as_deref_mut()]
-                .into_iter()
-                .flatten()
-            {
-                let row = buf.get_mut(i0..).unwrap_or_default();
-                let out = combine(row);
-                if self.count {
-                    for (l, dst) in row.iter_mut().take(LANES).enumerate() {
-                        if m & (1 << l) != 0 {
-                            self.store_one(dst, out.map(|ch| ch[l]));
-                        }
-                    }
-                } else {
-                    ol::store(row, &out, m, self.color_mask);
-                }
+            self.write_group(ops, bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
+            if let Some(c2) = bufs.color2.as_deref_mut() {
+                self.write_group(ops, c2.get_mut(i0..).unwrap_or_default(), &src, m);
             }
             c += LANES;
+        }
+    }
+
+    /// The colour write of a group (`full_span`) to one colour buffer's row from the group's
+    /// first pixel: blending or the logic op with the row's own contents (§4.1.8, §4.1.10),
+    /// then the masked store of lanes `m` (§4.2.2), or the coverage count.
+    #[inline(always)]
+    fn write_group(&self, ops: &Ops, row: &mut [[u8; 4]], src: &[[u8; LANES]; 4], m: u8) {
+        use super::oplanes as ol;
+        let out = match ops.write {
+            ColorWrite::Replace => *src,
+            ColorWrite::Blend(b) => ol::blend(&b, src, &ol::load(row)),
+            ColorWrite::Logic(op) => ol::logic(op, src, &ol::load(row)),
+        };
+        if self.count {
+            for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                if m & (1 << l) != 0 {
+                    self.store_one(dst, out.map(|ch| ch[l]));
+                }
+            }
+        } else {
+            ol::store(row, &out, m, self.color_mask);
         }
     }
 }
