@@ -470,9 +470,9 @@ impl FragCtx<'_> {
                 if live == 0 {
                     return;
                 }
-                self.depth_mask_span::<true>(bufs, base, n, zrow, dz, fx0, live)
+                self.depth_mask_span(bufs, base, n, zrow, dz, fx0, live)
             }
-            _ => self.depth_mask_span::<false>(bufs, base, n, zrow, dz, fx0, all),
+            _ => self.depth_mask_span(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
@@ -649,17 +649,19 @@ impl FragCtx<'_> {
         }
     }
 
-    /// The coverage mask of a span after the depth test: `live` (the fragments the span has)
-    /// when the test is off, else what `depth_span` leaves of it with DepthFunc's comparison.
-    /// `MASKED`: `live` may lack fragments inside the span (a polygon stipple).
+    /// The coverage mask of a span after the depth test: `live` (the fragments the span has;
+    /// with a polygon stipple it lacks some inside the span) when the test is off, else what
+    /// the depth test and write (§4.1.6) of the `n` fragments from tile index `b` leave of it:
+    /// z = `zrow + dz * (fx0 + k)` for the k-th, DepthFunc and DepthMask applied eight
+    /// fragments at a time (`lanes::depth_span`).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_mask_span<const MASKED: bool>(
+    fn depth_mask_span(
         &self,
         bufs: &mut TileBufs,
         b: usize,
         n: usize,
-        z: f32,
+        zrow: f32,
         dz: f32,
         fx0: i32,
         live: u64,
@@ -667,59 +669,26 @@ impl FragCtx<'_> {
         if !self.depth_test {
             return live;
         }
-        let l = live;
-        match self.depth_func {
-            gl::NEVER => 0,
-            gl::LESS => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d < s),
-            gl::EQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d == s),
-            gl::LEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d <= s),
-            gl::GREATER => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d > s),
-            gl::NOTEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d != s),
-            gl::GEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d >= s),
-            _ => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |_, _| true),
-        }
-    }
-
-    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
-    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
-    /// k of the result set when fragment k survives. With `MASKED`, only the fragments whose
-    /// bit is set in `live` are tested (the others are gone); without, `live` is ignored.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn depth_span<const MASKED: bool>(
-        &self,
-        bufs: &mut TileBufs,
-        base: usize,
-        n: usize,
-        zrow: f32,
-        dz: f32,
-        fx0: i32,
-        live: u64,
-        pass: impl Fn(u32, u32) -> bool,
-    ) -> u64 {
-        let end = (base + n.min(64)).min(bufs.depth.len());
-        let Some(row) = bufs.depth.get_mut(base..end) else {
+        // The row runs on to the tile's end, so that the span's last group is a whole one
+        // too (its lanes past the span are not live: neither tested nor written).
+        let Some(row) = bufs.depth.get_mut(b..) else {
             return 0;
         };
-        if !MASKED {
-            let live = u64::MAX >> (64 - row.len().clamp(1, 64));
-            return super::lanes::depth_span(row, zrow, dz, fx0, live, self.depth_mask, pass);
+        let n = n.min(64).min(row.len());
+        if n == 0 {
+            return 0;
         }
-        let mut mask = 0;
-        for (k, stored) in row.iter_mut().enumerate() {
-            if MASKED && live & (1 << k) == 0 {
-                continue;
-            }
-            let z = zrow + dz * (fx0 + k as i32) as f32;
-            let d = depth_unorm(f64::from(z));
-            if pass(d, *stored) {
-                if self.depth_mask {
-                    *stored = d;
-                }
-                mask |= 1 << k;
-            }
-        }
-        mask
+        let live = live & (u64::MAX >> (64 - n));
+        super::lanes::depth_span(
+            row,
+            n,
+            zrow,
+            dz,
+            fx0,
+            live,
+            self.depth_mask,
+            self.depth_func,
+        )
     }
 
     /// Texture level of detail of each unit for the 2x2 quad holding window pixel (x, y), from

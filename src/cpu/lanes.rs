@@ -80,8 +80,8 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{
-            __m128i, _mm_add_ps, _mm_and_si128, _mm_castps_si128, _mm_loadu_ps, _mm_max_ps,
-            _mm_min_ps, _mm_mul_ps, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi32, _mm_set1_ps,
+            _mm_add_ps, _mm_and_si128, _mm_castps_si128, _mm_loadu_ps, _mm_max_ps, _mm_min_ps,
+            _mm_mul_ps, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi32, _mm_set1_ps,
             _mm_setzero_ps,
         };
         // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 from a
@@ -98,8 +98,7 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
             let (lo, hi) = (conv(c.as_ptr()), conv(c.as_ptr().add(4)));
             // Every value is in 0..=255: the signed packs keep it.
             let w = _mm_packs_epi32(lo, hi);
-            let v = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(w, w));
-            [v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]]
+            low8(_mm_packus_epi16(w, w))
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
@@ -114,6 +113,18 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
         }
         out
     }
+}
+
+/// The low eight bytes of `x` (one `movq` store; taking them from a `[u8; 16]` made LLVM
+/// assemble the array byte by byte through general registers).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn low8(x: std::arch::x86_64::__m128i) -> [u8; LANES] {
+    let mut o = [0u8; LANES];
+    // SAFETY: SSE2 is part of the x86-64 baseline; the 8-byte store writes exactly `o`'s
+    // eight bytes (no alignment needed).
+    unsafe { std::arch::x86_64::_mm_storel_epi64(o.as_mut_ptr().cast(), x) };
+    o
 }
 
 /// The smooth primary colour of a span (the fast path of `FragCtx::tri_span`): for fragment k,
@@ -213,40 +224,35 @@ pub(super) fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
     }
 }
 
-/// The depth test and write of a span (`FragCtx::depth_span`): fragment k (bit k of `live`,
-/// k < `row.len()` ≤ 64) has z = `zrow` + `dz`·(`fx0` + k) in single precision; it survives
-/// when `pass(d, stored)`, and then `d` is stored if `write`. Returns the survivors' mask.
+/// The depth test and write of a span (`FragCtx::depth_mask_span`): fragment k (bit k of
+/// `live`, k < `n` ≤ 64, `n` ≤ `row.len()`) has z = `zrow` + `dz`·(`fx0` + k) in single
+/// precision; it survives when `d func stored` (DepthFunc `func`), and then `d` is stored if
+/// `write`. Returns the survivors' mask. Each group of eight goes through
+/// `oplanes::depth_test` (SSE2 compares and a select when eight values of `row` follow; `row`
+/// may run past the span, and its values outside `live` are kept).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 pub fn depth_span(
     row: &mut [u32],
+    n: usize,
     zrow: f32,
     dz: f32,
     fx0: i32,
     live: u64,
     write: bool,
-    pass: impl Fn(u32, u32) -> bool,
+    func: u32,
 ) -> u64 {
-    let n = row.len().min(64);
+    let n = n.min(64).min(row.len());
     let mut mask = 0u64;
     let mut c = 0;
     while c < n {
-        let m = (live >> c) & ((1 << LANES) - 1);
+        let m = ((live >> c) & ((1 << LANES) - 1)) as u8;
         if m != 0 {
             let fx = lane_x(fx0.wrapping_add(c as i32));
-            let mut z = [0.0f32; LANES];
-            for l in 0..LANES {
-                z[l] = zrow + dz * fx[l];
-            }
-            let d = depth_lanes(z);
+            let d = depth_lanes(lin_lanes(zrow, dz, &fx));
             if let Some(out) = row.get_mut(c..) {
-                for (l, stored) in out.iter_mut().take(LANES).enumerate() {
-                    if m & (1 << l) != 0 && pass(d[l], *stored) {
-                        if write {
-                            *stored = d[l];
-                        }
-                        mask |= 1 << (c + l);
-                    }
-                }
+                let got = super::oplanes::depth_test(func, write, out, d, m);
+                mask |= u64::from(got) << c;
             }
         }
         c += LANES;
@@ -429,8 +435,14 @@ pub(super) fn to_pixels(c: [&[f32; LANES]; 4]) -> [glam::Vec4; LANES] {
             // SAFETY: SSE is part of the x86-64 baseline; each load reads four f32 at offset
             // 0 or 4 of a `[f32; 8]` (in bounds, no alignment needed).
             let (t0, t1, t2, t3) = unsafe {
-                let (r, g) = (_mm_loadu_ps(r.as_ptr().add(k)), _mm_loadu_ps(g.as_ptr().add(k)));
-                let (b, a) = (_mm_loadu_ps(b.as_ptr().add(k)), _mm_loadu_ps(a.as_ptr().add(k)));
+                let (r, g) = (
+                    _mm_loadu_ps(r.as_ptr().add(k)),
+                    _mm_loadu_ps(g.as_ptr().add(k)),
+                );
+                let (b, a) = (
+                    _mm_loadu_ps(b.as_ptr().add(k)),
+                    _mm_loadu_ps(a.as_ptr().add(k)),
+                );
                 (
                     _mm_unpacklo_ps(r, g),
                     _mm_unpacklo_ps(b, a),
@@ -582,6 +594,7 @@ mod tests {
     use super::*;
     use crate::cpu::framebuffer::{depth_unorm, unorm8};
     use crate::cpu::testgen::Gen;
+    use crate::gl;
 
     #[test]
     fn smooth_rgba_is_the_scalar_expression_bit_for_bit() {
@@ -648,20 +661,43 @@ mod tests {
             let zrow = g.float();
             let dz = g.float() * 1e-3;
             let fx0 = (g.next() % 900) as i32 - 100;
-            let live = g.next() | g.next() << 40;
             let write = g.next() % 2 == 0;
-            let stored: Vec<u32> = (0..n).map(|_| (g.next() % (1 << 24)) as u32).collect();
+            let func = g.pick(&[
+                gl::NEVER,
+                gl::LESS,
+                gl::EQUAL,
+                gl::LEQUAL,
+                gl::GREATER,
+                gl::NOTEQUAL,
+                gl::GEQUAL,
+                gl::ALWAYS,
+            ]);
+            // The row runs on past the span now and then (as a tile's row does); only the
+            // live fragments of the span may be tested and written.
+            let len = n + (g.next() % 3) as usize * (g.next() % 20) as usize;
+            let all = u64::MAX >> (64 - n);
+            let live = match g.next() % 3 {
+                0 => all,
+                _ => (g.next() | g.next() << 40) & all,
+            };
+            // Few distinct depths so that EQUAL passes now and then.
+            let stored: Vec<u32> = (0..len)
+                .map(|_| match g.next() % 3 {
+                    0 => (g.next() % 4) as u32 * (DEPTH_MAX / 3),
+                    _ => (g.next() % (1 << 24)) as u32,
+                })
+                .collect();
             let mut got = stored.clone();
-            let mask = depth_span(&mut got, zrow, dz, fx0, live, write, |d, s| d < s);
+            let mask = depth_span(&mut got, n, zrow, dz, fx0, live, write, func);
             let mut want = stored.clone();
             let mut want_mask = 0u64;
-            for (k, s) in want.iter_mut().enumerate() {
+            for (k, s) in want.iter_mut().enumerate().take(n) {
                 if live & (1 << k) == 0 {
                     continue;
                 }
                 let z = zrow + dz * (fx0 + k as i32) as f32;
                 let d = depth_unorm(f64::from(z));
-                if d < *s {
+                if crate::cpu::fragops::compare(func, d, *s) {
                     if write {
                         *s = d;
                     }
@@ -719,7 +755,10 @@ mod tests {
                 assert_eq!(px.to_array().map(f32::to_bits), want, "lane {l}");
             }
             let back = from_pixels(&p);
-            assert_eq!(back.map(|ch| ch.map(f32::to_bits)), c.map(|ch| ch.map(f32::to_bits)));
+            assert_eq!(
+                back.map(|ch| ch.map(f32::to_bits)),
+                c.map(|ch| ch.map(f32::to_bits))
+            );
         }
     }
 

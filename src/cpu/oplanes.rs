@@ -256,7 +256,7 @@ fn stencil_group(
     live: u8,
 ) -> u8 {
     use std::arch::x86_64::{
-        __m128i, _mm_adds_epu8, _mm_add_epi8, _mm_and_si128, _mm_andnot_si128, _mm_cmpeq_epi8,
+        __m128i, _mm_add_epi8, _mm_adds_epu8, _mm_and_si128, _mm_andnot_si128, _mm_cmpeq_epi8,
         _mm_loadl_epi64, _mm_min_epu8, _mm_movemask_epi8, _mm_or_si128, _mm_set1_epi8,
         _mm_set_epi8, _mm_setzero_si128, _mm_storel_epi64, _mm_sub_epi8, _mm_subs_epu8,
         _mm_xor_si128,
@@ -345,11 +345,12 @@ type W = [u16; LANES];
 fn widen(v: B) -> W {
     #[cfg(target_arch = "x86_64")]
     {
-        use std::arch::x86_64::{__m128i, _mm_set_epi64x, _mm_setzero_si128, _mm_unpacklo_epi8};
-        // SAFETY: SSE2 is part of the x86-64 baseline; `__m128i` has the layout of
-        // `[u16; 8]` and every bit pattern is valid for both.
+        use std::arch::x86_64::{__m128i, _mm_loadl_epi64, _mm_setzero_si128, _mm_unpacklo_epi8};
+        // SAFETY: SSE2 is part of the x86-64 baseline; the 8-byte load reads exactly `v`
+        // (no alignment needed); `__m128i` has the layout of `[u16; 8]` and every bit
+        // pattern is valid for both.
         unsafe {
-            let x = _mm_set_epi64x(0, i64::from_le_bytes(v));
+            let x = _mm_loadl_epi64(v.as_ptr().cast::<__m128i>());
             std::mem::transmute::<__m128i, W>(_mm_unpacklo_epi8(x, _mm_setzero_si128()))
         }
     }
@@ -369,8 +370,7 @@ fn narrow(v: W) -> B {
         // `[u16; 8]` and of `[u8; 16]`, and every bit pattern is valid for all three.
         unsafe {
             let x = std::mem::transmute::<W, __m128i>(v);
-            let b = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(x, x));
-            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]
+            super::lanes::low8(_mm_packus_epi16(x, x))
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
@@ -562,8 +562,7 @@ pub fn load(row: &[[u8; 4]]) -> [B; 4] {
             let low = _mm_set1_epi32(0xFF);
             let ch = |lo: __m128i, hi: __m128i| {
                 let w = _mm_packs_epi32(_mm_and_si128(lo, low), _mm_and_si128(hi, low));
-                let v = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(w, w));
-                [v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]]
+                super::lanes::low8(_mm_packus_epi16(w, w))
             };
             out[0] = ch(lo, hi);
             out[1] = ch(_mm_srli_epi32(lo, 8), _mm_srli_epi32(hi, 8));
@@ -599,6 +598,37 @@ pub fn store(row: &mut [[u8; 4]], c: &[B; 4], m: u8, mask: [bool; 4]) {
         }
         return;
     };
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128i, _mm_and_si128, _mm_andnot_si128, _mm_cmpeq_epi32, _mm_loadl_epi64,
+            _mm_loadu_si128, _mm_or_si128, _mm_set1_epi32, _mm_set_epi32, _mm_storeu_si128,
+            _mm_unpackhi_epi16, _mm_unpacklo_epi16, _mm_unpacklo_epi8,
+        };
+        // SAFETY: SSE2 is part of the x86-64 baseline; each `_mm_loadl_epi64` reads exactly
+        // one `[u8; 8]` of `c`; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read and
+        // written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        unsafe {
+            let ch = |k: usize| _mm_loadl_epi64(c[k].as_ptr().cast::<__m128i>());
+            // r0 g0 r1 g1 ... and b0 a0 b1 a1 ..., then RGBA of pixels 0-3 and 4-7.
+            let (rg, ba) = (
+                _mm_unpacklo_epi8(ch(0), ch(1)),
+                _mm_unpacklo_epi8(ch(2), ch(3)),
+            );
+            let halves = [_mm_unpacklo_epi16(rg, ba), _mm_unpackhi_epi16(rg, ba)];
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let cmv = _mm_set1_epi32(cm as i32);
+            let p = px.as_mut_ptr().cast::<__m128i>();
+            for (h, v) in halves.into_iter().enumerate() {
+                let lv = _mm_set1_epi32(i32::from(m >> (4 * h)));
+                let sel = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits), cmv);
+                let old = _mm_loadu_si128(p.add(h));
+                let out = _mm_or_si128(_mm_andnot_si128(sel, old), _mm_and_si128(sel, v));
+                _mm_storeu_si128(p.add(h), out);
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
     for (l, dst) in px.iter_mut().enumerate() {
         let v = u32::from(c[0][l])
             | u32::from(c[1][l]) << 8
