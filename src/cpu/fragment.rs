@@ -975,6 +975,187 @@ mod tests {
         gl::ALWAYS,
     ];
 
+    /// Textured spans without per-fragment operations (`tri_span`'s general path: the
+    /// varyings, λ and colours on lanes, the pixel-major store when one colour buffer is
+    /// written whole) against the scalar sequence: each fragment's depth test, then `color`
+    /// with its quad's `quad_lambda` and `write`, byte for byte. One or two units (the same 2D
+    /// texture, each with its own environment), random filters, masks, buffers and stipples.
+    #[test]
+    fn textured_tri_span_is_the_scalar_sequence_byte_for_byte() {
+        use crate::cpu::texture::Sampler;
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        let mut g = Gen(37);
+        let mins = [
+            gl::NEAREST,
+            gl::LINEAR,
+            gl::NEAREST_MIPMAP_NEAREST,
+            gl::LINEAR_MIPMAP_LINEAR,
+        ];
+        let envs = [gl::MODULATE, gl::REPLACE, gl::DECAL, gl::ADD, gl::BLEND];
+        for round in 0..600 {
+            let mut obj = TexObject {
+                min_filter: g.pick(&mins),
+                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                ..TexObject::default()
+            };
+            let mut w = 8;
+            let mut k = 0;
+            while w >= 1 {
+                let texels = (0..w * w)
+                    .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
+                    .collect();
+                obj.levels[k] = Some(Level {
+                    depth: 1,
+                    width: w,
+                    height: w,
+                    internal_format: gl::RGBA as i32,
+                    base: gl::RGBA,
+                    texels,
+                });
+                k += 1;
+                w /= 2;
+            }
+            let units = 1 + round % 2;
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            for u in 0..units {
+                state.enables.texture_2d[u] = true;
+                state.textures.units[u].env_mode = g.pick(&envs);
+                state.textures.units[u].env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
+            }
+            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+            for (u, s) in samplers.iter_mut().enumerate().take(units) {
+                *s = Sampler::new(&state, u);
+                assert!(s.is_some(), "unit {u} complete");
+            }
+            let mut rl = RLayout {
+                n: 4,
+                ..Default::default()
+            };
+            for t in rl.tex.iter_mut().take(units) {
+                *t = Some(rl.n);
+                rl.n += 4;
+            }
+            let tex = tex_units(&samplers, &rl);
+            let f = FragCtx {
+                depth_test: g.next() % 4 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: match g.next() % 4 {
+                    0 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    _ => [true; 4],
+                },
+                color_sum: false,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: g.next() % 8 == 0,
+                samples: g.next() % 2 == 0,
+                stipple: (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32)),
+                ops: None,
+                tex,
+                crossbar: crossbar(&tex),
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags: [0, F_LINE][(g.next() % 2) as usize],
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
+            };
+            // 1/w, the colour (around [0, 1]) and coordinates spanning a few repeats, with
+            // derivatives large and small so that λ crosses the levels.
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for j in 0..rl.n {
+                let d = if j < 4 {
+                    1e-2
+                } else {
+                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+                };
+                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let two = g.next() % 4 == 0;
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let y = ty + (g.next() % TILE as u64) as i32;
+            let x0 = tx + (g.next() % TILE as u64) as i32;
+            let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) = (
+                    color.clone(),
+                    color.clone(),
+                    depth.clone(),
+                    vec![0u8; TILE * TILE],
+                );
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                } else {
+                    let (ox, oy) = (p.bbox[0], p.bbox[1]);
+                    let fy = (y - oy) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let live = match f.stipple {
+                        Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
+                        _ => u64::MAX,
+                    };
+                    let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+                    let mut v = vec![0.0f32; rl.n];
+                    for x in x0..=x1 {
+                        if live & (1 << (x - x0)) == 0 {
+                            continue;
+                        }
+                        let i = ((y - ty) as usize) * TILE + (x - tx) as usize;
+                        let fx = (x - ox) as f32;
+                        if !f.depth(&mut bufs, i, f64::from(zrow + p.z[1] * fx)) {
+                            continue;
+                        }
+                        if f.samples {
+                            bufs.samples += 1;
+                        }
+                        let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+                        for (j, vj) in v.iter_mut().enumerate() {
+                            let o = 3 + 3 * j;
+                            *vj = (pl(o) + pl(o + 1) * fx + pl(o + 2) * fy) * inv;
+                        }
+                        let lambda = f.quad_lambda(&planes, x, y, ox, oy);
+                        let c = f.color(&p, &v, lambda);
+                        f.write(&mut bufs, i, c);
+                    }
+                }
+                let samples = bufs.samples;
+                (c, c2, d, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(
+                got == want,
+                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
+        }
+    }
+
     #[test]
     fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
         let mut g = Gen(21);
@@ -1054,10 +1235,11 @@ mod tests {
                 depth_test: g.next() % 4 != 0,
                 depth_func: g.pick(&FUNCS),
                 depth_mask: g.next() % 2 == 0,
-                color_mask: if g.next() % 3 == 0 {
-                    std::array::from_fn(|_| g.next() % 2 == 0)
-                } else {
-                    [true; 4]
+                // All false now and then: `full_span`'s route without a colour write.
+                color_mask: match g.next() % 6 {
+                    0 | 1 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    2 => [false; 4],
+                    _ => [true; 4],
                 },
                 color_sum: spec && g.next() % 4 != 0,
                 rl,
