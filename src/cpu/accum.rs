@@ -41,8 +41,9 @@ pub fn clear_value(c: f32) -> i16 {
 }
 
 /// One accumulation operation on one pixel: `acc` the accumulation buffer's value, `color` the
-/// read buffer's (LOAD, ACCUM); returns nothing: RETURN is [`ret`].
-#[inline]
+/// read buffer's (LOAD, ACCUM); returns nothing: RETURN is `ret`. The per-pixel statement of
+/// Mesa's arithmetic, which the tests hold [`apply_run`] to.
+#[cfg(test)]
 pub fn apply(op: u32, value: f32, acc: &mut [i16; 4], color: [u8; 4]) {
     match op {
         gl::LOAD => {
@@ -72,11 +73,124 @@ pub fn apply(op: u32, value: f32, acc: &mut [i16; 4], color: [u8; 4]) {
     }
 }
 
-/// RETURN's colour for accumulation value `acc`: acc · (value / 32767) to unorm8.
-#[inline]
+/// RETURN's colour for accumulation value `acc`: acc · (value / 32767) to unorm8. The
+/// per-pixel statement, which the tests hold [`return_run`] to.
+#[cfg(test)]
 pub fn ret(value: f32, acc: [i16; 4]) -> [u8; 4] {
     let scale = value / 32767.0;
     acc.map(|a| unorm8(f32::from(a) * scale))
+}
+
+/// `apply` over a run of pixels: `acc` the accumulation values, `color` their colour bytes
+/// (four a pixel, as many as `acc` holds; read by LOAD and ACCUM only, so empty for ADD and
+/// MULT). Each channel gets `apply`'s expression, but the operation is chosen once per run and
+/// the channels go eight at a time through [`to_short_lanes`] (two pixels), the rest one by one.
+pub fn apply_run(op: u32, value: f32, acc: &mut [[i16; 4]], color: &[u8]) {
+    let acc = acc.as_flattened_mut();
+    let scale = value * 32767.0;
+    // Channel k of a group: its colour's product (LOAD, ACCUM) or its value's (MULT).
+    let lanes = |a: &[i16], c: &[u8]| -> [f32; 8] {
+        let mut f = [0.0f32; 8];
+        match op {
+            gl::MULT => {
+                for (f, &a) in f.iter_mut().zip(a) {
+                    *f = f32::from(a) * value;
+                }
+            }
+            _ => {
+                for (f, &c) in f.iter_mut().zip(c) {
+                    *f = unpack(c) * scale;
+                }
+            }
+        }
+        f
+    };
+    match op {
+        gl::LOAD | gl::ACCUM | gl::MULT => {
+            let n = match op {
+                gl::MULT => acc.len(),
+                _ => acc.len().min(color.len()),
+            };
+            let (acc, color) = (&mut acc[..n], color.get(..n).unwrap_or(&[]));
+            let mut groups = acc.chunks_exact_mut(8);
+            let mut colors = color.chunks_exact(8);
+            for a in groups.by_ref() {
+                let s = to_short_lanes(lanes(a, colors.next().unwrap_or(&[])));
+                match op {
+                    gl::ACCUM => {
+                        for (a, s) in a.iter_mut().zip(s) {
+                            *a = a.wrapping_add(s);
+                        }
+                    }
+                    _ => a.copy_from_slice(&s),
+                }
+            }
+            let rest = groups.into_remainder();
+            let tail = colors.remainder();
+            for (k, a) in rest.iter_mut().enumerate() {
+                let f = match op {
+                    gl::MULT => f32::from(*a) * value,
+                    _ => unpack(tail.get(k).copied().unwrap_or(0)) * scale,
+                };
+                *a = match op {
+                    gl::ACCUM => a.wrapping_add(to_short(f)),
+                    _ => to_short(f),
+                };
+            }
+        }
+        gl::ADD => {
+            let incr = to_short(value * 32767.0);
+            for a in acc.iter_mut() {
+                *a = a.wrapping_add(incr);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// [`to_short`] of eight values: on x86-64 SSE2's `cvttps2dq`, which is the conversion
+/// `to_short` describes (i32::MIN when out of range or NaN), then the low 16 bits of each.
+#[inline(always)]
+fn to_short_lanes(f: [f32; 8]) -> [i16; 8] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128i, _mm_cvttps_epi32, _mm_loadu_ps, _mm_packs_epi32, _mm_slli_epi32,
+            _mm_srai_epi32,
+        };
+        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 from an
+        // `[f32; 8]` at offsets 0 and 4 (in bounds, no alignment needed); `__m128i` has the
+        // layout of `[i16; 8]` and every bit pattern is valid for both.
+        unsafe {
+            // Each i32's low 16 bits, sign-extended: the signed pack then keeps them exactly.
+            let low = |v: __m128i| _mm_srai_epi32::<16>(_mm_slli_epi32::<16>(v));
+            let lo = low(_mm_cvttps_epi32(_mm_loadu_ps(f.as_ptr())));
+            let hi = low(_mm_cvttps_epi32(_mm_loadu_ps(f.as_ptr().add(4))));
+            std::mem::transmute::<__m128i, [i16; 8]>(_mm_packs_epi32(lo, hi))
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        f.map(to_short)
+    }
+}
+
+/// `ret` over a run of pixels: each accumulation value's colour written into `dst` (four
+/// bytes a pixel), the channels `mask` leaves off keeping their bytes.
+pub fn return_run(value: f32, acc: &[[i16; 4]], dst: &mut [u8], mask: [bool; 4]) {
+    let scale = value / 32767.0;
+    let acc = acc.as_flattened();
+    if mask == [true; 4] {
+        for (d, &a) in dst.iter_mut().zip(acc) {
+            *d = unorm8(f32::from(a) * scale);
+        }
+        return;
+    }
+    for (k, (d, &a)) in dst.iter_mut().zip(acc).enumerate() {
+        if mask[k % 4] {
+            *d = unorm8(f32::from(a) * scale);
+        }
+    }
 }
 
 /// Whether `op` reads the colour buffer (LOAD, ACCUM).
@@ -100,6 +214,70 @@ mod tests {
         assert_eq!(clear_value(-0.5), -16384);
         assert_eq!(clear_value(1.0), 32767);
         assert_eq!(clear_value(0.333), 10911);
+    }
+
+    /// `apply_run` and `return_run` give, value for value, what `apply` and `ret` give pixel
+    /// by pixel: every operation, runs of every length mod 8 (the lanes and the tail), values
+    /// that overflow 16 bits, NaN and infinite operands, every colour mask.
+    #[test]
+    fn runs_are_the_pixel_functions() {
+        let mut seed = 0x2545_f491_u32;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let values = [
+            0.0,
+            0.25,
+            1.0,
+            -1.0,
+            0.75,
+            1.0 / 3.0,
+            2.5,
+            -7.0,
+            1e6,
+            -1e9,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MIN_POSITIVE,
+        ];
+        for len in [0usize, 1, 2, 3, 5, 8, 9, 15, 16, 17, 64] {
+            let acc0: Vec<[i16; 4]> = (0..len).map(|_| [0; 4].map(|_| next() as i16)).collect();
+            let color: Vec<u8> = (0..4 * len).map(|_| next() as u8).collect();
+            for op in [gl::LOAD, gl::ACCUM, gl::ADD, gl::MULT] {
+                for &v in &values {
+                    let mut want = acc0.clone();
+                    for (i, a) in want.iter_mut().enumerate() {
+                        let c = [0, 1, 2, 3].map(|k| color[4 * i + k]);
+                        apply(op, v, a, if reads_color(op) { c } else { [0; 4] });
+                    }
+                    let mut got = acc0.clone();
+                    let c: &[u8] = if reads_color(op) { &color } else { &[] };
+                    apply_run(op, v, &mut got, c);
+                    assert_eq!(got, want, "op {op:#x} value {v} length {len}");
+                }
+            }
+            for &v in &values {
+                for mask in 0..16u8 {
+                    let mask = [0, 1, 2, 3].map(|k| mask & (1 << k) != 0);
+                    let mut want = color.clone();
+                    for (i, a) in acc0.iter().enumerate() {
+                        let px = ret(v, *a);
+                        for k in 0..4 {
+                            if mask[k] {
+                                want[4 * i + k] = px[k];
+                            }
+                        }
+                    }
+                    let mut got = color.clone();
+                    return_run(v, &acc0, &mut got, mask);
+                    assert_eq!(got, want, "RETURN value {v} length {len} mask {mask:?}");
+                }
+            }
+        }
     }
 
     #[test]

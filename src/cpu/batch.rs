@@ -7,11 +7,13 @@
 //! bit) is stored once and referenced by index, so the vertex stage lights it once: immediate-mode
 //! meshes such as one strip per grid cell send each vertex up to four times, and the vertex
 //! stage is a pure function of these inputs, so the result is exactly the same. A cache slot
-//! holds the position and normal bits themselves; the other inputs (colours, texture
-//! coordinates, fog coordinate, edge flag, material), which rarely change inside a mesh, are
-//! compared only with the previous vertex's: a run of vertices with the same such inputs forms a
-//! span, and a hit counts only inside the current span, so a hit touches one slot and no batch
-//! array. The span is also the unit of storage: its colours, texture coordinates and fog
+//! holds only the serial number of a batched vertex (8-byte sets, 32 KB in all: the load of a
+//! random set for every vertex is the front end's costliest, so the table is kept small), and a
+//! candidate is confirmed against the batch's own position and normal arrays, whose recent
+//! entries are warm; the other inputs (colours, texture coordinates, fog coordinate, edge flag,
+//! material), which rarely change inside a mesh, are compared only with the previous vertex's:
+//! a run of vertices with the same such inputs forms a span, and a hit counts only inside the
+//! current span. The span is also the unit of storage: its colours, texture coordinates and fog
 //! coordinate are stored once (`spans`), and a unique vertex stores its position, normal, edge
 //! flag, material index and span index (about 40 bytes instead of 100: the batch is written at
 //! the rate calls arrive, so its size is a per-vertex cost). The arrays are cleared, not freed,
@@ -43,29 +45,22 @@ const SETS: usize = 1 << 12;
 /// cached).
 const SERIAL_RESET: u64 = 1 << 31;
 
-/// A vertex cache slot: the position and normal bits of a batched vertex, and its serial number
-/// (its index plus `Batch::serial0`), so that a slot left from an earlier batch is never a hit.
-/// 32 bytes, so that a set of two fills one 64-byte cache line.
-#[derive(Clone, Copy, Debug)]
-struct Slot {
-    pos: [u32; 4],
-    normal: [u32; 3],
-    serial: u32,
-}
+/// A vertex cache slot: the serial number of a batched vertex (its index plus
+/// `Batch::serial0`), so that a slot left from an earlier batch is never a hit; its position and
+/// normal are the batch's. (Slots holding the position and normal bits themselves made 64-byte
+/// sets, 256 KB in all, and the load of a set was then the front end's worst stall: half of
+/// `Context::replay`'s samples in gauss-smooth-400, on the 3 Dec fifth session's profile.)
+type Slot = u32;
 
-/// Never a hit: a hit needs `serial` below the current vertex's, which is below `u32::MAX`.
-const EMPTY: Slot = Slot {
-    pos: [0; 4],
-    normal: [0; 3],
-    serial: u32::MAX,
-};
+/// Never a hit: a hit needs a serial below the current vertex's, which is below `u32::MAX`.
+const EMPTY: Slot = u32::MAX;
 
 /// Two slots sharing one hash, the newer first (first in, first out: a hit changes nothing).
 /// A mesh reuses a vertex a row later, after some hundreds of other vertices: two ways keep it
 /// when another vertex lands on the same set, where one way lost about one vertex in six of
 /// gauss-smooth-400 (each miss is one more vertex to store and light).
 #[derive(Clone, Copy, Debug)]
-#[repr(align(64))]
+#[repr(align(8))]
 struct Set([Slot; 2]);
 
 /// The cache set of a position and normal (their bits), mixing 32-bit words.
@@ -251,32 +246,35 @@ impl Batch {
         let set = set_of(pos, normal);
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
         if let (Some(Set(ways)), Ok(serial)) = (self.cache.get_mut(set), u32::try_from(serial)) {
-            // A hit: same position and normal, and a vertex of this span (same other inputs).
-            let span = self.span;
-            let hit = |e: &Slot| {
-                u64::from(e.serial) >= span
-                    && e.serial < serial
-                    && e.pos == pos
-                    && e.normal == normal
+            // A hit: a vertex of this span (same other inputs) with the same position and normal
+            // bits. A serial of this span is at least `serial0`, so its index is in the arrays.
+            let (span, serial0) = (self.span, self.serial0);
+            let (positions, normals) = (&self.pos, &self.normal);
+            let hit = |s: Slot| {
+                u64::from(s) >= span && s < serial && {
+                    let k = (u64::from(s) - serial0) as usize;
+                    positions
+                        .get(k)
+                        .is_some_and(|p| p.to_array().map(f32::to_bits) == pos)
+                        && normals
+                            .get(k)
+                            .is_some_and(|m| m.to_array().map(f32::to_bits) == normal)
+                }
             };
-            let [newer, older] = &*ways;
+            let [newer, older] = *ways;
             let found = if hit(newer) {
-                Some(newer.serial)
+                Some(newer)
             } else if hit(older) {
-                Some(older.serial)
+                Some(older)
             } else {
                 None
             };
             if let Some(s) = found {
-                self.idx.push((u64::from(s) - self.serial0) as u32);
+                self.idx.push((u64::from(s) - serial0) as u32);
                 return;
             }
             ways[1] = ways[0];
-            ways[0] = Slot {
-                pos,
-                normal,
-                serial,
-            };
+            ways[0] = serial;
         }
         self.idx.push(i as u32);
         self.pos.push(position);

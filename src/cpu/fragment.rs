@@ -233,8 +233,8 @@ impl FragCtx<'_> {
     /// The colours (channel-major) of the lanes of `m` whose varyings are `vs` (lane-major
     /// per varying, `vs.len()` varyings) and λ `lam` (per unit, per lane): what `color` gives
     /// for each lane's fragment, bit for bit. With `on_lanes` (`tex_lanes_ok`) every unit's
-    /// texels are filtered for the eight lanes first (`Sampler::texels_lanes`), then each
-    /// environment applies in unit order (§3.8.15) and the colour sum (§3.9) follows;
+    /// texels are filtered for the eight lanes (`Sampler::texels_lanes`) and its environment
+    /// applied, in unit order (§3.8.15), then the colour sum (§3.9) follows (`tex_pixels`);
     /// otherwise each lane takes `color`. Lanes outside `m` hold unspecified values.
     #[inline(always)]
     fn color_lanes(
@@ -245,8 +245,8 @@ impl FragCtx<'_> {
         lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
         on_lanes: bool,
     ) -> [[f32; LANES]; 4] {
-        let mut col = [[0.0f32; LANES]; 4];
         if !on_lanes {
+            let mut col = [[0.0f32; LANES]; 4];
             let mut v = [0.0f32; MAXV];
             let nv = vs.len().min(MAXV);
             for l in 0..LANES {
@@ -263,20 +263,30 @@ impl FragCtx<'_> {
             }
             return col;
         }
-        let g = |k: usize| vs.get(k).copied().unwrap_or([0.0; LANES]);
-        let (r, gr, b, a) = (g(0), g(1), g(2), g(3));
-        let mut c: [Vec4; LANES] = std::array::from_fn(|l| Vec4::new(r[l], gr[l], b[l], a[l]));
-        // Every unit's texels first, then the environments in unit order.
-        let mut texels = [[[0.0f32; 4]; LANES]; MAX_TEXTURE_UNITS];
-        for ((tl, t), lu) in texels.iter_mut().zip(&self.tex).zip(lam) {
-            let Some((tx, o)) = *t else { break };
-            let (cs, ct, cr, cq) = (g(o), g(o + 1), g(o + 2), g(o + 3));
-            *tl = tx.texels_lanes([&cs, &ct, &cr, &cq], lu, m);
-        }
+        super::lanes::from_pixels(&self.tex_pixels(vs, m, lam))
+    }
+
+    /// `color_lanes` on lanes (`tex_lanes_ok`), pixel-major: the colour of lane l's fragment
+    /// in `out[l]`. Lanes outside `m` hold unspecified values.
+    #[inline(always)]
+    fn tex_pixels(
+        &self,
+        vs: &[[f32; LANES]],
+        m: u8,
+        lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
+    ) -> [Vec4; LANES] {
+        const ZERO: [f32; LANES] = [0.0; LANES];
+        let g = |k: usize| vs.get(k).unwrap_or(&ZERO);
+        let mut c: [Vec4; LANES] = super::lanes::to_pixels([g(0), g(1), g(2), g(3)]);
+        // Each unit's texels, then its environment, in unit order (§3.8.15). A sampler with
+        // `lanes_ok` is never a COMBINE with a TEXTUREn source, so no environment reads another
+        // unit's texel and sampling unit k + 1 after unit k's environment gives the same texels.
+        // COMBINE's PRIMARY_COLOR is the colour before the first unit.
         let prim = c;
-        for (tl, t) in texels.iter().zip(&self.tex) {
-            let Some((tx, _)) = *t else { break };
-            tx.env_lanes_with(&mut c, &prim, tl, m);
+        for (t, lu) in self.tex.iter().zip(lam) {
+            let Some((tx, o)) = *t else { break };
+            let tl = tx.texels_lanes([g(o), g(o + 1), g(o + 2), g(o + 3)], lu, m);
+            tx.env_lanes_with(&mut c, &prim, &tl, m);
         }
         if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
             let (sr, sg, sb) = (g(o), g(o + 1), g(o + 2));
@@ -284,12 +294,7 @@ impl FragCtx<'_> {
                 *c += Vec3::new(sr[l], sg[l], sb[l]).extend(0.0);
             }
         }
-        for (l, c) in c.iter().enumerate() {
-            for (ch, x) in col.iter_mut().zip(c.to_array()) {
-                ch[l] = x;
-            }
-        }
-        col
+        c
     }
 
     /// Writes colour `c` at tile index `i` through ColorMask (§4.2.2).
@@ -467,9 +472,9 @@ impl FragCtx<'_> {
                 if live == 0 {
                     return;
                 }
-                self.depth_mask_span::<true>(bufs, base, n, zrow, dz, fx0, live)
+                self.depth_mask_span(bufs, base, n, zrow, dz, fx0, live)
             }
-            _ => self.depth_mask_span::<false>(bufs, base, n, zrow, dz, fx0, all),
+            _ => self.depth_mask_span(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
@@ -569,6 +574,15 @@ impl FragCtx<'_> {
                     }
                 }
             }
+            if whole && on_lanes {
+                // Pixel-major colours straight to RGBA8 (no transposition back).
+                let px = self.tex_pixels(vs, m as u8, &lam);
+                if let Some(dst) = bufs.color.get_mut(base + g..) {
+                    super::lanes::store_pixels(dst, m as u8, &px);
+                }
+                g += LANES;
+                continue;
+            }
             let col = self.color_lanes(p, vs, m as u8, &lam, on_lanes);
             if whole {
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
@@ -637,17 +651,19 @@ impl FragCtx<'_> {
         }
     }
 
-    /// The coverage mask of a span after the depth test: `live` (the fragments the span has)
-    /// when the test is off, else what `depth_span` leaves of it with DepthFunc's comparison.
-    /// `MASKED`: `live` may lack fragments inside the span (a polygon stipple).
+    /// The coverage mask of a span after the depth test: `live` (the fragments the span has;
+    /// with a polygon stipple it lacks some inside the span) when the test is off, else what
+    /// the depth test and write (§4.1.6) of the `n` fragments from tile index `b` leave of it:
+    /// z = `zrow + dz * (fx0 + k)` for the k-th, DepthFunc and DepthMask applied eight
+    /// fragments at a time (`lanes::depth_span`).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_mask_span<const MASKED: bool>(
+    fn depth_mask_span(
         &self,
         bufs: &mut TileBufs,
         b: usize,
         n: usize,
-        z: f32,
+        zrow: f32,
         dz: f32,
         fx0: i32,
         live: u64,
@@ -655,59 +671,26 @@ impl FragCtx<'_> {
         if !self.depth_test {
             return live;
         }
-        let l = live;
-        match self.depth_func {
-            gl::NEVER => 0,
-            gl::LESS => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d < s),
-            gl::EQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d == s),
-            gl::LEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d <= s),
-            gl::GREATER => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d > s),
-            gl::NOTEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d != s),
-            gl::GEQUAL => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |d, s| d >= s),
-            _ => self.depth_span::<MASKED>(bufs, b, n, z, dz, fx0, l, |_, _| true),
-        }
-    }
-
-    /// The depth test and write (§4.1.6) of the `n` fragments of a span starting at tile index
-    /// `base`, z = `zrow + dz * (fx0 + k)` for the k-th, `pass` the DepthFunc comparison; bit
-    /// k of the result set when fragment k survives. With `MASKED`, only the fragments whose
-    /// bit is set in `live` are tested (the others are gone); without, `live` is ignored.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn depth_span<const MASKED: bool>(
-        &self,
-        bufs: &mut TileBufs,
-        base: usize,
-        n: usize,
-        zrow: f32,
-        dz: f32,
-        fx0: i32,
-        live: u64,
-        pass: impl Fn(u32, u32) -> bool,
-    ) -> u64 {
-        let end = (base + n.min(64)).min(bufs.depth.len());
-        let Some(row) = bufs.depth.get_mut(base..end) else {
+        // The row runs on to the tile's end, so that the span's last group is a whole one
+        // too (its lanes past the span are not live: neither tested nor written).
+        let Some(row) = bufs.depth.get_mut(b..) else {
             return 0;
         };
-        if !MASKED {
-            let live = u64::MAX >> (64 - row.len().clamp(1, 64));
-            return super::lanes::depth_span(row, zrow, dz, fx0, live, self.depth_mask, pass);
+        let n = n.min(64).min(row.len());
+        if n == 0 {
+            return 0;
         }
-        let mut mask = 0;
-        for (k, stored) in row.iter_mut().enumerate() {
-            if MASKED && live & (1 << k) == 0 {
-                continue;
-            }
-            let z = zrow + dz * (fx0 + k as i32) as f32;
-            let d = depth_unorm(f64::from(z));
-            if pass(d, *stored) {
-                if self.depth_mask {
-                    *stored = d;
-                }
-                mask |= 1 << k;
-            }
-        }
-        mask
+        let live = live & (u64::MAX >> (64 - n));
+        super::lanes::depth_span(
+            row,
+            n,
+            zrow,
+            dz,
+            fx0,
+            live,
+            self.depth_mask,
+            self.depth_func,
+        )
     }
 
     /// Texture level of detail of each unit for the 2x2 quad holding window pixel (x, y), from
@@ -783,6 +766,13 @@ impl FragCtx<'_> {
         let on_lanes = !plain && self.tex_lanes_ok(p);
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - p.bbox[1]) as f32;
+        // What each group runs, decided once per span: with ColorMask all false (and no
+        // coverage count) nothing reaches a colour buffer, so fog, blending and the stores
+        // are skipped, and without an alpha test the colour itself (the varyings, texturing)
+        // is never computed: only the stencil and depth tests and their writes remain.
+        let writes_color = self.count || self.color_mask != [false; 4];
+        let needs_color = writes_color || ops.alpha.is_some();
+        let dz = p.z[1];
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
         let mut v = [[0.0f32; LANES]; super::setup::MAXV];
@@ -794,46 +784,54 @@ impl FragCtx<'_> {
                 c += LANES;
                 continue;
             }
-            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
-            // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
             let fx = lane_x(x0 - ox + c as i32);
-            super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
-            let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
-            if plain {
-                if let Some(s) = spec {
-                    for (k, ch) in col.iter_mut().enumerate() {
-                        let add = if k < 3 { v[s + k] } else { [0.0; LANES] };
-                        *ch = std::array::from_fn(|l| ch[l] + add[l]);
+            let mut m = m;
+            let mut rgb = [[0.0f32; LANES]; 3];
+            let mut a = [0.0f32; LANES];
+            if needs_color {
+                // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+                // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
+                super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
+                let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
+                if plain {
+                    if let Some(s) = spec {
+                        for (k, ch) in col.iter_mut().enumerate().take(3) {
+                            let add = v[s + k];
+                            for l in 0..LANES {
+                                ch[l] += add[l];
+                            }
+                        }
+                        // (Alpha gains 0.0, which leaves every value's bits as they are
+                        // but −0, whose clamp below gives +0 either way.)
                     }
-                }
-            } else {
-                // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
-                if lod {
-                    for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
-                        let Some((tx, to)) = *t else { break };
-                        if tx.needs_lambda() {
-                            *lu = sq.lanes(tx, planes, to, x0 + c as i32);
+                } else {
+                    // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
+                    if lod {
+                        for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
+                            let Some((tx, to)) = *t else { break };
+                            if tx.needs_lambda() {
+                                *lu = sq.lanes(tx, planes, to, x0 + c as i32);
+                            }
                         }
                     }
+                    col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
                 }
-                col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
-            }
-            let mut rgb = [
-                ol::clamp01(col[0]),
-                ol::clamp01(col[1]),
-                ol::clamp01(col[2]),
-            ];
-            let a = ol::clamp01(col[3]);
-            let mut m = m;
-            if let Some((func, reference)) = ops.alpha {
-                m &= ol::alpha_test(func, reference, a);
-            }
-            if m == 0 {
-                c += LANES;
-                continue;
+                rgb = [
+                    ol::clamp01(col[0]),
+                    ol::clamp01(col[1]),
+                    ol::clamp01(col[2]),
+                ];
+                a = ol::clamp01(col[3]);
+                if let Some((func, reference)) = ops.alpha {
+                    m &= ol::alpha_test(func, reference, a);
+                }
+                if m == 0 {
+                    c += LANES;
+                    continue;
+                }
             }
             let d = if self.depth_test {
-                depth_lanes(fx.map(|x| zrow + p.z[1] * x))
+                depth_lanes(super::lanes::lin_lanes(zrow, dz, &fx))
             } else {
                 [0; LANES]
             };
@@ -855,6 +853,10 @@ impl FragCtx<'_> {
             if self.samples {
                 bufs.samples += u64::from(m.count_ones());
             }
+            if !writes_color {
+                c += LANES;
+                continue;
+            }
             // Fog (§3.10) changes only R, G and B, which nothing before the colour write
             // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
             // EXP2 call `expf` only for fragments that are written.
@@ -869,28 +871,33 @@ impl FragCtx<'_> {
             ];
             // Blending and the logic op read each colour buffer's own contents (§4.1.8,
             // §4.1.10).
-            let combine = |row: &[[u8; 4]]| match ops.write {
-                ColorWrite::Replace => src,
-                ColorWrite::Blend(b) => ol::blend(&b, &src, &ol::load(row)),
-                ColorWrite::Logic(op) => ol::logic(op, &src, &ol::load(row)),
-            };
-            for buf in [Some(&mut *bufs.color), bufs.color2.as_deref_mut()]
-                .into_iter()
-                .flatten()
-            {
-                let row = buf.get_mut(i0..).unwrap_or_default();
-                let out = combine(row);
-                if self.count {
-                    for (l, dst) in row.iter_mut().take(LANES).enumerate() {
-                        if m & (1 << l) != 0 {
-                            self.store_one(dst, out.map(|ch| ch[l]));
-                        }
-                    }
-                } else {
-                    ol::store(row, &out, m, self.color_mask);
-                }
+            self.write_group(ops, bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
+            if let Some(c2) = bufs.color2.as_deref_mut() {
+                self.write_group(ops, c2.get_mut(i0..).unwrap_or_default(), &src, m);
             }
             c += LANES;
+        }
+    }
+
+    /// The colour write of a group (`full_span`) to one colour buffer's row from the group's
+    /// first pixel: blending or the logic op with the row's own contents (§4.1.8, §4.1.10),
+    /// then the masked store of lanes `m` (§4.2.2), or the coverage count.
+    #[inline(always)]
+    fn write_group(&self, ops: &Ops, row: &mut [[u8; 4]], src: &[[u8; LANES]; 4], m: u8) {
+        use super::oplanes as ol;
+        let out = match ops.write {
+            ColorWrite::Replace => *src,
+            ColorWrite::Blend(b) => ol::blend(&b, src, &ol::load(row)),
+            ColorWrite::Logic(op) => ol::logic(op, src, &ol::load(row)),
+        };
+        if self.count {
+            for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                if m & (1 << l) != 0 {
+                    self.store_one(dst, out.map(|ch| ch[l]));
+                }
+            }
+        } else {
+            ol::store(row, &out, m, self.color_mask);
         }
     }
 }
@@ -969,6 +976,187 @@ mod tests {
         gl::GEQUAL,
         gl::ALWAYS,
     ];
+
+    /// Textured spans without per-fragment operations (`tri_span`'s general path: the
+    /// varyings, λ and colours on lanes, the pixel-major store when one colour buffer is
+    /// written whole) against the scalar sequence: each fragment's depth test, then `color`
+    /// with its quad's `quad_lambda` and `write`, byte for byte. One or two units (the same 2D
+    /// texture, each with its own environment), random filters, masks, buffers and stipples.
+    #[test]
+    fn textured_tri_span_is_the_scalar_sequence_byte_for_byte() {
+        use crate::cpu::texture::Sampler;
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        let mut g = Gen(37);
+        let mins = [
+            gl::NEAREST,
+            gl::LINEAR,
+            gl::NEAREST_MIPMAP_NEAREST,
+            gl::LINEAR_MIPMAP_LINEAR,
+        ];
+        let envs = [gl::MODULATE, gl::REPLACE, gl::DECAL, gl::ADD, gl::BLEND];
+        for round in 0..600 {
+            let mut obj = TexObject {
+                min_filter: g.pick(&mins),
+                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                ..TexObject::default()
+            };
+            let mut w = 8;
+            let mut k = 0;
+            while w >= 1 {
+                let texels = (0..w * w)
+                    .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
+                    .collect();
+                obj.levels[k] = Some(Level {
+                    depth: 1,
+                    width: w,
+                    height: w,
+                    internal_format: gl::RGBA as i32,
+                    base: gl::RGBA,
+                    texels,
+                });
+                k += 1;
+                w /= 2;
+            }
+            let units = 1 + round % 2;
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            for u in 0..units {
+                state.enables.texture_2d[u] = true;
+                state.textures.units[u].env_mode = g.pick(&envs);
+                state.textures.units[u].env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
+            }
+            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+            for (u, s) in samplers.iter_mut().enumerate().take(units) {
+                *s = Sampler::new(&state, u);
+                assert!(s.is_some(), "unit {u} complete");
+            }
+            let mut rl = RLayout {
+                n: 4,
+                ..Default::default()
+            };
+            for t in rl.tex.iter_mut().take(units) {
+                *t = Some(rl.n);
+                rl.n += 4;
+            }
+            let tex = tex_units(&samplers, &rl);
+            let f = FragCtx {
+                depth_test: g.next() % 4 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: match g.next() % 4 {
+                    0 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    _ => [true; 4],
+                },
+                color_sum: false,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: g.next() % 8 == 0,
+                samples: g.next() % 2 == 0,
+                stipple: (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32)),
+                ops: None,
+                tex,
+                crossbar: crossbar(&tex),
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags: [0, F_LINE][(g.next() % 2) as usize],
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
+            };
+            // 1/w, the colour (around [0, 1]) and coordinates spanning a few repeats, with
+            // derivatives large and small so that λ crosses the levels.
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for j in 0..rl.n {
+                let d = if j < 4 {
+                    1e-2
+                } else {
+                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+                };
+                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let two = g.next() % 4 == 0;
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let y = ty + (g.next() % TILE as u64) as i32;
+            let x0 = tx + (g.next() % TILE as u64) as i32;
+            let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) = (
+                    color.clone(),
+                    color.clone(),
+                    depth.clone(),
+                    vec![0u8; TILE * TILE],
+                );
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                } else {
+                    let (ox, oy) = (p.bbox[0], p.bbox[1]);
+                    let fy = (y - oy) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let live = match f.stipple {
+                        Some(rows) if p.flags & F_LINE == 0 => stipple_mask(&rows, x0, y),
+                        _ => u64::MAX,
+                    };
+                    let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+                    let mut v = vec![0.0f32; rl.n];
+                    for x in x0..=x1 {
+                        if live & (1 << (x - x0)) == 0 {
+                            continue;
+                        }
+                        let i = ((y - ty) as usize) * TILE + (x - tx) as usize;
+                        let fx = (x - ox) as f32;
+                        if !f.depth(&mut bufs, i, f64::from(zrow + p.z[1] * fx)) {
+                            continue;
+                        }
+                        if f.samples {
+                            bufs.samples += 1;
+                        }
+                        let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+                        for (j, vj) in v.iter_mut().enumerate() {
+                            let o = 3 + 3 * j;
+                            *vj = (pl(o) + pl(o + 1) * fx + pl(o + 2) * fy) * inv;
+                        }
+                        let lambda = f.quad_lambda(&planes, x, y, ox, oy);
+                        let c = f.color(&p, &v, lambda);
+                        f.write(&mut bufs, i, c);
+                    }
+                }
+                let samples = bufs.samples;
+                (c, c2, d, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(
+                got == want,
+                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
+        }
+    }
 
     #[test]
     fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
@@ -1049,10 +1237,11 @@ mod tests {
                 depth_test: g.next() % 4 != 0,
                 depth_func: g.pick(&FUNCS),
                 depth_mask: g.next() % 2 == 0,
-                color_mask: if g.next() % 3 == 0 {
-                    std::array::from_fn(|_| g.next() % 2 == 0)
-                } else {
-                    [true; 4]
+                // All false now and then: `full_span`'s route without a colour write.
+                color_mask: match g.next() % 6 {
+                    0 | 1 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    2 => [false; 4],
+                    _ => [true; 4],
                 },
                 color_sum: spec && g.next() % 4 != 0,
                 rl,

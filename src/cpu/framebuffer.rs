@@ -637,41 +637,90 @@ impl Framebuffer {
         targets: Targets,
         color_mask: [bool; 4],
     ) {
-        let [x0, y0, x1, y1] = rect;
+        let (w, h) = (self.width as i32, self.height as i32);
+        let rect = [
+            rect[0].max(0),
+            rect[1].max(0),
+            rect[2].min(w - 1),
+            rect[3].min(h - 1),
+        ];
+        if rect[0] > rect[2] || rect[1] > rect[3] {
+            return;
+        }
         self.materialize_all();
         let Some(mut accum) = self.accum.take() else {
             return;
         };
-        for y in y0.max(0)..=y1.min(self.height as i32 - 1) {
-            for x in x0.max(0)..=x1.min(self.width as i32 - 1) {
-                let i = self.index(x as usize, y as usize);
-                let Some(acc) = accum.get_mut(i) else {
-                    continue;
-                };
-                if op == crate::gl::RETURN {
-                    let px = super::accum::ret(value, *acc);
-                    let put = |buf: &mut [[u8; 4]]| {
-                        if let Some(d) = buf.get_mut(i) {
-                            for k in 0..4 {
-                                if color_mask[k] {
-                                    d[k] = px[k];
-                                }
-                            }
+        let tiles_x = self.tiles_x;
+        let n = accum.len() / TILE_PIXELS;
+        // Tiles are independent: a rectangle of more than two tiles' pixels is done on the
+        // pool, tile by tile, each tile's rows as runs of contiguous pixels.
+        let area = i64::from(rect[2] - rect[0] + 1) * i64::from(rect[3] - rect[1] + 1);
+        let parallel = area > 2 * TILE_PIXELS as i64;
+        let reached = |t: usize| tile_runs(t, tiles_x, rect).next().is_some();
+        if op == crate::gl::RETURN {
+            let mains = tile_slices(targets.main.then_some(&mut self.color), n);
+            let fronts = match targets.front {
+                true => tile_slices(self.front.as_mut(), n),
+                false => tile_slices(None, n),
+            };
+            let jobs: Vec<_> = accum
+                .chunks(TILE_PIXELS)
+                .zip(mains)
+                .zip(fronts)
+                .enumerate()
+                .filter(|(t, _)| reached(*t))
+                .collect();
+            type Job<'a> = (
+                usize,
+                (
+                    (&'a [[i16; 4]], Option<&'a mut [[u8; 4]]>),
+                    Option<&'a mut [[u8; 4]]>,
+                ),
+            );
+            let work = |(t, ((acc, mut main), mut front)): Job| {
+                for r in tile_runs(t, tiles_x, rect) {
+                    let Some(a) = acc.get(r.clone()) else {
+                        continue;
+                    };
+                    for dst in [main.as_deref_mut(), front.as_deref_mut()]
+                        .into_iter()
+                        .flatten()
+                    {
+                        if let Some(d) = dst.get_mut(r.clone()) {
+                            super::accum::return_run(value, a, d.as_flattened_mut(), color_mask);
                         }
-                    };
-                    if targets.main {
-                        put(&mut self.color);
                     }
-                    if let (true, Some(f)) = (targets.front, self.front.as_mut()) {
-                        put(f);
-                    }
-                } else {
-                    let c = match super::accum::reads_color(op) {
-                        true => self.buffer(read).get(i).copied().unwrap_or([0; 4]),
-                        false => [0; 4],
-                    };
-                    super::accum::apply(op, value, acc, c);
                 }
+            };
+            match parallel {
+                true => jobs.into_par_iter().for_each(work),
+                false => jobs.into_iter().for_each(work),
+            }
+        } else {
+            let reads = super::accum::reads_color(op);
+            let src = self.buffer(read);
+            let jobs: Vec<_> = accum
+                .chunks_mut(TILE_PIXELS)
+                .zip(src.chunks(TILE_PIXELS))
+                .enumerate()
+                .filter(|(t, _)| reached(*t))
+                .collect();
+            type Job<'a> = (usize, (&'a mut [[i16; 4]], &'a [[u8; 4]]));
+            let work = |(t, (acc, color)): Job| {
+                for r in tile_runs(t, tiles_x, rect) {
+                    let c = match reads {
+                        true => color.get(r.clone()).unwrap_or(&[]),
+                        false => &[],
+                    };
+                    if let Some(a) = acc.get_mut(r) {
+                        super::accum::apply_run(op, value, a, c.as_flattened());
+                    }
+                }
+            };
+            match parallel {
+                true => jobs.into_par_iter().for_each(work),
+                false => jobs.into_iter().for_each(work),
             }
         }
         self.accum = Some(accum);
@@ -695,6 +744,24 @@ impl Framebuffer {
         }
         self.accum = Some(accum);
     }
+}
+
+/// The runs of tile `t`'s pixels (indices within the tile, one per row) inside the inclusive
+/// rectangle `rect` (already inside the framebuffer); none when the tile is outside it.
+fn tile_runs(
+    t: usize,
+    tiles_x: usize,
+    [x0, y0, x1, y1]: [i32; 4],
+) -> impl Iterator<Item = std::ops::Range<usize>> {
+    let (tx, ty) = ((t % tiles_x * TILE) as i32, (t / tiles_x * TILE) as i32);
+    let (lo, hi) = (x0.max(tx), x1.min(tx + TILE as i32 - 1));
+    let rows = y0.max(ty)..=y1.min(ty + TILE as i32 - 1);
+    // No rows when the rectangle misses the tile's columns.
+    let rows = (lo <= hi).then_some(rows).into_iter().flatten();
+    rows.map(move |y| {
+        let row = (y - ty) as usize * TILE;
+        row + (lo - tx) as usize..row + (hi - tx) as usize + 1
+    })
 }
 
 /// `buf` cut into its `n` tiles, or `n` times `None` (a buffer not written): what the tile loops

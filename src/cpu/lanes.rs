@@ -20,7 +20,26 @@ pub const LANES: usize = 8;
 pub(super) fn lane_x(x: i32) -> [f32; LANES] {
     const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
     let b = x as f32;
-    IOTA.map(|l| b + l)
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128, _mm_add_ps, _mm_loadu_ps, _mm_set1_ps};
+        // SAFETY: SSE is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 from a
+        // `[f32; 8]` at offsets 0 and 4 (in bounds, no alignment needed); `__m128` has the
+        // layout of `[f32; 4]` and every bit pattern is valid for both. (LLVM kept the
+        // `map` below as eight scalar additions.)
+        unsafe {
+            let bv = _mm_set1_ps(b);
+            let lo = _mm_add_ps(bv, _mm_loadu_ps(IOTA.as_ptr()));
+            let hi = _mm_add_ps(bv, _mm_loadu_ps(IOTA.as_ptr().add(4)));
+            let lo = std::mem::transmute::<__m128, [f32; 4]>(lo);
+            let hi = std::mem::transmute::<__m128, [f32; 4]>(hi);
+            [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        IOTA.map(|l| b + l)
+    }
 }
 
 /// `1.0 / d` on every lane. LLVM keeps this division scalar (its cost model for SSE2); the
@@ -61,8 +80,8 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{
-            __m128i, _mm_add_ps, _mm_and_si128, _mm_castps_si128, _mm_loadu_ps, _mm_max_ps,
-            _mm_min_ps, _mm_mul_ps, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi32, _mm_set1_ps,
+            _mm_add_ps, _mm_and_si128, _mm_castps_si128, _mm_loadu_ps, _mm_max_ps, _mm_min_ps,
+            _mm_mul_ps, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi32, _mm_set1_ps,
             _mm_setzero_ps,
         };
         // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 from a
@@ -79,8 +98,7 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
             let (lo, hi) = (conv(c.as_ptr()), conv(c.as_ptr().add(4)));
             // Every value is in 0..=255: the signed packs keep it.
             let w = _mm_packs_epi32(lo, hi);
-            let v = std::mem::transmute::<__m128i, [u8; 16]>(_mm_packus_epi16(w, w));
-            [v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]]
+            low8(_mm_packus_epi16(w, w))
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
@@ -95,6 +113,18 @@ pub(super) fn unorm8_lanes(c: [f32; LANES]) -> [u8; LANES] {
         }
         out
     }
+}
+
+/// The low eight bytes of `x` (one `movq` store; taking them from a `[u8; 16]` made LLVM
+/// assemble the array byte by byte through general registers).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn low8(x: std::arch::x86_64::__m128i) -> [u8; LANES] {
+    let mut o = [0u8; LANES];
+    // SAFETY: SSE2 is part of the x86-64 baseline; the 8-byte store writes exactly `o`'s
+    // eight bytes (no alignment needed).
+    unsafe { std::arch::x86_64::_mm_storel_epi64(o.as_mut_ptr().cast(), x) };
+    o
 }
 
 /// The smooth primary colour of a span (the fast path of `FragCtx::tri_span`): for fragment k,
@@ -194,40 +224,35 @@ pub(super) fn depth_lanes(z: [f32; LANES]) -> [u32; LANES] {
     }
 }
 
-/// The depth test and write of a span (`FragCtx::depth_span`): fragment k (bit k of `live`,
-/// k < `row.len()` ≤ 64) has z = `zrow` + `dz`·(`fx0` + k) in single precision; it survives
-/// when `pass(d, stored)`, and then `d` is stored if `write`. Returns the survivors' mask.
+/// The depth test and write of a span (`FragCtx::depth_mask_span`): fragment k (bit k of
+/// `live`, k < `n` ≤ 64, `n` ≤ `row.len()`) has z = `zrow` + `dz`·(`fx0` + k) in single
+/// precision; it survives when `d func stored` (DepthFunc `func`), and then `d` is stored if
+/// `write`. Returns the survivors' mask. Each group of eight goes through
+/// `oplanes::depth_test` (SSE2 compares and a select when eight values of `row` follow; `row`
+/// may run past the span, and its values outside `live` are kept).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 pub fn depth_span(
     row: &mut [u32],
+    n: usize,
     zrow: f32,
     dz: f32,
     fx0: i32,
     live: u64,
     write: bool,
-    pass: impl Fn(u32, u32) -> bool,
+    func: u32,
 ) -> u64 {
-    let n = row.len().min(64);
+    let n = n.min(64).min(row.len());
     let mut mask = 0u64;
     let mut c = 0;
     while c < n {
-        let m = (live >> c) & ((1 << LANES) - 1);
+        let m = ((live >> c) & ((1 << LANES) - 1)) as u8;
         if m != 0 {
             let fx = lane_x(fx0.wrapping_add(c as i32));
-            let mut z = [0.0f32; LANES];
-            for l in 0..LANES {
-                z[l] = zrow + dz * fx[l];
-            }
-            let d = depth_lanes(z);
+            let d = depth_lanes(lin_lanes(zrow, dz, &fx));
             if let Some(out) = row.get_mut(c..) {
-                for (l, stored) in out.iter_mut().take(LANES).enumerate() {
-                    if m & (1 << l) != 0 && pass(d[l], *stored) {
-                        if write {
-                            *stored = d[l];
-                        }
-                        mask |= 1 << (c + l);
-                    }
-                }
+                let got = super::oplanes::depth_test(func, write, out, d, m);
+                mask |= u64::from(got) << c;
             }
         }
         c += LANES;
@@ -270,7 +295,7 @@ fn plane_lanes(a: f32, dx: f32, yt: f32, fx: &[f32; LANES]) -> [f32; LANES] {
 
 /// `a + dx·fx[l]` on every lane (`mulps`, `addps` on x86-64).
 #[inline(always)]
-fn lin_lanes(a: f32, dx: f32, fx: &[f32; LANES]) -> [f32; LANES] {
+pub(super) fn lin_lanes(a: f32, dx: f32, fx: &[f32; LANES]) -> [f32; LANES] {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{__m128, _mm_add_ps, _mm_loadu_ps, _mm_mul_ps, _mm_set1_ps};
@@ -324,6 +349,10 @@ fn mul_lanes(u: &[f32; LANES], v: &[f32; LANES]) -> [f32; LANES] {
 /// `out[j]` receives it, exactly the scalar expression's bits.
 #[inline(always)]
 pub fn varyings(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32; LANES]]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(pl) = planes.get(..3 + 3 * out.len()) {
+        return varyings_sse(pl, nflat, fx0, fy, out);
+    }
     let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
     let fx = lane_x(fx0);
     // `pl(2) * fy` is the same product in every lane.
@@ -340,6 +369,147 @@ pub fn varyings(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
     }
 }
 
+/// `varyings` when `planes` holds every plane (`3 + 3·out.len()` floats): the same
+/// instructions as `plane_lanes`, `recip` and `mul_lanes` (`mulps`, `addps`, `divps`), with
+/// the lanes kept in registers and each varying stored straight into `out` (the array form
+/// copied every intermediate through memory: ≈340 instructions a group of eight with eight
+/// varyings).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn varyings_sse(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32; LANES]]) {
+    use std::arch::x86_64::{
+        _mm_add_ps, _mm_div_ps, _mm_loadu_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
+    };
+    const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+    // SAFETY: SSE is part of the x86-64 baseline; the loads read four f32 at offsets 0 and 4
+    // of the eight-float `IOTA`, the stores write four f32 at offsets 0 and 4 of a
+    // `[f32; 8]` (in bounds, no alignment needed).
+    unsafe {
+        let b = _mm_set1_ps(fx0 as f32);
+        let (xlo, xhi) = (
+            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr())),
+            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr().add(4))),
+        );
+        let plane = |a: f32, dx: f32, yt: f32| {
+            let (a, dx, yt) = (_mm_set1_ps(a), _mm_set1_ps(dx), _mm_set1_ps(yt));
+            (
+                _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xlo)), yt),
+                _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xhi)), yt),
+            )
+        };
+        let (wlo, whi) = match planes {
+            [w0, wx, wy, ..] => plane(*w0, *wx, *wy * fy),
+            _ => return,
+        };
+        let one = _mm_set1_ps(1.0);
+        let (ilo, ihi) = (_mm_div_ps(one, wlo), _mm_div_ps(one, whi));
+        let rest = planes.get(3..).unwrap_or_default();
+        for (j, (o, p)) in out.iter_mut().zip(rest.chunks_exact(3)).enumerate() {
+            let (mut lo, mut hi) = plane(p[0], p[1], p[2] * fy);
+            if j >= nflat {
+                lo = _mm_mul_ps(lo, ilo);
+                hi = _mm_mul_ps(hi, ihi);
+            }
+            _mm_storeu_ps(o.as_mut_ptr(), lo);
+            _mm_storeu_ps(o.as_mut_ptr().add(4), hi);
+        }
+    }
+}
+
+/// The eight lanes' colours as pixel-major vectors: `out[l]` = (r[l], g[l], b[l], a[l]) (SSE
+/// unpacks and moves on x86-64, a 4x4 transposition per half; only moves, so every bit is
+/// kept).
+#[inline(always)]
+pub(super) fn to_pixels(c: [&[f32; LANES]; 4]) -> [glam::Vec4; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128, _mm_loadu_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_unpackhi_ps, _mm_unpacklo_ps,
+        };
+        let [r, g, b, a] = c;
+        let v = |x: __m128| {
+            // SAFETY: `__m128` has the layout of `[f32; 4]`; every bit pattern is valid.
+            glam::Vec4::from_array(unsafe { std::mem::transmute::<__m128, [f32; 4]>(x) })
+        };
+        let half = |k: usize| {
+            // SAFETY: SSE is part of the x86-64 baseline; each load reads four f32 at offset
+            // 0 or 4 of a `[f32; 8]` (in bounds, no alignment needed).
+            let (t0, t1, t2, t3) = unsafe {
+                let (r, g) = (
+                    _mm_loadu_ps(r.as_ptr().add(k)),
+                    _mm_loadu_ps(g.as_ptr().add(k)),
+                );
+                let (b, a) = (
+                    _mm_loadu_ps(b.as_ptr().add(k)),
+                    _mm_loadu_ps(a.as_ptr().add(k)),
+                );
+                (
+                    _mm_unpacklo_ps(r, g),
+                    _mm_unpacklo_ps(b, a),
+                    _mm_unpackhi_ps(r, g),
+                    _mm_unpackhi_ps(b, a),
+                )
+            };
+            // SAFETY: as above (register moves only).
+            unsafe {
+                [
+                    v(_mm_movelh_ps(t0, t1)),
+                    v(_mm_movehl_ps(t1, t0)),
+                    v(_mm_movelh_ps(t2, t3)),
+                    v(_mm_movehl_ps(t3, t2)),
+                ]
+            }
+        };
+        let (lo, hi) = (half(0), half(4));
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let [r, g, b, a] = c;
+        std::array::from_fn(|l| glam::Vec4::new(r[l], g[l], b[l], a[l]))
+    }
+}
+
+/// The inverse of `to_pixels`: channel-major lanes from eight pixel-major colours.
+#[inline(always)]
+pub(super) fn from_pixels(p: &[glam::Vec4; LANES]) -> [[f32; LANES]; 4] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128, _mm_loadu_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_unpackhi_ps, _mm_unpacklo_ps,
+        };
+        let a = |x: __m128| {
+            // SAFETY: `__m128` has the layout of `[f32; 4]`; every bit pattern is valid.
+            unsafe { std::mem::transmute::<__m128, [f32; 4]>(x) }
+        };
+        let half = |k: usize| {
+            let q: [[f32; 4]; 4] = std::array::from_fn(|i| p[k + i].to_array());
+            // SAFETY: SSE is part of the x86-64 baseline; each load reads a `[f32; 4]`.
+            unsafe {
+                let (p0, p1) = (_mm_loadu_ps(q[0].as_ptr()), _mm_loadu_ps(q[1].as_ptr()));
+                let (p2, p3) = (_mm_loadu_ps(q[2].as_ptr()), _mm_loadu_ps(q[3].as_ptr()));
+                let (t0, t1) = (_mm_unpacklo_ps(p0, p1), _mm_unpacklo_ps(p2, p3));
+                let (t2, t3) = (_mm_unpackhi_ps(p0, p1), _mm_unpackhi_ps(p2, p3));
+                [
+                    a(_mm_movelh_ps(t0, t1)),
+                    a(_mm_movehl_ps(t1, t0)),
+                    a(_mm_movelh_ps(t2, t3)),
+                    a(_mm_movehl_ps(t3, t2)),
+                ]
+            }
+        };
+        let (lo, hi) = (half(0), half(4));
+        std::array::from_fn(|k| {
+            let (l, h) = (lo[k], hi[k]);
+            [l[0], l[1], l[2], l[3], h[0], h[1], h[2], h[3]]
+        })
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        std::array::from_fn(|k| std::array::from_fn(|l| p[l].to_array()[k]))
+    }
+}
+
 /// Stores the unorm8 colour (`framebuffer::unorm8` of each channel of `c`, channel-major) of
 /// every lane whose bit is set in `m` into `dst[l]`: a colour write with ColorMask all true.
 #[inline(always)]
@@ -350,11 +520,65 @@ pub fn store_rgba(dst: &mut [[u8; 4]], m: u64, c: &[[f32; LANES]; 4]) {
         unorm8_lanes(c[2]),
         unorm8_lanes(c[3]),
     );
-    for (l, px) in dst.iter_mut().take(LANES).enumerate() {
-        if m & (1 << l) != 0 {
-            *px = [r[l], g[l], b[l], a[l]];
+    put(dst, m as u8, &[r, g, b, a]);
+}
+
+/// Stores the unorm8 colour of each pixel-major colour `c[l]` (`framebuffer::unorm8` of each
+/// channel) into `dst[l]` for the lanes of `m`: `store_rgba` without going through
+/// channel-major lanes. On x86-64 with a whole group in `dst`, each colour is converted as
+/// `unorm8_lanes` converts a lane (`maxps`, `minps`, `mulps`, `addps`, mask), the packs give
+/// the RGBA8 pixels in memory order, and one select and two 16-byte stores write the group
+/// (unwritten pixels stored back unchanged; the tile belongs to one thread).
+#[inline(always)]
+pub fn store_pixels(dst: &mut [[u8; 4]], m: u8, c: &[glam::Vec4; LANES]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(px) = dst.get_mut(..LANES) {
+        use std::arch::x86_64::{
+            __m128i, _mm_add_ps, _mm_and_si128, _mm_andnot_si128, _mm_castps_si128,
+            _mm_cmpeq_epi32, _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps, _mm_min_ps, _mm_mul_ps,
+            _mm_or_si128, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi32, _mm_set1_ps,
+            _mm_set_epi32, _mm_setzero_ps, _mm_storeu_si128,
+        };
+        // SAFETY: SSE2 is part of the x86-64 baseline; each `_mm_loadu_ps` reads a `[f32; 4]`;
+        // `px` holds eight `[u8; 4]`, 32 contiguous bytes, read and written 16 bytes at
+        // offsets 0 and 16 (in bounds, no alignment needed); `__m128i` is plain bits.
+        unsafe {
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+            let low = _mm_set1_epi32(0xFF);
+            let conv = |v: &glam::Vec4| {
+                let a = v.to_array();
+                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(a.as_ptr()), zero), one);
+                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
+            };
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let p = px.as_mut_ptr().cast::<__m128i>();
+            for h in 0..2 {
+                let q = &c[4 * h..4 * h + 4];
+                // Every value is in 0..=255: the signed packs keep it.
+                let w01 = _mm_packs_epi32(conv(&q[0]), conv(&q[1]));
+                let w23 = _mm_packs_epi32(conv(&q[2]), conv(&q[3]));
+                let v = _mm_packus_epi16(w01, w23);
+                let lv = _mm_set1_epi32(i32::from(m >> (4 * h)));
+                let on = _mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits);
+                let old = _mm_loadu_si128(p.add(h));
+                let out = _mm_or_si128(_mm_and_si128(on, v), _mm_andnot_si128(on, old));
+                _mm_storeu_si128(p.add(h), out);
+            }
         }
+        return;
     }
+    let ch = |k: usize| -> [f32; LANES] { std::array::from_fn(|l| c[l].to_array()[k]) };
+    put(
+        dst,
+        m,
+        &[
+            unorm8_lanes(ch(0)),
+            unorm8_lanes(ch(1)),
+            unorm8_lanes(ch(2)),
+            unorm8_lanes(ch(3)),
+        ],
+    );
 }
 
 /// Stores lane l of the channel-major bytes `c` into `dst[l]` for the lanes of `m` (all four
@@ -370,6 +594,7 @@ mod tests {
     use super::*;
     use crate::cpu::framebuffer::{depth_unorm, unorm8};
     use crate::cpu::testgen::Gen;
+    use crate::gl;
 
     #[test]
     fn smooth_rgba_is_the_scalar_expression_bit_for_bit() {
@@ -436,20 +661,43 @@ mod tests {
             let zrow = g.float();
             let dz = g.float() * 1e-3;
             let fx0 = (g.next() % 900) as i32 - 100;
-            let live = g.next() | g.next() << 40;
             let write = g.next() % 2 == 0;
-            let stored: Vec<u32> = (0..n).map(|_| (g.next() % (1 << 24)) as u32).collect();
+            let func = g.pick(&[
+                gl::NEVER,
+                gl::LESS,
+                gl::EQUAL,
+                gl::LEQUAL,
+                gl::GREATER,
+                gl::NOTEQUAL,
+                gl::GEQUAL,
+                gl::ALWAYS,
+            ]);
+            // The row runs on past the span now and then (as a tile's row does); only the
+            // live fragments of the span may be tested and written.
+            let len = n + (g.next() % 3) as usize * (g.next() % 20) as usize;
+            let all = u64::MAX >> (64 - n);
+            let live = match g.next() % 3 {
+                0 => all,
+                _ => (g.next() | g.next() << 40) & all,
+            };
+            // Few distinct depths so that EQUAL passes now and then.
+            let stored: Vec<u32> = (0..len)
+                .map(|_| match g.next() % 3 {
+                    0 => (g.next() % 4) as u32 * (DEPTH_MAX / 3),
+                    _ => (g.next() % (1 << 24)) as u32,
+                })
+                .collect();
             let mut got = stored.clone();
-            let mask = depth_span(&mut got, zrow, dz, fx0, live, write, |d, s| d < s);
+            let mask = depth_span(&mut got, n, zrow, dz, fx0, live, write, func);
             let mut want = stored.clone();
             let mut want_mask = 0u64;
-            for (k, s) in want.iter_mut().enumerate() {
+            for (k, s) in want.iter_mut().enumerate().take(n) {
                 if live & (1 << k) == 0 {
                     continue;
                 }
                 let z = zrow + dz * (fx0 + k as i32) as f32;
                 let d = depth_unorm(f64::from(z));
-                if d < *s {
+                if crate::cpu::fragops::compare(func, d, *s) {
                     if write {
                         *s = d;
                     }
@@ -497,11 +745,51 @@ mod tests {
     }
 
     #[test]
+    fn to_pixels_and_back_keep_every_bit() {
+        let mut g = Gen(29);
+        for _ in 0..500 {
+            let c: [[f32; LANES]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| g.float()));
+            let p = to_pixels([&c[0], &c[1], &c[2], &c[3]]);
+            for (l, px) in p.iter().enumerate() {
+                let want = [c[0][l], c[1][l], c[2][l], c[3][l]].map(f32::to_bits);
+                assert_eq!(px.to_array().map(f32::to_bits), want, "lane {l}");
+            }
+            let back = from_pixels(&p);
+            assert_eq!(
+                back.map(|ch| ch.map(f32::to_bits)),
+                c.map(|ch| ch.map(f32::to_bits))
+            );
+        }
+    }
+
+    #[test]
+    fn store_pixels_is_unorm8_of_each_channel() {
+        let mut g = Gen(31);
+        for _ in 0..3000 {
+            let c: [glam::Vec4; LANES] = std::array::from_fn(|_| {
+                glam::Vec4::new(g.float(), g.float(), g.float(), g.float())
+            });
+            let n = 1 + (g.next() % 12) as usize;
+            let m = g.next() as u8;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let mut got = row0.clone();
+            store_pixels(&mut got, m, &c);
+            for (l, px) in got.iter().enumerate() {
+                let want = match l < LANES && m & (1 << l) != 0 {
+                    true => c[l].to_array().map(unorm8),
+                    false => row0[l],
+                };
+                assert_eq!(*px, want, "l {l} {:?}", c[l.min(LANES - 1)]);
+            }
+        }
+    }
+
+    #[test]
     fn store_rgba_is_unorm8_of_each_lane() {
         let mut g = Gen(17);
         for _ in 0..2000 {
             let c: [[f32; LANES]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| g.float()));
-            let n = 1 + (g.next() % 8) as usize;
+            let n = 1 + (g.next() % 12) as usize;
             let m = g.next() & 0xff;
             let mut got = vec![[9u8; 4]; n];
             store_rgba(&mut got, m, &c);

@@ -343,17 +343,22 @@ impl Sampler {
         let [s, t, r, q] = coords;
         let rq = recip_lanes(*q);
         let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        let mut inv = [0.0f32; LANES];
         for l in 0..LANES {
-            let inv = if q[l] != 0.0 { rq[l] } else { 0.0 };
-            ss[l] = s[l] * inv;
-            tt[l] = t[l] * inv;
-            rr[l] = r[l] * inv;
+            inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
+            ss[l] = s[l] * inv[l];
+            tt[l] = t[l] * inv[l];
+        }
+        // r/q is read by the depth comparison only.
+        if self.compare.is_some() {
+            for l in 0..LANES {
+                rr[l] = r[l] * inv[l];
+            }
         }
         let mut out = [[0.0f32; 4]; LANES];
-        let base = [self.base_level; LANES];
         match self.route {
-            Route::Nearest => self.pass(false, &base, &ss, &tt, &rr, m, &mut out),
-            Route::Linear => self.pass(true, &base, &ss, &tt, &rr, m, &mut out),
+            Route::Nearest => self.pass_level(false, self.base_level, &ss, &tt, &rr, m, &mut out),
+            Route::Linear => self.pass_level(true, self.base_level, &ss, &tt, &rr, m, &mut out),
             Route::Lod => self.lod_lanes(&ss, &tt, &rr, lambda, m, &mut out),
         }
         out
@@ -409,9 +414,79 @@ impl Sampler {
         }
     }
 
+    /// [`Sampler::select`] for eight λ at once: the same steps as lane loops with selects
+    /// (the minification filter's arm chosen once for the group, the floors by
+    /// [`ifloor_lanes`]), each lane exactly the scalar choice. Returns the lanes' levels, the
+    /// lanes that filter LINEAR (bit l) and the second-level weights.
+    #[inline(always)]
+    fn select_lanes(&self, lambda: &[f32; LANES]) -> ([i32; LANES], u8, [f32; LANES]) {
+        // `select`'s bias, NaN and bounds, then the magnification lanes (λ <= c).
+        let mut lam = [0.0f32; LANES];
+        let mut mag = [false; LANES];
+        for l in 0..LANES {
+            let x = lambda[l] + self.bias;
+            let x = if x.is_nan() { 0.0 } else { x };
+            let x = x.min(self.max_lod).max(self.min_lod);
+            lam[l] = x;
+            mag[l] = x <= self.c;
+        }
+        let (base, last) = (self.base_level, self.last);
+        let span = (self.last - self.base_level) as f32;
+        let span_i = last.wrapping_sub(base);
+        let mut lv = [base; LANES];
+        let mut f = [0.0f32; LANES];
+        let min_lin = match self.min {
+            gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+                // d = ceil(x) - 1 capped at span for λ > 1/2 (x = λ + 1/2 capped at span + 2,
+                // at least 1 there), else 0; x taken as at least 0 on the other lanes so that
+                // the floor is the truncation everywhere, and the ceil the truncation plus one
+                // where it fell short, in integers (the values are exact small integers).
+                let mut x = [0.0f32; LANES];
+                for l in 0..LANES {
+                    x[l] = (lam[l] + 0.5).min(span + 2.0).max(0.0);
+                }
+                let tr = ifloor_lanes(&x);
+                for l in 0..LANES {
+                    let c = tr[l] + i32::from((tr[l] as f32) < x[l]);
+                    let d = (c - 1).min(span_i);
+                    lv[l] = base.wrapping_add(if lam[l] <= 0.5 { 0 } else { d });
+                }
+                lin(self.min) == gl::LINEAR
+            }
+            gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+                // The last level from λ >= span, else d1 = floor(λ) with 0 <= c < λ < span
+                // (the truncation of λ clamped to [0, span], exact) and f = λ - d1.
+                let mut x = [0.0f32; LANES];
+                for l in 0..LANES {
+                    x[l] = lam[l].max(0.0).min(span);
+                }
+                let d1 = ifloor_lanes(&x);
+                for l in 0..LANES {
+                    let top = lam[l] >= span;
+                    lv[l] = if top { last } else { base.wrapping_add(d1[l]) };
+                    f[l] = if top { 0.0 } else { lam[l] - d1[l] as f32 };
+                }
+                lin(self.min) == gl::LINEAR
+            }
+            m => m != gl::NEAREST,
+        };
+        let mag_lin = self.mag != gl::NEAREST;
+        let mut linear = 0u8;
+        for l in 0..LANES {
+            lv[l] = if mag[l] { base } else { lv[l] };
+            f[l] = if mag[l] { 0.0 } else { f[l] };
+            linear |= u8::from(if mag[l] { mag_lin } else { min_lin }) << l;
+        }
+        (lv, linear, f)
+    }
+
     /// `sample_face` for the lanes of `m` (face 0, 2D): each lane's level(s), filter and
-    /// weight from [`Sampler::select`], a pass per filter over the lanes using it (each lane
-    /// on its own level), then the second level of the trilinear lanes and the blend.
+    /// weight from [`Sampler::select_lanes`]. When every lane of `m` is on one level with one
+    /// filter (the common case: λ is per quad and neighbouring quads nearly always pick the
+    /// same level), one pass on that level with its size and texels as scalars
+    /// ([`Sampler::pass_level`]), then the trilinear lanes' next level and the blend;
+    /// otherwise a pass per filter over the lanes using it (each lane on its own level), then
+    /// the second level of the trilinear lanes and the blend.
     #[inline]
     fn lod_lanes(
         &self,
@@ -422,23 +497,31 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let mut la = [self.base_level; LANES];
-        let mut lb = [self.base_level; LANES];
-        let mut f = [0.0f32; LANES];
-        let (mut linear, mut second) = (0u8, 0u8);
+        let (la, linear, f) = self.select_lanes(lambda);
+        let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
+        let (mut second, mut same) = (0u8, 0u8);
         for l in 0..LANES {
-            let (lv, lin, w) = self.select(lambda[l]);
-            la[l] = lv;
-            f[l] = w;
-            linear |= u8::from(lin) << l;
-            second |= u8::from(w != 0.0) << l;
+            second |= u8::from(f[l] != 0.0) << l;
+            same |= u8::from(la[l] == first) << l;
         }
         let (linear, second) = (linear & m, second & m);
+        if same & m == m && (linear == 0 || linear == m) {
+            let linear = linear != 0;
+            self.pass_level(linear, first, s, t, r, m, out);
+            if second != 0 {
+                // f ≠ 0 only below `span`: first + 1 is at most `last`.
+                let mut b = [[0.0f32; 4]; LANES];
+                self.pass_level(linear, first.saturating_add(1), s, t, r, second, &mut b);
+                blend_levels(out, &b, &f, second);
+            }
+            return;
+        }
         self.pass(false, &la, s, t, r, m & !linear, out);
         self.pass(true, &la, s, t, r, linear, out);
         if second == 0 {
             return;
         }
+        let mut lb = [self.base_level; LANES];
         for l in 0..LANES {
             if second & (1 << l) != 0 {
                 // f ≠ 0 only below `span`: level + 1 is at most `last`.
@@ -448,11 +531,42 @@ impl Sampler {
         let mut b = [[0.0f32; 4]; LANES];
         self.pass(false, &lb, s, t, r, second & !linear, &mut b);
         self.pass(true, &lb, s, t, r, second & linear, &mut b);
-        for l in 0..LANES {
-            if second & (1 << l) != 0 {
-                let (a, b, f) = (out[l], b[l], f[l]);
-                out[l] = std::array::from_fn(|k| a[k] * (1.0 - f) + b[k] * f);
+        blend_levels(out, &b, &f, second);
+    }
+
+    /// NEAREST (`linear` false) or LINEAR on a 2D texture for the lanes of `m`, every lane on
+    /// level `level`: its texels and size looked up once and passed on as scalars. A missing
+    /// level gives (0, 0, 0, 0), as `nearest` and `linear` give.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    fn pass_level(
+        &self,
+        linear: bool,
+        level: i32,
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        if m == 0 {
+            return;
+        }
+        let Some(v) = self.obj.face_level(0, level) else {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = [0.0; 4];
+                }
             }
+            return;
+        };
+        let tx: &[[f32; 4]] = &v.texels;
+        let (w, h) = (v.width, v.height);
+        match self.compare {
+            None => self.pass_on(linear, tx, w, h, s, t, m, out, |_, t| t),
+            Some(func) => self.pass_on(linear, tx, w, h, s, t, m, out, |l, t| {
+                depth_compare(func, r[l], t)
+            }),
         }
     }
 
@@ -461,7 +575,7 @@ impl Sampler {
     /// texel through `fetch`'s depth comparison against the lane's `r` when comparison is on.
     /// A lane whose level is missing gets (0, 0, 0, 0), as `nearest` and `linear` give.
     #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
+    #[inline(never)]
     fn pass(
         &self,
         linear: bool,
@@ -501,25 +615,27 @@ impl Sampler {
             }
         }
         let m = m & have;
-        let views = Views { tx, w, h };
         match self.compare {
-            None => self.pass_on(linear, &views, s, t, m, out, |_, t| t),
-            Some(func) => self.pass_on(linear, &views, s, t, m, out, |l, t| {
+            None => self.pass_on(linear, &tx, &w, &h, s, t, m, out, |_, t| t),
+            Some(func) => self.pass_on(linear, &tx, &w, &h, s, t, m, out, |l, t| {
                 depth_compare(func, r[l], t)
             }),
         }
     }
 
-    /// `pass` on the lanes' levels `v`, `cmp(l, texel)` giving what `fetch` makes of lane l's
-    /// texel (itself, or the comparison result). The wrap indices and weights are computed on
-    /// all eight lanes (integer indices and inside flags, no `Option`), the texels fetched lane
-    /// by lane (a gather) and blended with the weights computed on lanes.
+    /// `pass` on the lanes' levels (texels `tx`, widths `w`, heights `h`: per lane, or one
+    /// level for all), `cmp(l, texel)` giving what `fetch` makes of lane l's texel (itself, or
+    /// the comparison result). The wrap indices and weights are computed on all eight lanes
+    /// (integer indices and inside flags, no `Option`), the texels fetched lane by lane (a
+    /// gather) and blended with the weights computed on lanes.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn pass_on(
+    fn pass_on<X: Texels, A: Axis>(
         &self,
         linear: bool,
-        v: &Views,
+        tx: X,
+        w: A,
+        h: A,
         s: &[f32; LANES],
         t: &[f32; LANES],
         m: u8,
@@ -533,16 +649,15 @@ impl Sampler {
                 l,
                 if inside {
                     // `Level::texel`'s expression.
-                    let k = (j * v.w[l] + i) as usize;
-                    v.tx[l].get(k).copied().unwrap_or([0.0; 4])
+                    tx.get(l, (j * w.at(l) + i) as usize)
                 } else {
                     border
                 },
             )
         };
         if !linear {
-            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, &v.w);
-            let (j, ji) = wrap_nearest_lanes(self.wrap[1], t, &v.h);
+            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, w);
+            let (j, ji) = wrap_nearest_lanes(self.wrap[1], t, h);
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
                     *o = texel(l, i[l], j[l], ii[l] && ji[l]);
@@ -550,8 +665,8 @@ impl Sampler {
             }
             return;
         }
-        let x = wrap_linear_lanes(self.wrap[0], s, &v.w);
-        let y = wrap_linear_lanes(self.wrap[1], t, &v.h);
+        let x = wrap_linear_lanes(self.wrap[0], s, w);
+        let y = wrap_linear_lanes(self.wrap[1], t, h);
         // The four weights of eq. 3.24 as the scalar expression groups them:
         // (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11.
         let mut wt = [[0.0f32; LANES]; 4];
@@ -570,15 +685,15 @@ impl Sampler {
                 if m & (1 << l) == 0 {
                     continue;
                 }
-                let (tx, w) = (v.tx[l], v.w[l]);
-                let (r0, r1) = (y.i0[l] * w, y.i1[l] * w);
-                let at = |k: i32| cmp(l, tx.get(k as usize).copied().unwrap_or([0.0; 4]));
+                let wl = w.at(l);
+                let (r0, r1) = (y.i0[l] * wl, y.i1[l] * wl);
+                let at = |k: i32| cmp(l, tx.get(l, k as usize));
                 let (t00, t10) = (at(r0 + x.i0[l]), at(r0 + x.i1[l]));
                 let (t01, t11) = (at(r1 + x.i0[l]), at(r1 + x.i1[l]));
-                let (w00, w10, w01, w11) = (wt[0][l], wt[1][l], wt[2][l], wt[3][l]);
-                *o = std::array::from_fn(|c| {
-                    w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]
-                });
+                *o = bilinear(
+                    [wt[0][l], wt[1][l], wt[2][l], wt[3][l]],
+                    [t00, t10, t01, t11],
+                );
             }
             return;
         }
@@ -590,8 +705,10 @@ impl Sampler {
             let t10 = texel(l, x.i1[l], y.i0[l], x.in1[l] && y.in0[l]);
             let t01 = texel(l, x.i0[l], y.i1[l], x.in0[l] && y.in1[l]);
             let t11 = texel(l, x.i1[l], y.i1[l], x.in1[l] && y.in1[l]);
-            let (w00, w10, w01, w11) = (wt[0][l], wt[1][l], wt[2][l], wt[3][l]);
-            *o = std::array::from_fn(|c| w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]);
+            *o = bilinear(
+                [wt[0][l], wt[1][l], wt[2][l], wt[3][l]],
+                [t00, t10, t01, t11],
+            );
         }
     }
 
@@ -1149,11 +1266,57 @@ fn fast_log2_lane(x: f32) -> f32 {
     }
 }
 
-/// The levels the lanes of a [`Sampler::pass`] read: lane l's texels and width and height.
-struct Views<'a> {
-    tx: [&'a [[f32; 4]]; LANES],
-    w: [i32; LANES],
-    h: [i32; LANES],
+/// The sizes of one axis for the lanes of a pass: one per lane (`&[i32; LANES]`, lanes on
+/// different levels) or one for all (`i32`, every lane on one level: the compiler then keeps
+/// the size in a register and the wrap loops work on a broadcast value).
+trait Axis: Copy {
+    /// Lane l's number of texels along the axis.
+    fn at(self, l: usize) -> i32;
+    /// Are all of the lanes' sizes (each taken as at least 1) powers of two?
+    fn pow2(self) -> bool;
+}
+
+impl Axis for &[i32; LANES] {
+    #[inline(always)]
+    fn at(self, l: usize) -> i32 {
+        self[l]
+    }
+    #[inline(always)]
+    fn pow2(self) -> bool {
+        all_pow2(self)
+    }
+}
+
+impl Axis for i32 {
+    #[inline(always)]
+    fn at(self, _: usize) -> i32 {
+        self
+    }
+    #[inline(always)]
+    fn pow2(self) -> bool {
+        let n = self.max(1);
+        n & (n - 1) == 0
+    }
+}
+
+/// The texels a pass reads: one level per lane, or one level for all lanes (as [`Axis`]).
+trait Texels: Copy {
+    /// Texel number `k` of lane l's level (`Level::texel`'s fallback (0, 0, 0, 0) beyond it).
+    fn get(self, l: usize, k: usize) -> [f32; 4];
+}
+
+impl Texels for &[&[[f32; 4]]; LANES] {
+    #[inline(always)]
+    fn get(self, l: usize, k: usize) -> [f32; 4] {
+        self[l].get(k).copied().unwrap_or([0.0; 4])
+    }
+}
+
+impl Texels for &[[f32; 4]] {
+    #[inline(always)]
+    fn get(self, _: usize, k: usize) -> [f32; 4] {
+        <[[f32; 4]]>::get(self, k).copied().unwrap_or([0.0; 4])
+    }
 }
 
 /// REPEAT's index `i.rem_euclid(n)` for `n` >= 1, as a mask when the caller knows `n` is a
@@ -1293,30 +1456,26 @@ fn all_pow2(n: &[i32; LANES]) -> bool {
     })
 }
 
-/// [`wrap_nearest_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels: the mode (and
-/// whether every n is a power of two) chosen once, each arm a plain loop over the lanes with
-/// a constant mode, so every lane is the scalar index.
+/// [`wrap_nearest_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis
+/// of `n.at(l)` texels: the mode (and whether every n is a power of two) chosen once, each arm
+/// a plain loop over the lanes with a constant mode, so every lane is the scalar index.
 #[inline(always)]
-fn wrap_nearest_lanes(
-    mode: u32,
-    s: &[f32; LANES],
-    n: &[i32; LANES],
-) -> ([i32; LANES], [bool; LANES]) {
+fn wrap_nearest_lanes<A: Axis>(mode: u32, s: &[f32; LANES], n: A) -> ([i32; LANES], [bool; LANES]) {
     let mut i = [0i32; LANES];
     let mut inside = [true; LANES];
     macro_rules! each {
         ($mode:expr, $p2:expr) => {{
             let mut u = [0.0f32; LANES];
             for l in 0..LANES {
-                u[l] = nearest_u($mode, s[l], n[l]);
+                u[l] = nearest_u($mode, s[l], n.at(l));
             }
             let fl = ifloor_lanes(&u);
             for l in 0..LANES {
-                (i[l], inside[l]) = nearest_finish($mode, fl[l], n[l], $p2);
+                (i[l], inside[l]) = nearest_finish($mode, fl[l], n.at(l), $p2);
             }
         }};
     }
-    match (mode, all_pow2(n)) {
+    match (mode, n.pow2()) {
         (gl::REPEAT, true) => each!(gl::REPEAT, true),
         (gl::REPEAT, false) => each!(gl::REPEAT, false),
         (gl::MIRRORED_REPEAT, _) => each!(gl::MIRRORED_REPEAT, false),
@@ -1336,10 +1495,10 @@ struct LinearLanes {
     in1: [bool; LANES],
 }
 
-/// [`wrap_linear_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of `n[l]` texels, the mode chosen
-/// once (as [`wrap_nearest_lanes`]).
+/// [`wrap_linear_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis of
+/// `n.at(l)` texels, the mode chosen once (as [`wrap_nearest_lanes`]).
 #[inline(always)]
-fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLanes {
+fn wrap_linear_lanes<A: Axis>(mode: u32, s: &[f32; LANES], n: A) -> LinearLanes {
     let mut o = LinearLanes {
         i0: [0; LANES],
         i1: [0; LANES],
@@ -1351,16 +1510,16 @@ fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLan
         ($mode:expr, $p2:expr) => {{
             let mut u = [0.0f32; LANES];
             for l in 0..LANES {
-                u[l] = linear_u($mode, s[l], n[l]);
+                u[l] = linear_u($mode, s[l], n.at(l));
             }
             let fl = ifloor_lanes(&u);
             for l in 0..LANES {
                 (o.i0[l], o.i1[l], o.w[l], o.in0[l], o.in1[l]) =
-                    linear_finish($mode, u[l], fl[l], n[l], $p2);
+                    linear_finish($mode, u[l], fl[l], n.at(l), $p2);
             }
         }};
     }
-    match (mode, all_pow2(n)) {
+    match (mode, n.pow2()) {
         (gl::REPEAT, true) => each!(gl::REPEAT, true),
         (gl::REPEAT, false) => each!(gl::REPEAT, false),
         (gl::MIRRORED_REPEAT, _) => each!(gl::MIRRORED_REPEAT, false),
@@ -1368,6 +1527,31 @@ fn wrap_linear_lanes(mode: u32, s: &[f32; LANES], n: &[i32; LANES]) -> LinearLan
         (gl::CLAMP_TO_BORDER, _) => each!(gl::CLAMP_TO_BORDER, false),
         (gl::CLAMP_TO_EDGE, _) => each!(gl::CLAMP_TO_EDGE, false),
         _ => each!(mode, false),
+    }
+    o
+}
+
+/// The trilinear blend of `sample_face`, (1 - f)·a + f·b per channel, for the lanes of
+/// `second`: `a` in `out`, `b` the next level's texels, f the lanes' weights.
+#[inline(always)]
+fn blend_levels(out: &mut TexelLanes, b: &TexelLanes, f: &[f32; LANES], second: u8) {
+    for l in 0..LANES {
+        if second & (1 << l) != 0 {
+            let (a, b, f) = (out[l], b[l], f[l]);
+            for k in 0..4 {
+                out[l][k] = a[k] * (1.0 - f) + b[k] * f;
+            }
+        }
+    }
+}
+
+/// Eq. 3.24's sum of four texels `t` (t00, t10, t01, t11) with their weights `w`, in the
+/// scalar expression's order, per channel.
+#[inline(always)]
+fn bilinear(w: [f32; 4], t: [[f32; 4]; 4]) -> [f32; 4] {
+    let mut o = [0.0f32; 4];
+    for c in 0..4 {
+        o[c] = w[0] * t[0][c] + w[1] * t[1][c] + w[2] * t[2][c] + w[3] * t[3][c];
     }
     o
 }

@@ -699,18 +699,10 @@ impl GlBackend {
                     vec![0u8; rw * rh * 4]
                 };
                 if let Some(acc) = self.accum.as_ref() {
-                    for j in 0..rh {
-                        for i in 0..rw {
-                            let a = acc.get(at(i, j)).copied().unwrap_or([0; 4]);
-                            let c = accum::ret(value, a);
-                            let o = (j * rw + i) * 4;
-                            if let Some(p) = px.get_mut(o..o + 4) {
-                                for ch in 0..4 {
-                                    if mask[ch] != 0 {
-                                        p[ch] = c[ch];
-                                    }
-                                }
-                            }
+                    let mask = mask.map(|m| m != 0);
+                    for (j, row) in px.chunks_exact_mut(rw * 4).enumerate() {
+                        if let Some(a) = acc.get(at(0, j)..at(rw, j)) {
+                            accum::return_run(value, a, row, mask);
                         }
                     }
                 }
@@ -725,15 +717,10 @@ impl GlBackend {
         };
         if let Some(acc) = self.accum.as_mut() {
             for j in 0..rh {
-                for i in 0..rw {
-                    let o = (j * rw + i) * 4;
-                    let c = match px.get(o..o + 4) {
-                        Some(p) => [p[0], p[1], p[2], p[3]],
-                        None => [0; 4],
-                    };
-                    if let Some(a) = acc.get_mut(at(i, j)) {
-                        accum::apply(op, value, a, c);
-                    }
+                // The row's colour bytes (none for ADD and MULT, which read no colour).
+                let row = px.get(j * rw * 4..(j + 1) * rw * 4).unwrap_or(&[]);
+                if let Some(a) = acc.get_mut(at(0, j)..at(rw, j)) {
+                    accum::apply_run(op, value, a, row);
                 }
             }
         }

@@ -365,6 +365,43 @@ fn lod_log2_is_piecewise_linear_like_llvmpipe() {
 }
 
 #[test]
+fn fast_log2_lane_is_fast_log2() {
+    // Every special class (±0, ±∞, NaN payloads, negatives, subnormals) and random bits: the
+    // lane version gives `fast_log2`'s bits (any NaN for a NaN).
+    let mut next = lcg(23u64);
+    let special = [
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        -f32::INFINITY,
+        f32::NAN,
+        -f32::NAN,
+        f32::from_bits(0x7f80_0001),
+        f32::from_bits(0xffc0_1234),
+        f32::MIN_POSITIVE,
+        f32::MIN_POSITIVE / 8.0,
+        -f32::MIN_POSITIVE / 8.0,
+        f32::MAX,
+        f32::MIN,
+        1.0,
+        -1.0,
+        3.0,
+    ];
+    for k in 0..200_000u32 {
+        let x = match k as usize {
+            i if i < special.len() => special[i],
+            _ => f32::from_bits(next() as u32),
+        };
+        let (a, b) = (fast_log2_lane(x), fast_log2(x));
+        assert!(
+            a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan(),
+            "{x:e} ({:#x}): {a} vs {b}",
+            x.to_bits()
+        );
+    }
+}
+
+#[test]
 fn repeat_index_is_rem_euclid_for_every_size() {
     // The mask of a power-of-two size gives rem_euclid's value for every i32 (extremes too),
     // and other sizes take rem_euclid itself.
@@ -526,13 +563,25 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
                 2 => coord(&mut next),
                 _ => 1.0 + (next() % 100) as f32 * 0.01,
             });
-            let lambda: [f32; LANES] = std::array::from_fn(|_| match next() % 10 {
+            let pick = |next: &mut dyn FnMut() -> u64| match next() % 10 {
                 0 => f32::NAN,
                 1 => f32::INFINITY,
                 2 => -f32::INFINITY,
                 3 => (next() % 16) as f32 * 0.5 - 1.0,
                 _ => (next() % 10_000) as f32 * 1e-3 - 2.0,
-            });
+            };
+            // λ per lane, one λ for the group, or λ per quad (lane pair) near one value: the
+            // last two mostly put every lane on one level (`lod_lanes`' one-level pass), with
+            // or without a second level, and sometimes straddle a level boundary.
+            let lambda: [f32; LANES] = match next() % 3 {
+                0 => std::array::from_fn(|_| pick(&mut next)),
+                1 => [pick(&mut next); LANES],
+                _ => {
+                    let c = (next() % 8) as f32 * 0.5 - 0.75;
+                    let q: [f32; 4] = std::array::from_fn(|_| c + (next() % 100) as f32 * 2e-3);
+                    std::array::from_fn(|l| q[l / 2])
+                }
+            };
             let cf: [Vec4; LANES] = std::array::from_fn(|_| {
                 Vec4::from_array(std::array::from_fn(|_| (next() % 300) as f32 / 256.0))
             });
@@ -653,6 +702,21 @@ fn wrap_lanes_are_the_reference_wraps_for_every_mode() {
         });
         let (i, inside) = wrap_nearest_lanes(mode, &s, &n);
         let lin = wrap_linear_lanes(mode, &s, &n);
+        // One size for all lanes (the one-level pass): the same as the per-lane sizes.
+        let one = [n[0]; LANES];
+        let (i1, inside1) = wrap_nearest_lanes(mode, &s, n[0]);
+        let (i2, inside2) = wrap_nearest_lanes(mode, &s, &one);
+        assert_eq!((i1, inside1), (i2, inside2), "NEAREST {mode:#x} n {}", n[0]);
+        let (a, b) = (
+            wrap_linear_lanes(mode, &s, n[0]),
+            wrap_linear_lanes(mode, &s, &one),
+        );
+        assert_eq!(
+            (a.i0, a.i1, a.in0, a.in1, a.w.map(f32::to_bits)),
+            (b.i0, b.i1, b.in0, b.in1, b.w.map(f32::to_bits)),
+            "LINEAR {mode:#x} n {}",
+            n[0]
+        );
         for l in 0..LANES {
             let want = ref_wrap_nearest(mode, s[l], n[l]);
             assert_eq!(
@@ -702,6 +766,7 @@ fn level_selection_is_the_reference_selection() {
         1 => (next() % 64) as f32 * 0.25 - 4.0,
         _ => (next() % 100_000) as f32 * 3e-4 - 6.0,
     };
+    let mut lanes_checked = 0;
     for round in 0..6000 {
         let min = mins[round % mins.len()];
         let mag = [gl::NEAREST, gl::LINEAR][round / mins.len() % 2];
@@ -726,8 +791,10 @@ fn level_selection_is_the_reference_selection() {
             obj.base_level = 0;
         }
         let s = sampler(obj, gl::MODULATE);
-        for _ in 0..16 {
-            let lambda = pick(&mut next);
+        let mut lambdas = [0.0f32; 16];
+        for lambda in &mut lambdas {
+            *lambda = pick(&mut next);
+            let lambda = *lambda;
             // The reference: `sample_face`'s choice before the rewrite.
             let want = {
                 let lambda = lambda + s.bias;
@@ -769,7 +836,26 @@ fn level_selection_is_the_reference_selection() {
                 s.max_lod
             );
         }
+        // `select_lanes` on groups of eight of these λ: each lane is `select`'s choice.
+        for g in lambdas.chunks_exact(LANES) {
+            let g: [f32; LANES] = g.try_into().expect("eight λ");
+            let (lv, linear, f) = s.select_lanes(&g);
+            for l in 0..LANES {
+                let want = s.select(g[l]);
+                assert_eq!(
+                    (lv[l], linear & (1 << l) != 0, f[l].to_bits()),
+                    (want.0, want.1, want.2.to_bits()),
+                    "lanes: min {min:#x} λ {} bias {} lod [{}, {}]",
+                    g[l],
+                    s.bias,
+                    s.min_lod,
+                    s.max_lod
+                );
+                lanes_checked += 1;
+            }
+        }
     }
+    assert_eq!(lanes_checked, 6000 * 16);
 }
 
 #[test]
