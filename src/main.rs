@@ -17,6 +17,30 @@ use std::time::Instant;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+/// Writes to standard output. A closed pipe (`fixedgl bench | head`) ends the program quietly
+/// with status 141, what a program killed by SIGPIPE reports to the shell, where `print!`
+/// would panic; another write error is reported and ends it with status 1.
+fn emit(args: std::fmt::Arguments) {
+    use std::io::Write as _;
+    if let Err(e) = std::io::stdout().write_fmt(args) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(141);
+        }
+        eprintln!("fixedgl: cannot write to standard output: {e}");
+        std::process::exit(1);
+    }
+}
+
+/// `println!` through [`emit`].
+macro_rules! out {
+    () => {
+        $crate::emit(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::emit(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
 mod run;
 use image::RgbaImage;
 use sha2::Digest;
@@ -292,17 +316,17 @@ fn main() -> ExitCode {
 fn list() -> Result<ExitCode, CliError> {
     for s in scenes::scenes() {
         let (w, h) = s.default_size;
-        println!("{:<20} {w}x{h}  {}", s.name, s.summary);
+        out!("{:<20} {w}x{h}  {}", s.name, s.summary);
     }
     match gl_side::devices() {
-        Ok(devices) if devices.is_empty() => println!("\nEGL devices: none"),
+        Ok(devices) if devices.is_empty() => out!("\nEGL devices: none"),
         Ok(devices) => {
-            println!("\nEGL devices (--device):");
+            out!("\nEGL devices (--device):");
             for d in devices {
-                println!("  {d}");
+                out!("  {d}");
             }
         }
-        Err(e) => println!("\nEGL devices: unavailable ({e})"),
+        Err(e) => out!("\nEGL devices: unavailable ({e})"),
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -372,7 +396,7 @@ fn render(
     };
     let out = output.unwrap_or_else(|| PathBuf::from(format!("{name}-{}.png", backend.name())));
     img.save(&out)?;
-    println!("{}", out.display());
+    out!("{}", out.display());
     Ok(ExitCode::SUCCESS)
 }
 
@@ -390,7 +414,7 @@ fn render_hashes(
             Backend::Cpu => ctx.to_image(),
             Backend::Gl => gl_side::render(&calls, w, h, scene.config, device)?.0,
         };
-        println!("{:x}  {}", sha2::Sha256::digest(img.as_raw()), scene.name);
+        out!("{:x}  {}", sha2::Sha256::digest(img.as_raw()), scene.name);
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -444,7 +468,7 @@ fn compare_scenes(
         if json {
             eprintln!("{line}");
         } else {
-            println!("{line}");
+            out!("{line}");
         }
         results.push(result);
     }
@@ -453,10 +477,13 @@ fn compare_scenes(
         std::fs::write(file, report::junit(&renderers, &results)).map_err(Error::from)?;
     }
     if json {
-        print!("{}", report::results_json(&renderers, &results)?);
+        emit(format_args!(
+            "{}",
+            report::results_json(&renderers, &results)?
+        ));
         eprintln!("report: {}", index.display());
     } else {
-        println!("report: {}", index.display());
+        out!("report: {}", index.display());
     }
     let failed = results.iter().filter(|r| !r.passed()).count();
     if failed > 0 {
@@ -507,9 +534,17 @@ fn bench_stages(
 ) -> Result<ExitCode, CliError> {
     let selected = select(names, true)?;
     cpu_threads(threads)?;
-    println!(
+    out!(
         "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8}",
-        "scene", "frame", "reset", "replay", "image", "draws", "draw ms", "wait", "handoffs"
+        "scene",
+        "frame",
+        "reset",
+        "replay",
+        "image",
+        "draws",
+        "draw ms",
+        "wait",
+        "handoffs"
     );
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
@@ -546,9 +581,17 @@ fn bench_stages(
         let med: Vec<f64> = (0..8)
             .map(|k| median_ms(&mut rows.iter().map(|r| r[k]).collect::<Vec<_>>()))
             .collect();
-        println!(
+        out!(
             "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9} {:>9.3} {:>7.3} {:>8}",
-            scene.name, med[0], med[1], med[2], med[3], med[4], med[5], med[6], med[7]
+            scene.name,
+            med[0],
+            med[1],
+            med[2],
+            med[3],
+            med[4],
+            med[5],
+            med[6],
+            med[7]
         );
     }
     Ok(ExitCode::SUCCESS)
@@ -566,9 +609,13 @@ fn bench(
     let selected = select(names, true)?;
     cpu_threads(threads)?;
     if !json {
-        println!(
+        out!(
             "{:<20} {:>11} {:>10} {:>10} {:>8}",
-            "scene", "size", "cpu ms", "gl ms", "cpu/gl"
+            "scene",
+            "size",
+            "cpu ms",
+            "gl ms",
+            "cpu/gl"
         );
     }
     let mut rows = Vec::new();
@@ -608,7 +655,7 @@ fn bench(
             gl_ms: median_ms(&mut gl_times),
         };
         if !json {
-            println!(
+            out!(
                 "{:<20} {:>11} {:>10.3} {:>10.3} {:>8.2}",
                 row.name,
                 format!("{w}x{h}"),
@@ -656,22 +703,22 @@ fn bench(
             "c_abi_ns_per_call": capi_ns.as_ref().ok(),
             "scenes": scenes,
         });
-        println!("{out}");
+        out!("{out}");
     } else {
-        println!(
+        out!(
             "geometric mean cpu/gl {geomean:.2}; worst {}; threads: cpu {cpu_threads}, gl {gl_threads}",
             worst.map_or_else(|| "-".to_string(), |r| format!("{} ({:.2})", r.name, ratio(r)))
         );
-        println!(
+        out!(
             "Rust API: {api_ns:.1} ns a call (Color3f + Vertex3f pairs, points outside the view \
              volume: validation, batching and the vertex stage, no fragments)"
         );
         match &capi_ns {
-            Ok(ns) => println!(
+            Ok(ns) => out!(
                 "C ABI: {ns:.1} ns a call (the same pairs through libfixedgl_capi.so's glColor3f \
                  and glVertex3f on an OSMesa context)"
             ),
-            Err(why) => println!("C ABI: not measured: {why}"),
+            Err(why) => out!("C ABI: not measured: {why}"),
         }
     }
     Ok(ExitCode::SUCCESS)
@@ -732,7 +779,7 @@ fn replay(
         .unwrap_or("replay");
     let out = output.unwrap_or_else(|| PathBuf::from(format!("{stem}-{}.png", backend.name())));
     img.save(&out)?;
-    println!("{}", out.display());
+    out!("{}", out.display());
     Ok(ExitCode::SUCCESS)
 }
 
@@ -760,9 +807,11 @@ fn view(
     };
     let stats = view::run(selected, config)?;
     if frames.is_some() {
-        println!(
+        out!(
             "{} frames in {:.2} s ({:.1} fps)",
-            stats.frames, stats.seconds, stats.fps
+            stats.frames,
+            stats.seconds,
+            stats.fps
         );
     }
     Ok(ExitCode::SUCCESS)

@@ -87,7 +87,7 @@ fn library_path(dir: &Path) -> OsString {
 /// `fixedgl env`: the line a shell evaluates to run programs on fixedgl.
 pub fn env() -> Result<ExitCode, CliError> {
     let dir = drop_in_dir()?;
-    println!(
+    out!(
         "export LD_LIBRARY_PATH={}",
         shell_quote(&library_path(&dir).to_string_lossy())
     );
@@ -270,9 +270,13 @@ fn compare_frames(
             renderers.gl = info.0;
             renderers.gl_version = info.1;
             let comparison = compare(&cpu, &gl, FRAME_TOLERANCE.channel);
-            println!(
+            out!(
                 "context {context} frame {:>4} {}x{}: {:.3}% pixels off (max {:?})",
-                f.number, f.size.0, f.size.1, comparison.differing_percent, comparison.max_diff
+                f.number,
+                f.size.0,
+                f.size.1,
+                comparison.differing_percent,
+                comparison.max_diff
             );
             results.push(SceneResult {
                 name: format!("ctx{context}-frame{:04}", f.number),
@@ -292,7 +296,7 @@ fn compare_frames(
     }
     let index = report::write(dir, &renderers, &results)?;
     let failed = results.iter().filter(|r| !r.passed()).count();
-    println!(
+    out!(
         "{} frames, {failed} over tolerance; report: {}",
         results.len(),
         index.display()

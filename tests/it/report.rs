@@ -331,3 +331,37 @@ fn bench_times_a_call_through_the_c_abi_library_beside_it() {
     let ns = v["c_abi_ns_per_call"].as_f64();
     assert!(ns.is_some_and(|ns| ns > 0.0 && ns < 1e6), "{v}");
 }
+
+/// A closed standard output ends the command line quietly: a reader that stopped reading
+/// (`fixedgl list | head -1`) gives status 141, as SIGPIPE would, and no panic message; a write
+/// error (a full device) is reported on stderr with status 1.
+#[test]
+fn cli_output_to_a_closed_pipe_or_a_full_device_ends_quietly() {
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fixedgl"))
+        .arg("list")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("cannot run fixedgl: {e}"));
+    // The read end closes before the program writes anything.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("fixedgl list");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(141), "stderr: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    if let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") {
+        let out = Command::new(env!("CARGO_BIN_EXE_fixedgl"))
+            .arg("list")
+            .stdout(full)
+            .output()
+            .expect("fixedgl list");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "stderr: {stderr}");
+        assert!(
+            stderr.contains("cannot write to standard output"),
+            "{stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
