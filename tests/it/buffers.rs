@@ -514,6 +514,34 @@ fn accum_frames(w: u32, h: u32) -> Vec<Call> {
     calls
 }
 
+/// The two drivers the accumulation tests compare with: Mesa's own glAccum (OSMesa) and the EGL
+/// backend's emulation, each `None` where it cannot start.
+fn accum_drivers(w: u32, h: u32) -> [(&'static str, Option<GlBackend>); 2] {
+    [
+        (
+            "OSMesa (Mesa's glAccum)",
+            crate::common::osmesa_backend(w, h, ACCUM),
+        ),
+        (
+            "EGL (emulated)",
+            crate::common::test_backend_with(w, h, ACCUM),
+        ),
+    ]
+}
+
+/// The image after each RETURN of `calls` on a driver (errors read and dropped).
+fn driver_returns(drv: &mut GlBackend, calls: &[Call]) -> Vec<Vec<u8>> {
+    let mut images = Vec::new();
+    for call in calls {
+        drv.execute(call);
+        let _ = drv.get_error();
+        if matches!(call, Call::Accum(gl::RETURN, _)) {
+            images.push(drv.read_image().into_raw());
+        }
+    }
+    images
+}
+
 #[test]
 fn accumulation_matches_mesas_own_accum_and_the_emulation() {
     let (w, h) = (24, 20);
@@ -540,26 +568,10 @@ fn accumulation_matches_mesas_own_accum_and_the_emulation() {
         images.windows(2).all(|p| p[0] != p[1]),
         "every RETURN shows something new"
     );
-    let backends = [
-        (
-            "OSMesa (Mesa's glAccum)",
-            crate::common::osmesa_backend(w, h, ACCUM),
-        ),
-        (
-            "EGL (emulated)",
-            crate::common::test_backend_with(w, h, ACCUM),
-        ),
-    ];
+    let backends = accum_drivers(w, h);
     for (name, drv) in backends {
         let Some(mut drv) = drv else { continue };
-        let mut got = Vec::new();
-        for call in &calls {
-            drv.execute(call);
-            let _ = drv.get_error();
-            if matches!(call, Call::Accum(gl::RETURN, _)) {
-                got.push(drv.read_image().into_raw());
-            }
-        }
+        let got = driver_returns(&mut drv, &calls);
         for (k, (a, b)) in images.iter().zip(&got).enumerate() {
             if a != b {
                 for (i, (p, q)) in a.chunks(4).zip(b.chunks(4)).enumerate() {
@@ -621,39 +633,22 @@ fn accumulation_across_tiles_and_scissor_boxes_matches_mesa() {
         Call::Disable(gl::SCISSOR_TEST),
         Call::Accum(gl::RETURN, 1.0),
     ]);
-    // Every RETURN's image, from a backend with `execute` and an image read-back `$read`.
-    macro_rules! returns {
-        ($b:expr, $read:ident) => {{
-            let mut images = Vec::new();
-            for call in &calls {
-                $b.execute(call);
-                let _ = $b.get_error();
-                if matches!(call, Call::Accum(gl::RETURN, _)) {
-                    images.push($b.$read().into_raw());
-                }
-            }
-            images
-        }};
-    }
     let mut cpu = ctx(w, h, ACCUM);
-    let want = returns!(cpu, to_image);
+    let mut want = Vec::new();
+    for call in &calls {
+        cpu.execute(call);
+        if matches!(call, Call::Accum(gl::RETURN, _)) {
+            want.push(cpu.to_image().into_raw());
+        }
+    }
     assert!(
         want.windows(2).all(|p| p[0] != p[1]),
         "every RETURN shows something new"
     );
-    let backends = [
-        (
-            "OSMesa (Mesa's glAccum)",
-            crate::common::osmesa_backend(w, h, ACCUM),
-        ),
-        (
-            "EGL (emulated)",
-            crate::common::test_backend_with(w, h, ACCUM),
-        ),
-    ];
+    let backends = accum_drivers(w, h);
     for (name, drv) in backends {
         let Some(mut drv) = drv else { continue };
-        let got = returns!(drv, read_image);
+        let got = driver_returns(&mut drv, &calls);
         assert_eq!(got.len(), want.len(), "{name}");
         for (k, (a, b)) in want.iter().zip(&got).enumerate() {
             let n = a.chunks(4).zip(b.chunks(4)).filter(|(p, q)| p != q).count();
