@@ -964,18 +964,7 @@ mod tests {
         }
     }
 
-    use crate::cpu::testgen::Gen;
-
-    const FUNCS: [u32; 8] = [
-        gl::NEVER,
-        gl::LESS,
-        gl::EQUAL,
-        gl::LEQUAL,
-        gl::GREATER,
-        gl::NOTEQUAL,
-        gl::GEQUAL,
-        gl::ALWAYS,
-    ];
+    use crate::cpu::testgen::{Gen, COMPARE_FUNCS as FUNCS};
 
     /// Textured spans without per-fragment operations (`tri_span`'s general path: the
     /// varyings, λ and colours on lanes, the pixel-major store when one colour buffer is

@@ -593,8 +593,7 @@ fn put(dst: &mut [[u8; 4]], m: u8, c: &[[u8; LANES]; 4]) {
 mod tests {
     use super::*;
     use crate::cpu::framebuffer::{depth_unorm, unorm8};
-    use crate::cpu::testgen::Gen;
-    use crate::gl;
+    use crate::cpu::testgen::{Gen, COMPARE_FUNCS};
 
     #[test]
     fn smooth_rgba_is_the_scalar_expression_bit_for_bit() {
@@ -662,16 +661,7 @@ mod tests {
             let dz = g.float() * 1e-3;
             let fx0 = (g.next() % 900) as i32 - 100;
             let write = g.next() % 2 == 0;
-            let func = g.pick(&[
-                gl::NEVER,
-                gl::LESS,
-                gl::EQUAL,
-                gl::LEQUAL,
-                gl::GREATER,
-                gl::NOTEQUAL,
-                gl::GEQUAL,
-                gl::ALWAYS,
-            ]);
+            let func = g.pick(&COMPARE_FUNCS);
             // The row runs on past the span now and then (as a tile's row does); only the
             // live fragments of the span may be tested and written.
             let len = n + (g.next() % 3) as usize * (g.next() % 20) as usize;

@@ -645,7 +645,7 @@ mod tests {
     use super::*;
     use crate::cpu::fragops::{logic_op, BlendEval};
     use crate::cpu::framebuffer::unorm8;
-    use crate::cpu::testgen::Gen;
+    use crate::cpu::testgen::{Gen, COMPARE_FUNCS};
     use glam::{Vec3, Vec4};
 
     /// Whole lanes of the generator's floats and bytes.
@@ -705,16 +705,7 @@ mod tests {
     #[test]
     fn alpha_test_is_the_scalar_comparison() {
         let mut g = Gen(9);
-        let funcs = [
-            gl::NEVER,
-            gl::LESS,
-            gl::EQUAL,
-            gl::LEQUAL,
-            gl::GREATER,
-            gl::NOTEQUAL,
-            gl::GEQUAL,
-            gl::ALWAYS,
-        ];
+        let funcs = COMPARE_FUNCS;
         for _ in 0..2000 {
             let func = funcs[(g.next() % 8) as usize];
             let r = g.byte();
@@ -733,16 +724,7 @@ mod tests {
     #[test]
     fn depth_and_stencil_are_the_scalar_sequence() {
         let mut g = Gen(13);
-        let funcs = [
-            gl::NEVER,
-            gl::LESS,
-            gl::EQUAL,
-            gl::LEQUAL,
-            gl::GREATER,
-            gl::NOTEQUAL,
-            gl::GEQUAL,
-            gl::ALWAYS,
-        ];
+        let funcs = COMPARE_FUNCS;
         let ops = [
             gl::KEEP,
             gl::ZERO,

@@ -1,6 +1,18 @@
 //! The small deterministic generator the CPU modules' unit tests draw their inputs from (a
 //! 64-bit LCG, Knuth's MMIX constants): the same seed gives the same cases on every machine.
 
+/// The eight comparison functions (DepthFunc, AlphaFunc, StencilFunc), in enum order.
+pub(crate) const COMPARE_FUNCS: [u32; 8] = [
+    crate::gl::NEVER,
+    crate::gl::LESS,
+    crate::gl::EQUAL,
+    crate::gl::LEQUAL,
+    crate::gl::GREATER,
+    crate::gl::NOTEQUAL,
+    crate::gl::GEQUAL,
+    crate::gl::ALWAYS,
+];
+
 pub(crate) struct Gen(pub u64);
 
 impl Gen {
