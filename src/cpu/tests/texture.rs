@@ -50,9 +50,43 @@ fn obj_with(levels: Vec<Level>, min: u32, mag: u32) -> TexObject {
     o
 }
 
+/// Random sampling parameters beside the wraps: the border colour, now and then LOD bounds and
+/// a bias, and for a depth texture the comparison mode, function and DEPTH_TEXTURE_MODE (the
+/// 2D and the other targets' lane tests draw them alike).
+pub(super) fn random_border_lod_compare(
+    o: &mut TexObject,
+    depth: bool,
+    next: &mut impl FnMut() -> u64,
+) {
+    o.border_color = Vec4::new(0.25, 0.5, 0.75, 0.125);
+    if next() % 3 == 0 {
+        o.min_lod = (next() % 40) as f32 * 0.125 - 1.0;
+        o.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
+        o.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
+    }
+    if depth {
+        o.compare_mode = if next() % 4 == 0 {
+            gl::NONE
+        } else {
+            gl::COMPARE_R_TO_TEXTURE
+        };
+        o.compare_func = [
+            gl::LEQUAL,
+            gl::GEQUAL,
+            gl::LESS,
+            gl::GREATER,
+            gl::EQUAL,
+            gl::NOTEQUAL,
+            gl::ALWAYS,
+            gl::NEVER,
+        ][(next() % 8) as usize];
+        o.depth_texture_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
+    }
+}
+
 /// A 64-bit linear congruential generator seeded with `seed`: each call gives its next state's
 /// top 53 bits (the tests' source of random planes, coordinates and masks).
-fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
+pub(super) fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
     move || {
         seed = seed
             .wrapping_mul(6364136223846793005)
@@ -517,31 +551,7 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
         let mut obj = obj_with(levels, min, mag);
         obj.wrap_s = wraps[(next() % 5) as usize];
         obj.wrap_t = wraps[(next() % 5) as usize];
-        obj.border_color = Vec4::new(0.25, 0.5, 0.75, 0.125);
-        if next() % 3 == 0 {
-            obj.min_lod = (next() % 40) as f32 * 0.125 - 1.0;
-            obj.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
-            obj.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
-        }
-        if depth {
-            obj.compare_mode = if next() % 4 == 0 {
-                gl::NONE
-            } else {
-                gl::COMPARE_R_TO_TEXTURE
-            };
-            obj.compare_func = [
-                gl::LEQUAL,
-                gl::GEQUAL,
-                gl::LESS,
-                gl::GREATER,
-                gl::EQUAL,
-                gl::NOTEQUAL,
-                gl::ALWAYS,
-                gl::NEVER,
-            ][(next() % 8) as usize];
-            obj.depth_texture_mode =
-                [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
-        }
+        random_border_lod_compare(&mut obj, depth, &mut next);
         let s = sampler(obj, env);
         assert!(s.lanes_ok());
         assert_eq!(s.compare.is_some(), depth && obj_compare(&s));

@@ -9,20 +9,11 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use crate::cpu::lanes::LANES;
+use crate::cpu::texture::tests::{lcg, random_border_lod_compare};
 use crate::cpu::texture::Sampler;
 use crate::gl;
 use crate::state::State;
 use crate::texture::{Level, TexObject, MAX_LEVELS};
-
-/// A 64-bit linear congruential generator: each call gives the next state's top 53 bits.
-fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
-    move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        seed >> 11
-    }
-}
 
 /// A `w` x `h` x `d` level of base format `base` with random texels (multiples of 1/1000).
 fn random_level(w: i32, h: i32, d: i32, base: u32, next: &mut impl FnMut() -> u64) -> Level {
@@ -146,30 +137,7 @@ fn random_object(target: u32, depth: bool, next: &mut impl FnMut() -> u64) -> Te
     o.wrap_s = WRAPS[(next() % 5) as usize];
     o.wrap_t = WRAPS[(next() % 5) as usize];
     o.wrap_r = WRAPS[(next() % 5) as usize];
-    o.border_color = Vec4::new(0.25, 0.5, 0.75, 0.125);
-    if next() % 3 == 0 {
-        o.min_lod = (next() % 40) as f32 * 0.125 - 1.0;
-        o.max_lod = (next() % 40) as f32 * 0.125 - 1.0;
-        o.lod_bias = (next() % 17) as f32 * 0.25 - 2.0;
-    }
-    if depth {
-        o.compare_mode = if next() % 4 == 0 {
-            gl::NONE
-        } else {
-            gl::COMPARE_R_TO_TEXTURE
-        };
-        o.compare_func = [
-            gl::LEQUAL,
-            gl::GEQUAL,
-            gl::LESS,
-            gl::GREATER,
-            gl::EQUAL,
-            gl::NOTEQUAL,
-            gl::ALWAYS,
-            gl::NEVER,
-        ][(next() % 8) as usize];
-        o.depth_texture_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][(next() % 3) as usize];
-    }
+    random_border_lod_compare(&mut o, depth, next);
     o
 }
 
