@@ -113,15 +113,11 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let mut la = [self.base_level; LANES];
+        // Each lane's level, filter and weight: `select` on lanes, as the 2D path takes them.
+        let (la, linear, f) = self.select_lanes(lambda);
         let mut lb = [self.base_level; LANES];
-        let mut f = [0.0f32; LANES];
-        let (mut linear, mut second) = (0u8, 0u8);
-        for l in 0..LANES {
-            let (lv, lin, w) = self.select(lambda[l]);
-            la[l] = lv;
-            f[l] = w;
-            linear |= u8::from(lin) << l;
+        let mut second = 0u8;
+        for (l, &w) in f.iter().enumerate() {
             second |= u8::from(w != 0.0) << l;
         }
         let (linear, second) = (linear & m, second & m);
