@@ -939,6 +939,7 @@ impl Context {
         }
         self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
+            ctx.renderer.release_textures();
             if let Some(obj) = ctx.state.textures.bound_mut(unit, target) {
                 obj.generate_mipmaps();
             }

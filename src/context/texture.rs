@@ -585,6 +585,7 @@ impl Context {
     fn store_level_now(&mut self, target: u32, level: i32, lv: Level) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
+        self.renderer.release_textures();
         if let Some(obj) = self.state.textures.bound_mut(unit, bind) {
             if let Some(slot) = obj.slot_mut(face, level) {
                 *slot = Some(lv);
@@ -845,6 +846,7 @@ impl Context {
     ) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
+        self.renderer.release_textures();
         let Some(obj) = self.state.textures.bound_mut(unit, bind) else {
             return;
         };

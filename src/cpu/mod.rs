@@ -17,6 +17,14 @@
 //! so every tile sees the primitives in submission order (depth ties and, later, blending
 //! depend on it).
 //!
+//! Rasterisation waits for the framebuffer to be needed. Each flush is set up and binned into
+//! a scene ([`Scene`]) with its own fragment-stage state, and the scene is rasterised in one
+//! pass over the tiles (each visiting the flushes in call order) when something reads or
+//! changes the framebuffer, or when the scene is full, as llvmpipe's scene bins a frame's
+//! draws with a pointer to each one's state. A frame that changes a matrix between objects
+//! then makes one pass and one hand-off to the pool instead of one per object, and the pool's
+//! threads share the whole frame's tiles.
+//!
 //! The front end and the drawing overlap. A batch is drawn at End once it holds 32k vertices
 //! (`flush_if_large`), so memory stays bounded. The calling thread runs that batch's vertex
 //! stage itself (the pool is still drawing the previous batch), then hands setup and
@@ -26,8 +34,8 @@
 //! change, Clear, a read) and every framebuffer access wait for it first, so the draws happen
 //! one after the other in call order and the pixels are exactly those of drawing in place
 //! (tested in `tests/overlap.rs` under this module). A caller running on the pool itself draws
-//! in place. A flush at a state change is drawn in place: handing it to the pool too was
-//! measured slower on the fragment-heavy scenes (docs/conformance.md, Speed).
+//! in place. A flush at a state change is set up in place (into the scene): handing it to the
+//! pool too was measured slower on the fragment-heavy scenes (docs/conformance.md, Speed).
 //!
 //! Naming: the state (`crate::state`, `crate::texture`) is named after GL's state blocks
 //! (`Fog`, `Blend`, `TexGen`, `Combine`); what this module derives from it when a batch is
@@ -119,12 +127,15 @@ pub struct Renderer {
 /// a draw; nothing here changes what is drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawStats {
-    /// Batches drawn in place (by a caller running on the pool itself).
+    /// Batches set up in place: every flush at a state change, and at 32k vertices by a
+    /// caller running on the pool itself.
     pub draws: u64,
-    /// Their time: vertex stage, setup and rasterisation, including the pool's part.
+    /// Their time: vertex stage and setup, and rasterisation when the flush fills the scene
+    /// (including the pool's part); the scene is otherwise rasterised when the framebuffer is
+    /// read.
     pub draw_ns: u64,
-    /// Batches handed to the pool to be set up and rasterised in the background: every flush
-    /// of a caller off the pool, at 32k vertices (`flush_if_large`) or at a state change.
+    /// Batches handed to the pool to be set up (and rasterised, with the scene) in the
+    /// background: a caller off the pool's flush at 32k vertices (`flush_if_large`).
     pub handoffs: u64,
     /// Their time on the calling thread: the vertex stage and the hand-off.
     pub handoff_ns: u64,
@@ -147,15 +158,103 @@ type Drawn = (
     Option<Box<dyn std::any::Any + Send>>,
 );
 
-/// What drawing a batch mutates: the framebuffer and the setup scratch space reused across
-/// draws.
+/// What drawing a batch mutates: the framebuffer, the flushes set up and not yet rasterised,
+/// and the setup scratch space reused across draws.
 #[derive(Debug)]
 struct Core {
     fb: Framebuffer,
     asm: Vec<Asm>,
-    workers: Vec<Worker>,
+    scene: Scene,
     /// Fragments counted since `start_counting_samples` (GL 2.1 §4.1.7's SAMPLES_PASSED).
     samples_passed: u64,
+}
+
+/// Flushes set up and binned but not yet rasterised, as llvmpipe's scene holds a frame's
+/// binned commands with a pointer to each one's state: a state change between two draws
+/// (a matrix, a fog mode, a bound texture) no longer makes its own pass over the tiles with
+/// its own hand-off to the pool. The scene is rasterised in one pass, every tile visiting the
+/// parts in call order (so the pixels are those of drawing each flush in place), when anything
+/// reads or changes the framebuffer (`Renderer::core`), when a flush writes other colour
+/// buffers, or when it holds `SCENE_VERTICES` vertices or `SCENE_PARTS` parts (so its memory
+/// stays bounded).
+#[derive(Debug, Default)]
+struct Scene {
+    /// Each flush's fragment-stage state, in call order.
+    frags: Vec<Frag>,
+    /// The set-up pieces in call order: which `frags` entry each belongs to and which workers
+    /// hold its binned primitives.
+    parts: Vec<Part>,
+    /// Setup workers: the first `used` hold the parts' primitives; the others are memory kept
+    /// for the next parts.
+    workers: Vec<Worker>,
+    used: usize,
+    /// Vertices set up into the parts.
+    vertices: usize,
+    /// The colour buffers every part writes.
+    targets: Targets,
+}
+
+/// One piece of a flush in the scene: its `Scene::frags` entry and `Scene::workers` range.
+#[derive(Debug)]
+struct Part {
+    frag: usize,
+    workers: std::ops::Range<usize>,
+}
+
+/// Vertices in the scene's parts at which it is rasterised.
+const SCENE_VERTICES: usize = 1 << 15;
+
+/// Parts at which the scene is rasterised.
+const SCENE_PARTS: usize = 1024;
+
+/// Workers kept past this many keep only a small part of their memory after the scene is
+/// rasterised (a draw of several pieces late in a scene uses workers beyond it).
+const KEPT_WORKERS: usize = 32;
+
+/// A flush's fragment-stage state, owned (what [`FragCtx`] borrows).
+#[derive(Debug)]
+struct Frag {
+    depth_test: bool,
+    depth_func: u32,
+    depth_mask: bool,
+    color_mask: [bool; 4],
+    color_sum: bool,
+    rl: setup::RLayout,
+    lighting: Option<Lighting>,
+    mats: Vec<[Material; 2]>,
+    count: bool,
+    samples: bool,
+    stipple: Option<[u32; 32]>,
+    ops: Option<fragops::Ops>,
+    samplers: [Option<texture::Sampler>; MAX_TEXTURE_UNITS],
+}
+
+impl Frag {
+    /// Some unit samples a texture.
+    fn samples_textures(&self) -> bool {
+        self.samplers.iter().any(Option::is_some)
+    }
+
+    /// The fragment stage's view of it.
+    fn ctx(&self) -> FragCtx<'_> {
+        let tex = fragment::tex_units(&self.samplers, &self.rl);
+        FragCtx {
+            depth_test: self.depth_test,
+            depth_func: self.depth_func,
+            depth_mask: self.depth_mask,
+            color_mask: self.color_mask,
+            color_sum: self.color_sum,
+            rl: self.rl,
+            lighting: self.lighting.as_ref(),
+            mats: &self.mats,
+            count: self.count,
+            samples: self.samples,
+            stipple: self.stipple,
+            ops: self.ops,
+            crossbar: fragment::crossbar(&tex),
+            tex,
+        }
+    }
 }
 
 /// The vertex stage's output for a batch: `layout.stride` floats per vertex, and each vertex's
@@ -421,11 +520,27 @@ impl Renderer {
         panic!("fixedgl: the framebuffer was lost with a background draw that vanished")
     }
 
-    /// The framebuffer and scratch space, once no background draw holds them.
+    /// Rasterises the scene if one of its flushes samples a texture: called before a texture
+    /// object changes, so that the change does not copy an object the scene still holds
+    /// (`Arc::make_mut` copies a shared one; the pixels are the same either way).
+    pub fn release_textures(&mut self) {
+        self.wait();
+        if let Some(core) = self.core.as_deref_mut() {
+            if core.scene.frags.iter().any(Frag::samples_textures) {
+                core.resolve();
+            }
+        }
+    }
+
+    /// The framebuffer and scratch space, once no background draw holds them and the scene
+    /// (every flush so far) is rasterised into the framebuffer.
     fn core(&mut self) -> &mut Core {
         self.wait();
         match self.core.as_deref_mut() {
-            Some(core) => core,
+            Some(core) => {
+                core.resolve();
+                core
+            }
             None => Self::lost(),
         }
     }
@@ -489,10 +604,10 @@ impl Renderer {
         self.batch.clear();
     }
 
-    /// Draws everything batched so far with `state`, leaving the batch empty. The draw happens
-    /// in place (setup and rasterisation still spread over the pool): handing a state change's
-    /// flush to the pool as `flush_if_large` does was measured slower (see docs/conformance.md,
-    /// Speed, fourth session).
+    /// Draws everything batched so far with `state`, leaving the batch empty: its vertex stage
+    /// and setup happen in place, into the scene, which is rasterised when the framebuffer is
+    /// needed (see [`Scene`]). Handing a state change's flush to the pool as `flush_if_large`
+    /// does was measured slower (see docs/conformance.md, Speed, fourth session).
     pub fn flush(&mut self, state: &State) {
         self.wait();
         if self.batch.is_empty() {
@@ -535,7 +650,7 @@ impl Core {
         Core {
             fb: Framebuffer::new(width, height),
             asm: Vec::new(),
-            workers: Vec::new(),
+            scene: Scene::default(),
             samples_passed: 0,
         }
     }
@@ -544,13 +659,14 @@ impl Core {
         Some(Core {
             fb: Framebuffer::try_new(width, height, config)?,
             asm: Vec::new(),
-            workers: Vec::new(),
+            scene: Scene::default(),
             samples_passed: 0,
         })
     }
 
-    /// Draws `batch` (not empty), whose vertices `verts` went through the vertex stage as
-    /// `plan` says, with `state` into the framebuffer.
+    /// Sets up `batch` (not empty), whose vertices `verts` went through the vertex stage as
+    /// `plan` says, with `state`, and bins it into the scene; the scene is rasterised first if
+    /// it writes other colour buffers, and after any piece that fills it (see [`Scene`]).
     fn draw(
         &mut self,
         state: &State,
@@ -561,28 +677,15 @@ impl Core {
         count_samples: bool,
     ) {
         let Plan { layout, ctx } = plan;
-        // Fragment-stage constants.
-        let lighting = (layout.nrm.is_some()).then(|| Lighting::new(state));
-        // Each unit that carries coordinates, when enabled and complete (§3.8.10)
-        let samplers: [Option<texture::Sampler>; MAX_TEXTURE_UNITS] =
-            std::array::from_fn(|u| layout.tex[u].and_then(|_| texture::Sampler::new(state, u)));
-        let tex = fragment::tex_units(&samplers, &ctx.rl);
-        let Core {
-            fb,
-            asm,
-            workers,
-            samples_passed,
-        } = self;
-        let (vout, wins) = (&verts.vout[..], &verts.wins[..]);
-        let mats: &[[Material; 2]] = if batch.snapshots.is_empty() {
-            std::slice::from_ref(&state.materials)
-        } else {
-            &batch.snapshots
-        };
         let targets = Targets::of(state);
-        let fctx = FragCtx {
+        if targets != self.scene.targets {
+            self.resolve();
+            self.scene.targets = targets;
+        }
+        // Fragment-stage state, owned by the scene until it is rasterised.
+        let frag = Frag {
             // Without a depth buffer the depth test always passes and writes nothing (§4.1.6).
-            depth_test: state.enables.depth_test && fb.config().depth,
+            depth_test: state.enables.depth_test && self.fb.config().depth,
             depth_func: state.depth_func,
             depth_mask: state.depth_mask,
             // DrawBuffer(NONE): fragments go through every test and write no colour.
@@ -593,8 +696,12 @@ impl Core {
             },
             color_sum: layout.spec.is_some(),
             rl: ctx.rl,
-            lighting: lighting.as_ref(),
-            mats,
+            lighting: layout.nrm.is_some().then(|| Lighting::new(state)),
+            mats: if batch.snapshots.is_empty() {
+                vec![state.materials]
+            } else {
+                batch.snapshots.clone()
+            },
             count: count_coverage,
             samples: count_samples,
             stipple: state
@@ -602,9 +709,13 @@ impl Core {
                 .polygon_stipple
                 .then(|| fragment::stipple_rows(state)),
             ops: fragops::Ops::new(state),
-            crossbar: fragment::crossbar(&tex),
-            tex,
+            // Each unit that carries coordinates, when enabled and complete (§3.8.10).
+            samplers: std::array::from_fn(|u| {
+                layout.tex[u].and_then(|_| texture::Sampler::new(state, u))
+            }),
         };
+        let mut fi = self.scene.frags.len();
+        self.scene.frags.push(frag);
         // The line stipple counter runs from segment to segment in submission order: one
         // worker sets up everything while LINE_STIPPLE is on.
         let nw = if batch.idx.len() >= PARALLEL_SETUP && ctx.line_stipple.is_none() {
@@ -613,14 +724,15 @@ impl Core {
         } else {
             1
         };
-        if workers.len() < nw {
-            workers.resize_with(nw, Worker::default);
-        }
-        let workers = &mut workers[..nw];
-        let v = Verts { vout, wins, batch };
-        // Pieces of whole primitives, about PIECE vertices each, go through assembly, clipping,
-        // setup and rasterisation one after the other: the setup output stays small and warm
-        // in the cache, and memory does not grow with the batch.
+        let v = Verts {
+            vout: &verts.vout,
+            wins: &verts.wins,
+            batch,
+        };
+        // Pieces of whole primitives, about PIECE vertices each, go through assembly, clipping
+        // and setup one after the other, and a piece that fills the scene is rasterised at
+        // once: the setup output stays small and warm in the cache, and memory does not grow
+        // with the batch.
         let prims = &batch.prims;
         let mut start = 0;
         while start < prims.len() {
@@ -636,19 +748,97 @@ impl Core {
             debug_assert!(end <= prims.len(), "piece past the primitive list");
             let piece = prims.get(start..end).unwrap_or(&[]);
             let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
-            if workers.len() == 1 || largest <= count / workers.len() {
+            if nw == 1 || largest <= count / nw {
+                let workers = self.scene.take(fi, nw);
                 setup_by_primitives(workers, &ctx, &v, piece, count);
-                *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
+                self.scene.vertices += count;
+                fi = self.settle(fi);
             } else {
                 // One primitive dominates: assemble it, then cut its triangles into runs.
-                assembly::assemble(piece, &batch.idx, &batch.edge, ctx.quads_split_last, asm);
+                let mut asm = std::mem::take(&mut self.asm);
+                assembly::assemble(
+                    piece,
+                    &batch.idx,
+                    &batch.edge,
+                    ctx.quads_split_last,
+                    &mut asm,
+                );
                 for run in asm.chunks(PIECE) {
+                    let workers = self.scene.take(fi, nw);
                     setup_by_triangles(workers, &ctx, &v, run);
-                    *samples_passed += rasterise(fb, workers, &fctx, ctx.tiles_x, targets);
+                    self.scene.vertices += 3 * run.len();
+                    fi = self.settle(fi);
                 }
+                self.asm = asm;
             }
             start = end;
         }
+    }
+
+    /// Rasterises the scene if it is full, keeping the fragment state of flush `fi`, the one
+    /// being set up (the last): returns its index afterwards.
+    fn settle(&mut self, fi: usize) -> usize {
+        if self.scene.vertices < SCENE_VERTICES && self.scene.parts.len() < SCENE_PARTS {
+            return fi;
+        }
+        self.rasterise_parts();
+        self.scene.frags.drain(..fi.min(self.scene.frags.len()));
+        0
+    }
+
+    /// Rasterises every part of the scene into the framebuffer and empties it.
+    fn resolve(&mut self) {
+        self.rasterise_parts();
+        self.scene.frags.clear();
+    }
+
+    /// Rasterises the scene's parts and empties them (not `Scene::frags`).
+    fn rasterise_parts(&mut self) {
+        let Core {
+            fb,
+            scene,
+            samples_passed,
+            ..
+        } = self;
+        if scene.parts.is_empty() {
+            return;
+        }
+        let ctxs: Vec<FragCtx> = scene.frags.iter().map(Frag::ctx).collect();
+        let parts: Vec<(&FragCtx, &[Worker])> = scene
+            .parts
+            .iter()
+            .filter_map(|p| Some((ctxs.get(p.frag)?, scene.workers.get(p.workers.clone())?)))
+            .collect();
+        *samples_passed += rasterise(fb, &parts, scene.targets);
+        drop(parts);
+        drop(ctxs);
+        scene.clear();
+    }
+}
+
+impl Scene {
+    /// `n` workers for a new part of flush `frag`, set up next.
+    fn take(&mut self, frag: usize, n: usize) -> &mut [Worker] {
+        let range = self.used..self.used + n;
+        if self.workers.len() < range.end {
+            self.workers.resize_with(range.end, Worker::default);
+        }
+        self.used = range.end;
+        self.parts.push(Part {
+            frag,
+            workers: range.clone(),
+        });
+        self.workers.get_mut(range).unwrap_or_default()
+    }
+
+    /// Empties the parts once rasterised.
+    fn clear(&mut self) {
+        self.parts.clear();
+        for w in self.workers.iter_mut().skip(KEPT_WORKERS) {
+            w.trim();
+        }
+        self.used = 0;
+        self.vertices = 0;
     }
 }
 
@@ -727,18 +917,13 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
     });
 }
 
-/// Rasterisation and fragment operations, tiles in parallel; inside a tile, worker 0's
-/// primitives first, then worker 1's, ..., which is submission order. Colour goes to the
-/// buffers `targets` names: the main buffer, the front buffer, or both (the front one as each
-/// tile's second colour slice). Returns the fragments counted for an occlusion query (0 unless
-/// `fctx.samples`).
-fn rasterise(
-    fb: &mut Framebuffer,
-    workers: &[Worker],
-    fctx: &FragCtx,
-    tiles_x: usize,
-    targets: Targets,
-) -> u64 {
+/// Rasterisation and fragment operations of `parts` (each a flush's fragment-stage state and
+/// the workers holding a piece of its binned primitives), tiles in parallel; inside a tile,
+/// the parts in order, and in each part worker 0's primitives first, then worker 1's, ...,
+/// which is submission order. Colour goes to the buffers `targets` names: the main buffer,
+/// the front buffer, or both (the front one as each tile's second colour slice). Returns the
+/// fragments counted for an occlusion query (by the parts whose `FragCtx::samples` is set).
+fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Targets) -> u64 {
     let (tx, ty) = fb.tiles();
     let Framebuffer {
         color,
@@ -756,8 +941,9 @@ fn rasterise(
     };
     // The tiles some primitive reaches, from the workers' lists, in tile order (the others
     // are not visited: their pending clears stay pending).
-    let mut busy: Vec<usize> = workers
+    let mut busy: Vec<usize> = parts
         .iter()
+        .flat_map(|(_, ws)| ws.iter())
         .flat_map(|w| w.touched.iter().map(|&t| t as usize))
         .filter(|&t| t < tx * ty)
         .collect();
@@ -789,14 +975,16 @@ fn rasterise(
             color2,
             depth,
             stencil,
-            x: ((t % tiles_x) * TILE) as i32,
-            y: ((t / tiles_x) * TILE) as i32,
+            x: ((t % tx) * TILE) as i32,
+            y: ((t / tx) * TILE) as i32,
             samples: 0,
         };
-        for w in workers {
-            for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
-                if let Some(p) = w.prims.get(pi as usize) {
-                    raster::prim(fctx, &mut bufs, p, &w.pool);
+        for &(fctx, workers) in parts {
+            for w in workers {
+                for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
+                    if let Some(p) = w.prims.get(pi as usize) {
+                        raster::prim(fctx, &mut bufs, p, &w.pool);
+                    }
                 }
             }
         }
@@ -805,7 +993,11 @@ fn rasterise(
     // Primitives within one or two tiles, or whose bounding boxes hold fewer pixels than two
     // tiles, are drawn on this thread: handing them to the pool costs more than drawing them.
     // Tiles are independent, so the pixels are the same.
-    let area: u64 = workers.iter().map(|w| w.area).sum();
+    let area: u64 = parts
+        .iter()
+        .flat_map(|(_, ws)| ws.iter())
+        .map(|w| w.area)
+        .sum();
     if jobs.len() <= 2 || area < SERIAL_AREA {
         jobs.into_iter().map(work).sum()
     } else {

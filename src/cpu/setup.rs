@@ -486,8 +486,29 @@ impl Worker {
         }
     }
 
+    /// Lets go of the memory of its outputs beyond what a small flush needs (after the
+    /// rasteriser has visited them; the next run starts them again).
+    pub fn trim(&mut self) {
+        const KEEP: usize = 1 << 12;
+        self.empty();
+        self.prims.shrink_to(KEEP);
+        self.pool.shrink_to(8 * KEEP);
+        self.a.shrink_to(KEEP);
+        self.b.shrink_to(KEEP);
+        self.asm.shrink_to(KEEP);
+    }
+
     /// Empties the outputs for a new run.
     fn start(&mut self, ctx: &SetupCtx) {
+        self.empty();
+        // Every bin is empty now: those not touched were emptied by the run that filled them.
+        debug_assert!(self.bins.iter().all(Vec::is_empty), "a bin not emptied");
+        self.bins.resize_with(ctx.tiles, Vec::new);
+        self.bins_x = ctx.tiles_x;
+    }
+
+    /// Empties the primitives and the bins they reached.
+    fn empty(&mut self) {
         self.prims.clear();
         self.pool.clear();
         for &t in &self.touched {
@@ -497,10 +518,6 @@ impl Worker {
         }
         self.touched.clear();
         self.area = 0;
-        // Every bin is empty now: those not touched were emptied by the run that filled them.
-        debug_assert!(self.bins.iter().all(Vec::is_empty), "a bin not emptied");
-        self.bins.resize_with(ctx.tiles, Vec::new);
-        self.bins_x = ctx.tiles_x;
     }
 
     /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else

@@ -1,0 +1,196 @@
+//! The scene (`Scene` in the module above): flushes are set up and binned as they come and
+//! rasterised together when the framebuffer is needed. The pixels must be exactly those of
+//! rasterising every flush as it is made, whatever state changes between the flushes.
+
+use std::sync::Arc;
+
+use crate::gl;
+use crate::state::ContextConfig;
+use crate::Context;
+
+/// Objects drawn: more than `SCENE_PARTS`, so the scene also fills up inside the frame.
+const OBJECTS: usize = 1100;
+
+/// What a frame leaves: the back buffer, the front buffer and an occlusion query's count.
+type Frame = (Vec<u8>, Vec<u8>, u32);
+
+/// A frame of `OBJECTS` small quads, each under its own modelview matrix (a flush each), with
+/// state that changes from object to object: fog modes, blending, depth functions, a texture
+/// whose filter and texels change between the quads that sample it, the stencil test, the
+/// polygon stipple, the colour mask, the draw buffers (back, then both) and an occlusion query
+/// around some of them. With `sync`, a pixel is read after every object, which rasterises
+/// each flush on its own, as before the scene.
+fn frame(sync: bool) -> Frame {
+    let config = ContextConfig {
+        double_buffered: true,
+        ..ContextConfig::default()
+    };
+    let mut gl = Context::with_config(200, 160, config).expect("context");
+    let mut px = [0u8; 4];
+    gl.clear_color(0.2, 0.25, 0.3, 1.0);
+    gl.draw_buffer(gl::FRONT_AND_BACK);
+    gl.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
+    gl.draw_buffer(gl::BACK);
+    gl.matrix_mode(gl::PROJECTION);
+    gl.ortho(0.0, 200.0, 0.0, 160.0, -10.0, 10.0);
+    gl.matrix_mode(gl::MODELVIEW);
+    gl.enable(gl::DEPTH_TEST);
+    gl.fogfv(gl::FOG_COLOR, &[0.9, 0.8, 0.7, 1.0]);
+    gl.fogf(gl::FOG_DENSITY, 0.3);
+    gl.fogf(gl::FOG_END, 12.0);
+    gl.stencil_op(gl::KEEP, gl::KEEP, gl::INCR);
+    gl.polygon_stipple(&[0xA5; 128]);
+    let mut tex = [0u32; 1];
+    gl.gen_textures(1, &mut tex);
+    gl.bind_texture(gl::TEXTURE_2D, tex[0]);
+    let texels: Vec<u8> = (0..64u8).map(|i| i.wrapping_mul(37)).collect();
+    gl.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        4,
+        4,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    let mut query = [0u32; 1];
+    gl.gen_queries(1, &mut query);
+    for k in 0..OBJECTS {
+        let kind = k % 8;
+        if k == 500 {
+            gl.begin_query(gl::SAMPLES_PASSED, query[0]);
+        }
+        if k == 600 {
+            gl.end_query(gl::SAMPLES_PASSED);
+        }
+        if k == 700 {
+            gl.draw_buffer(gl::FRONT_AND_BACK);
+        }
+        let on = |gl: &mut Context, cap: u32, yes: bool| match yes {
+            true => gl.enable(cap),
+            false => gl.disable(cap),
+        };
+        on(&mut gl, gl::FOG, kind == 1 || kind == 5);
+        gl.fogi(gl::FOG_MODE, [gl::LINEAR, gl::EXP, gl::EXP2][k % 3] as i32);
+        on(&mut gl, gl::BLEND, kind == 2 || kind == 5);
+        gl.blend_func(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA);
+        gl.depth_func([gl::LEQUAL, gl::LESS, gl::ALWAYS, gl::GREATER][k % 4]);
+        on(&mut gl, gl::TEXTURE_2D, kind == 3 || kind == 6);
+        if kind == 3 || kind == 6 {
+            let filter = [gl::NEAREST, gl::LINEAR][k % 2] as i32;
+            gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, filter);
+            gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, filter);
+        }
+        if k % 50 == 3 {
+            let texel = [(k % 256) as u8, 40, 200, 255];
+            gl.tex_sub_image_2d(
+                gl::TEXTURE_2D,
+                0,
+                1,
+                2,
+                1,
+                1,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                &texel,
+            );
+        }
+        on(&mut gl, gl::STENCIL_TEST, kind == 4);
+        gl.stencil_func(gl::LEQUAL, (k % 3) as i32, 0xFF);
+        on(&mut gl, gl::POLYGON_STIPPLE, kind == 7);
+        gl.color_mask(true, kind != 6, true, true);
+        gl.load_identity();
+        let (x, y) = ((k * 37 % 190) as f32, (k * 53 % 150) as f32);
+        gl.translatef(x, y, (k % 11) as f32 - 5.0);
+        gl.rotatef((k * 13 % 360) as f32, 0.0, 0.0, 1.0);
+        let s = 6.0 + (k % 5) as f32 * 9.0;
+        gl.begin(gl::QUADS);
+        for (i, (cx, cy)) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let c = (k + i) as f32 / OBJECTS as f32;
+            gl.color4f(c, 1.0 - c, (i as f32) * 0.3, 0.6);
+            gl.tex_coord2f((cx + 1.0) * 0.7, (cy + 1.0) * 0.7);
+            gl.vertex3f(cx * s, cy * s, 0.5 * cx);
+        }
+        gl.end();
+        if sync {
+            gl.read_pixels(0, 0, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+        }
+    }
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+    let mut count = [0u32; 1];
+    gl.get_query_objectuiv(query[0], gl::QUERY_RESULT, &mut count);
+    let back = gl.to_image().into_raw();
+    let front = gl.front_rgba();
+    (back, front, count[0])
+}
+
+#[test]
+fn a_frame_rasterised_as_one_scene_is_the_frame_rasterised_flush_by_flush() {
+    let (back, front, count) = frame(false);
+    let (back1, front1, count1) = frame(true);
+    assert_eq!(count, count1, "occlusion query counts");
+    assert!(back == back1, "the back buffers differ");
+    assert!(front == front1, "the front buffers differ");
+    // The frame is not trivially uniform, and the query counted something.
+    let distinct: std::collections::BTreeSet<&[u8]> = back.chunks(4).collect();
+    assert!(distinct.len() > 500, "only {} colours", distinct.len());
+    assert!(count > 1000, "{count} samples");
+}
+
+/// A texture a waiting flush samples is not copied when it changes: the scene is rasterised
+/// first (a copy would be the same pixels, at the cost of copying every level).
+#[test]
+fn changing_a_texture_the_scene_samples_does_not_copy_it() {
+    let mut gl = Context::new(64, 64).expect("context");
+    let mut tex = [0u32; 1];
+    gl.gen_textures(1, &mut tex);
+    gl.bind_texture(gl::TEXTURE_2D, tex[0]);
+    let texels = [255u8; 4 * 16 * 16];
+    gl.tex_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        gl::RGBA as i32,
+        16,
+        16,
+        0,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
+    gl.enable(gl::TEXTURE_2D);
+    let object = |gl: &Context| gl.state.textures.bound_2d(0).map(Arc::as_ptr);
+    let before = object(&gl);
+    assert!(before.is_some());
+    gl.begin(gl::TRIANGLES);
+    gl.tex_coord2f(0.0, 0.0);
+    gl.vertex2f(-1.0, -1.0);
+    gl.tex_coord2f(1.0, 0.0);
+    gl.vertex2f(1.0, -1.0);
+    gl.tex_coord2f(0.0, 1.0);
+    gl.vertex2f(-1.0, 1.0);
+    gl.end();
+    // A state change: the triangle is set up into the scene, which holds the texture.
+    gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    gl.tex_sub_image_2d(
+        gl::TEXTURE_2D,
+        0,
+        0,
+        0,
+        1,
+        1,
+        gl::RGBA,
+        gl::UNSIGNED_BYTE,
+        &[0; 4],
+    );
+    assert_eq!(object(&gl), before, "the texture object was copied");
+    // And the triangle was drawn with the texture as it was (white).
+    let img = gl.to_image();
+    assert_eq!(img.get_pixel(2, 61).0, [255; 4]);
+    assert_eq!(gl.get_error(), gl::NO_ERROR);
+}
