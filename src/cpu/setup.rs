@@ -471,10 +471,65 @@ impl Worker {
         b: &Batch,
         prims: &[Prim],
     ) {
+        self.start(ctx);
         let mut asm = std::mem::take(&mut self.asm);
-        super::assembly::assemble(prims, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
-        self.run(ctx, vout, wins, &b.mat, &asm);
+        let mut rest = prims;
+        while !rest.is_empty() {
+            // Triangle strips (a dense mesh's usual primitive) are set up as they are
+            // assembled, without the round trip through `asm`: the triangles, in the order
+            // and with the vertices, provoking vertex and edge flags `assembly::assemble`
+            // gives them. Runs of other primitives go through `assemble`.
+            let strips = rest
+                .iter()
+                .position(|p| p.mode != gl::TRIANGLE_STRIP)
+                .unwrap_or(rest.len());
+            let (now, after) = rest.split_at(strips);
+            for p in now {
+                self.strip(ctx, vout, wins, &b.mat, &b.idx, p);
+            }
+            let others = after
+                .iter()
+                .position(|p| p.mode == gl::TRIANGLE_STRIP)
+                .unwrap_or(after.len());
+            let (now, after) = after.split_at(others);
+            if !now.is_empty() {
+                super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+                for p in &asm {
+                    self.one(ctx, vout, wins, &b.mat, p);
+                }
+            }
+            rest = after;
+        }
         self.asm = asm;
+    }
+
+    /// Assembles and sets up the triangle strip `p` (§2.6.1): triangle i is given vertices
+    /// (i, i + 1, i + 2), its first two swapped when i is odd, provoking vertex i + 2, every
+    /// edge a boundary edge, as `assembly::assemble` makes it; `idx` maps given vertices to
+    /// unique ones.
+    #[inline(always)]
+    fn strip(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        idx: &[u32],
+        p: &Prim,
+    ) {
+        let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
+        let f = p.first;
+        for i in 0..p.count.saturating_sub(2) {
+            let a = f + i;
+            let (u, v, w) = (map(a), map(a + 1), map(a + 2));
+            let t = Asm {
+                n: 3,
+                edges: 7,
+                v: if i % 2 == 0 { [u, v, w] } else { [v, u, w] },
+                provoking: w,
+            };
+            self.one(ctx, vout, wins, mats, &t);
+        }
     }
 
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
