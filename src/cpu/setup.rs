@@ -856,17 +856,23 @@ impl Geom {
         }
         // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
         // its exact integer increments; centres outside the box are masked off at the end.
-        let mut inside = 0xf;
+        // Per centre the three edges' values are OR-ed: the sign bit of the result is clear
+        // exactly when all three are >= 0 (four lanes, one test each, instead of twelve).
+        let mut or = [0i64; 4];
         for k in 0..3 {
             let [dx, dy] = self.d[k];
             let bias = i64::from(self.owns & (1 << k) == 0);
             let e = self.e[k] - bias;
             let (ex, ey) = (-dy * 256, dx * 256);
-            inside &= u8::from(e >= 0)
-                | u8::from(e + ex >= 0) << 1
-                | u8::from(e + ey >= 0) << 2
-                | u8::from(e + ex + ey >= 0) << 3;
+            or[0] |= e;
+            or[1] |= e + ex;
+            or[2] |= e + ey;
+            or[3] |= e + ex + ey;
         }
+        let inside = u8::from(or[0] >= 0)
+            | u8::from(or[1] >= 0) << 1
+            | u8::from(or[2] >= 0) << 2
+            | u8::from(or[3] >= 0) << 3;
         let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
         let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
         COVER_KNOWN | (inside & cols & rows)
