@@ -639,29 +639,40 @@ impl Worker {
             (ids, w)
         };
         let s = ctx.layout.stride;
-        let vert = |i: u32| {
-            let i = i as usize;
-            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
-            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
-        };
-        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
-        let prov = vert(provoking);
         let mat = mats.get(provoking as usize).copied().unwrap_or(0);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let quad = if ctx.rl.n == 4 && !flat {
+            // The colour alone, smooth: its four floats straight from each vertex (what
+            // `vert(i)[o..o + 4]` is), one range check each instead of two.
             let o = table[0].off as usize;
-            let c = |v: &[f32]| {
-                v.get(o..o + 4)
+            let c = |i: u32| {
+                let b = i as usize * s + o;
+                vout.get(b..b + 4)
+                    .filter(|_| o + 4 <= s)
                     .and_then(|c| <[f32; 4]>::try_from(c).ok())
                     .map(Vec4::from_array)
             };
-            match (c(vs[0]), c(vs[1]), c(vs[2])) {
+            match (c(ids[0]), c(ids[1]), c(ids[2])) {
                 (Some(a), Some(b), Some(c)) => Some([a, b, c]),
                 _ => None,
             }
         } else {
             None
+        };
+        // The whole vertices only where `emit_tri` reads varyings through `var`: without
+        // `quad`, and the provoking vertex only under FLAT (the only case `var` reads it).
+        let vert = |i: u32| {
+            let i = i as usize;
+            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        };
+        let (vs, prov) = match quad {
+            Some(_) => ([&[][..]; 3], &[][..]),
+            None => (
+                [vert(ids[0]), vert(ids[1]), vert(ids[2])],
+                if flat { vert(provoking) } else { &[][..] },
+            ),
         };
         self.emit_tri(
             ctx,
