@@ -471,10 +471,65 @@ impl Worker {
         b: &Batch,
         prims: &[Prim],
     ) {
+        self.start(ctx);
         let mut asm = std::mem::take(&mut self.asm);
-        super::assembly::assemble(prims, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
-        self.run(ctx, vout, wins, &b.mat, &asm);
+        let mut rest = prims;
+        while !rest.is_empty() {
+            // Triangle strips (a dense mesh's usual primitive) are set up as they are
+            // assembled, without the round trip through `asm`: the triangles, in the order
+            // and with the vertices, provoking vertex and edge flags `assembly::assemble`
+            // gives them. Runs of other primitives go through `assemble`.
+            let strips = rest
+                .iter()
+                .position(|p| p.mode != gl::TRIANGLE_STRIP)
+                .unwrap_or(rest.len());
+            let (now, after) = rest.split_at(strips);
+            for p in now {
+                self.strip(ctx, vout, wins, &b.mat, &b.idx, p);
+            }
+            let others = after
+                .iter()
+                .position(|p| p.mode == gl::TRIANGLE_STRIP)
+                .unwrap_or(after.len());
+            let (now, after) = after.split_at(others);
+            if !now.is_empty() {
+                super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+                for p in &asm {
+                    self.one(ctx, vout, wins, &b.mat, p);
+                }
+            }
+            rest = after;
+        }
         self.asm = asm;
+    }
+
+    /// Assembles and sets up the triangle strip `p` (§2.6.1): triangle i is given vertices
+    /// (i, i + 1, i + 2), its first two swapped when i is odd, provoking vertex i + 2, every
+    /// edge a boundary edge, as `assembly::assemble` makes it; `idx` maps given vertices to
+    /// unique ones.
+    #[inline(always)]
+    fn strip(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        idx: &[u32],
+        p: &Prim,
+    ) {
+        let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
+        let f = p.first;
+        for i in 0..p.count.saturating_sub(2) {
+            let a = f + i;
+            let (u, v, w) = (map(a), map(a + 1), map(a + 2));
+            let t = Asm {
+                n: 3,
+                edges: 7,
+                v: if i % 2 == 0 { [u, v, w] } else { [v, u, w] },
+                provoking: w,
+            };
+            self.one(ctx, vout, wins, mats, &t);
+        }
     }
 
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
@@ -584,29 +639,40 @@ impl Worker {
             (ids, w)
         };
         let s = ctx.layout.stride;
-        let vert = |i: u32| {
-            let i = i as usize;
-            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
-            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
-        };
-        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
-        let prov = vert(provoking);
         let mat = mats.get(provoking as usize).copied().unwrap_or(0);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let quad = if ctx.rl.n == 4 && !flat {
+            // The colour alone, smooth: its four floats straight from each vertex (what
+            // `vert(i)[o..o + 4]` is), one range check each instead of two.
             let o = table[0].off as usize;
-            let c = |v: &[f32]| {
-                v.get(o..o + 4)
+            let c = |i: u32| {
+                let b = i as usize * s + o;
+                vout.get(b..b + 4)
+                    .filter(|_| o + 4 <= s)
                     .and_then(|c| <[f32; 4]>::try_from(c).ok())
                     .map(Vec4::from_array)
             };
-            match (c(vs[0]), c(vs[1]), c(vs[2])) {
+            match (c(ids[0]), c(ids[1]), c(ids[2])) {
                 (Some(a), Some(b), Some(c)) => Some([a, b, c]),
                 _ => None,
             }
         } else {
             None
+        };
+        // The whole vertices only where `emit_tri` reads varyings through `var`: without
+        // `quad`, and the provoking vertex only under FLAT (the only case `var` reads it).
+        let vert = |i: u32| {
+            let i = i as usize;
+            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        };
+        let (vs, prov) = match quad {
+            Some(_) => ([&[][..]; 3], &[][..]),
+            None => (
+                [vert(ids[0]), vert(ids[1]), vert(ids[2])],
+                if flat { vert(provoking) } else { &[][..] },
+            ),
         };
         self.emit_tri(
             ctx,
@@ -801,17 +867,23 @@ impl Geom {
         }
         // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
         // its exact integer increments; centres outside the box are masked off at the end.
-        let mut inside = 0xf;
+        // Per centre the three edges' values are OR-ed: the sign bit of the result is clear
+        // exactly when all three are >= 0 (four lanes, one test each, instead of twelve).
+        let mut or = [0i64; 4];
         for k in 0..3 {
             let [dx, dy] = self.d[k];
             let bias = i64::from(self.owns & (1 << k) == 0);
             let e = self.e[k] - bias;
             let (ex, ey) = (-dy * 256, dx * 256);
-            inside &= u8::from(e >= 0)
-                | u8::from(e + ex >= 0) << 1
-                | u8::from(e + ey >= 0) << 2
-                | u8::from(e + ex + ey >= 0) << 3;
+            or[0] |= e;
+            or[1] |= e + ex;
+            or[2] |= e + ey;
+            or[3] |= e + ex + ey;
         }
+        let inside = u8::from(or[0] >= 0)
+            | u8::from(or[1] >= 0) << 1
+            | u8::from(or[2] >= 0) << 2
+            | u8::from(or[3] >= 0) << 3;
         let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
         let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
         COVER_KNOWN | (inside & cols & rows)

@@ -692,3 +692,91 @@ fn edges_along_a_user_clip_plane_are_drawn_in_line_mode() {
     assert!((1..=7).all(|y| px(&mut r, 8, y) != [0; 4]));
     assert!((0..16).all(|y| px(&mut r, 9, y) == [0; 4]));
 }
+
+/// Triangle strips are set up as they are assembled (`Worker::strip`), other primitives through
+/// `assembly::assemble`: strips of 0 to 9 vertices, with points, triangles and quads between
+/// them, give the pixels of the same triangles drawn as TRIANGLES in the strip's order (odd
+/// triangles with their first two vertices swapped, the third vertex provoking), smooth and
+/// flat, back faces culled, one Begin/End per primitive, with enough vertices for the parallel
+/// setup.
+#[test]
+fn strips_set_up_while_assembled_are_their_triangles() {
+    let pt = |k: usize| {
+        let h = |m: usize| ((k * m) % 997) as f32 / 997.0;
+        Vec4::new(
+            2.2 * h(7919) - 1.1,
+            2.2 * h(104_729) - 1.1,
+            h(31) - 0.5,
+            1.0,
+        )
+    };
+    let col = |k: usize| *PALETTE.get(k % PALETTE.len()).unwrap_or(&WHITE);
+    for flat in [false, true] {
+        let (mut a, mut st) = setup(61, 47);
+        let (mut b, _) = setup(61, 47);
+        if flat {
+            st.shade_model = gl::FLAT;
+        }
+        st.enables.depth_test = true;
+        // Culling makes each triangle's orientation, which the odd triangles' swap keeps,
+        // visible in the pixels.
+        st.enables.cull_face = true;
+        let mut k = 0;
+        let mut given = 0;
+        for s in 0..1500 {
+            let n = s % 10;
+            let vs: Vec<usize> = (k..k + n).collect();
+            k += n;
+            a.begin(gl::TRIANGLE_STRIP);
+            a.begin_materials(&st.materials);
+            for &v in &vs {
+                a.vertex(pt(v), &cur(col(v), Vec3::Z));
+            }
+            a.end();
+            b.begin(gl::TRIANGLES);
+            b.begin_materials(&st.materials);
+            for i in 0..n.saturating_sub(2) {
+                let t = if i % 2 == 0 {
+                    [i, i + 1, i + 2]
+                } else {
+                    [i + 1, i, i + 2]
+                };
+                for j in t {
+                    let v = vs[j];
+                    b.vertex(pt(v), &cur(col(v), Vec3::Z));
+                }
+            }
+            b.end();
+            given += n;
+            // Every seventh strip, a run of other primitives, the same in both.
+            if s % 7 == 3 {
+                for (mode, m) in [(gl::POINTS, 2), (gl::TRIANGLES, 3), (gl::QUADS, 4)] {
+                    for r in [&mut a, &mut b] {
+                        r.begin(mode);
+                        r.begin_materials(&st.materials);
+                        for v in k..k + m {
+                            r.vertex(pt(v), &cur(col(v), Vec3::Z));
+                        }
+                        r.end();
+                    }
+                    k += m;
+                }
+            }
+        }
+        assert!(
+            given > 4096,
+            "too few vertices for the parallel setup: {given}"
+        );
+        a.flush(&st);
+        b.flush(&st);
+        let (ca, cb) = (a.color(), b.color());
+        assert!(
+            ca.iter().any(|c| *c != ca[0]),
+            "nothing drawn (flat: {flat})"
+        );
+        assert!(
+            ca == cb,
+            "strips differ from their triangles (flat: {flat})"
+        );
+    }
+}
