@@ -640,6 +640,69 @@ pub fn store(row: &mut [[u8; 4]], c: &[B; 4], m: u8, mask: [bool; 4]) {
     }
 }
 
+/// `store` of the unorm8 conversion (`lanes::unorm8_lanes`) of `rgb` and `a`, without the
+/// channel-major bytes between: on x86-64 each lane's converted values (0..=255 in the low
+/// byte of its 32-bit lane, `unorm8_lanes`'s `maxps`, `minps`, `mulps`, `addps` and mask) are
+/// assembled as `r | g << 8 | b << 16 | a << 24`, the lane's pixel (`[u8; 4]` in memory
+/// order), and the group selected and stored as `store` does. The same bytes as `store` of
+/// the four `unorm8_lanes`.
+#[inline(always)]
+pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool; 4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(px) = row.get_mut(..LANES) {
+        use std::arch::x86_64::__m128i;
+        use std::arch::x86_64::{
+            _mm_add_ps, _mm_and_si128, _mm_andnot_si128, _mm_castps_si128, _mm_cmpeq_epi32,
+            _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps, _mm_min_ps, _mm_mul_ps, _mm_or_si128,
+            _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps, _mm_slli_epi32,
+            _mm_storeu_si128,
+        };
+        let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
+        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of a
+        // `[f32; 8]` at offsets 0 and 4; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read
+        // and written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        unsafe {
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+            let low = _mm_set1_epi32(0xFF);
+            let conv = |p: *const f32| {
+                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
+                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
+            };
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let cmv = _mm_set1_epi32(cm as i32);
+            let p = px.as_mut_ptr().cast::<__m128i>();
+            for h in 0..2 {
+                let o = 4 * h;
+                let v = _mm_or_si128(
+                    _mm_or_si128(
+                        conv(rgb[0].as_ptr().add(o)),
+                        _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
+                    ),
+                    _mm_or_si128(
+                        _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
+                        _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
+                    ),
+                );
+                let lv = _mm_set1_epi32(i32::from(m >> o));
+                let sel = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits), cmv);
+                let old = _mm_loadu_si128(p.add(h));
+                let out = _mm_or_si128(_mm_andnot_si128(sel, old), _mm_and_si128(sel, v));
+                _mm_storeu_si128(p.add(h), out);
+            }
+        }
+        return;
+    }
+    use super::lanes::unorm8_lanes;
+    let src = [
+        unorm8_lanes(rgb[0]),
+        unorm8_lanes(rgb[1]),
+        unorm8_lanes(rgb[2]),
+        unorm8_lanes(*a),
+    ];
+    store(row, &src, m, mask);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -903,6 +966,32 @@ mod tests {
                 }
             }
             assert_eq!(got, want, "m {m:#x} mask {mask:?}");
+        }
+    }
+
+    #[test]
+    fn store_unorm8_is_store_of_the_unorm8_bytes() {
+        let mut g = Gen(29);
+        for _ in 0..3000 {
+            let n = (g.next() % 12) as usize;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            // Around [0, 1], with NaNs, infinities, −0 and values past the ends now and then.
+            let mut f = || match g.next() % 16 {
+                0 => f32::NAN,
+                1 => f32::INFINITY,
+                2 => -0.0,
+                3 => f32::NEG_INFINITY,
+                _ => g.float(),
+            };
+            let c: [F; 4] = std::array::from_fn(|_| std::array::from_fn(|_| f()));
+            let m = g.next() as u8;
+            let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
+            let mut got = row0.clone();
+            store_unorm8(&mut got, &[c[0], c[1], c[2]], &c[3], m, mask);
+            let mut want = row0.clone();
+            let bytes = c.map(super::super::lanes::unorm8_lanes);
+            store(&mut want, &bytes, m, mask);
+            assert_eq!(got, want, "m {m:#x} mask {mask:?} {c:?}");
         }
     }
 }
