@@ -846,6 +846,25 @@ impl FragCtx<'_> {
                 }
                 return;
             }
+            if let ColorWrite::Blend(b) = &ops.write {
+                // SRC_ALPHA, ONE_MINUS_SRC_ALPHA and ONE, ONE stay pixel-major too.
+                let row = bufs.color.get_mut(i0..).unwrap_or_default();
+                if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                    match bufs.color2.as_deref_mut() {
+                        None => return,
+                        Some(c2) => {
+                            let row = c2.get_mut(i0..).unwrap_or_default();
+                            if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                                return;
+                            }
+                            // (A short second row: it takes the general route alone.)
+                            let src = [rgb[0], rgb[1], rgb[2], a].map(unorm8_lanes);
+                            self.write_group(ops, row, &src, m);
+                            return;
+                        }
+                    }
+                }
+            }
         }
         let src = [
             unorm8_lanes(rgb[0]),
