@@ -720,8 +720,14 @@ impl FragCtx<'_> {
     /// (`oplanes`): varyings, colour, clamp (§3.9), alpha test (§4.1.4), stencil and depth
     /// tests (§4.1.5, §4.1.6), fog (§3.10: it changes neither alpha nor anything the tests
     /// read, so it runs on the survivors only), blending or logic op (§4.1.8, §4.1.10), masked
-    /// write; each lane computes what `full` computes for its fragment. A textured colour comes
-    /// from `color_lanes` (a PHONG_WIN one from `color`, one fragment at a time).
+    /// write; each lane computes what `full` computes for its fragment.
+    ///
+    /// The route is chosen here, once per span, and each route is a function of its own, so
+    /// that a span sets up only what its route reads (one function holding every route paid
+    /// ≈570 instructions a span hoisting the texture units' and all varyings' addresses, and
+    /// a 1.2 KB `memset`, for spans of three groups on average): `tests_span` when no colour
+    /// is needed (ColorMask all false, no coverage count, no alpha test), `plain_span` for an
+    /// untextured colour, `tex_span` for a textured or PHONG_WIN one.
     #[allow(clippy::too_many_arguments)]
     fn full_span(
         &self,
@@ -735,15 +741,6 @@ impl FragCtx<'_> {
         x0: i32,
         n: usize,
     ) {
-        use super::lanes::{depth_lanes, lane_x, unorm8_lanes, LANES};
-        use super::oplanes as ol;
-        let ox = p.bbox[0];
-        let nflat = if p.flags & F_FLAT != 0 {
-            self.rl.spec.map_or(4, |s| s + 4)
-        } else {
-            0
-        };
-        let nv = self.rl.n.min(super::setup::MAXV);
         let n = n.min(TILE);
         // A polygon stipple (§3.5.6) removes fragments before any test.
         let y = p.bbox[1] + fy as i32;
@@ -752,130 +749,349 @@ impl FragCtx<'_> {
             Some(rows) if p.flags & F_LINE == 0 => all & stipple_mask(&rows, x0, y),
             _ => all,
         };
-        // The colour is the interpolated primary (plus the secondary): computed on lanes.
-        let plain = self.tex[0].is_none() && p.flags & F_PHONG == 0;
+        if live == 0 {
+            return;
+        }
+        // With ColorMask all false (and no coverage count) nothing reaches a colour buffer,
+        // so fog, blending and the stores are skipped, and without an alpha test the colour
+        // itself (the varyings, texturing) is never computed: only the stencil and depth
+        // tests and their writes remain.
+        let writes_color = self.count || self.color_mask != [false; 4];
+        if !writes_color && ops.alpha.is_none() {
+            self.tests_span(ops, bufs, p, zrow, base, x0, n, live);
+        } else if self.tex[0].is_none() && p.flags & F_PHONG == 0 {
+            self.plain_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+        } else {
+            self.tex_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+        }
+    }
+
+    /// The stencil and depth tests of a group (§4.1.5, §4.1.6) and their writes, for
+    /// `full_span`'s routes: fragment k of the group has z = `zrow + dz·fx[k]`; returns the
+    /// survivors of `m`, counted for an occlusion query.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn tests_group(
+        &self,
+        side: Option<&super::fragops::StencilSide>,
+        bufs: &mut TileBufs,
+        zrow: f32,
+        dz: f32,
+        fx: &[f32; LANES],
+        i0: usize,
+        m: u8,
+    ) -> u8 {
+        use super::lanes::{depth_lanes, lin_lanes};
+        use super::oplanes as ol;
+        let d = if self.depth_test {
+            depth_lanes(lin_lanes(zrow, dz, fx))
+        } else {
+            [0; LANES]
+        };
+        let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+        let m = match side {
+            Some(side) => {
+                let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                let depth = self
+                    .depth_test
+                    .then_some((self.depth_func, self.depth_mask));
+                ol::stencil_depth(side, depth, st, dp, d, m)
+            }
+            None if self.depth_test => ol::depth_test(self.depth_func, self.depth_mask, dp, d, m),
+            None => m,
+        };
+        if self.samples {
+            bufs.samples += u64::from(m.count_ones());
+        }
+        m
+    }
+
+    /// The fog (§3.10), conversion to unorm8 and colour write (`write_group`) of a group's
+    /// survivors `m`, clamped colour `rgb`, `a`, fog coordinates `coord`, at tile index `i0`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn finish_group(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        rgb: &mut [[f32; LANES]; 3],
+        a: [f32; LANES],
+        coord: [f32; LANES],
+        i0: usize,
+        m: u8,
+    ) {
+        use super::lanes::unorm8_lanes;
+        use super::oplanes as ol;
+        // Fog (§3.10) changes only R, G and B, which nothing before the colour write
+        // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
+        // EXP2 call `expf` only for fragments that are written.
+        if let Some(f) = &ops.fog {
+            ol::fog(f, rgb, coord, m);
+        }
+        if !self.count {
+            if let ColorWrite::Replace = ops.write {
+                // Straight to the pixels: each lane's four bytes assembled in its 32-bit lane
+                // (the copy of the channel-major bytes was taken apart byte by byte, ≈130
+                // instructions a group).
+                ol::store_unorm8(
+                    bufs.color.get_mut(i0..).unwrap_or_default(),
+                    rgb,
+                    &a,
+                    m,
+                    self.color_mask,
+                );
+                if let Some(c2) = bufs.color2.as_deref_mut() {
+                    let row = c2.get_mut(i0..).unwrap_or_default();
+                    ol::store_unorm8(row, rgb, &a, m, self.color_mask);
+                }
+                return;
+            }
+            if let ColorWrite::Blend(b) = &ops.write {
+                // SRC_ALPHA, ONE_MINUS_SRC_ALPHA and ONE, ONE stay pixel-major too.
+                let row = bufs.color.get_mut(i0..).unwrap_or_default();
+                if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                    match bufs.color2.as_deref_mut() {
+                        None => return,
+                        Some(c2) => {
+                            let row = c2.get_mut(i0..).unwrap_or_default();
+                            if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                                return;
+                            }
+                            // (A short second row: it takes the general route alone.)
+                            let src = [rgb[0], rgb[1], rgb[2], a].map(unorm8_lanes);
+                            self.write_group(ops, row, &src, m);
+                            return;
+                        }
+                    }
+                }
+            }
+        }
+        let src = [
+            unorm8_lanes(rgb[0]),
+            unorm8_lanes(rgb[1]),
+            unorm8_lanes(rgb[2]),
+            unorm8_lanes(a),
+        ];
+        // Blending and the logic op read each colour buffer's own contents (§4.1.8,
+        // §4.1.10).
+        self.write_group(ops, bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
+        if let Some(c2) = bufs.color2.as_deref_mut() {
+            self.write_group(ops, c2.get_mut(i0..).unwrap_or_default(), &src, m);
+        }
+    }
+
+    /// `full_span` when no colour is needed (no colour buffer written, no coverage count, no
+    /// alpha test): the stencil and depth tests and their writes alone, lanes `live` of the
+    /// `n` fragments from tile index `base`.
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn tests_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+        live: u64,
+    ) {
+        let ox = p.bbox[0];
+        let side = ops
+            .stencil
+            .as_ref()
+            .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
+        let dz = p.z[1];
+        let mut c = 0;
+        while c < n {
+            let m = ((live >> c) & 0xFF) as u8;
+            if m != 0 {
+                let fx = super::lanes::lane_x(x0 - ox + c as i32);
+                self.tests_group(side, bufs, zrow, dz, &fx, base + c, m);
+            }
+            c += LANES;
+        }
+    }
+
+    /// `full_span` for an untextured colour (no texturing unit, not PHONG_WIN), lanes `live`
+    /// of the `n` fragments from tile index `base`: the colour is the interpolated primary
+    /// (plus the secondary's RGB with the colour sum, §3.9), so the primary, the secondary's
+    /// RGB and the fog coordinate are the only varyings read and the only ones interpolated
+    /// (`lanes::RowVaryings`, the bits `lanes::varyings` gives them; their planes looked up
+    /// once per span), into eight rows.
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn plain_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+        live: u64,
+    ) {
+        use super::lanes::{lane_x, RowVaryings};
+        use super::oplanes as ol;
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let nv = self.rl.n.min(MAXV);
         let spec = self.rl.spec.filter(|&s| self.color_sum && s + 3 <= nv);
+        // The varyings read: R, G, B, A, then the secondary R, G, B, then the fog coordinate.
+        let mut sel = [0, 1, 2, 3, 0, 0, 0, 0];
+        let mut k = 4;
+        if let Some(s) = spec {
+            sel[4..7].copy_from_slice(&[s, s + 1, s + 2]);
+            k = 7;
+        }
+        let fog_row = match (&ops.fog, self.rl.fog.filter(|&o| o < nv)) {
+            (Some(_), Some(o)) => {
+                sel[k] = o;
+                k += 1;
+                Some(k - 1)
+            }
+            _ => None,
+        };
+        let writes_color = self.count || self.color_mask != [false; 4];
+        let side = ops
+            .stencil
+            .as_ref()
+            .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
+        let dz = p.z[1];
+        let row = RowVaryings::new(planes, nflat, nv, fy, &sel, k);
+        let mut v = [[0.0f32; LANES]; 8];
+        let mut c = 0;
+        while c < n {
+            let mut m = ((live >> c) & 0xFF) as u8;
+            let i0 = base + c;
+            let fx0 = x0 - ox + c as i32;
+            c += LANES;
+            if m == 0 {
+                continue;
+            }
+            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+            row.eval(fx0, &mut v);
+            let [r, g, b, a] = [v[0], v[1], v[2], v[3]];
+            let mut rgb = [r, g, b];
+            if spec.is_some() {
+                for (ch, add) in rgb.iter_mut().zip(&v[4..7]) {
+                    for l in 0..LANES {
+                        ch[l] += add[l];
+                    }
+                }
+                // (Alpha gains 0.0, which leaves every value's bits as they are but −0,
+                // whose clamp below gives +0 either way.)
+            }
+            let mut rgb = [
+                ol::clamp01(rgb[0]),
+                ol::clamp01(rgb[1]),
+                ol::clamp01(rgb[2]),
+            ];
+            let a = ol::clamp01(a);
+            if let Some((func, reference)) = ops.alpha {
+                m &= ol::alpha_test(func, reference, a);
+                if m == 0 {
+                    continue;
+                }
+            }
+            m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+            if m == 0 || !writes_color {
+                continue;
+            }
+            let coord = fog_row.map_or([0.0; LANES], |i| v[i]);
+            self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
+        }
+    }
+
+    /// `full_span` for a textured or PHONG_WIN colour (`color_lanes`; a PHONG_WIN one from
+    /// `color`, one fragment at a time), lanes `live` of the `n` fragments from tile index
+    /// `base`.
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn tex_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+        live: u64,
+    ) {
+        use super::lanes::lane_x;
+        use super::oplanes as ol;
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let nv = self.rl.n.min(MAXV);
+        let y = p.bbox[1] + fy as i32;
         let fog_at = self.rl.fog.filter(|&o| o < nv);
         let side = ops
             .stencil
             .as_ref()
             .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
-        let depth = self
-            .depth_test
-            .then_some((self.depth_func, self.depth_mask));
-        let on_lanes = !plain && self.tex_lanes_ok(p);
+        let on_lanes = self.tex_lanes_ok(p);
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - p.bbox[1]) as f32;
-        // What each group runs, decided once per span: with ColorMask all false (and no
-        // coverage count) nothing reaches a colour buffer, so fog, blending and the stores
-        // are skipped, and without an alpha test the colour itself (the varyings, texturing)
-        // is never computed: only the stencil and depth tests and their writes remain.
         let writes_color = self.count || self.color_mask != [false; 4];
-        let needs_color = writes_color || ops.alpha.is_some();
         let dz = p.z[1];
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
-        let mut v = [[0.0f32; LANES]; super::setup::MAXV];
+        let mut v = [[0.0f32; LANES]; MAXV];
         let mut c = 0;
         while c < n {
-            let m = ((live >> c) & 0xFF) as u8;
+            let mut m = ((live >> c) & 0xFF) as u8;
             let i0 = base + c;
+            let fx0 = x0 - ox + c as i32;
+            let gx = x0 + c as i32;
+            c += LANES;
             if m == 0 {
-                c += LANES;
                 continue;
             }
-            let fx = lane_x(x0 - ox + c as i32);
-            let mut m = m;
-            let mut rgb = [[0.0f32; LANES]; 3];
-            let mut a = [0.0f32; LANES];
-            if needs_color {
-                // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
-                // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
-                super::lanes::varyings(planes, nflat, x0 - ox + c as i32, fy, &mut v[..nv]);
-                let mut col: [ol::F; 4] = [v[0], v[1], v[2], v[3]];
-                if plain {
-                    if let Some(s) = spec {
-                        for (k, ch) in col.iter_mut().enumerate().take(3) {
-                            let add = v[s + k];
-                            for l in 0..LANES {
-                                ch[l] += add[l];
-                            }
-                        }
-                        // (Alpha gains 0.0, which leaves every value's bits as they are
-                        // but −0, whose clamp below gives +0 either way.)
+            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+            // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
+            super::lanes::varyings(planes, nflat, fx0, fy, &mut v[..nv]);
+            // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
+            if lod {
+                for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
+                    let Some((tx, to)) = *t else { break };
+                    if tx.needs_lambda() {
+                        *lu = sq.lanes(tx, planes, to, gx);
                     }
-                } else {
-                    // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
-                    if lod {
-                        for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
-                            let Some((tx, to)) = *t else { break };
-                            if tx.needs_lambda() {
-                                *lu = sq.lanes(tx, planes, to, x0 + c as i32);
-                            }
-                        }
-                    }
-                    col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
                 }
-                rgb = [
-                    ol::clamp01(col[0]),
-                    ol::clamp01(col[1]),
-                    ol::clamp01(col[2]),
-                ];
-                a = ol::clamp01(col[3]);
-                if let Some((func, reference)) = ops.alpha {
-                    m &= ol::alpha_test(func, reference, a);
-                }
+            }
+            let col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
+            let mut rgb = [
+                ol::clamp01(col[0]),
+                ol::clamp01(col[1]),
+                ol::clamp01(col[2]),
+            ];
+            let a = ol::clamp01(col[3]);
+            if let Some((func, reference)) = ops.alpha {
+                m &= ol::alpha_test(func, reference, a);
                 if m == 0 {
-                    c += LANES;
                     continue;
                 }
             }
-            let d = if self.depth_test {
-                depth_lanes(super::lanes::lin_lanes(zrow, dz, &fx))
-            } else {
-                [0; LANES]
-            };
-            let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
-            m = match side {
-                Some(side) => {
-                    let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
-                    ol::stencil_depth(side, depth, st, dp, d, m)
-                }
-                None if self.depth_test => {
-                    ol::depth_test(self.depth_func, self.depth_mask, dp, d, m)
-                }
-                None => m,
-            };
-            if m == 0 {
-                c += LANES;
+            m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+            if m == 0 || !writes_color {
                 continue;
             }
-            if self.samples {
-                bufs.samples += u64::from(m.count_ones());
-            }
-            if !writes_color {
-                c += LANES;
-                continue;
-            }
-            // Fog (§3.10) changes only R, G and B, which nothing before the colour write
-            // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
-            // EXP2 call `expf` only for fragments that are written.
-            if let Some(f) = &ops.fog {
-                ol::fog(f, &mut rgb, fog_at.map_or([0.0; LANES], |o| v[o]), m);
-            }
-            let src = [
-                unorm8_lanes(rgb[0]),
-                unorm8_lanes(rgb[1]),
-                unorm8_lanes(rgb[2]),
-                unorm8_lanes(a),
-            ];
-            // Blending and the logic op read each colour buffer's own contents (§4.1.8,
-            // §4.1.10).
-            self.write_group(ops, bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
-            if let Some(c2) = bufs.color2.as_deref_mut() {
-                self.write_group(ops, c2.get_mut(i0..).unwrap_or_default(), &src, m);
-            }
-            c += LANES;
+            let coord = fog_at.map_or([0.0; LANES], |o| v[o]);
+            self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
         }
     }
 
@@ -1144,6 +1360,75 @@ mod tests {
                 got == want,
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
             );
+            // The same span with per-fragment operations (`full_span`'s textured route,
+            // `tex_span`) against each fragment through `full`.
+            let mut h = Gen(1000 + round as u64);
+            let ops = Ops {
+                fog: (h.next() % 2 == 0).then(|| FogEval {
+                    mode: h.pick(&[gl::LINEAR, gl::EXP, gl::EXP2]),
+                    density: (h.next() % 100) as f32 * 0.05,
+                    start: -0.5,
+                    end: 0.9,
+                    color: Vec3::new(h.mostly_unit(), 0.5, h.mostly_unit()),
+                }),
+                alpha: (h.next() % 2 == 0).then(|| (h.pick(&FUNCS), h.next() as u8)),
+                stencil: (h.next() % 2 == 0).then(|| {
+                    [0, 1].map(|_| StencilSide {
+                        func: h.pick(&FUNCS),
+                        reference: h.next() as u8 % 4,
+                        mask: 3,
+                        ops: [gl::KEEP, gl::INCR, gl::REPLACE],
+                        write: 0xFF,
+                    })
+                }),
+                write: match h.next() % 3 {
+                    0 => ColorWrite::Replace,
+                    1 => ColorWrite::Blend(BlendEval {
+                        src_rgb: gl::SRC_ALPHA,
+                        dst_rgb: gl::ONE_MINUS_SRC_ALPHA,
+                        src_alpha: gl::SRC_ALPHA,
+                        dst_alpha: gl::ONE_MINUS_SRC_ALPHA,
+                        eq_rgb: gl::FUNC_ADD,
+                        eq_alpha: gl::FUNC_ADD,
+                        constant: [0; 4],
+                    }),
+                    _ => ColorWrite::Logic(gl::XOR),
+                },
+            };
+            let fo = FragCtx {
+                ops: Some(ops),
+                ..f.clone()
+            };
+            let stencil: Vec<u8> = (0..TILE * TILE).map(|_| h.next() as u8 % 4).collect();
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) =
+                    (color.clone(), color.clone(), depth.clone(), stencil.clone());
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    fo.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                } else {
+                    let fy = (y - p.bbox[1]) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
+                    let n = (x1 - x0 + 1) as usize;
+                    scalar_span(&fo, &ops, &mut bufs, &p, &planes, fy, zrow, base, x0, n);
+                }
+                let samples = bufs.samples;
+                (c, c2, d, s, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(
+                got == want,
+                "round {round} with {ops:?}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
         }
     }
 
@@ -1177,6 +1462,13 @@ mod tests {
             };
             if spec {
                 rl.spec = Some(rl.n);
+                rl.n += 4;
+            }
+            // Now and then coordinates of a unit without texturing between the colours and
+            // the fog coordinate (`plain_span` interpolates only the varyings it reads).
+            let unused = g.next() % 3 == 0;
+            if unused {
+                rl.tex[1] = Some(rl.n);
                 rl.n += 4;
             }
             if fog_on || g.next() % 3 == 0 {
@@ -1269,6 +1561,10 @@ mod tests {
                     g.mostly_unit() * 1e-2,
                     g.mostly_unit() * 1e-2,
                 ]);
+            }
+            if unused && g.next() % 2 == 0 {
+                // A pool shorter than the layout: the missing floats read as 0.
+                planes.truncate(3 + (g.next() % (3 * rl.n as u64)) as usize);
             }
             let color: Vec<[u8; 4]> = (0..TILE * TILE)
                 .map(|_| (g.next() as u32).to_le_bytes())

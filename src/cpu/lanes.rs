@@ -416,6 +416,108 @@ fn varyings_sse(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
     }
 }
 
+/// Chosen varyings of one span row, for spans that read a few of the layout's varyings: their
+/// planes looked up (and their y terms multiplied out) once per span, so that each group of
+/// eight only evaluates them. [`RowVaryings::eval`] gives row i < `k` varying `sel[i]` of a
+/// span whose first `nv` varyings `varyings` would compute, with exactly the bits `varyings`
+/// gives it there (the same plane expressions, the same `divps` for 1/w, the same `mulps`),
+/// or +0 in every lane when `sel[i]` ≥ `nv` (what the zeroed rows past those `varyings`
+/// writes hold: its plane is taken as 0, 0, 0 and not divided, and (0 + 0·x) + 0 is +0 for
+/// every finite x).
+pub struct RowVaryings<const K: usize> {
+    /// 1/w's plane: constant, x step, y term.
+    w: [f32; 3],
+    /// Each chosen varying's plane, as `w`.
+    p: [[f32; 3]; K],
+    /// Multiplied by w (not flat, not past `nv`).
+    div: [bool; K],
+    /// Rows evaluated.
+    k: usize,
+}
+
+impl<const K: usize> RowVaryings<K> {
+    /// The row `fy` of the varyings `sel[..k]` of `planes` (see [`varyings`]: `nflat` flat
+    /// varyings first, `pl(j)` 0 past the pool's end).
+    #[inline(always)]
+    pub fn new(
+        planes: &[f32],
+        nflat: usize,
+        nv: usize,
+        fy: f32,
+        sel: &[usize; K],
+        k: usize,
+    ) -> Self {
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let k = k.min(K);
+        let mut p = [[0.0; 3]; K];
+        let mut div = [false; K];
+        for ((p, d), &j) in p.iter_mut().zip(&mut div).zip(sel).take(k) {
+            if j < nv {
+                let q = 3 + 3 * j;
+                *p = [pl(q), pl(q + 1), pl(q + 2) * fy];
+                *d = j >= nflat;
+            }
+        }
+        RowVaryings {
+            w: [pl(0), pl(1), pl(2) * fy],
+            p,
+            div,
+            k,
+        }
+    }
+
+    /// The chosen varyings of the group whose first lane is at x offset `fx0`: `out[i]` for
+    /// i < `k` (rows past it are left as they are).
+    #[inline(always)]
+    pub fn eval(&self, fx0: i32, out: &mut [[f32; LANES]; K]) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::{
+                _mm_add_ps, _mm_div_ps, _mm_loadu_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
+            };
+            const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+            // SAFETY: as in `varyings_sse`: SSE is part of the x86-64 baseline; the loads
+            // read four f32 at offsets 0 and 4 of the eight-float `IOTA`, the stores write
+            // four f32 at offsets 0 and 4 of a `[f32; 8]` (in bounds, no alignment needed).
+            unsafe {
+                let b = _mm_set1_ps(fx0 as f32);
+                let (xlo, xhi) = (
+                    _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr())),
+                    _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr().add(4))),
+                );
+                let plane = |p: &[f32; 3]| {
+                    let (a, dx, yt) = (_mm_set1_ps(p[0]), _mm_set1_ps(p[1]), _mm_set1_ps(p[2]));
+                    (
+                        _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xlo)), yt),
+                        _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xhi)), yt),
+                    )
+                };
+                let (wlo, whi) = plane(&self.w);
+                let one = _mm_set1_ps(1.0);
+                let (ilo, ihi) = (_mm_div_ps(one, wlo), _mm_div_ps(one, whi));
+                for ((o, p), &d) in out.iter_mut().zip(&self.p).zip(&self.div).take(self.k) {
+                    let (mut lo, mut hi) = plane(p);
+                    if d {
+                        lo = _mm_mul_ps(lo, ilo);
+                        hi = _mm_mul_ps(hi, ihi);
+                    }
+                    _mm_storeu_ps(o.as_mut_ptr(), lo);
+                    _mm_storeu_ps(o.as_mut_ptr().add(4), hi);
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let fx = lane_x(fx0);
+            let inv = recip(plane_lanes(self.w[0], self.w[1], self.w[2], &fx));
+            for ((o, p), &d) in out.iter_mut().zip(&self.p).zip(&self.div).take(self.k) {
+                let val = plane_lanes(p[0], p[1], p[2], &fx);
+                *o = if d { mul_lanes(&val, &inv) } else { val };
+            }
+        }
+    }
+}
+
 /// The eight lanes' colours as pixel-major vectors: `out[l]` = (r[l], g[l], b[l], a[l]) (SSE
 /// unpacks and moves on x86-64, a 4x4 transposition per half; only moves, so every bit is
 /// kept).

@@ -640,6 +640,171 @@ pub fn store(row: &mut [[u8; 4]], c: &[B; 4], m: u8, mask: [bool; 4]) {
     }
 }
 
+/// `store` of the unorm8 conversion (`lanes::unorm8_lanes`) of `rgb` and `a`, without the
+/// channel-major bytes between: on x86-64 each lane's converted values (0..=255 in the low
+/// byte of its 32-bit lane, `unorm8_lanes`'s `maxps`, `minps`, `mulps`, `addps` and mask) are
+/// assembled as `r | g << 8 | b << 16 | a << 24`, the lane's pixel (`[u8; 4]` in memory
+/// order), and the group selected and stored as `store` does. The same bytes as `store` of
+/// the four `unorm8_lanes`.
+#[inline(always)]
+pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool; 4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(px) = row.get_mut(..LANES) {
+        use std::arch::x86_64::__m128i;
+        use std::arch::x86_64::{
+            _mm_add_ps, _mm_and_si128, _mm_andnot_si128, _mm_castps_si128, _mm_cmpeq_epi32,
+            _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps, _mm_min_ps, _mm_mul_ps, _mm_or_si128,
+            _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps, _mm_slli_epi32,
+            _mm_storeu_si128,
+        };
+        let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
+        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of a
+        // `[f32; 8]` at offsets 0 and 4; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read
+        // and written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        unsafe {
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+            let low = _mm_set1_epi32(0xFF);
+            let conv = |p: *const f32| {
+                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
+                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
+            };
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let cmv = _mm_set1_epi32(cm as i32);
+            let p = px.as_mut_ptr().cast::<__m128i>();
+            for h in 0..2 {
+                let o = 4 * h;
+                let v = _mm_or_si128(
+                    _mm_or_si128(
+                        conv(rgb[0].as_ptr().add(o)),
+                        _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
+                    ),
+                    _mm_or_si128(
+                        _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
+                        _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
+                    ),
+                );
+                let lv = _mm_set1_epi32(i32::from(m >> o));
+                let sel = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits), cmv);
+                let old = _mm_loadu_si128(p.add(h));
+                let out = _mm_or_si128(_mm_andnot_si128(sel, old), _mm_and_si128(sel, v));
+                _mm_storeu_si128(p.add(h), out);
+            }
+        }
+        return;
+    }
+    use super::lanes::unorm8_lanes;
+    let src = [
+        unorm8_lanes(rgb[0]),
+        unorm8_lanes(rgb[1]),
+        unorm8_lanes(rgb[2]),
+        unorm8_lanes(*a),
+    ];
+    store(row, &src, m, mask);
+}
+
+/// The usual blends of `blend` (FUNC_ADD for RGB and alpha with SRC_ALPHA,
+/// ONE_MINUS_SRC_ALPHA or ONE, ONE for both) of the unorm8 conversion of `rgb` and `a` over a
+/// whole group of `row` (eight pixels), stored as `store` stores; false (nothing written) for
+/// another state, a shorter row or another architecture. On x86-64 every step stays
+/// pixel-major (no channel-major bytes between): the source pixels are assembled as in
+/// `store_unorm8`; ONE, ONE is the saturating byte sum (`paddusb`); SRC_ALPHA,
+/// ONE_MINUS_SRC_ALPHA widens both sides to 16 bits (two pixels a register), broadcasts each
+/// source pixel's alpha over its four channels (`pshuflw`/`pshufhw`), takes `mul8_lanes`'s
+/// products and rounding (`pmullw`, `psrlw`, `paddw`) and their sum (at most 510), which the
+/// unsigned saturating pack (`packuswb`) limits to 255 as `min(255)` does. The same bytes as
+/// `store` of `blend` of the four `unorm8_lanes` over `load`.
+#[inline(always)]
+pub fn blend_unorm8(
+    b: &BlendEval,
+    row: &mut [[u8; 4]],
+    rgb: &[F; 3],
+    a: &F,
+    m: u8,
+    mask: [bool; 4],
+) -> bool {
+    let usual = b.eq_rgb == gl::FUNC_ADD
+        && b.eq_alpha == gl::FUNC_ADD
+        && b.src_rgb == b.src_alpha
+        && b.dst_rgb == b.dst_alpha;
+    let add = usual && b.src_rgb == gl::ONE && b.dst_rgb == gl::ONE;
+    let over = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE_MINUS_SRC_ALPHA;
+    if !(add || over) {
+        return false;
+    }
+    #[cfg(target_arch = "x86_64")]
+    if let Some(px) = row.get_mut(..LANES) {
+        use std::arch::x86_64::{
+            __m128i, _mm_add_epi16, _mm_add_ps, _mm_adds_epu8, _mm_and_si128, _mm_andnot_si128,
+            _mm_castps_si128, _mm_cmpeq_epi32, _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps,
+            _mm_min_ps, _mm_mul_ps, _mm_mullo_epi16, _mm_or_si128, _mm_packus_epi16,
+            _mm_set1_epi16, _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps,
+            _mm_setzero_si128, _mm_shufflehi_epi16, _mm_shufflelo_epi16, _mm_slli_epi32,
+            _mm_srli_epi16, _mm_storeu_si128, _mm_sub_epi16, _mm_unpackhi_epi8, _mm_unpacklo_epi8,
+        };
+        let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
+        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of a
+        // `[f32; 8]` at offsets 0 and 4; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read
+        // and written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        unsafe {
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let (k, bias) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+            let low = _mm_set1_epi32(0xFF);
+            let conv = |p: *const f32| {
+                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
+                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), bias)), low)
+            };
+            let z = _mm_setzero_si128();
+            let (c255, c128) = (_mm_set1_epi16(255), _mm_set1_epi16(128));
+            // `mul8_lanes` of eight 16-bit lanes.
+            let mul8 = |x: __m128i, y: __m128i| {
+                let p = _mm_mullo_epi16(x, y);
+                _mm_srli_epi16::<8>(_mm_add_epi16(
+                    _mm_add_epi16(p, _mm_srli_epi16::<8>(p)),
+                    c128,
+                ))
+            };
+            // Two pixels' source over destination, widened.
+            let over2 = |s: __m128i, d: __m128i| {
+                let sa = _mm_shufflehi_epi16::<0xFF>(_mm_shufflelo_epi16::<0xFF>(s));
+                _mm_add_epi16(mul8(s, sa), mul8(d, _mm_sub_epi16(c255, sa)))
+            };
+            let bits = _mm_set_epi32(8, 4, 2, 1);
+            let cmv = _mm_set1_epi32(cm as i32);
+            let p = px.as_mut_ptr().cast::<__m128i>();
+            for h in 0..2 {
+                let o = 4 * h;
+                let src = _mm_or_si128(
+                    _mm_or_si128(
+                        conv(rgb[0].as_ptr().add(o)),
+                        _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
+                    ),
+                    _mm_or_si128(
+                        _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
+                        _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
+                    ),
+                );
+                let old = _mm_loadu_si128(p.add(h));
+                let v = if add {
+                    _mm_adds_epu8(src, old)
+                } else {
+                    _mm_packus_epi16(
+                        over2(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
+                        over2(_mm_unpackhi_epi8(src, z), _mm_unpackhi_epi8(old, z)),
+                    )
+                };
+                let lv = _mm_set1_epi32(i32::from(m >> o));
+                let sel = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits), cmv);
+                let out = _mm_or_si128(_mm_andnot_si128(sel, old), _mm_and_si128(sel, v));
+                _mm_storeu_si128(p.add(h), out);
+            }
+        }
+        return true;
+    }
+    let _ = (row, rgb, a, m, mask);
+    false
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -904,5 +1069,75 @@ mod tests {
             }
             assert_eq!(got, want, "m {m:#x} mask {mask:?}");
         }
+    }
+
+    #[test]
+    fn store_unorm8_is_store_of_the_unorm8_bytes() {
+        let mut g = Gen(29);
+        for _ in 0..3000 {
+            let n = (g.next() % 12) as usize;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            // Around [0, 1], with NaNs, infinities, −0 and values past the ends now and then.
+            let mut f = || match g.next() % 16 {
+                0 => f32::NAN,
+                1 => f32::INFINITY,
+                2 => -0.0,
+                3 => f32::NEG_INFINITY,
+                _ => g.float(),
+            };
+            let c: [F; 4] = std::array::from_fn(|_| std::array::from_fn(|_| f()));
+            let m = g.next() as u8;
+            let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
+            let mut got = row0.clone();
+            store_unorm8(&mut got, &[c[0], c[1], c[2]], &c[3], m, mask);
+            let mut want = row0.clone();
+            let bytes = c.map(super::super::lanes::unorm8_lanes);
+            store(&mut want, &bytes, m, mask);
+            assert_eq!(got, want, "m {m:#x} mask {mask:?} {c:?}");
+        }
+    }
+
+    #[test]
+    fn blend_unorm8_is_store_of_blend_of_the_unorm8_bytes() {
+        let mut g = Gen(31);
+        let factors = [gl::ONE, gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA, gl::ZERO];
+        let mut done = 0;
+        for _ in 0..6000 {
+            let n = (g.next() % 12) as usize;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let c: [F; 4] = std::array::from_fn(|_| g.lanes());
+            let m = g.next() as u8;
+            let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
+            let (sf, df) = match g.next() % 3 {
+                0 => (gl::ONE, gl::ONE),
+                1 => (gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA),
+                _ => (g.pick(&factors), g.pick(&factors)),
+            };
+            let b = BlendEval {
+                src_rgb: sf,
+                dst_rgb: df,
+                src_alpha: if g.next() % 8 == 0 { gl::ONE } else { sf },
+                dst_alpha: df,
+                eq_rgb: gl::FUNC_ADD,
+                eq_alpha: if g.next() % 8 == 0 {
+                    gl::FUNC_SUBTRACT
+                } else {
+                    gl::FUNC_ADD
+                },
+                constant: [0; 4],
+            };
+            let mut got = row0.clone();
+            if !blend_unorm8(&b, &mut got, &[c[0], c[1], c[2]], &c[3], m, mask) {
+                assert_eq!(got, row0, "nothing written when not handled");
+                continue;
+            }
+            done += 1;
+            let mut want = row0.clone();
+            let bytes = c.map(super::super::lanes::unorm8_lanes);
+            let out = blend(&b, &bytes, &load(&want));
+            store(&mut want, &out, m, mask);
+            assert_eq!(got, want, "{b:?} m {m:#x} mask {mask:?} {c:?}");
+        }
+        assert!(done > 1000, "{done} handled");
     }
 }
