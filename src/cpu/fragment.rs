@@ -1221,6 +1221,7 @@ mod tests {
             gl::SRC_ALPHA_SATURATE,
         ];
         let sops = [gl::KEEP, gl::ZERO, gl::REPLACE, gl::INCR, gl::INVERT];
+        let mut written = 0;
         for round in 0..3000 {
             let textured = round % 4 == 3;
             let mut state = State::new(4, 4);
@@ -1420,7 +1421,16 @@ mod tests {
             };
             let (got, want) = (run(true), run(false));
             assert!(got == want, "round {round}: {f:?} {p:?} rows {rows:?}");
+            if got.0 != color {
+                written += 1;
+            }
         }
+        // The cases are not vacuous: many rounds write colours, many are left untouched
+        // (fragments discarded by the coverage or failing the tests, or masked).
+        assert!(
+            (600..2400).contains(&written),
+            "{written} of 3000 rounds wrote"
+        );
     }
 
     /// Textured spans without per-fragment operations (`tri_span`'s general path: the
