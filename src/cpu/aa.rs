@@ -45,7 +45,9 @@ pub fn coverage_lanes(flags: u8, a: [&[f32; LANES]; 4]) -> ([f32; LANES], u8) {
         for l in 0..LANES {
             let d = a0[l] * a0[l] + a1[l] * a1[l];
             let (k, one) = (a2[l], a3[l]);
-            keep |= u8::from(!(one < d)) << l;
+            // Kept unless 1 < d: a NaN d (or 1) keeps the fragment.
+            let discard = one < d;
+            keep |= u8::from(!discard) << l;
             let c = (1.0 / (one - k)) * (one - d);
             cov[l] = if k >= d { c } else { one };
         }
