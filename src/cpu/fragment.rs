@@ -1234,14 +1234,14 @@ mod tests {
                 for (k, w) in [4, 2, 1].into_iter().enumerate() {
                     let texels = (0..w * w)
                         .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
-                        .collect();
+                        .collect::<Vec<_>>();
                     obj.levels[k] = Some(Level {
                         depth: 1,
                         width: w,
                         height: w,
                         internal_format: gl::RGBA as i32,
                         base: gl::RGBA,
-                        texels,
+                        texels: texels.into(),
                     });
                 }
                 state.textures.defaults[1] = Arc::new(obj);
