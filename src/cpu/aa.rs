@@ -24,27 +24,43 @@
 //! POLYGON_SMOOTH changes nothing on llvmpipe (measured: a smooth triangle's pixels are those
 //! of the plain one, alpha untouched), so it changes nothing here.
 
+use super::lanes::LANES;
 use super::setup::{snap, SetupCtx, WVert, Worker, F_AALINE, F_AAPOINT, F_LINE};
 
-/// The coverage factor of a smooth point or line fragment from its interpolated `aa`
-/// coordinates (`F_AAPOINT` or `F_AALINE` in `flags`); `None`: discarded.
-#[inline]
-pub fn coverage(flags: u8, a: [f32; 4]) -> Option<f32> {
-    let sat = |v: f32| v.clamp(0.0, 1.0);
+/// The coverage factors of eight smooth point or line fragments (`F_AAPOINT` or `F_AALINE` in
+/// `flags`) from their interpolated `aa` coordinates `a` (lane l's at `a[j][l]`), and the mask
+/// of the lanes kept (bit l clear: lane l is discarded, its factor unspecified). Every lane
+/// computes the epilogue of the module docs with the same operations in the same order as a
+/// scalar fragment would (plain loops over the lanes, no `Option`, so that the compiler can
+/// keep them in SIMD registers): a point's fragment is discarded when 1 (its `a[3]`) < d (not for a NaN
+/// d), its factor is (1 / (1 − k))·(1 − d) when k >= d, else that 1; a line's is
+/// sat(w − |x|)·min(sat(h − |z|), 2h − 1), `f32::clamp` and `f32::min` (a NaN stays in the
+/// first, is passed over by the second).
+#[inline(always)]
+pub fn coverage_lanes(flags: u8, a: [&[f32; LANES]; 4]) -> ([f32; LANES], u8) {
+    let [a0, a1, a2, a3] = a;
+    let mut cov = [0.0f32; LANES];
     if flags & F_AAPOINT != 0 {
-        let d = a[0] * a[0] + a[1] * a[1];
-        let (k, one) = (a[2], a[3]);
-        if one < d {
-            return None;
+        let mut keep = 0u8;
+        for l in 0..LANES {
+            let d = a0[l] * a0[l] + a1[l] * a1[l];
+            let (k, one) = (a2[l], a3[l]);
+            // Kept unless 1 < d: a NaN d (or 1) keeps the fragment.
+            let discard = one < d;
+            keep |= u8::from(!discard) << l;
+            let c = (1.0 / (one - k)) * (one - d);
+            cov[l] = if k >= d { c } else { one };
         }
-        let cov = (1.0 / (one - k)) * (one - d);
-        Some(if k >= d { cov } else { one })
-    } else {
-        let len = a[3] * 2.0 - 1.0;
-        let across = sat(a[1] - a[0].abs());
-        let along = sat(a[3] - a[2].abs());
-        Some(across * along.min(len))
+        return (cov, keep);
     }
+    let sat = |v: f32| v.clamp(0.0, 1.0);
+    for l in 0..LANES {
+        let len = a3[l] * 2.0 - 1.0;
+        let across = sat(a1[l] - a0[l].abs());
+        let along = sat(a3[l] - a2[l].abs());
+        cov[l] = across * along.min(len);
+    }
+    (cov, 0xFF)
 }
 
 impl Worker {

@@ -451,7 +451,7 @@ impl FragCtx<'_> {
         x1: i32,
     ) {
         if p.flags & (F_AAPOINT | F_AALINE) != 0 {
-            return self.aa_span(bufs, p, planes, y, x0, x1);
+            return self.aa_rows(bufs, p, planes, &[[y, x0, x1]]);
         }
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -598,56 +598,206 @@ impl FragCtx<'_> {
         }
     }
 
-    /// A span of a smooth point's or line's quad (`aa.rs`): each fragment's coverage from its
-    /// interpolated antialiasing coordinates multiplies its alpha (after texturing, before
-    /// the fragment operations), or discards it; never polygon-stippled.
-    fn aa_span(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], y: i32, x0: i32, x1: i32) {
+    /// Spans of a smooth point's or line's quad triangle (`aa.rs`), `rows` holding each span's
+    /// window row and first and last pixel (all inside the tile): each fragment's coverage
+    /// from its interpolated antialiasing coordinates multiplies its alpha (after texturing
+    /// and the colour sum, before the fragment operations), or discards it; never
+    /// polygon-stippled. What depends on the primitive alone is decided once for all its rows
+    /// in the tile (a span is a group or two: per-span set-up was a third of the work). Eight
+    /// fragments at a time: the varyings (`lanes::varyings`), the coverage
+    /// (`aa::coverage_lanes`; a group whose lanes are all discarded stops there), the colour
+    /// (on lanes without texturing, else `color_lanes`), then `ops_group` or the depth test
+    /// and the masked store; each lane computes what one fragment's `color`, alpha times
+    /// coverage, then `full` (or `depth` and `write`) computes.
+    pub fn aa_rows(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], rows: &[[i32; 3]]) {
+        use super::lanes::{depth_lanes, lane_x, lin_lanes, unorm8_lanes};
+        use super::oplanes as ol;
+        const ZERO: [f32; LANES] = [0.0; LANES];
         let Some(o) = self.rl.aa else {
             return;
         };
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
-        let fy = (y - oy) as f32;
-        let zrow = p.z[0] + p.z[2] * fy;
-        let row = ((y - bufs.y) as usize) * TILE;
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
-        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
-        let mut v = [0.0f32; super::setup::MAXV];
-        let nv = self.rl.n.min(v.len());
-        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
-        for x in x0..=x1 {
-            let fx = (x - ox) as f32;
-            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
-            for (j, vj) in v.iter_mut().enumerate().take(nv) {
-                let k = 3 + 3 * j;
-                let val = pl(k) + pl(k + 1) * fx + pl(k + 2) * fy;
-                *vj = if j < nflat { val } else { val * inv };
-            }
-            let g = |j: usize| v.get(o + j).copied().unwrap_or(0.0);
-            let Some(cov) = super::aa::coverage(p.flags, [g(0), g(1), g(2), g(3)]) else {
-                continue;
-            };
-            let qx = x & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                lambda = self.quad_lambda(planes, qx, y, ox, oy);
-            }
-            let mut c = self.color(p, &v[..nv], lambda);
-            c.w *= cov;
-            let z = f64::from(zrow + p.z[1] * fx);
-            let i = row + (x - bufs.x) as usize;
-            if let Some(ops) = &self.ops {
-                let fogc = self.fog_coord(&v[..nv]);
-                self.full(ops, bufs, p, i, z, c, fogc);
-            } else if self.depth(bufs, i, z) {
-                if self.samples {
-                    bufs.samples += 1;
+        let nv = self.rl.n.min(MAXV);
+        // The colour is the interpolated primary (plus the secondary) unless a unit textures
+        // or PHONG_WIN lights it.
+        let plain = self.tex[0].is_none() && p.flags & F_PHONG == 0;
+        let on_lanes = !plain && self.tex_lanes_ok(p);
+        let spec = self.rl.spec.filter(|_| self.color_sum);
+        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        // Varyings past `nv` stay 0, as a fragment's missing ones read.
+        let mut v = [[0.0f32; LANES]; MAXV];
+        for &[y, x0, x1] in rows {
+            let fy = (y - oy) as f32;
+            let zrow = p.z[0] + p.z[2] * fy;
+            let base = ((y - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+            let n = usize::try_from(x1 - x0 + 1).unwrap_or(0).min(TILE);
+            let qy = ((y & !1) - oy) as f32;
+            let mut quads = lod.then(|| [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS]);
+            let mut c = 0;
+            while c < n {
+                let live = if n - c >= LANES {
+                    0xFF
+                } else {
+                    (1u8 << (n - c)) - 1
+                };
+                let fx0 = x0 - ox + c as i32;
+                super::lanes::varyings(planes, nflat, fx0, fy, &mut v[..nv]);
+                let g = |j: usize| v.get(o + j).unwrap_or(&ZERO);
+                let (cov, keep) = super::aa::coverage_lanes(p.flags, [g(0), g(1), g(2), g(3)]);
+                let m = live & keep;
+                if m == 0 {
+                    c += LANES;
+                    continue;
                 }
-                self.write(bufs, i, c);
+                let mut col = if plain {
+                    let g = |k: usize| *v[..nv].get(k).unwrap_or(&ZERO);
+                    let mut col = [g(0), g(1), g(2), g(3)];
+                    if let Some(s) = spec {
+                        // `color`'s colour sum: (R, G, B, A) + (R2, G2, B2, 0).
+                        let add = [g(s), g(s + 1), g(s + 2), ZERO];
+                        for (ch, add) in col.iter_mut().zip(add) {
+                            for l in 0..LANES {
+                                ch[l] += add[l];
+                            }
+                        }
+                    }
+                    col
+                } else {
+                    if let Some(quads) = &mut quads {
+                        for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(quads) {
+                            let Some((tx, to)) = *t else { break };
+                            if tx.needs_lambda() {
+                                *lu = sq.lanes(tx, planes, to, x0 + c as i32);
+                            }
+                        }
+                    }
+                    self.color_lanes(p, &v[..nv], m, &lam, on_lanes)
+                };
+                for l in 0..LANES {
+                    col[3][l] *= cov[l];
+                }
+                let z = lin_lanes(zrow, p.z[1], &lane_x(fx0));
+                let i0 = base + c;
+                if let Some(ops) = &self.ops {
+                    let fogc = self.rl.fog.filter(|&f| f < nv).map_or(ZERO, |f| v[f]);
+                    self.ops_group(ops, bufs, p, i0, z, &col, fogc, m);
+                    c += LANES;
+                    continue;
+                }
+                let mut m = m;
+                if self.depth_test {
+                    let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+                    m = ol::depth_test(self.depth_func, self.depth_mask, dp, depth_lanes(z), m);
+                }
+                if m != 0 {
+                    if self.samples {
+                        bufs.samples += u64::from(m.count_ones());
+                    }
+                    let src = col.map(unorm8_lanes);
+                    self.store_group(bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
+                    if let Some(c2) = bufs.color2.as_deref_mut() {
+                        self.store_group(c2.get_mut(i0..).unwrap_or_default(), &src, m);
+                    }
+                }
+                c += LANES;
             }
+        }
+    }
+
+    /// The per-fragment operations of a group of eight fragments (`aa_rows`) at tile indices
+    /// `i0..` (lanes `m`), with window depths `z` (single precision), colours `col` (before
+    /// clamping) and fog coordinates `fogc`: what `full` does to each, on lanes (`oplanes`):
+    /// clamp (§3.9), alpha test (§4.1.4), stencil and depth tests (§4.1.5, §4.1.6), the
+    /// occlusion count, fog (§3.10: it changes neither alpha nor anything the tests read, so it
+    /// runs on the survivors only), blending or logic op (§4.1.8, §4.1.10), masked write.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn ops_group(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        i0: usize,
+        z: [f32; LANES],
+        col: &[[f32; LANES]; 4],
+        fogc: [f32; LANES],
+        m: u8,
+    ) {
+        use super::lanes::{depth_lanes, unorm8_lanes};
+        use super::oplanes as ol;
+        let mut rgb = [
+            ol::clamp01(col[0]),
+            ol::clamp01(col[1]),
+            ol::clamp01(col[2]),
+        ];
+        let a = ol::clamp01(col[3]);
+        let mut m = m;
+        if let Some((func, reference)) = ops.alpha {
+            m &= ol::alpha_test(func, reference, a);
+        }
+        if m == 0 {
+            return;
+        }
+        let d = if self.depth_test {
+            depth_lanes(z)
+        } else {
+            [0; LANES]
+        };
+        let depth = self
+            .depth_test
+            .then_some((self.depth_func, self.depth_mask));
+        let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+        m = match &ops.stencil {
+            Some(sides) => {
+                let side = &sides[usize::from(p.flags & F_BACK != 0)];
+                let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                ol::stencil_depth(side, depth, st, dp, d, m)
+            }
+            None if self.depth_test => ol::depth_test(self.depth_func, self.depth_mask, dp, d, m),
+            None => m,
+        };
+        if m == 0 {
+            return;
+        }
+        if self.samples {
+            bufs.samples += u64::from(m.count_ones());
+        }
+        if !self.count && self.color_mask == [false; 4] {
+            return;
+        }
+        if let Some(f) = &ops.fog {
+            ol::fog(f, &mut rgb, fogc, m);
+        }
+        let src = [
+            unorm8_lanes(rgb[0]),
+            unorm8_lanes(rgb[1]),
+            unorm8_lanes(rgb[2]),
+            unorm8_lanes(a),
+        ];
+        self.write_group(ops, bufs.color.get_mut(i0..).unwrap_or_default(), &src, m);
+        if let Some(c2) = bufs.color2.as_deref_mut() {
+            self.write_group(ops, c2.get_mut(i0..).unwrap_or_default(), &src, m);
+        }
+    }
+
+    /// The masked store (§4.2.2) of lanes `m` of `src` over one colour buffer's row from the
+    /// group's first pixel, or the coverage count: `store` for each lane's fragment.
+    #[inline(always)]
+    fn store_group(&self, row: &mut [[u8; 4]], src: &[[u8; LANES]; 4], m: u8) {
+        if self.count {
+            for (l, dst) in row.iter_mut().take(LANES).enumerate() {
+                if m & (1 << l) != 0 {
+                    self.store_one(dst, src.map(|ch| ch[l]));
+                }
+            }
+        } else {
+            super::oplanes::store(row, src, m, self.color_mask);
         }
     }
 
@@ -695,8 +845,9 @@ impl FragCtx<'_> {
 
     /// Texture level of detail of each unit for the 2x2 quad holding window pixel (x, y), from
     /// the quad's lower-left pixel as llvmpipe does (§3.8.8), relative to the primitive's
-    /// bounding-box corner (ox, oy); 0 for a unit whose result does not depend on it.
-    #[inline(always)]
+    /// bounding-box corner (ox, oy); 0 for a unit whose result does not depend on it. (The
+    /// scalar reference the lane routes' tests compare with.)
+    #[cfg(test)]
     fn quad_lambda(
         &self,
         planes: &[f32],
@@ -1181,6 +1332,322 @@ mod tests {
     }
 
     use crate::cpu::testgen::{Gen, COMPARE_FUNCS as FUNCS};
+
+    /// The coverage of one smooth point or line fragment as the scalar per-fragment code
+    /// computed it before `aa::coverage_lanes` (`None`: discarded).
+    fn scalar_coverage(flags: u8, a: [f32; 4]) -> Option<f32> {
+        let sat = |v: f32| v.clamp(0.0, 1.0);
+        if flags & F_AAPOINT != 0 {
+            let d = a[0] * a[0] + a[1] * a[1];
+            let (k, one) = (a[2], a[3]);
+            if one < d {
+                return None;
+            }
+            let cov = (1.0 / (one - k)) * (one - d);
+            Some(if k >= d { cov } else { one })
+        } else {
+            let len = a[3] * 2.0 - 1.0;
+            let across = sat(a[1] - a[0].abs());
+            let along = sat(a[3] - a[2].abs());
+            Some(across * along.min(len))
+        }
+    }
+
+    /// The scalar smooth point or line span (the code before `aa_rows`): each
+    /// fragment's varyings, coverage, `color` with its quad's λ, alpha times the coverage,
+    /// then `full`, or the depth test and `write`.
+    fn scalar_aa_span(
+        f: &FragCtx,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
+        let Some(o) = f.rl.aa else {
+            return;
+        };
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let fy = (y - oy) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let row = ((y - bufs.y) as usize) * TILE;
+        let nflat = if p.flags & F_FLAT != 0 {
+            f.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let mut v = [0.0f32; MAXV];
+        let nv = f.rl.n.min(v.len());
+        let (mut quad_x, mut lambda) = (i32::MIN, [0.0f32; MAX_TEXTURE_UNITS]);
+        for x in x0..=x1 {
+            let fx = (x - ox) as f32;
+            let inv = 1.0 / (pl(0) + pl(1) * fx + pl(2) * fy);
+            for (j, vj) in v.iter_mut().enumerate().take(nv) {
+                let k = 3 + 3 * j;
+                let val = pl(k) + pl(k + 1) * fx + pl(k + 2) * fy;
+                *vj = if j < nflat { val } else { val * inv };
+            }
+            let g = |j: usize| v.get(o + j).copied().unwrap_or(0.0);
+            let Some(cov) = scalar_coverage(p.flags, [g(0), g(1), g(2), g(3)]) else {
+                continue;
+            };
+            let qx = x & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                lambda = f.quad_lambda(planes, qx, y, ox, oy);
+            }
+            let mut c = f.color(p, &v[..nv], lambda);
+            c.w *= cov;
+            let z = f64::from(zrow + p.z[1] * fx);
+            let i = row + (x - bufs.x) as usize;
+            if let Some(ops) = &f.ops {
+                let fogc = f.fog_coord(&v[..nv]);
+                f.full(ops, bufs, p, i, z, c, fogc);
+            } else if f.depth(bufs, i, z) {
+                if f.samples {
+                    bufs.samples += 1;
+                }
+                f.write(bufs, i, c);
+            }
+        }
+    }
+
+    /// Smooth point and line spans on lanes (`aa_rows`: coverage, colour and the per-fragment
+    /// operations eight fragments at a time) against the scalar sequence, byte for byte:
+    /// random quads' antialiasing planes (fragments kept and discarded, coverage inside and
+    /// outside [0, 1], NaN now and then), with or without per-fragment operations (alpha
+    /// test, stencil, fog, blending, logic op), the colour sum, a texture unit, masks, a
+    /// second colour buffer and the coverage count.
+    #[test]
+    fn aa_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
+        use crate::cpu::fragops::{BlendEval, FogEval, StencilSide};
+        use crate::cpu::texture::Sampler;
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        let mut g = Gen(16);
+        let factors = [
+            gl::ZERO,
+            gl::ONE,
+            gl::SRC_ALPHA,
+            gl::ONE_MINUS_SRC_ALPHA,
+            gl::DST_ALPHA,
+            gl::SRC_ALPHA_SATURATE,
+        ];
+        let sops = [gl::KEEP, gl::ZERO, gl::REPLACE, gl::INCR, gl::INVERT];
+        let mut written = 0;
+        for round in 0..3000 {
+            let textured = round % 4 == 3;
+            let mut state = State::new(4, 4);
+            if textured {
+                let mut obj = TexObject {
+                    min_filter: g.pick(&[gl::NEAREST, gl::LINEAR_MIPMAP_LINEAR]),
+                    mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                    ..TexObject::default()
+                };
+                for (k, w) in [4, 2, 1].into_iter().enumerate() {
+                    let texels = (0..w * w)
+                        .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
+                        .collect::<Vec<_>>();
+                    obj.levels[k] = Some(Level {
+                        depth: 1,
+                        width: w,
+                        height: w,
+                        internal_format: gl::RGBA as i32,
+                        base: gl::RGBA,
+                        texels: texels.into(),
+                    });
+                }
+                state.textures.defaults[1] = Arc::new(obj);
+                state.enables.texture_2d[0] = true;
+                state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::DECAL, gl::ADD]);
+            }
+            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+            if textured {
+                samplers[0] = Sampler::new(&state, 0);
+                assert!(samplers[0].is_some(), "unit 0 complete");
+            }
+            let spec = g.next() % 2 == 0;
+            let fog_on = g.next() % 3 == 0;
+            let mut rl = RLayout {
+                n: 4,
+                ..Default::default()
+            };
+            if spec {
+                rl.spec = Some(rl.n);
+                rl.n += 4;
+            }
+            if fog_on || g.next() % 3 == 0 {
+                rl.fog = Some(rl.n);
+                rl.n += 1;
+            }
+            if textured {
+                rl.tex[0] = Some(rl.n);
+                rl.n += 4;
+            }
+            rl.aa = Some(rl.n);
+            rl.n += 4;
+            let tex = tex_units(&samplers, &rl);
+            let mut side = || StencilSide {
+                func: g.pick(&FUNCS),
+                reference: g.next() as u8 % 4,
+                mask: 0xFF,
+                ops: [g.pick(&sops), g.pick(&sops), g.pick(&sops)],
+                write: 0xFF,
+            };
+            let sides = [side(), side()];
+            let ops = (g.next() % 5 != 0).then(|| Ops {
+                fog: fog_on.then(|| FogEval {
+                    mode: g.pick(&[gl::LINEAR, gl::EXP]),
+                    density: (g.next() % 100) as f32 * 0.05,
+                    start: 0.1,
+                    end: 0.9,
+                    color: Vec3::new(g.mostly_unit(), 0.5, g.mostly_unit()),
+                }),
+                alpha: (g.next() % 3 == 0).then(|| (g.pick(&FUNCS), g.next() as u8)),
+                stencil: (g.next() % 3 == 0).then_some(sides),
+                write: match g.next() % 4 {
+                    0 => ColorWrite::Replace,
+                    1 => ColorWrite::Logic(gl::CLEAR + (g.next() % 16) as u32),
+                    _ => ColorWrite::Blend(BlendEval {
+                        src_rgb: g.pick(&factors),
+                        dst_rgb: g.pick(&factors),
+                        src_alpha: g.pick(&factors),
+                        dst_alpha: g.pick(&factors),
+                        eq_rgb: gl::FUNC_ADD,
+                        eq_alpha: gl::FUNC_ADD,
+                        constant: [0; 4],
+                    }),
+                },
+            });
+            let f = FragCtx {
+                depth_test: g.next() % 3 == 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: match g.next() % 6 {
+                    0 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    1 => [false; 4],
+                    _ => [true; 4],
+                },
+                color_sum: spec && g.next() % 4 != 0,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: g.next() % 10 == 0,
+                samples: g.next() % 2 == 0,
+                // A polygon stipple never applies to points and lines.
+                stipple: (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32)),
+                ops,
+                tex,
+                crossbar: false,
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let point = g.next() % 2 == 0;
+            let flags = if point { F_AAPOINT } else { F_AALINE }
+                | [0, F_FLAT, F_BACK][(g.next() % 3) as usize];
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags,
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
+            };
+            // 1/w: constant (an orthographic quad, as the scenes draw them) or varying.
+            let mut planes = if g.next() % 2 == 0 {
+                vec![1.0, 0.0, 0.0]
+            } else {
+                vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3]
+            };
+            let aa = rl.aa.unwrap_or(0);
+            for j in 0..rl.n {
+                if j < aa {
+                    let d = if j < 4 { 1e-2 } else { 0.1 };
+                    planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+                    continue;
+                }
+                // The antialiasing coordinates: across the span from about -1.5 to 1.5
+                // (point s, t; line x, z), k in [0, 1), a point's 1 or a line's w and h.
+                let slope = ((g.next() % 200) as f32 - 100.0) * 1e-3;
+                let c0 = match (point, j - aa) {
+                    (_, 0) | (true, 1) | (false, 2) => g.mostly_unit() * 3.0 - 1.5,
+                    (true, 2) => g.mostly_unit(),
+                    (true, _) => 1.0,
+                    (false, _) => 0.5 + (g.next() % 40) as f32 * 0.1,
+                };
+                let s = if matches!(j - aa, 0 | 1) || !point && j - aa == 2 {
+                    [slope, slope * 0.5]
+                } else {
+                    [0.0, 0.0]
+                };
+                planes.extend([c0, s[0], s[1]]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let two = g.next() % 4 == 0;
+            let color2: Vec<[u8; 4]> = color.iter().map(|c| c.map(|x| x ^ 0x5A)).collect();
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let stencil: Vec<u8> = (0..TILE * TILE).map(|_| g.next() as u8 % 4).collect();
+            // One to four rows of the tile (the rows of one primitive share `aa_rows`' set-up).
+            let rows: Vec<[i32; 3]> = (0..1 + g.next() % 4)
+                .map(|_| {
+                    let y = ty + (g.next() % TILE as u64) as i32;
+                    let x0 = tx + (g.next() % TILE as u64) as i32;
+                    let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+                    [y, x0, x1]
+                })
+                .collect();
+            let run = |lanes: bool| {
+                let (mut c, mut c2, mut d, mut s) = (
+                    color.clone(),
+                    color2.clone(),
+                    depth.clone(),
+                    stencil.clone(),
+                );
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: two.then_some(&mut c2[..]),
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                if lanes {
+                    f.aa_rows(&mut bufs, &p, &planes, &rows);
+                } else {
+                    for &[y, x0, x1] in &rows {
+                        scalar_aa_span(&f, &mut bufs, &p, &planes, y, x0, x1);
+                    }
+                }
+                let samples = bufs.samples;
+                (c, c2, d, s, samples)
+            };
+            let (got, want) = (run(true), run(false));
+            assert!(got == want, "round {round}: {f:?} {p:?} rows {rows:?}");
+            if got.0 != color {
+                written += 1;
+            }
+        }
+        // The cases are not vacuous: many rounds write colours, many are left untouched
+        // (fragments discarded by the coverage or failing the tests, or masked).
+        assert!(
+            (600..2400).contains(&written),
+            "{written} of 3000 rounds wrote"
+        );
+    }
 
     /// Textured spans without per-fragment operations (`tri_span`'s general path: the
     /// varyings, λ and colours on lanes, the pixel-major store when one colour buffer is

@@ -11,7 +11,7 @@
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
-use super::setup::{PrimKind, RPrim, COVER_KNOWN};
+use super::setup::{PrimKind, RPrim, COVER_KNOWN, F_AALINE, F_AAPOINT};
 
 /// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
 pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
@@ -38,6 +38,26 @@ pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
 }
 
 fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4]) {
+    if p.flags & (F_AAPOINT | F_AALINE) != 0 {
+        // A smooth point's or line's quad: its rows (at most a tile's) are gathered and shaded
+        // in one call, which decides what depends on the primitive once (`aa_rows`).
+        let mut rows = [[0i32; 3]; TILE];
+        let mut k = 0;
+        spans(p, r, |y, l, h| {
+            if let Some(row) = rows.get_mut(k) {
+                *row = [y, l, h];
+                k += 1;
+            }
+        });
+        return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
+    }
+    spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
+}
+
+/// The covered run of each row of `r` (the triangle's bounding box clipped to the tile) in
+/// bottom-to-top order: `span(y, first, last)` for every row with one.
+#[inline(always)]
+fn spans(p: &RPrim, r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
     let [x0, y0, x1, y1] = r;
     if p.cover & COVER_KNOWN != 0 {
         // At most 2x2 pixels whose covered centres setup already found: no edge walk.
@@ -49,7 +69,7 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
             if cols != 0 {
                 let l = bx + cols.trailing_zeros() as i32;
                 let h = bx + 7 - cols.leading_zeros() as i32;
-                ctx.tri_span(bufs, p, planes, y, l, h);
+                span(y, l, h);
             }
         }
         return;
@@ -71,7 +91,7 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
                 }
             }
             if l <= h {
-                ctx.tri_span(bufs, p, planes, y, l, h);
+                span(y, l, h);
             }
         }
         return;
@@ -91,7 +111,7 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
             }
         }
         if l <= h {
-            ctx.tri_span(bufs, p, planes, y, l as i32, h as i32);
+            span(y, l as i32, h as i32);
         }
     }
 }

@@ -170,8 +170,9 @@ impl Sampler {
 
     /// λ of §3.8.8 for the 2x2 quad whose lower-left pixel is at (fx, fy) relative to the
     /// primitive's plane origin: `planes` are the primitive's (1/w plane, then one plane per
-    /// varying) and `to` the index of the varying s (t, r, q follow).
-    #[inline]
+    /// varying) and `to` the index of the varying s (t, r, q follow). The scalar reference of
+    /// the lane routes (`quad_lambda_lanes`, `SpanLambda`), for the tests.
+    #[cfg(test)]
     pub fn quad_lambda(&self, planes: &[f32], to: usize, fx: f32, fy: f32) -> f32 {
         let at = |x: f32, y: f32| {
             let pl = |j: usize| {
@@ -1130,6 +1131,7 @@ fn depth_compare(func: u32, r: f32, t: [f32; 4]) -> [f32; 4] {
 }
 
 /// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.
+#[cfg(test)]
 #[inline(always)]
 fn fast_log2(x: f32) -> f32 {
     if x.is_nan() || x <= 0.0 || x.is_infinite() {
