@@ -1743,39 +1743,99 @@ fn bilinear(w: [f32; 4], t: [[f32; 4]; 4]) -> [f32; 4] {
     o
 }
 
-/// Quads of one span row whose λ [`SpanLambda`] keeps: a 64-pixel span starting on an odd x
-/// touches 33.
-const SPAN_QUADS: usize = 8 * 5;
+/// Chunks of eight quads (16 pixels, from a multiple of 16) whose λ a [`LamRow`] keeps: a
+/// tile row of 64 pixels is four, and a span may run one chunk further.
+const ROW_CHUNKS: usize = 5;
+
+/// What λ of a quad depends on besides its position (the bits of): the s, t, r and q planes
+/// `quad_lambda_lanes` reads, the sampler's base size, dimensions and cube flag, the quad
+/// row's y and the planes' origin x. Two spans with equal keys get equal λ for each quad.
+type LamKey = [u32; 20];
+
+/// λ of one unit for the quads of one quad row (two pixel rows) of one primitive, per thread:
+/// the span of row y computes its quads, the span of row y + 1 (the same quads, §3.8.8's
+/// derivatives are per 2x2 quad) finds them here instead of computing them again.
+#[derive(Clone, Copy)]
+struct LamRow {
+    key: LamKey,
+    /// Bumped whenever the row is started over, so a [`SpanLambda`] that checked the key
+    /// once need not compare it again while the row stays its own.
+    gen: u32,
+    /// The chunk number (window x / 16) of `lam[..LANES]`.
+    c0: i32,
+    /// Which chunks are computed (bit k: `lam[k * LANES..][..LANES]`).
+    done: u8,
+    /// The chunks' λ, and a spare entry (the window `SpanLambda::lanes` reads is five quads).
+    lam: [f32; ROW_CHUNKS * LANES + 1],
+}
+
+impl LamRow {
+    const EMPTY: LamRow = LamRow {
+        key: [0; 20],
+        gen: 0,
+        c0: 0,
+        done: 0,
+        lam: [0.0; ROW_CHUNKS * LANES + 1],
+    };
+}
+
+thread_local! {
+    /// One λ row per texture unit, per thread (each tile is rasterised on one thread).
+    static LAM_ROWS: std::cell::RefCell<[LamRow; MAX_TEXTURE_UNITS]> =
+        const { std::cell::RefCell::new([LamRow::EMPTY; MAX_TEXTURE_UNITS]) };
+}
 
 /// λ of one unit for the 2x2 quads of a span row, computed eight quads at a time as the
-/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once, where computing
-/// it per lane evaluated every quad twice (lanes 2k and 2k+1 of an aligned group share one).
-/// Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad position, so the same bits.
+/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once per quad row. The
+/// quads live in the thread's [`LamRow`] of the unit, so the span of the second pixel row of a
+/// quad row reuses what the first computed when the key (planes, sampler size, quad row,
+/// origin) is the same. Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad
+/// position (its lanes are independent of each other), so the same bits.
 #[derive(Clone, Copy, Debug)]
 pub struct SpanLambda {
-    /// Window x of the span's first quad (even).
-    q0: i32,
     /// Window x of the planes' origin (the primitive's bounding-box corner).
     ox: i32,
     /// The quads' lower-left y relative to the planes' origin.
     qy: f32,
-    /// Which groups of eight quads are computed.
-    done: u8,
-    lam: [f32; SPAN_QUADS],
+    /// The key, once the first call has made it.
+    key: Option<LamKey>,
+    /// The [`LamRow::gen`] this span last found its key in (None: not looked yet).
+    gen: Option<u32>,
 }
 
 impl SpanLambda {
-    /// For a span row whose first pixel is at window x `x0`, with the planes' origin at window
-    /// x `ox` and the row's quads at `qy` (relative to the origin, as `quad_lambda` takes it).
+    /// For a span row whose first pixel is at window x `x0` (not needed: the quads are kept by
+    /// window x), with the planes' origin at window x `ox` and the row's quads at `qy`
+    /// (relative to the origin, as `quad_lambda` takes it).
     #[inline]
     pub fn new(x0: i32, ox: i32, qy: f32) -> SpanLambda {
+        let _ = x0;
         SpanLambda {
-            q0: x0 & !1,
             ox,
             qy,
-            done: 0,
-            lam: [0.0; SPAN_QUADS],
+            key: None,
+            gen: None,
         }
+    }
+
+    /// The key of this span with sampler `s` and planes `planes` (the varying s at `to`).
+    fn key(&self, s: &Sampler, planes: &[f32], to: usize) -> LamKey {
+        let mut k = [0u32; 20];
+        for (j, v) in k.iter_mut().take(12).enumerate() {
+            *v = planes
+                .get(3 * (1 + to) + j)
+                .copied()
+                .unwrap_or(0.0)
+                .to_bits();
+        }
+        k[12] = s.size[0].to_bits();
+        k[13] = s.size[1].to_bits();
+        k[14] = s.size[2].to_bits();
+        k[15] = s.dims as u32;
+        k[16] = u32::from(s.cube);
+        k[17] = self.qy.to_bits();
+        k[18] = self.ox as u32;
+        k
     }
 
     /// λ for the eight pixels from window x `x` (lane l at x + l): each its quad's, as
@@ -1783,31 +1843,81 @@ impl SpanLambda {
     /// on every call for one `SpanLambda`.
     #[inline]
     pub fn lanes(&mut self, s: &Sampler, planes: &[f32], to: usize, x: i32) -> [f32; LANES] {
+        let direct = |this: &SpanLambda| {
+            let qx = std::array::from_fn(|l| {
+                (x.wrapping_add(l as i32) & !1).wrapping_sub(this.ox) as f32
+            });
+            s.quad_lambda_lanes(planes, to, qx, this.qy)
+        };
         let last = x.saturating_add(LANES as i32 - 1);
-        let (ka, kb) = ((x & !1) - self.q0, (last & !1) - self.q0);
-        if ka < 0 || kb >= 2 * SPAN_QUADS as i32 || last == i32::MAX {
-            // Outside the row's buffer: every lane's quad directly.
-            let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(self.ox) as f32);
-            return s.quad_lambda_lanes(planes, to, qx, self.qy);
+        if last == i32::MAX || x < i32::MIN / 2 {
+            return direct(self);
         }
-        let (ka, kb) = ((ka / 2) as usize, (kb / 2) as usize);
-        for c in ka / LANES..=kb / LANES {
-            if self.done & (1 << c) != 0 {
-                continue;
+        let key = match self.key {
+            Some(k) => k,
+            None => {
+                let k = self.key(s, planes, to);
+                self.key = Some(k);
+                k
             }
-            let first = self.q0 + 2 * (c * LANES) as i32;
-            let qx = std::array::from_fn(|j| (first + 2 * j as i32).wrapping_sub(self.ox) as f32);
-            let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
-            self.lam[c * LANES..(c + 1) * LANES].copy_from_slice(&v);
-            self.done |= 1 << c;
+        };
+        // Chunk numbers of the group's first and last pixels (floor of x / 16).
+        let (ca, cb) = (x >> 4, last >> 4);
+        let got = LAM_ROWS.try_with(|rows| {
+            let mut rows = rows.try_borrow_mut().ok()?;
+            let row = rows.get_mut(s.unit)?;
+            let fits = |row: &LamRow| ca >= row.c0 && cb - row.c0 < ROW_CHUNKS as i32;
+            if self.gen != Some(row.gen) || !fits(row) {
+                if row.key != key || !fits(row) {
+                    // Start the row over: the 64-pixel block holding x, or from x's chunk
+                    // when the group runs past that block's last chunk.
+                    row.key = key;
+                    row.c0 = if cb - ((x >> 6) << 2) < ROW_CHUNKS as i32 {
+                        (x >> 6) << 2
+                    } else {
+                        ca
+                    };
+                    row.done = 0;
+                    row.gen = row.gen.wrapping_add(1);
+                }
+                self.gen = Some(row.gen);
+            }
+            for c in ca..=cb {
+                let k = (c - row.c0) as usize;
+                if row.done & (1 << k) != 0 {
+                    continue;
+                }
+                // Chunk c's quads start at window x 16c, two pixels apart.
+                let first = c.wrapping_mul(2 * LANES as i32);
+                let qx = std::array::from_fn(|j| {
+                    first.wrapping_add(2 * j as i32).wrapping_sub(self.ox) as f32
+                });
+                let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
+                row.lam
+                    .get_mut(k * LANES..(k + 1) * LANES)?
+                    .copy_from_slice(&v);
+                row.done |= 1 << k;
+            }
+            // Lane l's quad is number (x + l) / 2 (floor): d + (x mod 2 + l) / 2 in the row,
+            // d = x / 2 - 8·c0 (lane 7's at most d + 4, inside the chunks; `lam` has one
+            // spare entry after them for the window of an even x).
+            let d = (x >> 1) - row.c0 * LANES as i32;
+            let w: [f32; 5] = row
+                .lam
+                .get(usize::try_from(d).ok()?..)?
+                .get(..5)?
+                .try_into()
+                .ok()?;
+            Some(if x & 1 == 0 {
+                [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
+            } else {
+                [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
+            })
+        });
+        match got {
+            Ok(Some(v)) => v,
+            _ => direct(self),
         }
-        // Lane l's quad is number (x + l - q0) / 2 (q0 is even); d + 7 < 2·SPAN_QUADS here.
-        let d = (x - self.q0) as usize;
-        let mut out = [0.0f32; LANES];
-        for (l, o) in out.iter_mut().enumerate() {
-            *o = self.lam.get((d + l) >> 1).copied().unwrap_or(0.0);
-        }
-        out
     }
 }
 

@@ -1016,6 +1016,54 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
 }
 
 #[test]
+fn span_lambda_rows_share_quads_only_with_the_same_key() {
+    // Spans of both pixel rows of quad rows, of a few primitives (plane sets) and samplers
+    // that differ only in size or dimensions, all on unit 0, in a random order, so that the
+    // thread's λ row is reused (same planes, sampler, quad row and origin), started over
+    // (any of them differs), and reached by spans that start left of, right of and past the
+    // quads it holds: every lane is `quad_lambda` of its quad, bit for bit.
+    let mut next = lcg(41u64);
+    let mut samplers = lambda_samplers();
+    let mut wide = samplers[1].clone();
+    wide.size[0] = 128.0;
+    samplers.push(wide);
+    let mut checked = 0;
+    for round in 0..400 {
+        let planes: Vec<Vec<f32>> = (0..3).map(|_| random_planes(&mut next)).collect();
+        let ox = (next() % 300) as i32 - 150;
+        for _ in 0..24 {
+            let s = &samplers[(next() % samplers.len() as u64) as usize];
+            let pl = &planes[(next() % 3) as usize];
+            let to = (next() % 2) as usize;
+            // Mostly one quad row (two pixel rows), sometimes the next.
+            let qrow = (round % 5) as i32 * 2 + if next() % 6 == 0 { 2 } else { 0 };
+            let qy = qrow as f32;
+            let x0 = ox + (next() % 200) as i32 - 40;
+            let n = 1 + (next() % 70) as usize;
+            let mut sl = SpanLambda::new(x0, ox, qy);
+            let mut g = 0;
+            while g < n {
+                if next() % 5 != 0 {
+                    let got = sl.lanes(s, pl, to, x0 + g as i32);
+                    for (l, got) in got.iter().enumerate() {
+                        let qx = (((x0 + (g + l) as i32) & !1) - ox) as f32;
+                        let want = s.quad_lambda(pl, to, qx, qy);
+                        let same = got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan();
+                        assert!(
+                            same,
+                            "round {round} x0 {x0} g {g} lane {l}: {got} vs {want}"
+                        );
+                        checked += 1;
+                    }
+                }
+                g += LANES;
+            }
+        }
+    }
+    assert!(checked > 100_000, "{checked}");
+}
+
+#[test]
 fn ifloor_lanes_is_ifloor() {
     // The SSE2 truncation with `as i32`'s saturation and the step down, against `ifloor`:
     // the edges of the i32 range, NaN, infinities, signed zeros, subnormals, random bits.
