@@ -127,8 +127,8 @@ enum Command {
         cpu_only: bool,
         /// Time the CPU frame stage by stage instead (CPU only, no API timing): reset, replay
         /// (the front end and the draws it starts), the final flush and readback (`to_image`),
-        /// the draws, their time on the calling thread, its waits for the pool, and how many
-        /// of the draws were handed to the pool.
+        /// the draws, their time on the calling thread, its waits for the pool, how many of
+        /// the draws were handed to the pool, and the rasterisation passes over the scene.
         #[arg(long)]
         stages: bool,
     },
@@ -535,7 +535,7 @@ fn bench_stages(
     let selected = select(names, true)?;
     cpu_threads(threads)?;
     out!(
-        "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8}",
+        "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8} {:>6}",
         "scene",
         "frame",
         "reset",
@@ -544,14 +544,16 @@ fn bench_stages(
         "draws",
         "draw ms",
         "wait",
-        "handoffs"
+        "handoffs",
+        "passes"
     );
     for scene in selected {
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
         let mut ctx = Context::with_config(w, h, scene.config)?;
-        // Per frame: total, reset, replay, to_image, draws, draw ms, wait ms, hand-offs.
-        let mut rows: Vec<[f64; 8]> = Vec::new();
+        // Per frame: total, reset, replay, to_image, draws, draw ms, wait ms, hand-offs,
+        // rasterisation passes.
+        let mut rows: Vec<[f64; 9]> = Vec::new();
         for i in 0..=frames {
             let s0 = ctx.draw_stats();
             let t0 = Instant::now();
@@ -575,14 +577,15 @@ fn bench_stages(
                     dms(s0.draw_ns, s1.draw_ns) + dms(s0.handoff_ns, s1.handoff_ns),
                     dms(s0.wait_ns, s1.wait_ns),
                     (s1.handoffs - s0.handoffs) as f64,
+                    (s1.passes - s0.passes) as f64,
                 ]);
             }
         }
-        let med: Vec<f64> = (0..8)
+        let med: Vec<f64> = (0..9)
             .map(|k| median_ms(&mut rows.iter().map(|r| r[k]).collect::<Vec<_>>()))
             .collect();
         out!(
-            "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9} {:>9.3} {:>7.3} {:>8}",
+            "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9} {:>9.3} {:>7.3} {:>8} {:>6}",
             scene.name,
             med[0],
             med[1],
@@ -591,7 +594,8 @@ fn bench_stages(
             med[4],
             med[5],
             med[6],
-            med[7]
+            med[7],
+            med[8]
         );
     }
     Ok(ExitCode::SUCCESS)

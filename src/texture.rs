@@ -44,8 +44,10 @@ pub struct Level {
     /// the stencil index in G as an integer in [0, 255]).
     pub base: u32,
     /// `width * height * depth` texels, bottom row first (t = 0 first, §3.8.1), the images of
-    /// a 3D texture one after the other (r = 0 first).
-    pub texels: Vec<[f32; 4]>,
+    /// a 3D texture one after the other (r = 0 first). Shared (`Arc`), so that copying the
+    /// object to change a parameter while a draw still holds it (`Arc::make_mut` of the
+    /// object) does not copy the images; a change to the texels copies only a shared level.
+    pub texels: Arc<Vec<[f32; 4]>>,
 }
 
 impl Level {
@@ -415,7 +417,7 @@ pub fn halve(src: &Level) -> Level {
         depth: d,
         internal_format: src.internal_format,
         base: src.base,
-        texels,
+        texels: texels.into(),
     }
 }
 

@@ -939,7 +939,6 @@ impl Context {
         }
         self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
-            ctx.renderer.release_textures();
             if let Some(obj) = ctx.state.textures.bound_mut(unit, target) {
                 obj.generate_mipmaps();
             }
@@ -1266,11 +1265,12 @@ fn store_texture(
     };
     let (lw, lh) = (lv.width.max(0) as u32, lv.height.max(0) as u32);
     let base = lv.base;
+    let texels = Arc::make_mut(&mut lv.texels);
     for y in 0..h.min(lh) {
         for x in 0..w.min(lw) {
             let Some(t) = get(x, y) else { continue };
             let i = ((zoffset.max(0) as u32 * lh + y) * lw + x) as usize;
-            if let Some(dst) = lv.texels.get_mut(i) {
+            if let Some(dst) = texels.get_mut(i) {
                 let t = match only {
                     Some(k) => {
                         let mut merged = *dst;

@@ -177,7 +177,7 @@ pub fn strip_border(lv: Level) -> Level {
         width: nw,
         height: nh,
         depth: nd,
-        texels,
+        texels: texels.into(),
         ..lv
     }
 }
@@ -564,7 +564,7 @@ impl Context {
             depth,
             internal_format,
             base,
-            texels,
+            texels: texels.into(),
         };
         let lv = if border == 1 { strip_border(lv) } else { lv };
         self.store_level(target, level, lv);
@@ -585,7 +585,6 @@ impl Context {
     fn store_level_now(&mut self, target: u32, level: i32, lv: Level) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
-        self.renderer.release_textures();
         if let Some(obj) = self.state.textures.bound_mut(unit, bind) {
             if let Some(slot) = obj.slot_mut(face, level) {
                 *slot = Some(lv);
@@ -853,11 +852,12 @@ impl Context {
         if let Some(Some(lv)) = obj.slot_mut(face, level) {
             let (lw, lh) = (lv.width as usize, lv.height as usize);
             let rows = size[1].max(1) as usize;
+            let dst_texels = Arc::make_mut(&mut lv.texels);
             for (r, row) in texels.chunks(size[0].max(1) as usize).enumerate() {
                 let (k, j) = (r / rows, r % rows);
                 let at = ((offset[2] as usize + k) * lh + offset[1] as usize + j) * lw
                     + offset[0] as usize;
-                if let Some(dst) = lv.texels.get_mut(at..at + row.len()) {
+                if let Some(dst) = dst_texels.get_mut(at..at + row.len()) {
                     if depth_only {
                         for (d, s) in dst.iter_mut().zip(row) {
                             d[0] = s[0];
@@ -1001,7 +1001,7 @@ impl Context {
                 depth: 1,
                 internal_format: ifmt,
                 base,
-                texels,
+                texels: texels.into(),
             },
         );
     }

@@ -131,7 +131,6 @@ impl Context {
             return self.error(gl::INVALID_VALUE);
         }
         let unit = self.state.active_texture;
-        self.renderer.release_textures();
         let Some(o) = self.state.textures.bound_mut(unit, target) else {
             return;
         };

@@ -996,14 +996,14 @@ mod tests {
             while w >= 1 {
                 let texels = (0..w * w)
                     .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
-                    .collect();
+                    .collect::<Vec<_>>();
                 obj.levels[k] = Some(Level {
                     depth: 1,
                     width: w,
                     height: w,
                     internal_format: gl::RGBA as i32,
                     base: gl::RGBA,
-                    texels,
+                    texels: texels.into(),
                 });
                 k += 1;
                 w /= 2;

@@ -141,6 +141,10 @@ pub struct DrawStats {
     pub handoff_ns: u64,
     /// Time the calling thread waited for a background draw to end.
     pub wait_ns: u64,
+    /// Rasterisation passes over the scene's tiles (see `Scene`): at reads and changes of the
+    /// framebuffer, changes of the colour buffers drawn, changes of a texture the scene
+    /// samples, and full scenes.
+    pub passes: u64,
 }
 
 /// Nanoseconds since `t`, saturated.
@@ -167,6 +171,8 @@ struct Core {
     scene: Scene,
     /// Fragments counted since `start_counting_samples` (GL 2.1 §4.1.7's SAMPLES_PASSED).
     samples_passed: u64,
+    /// Rasterisation passes so far (`DrawStats::passes`).
+    passes: u64,
 }
 
 /// Flushes set up and binned but not yet rasterised, as llvmpipe's scene holds a frame's
@@ -520,14 +526,17 @@ impl Renderer {
         panic!("fixedgl: the framebuffer was lost with a background draw that vanished")
     }
 
-    /// Rasterises the scene if one of its flushes samples a texture: called before a texture
-    /// object changes, so that the change does not copy an object the scene still holds
-    /// (`Arc::make_mut` copies a shared one; the pixels are the same either way).
+    /// Rasterises the scene if one of its flushes samples a texture: called before texels
+    /// change in place (TexSubImage), so that the change does not copy a level the scene
+    /// still holds (`Arc::make_mut` copies a shared one; the pixels are the same either way).
+    /// A parameter change or a new image needs no pass: the object is copied with its levels
+    /// shared, and a level replaced is not copied.
     pub fn release_textures(&mut self) {
         self.wait();
         if let Some(core) = self.core.as_deref_mut() {
             if core.scene.frags.iter().any(Frag::samples_textures) {
                 core.resolve();
+                self.stats.passes = core.passes;
             }
         }
     }
@@ -539,6 +548,7 @@ impl Renderer {
         match self.core.as_deref_mut() {
             Some(core) => {
                 core.resolve();
+                self.stats.passes = core.passes;
                 core
             }
             None => Self::lost(),
@@ -635,7 +645,10 @@ impl Renderer {
             core, batch, verts, ..
         } = self;
         match core.as_deref_mut() {
-            Some(core) => core.draw(state, batch, verts, plan, count, samples),
+            Some(core) => {
+                core.draw(state, batch, verts, plan, count, samples);
+                self.stats.passes = core.passes;
+            }
             None => Self::lost(),
         }
         batch.clear();
@@ -652,6 +665,7 @@ impl Core {
             asm: Vec::new(),
             scene: Scene::default(),
             samples_passed: 0,
+            passes: 0,
         }
     }
 
@@ -661,6 +675,7 @@ impl Core {
             asm: Vec::new(),
             scene: Scene::default(),
             samples_passed: 0,
+            passes: 0,
         })
     }
 
@@ -798,11 +813,13 @@ impl Core {
             fb,
             scene,
             samples_passed,
+            passes,
             ..
         } = self;
         if scene.parts.is_empty() {
             return;
         }
+        *passes += 1;
         let ctxs: Vec<FragCtx> = scene.frags.iter().map(Frag::ctx).collect();
         let parts: Vec<(&FragCtx, &[Worker])> = scene
             .parts

@@ -1461,7 +1461,7 @@ fn tex_object_diff(a: &TexObject, b: &TexObject) -> Option<&'static str> {
                         (la.width, la.height, la.internal_format, la.base)
                             == (lb.width, lb.height, lb.internal_format, lb.base)
                             && la.texels.len() == lb.texels.len()
-                            && la.texels.iter().zip(&lb.texels).all(|(x, y)| {
+                            && la.texels.iter().zip(lb.texels.iter()).all(|(x, y)| {
                                 x.iter().zip(y).all(|(x, y)| x.to_bits() == y.to_bits())
                             })
                     }

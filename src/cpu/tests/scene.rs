@@ -142,10 +142,11 @@ fn a_frame_rasterised_as_one_scene_is_the_frame_rasterised_flush_by_flush() {
     assert!(count > 1000, "{count} samples");
 }
 
-/// A texture a waiting flush samples is not copied when it changes: the scene is rasterised
-/// first (a copy would be the same pixels, at the cost of copying every level).
+/// A texture a waiting flush samples: a parameter change neither rasterises the scene nor
+/// copies the images (the object is copied, its levels shared); a change to its texels
+/// rasterises the scene first, so that the level is not copied either.
 #[test]
-fn changing_a_texture_the_scene_samples_does_not_copy_it() {
+fn changing_a_texture_the_scene_samples_copies_no_image() {
     let mut gl = Context::new(64, 64).expect("context");
     let mut tex = [0u32; 1];
     gl.gen_textures(1, &mut tex);
@@ -164,9 +165,13 @@ fn changing_a_texture_the_scene_samples_does_not_copy_it() {
     );
     gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MIN_FILTER, gl::NEAREST as i32);
     gl.enable(gl::TEXTURE_2D);
-    let object = |gl: &Context| gl.state.textures.bound_2d(0).map(Arc::as_ptr);
-    let before = object(&gl);
+    let image = |gl: &Context| {
+        let obj = gl.state.textures.bound_2d(0).expect("bound");
+        obj.face_level(0, 0).map(|l| Arc::as_ptr(&l.texels))
+    };
+    let before = image(&gl);
     assert!(before.is_some());
+    let passes = gl.draw_stats().passes;
     gl.begin(gl::TRIANGLES);
     gl.tex_coord2f(0.0, 0.0);
     gl.vertex2f(-1.0, -1.0);
@@ -177,6 +182,12 @@ fn changing_a_texture_the_scene_samples_does_not_copy_it() {
     gl.end();
     // A state change: the triangle is set up into the scene, which holds the texture.
     gl.tex_parameteri(gl::TEXTURE_2D, gl::TEXTURE_MAG_FILTER, gl::NEAREST as i32);
+    assert_eq!(
+        gl.draw_stats().passes,
+        passes,
+        "a parameter change rasterised"
+    );
+    assert_eq!(image(&gl), before, "a parameter change copied the image");
     gl.tex_sub_image_2d(
         gl::TEXTURE_2D,
         0,
@@ -188,7 +199,12 @@ fn changing_a_texture_the_scene_samples_does_not_copy_it() {
         gl::UNSIGNED_BYTE,
         &[0; 4],
     );
-    assert_eq!(object(&gl), before, "the texture object was copied");
+    assert_eq!(
+        gl.draw_stats().passes,
+        passes + 1,
+        "no pass before the texels changed"
+    );
+    assert_eq!(image(&gl), before, "the texels were copied");
     // And the triangle was drawn with the texture as it was (white).
     let img = gl.to_image();
     assert_eq!(img.get_pixel(2, 61).0, [255; 4]);

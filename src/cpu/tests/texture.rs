@@ -24,7 +24,7 @@ fn level(w: i32, h: i32, base: u32, f: impl Fn(i32, i32) -> [f32; 4]) -> Level {
         height: h,
         internal_format: base as i32,
         base,
-        texels,
+        texels: texels.into(),
     }
 }
 

@@ -19,14 +19,14 @@ use crate::texture::{Level, TexObject, MAX_LEVELS};
 fn random_level(w: i32, h: i32, d: i32, base: u32, next: &mut impl FnMut() -> u64) -> Level {
     let texels = (0..w * h * d)
         .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
-        .collect();
+        .collect::<Vec<_>>();
     Level {
         width: w,
         height: h,
         depth: d,
         internal_format: base as i32,
         base,
-        texels,
+        texels: texels.into(),
     }
 }
 
