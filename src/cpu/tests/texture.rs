@@ -519,7 +519,7 @@ fn dense_gathers_only_on_whole_power_of_two_levels() {
             .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
             .collect();
         let mut lv = level(w, h, gl::RGBA, |_, _| [0.0; 4]);
-        lv.texels = vals;
+        lv.texels = Arc::new(vals);
         let filter = [gl::NEAREST, gl::LINEAR][round / shapes.len() % 2];
         let mut obj = obj_with(vec![lv], filter, filter);
         obj.wrap_s = wraps[(next() % 5) as usize];
