@@ -709,6 +709,8 @@ impl Sampler {
             };
             let wl = w.at(0);
             let mut k = [[0i32; LANES]; 4];
+            // A plain lane loop over the four index arrays (clippy would have it iterate one).
+            #[allow(clippy::needless_range_loop)]
             for l in 0..LANES {
                 let (r0, r1) = (y.i0[l].wrapping_mul(wl), y.i1[l].wrapping_mul(wl));
                 k[0][l] = r0.wrapping_add(x.i0[l]);
