@@ -1036,7 +1036,7 @@ fn span_lambda_rows_share_quads_only_with_the_same_key() {
             let pl = &planes[(next() % 3) as usize];
             let to = (next() % 2) as usize;
             // Mostly one quad row (two pixel rows), sometimes the next.
-            let qrow = (round % 5) as i32 * 2 + if next() % 6 == 0 { 2 } else { 0 };
+            let qrow = (round % 5) * 2 + if next() % 6 == 0 { 2 } else { 0 };
             let qy = qrow as f32;
             let x0 = ox + (next() % 200) as i32 - 40;
             let n = 1 + (next() % 70) as usize;
