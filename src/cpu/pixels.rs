@@ -272,12 +272,23 @@ impl Renderer {
                 y: oy,
                 samples: 0,
             };
+            // The tile's columns, as indices into `d.cols`.
+            let cols = (tx0 - x0) as usize..=(tx1 - x0) as usize;
             for y in ty0..=ty1 {
                 let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
                     continue;
                 };
                 let row = gj as usize * d.width;
                 let base = (y - oy) as usize * TILE;
+                if plain {
+                    // Only the colour write applies: a whole row at a time.
+                    if let Some(cols) = d.cols.groups.get(cols.clone()) {
+                        let first = base + (tx0 - ox) as usize;
+                        if put_row(&mut bufs, first, cols, row, d.groups, fctx.color_mask) {
+                            continue;
+                        }
+                    }
+                }
                 for x in tx0..=tx1 {
                     let Some(&gi) = d.cols.groups.get((x - x0) as usize) else {
                         continue;
@@ -341,6 +352,57 @@ fn put(bufs: &mut TileBufs, i: usize, px: [u8; 4], mask: [bool; 4]) {
             }
         }
     }
+}
+
+/// The colour groups of row `row` (the index of its first group) that `cols` names, as the
+/// fragments at tile indices `first..first + cols.len()`, when nothing but the colour write
+/// applies to them (`plain`): what [`fragment`] does to each, a row at a time. False, with
+/// nothing written, for groups that are not colours.
+fn put_row(
+    bufs: &mut TileBufs,
+    first: usize,
+    cols: &[u32],
+    row: usize,
+    groups: Groups,
+    mask: [bool; 4],
+) -> bool {
+    let end = first + cols.len();
+    let second = bufs
+        .color2
+        .as_deref_mut()
+        .and_then(|c| c.get_mut(first..end));
+    let targets = bufs.color.get_mut(first..end).into_iter().chain(second);
+    let store = |dst: &mut [u8; 4], px: [u8; 4]| {
+        for k in 0..4 {
+            if mask[k] {
+                dst[k] = px[k];
+            }
+        }
+    };
+    match groups {
+        Groups::Color(c) => {
+            let Some(c) = c.get(row..) else { return true };
+            for dst in targets {
+                for (d, &gi) in dst.iter_mut().zip(cols) {
+                    if let Some(c) = c.get(gi as usize) {
+                        store(d, [unorm8(c[0]), unorm8(c[1]), unorm8(c[2]), unorm8(c[3])]);
+                    }
+                }
+            }
+        }
+        Groups::Bytes(b) => {
+            let Some(b) = b.get(row..) else { return true };
+            for dst in targets {
+                for (d, &gi) in dst.iter_mut().zip(cols) {
+                    if let Some(&px) = b.get(gi as usize) {
+                        store(d, px);
+                    }
+                }
+            }
+        }
+        _ => return false,
+    }
+    true
 }
 
 /// Group `g` of `groups` as the fragment at tile index `i`.

@@ -705,3 +705,49 @@ fn accum_errors_and_attribs_as_the_driver() {
         cpu.clear_accum(0.0, 0.0, 0.0, 0.0);
     }
 }
+
+/// DrawPixels into both colour buffers through a colour mask, at zooms 1, 2 and −1, from bytes
+/// and from floats, across tile boundaries: the rows where only the colour write applies
+/// (`put_row` in src/cpu/pixels.rs) against the driver, both buffers.
+#[test]
+fn draw_pixels_into_both_buffers_through_a_colour_mask_as_the_driver() {
+    let (w, h) = (90, 80);
+    let mut cpu = ctx(w, h, DOUBLE);
+    let Some(mut drv) = crate::common::test_backend_with(w, h, DOUBLE) else {
+        return;
+    };
+    let (iw, ih) = (24i32, 16i32);
+    let bytes: Vec<u8> = (0..iw * ih * 4).map(|i| (i * 37 % 251) as u8).collect();
+    let floats: Vec<u8> = (0..iw * ih * 4)
+        .flat_map(|i| ((i * 53 % 101) as f32 / 100.0).to_ne_bytes())
+        .collect();
+    let image = |ty: u32| {
+        let data = if ty == gl::FLOAT { &floats } else { &bytes };
+        Call::DrawPixels(iw, ih, gl::RGBA, ty, Box::new(data.clone()))
+    };
+    let calls = vec![
+        Call::ClearColor(0.1, 0.2, 0.3, 1.0),
+        Call::DrawBuffer(gl::FRONT_AND_BACK),
+        Call::Clear(gl::COLOR_BUFFER_BIT),
+        Call::PixelStorei(gl::UNPACK_ALIGNMENT, 1),
+        Call::ColorMask(true, false, true, true),
+        Call::WindowPos2i(3, 5),
+        image(gl::UNSIGNED_BYTE),
+        Call::WindowPos2i(55, 58),
+        image(gl::FLOAT),
+        Call::PixelZoom(2.0, 2.0),
+        Call::WindowPos2i(40, 30),
+        image(gl::FLOAT),
+        Call::PixelZoom(-1.0, 1.0),
+        Call::WindowPos2i(80, 50),
+        image(gl::UNSIGNED_BYTE),
+        Call::ColorMask(true, true, true, true),
+        Call::DrawBuffer(gl::BACK),
+        Call::PixelZoom(1.0, 1.0),
+        Call::WindowPos2i(50, 2),
+        image(gl::UNSIGNED_BYTE),
+        Call::ReadBuffer(gl::FRONT),
+    ];
+    both(&mut cpu, &mut drv, &calls);
+    same_buffers(&mut cpu, &mut drv, "DrawPixels");
+}
