@@ -262,9 +262,10 @@ impl Sampler {
             let ly = bx * bx + by * by + bz * bz;
             rho2[l] = lx.max(ly);
         }
+        let lg = fast_log2_lanes(&rho2);
         let mut out = [0.0f32; LANES];
         for l in 0..LANES {
-            out[l] = 0.5 * fast_log2_lane(rho2[l]);
+            out[l] = 0.5 * lg[l];
         }
         out
     }
@@ -423,13 +424,10 @@ impl Sampler {
     fn select_lanes(&self, lambda: &[f32; LANES]) -> ([i32; LANES], u8, [f32; LANES]) {
         // `select`'s bias, NaN and bounds, then the magnification lanes (λ <= c).
         let mut lam = [0.0f32; LANES];
-        let mut mag = [false; LANES];
         for l in 0..LANES {
             let x = lambda[l] + self.bias;
             let x = if x.is_nan() { 0.0 } else { x };
-            let x = x.min(self.max_lod).max(self.min_lod);
-            lam[l] = x;
-            mag[l] = x <= self.c;
+            lam[l] = x.min(self.max_lod).max(self.min_lod);
         }
         let (base, last) = (self.base_level, self.last);
         let span = (self.last - self.base_level) as f32;
@@ -471,13 +469,17 @@ impl Sampler {
             }
             m => m != gl::NEAREST,
         };
-        let mag_lin = self.mag != gl::NEAREST;
-        let mut linear = 0u8;
+        // The magnification lanes (λ <= c): the base level, one level, the MAG filter; the
+        // selects on the float compare (a `[bool; 8]` mask kept this loop scalar).
+        let c = self.c;
         for l in 0..LANES {
-            lv[l] = if mag[l] { base } else { lv[l] };
-            f[l] = if mag[l] { 0.0 } else { f[l] };
-            linear |= u8::from(if mag[l] { mag_lin } else { min_lin }) << l;
+            let mag = lam[l] <= c;
+            lv[l] = if mag { base } else { lv[l] };
+            f[l] = if mag { 0.0 } else { f[l] };
         }
+        let mag = mask_le(&lam, c);
+        let all = |b: bool| if b { 0xffu8 } else { 0 };
+        let linear = (mag & all(self.mag != gl::NEAREST)) | (!mag & all(min_lin));
         (lv, linear, f)
     }
 
@@ -500,11 +502,7 @@ impl Sampler {
     ) {
         let (la, linear, f) = self.select_lanes(lambda);
         let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
-        let (mut second, mut same) = (0u8, 0u8);
-        for l in 0..LANES {
-            second |= u8::from(f[l] != 0.0) << l;
-            same |= u8::from(la[l] == first) << l;
-        }
+        let (second, same) = (mask_ne_zero(&f), mask_eq(&la, first));
         let (linear, second) = (linear & m, second & m);
         if same & m == m && (linear == 0 || linear == m) {
             let linear = linear != 0;
@@ -563,9 +561,10 @@ impl Sampler {
         };
         let tx: &[[f32; 4]] = &v.texels;
         let (w, h) = (v.width, v.height);
+        let dense = dense_level(tx, w, h).then_some(tx);
         match self.compare {
-            None => self.pass_on(linear, tx, w, h, s, t, m, out, |_, t| t),
-            Some(func) => self.pass_on(linear, tx, w, h, s, t, m, out, |l, t| {
+            None => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |_, t| t),
+            Some(func) => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |l, t| {
                 depth_compare(func, r[l], t)
             }),
         }
@@ -617,8 +616,8 @@ impl Sampler {
         }
         let m = m & have;
         match self.compare {
-            None => self.pass_on(linear, &tx, &w, &h, s, t, m, out, |_, t| t),
-            Some(func) => self.pass_on(linear, &tx, &w, &h, s, t, m, out, |l, t| {
+            None => self.pass_on(linear, &tx, None, &w, &h, s, t, m, out, |_, t| t),
+            Some(func) => self.pass_on(linear, &tx, None, &w, &h, s, t, m, out, |l, t| {
                 depth_compare(func, r[l], t)
             }),
         }
@@ -628,13 +627,16 @@ impl Sampler {
     /// level for all), `cmp(l, texel)` giving what `fetch` makes of lane l's texel (itself, or
     /// the comparison result). The wrap indices and weights are computed on all eight lanes
     /// (integer indices and inside flags, no `Option`), the texels fetched lane by lane (a
-    /// gather) and blended with the weights computed on lanes.
+    /// gather) and blended with the weights computed on lanes. `dense`: the one level's texels
+    /// when [`dense_level`] holds for them (then every in-image index is below their power-of-two
+    /// length, and the gathers read them through an index mask instead of a bounds check).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn pass_on<X: Texels, A: Axis>(
         &self,
         linear: bool,
         tx: X,
+        dense: Option<&[[f32; 4]]>,
         w: A,
         h: A,
         s: &[f32; LANES],
@@ -656,9 +658,32 @@ impl Sampler {
                 },
             )
         };
+        // Wrap modes whose indices are always inside the image (no border texel).
+        let edge = |mode: u32| matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER);
         if !linear {
             let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, w);
             let (j, ji) = wrap_nearest_lanes(self.wrap[1], t, h);
+            // NEAREST's CLAMP clamps the index like CLAMP_TO_EDGE: only CLAMP_TO_BORDER can
+            // leave the image.
+            let in_image =
+                self.wrap[0] != gl::CLAMP_TO_BORDER && self.wrap[1] != gl::CLAMP_TO_BORDER;
+            if let (true, Some(dt)) = (in_image, dense) {
+                // Every index inside a level of w·h texels: k = j·w + i < w·h = dt.len().
+                let Some(km) = dt.len().checked_sub(1) else {
+                    return;
+                };
+                let wl = w.at(0);
+                let mut k = [0i32; LANES];
+                for l in 0..LANES {
+                    k[l] = j[l].wrapping_mul(wl).wrapping_add(i[l]);
+                }
+                for (l, o) in out.iter_mut().enumerate() {
+                    if m & (1 << l) != 0 {
+                        *o = cmp(l, dt[k[l] as usize & km]);
+                    }
+                }
+                return;
+            }
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
                     *o = texel(l, i[l], j[l], ii[l] && ji[l]);
@@ -677,7 +702,35 @@ impl Sampler {
             wt[2][l] = (1.0 - a) * b;
             wt[3][l] = a * b;
         }
-        let edge = |mode: u32| matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER);
+        if let (false, false, Some(dt)) = (edge(self.wrap[0]), edge(self.wrap[1]), dense) {
+            // As below, the four indices of each lane on lanes and the gathers through the
+            // index mask (each index j·w + i < w·h = dt.len(), so the mask keeps it).
+            let Some(km) = dt.len().checked_sub(1) else {
+                return;
+            };
+            let wl = w.at(0);
+            let mut k = [[0i32; LANES]; 4];
+            // A plain lane loop over the four index arrays (clippy would have it iterate one).
+            #[allow(clippy::needless_range_loop)]
+            for l in 0..LANES {
+                let (r0, r1) = (y.i0[l].wrapping_mul(wl), y.i1[l].wrapping_mul(wl));
+                k[0][l] = r0.wrapping_add(x.i0[l]);
+                k[1][l] = r0.wrapping_add(x.i1[l]);
+                k[2][l] = r1.wrapping_add(x.i0[l]);
+                k[3][l] = r1.wrapping_add(x.i1[l]);
+            }
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let at = |c: usize| cmp(l, dt[k[c][l] as usize & km]);
+                *o = bilinear(
+                    [wt[0][l], wt[1][l], wt[2][l], wt[3][l]],
+                    [at(0), at(1), at(2), at(3)],
+                );
+            }
+            return;
+        }
         if !edge(self.wrap[0]) && !edge(self.wrap[1]) {
             // No index can fall outside the image (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT on
             // both axes): the four texels of each lane without the border choice, the row
@@ -1268,6 +1321,127 @@ fn fast_log2_lane(x: f32) -> f32 {
     }
 }
 
+/// [`fast_log2_lane`] on eight lanes, as SSE2 code on x86-64 (LLVM leaves the scalar lane
+/// loop scalar, with branches): the same operations per lane (the exponent as an integer
+/// converted exactly, plus the mantissa minus one) and the same special values, selected by
+/// compare masks.
+#[inline(always)]
+fn fast_log2_lanes(x: &[f32; LANES]) -> [f32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let half = |h: [f32; 4]| -> [f32; 4] {
+            // SAFETY: SSE2 is part of the x86-64 baseline (see `ifloor_lanes`); `__m128` is
+            // four f32 lanes in memory order, the layout of `[f32; 4]`, every bit pattern valid.
+            unsafe {
+                let v = std::mem::transmute::<[f32; 4], __m128>(h);
+                let bits = _mm_castps_si128(v);
+                let e = _mm_sub_epi32(
+                    _mm_and_si128(_mm_srli_epi32(bits, 23), _mm_set1_epi32(0xff)),
+                    _mm_set1_epi32(127),
+                );
+                let m = _mm_castsi128_ps(_mm_or_si128(
+                    _mm_and_si128(bits, _mm_set1_epi32(0x007f_ffff)),
+                    _mm_set1_epi32(0x3f80_0000),
+                ));
+                let val = _mm_add_ps(_mm_cvtepi32_ps(e), _mm_sub_ps(m, _mm_set1_ps(1.0)));
+                // -∞ for ±0, +∞ for +∞, NaN otherwise; `val` where 0 < x < +∞.
+                let inf = _mm_set1_ps(f32::INFINITY);
+                let zero = _mm_cmpeq_ps(v, _mm_setzero_ps());
+                let is_inf = _mm_cmpeq_ps(v, inf);
+                let not_zero = _mm_or_ps(
+                    _mm_and_ps(is_inf, inf),
+                    _mm_andnot_ps(is_inf, _mm_set1_ps(f32::NAN)),
+                );
+                let special = _mm_or_ps(
+                    _mm_and_ps(zero, _mm_set1_ps(f32::NEG_INFINITY)),
+                    _mm_andnot_ps(zero, not_zero),
+                );
+                let ok = _mm_and_ps(_mm_cmpgt_ps(v, _mm_setzero_ps()), _mm_cmplt_ps(v, inf));
+                std::mem::transmute::<__m128, [f32; 4]>(_mm_or_ps(
+                    _mm_and_ps(ok, val),
+                    _mm_andnot_ps(ok, special),
+                ))
+            }
+        };
+        let lo = half([x[0], x[1], x[2], x[3]]);
+        let hi = half([x[4], x[5], x[6], x[7]]);
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x.map(fast_log2_lane)
+    }
+}
+
+/// The lanes of `x` as a mask, bit l for lane l, from four-lane compare masks (`movmskps`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn lane_bits(
+    x: [f32; LANES],
+    f: impl Fn(std::arch::x86_64::__m128) -> std::arch::x86_64::__m128,
+) -> u8 {
+    use std::arch::x86_64::*;
+    let half = |h: [f32; 4]| -> u8 {
+        // SAFETY: SSE2 is part of the x86-64 baseline (see `ifloor_lanes`); `__m128` has the
+        // layout of `[f32; 4]` and every bit pattern is valid for both.
+        unsafe { _mm_movemask_ps(f(std::mem::transmute::<[f32; 4], __m128>(h))) as u8 }
+    };
+    half([x[0], x[1], x[2], x[3]]) | half([x[4], x[5], x[6], x[7]]) << 4
+}
+
+/// Bit l set where `x[l] != 0.0` (true for a NaN, as in Rust).
+#[inline(always)]
+fn mask_ne_zero(x: &[f32; LANES]) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86-64 baseline; `cmpneqps` is true for unordered lanes.
+        lane_bits(*x, |v| unsafe { _mm_cmpneq_ps(v, _mm_setzero_ps()) })
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        (0..LANES).fold(0, |b, l| b | u8::from(x[l] != 0.0) << l)
+    }
+}
+
+/// Bit l set where `x[l] <= c` (false for a NaN, as in Rust).
+#[inline(always)]
+fn mask_le(x: &[f32; LANES], c: f32) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86-64 baseline; `cmpleps` is false for unordered lanes.
+        lane_bits(*x, |v| unsafe { _mm_cmple_ps(v, _mm_set1_ps(c)) })
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        (0..LANES).fold(0, |b, l| b | u8::from(x[l] <= c) << l)
+    }
+}
+
+/// Bit l set where `x[l] == v`.
+#[inline(always)]
+fn mask_eq(x: &[i32; LANES], v: i32) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let half = |h: [i32; 4]| -> u8 {
+            // SAFETY: SSE2 is part of the x86-64 baseline; `__m128i` has the layout of
+            // `[i32; 4]` and every bit pattern is valid for both.
+            unsafe {
+                let a = std::mem::transmute::<[i32; 4], __m128i>(h);
+                _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(a, _mm_set1_epi32(v)))) as u8
+            }
+        };
+        half([x[0], x[1], x[2], x[3]]) | half([x[4], x[5], x[6], x[7]]) << 4
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        (0..LANES).fold(0, |b, l| b | u8::from(x[l] == v) << l)
+    }
+}
+
 /// The sizes of one axis for the lanes of a pass: one per lane (`&[i32; LANES]`, lanes on
 /// different levels) or one for all (`i32`, every lane on one level: the compiler then keeps
 /// the size in a register and the wrap loops work on a broadcast value).
@@ -1458,6 +1632,21 @@ fn all_pow2(n: &[i32; LANES]) -> bool {
     })
 }
 
+/// Can a one-level pass gather `tx`, a level of `w` x `h` texels, through an index mask: at
+/// least one texel per axis, exactly w·h texels, a power-of-two count that fits an i32. Then
+/// every index j·w + i of an in-image texel (0 <= i < w, 0 <= j < h, what every wrap mode but
+/// the border's gives) lies in 0..tx.len(), where `k & (tx.len() - 1)` is k itself: the same
+/// texel `Level::texel` reads, without a bounds check that cannot fail.
+#[inline(always)]
+fn dense_level(tx: &[[f32; 4]], w: i32, h: i32) -> bool {
+    let n = tx.len();
+    w >= 1
+        && h >= 1
+        && n.is_power_of_two()
+        && n <= i32::MAX as usize
+        && (w as usize).checked_mul(h as usize) == Some(n)
+}
+
 /// [`wrap_nearest_i`] on eight lanes (the floors by [`ifloor_lanes`]), lane l along an axis
 /// of `n.at(l)` texels: the mode (and whether every n is a power of two) chosen once, each arm
 /// a plain loop over the lanes with a constant mode, so every lane is the scalar index.
@@ -1558,39 +1747,99 @@ fn bilinear(w: [f32; 4], t: [[f32; 4]; 4]) -> [f32; 4] {
     o
 }
 
-/// Quads of one span row whose λ [`SpanLambda`] keeps: a 64-pixel span starting on an odd x
-/// touches 33.
-const SPAN_QUADS: usize = 8 * 5;
+/// Chunks of eight quads (16 pixels, from a multiple of 16) whose λ a [`LamRow`] keeps: a
+/// tile row of 64 pixels is four, and a span may run one chunk further.
+const ROW_CHUNKS: usize = 5;
+
+/// What λ of a quad depends on besides its position (the bits of): the s, t, r and q planes
+/// `quad_lambda_lanes` reads, the sampler's base size, dimensions and cube flag, the quad
+/// row's y and the planes' origin x. Two spans with equal keys get equal λ for each quad.
+type LamKey = [u32; 20];
+
+/// λ of one unit for the quads of one quad row (two pixel rows) of one primitive, per thread:
+/// the span of row y computes its quads, the span of row y + 1 (the same quads, §3.8.8's
+/// derivatives are per 2x2 quad) finds them here instead of computing them again.
+#[derive(Clone, Copy)]
+struct LamRow {
+    key: LamKey,
+    /// Bumped whenever the row is started over, so a [`SpanLambda`] that checked the key
+    /// once need not compare it again while the row stays its own.
+    gen: u32,
+    /// The chunk number (window x / 16) of `lam[..LANES]`.
+    c0: i32,
+    /// Which chunks are computed (bit k: `lam[k * LANES..][..LANES]`).
+    done: u8,
+    /// The chunks' λ, and a spare entry (the window `SpanLambda::lanes` reads is five quads).
+    lam: [f32; ROW_CHUNKS * LANES + 1],
+}
+
+impl LamRow {
+    const EMPTY: LamRow = LamRow {
+        key: [0; 20],
+        gen: 0,
+        c0: 0,
+        done: 0,
+        lam: [0.0; ROW_CHUNKS * LANES + 1],
+    };
+}
+
+thread_local! {
+    /// One λ row per texture unit, per thread (each tile is rasterised on one thread).
+    static LAM_ROWS: std::cell::RefCell<[LamRow; MAX_TEXTURE_UNITS]> =
+        const { std::cell::RefCell::new([LamRow::EMPTY; MAX_TEXTURE_UNITS]) };
+}
 
 /// λ of one unit for the 2x2 quads of a span row, computed eight quads at a time as the
-/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once, where computing
-/// it per lane evaluated every quad twice (lanes 2k and 2k+1 of an aligned group share one).
-/// Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad position, so the same bits.
+/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once per quad row. The
+/// quads live in the thread's [`LamRow`] of the unit, so the span of the second pixel row of a
+/// quad row reuses what the first computed when the key (planes, sampler size, quad row,
+/// origin) is the same. Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad
+/// position (its lanes are independent of each other), so the same bits.
 #[derive(Clone, Copy, Debug)]
 pub struct SpanLambda {
-    /// Window x of the span's first quad (even).
-    q0: i32,
     /// Window x of the planes' origin (the primitive's bounding-box corner).
     ox: i32,
     /// The quads' lower-left y relative to the planes' origin.
     qy: f32,
-    /// Which groups of eight quads are computed.
-    done: u8,
-    lam: [f32; SPAN_QUADS],
+    /// The key, once the first call has made it.
+    key: Option<LamKey>,
+    /// The [`LamRow::gen`] this span last found its key in (None: not looked yet).
+    gen: Option<u32>,
 }
 
 impl SpanLambda {
-    /// For a span row whose first pixel is at window x `x0`, with the planes' origin at window
-    /// x `ox` and the row's quads at `qy` (relative to the origin, as `quad_lambda` takes it).
+    /// For a span row whose first pixel is at window x `x0` (not needed: the quads are kept by
+    /// window x), with the planes' origin at window x `ox` and the row's quads at `qy`
+    /// (relative to the origin, as `quad_lambda` takes it).
     #[inline]
     pub fn new(x0: i32, ox: i32, qy: f32) -> SpanLambda {
+        let _ = x0;
         SpanLambda {
-            q0: x0 & !1,
             ox,
             qy,
-            done: 0,
-            lam: [0.0; SPAN_QUADS],
+            key: None,
+            gen: None,
         }
+    }
+
+    /// The key of this span with sampler `s` and planes `planes` (the varying s at `to`).
+    fn key(&self, s: &Sampler, planes: &[f32], to: usize) -> LamKey {
+        let mut k = [0u32; 20];
+        for (j, v) in k.iter_mut().take(12).enumerate() {
+            *v = planes
+                .get(3 * (1 + to) + j)
+                .copied()
+                .unwrap_or(0.0)
+                .to_bits();
+        }
+        k[12] = s.size[0].to_bits();
+        k[13] = s.size[1].to_bits();
+        k[14] = s.size[2].to_bits();
+        k[15] = s.dims as u32;
+        k[16] = u32::from(s.cube);
+        k[17] = self.qy.to_bits();
+        k[18] = self.ox as u32;
+        k
     }
 
     /// λ for the eight pixels from window x `x` (lane l at x + l): each its quad's, as
@@ -1598,31 +1847,81 @@ impl SpanLambda {
     /// on every call for one `SpanLambda`.
     #[inline]
     pub fn lanes(&mut self, s: &Sampler, planes: &[f32], to: usize, x: i32) -> [f32; LANES] {
+        let direct = |this: &SpanLambda| {
+            let qx = std::array::from_fn(|l| {
+                (x.wrapping_add(l as i32) & !1).wrapping_sub(this.ox) as f32
+            });
+            s.quad_lambda_lanes(planes, to, qx, this.qy)
+        };
         let last = x.saturating_add(LANES as i32 - 1);
-        let (ka, kb) = ((x & !1) - self.q0, (last & !1) - self.q0);
-        if ka < 0 || kb >= 2 * SPAN_QUADS as i32 || last == i32::MAX {
-            // Outside the row's buffer: every lane's quad directly.
-            let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(self.ox) as f32);
-            return s.quad_lambda_lanes(planes, to, qx, self.qy);
+        if last == i32::MAX || x < i32::MIN / 2 {
+            return direct(self);
         }
-        let (ka, kb) = ((ka / 2) as usize, (kb / 2) as usize);
-        for c in ka / LANES..=kb / LANES {
-            if self.done & (1 << c) != 0 {
-                continue;
+        let key = match self.key {
+            Some(k) => k,
+            None => {
+                let k = self.key(s, planes, to);
+                self.key = Some(k);
+                k
             }
-            let first = self.q0 + 2 * (c * LANES) as i32;
-            let qx = std::array::from_fn(|j| (first + 2 * j as i32).wrapping_sub(self.ox) as f32);
-            let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
-            self.lam[c * LANES..(c + 1) * LANES].copy_from_slice(&v);
-            self.done |= 1 << c;
+        };
+        // Chunk numbers of the group's first and last pixels (floor of x / 16).
+        let (ca, cb) = (x >> 4, last >> 4);
+        let got = LAM_ROWS.try_with(|rows| {
+            let mut rows = rows.try_borrow_mut().ok()?;
+            let row = rows.get_mut(s.unit)?;
+            let fits = |row: &LamRow| ca >= row.c0 && cb - row.c0 < ROW_CHUNKS as i32;
+            if self.gen != Some(row.gen) || !fits(row) {
+                if row.key != key || !fits(row) {
+                    // Start the row over: the 64-pixel block holding x, or from x's chunk
+                    // when the group runs past that block's last chunk.
+                    row.key = key;
+                    row.c0 = if cb - ((x >> 6) << 2) < ROW_CHUNKS as i32 {
+                        (x >> 6) << 2
+                    } else {
+                        ca
+                    };
+                    row.done = 0;
+                    row.gen = row.gen.wrapping_add(1);
+                }
+                self.gen = Some(row.gen);
+            }
+            for c in ca..=cb {
+                let k = (c - row.c0) as usize;
+                if row.done & (1 << k) != 0 {
+                    continue;
+                }
+                // Chunk c's quads start at window x 16c, two pixels apart.
+                let first = c.wrapping_mul(2 * LANES as i32);
+                let qx = std::array::from_fn(|j| {
+                    first.wrapping_add(2 * j as i32).wrapping_sub(self.ox) as f32
+                });
+                let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
+                row.lam
+                    .get_mut(k * LANES..(k + 1) * LANES)?
+                    .copy_from_slice(&v);
+                row.done |= 1 << k;
+            }
+            // Lane l's quad is number (x + l) / 2 (floor): d + (x mod 2 + l) / 2 in the row,
+            // d = x / 2 - 8·c0 (lane 7's at most d + 4, inside the chunks; `lam` has one
+            // spare entry after them for the window of an even x).
+            let d = (x >> 1) - row.c0 * LANES as i32;
+            let w: [f32; 5] = row
+                .lam
+                .get(usize::try_from(d).ok()?..)?
+                .get(..5)?
+                .try_into()
+                .ok()?;
+            Some(if x & 1 == 0 {
+                [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
+            } else {
+                [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
+            })
+        });
+        match got {
+            Ok(Some(v)) => v,
+            _ => direct(self),
         }
-        // Lane l's quad is number (x + l - q0) / 2 (q0 is even); d + 7 < 2·SPAN_QUADS here.
-        let d = (x - self.q0) as usize;
-        let mut out = [0.0f32; LANES];
-        for (l, o) in out.iter_mut().enumerate() {
-            *o = self.lam.get((d + l) >> 1).copied().unwrap_or(0.0);
-        }
-        out
     }
 }
 

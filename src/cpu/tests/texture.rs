@@ -433,6 +433,116 @@ fn fast_log2_lane_is_fast_log2() {
             x.to_bits()
         );
     }
+    // `fast_log2_lanes`: each lane `fast_log2_lane`'s bits (its NaN is `f32::NAN`'s), the
+    // specials in every lane position.
+    for k in 0..40_000usize {
+        let x: [f32; LANES] = std::array::from_fn(|l| match (k + l) % 3 {
+            0 => special[(k * LANES + l) % special.len()],
+            _ => f32::from_bits(next() as u32),
+        });
+        let got = fast_log2_lanes(&x);
+        for l in 0..LANES {
+            let want = fast_log2_lane(x[l]);
+            assert_eq!(
+                got[l].to_bits(),
+                want.to_bits(),
+                "{:e} ({:#x})",
+                x[l],
+                x[l].to_bits()
+            );
+        }
+    }
+}
+
+#[test]
+fn lane_masks_are_the_lane_compares() {
+    // `mask_ne_zero`, `mask_le` and `mask_eq` against the Rust comparisons lane by lane: NaN,
+    // ±0, ±∞, equal and neighbouring values, random bits.
+    let mut next = lcg(29u64);
+    let pick = |next: &mut dyn FnMut() -> u64| match next() % 8 {
+        0 => f32::NAN,
+        1 => 0.0,
+        2 => -0.0,
+        3 => [f32::INFINITY, -f32::INFINITY, 0.5, 1.0][(next() % 4) as usize],
+        4 => f32::from_bits(0x3f00_0001),
+        _ => f32::from_bits(next() as u32),
+    };
+    for _ in 0..50_000 {
+        let x: [f32; LANES] = std::array::from_fn(|_| pick(&mut next));
+        let c = pick(&mut next);
+        let i: [i32; LANES] = std::array::from_fn(|_| (next() % 4) as i32 - 2);
+        let v = (next() % 4) as i32 - 2;
+        let (ne, le, eq) = (mask_ne_zero(&x), mask_le(&x, c), mask_eq(&i, v));
+        for l in 0..LANES {
+            assert_eq!(ne >> l & 1 == 1, x[l] != 0.0, "{:?}", x[l]);
+            assert_eq!(le >> l & 1 == 1, x[l] <= c, "{:?} <= {c:?}", x[l]);
+            assert_eq!(eq >> l & 1 == 1, i[l] == v);
+        }
+    }
+}
+
+#[test]
+fn dense_gathers_only_on_whole_power_of_two_levels() {
+    // `dense_level`: the masked gather only where every in-image index is below the texel
+    // count; a level whose texel vector is longer or shorter than w·h (not made by the GL
+    // entry points, but a `Level` allows it) and NPOT levels take the checked gather, and all
+    // of them sample as `shade` does (a missing texel reads (0, 0, 0, 0) on both paths).
+    assert!(dense_level(&[[0.0; 4]; 64], 8, 8));
+    assert!(dense_level(&[[0.0; 4]; 1], 1, 1));
+    assert!(dense_level(&[[0.0; 4]; 8], 8, 1));
+    assert!(!dense_level(&[[0.0; 4]; 64], 4, 4));
+    assert!(!dense_level(&[[0.0; 4]; 8], 4, 4));
+    assert!(!dense_level(&[[0.0; 4]; 15], 5, 3));
+    assert!(!dense_level(&[], 0, 0));
+    assert!(!dense_level(&[[0.0; 4]; 4], -2, -2));
+    assert!(!dense_level(&[[0.0; 4]; 4], 4, 0));
+    let mut next = lcg(31u64);
+    let wraps = [
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::CLAMP_TO_BORDER,
+        gl::MIRRORED_REPEAT,
+    ];
+    // (width, height, texels stored)
+    let shapes = [
+        (4, 4, 16),
+        (4, 4, 32),
+        (4, 4, 8),
+        (8, 2, 16),
+        (5, 3, 15),
+        (2, 2, 2),
+    ];
+    for round in 0..600 {
+        let (w, h, n) = shapes[round % shapes.len()];
+        let vals: Vec<[f32; 4]> = (0..n)
+            .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
+            .collect();
+        let mut lv = level(w, h, gl::RGBA, |_, _| [0.0; 4]);
+        lv.texels = Arc::new(vals);
+        let filter = [gl::NEAREST, gl::LINEAR][round / shapes.len() % 2];
+        let mut obj = obj_with(vec![lv], filter, filter);
+        obj.wrap_s = wraps[(next() % 5) as usize];
+        obj.wrap_t = wraps[(next() % 5) as usize];
+        let s = sampler(obj, gl::REPLACE);
+        for _ in 0..4 {
+            let lanes = |next: &mut dyn FnMut() -> u64| -> [f32; LANES] {
+                std::array::from_fn(|_| (next() % 4000) as f32 / 1000.0 - 2.0)
+            };
+            let (cs, ct) = (lanes(&mut next), lanes(&mut next));
+            let (cr, cq) = ([0.0; LANES], [1.0; LANES]);
+            let m = (next() % 256) as u8;
+            let got = s.texels_lanes([&cs, &ct, &cr, &cq], &[0.0; LANES], m);
+            for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
+                let want = s.texel([cs[l], ct[l], 0.0, 1.0], 0.0);
+                assert_eq!(
+                    got[l].map(f32::to_bits),
+                    want.map(f32::to_bits),
+                    "round {round} {w}x{h} ({n} texels) lane {l}"
+                );
+            }
+        }
+    }
 }
 
 #[test]
@@ -903,6 +1013,54 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
         }
     }
     assert!(checked > 50_000, "{checked}");
+}
+
+#[test]
+fn span_lambda_rows_share_quads_only_with_the_same_key() {
+    // Spans of both pixel rows of quad rows, of a few primitives (plane sets) and samplers
+    // that differ only in size or dimensions, all on unit 0, in a random order, so that the
+    // thread's λ row is reused (same planes, sampler, quad row and origin), started over
+    // (any of them differs), and reached by spans that start left of, right of and past the
+    // quads it holds: every lane is `quad_lambda` of its quad, bit for bit.
+    let mut next = lcg(41u64);
+    let mut samplers = lambda_samplers();
+    let mut wide = samplers[1].clone();
+    wide.size[0] = 128.0;
+    samplers.push(wide);
+    let mut checked = 0;
+    for round in 0..400 {
+        let planes: Vec<Vec<f32>> = (0..3).map(|_| random_planes(&mut next)).collect();
+        let ox = (next() % 300) as i32 - 150;
+        for _ in 0..24 {
+            let s = &samplers[(next() % samplers.len() as u64) as usize];
+            let pl = &planes[(next() % 3) as usize];
+            let to = (next() % 2) as usize;
+            // Mostly one quad row (two pixel rows), sometimes the next.
+            let qrow = (round % 5) * 2 + if next() % 6 == 0 { 2 } else { 0 };
+            let qy = qrow as f32;
+            let x0 = ox + (next() % 200) as i32 - 40;
+            let n = 1 + (next() % 70) as usize;
+            let mut sl = SpanLambda::new(x0, ox, qy);
+            let mut g = 0;
+            while g < n {
+                if next() % 5 != 0 {
+                    let got = sl.lanes(s, pl, to, x0 + g as i32);
+                    for (l, got) in got.iter().enumerate() {
+                        let qx = (((x0 + (g + l) as i32) & !1) - ox) as f32;
+                        let want = s.quad_lambda(pl, to, qx, qy);
+                        let same = got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan();
+                        assert!(
+                            same,
+                            "round {round} x0 {x0} g {g} lane {l}: {got} vs {want}"
+                        );
+                        checked += 1;
+                    }
+                }
+                g += LANES;
+            }
+        }
+    }
+    assert!(checked > 100_000, "{checked}");
 }
 
 #[test]
