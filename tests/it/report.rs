@@ -338,14 +338,19 @@ fn bench_times_a_call_through_the_c_abi_library_beside_it() {
 #[test]
 fn cli_output_to_a_closed_pipe_or_a_full_device_ends_quietly() {
     use std::process::Stdio;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fixedgl"))
-        .arg("list")
+    // The read end must be closed before the program writes anything, or a small output
+    // fits in the pipe and the run succeeds: a shell waits for its standard input to close,
+    // which happens after the read end is closed, and only then runs the program.
+    let mut child = Command::new("sh")
+        .args(["-c", "cat > /dev/null; exec \"$0\" list"])
+        .arg(env!("CARGO_BIN_EXE_fixedgl"))
+        .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .unwrap_or_else(|e| panic!("cannot run fixedgl: {e}"));
-    // The read end closes before the program writes anything.
+        .unwrap_or_else(|e| panic!("cannot run sh: {e}"));
     drop(child.stdout.take());
+    drop(child.stdin.take());
     let out = child.wait_with_output().expect("fixedgl list");
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(141), "stderr: {stderr}");
