@@ -1420,6 +1420,54 @@ mod tests {
     /// outside [0, 1], NaN now and then), with or without per-fragment operations (alpha
     /// test, stencil, fog, blending, logic op), the colour sum, a texture unit, masks, a
     /// second colour buffer and the coverage count.
+    /// A tile's buffers for the span tests: colour, second colour, depth, stencil.
+    type Tile = (Vec<[u8; 4]>, Vec<[u8; 4]>, Vec<u32>, Vec<u8>);
+
+    /// One span of a primitive in a tile: row `y`, columns `xs` (inclusive), the tile at
+    /// `origin`.
+    struct Span<'a> {
+        p: &'a RPrim,
+        planes: &'a [f32],
+        origin: (i32, i32),
+        y: i32,
+        xs: (i32, i32),
+    }
+
+    impl Span<'_> {
+        /// The span drawn into copies of `tile` (its second colour buffer used when `two`)
+        /// through `tri_span` (`lanes`) or through `scalar_span` with `ops`: the buffers after,
+        /// and the samples counted.
+        fn draw(&self, f: &FragCtx, ops: &Ops, tile: &Tile, two: bool, lanes: bool) -> (Tile, u64) {
+            let (mut c, mut c2, mut d, mut s) = tile.clone();
+            let ((tx, ty), (x0, x1), y, p) = (self.origin, self.xs, self.y, self.p);
+            let mut bufs = TileBufs {
+                color: &mut c,
+                color2: two.then_some(&mut c2[..]),
+                depth: &mut d,
+                stencil: &mut s,
+                x: tx,
+                y: ty,
+                samples: 0,
+            };
+            if lanes {
+                f.tri_span(&mut bufs, p, self.planes, y, x0, x1);
+            } else {
+                let fy = (y - p.bbox[1]) as f32;
+                let zrow = p.z[0] + p.z[2] * fy;
+                let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
+                let n = (x1 - x0 + 1) as usize;
+                scalar_span(f, ops, &mut bufs, p, self.planes, fy, zrow, base, x0, n);
+            }
+            let samples = bufs.samples;
+            ((c, c2, d, s), samples)
+        }
+
+        /// The span on lanes and through the scalar sequence (see `draw`).
+        fn both(&self, f: &FragCtx, ops: &Ops, tile: &Tile, two: bool) -> [(Tile, u64); 2] {
+            [true, false].map(|lanes| self.draw(f, ops, tile, two, lanes))
+        }
+    }
+
     #[test]
     fn aa_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
         use crate::cpu::fragops::{BlendEval, FogEval, StencilSide};
@@ -1867,31 +1915,15 @@ mod tests {
                 ..f.clone()
             };
             let stencil: Vec<u8> = (0..TILE * TILE).map(|_| h.next() as u8 % 4).collect();
-            let run = |lanes: bool| {
-                let (mut c, mut c2, mut d, mut s) =
-                    (color.clone(), color.clone(), depth.clone(), stencil.clone());
-                let mut bufs = TileBufs {
-                    color: &mut c,
-                    color2: two.then_some(&mut c2[..]),
-                    depth: &mut d,
-                    stencil: &mut s,
-                    x: tx,
-                    y: ty,
-                    samples: 0,
-                };
-                if lanes {
-                    fo.tri_span(&mut bufs, &p, &planes, y, x0, x1);
-                } else {
-                    let fy = (y - p.bbox[1]) as f32;
-                    let zrow = p.z[0] + p.z[2] * fy;
-                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
-                    let n = (x1 - x0 + 1) as usize;
-                    scalar_span(&fo, &ops, &mut bufs, &p, &planes, fy, zrow, base, x0, n);
-                }
-                let samples = bufs.samples;
-                (c, c2, d, s, samples)
+            let tile = (color.clone(), color.clone(), depth.clone(), stencil);
+            let span = Span {
+                p: &p,
+                planes: &planes,
+                origin: (tx, ty),
+                y,
+                xs: (x0, x1),
             };
-            let (got, want) = (run(true), run(false));
+            let [got, want] = span.both(&fo, &ops, &tile, two);
             assert!(
                 got == want,
                 "round {round} with {ops:?}: {f:?} {p:?} y {y} x {x0}..={x1}"
@@ -2045,35 +2077,15 @@ mod tests {
             let y = ty + (g.next() % TILE as u64) as i32;
             let x0 = tx + (g.next() % TILE as u64) as i32;
             let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
-            let run = |lanes: bool| {
-                let (mut c, mut c2, mut d, mut s) = (
-                    color.clone(),
-                    color2.clone(),
-                    depth.clone(),
-                    stencil.clone(),
-                );
-                let mut bufs = TileBufs {
-                    color: &mut c,
-                    color2: two.then_some(&mut c2[..]),
-                    depth: &mut d,
-                    stencil: &mut s,
-                    x: tx,
-                    y: ty,
-                    samples: 0,
-                };
-                if lanes {
-                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
-                } else {
-                    let fy = (y - p.bbox[1]) as f32;
-                    let zrow = p.z[0] + p.z[2] * fy;
-                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
-                    let n = (x1 - x0 + 1) as usize;
-                    scalar_span(&f, &ops, &mut bufs, &p, &planes, fy, zrow, base, x0, n);
-                }
-                let samples = bufs.samples;
-                (c, c2, d, s, samples)
+            let tile = (color, color2, depth, stencil);
+            let span = Span {
+                p: &p,
+                planes: &planes,
+                origin: (tx, ty),
+                y,
+                xs: (x0, x1),
             };
-            let (got, want) = (run(true), run(false));
+            let [got, want] = span.both(&f, &ops, &tile, two);
             assert!(
                 got == want,
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"

@@ -640,6 +640,40 @@ pub fn store(row: &mut [[u8; 4]], c: &[B; 4], m: u8, mask: [bool; 4]) {
     }
 }
 
+/// Pixels `4h..4h + 4` (`h` 0 or 1) of a group as four RGBA8 words, red in the low byte: each
+/// channel through `unorm8`'s arithmetic (clamped to [0, 1], times 255/256 plus 32768, the low
+/// byte of the sum's bits), four lanes at a time.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn pack4(rgb: &[F; 3], a: &F, h: usize) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::{
+        _mm_add_ps, _mm_and_si128, _mm_castps_si128, _mm_loadu_ps, _mm_max_ps, _mm_min_ps,
+        _mm_mul_ps, _mm_or_si128, _mm_set1_epi32, _mm_set1_ps, _mm_setzero_ps, _mm_slli_epi32,
+    };
+    let o = 4 * (h & 1);
+    // SAFETY: SSE2 is part of the x86-64 baseline; each load reads four f32 of a `[f32; 8]`
+    // at offset 0 or 4 (in bounds, no alignment needed).
+    unsafe {
+        let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+        let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+        let low = _mm_set1_epi32(0xFF);
+        let conv = |p: *const f32| {
+            let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
+            _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
+        };
+        _mm_or_si128(
+            _mm_or_si128(
+                conv(rgb[0].as_ptr().add(o)),
+                _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
+            ),
+            _mm_or_si128(
+                _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
+                _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
+            ),
+        )
+    }
+}
+
 /// `store` of the unorm8 conversion (`lanes::unorm8_lanes`) of `rgb` and `a`, without the
 /// channel-major bytes between: on x86-64 each lane's converted values (0..=255 in the low
 /// byte of its 32-bit lane, `unorm8_lanes`'s `maxps`, `minps`, `mulps`, `addps` and mask) are
@@ -652,38 +686,20 @@ pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool
     if let Some(px) = row.get_mut(..LANES) {
         use std::arch::x86_64::__m128i;
         use std::arch::x86_64::{
-            _mm_add_ps, _mm_and_si128, _mm_andnot_si128, _mm_castps_si128, _mm_cmpeq_epi32,
-            _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps, _mm_min_ps, _mm_mul_ps, _mm_or_si128,
-            _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps, _mm_slli_epi32,
-            _mm_storeu_si128,
+            _mm_and_si128, _mm_andnot_si128, _mm_cmpeq_epi32, _mm_loadu_si128, _mm_or_si128,
+            _mm_set1_epi32, _mm_set_epi32, _mm_storeu_si128,
         };
         let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
-        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of a
-        // `[f32; 8]` at offsets 0 and 4; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read
-        // and written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        // SAFETY: SSE2 is part of the x86-64 baseline; `px` holds eight `[u8; 4]`, 32
+        // contiguous bytes, read and written 16 bytes at offsets 0 and 16 (in bounds, no
+        // alignment needed).
         unsafe {
-            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
-            let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
-            let low = _mm_set1_epi32(0xFF);
-            let conv = |p: *const f32| {
-                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
-                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
-            };
             let bits = _mm_set_epi32(8, 4, 2, 1);
             let cmv = _mm_set1_epi32(cm as i32);
             let p = px.as_mut_ptr().cast::<__m128i>();
             for h in 0..2 {
                 let o = 4 * h;
-                let v = _mm_or_si128(
-                    _mm_or_si128(
-                        conv(rgb[0].as_ptr().add(o)),
-                        _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
-                    ),
-                    _mm_or_si128(
-                        _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
-                        _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
-                    ),
-                );
+                let v = pack4(rgb, a, h);
                 let lv = _mm_set1_epi32(i32::from(m >> o));
                 let sel = _mm_and_si128(_mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits), cmv);
                 let old = _mm_loadu_si128(p.add(h));
@@ -735,25 +751,17 @@ pub fn blend_unorm8(
     #[cfg(target_arch = "x86_64")]
     if let Some(px) = row.get_mut(..LANES) {
         use std::arch::x86_64::{
-            __m128i, _mm_add_epi16, _mm_add_ps, _mm_adds_epu8, _mm_and_si128, _mm_andnot_si128,
-            _mm_castps_si128, _mm_cmpeq_epi32, _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps,
-            _mm_min_ps, _mm_mul_ps, _mm_mullo_epi16, _mm_or_si128, _mm_packus_epi16,
-            _mm_set1_epi16, _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps,
-            _mm_setzero_si128, _mm_shufflehi_epi16, _mm_shufflelo_epi16, _mm_slli_epi32,
-            _mm_srli_epi16, _mm_storeu_si128, _mm_sub_epi16, _mm_unpackhi_epi8, _mm_unpacklo_epi8,
+            __m128i, _mm_add_epi16, _mm_adds_epu8, _mm_and_si128, _mm_andnot_si128,
+            _mm_cmpeq_epi32, _mm_loadu_si128, _mm_mullo_epi16, _mm_or_si128, _mm_packus_epi16,
+            _mm_set1_epi16, _mm_set1_epi32, _mm_set_epi32, _mm_setzero_si128, _mm_shufflehi_epi16,
+            _mm_shufflelo_epi16, _mm_srli_epi16, _mm_storeu_si128, _mm_sub_epi16,
+            _mm_unpackhi_epi8, _mm_unpacklo_epi8,
         };
         let cm = u32::from_le_bytes(mask.map(|on| if on { 0xFF } else { 0 }));
-        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of a
-        // `[f32; 8]` at offsets 0 and 4; `px` holds eight `[u8; 4]`, 32 contiguous bytes, read
-        // and written 16 bytes at offsets 0 and 16 (in bounds, no alignment needed).
+        // SAFETY: SSE2 is part of the x86-64 baseline; `px` holds eight `[u8; 4]`, 32
+        // contiguous bytes, read and written 16 bytes at offsets 0 and 16 (in bounds, no
+        // alignment needed).
         unsafe {
-            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
-            let (k, bias) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
-            let low = _mm_set1_epi32(0xFF);
-            let conv = |p: *const f32| {
-                let c = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(p), zero), one);
-                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), bias)), low)
-            };
             let z = _mm_setzero_si128();
             let (c255, c128) = (_mm_set1_epi16(255), _mm_set1_epi16(128));
             // `mul8_lanes` of eight 16-bit lanes.
@@ -774,16 +782,7 @@ pub fn blend_unorm8(
             let p = px.as_mut_ptr().cast::<__m128i>();
             for h in 0..2 {
                 let o = 4 * h;
-                let src = _mm_or_si128(
-                    _mm_or_si128(
-                        conv(rgb[0].as_ptr().add(o)),
-                        _mm_slli_epi32::<8>(conv(rgb[1].as_ptr().add(o))),
-                    ),
-                    _mm_or_si128(
-                        _mm_slli_epi32::<16>(conv(rgb[2].as_ptr().add(o))),
-                        _mm_slli_epi32::<24>(conv(a.as_ptr().add(o))),
-                    ),
-                );
+                let src = pack4(rgb, a, h);
                 let old = _mm_loadu_si128(p.add(h));
                 let v = if add {
                     _mm_adds_epu8(src, old)
