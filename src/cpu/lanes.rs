@@ -369,6 +369,43 @@ pub fn varyings(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
     }
 }
 
+/// The eight lanes' x, `fx0 + 0` to `fx0 + 7`, as two SSE vectors.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn lane_xs_sse(fx0: i32) -> (std::arch::x86_64::__m128, std::arch::x86_64::__m128) {
+    use std::arch::x86_64::{_mm_add_ps, _mm_loadu_ps, _mm_set1_ps};
+    const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+    // SAFETY: SSE is part of the x86-64 baseline; the loads read four f32 at offsets 0 and 4
+    // of the eight-float `IOTA` (in bounds, no alignment needed).
+    unsafe {
+        let b = _mm_set1_ps(fx0 as f32);
+        (
+            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr())),
+            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr().add(4))),
+        )
+    }
+}
+
+/// The plane `a + dx·x + yt` at the lanes' x (`lane_xs_sse`), in that order of operations.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn plane_sse(
+    (xlo, xhi): (std::arch::x86_64::__m128, std::arch::x86_64::__m128),
+    a: f32,
+    dx: f32,
+    yt: f32,
+) -> (std::arch::x86_64::__m128, std::arch::x86_64::__m128) {
+    use std::arch::x86_64::{_mm_add_ps, _mm_mul_ps, _mm_set1_ps};
+    // SAFETY: SSE is part of the x86-64 baseline; register arithmetic only.
+    unsafe {
+        let (a, dx, yt) = (_mm_set1_ps(a), _mm_set1_ps(dx), _mm_set1_ps(yt));
+        (
+            _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xlo)), yt),
+            _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xhi)), yt),
+        )
+    }
+}
+
 /// `varyings` when `planes` holds every plane (`3 + 3·out.len()` floats): the same
 /// instructions as `plane_lanes`, `recip` and `mul_lanes` (`mulps`, `addps`, `divps`), with
 /// the lanes kept in registers and each varying stored straight into `out` (the array form
@@ -377,26 +414,12 @@ pub fn varyings(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn varyings_sse(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32; LANES]]) {
-    use std::arch::x86_64::{
-        _mm_add_ps, _mm_div_ps, _mm_loadu_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
-    };
-    const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
-    // SAFETY: SSE is part of the x86-64 baseline; the loads read four f32 at offsets 0 and 4
-    // of the eight-float `IOTA`, the stores write four f32 at offsets 0 and 4 of a
-    // `[f32; 8]` (in bounds, no alignment needed).
+    use std::arch::x86_64::{_mm_div_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps};
+    // SAFETY: SSE is part of the x86-64 baseline; the stores write four f32 at offsets 0 and
+    // 4 of a `[f32; 8]` (in bounds, no alignment needed).
     unsafe {
-        let b = _mm_set1_ps(fx0 as f32);
-        let (xlo, xhi) = (
-            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr())),
-            _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr().add(4))),
-        );
-        let plane = |a: f32, dx: f32, yt: f32| {
-            let (a, dx, yt) = (_mm_set1_ps(a), _mm_set1_ps(dx), _mm_set1_ps(yt));
-            (
-                _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xlo)), yt),
-                _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xhi)), yt),
-            )
-        };
+        let xs = lane_xs_sse(fx0);
+        let plane = |a: f32, dx: f32, yt: f32| plane_sse(xs, a, dx, yt);
         let (wlo, whi) = match planes {
             [w0, wx, wy, ..] => plane(*w0, *wx, *wy * fy),
             _ => return,
@@ -472,26 +495,13 @@ impl<const K: usize> RowVaryings<K> {
     pub fn eval(&self, fx0: i32, out: &mut [[f32; LANES]; K]) {
         #[cfg(target_arch = "x86_64")]
         {
-            use std::arch::x86_64::{
-                _mm_add_ps, _mm_div_ps, _mm_loadu_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
-            };
-            const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
-            // SAFETY: as in `varyings_sse`: SSE is part of the x86-64 baseline; the loads
-            // read four f32 at offsets 0 and 4 of the eight-float `IOTA`, the stores write
-            // four f32 at offsets 0 and 4 of a `[f32; 8]` (in bounds, no alignment needed).
+            use std::arch::x86_64::{_mm_div_ps, _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps};
+            // SAFETY: as in `varyings_sse`: SSE is part of the x86-64 baseline; the stores
+            // write four f32 at offsets 0 and 4 of a `[f32; 8]` (in bounds, no alignment
+            // needed).
             unsafe {
-                let b = _mm_set1_ps(fx0 as f32);
-                let (xlo, xhi) = (
-                    _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr())),
-                    _mm_add_ps(b, _mm_loadu_ps(IOTA.as_ptr().add(4))),
-                );
-                let plane = |p: &[f32; 3]| {
-                    let (a, dx, yt) = (_mm_set1_ps(p[0]), _mm_set1_ps(p[1]), _mm_set1_ps(p[2]));
-                    (
-                        _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xlo)), yt),
-                        _mm_add_ps(_mm_add_ps(a, _mm_mul_ps(dx, xhi)), yt),
-                    )
-                };
+                let xs = lane_xs_sse(fx0);
+                let plane = |p: &[f32; 3]| plane_sse(xs, p[0], p[1], p[2]);
                 let (wlo, whi) = plane(&self.w);
                 let one = _mm_set1_ps(1.0);
                 let (ilo, ihi) = (_mm_div_ps(one, wlo), _mm_div_ps(one, whi));
