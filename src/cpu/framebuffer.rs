@@ -411,18 +411,81 @@ impl Framebuffer {
         self.bytes_top_down(ColorBuf::Main)
     }
 
-    /// Colour buffer `buf` as RGBA8 bytes, top row first (image order).
+    /// Colour buffer `buf` as RGBA8 bytes, top row first (image order): the bytes of
+    /// [`Framebuffer::extend_with_row`] for each row, top-down, built by whole copies. Each band
+    /// of rows one tile high is read with its tiles' pending clears looked up once; a tile's row
+    /// in memory is one slice copy, and a run of tiles whose clear is pending is, in the band's
+    /// first row, its colour repeated and, in the band's other rows, one copy of the same bytes
+    /// of the row above (a band of pending tiles only: each row one copy of the row above).
     pub fn bytes_top_down(&self, buf: ColorBuf) -> Vec<u8> {
         let (w, h) = (self.width as usize, self.height as usize);
-        let mut out = Vec::with_capacity(w * h);
-        for y in (0..h).rev() {
-            self.extend_with_row(buf, y, &mut out);
+        let mut out: Vec<u8> = Vec::with_capacity(w * h * 4);
+        let src = self.buffer(buf);
+        let front = matches!((buf, &self.front), (ColorBuf::Front, Some(_)));
+        // Per tile of the band: its pending colour, or `None` (read from memory).
+        let mut fills: Vec<Option<[u8; 4]>> = Vec::with_capacity(self.tiles_x);
+        for ty in (0..self.tiles_y).rev() {
+            fills.clear();
+            fills.extend((0..self.tiles_x).map(|tx| {
+                let fill = self
+                    .pending
+                    .get(ty * self.tiles_x + tx)
+                    .copied()
+                    .unwrap_or_default();
+                if front {
+                    fill.front
+                } else {
+                    fill.main
+                }
+            }));
+            let rows = (ty * TILE..h.min((ty + 1) * TILE)).rev();
+            let first = out.len();
+            for y in rows {
+                let row = ty * self.tiles_x * TILE_PIXELS + (y % TILE) * TILE;
+                // Where the row above in this band starts in `out` (none in its first row).
+                let above = (out.len() > first).then(|| out.len() - w * 4);
+                let mut tx = 0;
+                while tx < self.tiles_x {
+                    let x0 = tx * TILE;
+                    match (fills.get(tx).copied().flatten(), above) {
+                        (None, _) => {
+                            let at = row + tx * TILE_PIXELS;
+                            let n = (w - x0).min(TILE);
+                            if let Some(px) = src.get(at..at + n) {
+                                out.extend_from_slice(px.as_flattened());
+                            }
+                            tx += 1;
+                        }
+                        (Some(c), None) => {
+                            let n = (w - x0).min(TILE);
+                            out.extend_from_slice([c; TILE][..n].as_flattened());
+                            tx += 1;
+                        }
+                        (Some(_), Some(a)) => {
+                            // The run of pending tiles from tx: the same bytes as the row above.
+                            let mut end = tx + 1;
+                            while fills.get(end).copied().flatten().is_some() {
+                                end += 1;
+                            }
+                            let x1 = w.min(end * TILE);
+                            let r = a + x0 * 4..a + x1 * 4;
+                            if r.end <= out.len() {
+                                out.extend_from_within(r);
+                            }
+                            tx = end;
+                        }
+                    }
+                }
+            }
         }
-        out.into_flattened()
+        debug_assert_eq!(out.len(), w * h * 4, "readback of the wrong size");
+        out
     }
 
     /// Appends row `y` (< height) of colour buffer `buf` to `out`: one slice copy per tile, or
-    /// the tile's pending clear colour (which stays pending).
+    /// the tile's pending clear colour (which stays pending). The statement of what
+    /// [`Framebuffer::bytes_top_down`] reads, row by row.
+    #[cfg(test)]
     fn extend_with_row(&self, buf: ColorBuf, y: usize, out: &mut Vec<[u8; 4]>) {
         let src = self.buffer(buf);
         let front = matches!((buf, &self.front), (ColorBuf::Front, Some(_)));
@@ -920,6 +983,56 @@ mod tests {
                     let want: Vec<_> = (0..n as i64).map(|k| fb.pixel_in(buf, x + k, y)).collect();
                     assert_eq!(got, want, "{buf:?} y {y} x {x} n {n}");
                 }
+            }
+        }
+    }
+
+    /// `bytes_top_down` is `extend_with_row` of every row, top-down, for random sizes (within
+    /// one tile, across tiles, partial edge tiles), random memory and random pending clears
+    /// per tile and buffer (runs of pending tiles of one colour and of different colours),
+    /// reading either colour buffer.
+    #[test]
+    fn bytes_top_down_is_the_rows_top_down() {
+        let mut g = crate::cpu::testgen::Gen(7);
+        for case in 0..300 {
+            let (w, h) = match case % 4 {
+                0 => (1 + (g.next() % 64) as u32, 1 + (g.next() % 64) as u32),
+                _ => (1 + (g.next() % 300) as u32, 1 + (g.next() % 200) as u32),
+            };
+            let config = ContextConfig {
+                double_buffered: g.next() % 2 == 0,
+                ..ContextConfig::default()
+            };
+            let mut fb = Framebuffer::try_new(w, h, config).expect("a test framebuffer");
+            for p in fb.color.iter_mut() {
+                *p = (g.next() as u32).to_le_bytes();
+            }
+            if let Some(f) = fb.front.as_mut() {
+                for p in f.iter_mut() {
+                    *p = (g.next() as u32).to_le_bytes();
+                }
+            }
+            // A few colours, so that neighbouring pending tiles often share one.
+            let colours = [[1, 2, 3, 4], [9, 8, 7, 6], (g.next() as u32).to_le_bytes()];
+            let density = g.next() % 5;
+            for fill in fb.pending.iter_mut() {
+                for slot in [&mut fill.main, &mut fill.front] {
+                    if g.next() % 4 < density {
+                        *slot = Some(colours[(g.next() % 3) as usize]);
+                    }
+                }
+            }
+            fb.any_pending = true;
+            for buf in [ColorBuf::Main, ColorBuf::Front] {
+                let mut want = Vec::new();
+                for y in (0..h as usize).rev() {
+                    fb.extend_with_row(buf, y, &mut want);
+                }
+                assert_eq!(
+                    fb.bytes_top_down(buf),
+                    want.as_flattened(),
+                    "case {case}: {w}x{h} {buf:?}"
+                );
             }
         }
     }
