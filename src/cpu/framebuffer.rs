@@ -531,6 +531,40 @@ impl Framebuffer {
         self.any_pending = false;
     }
 
+    /// Writes the pending clears of the tiles the inclusive pixel rectangle `[x0, y0, x1, y1]`
+    /// reaches (cut to the framebuffer) into the buffers, leaving the other tiles' pending:
+    /// what a write of that rectangle straight into the buffers' memory (DrawPixels, Bitmap)
+    /// calls first.
+    pub fn materialize_rect(&mut self, [x0, y0, x1, y1]: [i32; 4]) {
+        if !self.any_pending {
+            return;
+        }
+        let (w, h) = (self.width as i32, self.height as i32);
+        let (x0, y0, x1, y1) = (x0.max(0), y0.max(0), x1.min(w - 1), y1.min(h - 1));
+        if x0 > x1 || y0 > y1 {
+            return;
+        }
+        let (cols, rows) = (
+            x0 as usize / TILE..=x1 as usize / TILE,
+            y0 as usize / TILE..=y1 as usize / TILE,
+        );
+        for ty in rows {
+            for tx in cols.clone() {
+                let t = ty * self.tiles_x + tx;
+                let Some(fill) = self.pending.get_mut(t).filter(|f| !f.is_empty()) else {
+                    continue;
+                };
+                let r = t * TILE_PIXELS..(t + 1) * TILE_PIXELS;
+                let main = self.color.get_mut(r.clone());
+                let front = self.front.as_mut().and_then(|f| f.get_mut(r.clone()));
+                if let (Some(d), Some(s)) = (self.depth.get_mut(r.clone()), self.stencil.get_mut(r))
+                {
+                    fill.materialize(main, front, d, s);
+                }
+            }
+        }
+    }
+
     /// `glClear` (GL 2.1 §4.2.3): the buffers named in `mask` (colour: those DRAW_BUFFER
     /// names), inside the scissor box when the scissor test is enabled, through ColorMask /
     /// DepthMask / StencilMask. A depth or stencil bit without that buffer clears nothing.
@@ -1033,6 +1067,67 @@ mod tests {
                     want.as_flattened(),
                     "case {case}: {w}x{h} {buf:?}"
                 );
+            }
+        }
+    }
+
+    /// `materialize_rect` writes exactly the pending clears of the tiles the rectangle
+    /// reaches (rectangles partly or wholly outside the framebuffer included) and changes no
+    /// pixel's value.
+    #[test]
+    fn materialize_rect_writes_the_tiles_reached() {
+        let config = ContextConfig {
+            double_buffered: true,
+            ..ContextConfig::default()
+        };
+        let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
+        for rect in [
+            [0, 0, 0, 0],
+            [63, 63, 64, 64],
+            [70, 10, 129, 20],
+            [-40, -5, 5, 200],
+            [129, 69, 500, 500],
+            [130, 0, 140, 10],
+            [-10, -10, -1, 80],
+            [5, 5, 4, 9],
+        ] {
+            let mut fb = Framebuffer::try_new(130, 70, config).expect("a test framebuffer");
+            let mut st = State::new(130, 70);
+            st.config = config;
+            st.clear_color = Vec4::new(0.0, 1.0, 0.0, 1.0);
+            st.clear_depth = 0.25;
+            st.clear_stencil = 5;
+            fb.clear(&st, all);
+            let before: Vec<_> = (0..70)
+                .flat_map(|y| (0..130).map(move |x| (x, y)))
+                .map(|(x, y)| {
+                    (
+                        fb.pixel_in(ColorBuf::Main, x, y),
+                        fb.pixel_in(ColorBuf::Front, x, y),
+                    )
+                })
+                .collect();
+            let pending = fb.pending.clone();
+            fb.materialize_rect(rect);
+            let after: Vec<_> = (0..70)
+                .flat_map(|y| (0..130).map(move |x| (x, y)))
+                .map(|(x, y)| {
+                    (
+                        fb.pixel_in(ColorBuf::Main, x, y),
+                        fb.pixel_in(ColorBuf::Front, x, y),
+                    )
+                })
+                .collect();
+            assert_eq!(before, after, "{rect:?}");
+            let [x0, y0, x1, y1] = rect;
+            for (t, (now, was)) in fb.pending.iter().zip(&pending).enumerate() {
+                let (ox, oy) = ((t % 3) as i32 * 64, (t / 3) as i32 * 64);
+                let reached = x0.max(0).max(ox) <= x1.min(129).min(ox + 63)
+                    && y0.max(0).max(oy) <= y1.min(69).min(oy + 63);
+                match reached {
+                    true => assert!(now.is_empty(), "{rect:?} tile {t}"),
+                    false => assert_eq!(now, was, "{rect:?} tile {t}"),
+                }
             }
         }
     }

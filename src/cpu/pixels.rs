@@ -21,7 +21,7 @@ use rayon::prelude::*;
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::{
-    depth_unorm, scissor_rect, tile_slices, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
+    depth_unorm, scissor_rect, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
 };
 use super::texture::{Sampler, UnitTexels};
 use super::Renderer;
@@ -127,6 +127,9 @@ struct Shared<'a> {
     tex: [Option<(&'a Sampler, [f32; 4])>; MAX_TEXTURE_UNITS],
     /// Fog coordinate: the raster distance.
     fogc: f32,
+    /// `shade(color)`: the colour of every fragment of a bitmap or a depth rectangle (the
+    /// raster colour, textured at the raster position's coordinates), shaded once a draw.
+    shaded: Vec4,
 }
 
 impl Shared<'_> {
@@ -186,7 +189,7 @@ impl Renderer {
             && state.light_model.color_control == crate::gl::SEPARATE_SPECULAR_COLOR;
         let sum = (secondary && (lit_sum || state.enables.color_sum))
             .then(|| rp.secondary_color.truncate());
-        let shared = Shared {
+        let mut shared = Shared {
             z: f64::from(rp.window.z),
             color: rp.color,
             secondary: sum,
@@ -196,7 +199,9 @@ impl Renderer {
                     .map(|s| (s, rp.tex_coords[u].to_array()))
             }),
             fogc: rp.distance,
+            shaded: rp.color,
         };
+        shared.shaded = shared.shade(shared.color);
         let targets = Targets::of(state);
         let has_depth = self.core().fb.config().depth;
         let fctx = FragCtx {
@@ -233,10 +238,20 @@ impl Renderer {
         let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
         let core = self.core();
         let fb = &mut core.fb;
-        fb.materialize_all();
         let (tiles_x, tiles_y) = fb.tiles();
         let (x0, y0) = (d.cols.lo, d.rows.lo);
         let (x1, y1) = (x0 + d.cols.len() as i32 - 1, y0 + d.rows.len() as i32 - 1);
+        // Only the tiles the rectangle reaches are visited, in ascending order, and only
+        // their pending clears are written first (the others' stay pending).
+        fb.materialize_rect([x0, y0, x1, y1]);
+        let span = |lo: i32, hi: i32, n: usize| match hi < 0 {
+            true => 0..0,
+            false => (lo.max(0) as usize / TILE).min(n)..(hi as usize / TILE + 1).min(n),
+        };
+        let (across, up) = (span(x0, x1, tiles_x), span(y0, y1, tiles_y));
+        let tiles: Vec<usize> = up
+            .flat_map(|ty| across.clone().map(move |tx| ty * tiles_x + tx))
+            .collect();
         let Framebuffer {
             color,
             front,
@@ -251,7 +266,6 @@ impl Renderer {
             (true, Some(f)) => (color, Some(f)),
             _ => (color, None),
         };
-        let seconds = tile_slices(secondary, tiles_x * tiles_y);
         let tile_rect = |t: usize| {
             let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
             let (tx0, ty0) = (x0.max(ox), y0.max(oy));
@@ -309,32 +323,27 @@ impl Renderer {
             }
             bufs.samples
         };
+        let colors = super::tile_parts(primary, &tiles, TILE_PIXELS);
+        let mut seconds = secondary.map(|s| super::tile_parts(s, &tiles, TILE_PIXELS).into_iter());
+        let depths = super::tile_parts(depth, &tiles, TILE_PIXELS);
+        let stencils = super::tile_parts(stencil, &tiles, TILE_PIXELS);
+        let mut jobs = Vec::with_capacity(tiles.len());
+        for (((&t, c), z), s) in tiles.iter().zip(colors).zip(depths).zip(stencils) {
+            let c2 = seconds.as_mut().and_then(|it| it.next().flatten());
+            if let (Some(c), Some(z), Some(s)) = (c, z, s) {
+                jobs.push((t, c, c2, z, s));
+            }
+        }
         // A rectangle within one or two tiles (a glyph, a small image) is drawn on this
         // thread: handing it to the pool costs more than drawing it (`bench bitmap-text`).
         // Tiles are independent, so the pixels are the same either way.
-        let busy = (0..tiles_x * tiles_y)
-            .filter(|&t| {
-                let (_, _, tx0, ty0, tx1, ty1) = tile_rect(t);
-                tx0 <= tx1 && ty0 <= ty1
-            })
-            .count();
-        let counted: u64 = if busy <= 2 {
-            primary
-                .chunks_mut(TILE_PIXELS)
-                .zip(seconds)
-                .zip(depth.chunks_mut(TILE_PIXELS))
-                .zip(stencil.chunks_mut(TILE_PIXELS))
-                .enumerate()
-                .map(|(t, (((c, c2), d), s))| work(t, c, c2, d, s))
+        let counted: u64 = if jobs.len() <= 2 {
+            jobs.into_iter()
+                .map(|(t, c, c2, z, s)| work(t, c, c2, z, s))
                 .sum()
         } else {
-            primary
-                .par_chunks_mut(TILE_PIXELS)
-                .zip(seconds)
-                .zip(depth.par_chunks_mut(TILE_PIXELS))
-                .zip(stencil.par_chunks_mut(TILE_PIXELS))
-                .enumerate()
-                .map(|(t, (((c, c2), d), s))| work(t, c, c2, d, s))
+            jobs.into_par_iter()
+                .map(|(t, c, c2, z, s)| work(t, c, c2, z, s))
                 .sum()
         };
         core.samples_passed += counted;
@@ -380,6 +389,17 @@ fn put_row(
         }
     };
     match groups {
+        // Every channel written: whole pixels.
+        Groups::Bytes(b) if mask == [true; 4] => {
+            let Some(b) = b.get(row..) else { return true };
+            for dst in targets {
+                for (d, &gi) in dst.iter_mut().zip(cols) {
+                    if let Some(&px) = b.get(gi as usize) {
+                        *d = px;
+                    }
+                }
+            }
+        }
         Groups::Color(c) => {
             let Some(c) = c.get(row..) else { return true };
             for dst in targets {
@@ -437,13 +457,13 @@ fn fragment(
         }
         Groups::Depth(d) => {
             let Some(&z) = d.get(g) else { return };
-            (shared.color, z)
+            return fctx.pixel(bufs, i, z, shared.shaded, shared.fogc);
         }
         Groups::Bits(b) => {
             if b.get(g).copied().unwrap_or(0) == 0 {
                 return;
             }
-            (shared.color, shared.z)
+            return fctx.pixel(bufs, i, shared.z, shared.shaded, shared.fogc);
         }
         Groups::Stencil(s) => {
             // §4.3.1: only the scissor test (the span is cut to it) and the write mask apply.
