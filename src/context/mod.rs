@@ -154,9 +154,7 @@ impl Context {
         self.sync_capturing();
         self.attrib = Default::default();
         self.map_snapshots = Default::default();
-        if std::mem::take(&mut self.queries).active.is_some() {
-            self.renderer.stop_counting_samples(&self.state);
-        }
+        self.drop_queries();
         // A context of a share group sees the group's objects again, as a new one would.
         self.resync_share();
     }

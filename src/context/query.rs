@@ -4,8 +4,10 @@
 //! A query counts the fragments that pass the depth test (and every test before it: scissor,
 //! alpha, stencil) between BeginQuery(SAMPLES_PASSED) and EndQuery, as llvmpipe counts them: the
 //! CPU renderer counts only while a query is active (`Renderer::start_counting_samples`), so a
-//! program that never begins one pays nothing. EndQuery draws what is batched and takes the
-//! count, so a result is always available when GetQueryObject asks.
+//! program that never begins one pays nothing. EndQuery draws what is batched into the scene,
+//! each flush tagged with the query's count, and reading the result (GetQueryObject) rasterises
+//! the scene if it must, so a result is always available when GetQueryObject asks, and a frame
+//! whose results are not read (a replay) makes no pass of its own for its queries.
 //!
 //! Design decision: query objects live in the context, beside display lists, not in `State`
 //! (no attribute group holds them). Names are handed out as Mesa does (the block after the
@@ -29,8 +31,10 @@ struct QueryObject {
     /// The target of its first BeginQuery; 0 until then (a name GenQueries returned is not yet
     /// a query object for IsQuery, §6.1.12).
     target: u32,
-    /// The count of the last query that ended on it.
+    /// The count of the last query that ended on it, once read.
     result: u64,
+    /// The renderer's number of that count while it is not read (`Renderer::take_samples`).
+    count: Option<u64>,
 }
 
 /// The context's query objects and the active query.
@@ -108,7 +112,9 @@ impl Context {
                 self.renderer.stop_counting_samples(&self.state);
                 self.queries.active = None;
             }
-            self.queries.objects.remove(&id);
+            if let Some(n) = self.queries.objects.remove(&id).and_then(|q| q.count) {
+                self.renderer.forget_samples(n);
+            }
         }
     }
 
@@ -138,10 +144,31 @@ impl Context {
         }
         let q = &mut self.queries;
         let object = q.objects.entry(id).or_default();
-        *object = QueryObject { target, result: 0 };
+        let unread = object.count.take();
         q.max_name = q.max_name.max(id);
         q.active = Some(id);
-        self.renderer.start_counting_samples(&self.state);
+        if let Some(n) = unread {
+            self.renderer.forget_samples(n);
+        }
+        let count = self.renderer.start_counting_samples(&self.state);
+        if let Some(object) = self.queries.objects.get_mut(&id) {
+            *object = QueryObject {
+                target,
+                result: 0,
+                count: Some(count),
+            };
+        }
+    }
+
+    /// Ends every query and forgets the objects' counts (`Context::reset`).
+    pub(super) fn drop_queries(&mut self) {
+        let queries = std::mem::take(&mut self.queries);
+        if queries.active.is_some() {
+            self.renderer.stop_counting_samples(&self.state);
+        }
+        for n in queries.objects.values().filter_map(|q| q.count) {
+            self.renderer.forget_samples(n);
+        }
     }
 
     /// `glEndQuery(SAMPLES_PASSED)`: ends the active query; its result is the count.
@@ -155,13 +182,11 @@ impl Context {
         if target != gl::SAMPLES_PASSED {
             return self.error(gl::INVALID_ENUM);
         }
-        let Some(id) = self.queries.active.take() else {
+        if self.queries.active.take().is_none() {
             return self.error(gl::INVALID_OPERATION);
-        };
-        let count = self.renderer.stop_counting_samples(&self.state);
-        if let Some(q) = self.queries.objects.get_mut(&id) {
-            q.result = count;
         }
+        // The count is taken when the result is read.
+        self.renderer.stop_counting_samples(&self.state);
     }
 
     /// `glGetQueryiv(SAMPLES_PASSED, pname)`: QUERY_COUNTER_BITS (64, as llvmpipe) or
@@ -200,8 +225,23 @@ impl Context {
             return None;
         };
         match pname {
-            gl::QUERY_RESULT => Some(q.result),
-            // The count is taken at EndQuery: always available.
+            gl::QUERY_RESULT => Some(match q.count {
+                // Read once: the scene is rasterised if it still holds flushes it counts.
+                Some(n) => {
+                    let result = self.renderer.take_samples(n);
+                    if let Some(q) = self.queries.objects.get_mut(&id) {
+                        *q = QueryObject {
+                            count: None,
+                            result,
+                            ..*q
+                        };
+                    }
+                    result
+                }
+                None => q.result,
+            }),
+            // The count is complete whenever it is read (the scene is rasterised then):
+            // always available.
             gl::QUERY_RESULT_AVAILABLE => Some(1),
             _ => {
                 self.error(gl::INVALID_ENUM);
@@ -211,7 +251,7 @@ impl Context {
     }
 
     /// `glGetQueryObjectiv`: QUERY_RESULT (the count, saturated at i32::MAX as Mesa does) or
-    /// QUERY_RESULT_AVAILABLE (always TRUE: the count is complete at EndQuery) of query `id`
+    /// QUERY_RESULT_AVAILABLE (always TRUE: the count is completed when read) of query `id`
     /// into `params[0]`. Errors as GL 2.1 §6.1.12 and Mesa: INVALID_OPERATION between Begin and
     /// End, for 0, a name that is no query object or the active query, then INVALID_ENUM for a
     /// pname; INVALID_VALUE (Rust API) for an empty `params`.

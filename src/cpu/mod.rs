@@ -110,9 +110,12 @@ pub struct Renderer {
     pub(crate) sink: feedback::Sink,
     /// Diagnostic: fragments add 1 to the red byte instead of writing colour.
     pub(crate) count_coverage: bool,
-    /// An occlusion query is active: draws count the fragments that pass the depth test (and
-    /// every test before it) into `Core::samples_passed`. Off, no draw counts anything.
-    count_samples: bool,
+    /// The count of the active occlusion query, if any: draws count the fragments that pass
+    /// the depth test (and every test before it) into its `Core::counts` entry. None, no draw
+    /// counts anything.
+    counting: Option<u64>,
+    /// The number the next occlusion query's count gets (`start_counting_samples`).
+    next_count: u64,
     /// Diagnostic: batches drawn in the background so far.
     pub(crate) background_draws: u64,
     /// Diagnostic: draws and the calling thread's time in them (`Context::draw_stats`).
@@ -169,8 +172,11 @@ struct Core {
     fb: Framebuffer,
     asm: Vec<Asm>,
     scene: Scene,
-    /// Fragments counted since `start_counting_samples` (GL 2.1 §4.1.7's SAMPLES_PASSED).
-    samples_passed: u64,
+    /// Occlusion queries' counts (GL 2.1 §4.1.7's SAMPLES_PASSED) by number, from
+    /// `start_counting_samples` until `take_samples` or `forget_samples`: a count is complete
+    /// once the flushes it counts are rasterised, which waits, like any other draw, for the
+    /// scene to be needed (`Renderer::take_samples` rasterises it).
+    counts: Vec<(u64, u64)>,
     /// Rasterisation passes so far (`DrawStats::passes`).
     passes: u64,
 }
@@ -229,7 +235,8 @@ struct Frag {
     lighting: Option<Lighting>,
     mats: Vec<[Material; 2]>,
     count: bool,
-    samples: bool,
+    /// The occlusion query counting this flush's fragments (`Core::counts`).
+    samples: Option<u64>,
     stipple: Option<[u32; 32]>,
     ops: Option<fragops::Ops>,
     samplers: [Option<texture::Sampler>; MAX_TEXTURE_UNITS],
@@ -254,7 +261,7 @@ impl Frag {
             lighting: self.lighting.as_ref(),
             mats: &self.mats,
             count: self.count,
-            samples: self.samples,
+            samples: self.samples.is_some(),
             stipple: self.stipple,
             ops: self.ops,
             crossbar: fragment::crossbar(&tex),
@@ -385,7 +392,8 @@ impl Renderer {
             pending: None,
             sink: feedback::Sink::default(),
             count_coverage: false,
-            count_samples: false,
+            counting: None,
+            next_count: 0,
             background_draws: 0,
             stats: DrawStats::default(),
             #[cfg(test)]
@@ -454,7 +462,7 @@ impl Renderer {
         // changing its own.
         let state = Box::new(state.clone());
         let count = self.count_coverage;
-        let samples = self.count_samples;
+        let samples = self.counting;
         let (tx, rx) = mpsc::channel();
         self.pending = Some(Mutex::new(rx));
         self.background_draws += 1;
@@ -595,18 +603,48 @@ impl Renderer {
 
     /// Starts an occlusion query's count (GL 2.1 §4.1.7): everything batched so far is drawn
     /// uncounted, then every fragment that passes the depth test (after scissor, alpha and
-    /// stencil tests) counts, until `stop_counting_samples`.
-    pub fn start_counting_samples(&mut self, state: &State) {
+    /// stencil tests) counts, until `stop_counting_samples`. Returns the count's number, for
+    /// [`Renderer::take_samples`]. Nothing is rasterised: the flushes join the scene, each
+    /// tagged with the count it adds to, as any other draw (llvmpipe's queries are resolved
+    /// when their result is read, too).
+    pub fn start_counting_samples(&mut self, state: &State) -> u64 {
         self.flush(state);
-        self.core().samples_passed = 0;
-        self.count_samples = true;
+        let n = self.next_count;
+        self.next_count = self.next_count.wrapping_add(1);
+        self.counting = Some(n);
+        self.unresolved_core().counts.push((n, 0));
+        n
     }
 
-    /// Ends the count: draws what is batched (counted), and returns the fragments counted.
-    pub fn stop_counting_samples(&mut self, state: &State) -> u64 {
+    /// Ends the count: draws what is batched (counted, into the scene).
+    pub fn stop_counting_samples(&mut self, state: &State) {
         self.flush(state);
-        self.count_samples = false;
-        std::mem::take(&mut self.core().samples_passed)
+        self.counting = None;
+    }
+
+    /// The fragments count `n` counted (0 for a count forgotten or already taken), once every
+    /// flush it counts is rasterised; the count is then forgotten.
+    pub fn take_samples(&mut self, n: u64) -> u64 {
+        let counts = &mut self.core().counts;
+        match counts.iter().position(|&(k, _)| k == n) {
+            Some(at) => counts.swap_remove(at).1,
+            None => 0,
+        }
+    }
+
+    /// Forgets count `n` (a query object deleted or begun again before its result was
+    /// read): what is still to be rasterised of it counts nowhere.
+    pub fn forget_samples(&mut self, n: u64) {
+        self.unresolved_core().counts.retain(|&(k, _)| k != n);
+    }
+
+    /// The core once no background draw holds it, its scene left as it is.
+    fn unresolved_core(&mut self) -> &mut Core {
+        self.wait();
+        match self.core.as_deref_mut() {
+            Some(core) => core,
+            None => Self::lost(),
+        }
     }
 
     /// Drops the vertices batched so far without drawing them (`Context::reset`).
@@ -638,7 +676,7 @@ impl Renderer {
             return;
         }
         let count = self.count_coverage;
-        let samples = self.count_samples;
+        let samples = self.counting;
         let t0 = std::time::Instant::now();
         let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, true);
         let Renderer {
@@ -664,7 +702,7 @@ impl Core {
             fb: Framebuffer::new(width, height),
             asm: Vec::new(),
             scene: Scene::default(),
-            samples_passed: 0,
+            counts: Vec::new(),
             passes: 0,
         }
     }
@@ -674,7 +712,7 @@ impl Core {
             fb: Framebuffer::try_new(width, height, config)?,
             asm: Vec::new(),
             scene: Scene::default(),
-            samples_passed: 0,
+            counts: Vec::new(),
             passes: 0,
         })
     }
@@ -689,7 +727,7 @@ impl Core {
         verts: &Processed,
         plan: Plan,
         count_coverage: bool,
-        count_samples: bool,
+        count_samples: Option<u64>,
     ) {
         let Plan { layout, ctx } = plan;
         let targets = Targets::of(state);
@@ -812,7 +850,7 @@ impl Core {
         let Core {
             fb,
             scene,
-            samples_passed,
+            counts,
             passes,
             ..
         } = self;
@@ -821,15 +859,50 @@ impl Core {
         }
         *passes += 1;
         let ctxs: Vec<FragCtx> = scene.frags.iter().map(Frag::ctx).collect();
-        let parts: Vec<(&FragCtx, &[Worker])> = scene
+        // The occlusion queries the parts count for, each given a slot of `rasterise`'s sums.
+        let mut queries: Vec<u64> = Vec::new();
+        let slots: Vec<Option<usize>> = scene
+            .frags
+            .iter()
+            .map(|f| {
+                let n = f.samples?;
+                Some(match queries.iter().position(|&k| k == n) {
+                    Some(slot) => slot,
+                    None => {
+                        queries.push(n);
+                        queries.len() - 1
+                    }
+                })
+            })
+            .collect();
+        let parts: Vec<Piece> = scene
             .parts
             .iter()
-            .filter_map(|p| Some((ctxs.get(p.frag)?, scene.workers.get(p.workers.clone())?)))
+            .filter_map(|p| {
+                Some((
+                    ctxs.get(p.frag)?,
+                    slots.get(p.frag).copied().flatten(),
+                    scene.workers.get(p.workers.clone())?,
+                ))
+            })
             .collect();
-        *samples_passed += rasterise(fb, &parts, scene.targets);
+        let sums = rasterise(fb, &parts, queries.len(), scene.targets);
+        for (n, sum) in queries.iter().zip(sums) {
+            if let Some((_, c)) = counts.iter_mut().find(|(k, _)| k == n) {
+                *c = c.wrapping_add(sum);
+            }
+        }
         drop(parts);
         drop(ctxs);
         scene.clear();
+    }
+
+    /// Adds `n` fragments to occlusion query count `query` (a pixel rectangle's, drawn in
+    /// place).
+    fn add_samples(&mut self, query: u64, n: u64) {
+        if let Some((_, c)) = self.counts.iter_mut().find(|(k, _)| *k == query) {
+            *c = c.wrapping_add(n);
+        }
     }
 }
 
@@ -934,13 +1007,18 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
     });
 }
 
+/// One piece of a flush to rasterise: its fragment-stage state, the slot of the occlusion
+/// query it counts for (`rasterise`'s sums), and the workers holding its binned primitives.
+type Piece<'a> = (&'a FragCtx<'a>, Option<usize>, &'a [Worker]);
+
 /// Rasterisation and fragment operations of `parts` (each a flush's fragment-stage state and
 /// the workers holding a piece of its binned primitives), tiles in parallel; inside a tile,
 /// the parts in order, and in each part worker 0's primitives first, then worker 1's, ...,
 /// which is submission order. Colour goes to the buffers `targets` names: the main buffer,
 /// the front buffer, or both (the front one as each tile's second colour slice). Returns the
-/// fragments counted for an occlusion query (by the parts whose `FragCtx::samples` is set).
-fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Targets) -> u64 {
+/// fragments counted for each of `queries` occlusion query slots (by the parts whose
+/// `FragCtx::samples` is set, into their slot).
+fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Targets) -> Vec<u64> {
     let (tx, ty) = fb.tiles();
     let Framebuffer {
         color,
@@ -960,7 +1038,7 @@ fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Tar
     // are not visited: their pending clears stay pending).
     let mut busy: Vec<usize> = parts
         .iter()
-        .flat_map(|(_, ws)| ws.iter())
+        .flat_map(|(_, _, ws)| ws.iter())
         .flat_map(|w| w.touched.iter().map(|&t| t as usize))
         .filter(|&t| t < tx * ty)
         .collect();
@@ -978,7 +1056,7 @@ fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Tar
             jobs.push((t, c, c2, d, s, f));
         }
     }
-    let work = |(t, color, mut color2, depth, stencil, fill): Job| -> u64 {
+    let work = |(t, color, mut color2, depth, stencil, fill): Job| -> Vec<u64> {
         // A lazily cleared tile is written before its first primitive (the colour buffer
         // not drawn stays pending).
         if !fill.is_empty() {
@@ -996,7 +1074,9 @@ fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Tar
             y: ((t / tx) * TILE) as i32,
             samples: 0,
         };
-        for &(fctx, workers) in parts {
+        let mut sums = vec![0u64; queries];
+        for &(fctx, slot, workers) in parts {
+            let before = bufs.samples;
             for w in workers {
                 for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
                     if let Some(p) = w.prims.get(pi as usize) {
@@ -1004,21 +1084,32 @@ fn rasterise(fb: &mut Framebuffer, parts: &[(&FragCtx, &[Worker])], targets: Tar
                     }
                 }
             }
+            if let Some(sum) = slot.and_then(|s| sums.get_mut(s)) {
+                *sum = sum.wrapping_add(bufs.samples.wrapping_sub(before));
+            }
         }
-        bufs.samples
+        sums
+    };
+    // The tiles' sums, slot by slot.
+    let add = |a: Vec<u64>, b: Vec<u64>| {
+        let (mut long, short) = if a.len() >= b.len() { (a, b) } else { (b, a) };
+        for (x, y) in long.iter_mut().zip(&short) {
+            *x = x.wrapping_add(*y);
+        }
+        long
     };
     // Primitives within one or two tiles, or whose bounding boxes hold fewer pixels than two
     // tiles, are drawn on this thread: handing them to the pool costs more than drawing them.
     // Tiles are independent, so the pixels are the same.
     let area: u64 = parts
         .iter()
-        .flat_map(|(_, ws)| ws.iter())
+        .flat_map(|(_, _, ws)| ws.iter())
         .map(|w| w.area)
         .sum();
     if jobs.len() <= 2 || area < SERIAL_AREA {
-        jobs.into_iter().map(work).sum()
+        jobs.into_iter().map(work).fold(Vec::new(), add)
     } else {
-        jobs.into_par_iter().map(work).sum()
+        jobs.into_par_iter().map(work).reduce(Vec::new, add)
     }
 }
 

@@ -220,7 +220,7 @@ impl Renderer {
             lighting: None,
             mats: &[],
             count: self.count_coverage,
-            samples: self.count_samples,
+            samples: self.counting.is_some(),
             // Polygon stipple applies to polygons only (§3.5.6).
             stipple: None,
             ops: super::fragops::Ops::new(state),
@@ -236,6 +236,7 @@ impl Renderer {
             && !fctx.count
             && !fctx.samples;
         let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
+        let counting = self.counting;
         let core = self.core();
         let fb = &mut core.fb;
         let (tiles_x, tiles_y) = fb.tiles();
@@ -346,7 +347,9 @@ impl Renderer {
                 .map(|(t, c, c2, z, s)| work(t, c, c2, z, s))
                 .sum()
         };
-        core.samples_passed += counted;
+        if let Some(query) = counting {
+            core.add_samples(query, counted);
+        }
     }
 }
 

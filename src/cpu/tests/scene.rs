@@ -210,3 +210,84 @@ fn changing_a_texture_the_scene_samples_copies_no_image() {
     assert_eq!(img.get_pixel(2, 61).0, [255; 4]);
     assert_eq!(gl.get_error(), gl::NO_ERROR);
 }
+
+/// Occlusion queries whose results are read late: four query objects, each begun and ended
+/// around its own objects (one begun twice, its first count never read; one counting a pixel
+/// rectangle; one counting nothing), all read after the last object. Each result, and the
+/// image, equals the frame that reads each result right after its EndQuery (a pass each);
+/// read late, the frame makes one pass.
+#[test]
+fn queries_read_late_count_what_they_counted() {
+    fn frame(read_at_once: bool) -> (Vec<u8>, [u32; 4], u64) {
+        let mut gl = Context::new(200, 160).expect("context");
+        gl.clear_color(0.1, 0.2, 0.3, 1.0);
+        gl.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+        gl.matrix_mode(gl::PROJECTION);
+        gl.ortho(0.0, 200.0, 0.0, 160.0, -10.0, 10.0);
+        gl.matrix_mode(gl::MODELVIEW);
+        gl.enable(gl::DEPTH_TEST);
+        let mut ids = [0u32; 4];
+        gl.gen_queries(4, &mut ids);
+        let mut counts = [0u32; 4];
+        let passes = gl.draw_stats().passes;
+        // (query, first object, end object): query 0 twice, query 3 around objects that are
+        // all behind what is drawn.
+        let ranges = [
+            (0, 10, 40),
+            (1, 60, 120),
+            (2, 130, 200),
+            (0, 210, 260),
+            (3, 270, 280),
+        ];
+        for k in 0..300usize {
+            for &(q, lo, hi) in &ranges {
+                if k == lo {
+                    gl.begin_query(gl::SAMPLES_PASSED, ids[q]);
+                }
+                if k == hi {
+                    gl.end_query(gl::SAMPLES_PASSED);
+                    if read_at_once && !(q == 0 && lo == 10) {
+                        let mut n = [0u32];
+                        gl.get_query_objectuiv(ids[q], gl::QUERY_RESULT, &mut n);
+                        counts[q] = n[0];
+                    }
+                }
+            }
+            if k == 150 {
+                let px: Vec<u8> = (0..4 * 30 * 20).map(|i| (i * 7) as u8).collect();
+                gl.raster_pos3f(20.5, 30.5, -9.0);
+                gl.draw_pixels(30, 20, gl::RGBA, gl::UNSIGNED_BYTE, &px);
+            }
+            gl.load_identity();
+            // Query 3's objects lie outside the window: no fragment.
+            let x = match (270..280).contains(&k) {
+                true => -500.0,
+                false => (k * 37 % 190) as f32,
+            };
+            let y = (k * 53 % 150) as f32;
+            gl.translatef(x, y, (k % 9) as f32 - 4.0);
+            gl.rotatef((k * 13 % 360) as f32, 0.0, 0.0, 1.0);
+            let s = 4.0 + (k % 5) as f32 * 7.0;
+            gl.color3f((k % 7) as f32 / 7.0, 0.5, (k % 3) as f32 / 3.0);
+            gl.rectf(-s, -s, s, s);
+        }
+        if !read_at_once {
+            for (q, count) in counts.iter_mut().enumerate() {
+                let mut n = [0u32];
+                gl.get_query_objectuiv(ids[q], gl::QUERY_RESULT, &mut n);
+                *count = n[0];
+            }
+        }
+        assert_eq!(gl.get_error(), gl::NO_ERROR);
+        let image = gl.to_image().into_raw();
+        (image, counts, gl.draw_stats().passes - passes)
+    }
+    let (late, late_counts, late_passes) = frame(false);
+    let (once, once_counts, _) = frame(true);
+    assert_eq!(late_counts, once_counts, "query results");
+    assert!(late == once, "the images differ");
+    assert!(late_counts[..3].iter().all(|&n| n > 100), "{late_counts:?}");
+    assert_eq!(late_counts[3], 0, "{late_counts:?}");
+    // The pixel rectangle rasterises the scene once; the results' reads once more.
+    assert_eq!(late_passes, 2, "passes");
+}
