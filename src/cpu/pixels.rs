@@ -78,6 +78,15 @@ impl Span {
         }
         let (first, last) = (first as i32, last as i32);
         let z = f64::from(zoom);
+        // Zoom 1 from a whole start (every bitmap, DrawPixels at its rounded raster position):
+        // (p + 0.5 − start) / 1 is exact in f64 for i32 coordinates, and its floor is p − start.
+        if z == 1.0 && start.fract() == 0.0 && start.abs() <= f64::from(i32::MAX) {
+            let (start, top) = (start as i64, (n - 1) as i64);
+            let groups = (first..=last)
+                .map(|p| (i64::from(p) - start).clamp(0, top) as u32)
+                .collect();
+            return Span { lo: first, groups };
+        }
         let groups = (first..=last)
             .map(|p| {
                 // §3.6.5: a centre on the boundary between two groups belongs to the group
@@ -384,7 +393,12 @@ fn put_row(
         .as_deref_mut()
         .and_then(|c| c.get_mut(first..end));
     let targets = bufs.color.get_mut(first..end).into_iter().chain(second);
+    let full = mask == [true; 4];
     let store = |dst: &mut [u8; 4], px: [u8; 4]| {
+        if full {
+            *dst = px;
+            return;
+        }
         for k in 0..4 {
             if mask[k] {
                 dst[k] = px[k];
@@ -518,6 +532,50 @@ pub fn spans(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Zoom 1 from a whole start (the shortcut) gives each covered pixel the group of the
+    /// general rule, floor((p + 0.5 − start) / zoom) clamped to the groups there are.
+    #[test]
+    fn zoom_one_spans_are_the_general_rule() {
+        let mut seed = 5u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 33
+        };
+        for case in 0..5000 {
+            let n = 1 + (next() % 120) as usize;
+            let start = (next() % 700) as i32 - 300;
+            let (min, max) = ((next() % 300) as i32 - 100, (next() % 400) as i32);
+            // The far edge: the exact one, or a little past it (a clipped or inexact end).
+            let end = f64::from(start) + n as f64 + [0.0, 0.3, -0.6][case % 3];
+            let s = Span::new(f64::from(start), end, n, 1.0, min, max);
+            // The same edges by the general rule (zoom 1 taken as any other zoom).
+            let (a, b) = (
+                (f64::from(start) * 256.0).round() / 256.0,
+                (end * 256.0).round() / 256.0,
+            );
+            let first = ((a - 0.5).ceil()).max(f64::from(min));
+            let last = ((b - 0.5).ceil() - 1.0).min(f64::from(max));
+            let want: Vec<u32> = match first > last {
+                true => Vec::new(),
+                false => (first as i32..=last as i32)
+                    .map(|p| {
+                        let t = (f64::from(p) + 0.5 - f64::from(start)) / 1.0;
+                        t.floor().clamp(0.0, (n - 1) as f64) as u32
+                    })
+                    .collect(),
+            };
+            assert_eq!(
+                s.groups, want,
+                "case {case}: start {start} n {n} [{min}, {max}]"
+            );
+            if !want.is_empty() {
+                assert_eq!(s.lo, first as i32, "case {case}");
+            }
+        }
+    }
 
     #[test]
     fn spans_follow_the_zoom() {
