@@ -720,7 +720,7 @@ pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool
 }
 
 /// The usual blends of `blend` (FUNC_ADD for RGB and alpha with SRC_ALPHA,
-/// ONE_MINUS_SRC_ALPHA or ONE, ONE for both) of the unorm8 conversion of `rgb` and `a` over a
+/// ONE_MINUS_SRC_ALPHA, ONE, ONE or SRC_ALPHA, ONE for both) of the unorm8 conversion of `rgb` and `a` over a
 /// whole group of `row` (eight pixels), stored as `store` stores; false (nothing written) for
 /// another state, a shorter row or another architecture. On x86-64 every step stays
 /// pixel-major (no channel-major bytes between): the source pixels are assembled as in
@@ -728,7 +728,9 @@ pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool
 /// ONE_MINUS_SRC_ALPHA widens both sides to 16 bits (two pixels a register), broadcasts each
 /// source pixel's alpha over its four channels (`pshuflw`/`pshufhw`), takes `mul8_lanes`'s
 /// products and rounding (`pmullw`, `psrlw`, `paddw`) and their sum (at most 510), which the
-/// unsigned saturating pack (`packuswb`) limits to 255 as `min(255)` does. The same bytes as
+/// unsigned saturating pack (`packuswb`) limits to 255 as `min(255)` does; SRC_ALPHA, ONE
+/// packs the source's `mul8` products (each at most 255) and adds the destination with
+/// `paddusb` (`mul8(d, 255)` is d). The same bytes as
 /// `store` of `blend` of the four `unorm8_lanes` over `load`.
 #[inline(always)]
 pub fn blend_unorm8(
@@ -745,7 +747,10 @@ pub fn blend_unorm8(
         && b.dst_rgb == b.dst_alpha;
     let add = usual && b.src_rgb == gl::ONE && b.dst_rgb == gl::ONE;
     let over = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE_MINUS_SRC_ALPHA;
-    if !(add || over) {
+    // SRC_ALPHA, ONE (additive glow, point sprites): mul8(s, αs) + mul8(d, 255), and
+    // mul8(d, 255) is d, so the sum saturating in bytes.
+    let glow = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE;
+    if !(add || over || glow) {
         return false;
     }
     #[cfg(target_arch = "x86_64")]
@@ -786,6 +791,13 @@ pub fn blend_unorm8(
                 let old = _mm_loadu_si128(p.add(h));
                 let v = if add {
                     _mm_adds_epu8(src, old)
+                } else if glow {
+                    let sa =
+                        |s: __m128i| _mm_shufflehi_epi16::<0xFF>(_mm_shufflelo_epi16::<0xFF>(s));
+                    let (lo, hi) = (_mm_unpacklo_epi8(src, z), _mm_unpackhi_epi8(src, z));
+                    // Each product is at most 255: the pack keeps it.
+                    let sf = _mm_packus_epi16(mul8(lo, sa(lo)), mul8(hi, sa(hi)));
+                    _mm_adds_epu8(sf, old)
                 } else {
                     _mm_packus_epi16(
                         over2(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
@@ -1101,15 +1113,16 @@ mod tests {
         let mut g = Gen(31);
         let factors = [gl::ONE, gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA, gl::ZERO];
         let mut done = 0;
-        for _ in 0..6000 {
+        for _ in 0..8000 {
             let n = (g.next() % 12) as usize;
             let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
             let c: [F; 4] = std::array::from_fn(|_| g.lanes());
             let m = g.next() as u8;
             let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
-            let (sf, df) = match g.next() % 3 {
+            let (sf, df) = match g.next() % 4 {
                 0 => (gl::ONE, gl::ONE),
                 1 => (gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA),
+                2 => (gl::SRC_ALPHA, gl::ONE),
                 _ => (g.pick(&factors), g.pick(&factors)),
             };
             let b = BlendEval {
