@@ -51,6 +51,10 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         });
         return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
+    if let Some(pl) = ctx.smooth_planes(bufs, p, planes) {
+        // Smooth colour and the depth test alone: decided here once, each row one pass.
+        return spans(p, r, |y, l, h| ctx.smooth_row(bufs, p, pl, y, l, h));
+    }
     spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
 }
 
