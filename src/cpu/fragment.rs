@@ -626,20 +626,21 @@ impl FragCtx<'_> {
         planes.get(..15).and_then(|p| p.try_into().ok())
     }
 
+    /// Spans of a primitive `smooth_planes` accepted (its planes `pl`), `rows` holding each
+    /// span's window row and first and last pixel (all inside the tile): `smooth_row` of each.
+    #[inline(never)]
+    pub fn smooth_rows(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], rows: &[[i32; 3]]) {
+        for &[y, x0, x1] in rows {
+            self.smooth_row(bufs, p, pl, y, x0, x1);
+        }
+    }
+
     /// A span of a primitive `smooth_planes` accepted (its planes `pl`): pixels `x0..=x1` of
     /// row `y`, all inside the tile. What `tri_span` computes for it (the row's terms of each
     /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
     /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
     #[inline(always)]
-    pub fn smooth_row(
-        &self,
-        bufs: &mut TileBufs,
-        p: &RPrim,
-        pl: &[f32; 15],
-        y: i32,
-        x0: i32,
-        x1: i32,
-    ) {
+    fn smooth_row(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], y: i32, x0: i32, x1: i32) {
         let [w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay] = *pl;
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;

@@ -52,8 +52,22 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
     if let Some(pl) = ctx.smooth_planes(bufs, p, planes) {
-        // Smooth colour and the depth test alone: decided here once, each row one pass.
-        return spans(p, r, |y, l, h| ctx.smooth_row(bufs, p, pl, y, l, h));
+        // Smooth colour and the depth test alone: decided here once; the rows are gathered
+        // (sixteen at a time) and shaded in one call, which keeps what depends on the
+        // primitive alone in registers (a call per span paid its set-up every time).
+        let mut rows = [[0i32; 3]; 16];
+        let mut k = 0;
+        spans(p, r, |y, l, h| {
+            if k == rows.len() {
+                ctx.smooth_rows(bufs, p, pl, &rows);
+                k = 0;
+            }
+            if let Some(row) = rows.get_mut(k) {
+                *row = [y, l, h];
+                k += 1;
+            }
+        });
+        return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
     }
     spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
 }
@@ -185,24 +199,21 @@ fn narrow_sse(edges: &[[i64; 3]; 3], r: [i32; 4], span: &mut impl FnMut(i32, i32
         };
         let mut v: [[__m128i; 3]; 3] = [lanes(0), lanes(1), lanes(2)];
         let step = dy.map(|d| _mm_set1_epi32(d));
-        let chunks = (w as usize >> 2) + 1;
+        // All twelve lanes every row (straight-line code; the lanes past the width are
+        // masked off by `cols`): an iterator over the needed chunks alone cost more.
+        let neg = |v: &[[__m128i; 3]; 3], c: usize| {
+            let o = _mm_or_si128(_mm_or_si128(v[0][c], v[1][c]), v[2][c]);
+            _mm_movemask_ps(_mm_castsi128_ps(o)) as u32
+        };
         for y in y0..=y1 {
-            let mut neg = 0u32;
-            let [v0, v1, v2] = &v;
-            for (c, ((a, b), d)) in v0.iter().zip(v1).zip(v2).take(chunks.min(3)).enumerate() {
-                let o = _mm_or_si128(_mm_or_si128(*a, *b), *d);
-                neg |= (_mm_movemask_ps(_mm_castsi128_ps(o)) as u32) << (4 * c);
-            }
-            let cov = !neg & cols;
+            let cov = !(neg(&v, 0) | neg(&v, 1) << 4 | neg(&v, 2) << 8) & cols;
             if cov != 0 {
                 let l = x0 + cov.trailing_zeros() as i32;
                 let h = x0 + 31 - cov.leading_zeros() as i32;
                 span(y, l, h);
             }
             for (vk, s) in v.iter_mut().zip(&step) {
-                for vc in vk.iter_mut().take(chunks.min(3)) {
-                    *vc = _mm_add_epi32(*vc, *s);
-                }
+                *vk = vk.map(|vc| _mm_add_epi32(vc, *s));
             }
         }
     }
