@@ -598,6 +598,85 @@ impl FragCtx<'_> {
         }
     }
 
+    /// The planes of `p` when every span of it takes `smooth_row`, else None (then each span
+    /// goes through `tri_span`): no per-fragment operation beyond the depth test, no polygon
+    /// stipple, the smooth primary colour alone (no FLAT, secondary colour or PHONG_WIN), one
+    /// colour buffer written whole (no second buffer, ColorMask all true, no coverage count),
+    /// the 1/w and four colour planes present — the spans `tri_span` sends through
+    /// `depth_mask_span` and `lanes::smooth_rgba`. Decided once per primitive and tile.
+    #[inline(always)]
+    pub fn smooth_planes<'p>(
+        &self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &'p [f32],
+    ) -> Option<&'p [f32; 15]> {
+        let other = F_AAPOINT | F_AALINE | F_FLAT | F_PHONG;
+        let stippled = self.stipple.is_some() && p.flags & F_LINE == 0;
+        if self.ops.is_some()
+            || self.rl.n != 4
+            || p.flags & other != 0
+            || stippled
+            || self.count
+            || self.color_mask != [true; 4]
+            || bufs.color2.is_some()
+        {
+            return None;
+        }
+        planes.get(..15).and_then(|p| p.try_into().ok())
+    }
+
+    /// Spans of a primitive `smooth_planes` accepted (its planes `pl`), `rows` holding each
+    /// span's window row and first and last pixel (all inside the tile): `smooth_row` of each.
+    #[inline(never)]
+    pub fn smooth_rows(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], rows: &[[i32; 3]]) {
+        for &[y, x0, x1] in rows {
+            self.smooth_row(bufs, p, pl, y, x0, x1);
+        }
+    }
+
+    /// A span of a primitive `smooth_planes` accepted (its planes `pl`): pixels `x0..=x1` of
+    /// row `y`, all inside the tile. What `tri_span` computes for it (the row's terms of each
+    /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
+    /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
+    #[inline(always)]
+    fn smooth_row(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], y: i32, x0: i32, x1: i32) {
+        let [w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay] = *pl;
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let fy = (y - oy) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let base = ((y - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+        let n = (x1 - x0 + 1) as usize;
+        let co = [
+            w0 + wy * fy,
+            wx,
+            r0 + ry * fy,
+            rx,
+            g0 + gy * fy,
+            gx,
+            b0 + by * fy,
+            bx,
+            a0 + ay * fy,
+            ax,
+        ];
+        let test = self
+            .depth_test
+            .then_some((self.depth_func, self.depth_mask));
+        let mask = super::lanes::smooth_depth_span(
+            bufs.color.get_mut(base..).unwrap_or_default(),
+            bufs.depth.get_mut(base..).unwrap_or_default(),
+            n,
+            x0 - ox,
+            zrow,
+            p.z[1],
+            test,
+            &co,
+        );
+        if self.samples {
+            bufs.samples += u64::from(mask.count_ones());
+        }
+    }
+
     /// Spans of a smooth point's or line's quad triangle (`aa.rs`), `rows` holding each span's
     /// window row and first and last pixel (all inside the tile): each fragment's coverage
     /// from its interpolated antialiasing coordinates multiplies its alpha (after texturing

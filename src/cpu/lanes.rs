@@ -260,6 +260,127 @@ pub fn depth_span(
     mask
 }
 
+/// The depth test and the smooth primary colour of a span in one pass (`FragCtx::smooth_row`,
+/// the route of a triangle that `tri_span`'s fast path with `depth_mask_span` and
+/// `smooth_rgba` would take): fragment k < `n` (≤ 64) has fx = `fx0` + k, z = `zrow` +
+/// `dz`·fx and colour channel c = (`co[2+2c]` + `co[3+2c]`·fx) · 1/(`co[0]` + `co[1]`·fx).
+/// With `test` = (DepthFunc, DepthMask) each group of eight goes through
+/// `oplanes::depth_test` on `depth` from the group's first pixel; the survivors' colours are
+/// stored into `color` (whole groups when eight pixels follow: the rows run on to the tile's
+/// end, and the lanes outside the mask are stored back unchanged). Returns the survivors'
+/// mask. The same values, tests and stores as `depth_span` then `smooth_rgba`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub fn smooth_depth_span(
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+    n: usize,
+    fx0: i32,
+    zrow: f32,
+    dz: f32,
+    test: Option<(u32, bool)>,
+    co: &[f32; 10],
+) -> u64 {
+    let n = n.min(64);
+    let mut out = 0u64;
+    let mut c = 0;
+    while c < n {
+        let left = n - c;
+        let mut m: u8 = if left >= LANES {
+            0xFF
+        } else {
+            (1u8 << left) - 1
+        };
+        let fx = lane_x(fx0.wrapping_add(c as i32));
+        if let Some((func, write)) = test {
+            let d = depth_lanes(lin_lanes(zrow, dz, &fx));
+            let row = depth.get_mut(c..).unwrap_or_default();
+            m = super::oplanes::depth_test(func, write, row, d, m);
+        }
+        if m != 0 {
+            smooth_group(color.get_mut(c..).unwrap_or_default(), m, &fx, co);
+            out |= u64::from(m) << c;
+        }
+        c += LANES;
+    }
+    out
+}
+
+/// One group of `smooth_depth_span`: the colours of lanes `m` at `fx` into `dst[l]`. On x86-64
+/// the arithmetic of `smooth_rgba` (`mulps`, `addps`, `divps`, `mul_lanes`' product order) and
+/// `unorm8_lanes`' conversion stay in registers, the four channels are assembled pixel-major
+/// (`r | g << 8 | b << 16 | a << 24`, as `oplanes::store_unorm8`) and a whole group is
+/// selected and stored at once; a shorter `dst` takes the lanes one by one.
+#[inline(always)]
+fn smooth_group(dst: &mut [[u8; 4]], m: u8, fx: &[f32; LANES], co: &[f32; 10]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128, __m128i, _mm_add_ps, _mm_and_si128, _mm_andnot_si128, _mm_castps_si128,
+            _mm_cmpeq_epi32, _mm_div_ps, _mm_loadu_ps, _mm_loadu_si128, _mm_max_ps, _mm_min_ps,
+            _mm_mul_ps, _mm_or_si128, _mm_set1_epi32, _mm_set1_ps, _mm_set_epi32, _mm_setzero_ps,
+            _mm_slli_epi32, _mm_storeu_si128,
+        };
+        let [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax] = *co;
+        // SAFETY: SSE2 is part of the x86-64 baseline; `_mm_loadu_ps` reads four f32 of the
+        // `[f32; 8]` `fx` at offsets 0 and 4; `px` below holds eight `[u8; 4]`, 32 contiguous
+        // bytes, read and written 16 bytes at offsets 0 and 16 (no alignment needed);
+        // `__m128i` has the layout of `[u32; 4]` and every bit pattern is valid for both.
+        unsafe {
+            let (zero, one) = (_mm_setzero_ps(), _mm_set1_ps(1.0));
+            let (k, b) = (_mm_set1_ps(255.0 / 256.0), _mm_set1_ps(32768.0));
+            let low = _mm_set1_epi32(0xFF);
+            let lin = |o: f32, d: f32, x: __m128| {
+                _mm_add_ps(_mm_set1_ps(o), _mm_mul_ps(_mm_set1_ps(d), x))
+            };
+            let conv = |c: __m128| {
+                let c = _mm_min_ps(_mm_max_ps(c, zero), one);
+                _mm_and_si128(_mm_castps_si128(_mm_add_ps(_mm_mul_ps(c, k), b)), low)
+            };
+            let half = |x: __m128| -> __m128i {
+                let inv = _mm_div_ps(one, lin(w0, wx, x));
+                let ch = |o: f32, d: f32| conv(_mm_mul_ps(lin(o, d, x), inv));
+                _mm_or_si128(
+                    _mm_or_si128(ch(r0, rx), _mm_slli_epi32::<8>(ch(g0, gx))),
+                    _mm_or_si128(
+                        _mm_slli_epi32::<16>(ch(b0, bx)),
+                        _mm_slli_epi32::<24>(ch(a0, ax)),
+                    ),
+                )
+            };
+            let v = [
+                half(_mm_loadu_ps(fx.as_ptr())),
+                half(_mm_loadu_ps(fx.as_ptr().add(4))),
+            ];
+            if let Some(px) = dst.get_mut(..LANES) {
+                let bits = _mm_set_epi32(8, 4, 2, 1);
+                let p = px.as_mut_ptr().cast::<__m128i>();
+                for (h, v) in v.into_iter().enumerate() {
+                    let lv = _mm_set1_epi32(i32::from(m >> (4 * h)));
+                    let sel = _mm_cmpeq_epi32(_mm_and_si128(lv, bits), bits);
+                    let old = _mm_loadu_si128(p.add(h));
+                    let out = _mm_or_si128(_mm_andnot_si128(sel, old), _mm_and_si128(sel, v));
+                    _mm_storeu_si128(p.add(h), out);
+                }
+                return;
+            }
+            let v = std::mem::transmute::<[__m128i; 2], [u32; LANES]>(v);
+            for (l, px) in dst.iter_mut().take(LANES).enumerate() {
+                if m & (1 << l) != 0 {
+                    *px = v[l].to_le_bytes();
+                }
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax] = *co;
+        let inv = recip(lin_lanes(w0, wx, fx));
+        let ch = |o: f32, d: f32| unorm8_lanes(mul_lanes(&lin_lanes(o, d, fx), &inv));
+        put(dst, m, &[ch(r0, rx), ch(g0, gx), ch(b0, bx), ch(a0, ax)]);
+    }
+}
+
 /// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'
 /// lane kernels (texture λ).
 #[inline(always)]
@@ -807,6 +928,73 @@ mod tests {
                 }
             }
             assert_eq!((mask, &got), (want_mask, &want), "zrow {zrow} dz {dz}");
+        }
+    }
+    #[test]
+    fn smooth_depth_span_is_the_scalar_sequence_bit_for_bit() {
+        let mut g = Gen(37);
+        for i in 0..4000 {
+            let co: [f32; 10] = std::array::from_fn(|k| match k {
+                0 => 0.5 + (g.next() % 1000) as f32 * 1e-3,
+                1 => (g.next() % 100) as f32 * 1e-4,
+                _ => g.float(),
+            });
+            let n = 1 + (g.next() % 64) as usize;
+            let zrow = g.float();
+            let dz = g.float() * 1e-3;
+            let fx0 = (g.next() % 900) as i32 - 100;
+            let test = match g.next() % 4 {
+                0 => None,
+                _ => Some((g.pick(&COMPARE_FUNCS), g.next() % 2 == 0)),
+            };
+            // The rows run on past the span now and then (as a tile's rows do); the depth row
+            // may be shorter than the colour row, or empty, as a bad index would give.
+            let len = n + (g.next() % 3) as usize * (g.next() % 20) as usize;
+            let dlen = match i % 50 {
+                0 => 0,
+                1 => n / 2,
+                _ => len,
+            };
+            let color0: Vec<[u8; 4]> = (0..len).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let depth0: Vec<u32> = (0..dlen)
+                .map(|_| match g.next() % 3 {
+                    0 => (g.next() % 4) as u32 * (DEPTH_MAX / 3),
+                    _ => (g.next() % (1 << 24)) as u32,
+                })
+                .collect();
+            let (mut color, mut depth) = (color0.clone(), depth0.clone());
+            let got = smooth_depth_span(&mut color, &mut depth, n, fx0, zrow, dz, test, &co);
+            // `FragCtx::tri_span`'s fast path: the depth test over the span, then the colour
+            // of each survivor, fragment by fragment.
+            let (mut wcolor, mut wdepth) = (color0.clone(), depth0.clone());
+            let mut want = 0u64;
+            for (k, wc) in wcolor.iter_mut().enumerate().take(n) {
+                let fx = (fx0 + k as i32) as f32;
+                if let Some((func, write)) = test {
+                    let Some(s) = wdepth.get_mut(k) else {
+                        continue;
+                    };
+                    let d = depth_unorm(f64::from(zrow + dz * fx));
+                    if !crate::cpu::fragops::compare(func, d, *s) {
+                        continue;
+                    }
+                    if write {
+                        *s = d;
+                    }
+                }
+                want |= 1 << k;
+                let inv = 1.0 / (co[0] + co[1] * fx);
+                let ch = |o: f32, d: f32| unorm8((o + d * fx) * inv);
+                *wc = [
+                    ch(co[2], co[3]),
+                    ch(co[4], co[5]),
+                    ch(co[6], co[7]),
+                    ch(co[8], co[9]),
+                ];
+            }
+            assert_eq!(got, want, "n {n} test {test:?} co {co:?}");
+            assert_eq!(color, wcolor, "n {n} test {test:?} co {co:?} fx0 {fx0}");
+            assert_eq!(depth, wdepth, "n {n} test {test:?} zrow {zrow} dz {dz}");
         }
     }
     #[test]

@@ -51,6 +51,24 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         });
         return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
+    if let Some(pl) = ctx.smooth_planes(bufs, p, planes) {
+        // Smooth colour and the depth test alone: decided here once; the rows are gathered
+        // (sixteen at a time) and shaded in one call, which keeps what depends on the
+        // primitive alone in registers (a call per span paid its set-up every time).
+        let mut rows = [[0i32; 3]; 16];
+        let mut k = 0;
+        spans(p, r, |y, l, h| {
+            if k == rows.len() {
+                ctx.smooth_rows(bufs, p, pl, &rows);
+                k = 0;
+            }
+            if let Some(row) = rows.get_mut(k) {
+                *row = [y, l, h];
+                k += 1;
+            }
+        });
+        return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
+    }
     spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
 }
 
@@ -76,25 +94,13 @@ fn spans(p: &RPrim, r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
     }
     let edges = p.edges();
     if x1 - x0 < SMALL {
-        // Narrow: test each pixel centre (additions only) instead of dividing per edge.
-        for y in y0..=y1 {
-            let at = |e: &[i64; 3]| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0);
-            let mut e = [at(&edges[0]), at(&edges[1]), at(&edges[2])];
-            let (mut l, mut h) = (i32::MAX, i32::MIN);
-            for x in x0..=x1 {
-                if (e[0] | e[1] | e[2]) >= 0 {
-                    l = l.min(x);
-                    h = x;
-                }
-                for (ek, edge) in e.iter_mut().zip(&edges) {
-                    *ek += edge[1];
-                }
-            }
-            if l <= h {
-                span(y, l, h);
-            }
+        // Narrow: test each pixel centre (additions only) instead of dividing per edge, on
+        // 32-bit lanes when every edge value of the rectangle fits.
+        #[cfg(target_arch = "x86_64")]
+        if narrow_sse(&edges, r, &mut span) {
+            return;
         }
-        return;
+        return narrow(&edges, r, span);
     }
     for y in y0..=y1 {
         let (mut l, mut h) = (i64::from(x0), i64::from(x1));
@@ -114,6 +120,104 @@ fn spans(p: &RPrim, r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
             span(y, l as i32, h as i32);
         }
     }
+}
+
+/// The narrow walk: on each row of `r` the first and last pixel whose centre all three edge
+/// functions (`RPrim::edges`) leave >= 0, each pixel tested in i64.
+#[inline(always)]
+fn narrow(edges: &[[i64; 3]; 3], r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
+    let [x0, y0, x1, y1] = r;
+    for y in y0..=y1 {
+        let at = |e: &[i64; 3]| e[0] + e[2] * i64::from(y) + e[1] * i64::from(x0);
+        let mut e = [at(&edges[0]), at(&edges[1]), at(&edges[2])];
+        let (mut l, mut h) = (i32::MAX, i32::MIN);
+        for x in x0..=x1 {
+            if (e[0] | e[1] | e[2]) >= 0 {
+                l = l.min(x);
+                h = x;
+            }
+            for (ek, edge) in e.iter_mut().zip(edges) {
+                *ek += edge[1];
+            }
+        }
+        if l <= h {
+            span(y, l, h);
+        }
+    }
+}
+
+/// `narrow` on SSE2 lanes: when |E| at (`x0`, `y0`) plus |dE/dx|·(x1 − x0) plus
+/// |dE/dy|·(y1 − y0) is below 2^31 for every edge, every edge value at a pixel of `r` is exact
+/// in i32 (E is linear, so none exceeds that bound), and each row's values at up to twelve
+/// pixels are three `paddd` from the row's first pixel; the sign bits of the three edges' OR
+/// (`movmskps`) give the uncovered pixels, the span's ends their first and last clear bit.
+/// Each row's values are the previous row's plus dE/dy (exact, within the bound). The same
+/// spans as `narrow`; false (nothing emitted) when the bound does not hold, the width is not
+/// below `SMALL`, or `r` is empty.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn narrow_sse(edges: &[[i64; 3]; 3], r: [i32; 4], span: &mut impl FnMut(i32, i32, i32)) -> bool {
+    use std::arch::x86_64::{
+        __m128i, _mm_add_epi32, _mm_castsi128_ps, _mm_movemask_ps, _mm_or_si128, _mm_set1_epi32,
+        _mm_set_epi32,
+    };
+    let [x0, y0, x1, y1] = r;
+    let (w, h) = (x1.wrapping_sub(x0), y1.wrapping_sub(y0));
+    if !(0..SMALL).contains(&w) || h < 0 {
+        return false;
+    }
+    let mut base = [0i32; 3];
+    for (b, e) in base.iter_mut().zip(edges) {
+        // `narrow`'s first value of row y0 (wrapping: the same bits as its i64 sums).
+        let e00 = e[0]
+            .wrapping_add(e[2].wrapping_mul(i64::from(y0)))
+            .wrapping_add(e[1].wrapping_mul(i64::from(x0)));
+        let bound = e00
+            .unsigned_abs()
+            .saturating_add(e[1].unsigned_abs().saturating_mul(w as u64))
+            .saturating_add(e[2].unsigned_abs().saturating_mul(h as u64));
+        if bound > i32::MAX as u64 {
+            return false;
+        }
+        *b = e00 as i32;
+    }
+    // dE/dx and dE/dy fit too when they are used: (x1 − x0) ≥ 1 for a lane past the first,
+    // (y1 − y0) ≥ 1 for a second row. Past those, the lanes' wrapped values are masked off.
+    let dx = edges.map(|e| e[1] as i32);
+    let dy = edges.map(|e| e[2] as i32);
+    let cols = (2u32 << w) - 1;
+    // SAFETY: SSE2 is part of the x86-64 baseline; register arithmetic only.
+    unsafe {
+        // Pixels 0-3, 4-7 and 8-11 of the row: E, E + d, E + 2d, E + 3d, then + 4d each.
+        let lanes = |k: usize| -> [__m128i; 3] {
+            let (b, d) = (base[k], dx[k]);
+            let at = |l: i32| b.wrapping_add(d.wrapping_mul(l));
+            let v0 = _mm_set_epi32(at(3), at(2), at(1), at(0));
+            let d4 = _mm_set1_epi32(d.wrapping_mul(4));
+            let v1 = _mm_add_epi32(v0, d4);
+            [v0, v1, _mm_add_epi32(v1, d4)]
+        };
+        let mut v: [[__m128i; 3]; 3] = [lanes(0), lanes(1), lanes(2)];
+        let step = dy.map(|d| _mm_set1_epi32(d));
+        // All twelve lanes every row (straight-line code; the lanes past the width are
+        // masked off by `cols`): an iterator over the needed chunks alone cost more.
+        let neg = |v: &[[__m128i; 3]; 3], c: usize| {
+            let o = _mm_or_si128(_mm_or_si128(v[0][c], v[1][c]), v[2][c]);
+            _mm_movemask_ps(_mm_castsi128_ps(o)) as u32
+        };
+        for y in y0..=y1 {
+            let cov = !(neg(&v, 0) | neg(&v, 1) << 4 | neg(&v, 2) << 8) & cols;
+            if cov != 0 {
+                let l = x0 + cov.trailing_zeros() as i32;
+                let h = x0 + 31 - cov.leading_zeros() as i32;
+                span(y, l, h);
+            }
+            for (vk, s) in v.iter_mut().zip(&step) {
+                *vk = vk.map(|vc| _mm_add_epi32(vc, *s));
+            }
+        }
+    }
+    true
 }
 
 /// Bounding boxes narrower than this are scanned pixel by pixel.
@@ -168,6 +272,49 @@ mod tests {
             cover([[0, 0], [380, 0], [0, 600]]),
             Some(COVER_KNOWN | 0b0101)
         );
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn narrow_sse_is_the_i64_walk() {
+        use super::{narrow, narrow_sse, SMALL};
+        let mut g = crate::cpu::testgen::Gen(41);
+        let (mut fast, mut slow) = (0, 0);
+        for i in 0..30000 {
+            let mut rnd = |s: i64| (g.next() % (2 * s as u64 + 1)) as i64 - s;
+            let (x0, y0) = (rnd(3000) as i32, rnd(3000) as i32);
+            let (w, h) = (rnd(SMALL as i64).abs() as i32 % SMALL, rnd(70).abs() as i32);
+            let r = [x0, y0, x0 + w, y0 + h];
+            let scale = [1i64 << 10, 1 << 18, 1 << 24, 1 << 28, 1 << 45][i % 5];
+            let edges: [[i64; 3]; 3] = std::array::from_fn(|_| {
+                let (mut e1, e2) = (rnd(scale), rnd(scale));
+                if rnd(8) == 0 {
+                    e1 = 0;
+                }
+                // The value at a pixel of the rectangle, zero now and then (the ties).
+                let (cx, cy) = (
+                    x0 + rnd(w as i64).abs() as i32,
+                    y0 + rnd(h as i64).abs() as i32,
+                );
+                let v = if rnd(5) == 0 { 0 } else { rnd(4 * scale) };
+                let e0 = v
+                    .wrapping_sub(e1.wrapping_mul(i64::from(cx)))
+                    .wrapping_sub(e2.wrapping_mul(i64::from(cy)));
+                [e0, e1, e2]
+            });
+            let mut want = Vec::new();
+            narrow(&edges, r, |y, l, h| want.push([y, l, h]));
+            let mut got = Vec::new();
+            if narrow_sse(&edges, r, &mut |y, l, h| got.push([y, l, h])) {
+                fast += 1;
+                assert_eq!(got, want, "r {r:?} edges {edges:?}");
+            } else {
+                slow += 1;
+                assert!(got.is_empty());
+            }
+        }
+        // Both routes were taken, the lanes' most of the time.
+        assert!(fast > 15000 && slow > 3000, "fast {fast} slow {slow}");
     }
 
     #[test]
