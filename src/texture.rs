@@ -16,6 +16,7 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
+use crate::cpu::pixels::{RowRun, Src};
 use crate::gl;
 use crate::pixel_store::PixelModes;
 use crate::pixels::{Format, Group, Image, ImageLayout, PixelMaps, PixelTransfer};
@@ -489,6 +490,54 @@ pub fn fb_texel(base: u32, px: Option<([u8; 4], u32, u8)>) -> [f32; 4] {
     }
 }
 
+/// [`fb_texel`] of each pixel of a framebuffer run (`cpu::pixels::row_runs`) into the first
+/// `run.len()` texels of `dst` (fewer when `dst` is shorter): the same values, the base format
+/// chosen once per run and a tile's pending clear converted once (checked against `fb_texel`
+/// in `fb_texels_are_fb_texel`).
+pub fn fb_texels(base: u32, run: RowRun<'_>, dst: &mut [[f32; 4]]) {
+    const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;
+    let n = run.len().min(dst.len());
+    let dst = &mut dst[..n];
+    let RowRun::Inside {
+        color,
+        depth,
+        stencil,
+        ..
+    } = run
+    else {
+        return dst.fill([0.0; 4]);
+    };
+    /// `f` of each pixel of `src` into `dst`.
+    #[inline(always)]
+    fn each<T: Copy>(dst: &mut [[f32; 4]], src: Src<'_, T>, f: impl Fn(T) -> [f32; 4]) {
+        match src {
+            Src::Mem(s) => {
+                for (d, &v) in dst.iter_mut().zip(s) {
+                    *d = f(v);
+                }
+            }
+            Src::Fill(v) => dst.fill(f(v)),
+        }
+    }
+    let unit = |c: [u8; 4]| c.map(|v| f32::from(v) / 255.0);
+    match base {
+        gl::DEPTH_COMPONENT => each(dst, depth, |d| [d as f32 / DEPTH_MAX, 0.0, 0.0, 0.0]),
+        gl::DEPTH_STENCIL => {
+            for (k, t) in dst.iter_mut().enumerate() {
+                if let (Some(d), Some(s)) = (depth.get(k), stencil.get(k)) {
+                    *t = [d as f32 / DEPTH_MAX, f32::from(s), 0.0, 0.0];
+                }
+            }
+        }
+        gl::ALPHA => each(dst, color, |c| keep(gl::ALPHA, unit(c))),
+        gl::LUMINANCE => each(dst, color, |c| keep(gl::LUMINANCE, unit(c))),
+        gl::INTENSITY => each(dst, color, |c| keep(gl::INTENSITY, unit(c))),
+        gl::LUMINANCE_ALPHA => each(dst, color, |c| keep(gl::LUMINANCE_ALPHA, unit(c))),
+        gl::RGB => each(dst, color, |c| keep(gl::RGB, unit(c))),
+        _ => each(dst, color, |c| keep(base, unit(c))),
+    }
+}
+
 /// Texture coordinate generation for one coordinate (GL 2.1 §2.11.4, table 6.15).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexGen {
@@ -896,8 +945,53 @@ pub fn unpack_into(
     t: &PixelTransfer,
     maps: &PixelMaps,
 ) {
+    unpack_with(out, img, width, height, base, t, maps, true);
+}
+
+/// [`unpack_into`]; `bytes` false keeps UNSIGNED_BYTE colour data off its byte route (for
+/// the test that compares the two routes).
+#[allow(clippy::too_many_arguments)]
+fn unpack_with(
+    out: &mut Vec<[f32; 4]>,
+    img: &Image,
+    width: i32,
+    height: i32,
+    base: u32,
+    t: &PixelTransfer,
+    maps: &PixelMaps,
+    bytes: bool,
+) {
     let (w, h) = (width.max(0) as usize, height.max(0) as usize);
     let first = out.len();
+    // UNSIGNED_BYTE colour data with no colour transfer into a colour format: each component
+    // unpacks to v / 255, which `quantize` returns as it is (`fb_texels_are_quantized`), so the
+    // texel is `keep` of the bytes' values — no per-component rounding.
+    let colour_base = matches!(
+        base,
+        gl::ALPHA | gl::LUMINANCE | gl::LUMINANCE_ALPHA | gl::INTENSITY | gl::RGB | gl::RGBA
+    );
+    if bytes && colour_base && matches!(img.format.group, Group::Color(_)) && t.color_is_identity()
+    {
+        let cols: Vec<usize> = (0..w).collect();
+        let rows: Vec<usize> = (0..h).collect();
+        let mut b = Vec::new();
+        if b.try_reserve_exact(w * h).is_ok() && img.bytes(&cols, &rows, &mut b).is_some() {
+            /// `f` of each colour's components as c / 255, appended to `out`.
+            #[inline(always)]
+            fn conv(out: &mut Vec<[f32; 4]>, b: &[[u8; 4]], f: impl Fn([f32; 4]) -> [f32; 4]) {
+                out.extend(b.iter().map(|&c| f(c.map(crate::pixels::unit_u8))));
+            }
+            match base {
+                gl::ALPHA => conv(out, &b, |c| keep(gl::ALPHA, c)),
+                gl::LUMINANCE => conv(out, &b, |c| keep(gl::LUMINANCE, c)),
+                gl::LUMINANCE_ALPHA => conv(out, &b, |c| keep(gl::LUMINANCE_ALPHA, c)),
+                gl::INTENSITY => conv(out, &b, |c| keep(gl::INTENSITY, c)),
+                gl::RGB => conv(out, &b, |c| keep(gl::RGB, c)),
+                _ => conv(out, &b, |c| keep(gl::RGBA, c)),
+            }
+            return;
+        }
+    }
     match img.format.group {
         Group::Color(_) => {
             let cols: Vec<usize> = (0..w).collect();
@@ -1085,6 +1179,182 @@ mod tests {
 
     /// [`fb_texel`] is `quantize` of the value it computes, bit for bit: every 24-bit depth,
     /// every stencil, every colour value in every base format, and a pixel outside.
+    /// `fb_texels` of a run is `fb_texel` of each of its pixels, for every base format,
+    /// runs from memory and from a pending clear, outside runs, and `dst` shorter than the run.
+    #[test]
+    fn fb_texels_are_fb_texel() {
+        let bits = |t: &[[f32; 4]]| t.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+        let mut seed = 0x2545_f491u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let bases = [
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+            gl::INTENSITY,
+            gl::RGB,
+            gl::RGBA,
+            gl::DEPTH_COMPONENT,
+            gl::DEPTH_STENCIL,
+        ];
+        for round in 0..200 {
+            let len = 1 + (next() % 64) as usize;
+            let colors: Vec<[u8; 4]> = (0..len).map(|_| next().to_le_bytes()).collect();
+            let depths: Vec<u32> = (0..len).map(|_| next() >> 8).collect();
+            let stencils: Vec<u8> = (0..len).map(|_| next() as u8).collect();
+            let (fc, fd, fs) = (next().to_le_bytes(), next() >> 8, next() as u8);
+            let color = if round % 3 == 0 {
+                Src::Fill(fc)
+            } else {
+                Src::Mem(&colors[..])
+            };
+            let depth = if round % 4 == 1 {
+                Src::Fill(fd)
+            } else {
+                Src::Mem(&depths[..])
+            };
+            let stencil = if round % 5 == 2 {
+                Src::Fill(fs)
+            } else {
+                Src::Mem(&stencils[..])
+            };
+            let run = RowRun::Inside {
+                len,
+                color,
+                depth,
+                stencil,
+            };
+            for base in bases {
+                for short in [0, 1, len / 2] {
+                    let n = len - short;
+                    let mut got = vec![[f32::NAN; 4]; n];
+                    fb_texels(base, run, &mut got);
+                    let want: Vec<[f32; 4]> = (0..n)
+                        .map(|k| {
+                            let px = (color.get(k), depth.get(k), stencil.get(k));
+                            fb_texel(base, Some((px.0.unwrap(), px.1.unwrap(), px.2.unwrap())))
+                        })
+                        .collect();
+                    assert_eq!(bits(&got), bits(&want), "base {base:#x} round {round}");
+                }
+                let mut got = vec![[f32::NAN; 4]; len + 2];
+                fb_texels(base, RowRun::Outside(len), &mut got);
+                let want = [fb_texel(base, None)].repeat(len);
+                assert_eq!(bits(&got[..len]), bits(&want), "base {base:#x} outside");
+                assert!(got[len..].iter().flatten().all(|v| v.is_nan()));
+            }
+        }
+    }
+
+    /// `unpack_into`'s byte route (UNSIGNED_BYTE colour data, no colour transfer, a colour
+    /// format: `keep` of c / 255, no rounding) stores the texels of the general route
+    /// (`Image::colors`, then `quantize`) bit for bit: every colour format of the data, every
+    /// colour base format, unpack alignments and row lengths that pad rows, random bytes
+    /// (every value of each component); and with a colour transfer the route is not taken.
+    #[test]
+    fn unpack_byte_route_is_the_general_route() {
+        use crate::pixels::{check, PixelMaps, PixelTransfer};
+        let bits = |t: &[[f32; 4]]| t.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+        let mut seed = 0x9e37_79b9u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let formats = [
+            gl::RGBA,
+            gl::RGB,
+            gl::BGRA,
+            gl::BGR,
+            gl::ABGR_EXT,
+            gl::RED,
+            gl::GREEN,
+            gl::BLUE,
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+        ];
+        let bases = [
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+            gl::INTENSITY,
+            gl::RGB,
+            gl::RGBA,
+        ];
+        let maps = PixelMaps::default();
+        let identity = PixelTransfer::default();
+        let scaled = PixelTransfer {
+            scale: [0.5, 1.0, 2.0, 1.0],
+            ..PixelTransfer::default()
+        };
+        let mut routes = 0;
+        for (n, &format) in formats.iter().enumerate() {
+            let Ok(f) = check(format, gl::UNSIGNED_BYTE) else {
+                continue;
+            };
+            for (width, height, align, row_length) in [
+                (16, 16, 4, 0),
+                (7, 5, 1, 0),
+                (5, 3, 8, 0),
+                (3, 4, 2, 9),
+                (1, 1, 4, 0),
+            ] {
+                let modes = PixelModes {
+                    alignment: align,
+                    row_length,
+                    ..PixelModes::default()
+                };
+                let data: Vec<u8> = (0..4096).map(|_| next() as u8).collect();
+                let Some(layout) = slice_layout(&modes, f, width, height, 0, false) else {
+                    continue;
+                };
+                let img = Image {
+                    data: &data,
+                    format: f,
+                    layout,
+                };
+                for base in bases {
+                    for t in [&identity, &scaled] {
+                        let (mut a, mut b) = (vec![[1.0; 4]], vec![[1.0; 4]]);
+                        unpack_with(&mut a, &img, width, height, base, t, &maps, true);
+                        unpack_with(&mut b, &img, width, height, base, t, &maps, false);
+                        assert_eq!(a.len(), 1 + (width * height) as usize);
+                        assert_eq!(
+                            bits(&a),
+                            bits(&b),
+                            "format {n} base {base:#x} {width}x{height}"
+                        );
+                        routes += 1;
+                    }
+                }
+            }
+        }
+        assert!(routes > 200, "{routes}");
+        // Every byte value in every channel once.
+        let data: Vec<u8> = (0..=255u8)
+            .flat_map(|v| [v, v ^ 0x5a, 255 - v, v / 3 * 2])
+            .collect();
+        let f = check(gl::RGBA, gl::UNSIGNED_BYTE).expect("RGBA bytes");
+        let layout = slice_layout(&PixelModes::default(), f, 256, 1, 0, false).expect("a layout");
+        let img = Image {
+            data: &data,
+            format: f,
+            layout,
+        };
+        for base in bases {
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            unpack_with(&mut a, &img, 256, 1, base, &identity, &maps, true);
+            unpack_with(&mut b, &img, 256, 1, base, &identity, &maps, false);
+            assert_eq!(bits(&a), bits(&b), "base {base:#x}");
+        }
+    }
+
     #[test]
     fn fb_texels_are_quantized() {
         const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;

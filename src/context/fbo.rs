@@ -34,10 +34,13 @@ use std::sync::Arc;
 
 use super::{record, Context};
 use crate::call::Call;
-use crate::cpu::framebuffer::{depth_unorm, Framebuffer, DEPTH_MAX};
+use crate::cpu::framebuffer::{depth_unorm, ColorBuf, Framebuffer, DEPTH_MAX};
+use crate::cpu::pixels::{row_runs, RowRun, Src};
 use crate::gl;
 use crate::state::ContextConfig;
-use crate::texture::{base_internal_format, image_binding, quantize, TexObject, MAX_LEVELS};
+use crate::texture::{
+    base_internal_format, fb_texels, image_binding, quantize, TexObject, MAX_LEVELS,
+};
 
 /// `MAX_RENDERBUFFER_SIZE`: the largest side of a renderbuffer (llvmpipe's 16384; as large as
 /// the window framebuffer fixedgl allows).
@@ -1051,24 +1054,19 @@ impl Context {
         match loaded.color {
             Attachment::Renderbuffer(id) => {
                 if let Some(rb) = self.fbos.renderbuffers.get_mut(&id) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, px) in rb.color.iter_mut().enumerate() {
-                        let (x, y) = ((k as u32) % rw, (k as u32) / rw);
-                        if let Some((c, _, _)) = pixel(x, y).filter(|_| x < w && y < h) {
-                            *px = c;
-                        }
-                    }
+                    rb_store(&fb, rb.width, &mut rb.color, |r| match r {
+                        RowRun::Inside { color, .. } => Some(color),
+                        RowRun::Outside(_) => None,
+                    });
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(
-                    &mut self.state.textures.objects,
-                    &att,
-                    w,
-                    h,
-                    None,
-                    |x, y| pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0)),
-                );
+                let objects = &mut self.state.textures.objects;
+                if !store_texture_fb(objects, &att, &fb, false) {
+                    store_texture(objects, &att, w, h, None, |x, y| {
+                        pixel(x, y).map(|(c, _, _)| c.map(|v| f32::from(v) / 255.0))
+                    });
+                }
             }
             Attachment::None => {}
         }
@@ -1076,26 +1074,19 @@ impl Context {
         match loaded.depth {
             Attachment::Renderbuffer(id) => {
                 if let Some(rb) = self.fbos.renderbuffers.get_mut(&id) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, px) in rb.depth.iter_mut().enumerate() {
-                        let (x, y) = ((k as u32) % rw, (k as u32) / rw);
-                        if let Some((_, d, _)) = pixel(x, y).filter(|_| x < w && y < h) {
-                            *px = d;
-                        }
-                    }
+                    rb_store(&fb, rb.width, &mut rb.depth, |r| match r {
+                        RowRun::Inside { depth, .. } => Some(depth),
+                        RowRun::Outside(_) => None,
+                    });
                 }
             }
             att @ Attachment::Texture { .. } => {
-                store_texture(
-                    &mut self.state.textures.objects,
-                    &att,
-                    w,
-                    h,
-                    Some(0),
-                    |x, y| {
+                let objects = &mut self.state.textures.objects;
+                if !store_texture_fb(objects, &att, &fb, true) {
+                    store_texture(objects, &att, w, h, Some(0), |x, y| {
                         pixel(x, y).map(|(_, d, _)| [d as f32 / DEPTH_MAX as f32, 0.0, 0.0, 0.0])
-                    },
-                );
+                    });
+                }
             }
             Attachment::None => {}
         }
@@ -1103,13 +1094,10 @@ impl Context {
         match loaded.stencil {
             Attachment::Renderbuffer(id) => {
                 if let Some(rb) = self.fbos.renderbuffers.get_mut(&id) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, px) in rb.stencil.iter_mut().enumerate() {
-                        let (x, y) = ((k as u32) % rw, (k as u32) / rw);
-                        if let Some((_, _, s)) = pixel(x, y).filter(|_| x < w && y < h) {
-                            *px = s;
-                        }
-                    }
+                    rb_store(&fb, rb.width, &mut rb.stencil, |r| match r {
+                        RowRun::Inside { stencil, .. } => Some(stencil),
+                        RowRun::Outside(_) => None,
+                    });
                 }
             }
             att @ Attachment::Texture { .. } => {
@@ -1149,24 +1137,26 @@ impl Context {
             return self.error(gl::OUT_OF_MEMORY);
         };
         let objects = &self.state.textures.objects;
+        // Each image a row at a time (`set_row`: what `set_pixel` writes pixel by pixel).
         match obj.color {
             Attachment::Renderbuffer(rid) => {
                 if let Some(rb) = self.fbos.renderbuffers.get(&rid) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, &c) in rb.color.iter().enumerate() {
-                        fb.set_pixel((k as u32) % rw, (k as u32) / rw, Some(c), None);
+                    let rw = rb.width.max(1) as usize;
+                    for (y, row) in rb.color.chunks(rw).enumerate() {
+                        fb.set_row(y as u32, row, |f| &mut f.color);
                     }
                 }
             }
             att @ Attachment::Texture { zoffset, .. } => {
                 if let Some(lv) = attached_level(objects, &att) {
+                    let mut row = vec![[0u8; 4]; w as usize];
                     for y in 0..h as i32 {
-                        for x in 0..w as i32 {
-                            let t = lv.texel3(x, y, zoffset);
+                        for (x, c) in row.iter_mut().enumerate() {
+                            let t = lv.texel3(x as i32, y, zoffset);
                             let a = if lv.base == gl::RGB { 1.0 } else { t[3] };
-                            let c = [t[0], t[1], t[2], a].map(crate::cpu::framebuffer::unorm8);
-                            fb.set_pixel(x as u32, y as u32, Some(c), None);
+                            *c = unorm8x4([t[0], t[1], t[2], a]);
                         }
+                        fb.set_row(y as u32, &row, |f| &mut f.color);
                     }
                 }
             }
@@ -1175,19 +1165,21 @@ impl Context {
         match obj.depth {
             Attachment::Renderbuffer(rid) => {
                 if let Some(rb) = self.fbos.renderbuffers.get(&rid) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, &d) in rb.depth.iter().enumerate() {
-                        fb.set_pixel((k as u32) % rw, (k as u32) / rw, None, Some(d));
+                    let rw = rb.width.max(1) as usize;
+                    for (y, row) in rb.depth.chunks(rw).enumerate() {
+                        fb.set_row(y as u32, row, |f| &mut f.depth);
                     }
                 }
             }
             att @ Attachment::Texture { zoffset, .. } => {
                 if let Some(lv) = attached_level(objects, &att) {
+                    let mut row = vec![0u32; w as usize];
                     for y in 0..h as i32 {
-                        for x in 0..w as i32 {
-                            let z = lv.texel3(x, y, zoffset)[0];
-                            fb.set_pixel(x as u32, y as u32, None, Some(depth_unorm(f64::from(z))));
+                        for (x, d) in row.iter_mut().enumerate() {
+                            let z = lv.texel3(x as i32, y, zoffset)[0];
+                            *d = depth_unorm(f64::from(z));
                         }
+                        fb.set_row(y as u32, &row, |f| &mut f.depth);
                     }
                 }
             }
@@ -1196,19 +1188,20 @@ impl Context {
         match obj.stencil {
             Attachment::Renderbuffer(rid) => {
                 if let Some(rb) = self.fbos.renderbuffers.get(&rid) {
-                    let rw = rb.width.max(1) as u32;
-                    for (k, &s) in rb.stencil.iter().enumerate() {
-                        fb.set_stencil((k as u32) % rw, (k as u32) / rw, s);
+                    let rw = rb.width.max(1) as usize;
+                    for (y, row) in rb.stencil.chunks(rw).enumerate() {
+                        fb.set_row(y as u32, row, |f| &mut f.stencil);
                     }
                 }
             }
             att @ Attachment::Texture { zoffset, .. } => {
                 if let Some(lv) = attached_level(objects, &att) {
+                    let mut row = vec![0u8; w as usize];
                     for y in 0..h as i32 {
-                        for x in 0..w as i32 {
-                            let s = lv.texel3(x, y, zoffset)[1].clamp(0.0, 255.0) as u8;
-                            fb.set_stencil(x as u32, y as u32, s);
+                        for (x, s) in row.iter_mut().enumerate() {
+                            *s = lv.texel3(x as i32, y, zoffset)[1].clamp(0.0, 255.0) as u8;
                         }
+                        fb.set_row(y as u32, &row, |f| &mut f.stencil);
                     }
                 }
             }
@@ -1232,6 +1225,128 @@ impl Context {
         self.fbo_switch(0);
         self.fbos = Fbos::default();
     }
+}
+
+/// `c.map(unorm8)`: the four components at once (SSE2: NaN to 0 by `maxps` against 0, which
+/// returns its second operand for a NaN, then `minps` against 1, the product and sum in
+/// single precision as `unorm8` computes them, the low byte of each sum's bits). A -0 becomes
+/// +0 where `clamp` keeps -0, which no byte tells apart (-0·k + 2^15 = +0·k + 2^15). Checked
+/// against `unorm8` in `unorm8x4_is_unorm8`.
+#[inline(always)]
+fn unorm8x4(c: [f32; 4]) -> [u8; 4] {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE2 is part of the x86-64 baseline; the only memory read is `c` itself.
+    unsafe {
+        use std::arch::x86_64::*;
+        let v = _mm_loadu_ps(c.as_ptr());
+        let v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0));
+        let t = _mm_add_ps(
+            _mm_mul_ps(v, _mm_set1_ps(255.0 / 256.0)),
+            _mm_set1_ps(32768.0),
+        );
+        let b = _mm_and_si128(_mm_castps_si128(t), _mm_set1_epi32(0xFF));
+        let p = _mm_packus_epi16(_mm_packs_epi32(b, b), _mm_setzero_si128());
+        (_mm_cvtsi128_si32(p) as u32).to_le_bytes()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    c.map(crate::cpu::framebuffer::unorm8)
+}
+
+/// The framebuffer's pixels into a renderbuffer's image `dst` (rows of `rw` pixels, pixel
+/// (x, y) at y·rw + x), the buffer `pick` takes from each run; what lies outside the
+/// framebuffer is kept. Row by row, a run at a time: what `fbo_store` did pixel by pixel.
+fn rb_store<T: Copy>(
+    fb: &Framebuffer,
+    rw: i32,
+    dst: &mut [T],
+    pick: fn(RowRun<'_>) -> Option<Src<'_, T>>,
+) {
+    let (w, h) = fb.size();
+    let rw = rw.max(1) as usize;
+    for (y, row) in dst.chunks_mut(rw).enumerate().take(h as usize) {
+        let n = row.len().min(w as usize);
+        let mut x = 0usize;
+        row_runs(fb, ColorBuf::Main, 0, y as i64, n, |run| {
+            let len = run.len();
+            if let (Some(src), Some(d)) = (pick(run), row.get_mut(x..x + len)) {
+                match src {
+                    Src::Mem(s) => d.copy_from_slice(&s[..len.min(s.len())]),
+                    Src::Fill(v) => d.fill(v),
+                }
+            }
+            x += len;
+        });
+    }
+}
+
+/// [`store_texture`] of the framebuffer's pixels where what it stores is CopyTexImage's
+/// texel of the pixel ([`fb_texels`]): a colour attachment of a colour format (`depth`
+/// false; `quantize` of v / 255 is v / 255) or the depth attachment of a DEPTH_COMPONENT
+/// texture (`depth` true; d / (2^24 - 1) is quantised, the other components zero). Row by
+/// row, a run at a time. False, with nothing written, for other images (then `store_texture`).
+fn store_texture_fb(
+    objects: &mut BTreeMap<u32, Arc<TexObject>>,
+    att: &Attachment,
+    fb: &Framebuffer,
+    depth: bool,
+) -> bool {
+    let Attachment::Texture {
+        name,
+        target,
+        level,
+        zoffset,
+    } = *att
+    else {
+        return false;
+    };
+    let (_, face) = image_binding(target);
+    let Some(obj) = objects.get_mut(&name) else {
+        return false;
+    };
+    let ok = |base: u32| match depth {
+        true => base == gl::DEPTH_COMPONENT,
+        false => matches!(
+            base,
+            gl::ALPHA | gl::LUMINANCE | gl::LUMINANCE_ALPHA | gl::INTENSITY | gl::RGB | gl::RGBA
+        ),
+    };
+    if !obj.face_level(face, level).is_some_and(|lv| ok(lv.base)) {
+        return false;
+    }
+    let obj = Arc::make_mut(obj);
+    let Some(Some(lv)) = obj.slot_mut(face, level) else {
+        return false;
+    };
+    if !ok(lv.base) {
+        return false;
+    }
+    let (w, h) = fb.size();
+    let (lw, lh) = (lv.width.max(0) as u32, lv.height.max(0) as u32);
+    let base = lv.base;
+    let texels = Arc::make_mut(&mut lv.texels);
+    let n = w.min(lw) as usize;
+    for y in 0..h.min(lh) {
+        // `store_texture`'s index of texel (0, y).
+        let i = (zoffset.max(0) as u32)
+            .wrapping_mul(lh)
+            .wrapping_add(y)
+            .wrapping_mul(lw) as usize;
+        let end = i.saturating_add(n).min(texels.len());
+        let Some(dst) = texels.get_mut(i..end) else {
+            continue;
+        };
+        let mut x = 0usize;
+        row_runs(fb, ColorBuf::Main, 0, i64::from(y), dst.len(), |run| {
+            if let (RowRun::Inside { .. }, Some(d)) = (run, dst.get_mut(x..)) {
+                fb_texels(base, run, d);
+            }
+            x += run.len();
+        });
+    }
+    if obj.generate_mipmap && level == obj.base_level {
+        obj.generate_mipmaps();
+    }
+    true
 }
 
 /// Writes a `w` x `h` rectangle of texels, `get(x, y)` as [0, 1] RGBA (or depth in the first
@@ -1295,4 +1410,53 @@ fn filled<T: Clone>(v: &mut Vec<T>, n: usize, value: T) -> bool {
     }
     v.resize(n, value);
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cpu::framebuffer::unorm8;
+
+    /// `unorm8x4` is `unorm8` per component: every k / 255 and the values between, NaN, ±0,
+    /// ±∞, subnormals, values beyond [0, 1], random bit patterns, in every position.
+    #[test]
+    fn unorm8x4_is_unorm8() {
+        let mut vals: Vec<f32> = vec![
+            f32::NAN,
+            -f32::NAN,
+            0.0,
+            -0.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MIN_POSITIVE,
+            -f32::MIN_POSITIVE,
+            1e-45,
+            1.0,
+            1.0000001,
+            0.99999994,
+            2.0,
+            -1.0,
+            0.3,
+            0.7,
+        ];
+        for k in 0..=2550 {
+            let x = k as f32 / 2550.0;
+            vals.extend([
+                x,
+                f32::from_bits(x.to_bits() + 1),
+                f32::from_bits(x.to_bits().saturating_sub(1)),
+            ]);
+        }
+        let mut seed = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            vals.push(f32::from_bits(seed));
+        }
+        for w in vals.windows(4) {
+            let c = [w[0], w[1], w[2], w[3]];
+            assert_eq!(unorm8x4(c), c.map(unorm8), "{c:?}");
+        }
+    }
 }

@@ -26,6 +26,7 @@ use std::sync::Arc;
 use super::readback::{store, Value};
 use super::Context;
 use crate::call::Call;
+use crate::cpu::pixels::row_runs;
 use crate::gl;
 use crate::pixels::{check, Group, Image, Slot};
 use crate::texture::{
@@ -33,6 +34,16 @@ use crate::texture::{
     slice_layout, target_index, unpack_into, Level, ProxyLevel, TexObject, MAX_LEVELS,
     MAX_TEXTURE_SIZE,
 };
+
+/// What `write_box` writes into a texture image.
+#[derive(Clone, Copy)]
+enum BoxSrc<'a> {
+    /// Texels, rows of the box's width.
+    Texels(&'a [[f32; 4]]),
+    /// The window's framebuffer rectangle at (x, y) the size of the box, as `read_fb` reads it
+    /// for base format `base` (CopyTexSubImage).
+    Window { x: i32, y: i32, base: u32 },
+}
 
 /// Most names one GenTextures call hands out; more is OUT_OF_MEMORY (a bound on memory).
 pub const MAX_GEN_TEXTURES: i32 = 1 << 16;
@@ -767,7 +778,14 @@ impl Context {
         // DEPTH_COMPONENT data into a DEPTH_STENCIL image replaces the depths only (Mesa's
         // `_mesa_texstore_z24_s8` keeps the stencil; llvmpipe measured: see docs).
         let depth_only = base == gl::DEPTH_STENCIL && f.group == Group::Depth;
-        self.write_box(target, level, offset, size, &texels, depth_only);
+        self.write_box(
+            target,
+            level,
+            offset,
+            size,
+            BoxSrc::Texels(&texels),
+            depth_only,
+        );
     }
 
     /// The TexSubImage/CopyTexSubImage checks shared by all (§3.8.2): the target (TexImage's
@@ -823,13 +841,13 @@ impl Context {
         level: i32,
         offset: [i32; 3],
         size: [i32; 3],
-        texels: &[[f32; 4]],
+        src: BoxSrc<'_>,
         depth_only: bool,
     ) {
         // As `store_level`: the bound framebuffer object's images stay coherent.
         self.fbo_store();
         self.objects_txn(super::share::TEXTURES, &[], |ctx| {
-            ctx.write_box_now(target, level, offset, size, texels, depth_only)
+            ctx.write_box_now(target, level, offset, size, src, depth_only)
         });
         self.fbo_load();
     }
@@ -840,12 +858,19 @@ impl Context {
         level: i32,
         offset: [i32; 3],
         size: [i32; 3],
-        texels: &[[f32; 4]],
+        src: BoxSrc<'_>,
         depth_only: bool,
     ) {
         let unit = self.state.active_texture;
         let (bind, face) = image_binding(target);
+        let read = crate::cpu::framebuffer::read_buf(&self.state);
         self.renderer.release_textures();
+        // The window's framebuffer, for a copy from it (the texels are read from it row by row
+        // straight into the level).
+        let fb = match src {
+            BoxSrc::Window { .. } => Some(self.renderer.framebuffer()),
+            BoxSrc::Texels(_) => None,
+        };
         let Some(obj) = self.state.textures.bound_mut(unit, bind) else {
             return;
         };
@@ -853,19 +878,44 @@ impl Context {
             let (lw, lh) = (lv.width as usize, lv.height as usize);
             let rows = size[1].max(1) as usize;
             let dst_texels = Arc::make_mut(&mut lv.texels);
-            for (r, row) in texels.chunks(size[0].max(1) as usize).enumerate() {
+            let at = |r: usize| {
                 let (k, j) = (r / rows, r % rows);
-                let at = ((offset[2] as usize + k) * lh + offset[1] as usize + j) * lw
-                    + offset[0] as usize;
-                if let Some(dst) = dst_texels.get_mut(at..at + row.len()) {
-                    if depth_only {
-                        for (d, s) in dst.iter_mut().zip(row) {
-                            d[0] = s[0];
+                ((offset[2] as usize + k) * lh + offset[1] as usize + j) * lw + offset[0] as usize
+            };
+            match (src, fb) {
+                (BoxSrc::Texels(texels), _) => {
+                    for (r, row) in texels.chunks(size[0].max(1) as usize).enumerate() {
+                        let at = at(r);
+                        if let Some(dst) = dst_texels.get_mut(at..at + row.len()) {
+                            if depth_only {
+                                for (d, s) in dst.iter_mut().zip(row) {
+                                    d[0] = s[0];
+                                }
+                            } else {
+                                dst.copy_from_slice(row);
+                            }
                         }
-                    } else {
-                        dst.copy_from_slice(row);
                     }
                 }
+                (BoxSrc::Window { x, y, base }, Some(fb)) => {
+                    // `read_fb`'s texels, row r of the rectangle into row r of the box.
+                    let w = size[0].max(0) as usize;
+                    let h = if w == 0 { 0 } else { size[1].max(0) as usize };
+                    for r in 0..h {
+                        let at = at(r);
+                        let Some(dst) = dst_texels.get_mut(at..at + w) else {
+                            continue;
+                        };
+                        let (row, mut k) = (i64::from(y) + r as i64, 0usize);
+                        row_runs(fb, read, i64::from(x), row, w, |run| {
+                            if let Some(d) = dst.get_mut(k..) {
+                                crate::texture::fb_texels(base, run, d);
+                            }
+                            k += run.len();
+                        });
+                    }
+                }
+                (BoxSrc::Window { .. }, None) => {}
             }
         }
         if obj.generate_mipmap && level == obj.base_level {
@@ -1109,10 +1159,16 @@ impl Context {
         if self.framebuffer_incomplete() {
             return;
         }
+        if self.fbos.bound_fb == 0 {
+            // From the window (nothing loaded from a framebuffer object that `write_box`
+            // would store first): straight from the framebuffer into the level.
+            let src = BoxSrc::Window { x, y, base };
+            return self.write_box(target, level, offset, size, src, false);
+        }
         let Some(texels) = self.read_fb(x, y, width, height, base) else {
             return self.error(gl::OUT_OF_MEMORY);
         };
-        self.write_box(target, level, offset, size, &texels, false);
+        self.write_box(target, level, offset, size, BoxSrc::Texels(&texels), false);
     }
 
     /// Whether the framebuffer lacks a buffer CopyTex(Sub)Image into base format `base` reads:
@@ -1135,14 +1191,18 @@ impl Context {
         // Colour from the buffer READ_BUFFER names (§3.8.2 reads as ReadPixels does).
         let buf = crate::cpu::framebuffer::read_buf(&self.state);
         let fb = self.renderer.framebuffer();
+        let (w, h) = (w.max(0) as usize, h.max(0) as usize);
         let mut out = Vec::new();
-        out.try_reserve_exact(w.max(0) as usize * h.max(0) as usize)
-            .ok()?;
-        for j in 0..h.max(0) {
+        out.try_reserve_exact(w * h).ok()?;
+        out.resize(w * h, [0.0; 4]);
+        for (j, dst) in out.chunks_mut(w.max(1)).enumerate() {
             // Each texel is already at the stored precision: `quantize` would return it as is.
-            let row = i64::from(y) + i64::from(j);
-            fb.pixels_in(buf, i64::from(x), row, w.max(0) as usize, |px| {
-                out.push(crate::texture::fb_texel(base, px));
+            let (row, mut k) = (i64::from(y) + j as i64, 0usize);
+            row_runs(fb, buf, i64::from(x), row, w, |run| {
+                if let Some(d) = dst.get_mut(k..) {
+                    crate::texture::fb_texels(base, run, d);
+                }
+                k += run.len();
             });
         }
         Some(out)

@@ -288,6 +288,7 @@ impl Framebuffer {
 
     /// Writes the main colour and depth of pixel (x, y) (those given), inside the framebuffer,
     /// which has no pending clear (a new one): how a framebuffer object's images are loaded.
+    #[cfg(test)]
     pub(crate) fn set_pixel(&mut self, x: u32, y: u32, color: Option<[u8; 4]>, depth: Option<u32>) {
         if x >= self.width || y >= self.height {
             return;
@@ -303,6 +304,7 @@ impl Framebuffer {
 
     /// Sets the stencil index of pixel (x, y) (nothing outside the framebuffer): a framebuffer
     /// object's stencil attachment loaded (context/fbo.rs).
+    #[cfg(test)]
     pub(crate) fn set_stencil(&mut self, x: u32, y: u32, s: u8) {
         if x >= self.width || y >= self.height {
             return;
@@ -349,6 +351,7 @@ impl Framebuffer {
     /// [`Framebuffer::pixel_in`] of the `n` pixels (x + k, y), k = 0 .. n, given to `f` in
     /// that order: the same values, with each tile's pending clear looked up once per run of
     /// pixels in it rather than per pixel (CopyTexImage's read of a rectangle, row by row).
+    #[cfg(test)]
     pub fn pixels_in(
         &self,
         buf: ColorBuf,

@@ -21,7 +21,8 @@ use rayon::prelude::*;
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::{
-    depth_unorm, scissor_rect, unorm8, Framebuffer, Targets, TILE, TILE_PIXELS,
+    depth_unorm, scissor_rect, tile_slices, unorm8, ColorBuf, Framebuffer, Targets, TILE,
+    TILE_PIXELS,
 };
 use super::texture::{Sampler, UnitTexels};
 use super::Renderer;
@@ -108,6 +109,145 @@ impl Span {
     /// Whether nothing is covered.
     pub fn is_empty(&self) -> bool {
         self.groups.is_empty()
+    }
+}
+
+/// Where a [`RowRun`] reads one buffer's pixels: the buffer's memory, or the value of its
+/// tile's pending clear (every pixel of the run has it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Src<'a, T> {
+    /// The run's pixels in the buffer.
+    Mem(&'a [T]),
+    /// The tile's pending clear value.
+    Fill(T),
+}
+
+impl<T: Copy> Src<'_, T> {
+    /// Pixel `k` of the run (`None` past a memory run's end).
+    pub fn get(&self, k: usize) -> Option<T> {
+        match self {
+            Src::Mem(s) => s.get(k).copied(),
+            Src::Fill(v) => Some(*v),
+        }
+    }
+}
+
+/// Pixels of one framebuffer row as [`row_runs`] gives them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RowRun<'a> {
+    /// This many pixels outside the framebuffer (`Framebuffer::pixel_in` gives `None`).
+    Outside(usize),
+    /// `len` pixels inside one tile: their colour (of the buffer asked for), depth and stencil.
+    Inside {
+        len: usize,
+        color: Src<'a, [u8; 4]>,
+        depth: Src<'a, u32>,
+        stencil: Src<'a, u8>,
+    },
+}
+
+impl RowRun<'_> {
+    /// The pixels of the run.
+    pub fn len(&self) -> usize {
+        match *self {
+            RowRun::Outside(n) | RowRun::Inside { len: n, .. } => n,
+        }
+    }
+
+    /// Whether the run has no pixel (`row_runs` gives none such).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// `Framebuffer::pixels_in` a run at a time: the `n` pixels (x + k, y), k = 0 .. n, given to
+/// `f` in order as runs of pixels outside the framebuffer and runs inside one tile, each buffer
+/// of a run as a slice of its memory or its tile's pending clear. Pixel for pixel the values
+/// `pixel_in` gives (checked in `row_runs_are_pixel_in`); for the copies of the framebuffer
+/// into textures (CopyTexImage, a framebuffer object's images), which then convert a run with
+/// one loop and no per-pixel lookups.
+pub fn row_runs(
+    fb: &Framebuffer,
+    buf: ColorBuf,
+    x: i64,
+    y: i64,
+    n: usize,
+    mut f: impl FnMut(RowRun<'_>),
+) {
+    let (w, h) = fb.size();
+    let (w, h) = (i64::from(w), i64::from(h));
+    let (src, front): (&[[u8; 4]], bool) = match (buf, &fb.front) {
+        (ColorBuf::Front, Some(b)) => (b, true),
+        _ => (&fb.color, false),
+    };
+    let mut k = 0usize;
+    while k < n {
+        let left = n - k;
+        let px = x.saturating_add(k as i64);
+        if y < 0 || y >= h || px >= w {
+            return f(RowRun::Outside(left));
+        }
+        if px < 0 {
+            let m = (px.unsigned_abs().min(left as u64)) as usize;
+            f(RowRun::Outside(m));
+            k += m;
+            continue;
+        }
+        // The pixels from px to the end of its tile, of the row or of the request.
+        let run = (TILE - px as usize % TILE).min(left).min((w - px) as usize);
+        let i0 = fb.index(px as usize, y as usize);
+        let fill = fb
+            .pending
+            .get(i0 / TILE_PIXELS)
+            .copied()
+            .unwrap_or_default();
+        let pending_color = if front { fill.front } else { fill.main };
+        let range = i0..i0 + run;
+        let color = pending_color
+            .map(Src::Fill)
+            .or_else(|| src.get(range.clone()).map(Src::Mem));
+        let depth = fill
+            .depth
+            .map(Src::Fill)
+            .or_else(|| fb.depth.get(range.clone()).map(Src::Mem));
+        let stencil = fill
+            .stencil
+            .map(Src::Fill)
+            .or_else(|| fb.stencil.get(range).map(Src::Mem));
+        f(match (color, depth, stencil) {
+            (Some(color), Some(depth), Some(stencil)) => RowRun::Inside {
+                len: run,
+                color,
+                depth,
+                stencil,
+            },
+            // Buffers shorter than their tiles (never: each holds whole tiles).
+            _ => RowRun::Outside(run),
+        });
+        k += run;
+    }
+}
+
+impl Framebuffer {
+    /// `set_pixel` (or `set_stencil`) of the pixels (k, y), k = 0 .. src.len(), in the buffer
+    /// `buf` picks, from `src[k]`: a tile's run of the row with one slice copy. Nothing
+    /// outside the framebuffer; for a framebuffer with no pending clear (a framebuffer object's
+    /// images being loaded). Checked against `set_pixel` in `set_row_is_set_pixel`.
+    pub(crate) fn set_row<T: Copy>(&mut self, y: u32, src: &[T], buf: fn(&mut Self) -> &mut [T]) {
+        let (w, h) = self.size();
+        if y >= h {
+            return;
+        }
+        let n = src.len().min(w as usize);
+        let mut x = 0usize;
+        while x < n {
+            let run = (TILE - x % TILE).min(n - x);
+            let i0 = self.index(x, y as usize);
+            if let (Some(d), Some(s)) = (buf(self).get_mut(i0..i0 + run), src.get(x..x + run)) {
+                d.copy_from_slice(s);
+            }
+            x += run;
+        }
     }
 }
 
@@ -575,6 +715,131 @@ mod tests {
                 assert_eq!(s.lo, first as i32, "case {case}");
             }
         }
+    }
+
+    /// `row_runs` gives `pixel_in`'s values pixel for pixel: spans that start and end outside
+    /// the framebuffer, cross tiles with and without pending clears (whole and partial), read
+    /// either colour buffer; runs never cross a tile or come out empty.
+    #[test]
+    fn row_runs_are_pixel_in() {
+        use crate::gl;
+        use crate::state::ContextConfig;
+        let config = ContextConfig {
+            double_buffered: true,
+            ..ContextConfig::default()
+        };
+        let mut fb = Framebuffer::try_new(130, 70, config).expect("a test framebuffer");
+        let mut st = State::new(130, 70);
+        st.config = config;
+        let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
+        st.clear_color = Vec4::new(0.0, 1.0, 0.0, 1.0);
+        fb.clear(&st, all);
+        fb.swap();
+        st.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
+        st.clear_depth = 0.25;
+        st.clear_stencil = 9;
+        fb.clear(&st, all);
+        st.enables.scissor_test = true;
+        st.scissor = [60, 10, 20, 50];
+        st.clear_color = Vec4::new(0.0, 0.5, 1.0, 1.0);
+        st.clear_depth = 0.75;
+        st.clear_stencil = 4;
+        fb.clear(&st, all);
+        // Distinct values in the memory of every pixel, pending clears kept where they are.
+        for (i, ((c, d), s)) in fb
+            .color
+            .iter_mut()
+            .zip(fb.depth.iter_mut())
+            .zip(fb.stencil.iter_mut())
+            .enumerate()
+        {
+            *c = [i as u8, (i >> 8) as u8, 7, 200];
+            *d = (i as u32).wrapping_mul(2_654_435_761) >> 8;
+            *s = (i * 31) as u8;
+        }
+        let mut seed = 5u32;
+        let mut next = |m: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed % m
+        };
+        let mut cases: Vec<(i64, i64, usize)> = Vec::new();
+        for y in [-1i64, 0, 10, 33, 63, 64, 69, 70] {
+            for (x, n) in [(-5i64, 20usize), (0, 130), (50, 30), (120, 40), (-3, 200)] {
+                cases.push((x, y, n));
+            }
+            cases.push((131, y, 4));
+            cases.push((0, y, 0));
+        }
+        for _ in 0..400 {
+            let (x, y, n) = (next(300) as i64 - 100, next(90) as i64 - 10, next(260));
+            cases.push((x, y, n as usize));
+        }
+        cases.push((i64::MIN + 3, 5, 8));
+        cases.push((i64::MAX - 3, 5, 8));
+        for buf in [ColorBuf::Main, ColorBuf::Front] {
+            for &(x, y, n) in &cases {
+                let mut got = Vec::new();
+                row_runs(&fb, buf, x, y, n, |r| match r {
+                    RowRun::Outside(m) => {
+                        assert!(m > 0);
+                        got.extend(std::iter::repeat_n(None, m));
+                    }
+                    RowRun::Inside {
+                        len,
+                        color,
+                        depth,
+                        stencil,
+                    } => {
+                        assert!(len > 0 && len <= TILE);
+                        for k in 0..len {
+                            got.push(Some((
+                                color.get(k).expect("colour"),
+                                depth.get(k).expect("depth"),
+                                stencil.get(k).expect("stencil"),
+                            )));
+                        }
+                    }
+                });
+                let want: Vec<_> = (0..n as i64)
+                    .map(|k| fb.pixel_in(buf, x.saturating_add(k), y))
+                    .collect();
+                assert_eq!(got, want, "{buf:?} y {y} x {x} n {n}");
+            }
+        }
+    }
+
+    /// `set_row` writes what `set_pixel` / `set_stencil` write pixel by pixel: rows across
+    /// tiles, longer than the framebuffer is wide, above its top.
+    #[test]
+    fn set_row_is_set_pixel() {
+        let config = crate::state::ContextConfig::default();
+        let (mut a, mut b) = (
+            Framebuffer::try_new(130, 70, config).expect("a test framebuffer"),
+            Framebuffer::try_new(130, 70, config).expect("a test framebuffer"),
+        );
+        for (y, n) in [
+            (0u32, 130usize),
+            (5, 20),
+            (63, 64),
+            (64, 65),
+            (69, 200),
+            (70, 10),
+            (900, 3),
+        ] {
+            let c: Vec<[u8; 4]> = (0..n).map(|k| [k as u8, y as u8, 3, 4]).collect();
+            let d: Vec<u32> = (0..n).map(|k| (k as u32) << 8 | y).collect();
+            let st: Vec<u8> = (0..n).map(|k| (k as u8) ^ (y as u8)).collect();
+            a.set_row(y, &c, |f| &mut f.color);
+            a.set_row(y, &d, |f| &mut f.depth);
+            a.set_row(y, &st, |f| &mut f.stencil);
+            for k in 0..n {
+                b.set_pixel(k as u32, y, Some(c[k]), Some(d[k]));
+                b.set_stencil(k as u32, y, st[k]);
+            }
+        }
+        assert_eq!((a.color, a.depth, a.stencil), (b.color, b.depth, b.stencil));
     }
 
     #[test]

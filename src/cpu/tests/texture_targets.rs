@@ -403,3 +403,52 @@ fn cube_lambda_lanes_is_the_scalar_lambda() {
         }
     }
 }
+
+/// Lanes close together (a small step from lane to lane, one λ or nearby ones), as the
+/// fragments of a span give them: most groups have every lane on one face and level, the
+/// passes' one-image route; each lane the scalar texel bit for bit.
+#[test]
+fn coherent_lanes_are_the_scalar_texel_bit_for_bit() {
+    let mut next = lcg(41);
+    let mut checked = [0usize; 3];
+    for round in 0..3000 {
+        let (ti, target) = [
+            (0, gl::TEXTURE_1D),
+            (1, gl::TEXTURE_3D),
+            (2, gl::TEXTURE_CUBE_MAP),
+        ][round % 3];
+        let obj = random_object(target, round % 7 == 6, &mut next);
+        let s = sampler_on(target, obj, gl::MODULATE, Default::default());
+        for _ in 0..6 {
+            let base: [f32; 4] = std::array::from_fn(|_| coord(&mut next));
+            let step: [f32; 4] = std::array::from_fn(|_| (next() % 2001) as f32 * 1e-5 - 0.01);
+            let c: [[f32; LANES]; 4] = std::array::from_fn(|k| {
+                std::array::from_fn(|l| match k {
+                    3 => 1.0,
+                    _ => base[k] + step[k] * l as f32,
+                })
+            });
+            let l0 = (next() % 4000) as f32 * 1e-3 - 1.0;
+            let dl = if next() % 2 == 0 { 0.0 } else { 0.01 };
+            let lambda: [f32; LANES] = std::array::from_fn(|l| l0 + dl * l as f32);
+            let m = match next() % 3 {
+                0 => 0xff,
+                _ => (next() % 256) as u8,
+            };
+            let got = s.texels_lanes([&c[0], &c[1], &c[2], &c[3]], &lambda, m);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let want = s.texel([c[0][l], c[1][l], c[2][l], c[3][l]], lambda[l]);
+                assert!(
+                    same(got[l], want),
+                    "round {round} target {target:#x} lane {l}: {:?} vs {want:?}",
+                    got[l]
+                );
+                checked[ti] += 1;
+            }
+        }
+    }
+    assert!(checked.iter().all(|&n| n > 20_000), "{checked:?}");
+}

@@ -11,7 +11,7 @@ use glam::Vec4;
 
 use super::{
     cube_face, cube_project, depth_compare, fast_log2_lane, lambda_point, wrap_linear_lanes,
-    wrap_nearest_lanes, Route, Sampler, TexelLanes,
+    wrap_nearest_lanes, Axis, Route, Sampler, TexelLanes, Texels,
 };
 use crate::cpu::lanes::{recip_lanes, LANES};
 use crate::gl;
@@ -30,6 +30,25 @@ struct Views3<'a> {
 /// of by the lane passes: the passes compute their wraps and weights on all eight lanes, which
 /// costs more than the scalar route for a sparse group (the small triangles of a sphere).
 const SPARSE: u32 = 3;
+
+/// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
+/// index mask: at least one texel per axis, exactly w·h·d texels, a power-of-two count that
+/// fits an i32 (the 2D passes' `dense_level` with a depth). Then every index ((k·h + j)·w + i)
+/// of an in-image texel lies in 0..tx.len(), where `& (tx.len() - 1)` keeps it: the texel
+/// `Level::texel3` reads.
+#[inline(always)]
+fn dense3(tx: &[[f32; 4]], [w, h, d]: [i32; 3]) -> bool {
+    let len = tx.len();
+    w >= 1
+        && h >= 1
+        && d >= 1
+        && len.is_power_of_two()
+        && len <= i32::MAX as usize
+        && (w as usize)
+            .checked_mul(h as usize)
+            .and_then(|n| n.checked_mul(d as usize))
+            == Some(len)
+}
 
 impl Sampler {
     /// `texels_lanes` for a 1D or 3D texture or a cube map: the coordinates (s, t, r, q) of
@@ -171,6 +190,9 @@ impl Sampler {
             d: [1; LANES],
         };
         let mut have = 0u8;
+        // Whether every lane of `m` is on one (face, level): then the pass reads one image
+        // whose sizes the compiler keeps in registers (as the 2D passes' one-level route).
+        let mut uniform = true;
         // The level of each lane, looked up once per run of equal (face, level).
         let mut cur: Option<(usize, i32, Option<&Level>)> = None;
         for l in 0..LANES {
@@ -180,6 +202,7 @@ impl Sampler {
             let level = match cur {
                 Some((f, k, x)) if f == face[l] && k == lv[l] => x,
                 _ => {
+                    uniform &= cur.is_none();
                     let x = self.obj.face_level(face[l], lv[l]);
                     cur = Some((face[l], lv[l], x));
                     x
@@ -193,22 +216,182 @@ impl Sampler {
             }
         }
         let m = m & have;
+        if m == 0 {
+            return;
+        }
+        match cur {
+            Some((_, _, Some(x))) if uniform => {
+                let tx: &[[f32; 4]] = &x.texels[..];
+                let n = [x.width, x.height, x.depth];
+                if dense3(tx, n) && self.in_image(linear) {
+                    match self.compare {
+                        None => self.pass_dense(linear, tx, n, s, t, r, m, out, |_, x| x),
+                        Some(func) => self.pass_dense(linear, tx, n, s, t, r, m, out, |l, x| {
+                            depth_compare(func, r[l], x)
+                        }),
+                    }
+                } else {
+                    self.pass_targets_cmp(linear, tx, n, s, t, r, m, out)
+                }
+            }
+            _ => self.pass_targets_cmp(linear, &v.tx, [&v.w, &v.h, &v.d], s, t, r, m, out),
+        }
+    }
+
+    /// Whether every index the wrap modes of this sampler's axes give lies inside the image
+    /// (no border texel): for LINEAR none of CLAMP and CLAMP_TO_BORDER, for NEAREST (whose
+    /// CLAMP clamps the index as CLAMP_TO_EDGE does) no CLAMP_TO_BORDER.
+    #[inline(always)]
+    fn in_image(&self, linear: bool) -> bool {
+        self.wrap
+            .iter()
+            .take(self.dims.clamp(1, 3))
+            .all(|&mode| match linear {
+                true => !matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER),
+                false => mode != gl::CLAMP_TO_BORDER,
+            })
+    }
+
+    /// `pass_targets_on` for every lane on one level `dt` of `n` texels (width, height,
+    /// depth) that [`dense3`] holds for, with wrap modes that keep every index inside the
+    /// image ([`Sampler::in_image`]): each index ((k·h + j)·w + i) of an in-image texel is
+    /// below dt.len(), a power of two, so `& (dt.len() - 1)` keeps it, and the gathers need no
+    /// bounds check and no border choice. The weights and blends are `pass_targets_on`'s.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pass_dense(
+        &self,
+        linear: bool,
+        dt: &[[f32; 4]],
+        [w, h, d]: [i32; 3],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+        cmp: impl Fn(usize, [f32; 4]) -> [f32; 4],
+    ) {
+        let Some(km) = dt.len().checked_sub(1) else {
+            return;
+        };
+        let dims = self.dims;
+        // ((k·h + j)·w + i) = k·(h·w) + j·w + i: the same value (below 2^31) in wrapping i32.
+        let slab = h.wrapping_mul(w);
+        let at = |l: usize, k: i32| cmp(l, dt[k as usize & km]);
+        let zero = ([0i32; LANES], [true; LANES]);
+        if !linear {
+            let (i, _) = wrap_nearest_lanes(self.wrap[0], s, w);
+            let (j, _) = if dims >= 2 {
+                wrap_nearest_lanes(self.wrap[1], t, h)
+            } else {
+                zero
+            };
+            let (k, _) = if dims == 3 {
+                wrap_nearest_lanes(self.wrap[2], r, d)
+            } else {
+                zero
+            };
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    let n = k[l]
+                        .wrapping_mul(slab)
+                        .wrapping_add(j[l].wrapping_mul(w))
+                        .wrapping_add(i[l]);
+                    *o = at(l, n);
+                }
+            }
+            return;
+        }
+        let tv = |l: usize, k: i32| Vec4::from_array(at(l, k));
+        let x = wrap_linear_lanes(self.wrap[0], s, w);
+        if dims == 1 {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let (t0, t1) = (tv(l, x.i0[l]), tv(l, x.i1[l]));
+                let a = x.w[l];
+                // (1 - α)·t0 + α·t1.
+                *o = (Vec4::splat(1.0 - a) * t0 + Vec4::splat(a) * t1).to_array();
+            }
+            return;
+        }
+        let y = wrap_linear_lanes(self.wrap[1], t, h);
+        let mut wt = [[0.0f32; LANES]; 4];
+        for (l, (&a, &b)) in x.w.iter().zip(&y.w).enumerate() {
+            wt[0][l] = (1.0 - a) * (1.0 - b);
+            wt[1][l] = a * (1.0 - b);
+            wt[2][l] = (1.0 - a) * b;
+            wt[3][l] = a * b;
+        }
+        // `linear`'s `plane` at the slab offset `k0` for lane l.
+        let plane = |l: usize, k0: i32| {
+            let (r0, r1) = (
+                k0.wrapping_add(y.i0[l].wrapping_mul(w)),
+                k0.wrapping_add(y.i1[l].wrapping_mul(w)),
+            );
+            let t00 = tv(l, r0.wrapping_add(x.i0[l]));
+            let t10 = tv(l, r0.wrapping_add(x.i1[l]));
+            let t01 = tv(l, r1.wrapping_add(x.i0[l]));
+            let t11 = tv(l, r1.wrapping_add(x.i1[l]));
+            Vec4::splat(wt[0][l]) * t00
+                + Vec4::splat(wt[1][l]) * t10
+                + Vec4::splat(wt[2][l]) * t01
+                + Vec4::splat(wt[3][l]) * t11
+        };
+        if dims == 2 {
+            for (l, o) in out.iter_mut().enumerate() {
+                if m & (1 << l) != 0 {
+                    *o = plane(l, 0).to_array();
+                }
+            }
+            return;
+        }
+        let z = wrap_linear_lanes(self.wrap[2], r, d);
+        for (l, o) in out.iter_mut().enumerate() {
+            if m & (1 << l) == 0 {
+                continue;
+            }
+            let p0 = plane(l, z.i0[l].wrapping_mul(slab));
+            let p1 = plane(l, z.i1[l].wrapping_mul(slab));
+            let g = z.w[l];
+            // (1 - γ)·p0 + γ·p1.
+            *o = (Vec4::splat(1.0 - g) * p0 + Vec4::splat(g) * p1).to_array();
+        }
+    }
+
+    /// `pass_targets` on the images `tx` of sizes `n` (width, height, depth; per lane or one
+    /// for all), with `fetch`'s depth comparison when the sampler has one.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pass_targets_cmp<A: Axis, T: Texels>(
+        &self,
+        linear: bool,
+        tx: T,
+        n: [A; 3],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
         match self.compare {
-            None => self.pass_targets_on(linear, &v, s, t, r, m, out, |_, x| x),
-            Some(func) => self.pass_targets_on(linear, &v, s, t, r, m, out, |l, x| {
+            None => self.pass_targets_on(linear, tx, n, s, t, r, m, out, |_, x| x),
+            Some(func) => self.pass_targets_on(linear, tx, n, s, t, r, m, out, |l, x| {
                 depth_compare(func, r[l], x)
             }),
         }
     }
 
-    /// `pass_targets` on the lanes' images `v`, `cmp(l, texel)` giving what `fetch` makes of
-    /// lane l's texel (itself, or the comparison result against the lane's r).
+    /// `pass_targets` on the images `tx` of sizes `n`, `cmp(l, texel)` giving what `fetch`
+    /// makes of lane l's texel (itself, or the comparison result against the lane's r).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn pass_targets_on(
+    fn pass_targets_on<A: Axis, T: Texels>(
         &self,
         linear: bool,
-        v: &Views3,
+        tx: T,
+        [nw, nh, nd]: [A; 3],
         s: &[f32; LANES],
         t: &[f32; LANES],
         r: &[f32; LANES],
@@ -224,8 +407,8 @@ impl Sampler {
             cmp(
                 l,
                 if inside {
-                    let n = ((k * v.h[l] + j) * v.w[l] + i) as usize;
-                    v.tx[l].get(n).copied().unwrap_or([0.0; 4])
+                    let n = ((k * nh.at(l) + j) * nw.at(l) + i) as usize;
+                    tx.get(l, n)
                 } else {
                     border
                 },
@@ -233,14 +416,14 @@ impl Sampler {
         };
         let zero = ([0i32; LANES], [true; LANES]);
         if !linear {
-            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, &v.w);
+            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, nw);
             let (j, ji) = if dims >= 2 {
-                wrap_nearest_lanes(self.wrap[1], t, &v.h)
+                wrap_nearest_lanes(self.wrap[1], t, nh)
             } else {
                 zero
             };
             let (k, ki) = if dims == 3 {
-                wrap_nearest_lanes(self.wrap[2], r, &v.d)
+                wrap_nearest_lanes(self.wrap[2], r, nd)
             } else {
                 zero
             };
@@ -256,7 +439,7 @@ impl Sampler {
         let tv = |l: usize, i: i32, j: i32, k: i32, inside: bool| {
             Vec4::from_array(texel(l, i, j, k, inside))
         };
-        let x = wrap_linear_lanes(self.wrap[0], s, &v.w);
+        let x = wrap_linear_lanes(self.wrap[0], s, nw);
         if dims == 1 {
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) == 0 {
@@ -270,7 +453,7 @@ impl Sampler {
             }
             return;
         }
-        let y = wrap_linear_lanes(self.wrap[1], t, &v.h);
+        let y = wrap_linear_lanes(self.wrap[1], t, nh);
         // The four weights of eq. 3.24 as `linear` groups them:
         // (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11.
         let mut wt = [[0.0f32; LANES]; 4];
@@ -302,7 +485,7 @@ impl Sampler {
             }
             return;
         }
-        let z = wrap_linear_lanes(self.wrap[2], r, &v.d);
+        let z = wrap_linear_lanes(self.wrap[2], r, nd);
         for (l, o) in out.iter_mut().enumerate() {
             if m & (1 << l) == 0 {
                 continue;
