@@ -21,8 +21,7 @@ use rayon::prelude::*;
 
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::{
-    depth_unorm, scissor_rect, tile_slices, unorm8, ColorBuf, Framebuffer, Targets, TILE,
-    TILE_PIXELS,
+    depth_unorm, scissor_rect, unorm8, ColorBuf, Framebuffer, Targets, TILE, TILE_PIXELS,
 };
 use super::texture::{Sampler, UnitTexels};
 use super::Renderer;
