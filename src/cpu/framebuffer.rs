@@ -917,7 +917,7 @@ pub fn depth_unorm(z: f64) -> u32 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::gl;
     use glam::Vec4;
@@ -978,10 +978,11 @@ mod tests {
         assert_eq!(fb.color_bytes_top_down()[..4], mixed);
     }
 
-    /// `pixels_in` gives `pixel_in`'s values for spans that start and end outside the
-    /// framebuffer, cross tiles with and without pending clears, and read either colour buffer.
-    #[test]
-    fn pixels_in_is_pixel_in_per_pixel() {
+    /// A double-buffered 130x70 framebuffer whose front buffer holds a materialised green clear,
+    /// whose back buffer a pending red one (depth 0.25, stencil 9), and a scissored clear
+    /// (60, 10, 20x50) written eagerly into part of some tiles: the mix of pending and written
+    /// tiles the readers must agree on.
+    pub(crate) fn pending_clears_fixture() -> Framebuffer {
         let config = ContextConfig {
             double_buffered: true,
             ..ContextConfig::default()
@@ -992,19 +993,25 @@ mod tests {
         let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
         st.clear_color = Vec4::new(0.0, 1.0, 0.0, 1.0);
         fb.clear(&st, all);
-        // The front buffer gets the green, materialised; then the back buffer a pending red.
         fb.swap();
         st.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
         st.clear_depth = 0.25;
         st.clear_stencil = 9;
         fb.clear(&st, all);
-        // A scissored clear writes part of some tiles eagerly; the rest stay pending.
         st.enables.scissor_test = true;
         st.scissor = [60, 10, 20, 50];
         st.clear_color = Vec4::new(0.0, 0.5, 1.0, 1.0);
         st.clear_depth = 0.75;
         st.clear_stencil = 4;
         fb.clear(&st, all);
+        fb
+    }
+
+    /// `pixels_in` gives `pixel_in`'s values for spans that start and end outside the
+    /// framebuffer, cross tiles with and without pending clears, and read either colour buffer.
+    #[test]
+    fn pixels_in_is_pixel_in_per_pixel() {
+        let fb = pending_clears_fixture();
         for buf in [ColorBuf::Main, ColorBuf::Front] {
             for y in [-1i64, 0, 10, 33, 63, 64, 69, 70] {
                 for (x, n) in [

@@ -721,29 +721,7 @@ mod tests {
     /// either colour buffer; runs never cross a tile or come out empty.
     #[test]
     fn row_runs_are_pixel_in() {
-        use crate::gl;
-        use crate::state::ContextConfig;
-        let config = ContextConfig {
-            double_buffered: true,
-            ..ContextConfig::default()
-        };
-        let mut fb = Framebuffer::try_new(130, 70, config).expect("a test framebuffer");
-        let mut st = State::new(130, 70);
-        st.config = config;
-        let all = gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT;
-        st.clear_color = Vec4::new(0.0, 1.0, 0.0, 1.0);
-        fb.clear(&st, all);
-        fb.swap();
-        st.clear_color = Vec4::new(1.0, 0.0, 0.0, 1.0);
-        st.clear_depth = 0.25;
-        st.clear_stencil = 9;
-        fb.clear(&st, all);
-        st.enables.scissor_test = true;
-        st.scissor = [60, 10, 20, 50];
-        st.clear_color = Vec4::new(0.0, 0.5, 1.0, 1.0);
-        st.clear_depth = 0.75;
-        st.clear_stencil = 4;
-        fb.clear(&st, all);
+        let mut fb = super::super::framebuffer::tests::pending_clears_fixture();
         // Distinct values in the memory of every pixel, pending clears kept where they are.
         for (i, ((c, d), s)) in fb
             .color

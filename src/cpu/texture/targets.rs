@@ -334,10 +334,7 @@ impl Sampler {
             let t10 = tv(l, r0.wrapping_add(x.i1[l]));
             let t01 = tv(l, r1.wrapping_add(x.i0[l]));
             let t11 = tv(l, r1.wrapping_add(x.i1[l]));
-            Vec4::splat(wt[0][l]) * t00
-                + Vec4::splat(wt[1][l]) * t10
-                + Vec4::splat(wt[2][l]) * t01
-                + Vec4::splat(wt[3][l]) * t11
+            weigh(&wt, l, [t00, t10, t01, t11])
         };
         if dims == 2 {
             for (l, o) in out.iter_mut().enumerate() {
@@ -471,10 +468,7 @@ impl Sampler {
                 let t10 = tv(l, x.i1[l], y.i0[l], k, x.in1[l] && y.in0[l] && kin);
                 let t01 = tv(l, x.i0[l], y.i1[l], k, x.in0[l] && y.in1[l] && kin);
                 let t11 = tv(l, x.i1[l], y.i1[l], k, x.in1[l] && y.in1[l] && kin);
-                Vec4::splat(wt[0][l]) * t00
-                    + Vec4::splat(wt[1][l]) * t10
-                    + Vec4::splat(wt[2][l]) * t01
-                    + Vec4::splat(wt[3][l]) * t11
+                weigh(&wt, l, [t00, t10, t01, t11])
             }};
         }
         if dims == 2 {
@@ -683,6 +677,16 @@ impl Sampler {
         }
         out
     }
+}
+
+/// Eq. 3.24's sum for lane l of a LINEAR pass, in the scalar code's order:
+/// w00·t00 + w10·t10 + w01·t01 + w11·t11 (the weights `wt`, lane-major by texel).
+#[inline(always)]
+fn weigh(wt: &[[f32; LANES]; 4], l: usize, t: [Vec4; 4]) -> Vec4 {
+    Vec4::splat(wt[0][l]) * t[0]
+        + Vec4::splat(wt[1][l]) * t[1]
+        + Vec4::splat(wt[2][l]) * t[2]
+        + Vec4::splat(wt[3][l]) * t[3]
 }
 
 #[cfg(test)]
