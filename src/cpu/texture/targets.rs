@@ -252,6 +252,29 @@ impl Sampler {
             })
     }
 
+    /// Each axis's NEAREST index and inside flag (`wrap_nearest_lanes`) for coordinates `s`,
+    /// `t`, `r` on sizes `w`, `h`, `d`; the axes a texture of fewer dimensions lacks are index
+    /// 0, inside.
+    #[inline(always)]
+    fn nearest_axes<A: Axis + Copy>(
+        &self,
+        [s, t, r]: [&[f32; LANES]; 3],
+        [w, h, d]: [A; 3],
+    ) -> [([i32; LANES], [bool; LANES]); 3] {
+        let zero = ([0i32; LANES], [true; LANES]);
+        [
+            wrap_nearest_lanes(self.wrap[0], s, w),
+            match self.dims >= 2 {
+                true => wrap_nearest_lanes(self.wrap[1], t, h),
+                false => zero,
+            },
+            match self.dims == 3 {
+                true => wrap_nearest_lanes(self.wrap[2], r, d),
+                false => zero,
+            },
+        ]
+    }
+
     /// `pass_targets_on` for every lane on one level `dt` of `n` texels (width, height,
     /// depth) that [`dense3`] holds for, with wrap modes that keep every index inside the
     /// image ([`Sampler::in_image`]): each index ((k·h + j)·w + i) of an in-image texel is
@@ -278,19 +301,8 @@ impl Sampler {
         // ((k·h + j)·w + i) = k·(h·w) + j·w + i: the same value (below 2^31) in wrapping i32.
         let slab = h.wrapping_mul(w);
         let at = |l: usize, k: i32| cmp(l, dt[k as usize & km]);
-        let zero = ([0i32; LANES], [true; LANES]);
         if !linear {
-            let (i, _) = wrap_nearest_lanes(self.wrap[0], s, w);
-            let (j, _) = if dims >= 2 {
-                wrap_nearest_lanes(self.wrap[1], t, h)
-            } else {
-                zero
-            };
-            let (k, _) = if dims == 3 {
-                wrap_nearest_lanes(self.wrap[2], r, d)
-            } else {
-                zero
-            };
+            let [(i, _), (j, _), (k, _)] = self.nearest_axes([s, t, r], [w, h, d]);
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
                     let n = k[l]
@@ -411,19 +423,8 @@ impl Sampler {
                 },
             )
         };
-        let zero = ([0i32; LANES], [true; LANES]);
         if !linear {
-            let (i, ii) = wrap_nearest_lanes(self.wrap[0], s, nw);
-            let (j, ji) = if dims >= 2 {
-                wrap_nearest_lanes(self.wrap[1], t, nh)
-            } else {
-                zero
-            };
-            let (k, ki) = if dims == 3 {
-                wrap_nearest_lanes(self.wrap[2], r, nd)
-            } else {
-                zero
-            };
+            let [(i, ii), (j, ji), (k, ki)] = self.nearest_axes([s, t, r], [nw, nh, nd]);
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
                     *o = texel(l, i[l], j[l], k[l], ii[l] && ji[l] && ki[l]);
