@@ -344,19 +344,17 @@ impl Sampler {
         }
         let [s, t, r, q] = coords;
         let rq = recip_lanes(*q);
-        let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
         let mut inv = [0.0f32; LANES];
         for l in 0..LANES {
             inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
-            ss[l] = s[l] * inv[l];
-            tt[l] = t[l] * inv[l];
         }
+        let (ss, tt) = (mul_lanes(s, &inv), mul_lanes(t, &inv));
         // r/q is read by the depth comparison only.
-        if self.compare.is_some() {
-            for l in 0..LANES {
-                rr[l] = r[l] * inv[l];
-            }
-        }
+        let rr = if self.compare.is_some() {
+            mul_lanes(r, &inv)
+        } else {
+            [0.0f32; LANES]
+        };
         let mut out = [[0.0f32; 4]; LANES];
         match self.route {
             Route::Nearest => self.pass_level(false, self.base_level, &ss, &tt, &rr, m, &mut out),
@@ -562,6 +560,10 @@ impl Sampler {
         let tx: &[[f32; 4]] = &v.texels;
         let (w, h) = (v.width, v.height);
         let dense = dense_level(tx, w, h).then_some(tx);
+        if let (None, Some(dt), Some(kind)) = (self.compare, dense, kernel_kind(linear, self.wrap))
+        {
+            return dense_kernel(kind, dt, w, h, s, t, m, out);
+        }
         match self.compare {
             None => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |_, t| t),
             Some(func) => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |l, t| {
@@ -1596,21 +1598,7 @@ fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
             // layouts of `[f32; 4]`/`[i32; 4]`, and every bit pattern is valid for all four.
             unsafe {
                 let v = std::mem::transmute::<[f32; 4], __m128>(h);
-                let t = _mm_cvttps_epi32(v);
-                let big = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(2_147_483_648.0)));
-                let t = _mm_or_si128(
-                    _mm_andnot_si128(big, t),
-                    _mm_and_si128(big, _mm_set1_epi32(i32::MAX)),
-                );
-                let nan = _mm_castps_si128(_mm_cmpunord_ps(v, v));
-                let t = _mm_andnot_si128(nan, t);
-                // -1 where (t as f32) > x and t is not i32::MIN.
-                let gt = _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), v));
-                let at_min = _mm_cmpeq_epi32(t, _mm_set1_epi32(i32::MIN));
-                std::mem::transmute::<__m128i, [i32; 4]>(_mm_add_epi32(
-                    t,
-                    _mm_andnot_si128(at_min, gt),
-                ))
+                std::mem::transmute::<__m128i, [i32; 4]>(ifloor4(v))
             }
         };
         let lo = half([x[0], x[1], x[2], x[3]]);
@@ -1621,6 +1609,339 @@ fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
     {
         x.map(ifloor)
     }
+}
+
+/// `a[l] * b[l]` on every lane (`mulps` on x86-64: LLVM's vectoriser left the plain loop
+/// scalar in `texels_lanes` once the dense kernels joined it).
+#[inline(always)]
+fn mul_lanes(a: &[f32; LANES], b: &[f32; LANES]) -> [f32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let h = |x: [f32; 4], y: [f32; 4]| {
+            // SAFETY: SSE2 is part of the x86-64 baseline; `__m128` is four f32 lanes in
+            // memory order, the layout of `[f32; 4]`, every bit pattern valid for both.
+            unsafe {
+                std::mem::transmute::<__m128, [f32; 4]>(_mm_mul_ps(
+                    std::mem::transmute::<[f32; 4], __m128>(x),
+                    std::mem::transmute::<[f32; 4], __m128>(y),
+                ))
+            }
+        };
+        let lo = h([a[0], a[1], a[2], a[3]], [b[0], b[1], b[2], b[3]]);
+        let hi = h([a[4], a[5], a[6], a[7]], [b[4], b[5], b[6], b[7]]);
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        std::array::from_fn(|l| a[l] * b[l])
+    }
+}
+
+/// [`ifloor`] on four lanes (SSE2): `cvttps2dq` truncation with `as i32`'s saturation (2^31
+/// and above to i32::MAX, NaN to 0; below -2^31 it already gives i32::MIN), then one step
+/// down where the truncation exceeds x, except from i32::MIN. [`ifloor_lanes`] and the dense
+/// kernels ([`dense_kernel`]) share it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn ifloor4(v: std::arch::x86_64::__m128) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of the x86-64 baseline, so these intrinsics exist on every x86-64
+    // CPU; they read and write registers only.
+    unsafe {
+        let t = _mm_cvttps_epi32(v);
+        let big = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(2_147_483_648.0)));
+        let t = _mm_or_si128(
+            _mm_andnot_si128(big, t),
+            _mm_and_si128(big, _mm_set1_epi32(i32::MAX)),
+        );
+        let nan = _mm_castps_si128(_mm_cmpunord_ps(v, v));
+        let t = _mm_andnot_si128(nan, t);
+        // -1 where (t as f32) > x and t is not i32::MIN.
+        let gt = _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), v));
+        let at_min = _mm_cmpeq_epi32(t, _mm_set1_epi32(i32::MIN));
+        _mm_add_epi32(t, _mm_andnot_si128(at_min, gt))
+    }
+}
+
+/// Which dense kernel ([`dense_kernel`]) covers a one-level pass with filter `linear` and
+/// wrap modes `wrap` (s, t): bit 2 LINEAR, bit 1 REPEAT on s (else an edge clamp), bit 0
+/// REPEAT on t. NEAREST takes REPEAT, CLAMP or CLAMP_TO_EDGE, LINEAR REPEAT or CLAMP_TO_EDGE
+/// (no border texel either way); None otherwise, and always off x86-64.
+#[inline(always)]
+fn kernel_kind(linear: bool, wrap: [u32; 3]) -> Option<u8> {
+    if cfg!(not(target_arch = "x86_64")) {
+        return None;
+    }
+    let rep = |mode: u32| match mode {
+        gl::REPEAT => Some(1u8),
+        gl::CLAMP_TO_EDGE => Some(0),
+        gl::CLAMP if !linear => Some(0),
+        _ => None,
+    };
+    Some(u8::from(linear) << 2 | rep(wrap[0])? << 1 | rep(wrap[1])?)
+}
+
+/// The one-level pass (`pass_on`) of a level without depth comparison whose texels `dt` are
+/// [`dense_level`] (`w` x `h`, both powers of two) as one SSE2 kernel per half group, for the
+/// filter and wrap modes [`kernel_kind`] encodes in `kind` (no border texel). Each lane
+/// computes `pass_on`'s expressions in the same order (the wraps' u, floor, weight and
+/// indices, eq. 3.24's weights and sum), so every texel has the same bits; the coordinates,
+/// weights and indices stay in registers from the wrap to the gather, which `pass_on`'s lane
+/// loops spill between steps. Out of line: inlined, it made `pass_level`'s other routes
+/// spill more.
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_kernel(
+    kind: u8,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    #[cfg(target_arch = "x86_64")]
+    match kind {
+        0 => dense_nearest::<false, false>(dt, w, h, s, t, m, out),
+        1 => dense_nearest::<false, true>(dt, w, h, s, t, m, out),
+        2 => dense_nearest::<true, false>(dt, w, h, s, t, m, out),
+        3 => dense_nearest::<true, true>(dt, w, h, s, t, m, out),
+        4 => dense_linear::<false, false>(dt, w, h, s, t, m, out),
+        5 => dense_linear::<false, true>(dt, w, h, s, t, m, out),
+        6 => dense_linear::<true, false>(dt, w, h, s, t, m, out),
+        _ => dense_linear::<true, true>(dt, w, h, s, t, m, out),
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (kind, dt, w, h, s, t, m, out);
+    }
+}
+
+/// Lanes `LO..LO + 4` of `x` as one SSE2 register.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn half4<const LO: usize>(x: &[f32; LANES]) -> std::arch::x86_64::__m128 {
+    let h = [x[LO], x[LO + 1], x[LO + 2], x[LO + 3]];
+    // SAFETY: `__m128` is four f32 lanes in memory order, the layout of `[f32; 4]`.
+    unsafe { std::mem::transmute::<[f32; 4], std::arch::x86_64::__m128>(h) }
+}
+
+/// An axis' finish for the dense kernels: REPEAT's mask (`REP`; n a power of two) or the
+/// edge clamp `i.max(0).min(n - 1)` ([`nearest_finish`], [`linear_finish`]), on four lanes.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn wrap4<const REP: bool>(
+    i: std::arch::x86_64::__m128i,
+    nm1: std::arch::x86_64::__m128i,
+) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only.
+    unsafe {
+        if REP {
+            _mm_and_si128(i, nm1)
+        } else {
+            let i = _mm_and_si128(i, _mm_cmpgt_epi32(i, _mm_setzero_si128()));
+            let gt = _mm_cmpgt_epi32(i, nm1);
+            _mm_or_si128(_mm_and_si128(gt, nm1), _mm_andnot_si128(gt, i))
+        }
+    }
+}
+
+/// `log2(n)` of a power of two `n` >= 1 as SSE2's shift count: j·n as j << log2(n) (the same
+/// bits as `wrapping_mul`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn shift_of(n: i32) -> std::arch::x86_64::__m128i {
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only.
+    unsafe { std::arch::x86_64::_mm_cvtsi32_si128(n.trailing_zeros() as i32) }
+}
+
+/// NEAREST on a dense level ([`dense_kernel`]), REPEAT (`RX`, `RY` true) or an edge clamp
+/// per axis: i = floor(s·w), j = floor(t·h), wrapped, texel j·w + i (`wrap_nearest_lanes`
+/// and `pass_on`'s dense gather).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn dense_nearest<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    if m & 0xf != 0 {
+        nearest_half::<RX, RY, 0>(dt, km, w, h, s, t, m, out);
+    }
+    if m & 0xf0 != 0 {
+        nearest_half::<RX, RY, 4>(dt, km, w, h, s, t, m, out);
+    }
+}
+
+/// [`dense_nearest`] for lanes `LO..LO + 4`.
+#[cfg(target_arch = "x86_64")]
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn nearest_half<const RX: bool, const RY: bool, const LO: usize>(
+    dt: &[[f32; 4]],
+    km: usize,
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only, and `__m128i` is four
+    // i32 lanes in memory order, the layout of `[i32; 4]`.
+    let k = unsafe {
+        let i = ifloor4(_mm_mul_ps(half4::<LO>(s), _mm_set1_ps(w as f32)));
+        let j = ifloor4(_mm_mul_ps(half4::<LO>(t), _mm_set1_ps(h as f32)));
+        let i = wrap4::<RX>(i, _mm_set1_epi32(w - 1));
+        let j = wrap4::<RY>(j, _mm_set1_epi32(h - 1));
+        std::mem::transmute::<__m128i, [u32; 4]>(_mm_add_epi32(_mm_sll_epi32(j, shift_of(w)), i))
+    };
+    macro_rules! lane {
+        ($l:literal) => {
+            if m & (1 << (LO + $l)) != 0 {
+                out[LO + $l] = dt[k[$l] as usize & km];
+            }
+        };
+    }
+    lane!(0);
+    lane!(1);
+    lane!(2);
+    lane!(3);
+}
+
+/// LINEAR on a dense level ([`dense_kernel`]), REPEAT (`RX`, `RY` true) or CLAMP_TO_EDGE per
+/// axis: `linear_u`, the floor, `linear_finish` (weight from the unwrapped floor, the second
+/// index by `saturating_add`), eq. 3.24's weights as `pass_on` groups them and the sum
+/// (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order, per channel.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn dense_linear<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    if m & 0xf != 0 {
+        linear_half::<RX, RY, 0>(dt, km, w, h, s, t, m, out);
+    }
+    if m & 0xf0 != 0 {
+        linear_half::<RX, RY, 4>(dt, km, w, h, s, t, m, out);
+    }
+}
+
+/// One axis of [`dense_linear`] on four lanes: the wrapped indices i0, i1 and the weight α of
+/// i1 ([`linear_u`], [`ifloor`], [`linear_finish`]) for coordinates `c` on `n` texels.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn linear_axis4<const REP: bool>(
+    c: std::arch::x86_64::__m128,
+    n: i32,
+) -> (
+    std::arch::x86_64::__m128i,
+    std::arch::x86_64::__m128i,
+    std::arch::x86_64::__m128,
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only.
+    unsafe {
+        // u = s·n - 1/2, a NaN u taken as 0.
+        let u = _mm_sub_ps(_mm_mul_ps(c, _mm_set1_ps(n as f32)), _mm_set1_ps(0.5));
+        let u = _mm_and_ps(u, _mm_cmpord_ps(u, u));
+        let i0 = ifloor4(u);
+        // (u - i0).clamp(0, 1) in `f32::clamp`'s order (a -0 stays -0).
+        let a = _mm_sub_ps(u, _mm_cvtepi32_ps(i0));
+        let a = _mm_min_ps(_mm_set1_ps(1.0), _mm_max_ps(_mm_setzero_ps(), a));
+        // i0.saturating_add(1): i0 + 1, less 1 where i0 was i32::MAX.
+        let at_max = _mm_cmpeq_epi32(i0, _mm_set1_epi32(i32::MAX));
+        let i1 = _mm_add_epi32(_mm_add_epi32(i0, _mm_set1_epi32(1)), at_max);
+        let nm1 = _mm_set1_epi32(n - 1);
+        (wrap4::<REP>(i0, nm1), wrap4::<REP>(i1, nm1), a)
+    }
+}
+
+/// [`dense_linear`] for lanes `LO..LO + 4`.
+#[cfg(target_arch = "x86_64")]
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn linear_half<const RX: bool, const RY: bool, const LO: usize>(
+    dt: &[[f32; 4]],
+    km: usize,
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let (x0, x1, a) = linear_axis4::<RX>(half4::<LO>(s), w);
+    let (y0, y1, b) = linear_axis4::<RY>(half4::<LO>(t), h);
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only, and `__m128i` is four
+    // i32 lanes in memory order, the layout of `[u32; 4]`.
+    let (k, wt) = unsafe {
+        let one = _mm_set1_ps(1.0);
+        let (na, nb) = (_mm_sub_ps(one, a), _mm_sub_ps(one, b));
+        let wt = [
+            _mm_mul_ps(na, nb),
+            _mm_mul_ps(a, nb),
+            _mm_mul_ps(na, b),
+            _mm_mul_ps(a, b),
+        ];
+        let sh = shift_of(w);
+        let (r0, r1) = (_mm_sll_epi32(y0, sh), _mm_sll_epi32(y1, sh));
+        let k = [
+            _mm_add_epi32(r0, x0),
+            _mm_add_epi32(r0, x1),
+            _mm_add_epi32(r1, x0),
+            _mm_add_epi32(r1, x1),
+        ]
+        .map(|v| std::mem::transmute::<__m128i, [u32; 4]>(v));
+        (k, wt)
+    };
+    macro_rules! lane {
+        ($l:literal) => {
+            if m & (1 << (LO + $l)) != 0 {
+                // SAFETY: SSE2 is part of the x86-64 baseline; `__m128` is four f32 lanes in
+                // memory order, the layout of `[f32; 4]`.
+                out[LO + $l] = unsafe {
+                    let at = |c: usize| {
+                        std::mem::transmute::<[f32; 4], __m128>(dt[k[c][$l] as usize & km])
+                    };
+                    // Lane $l of a weight in every channel (`pshufd`: one instruction).
+                    let b = |x: __m128| {
+                        _mm_castsi128_ps(_mm_shuffle_epi32::<{ $l * 0x55 }>(_mm_castps_si128(x)))
+                    };
+                    let v = _mm_add_ps(_mm_mul_ps(b(wt[0]), at(0)), _mm_mul_ps(b(wt[1]), at(1)));
+                    let v = _mm_add_ps(v, _mm_mul_ps(b(wt[2]), at(2)));
+                    let v = _mm_add_ps(v, _mm_mul_ps(b(wt[3]), at(3)));
+                    std::mem::transmute::<__m128, [f32; 4]>(v)
+                };
+            }
+        };
+    }
+    lane!(0);
+    lane!(1);
+    lane!(2);
+    lane!(3);
 }
 
 /// Are all of `n` (each taken as at least 1) powers of two?

@@ -1102,3 +1102,107 @@ fn ifloor_lanes_is_ifloor() {
         }
     }
 }
+
+#[test]
+fn dense_kernels_are_the_lane_pass_bit_for_bit() {
+    // `dense_kernel` (the SSE2 NEAREST and LINEAR kernels of a whole power-of-two level)
+    // against `pass_on`'s lane loops on the same level, and against the scalar `texel`, on
+    // every wrap pair `kernel_kind` takes (and none it refuses), levels from 1x1 to 64x32,
+    // coordinates with NaN, infinities, signed zeros, subnormals, huge values, texel centres
+    // and edges, random masks: the same bits on the lanes of the mask, and the lanes outside it
+    // left as they were.
+    let mut next = lcg(37u64);
+    let wraps = [
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::CLAMP_TO_BORDER,
+        gl::MIRRORED_REPEAT,
+    ];
+    let sizes = [
+        (1, 1),
+        (1, 8),
+        (8, 1),
+        (2, 2),
+        (4, 16),
+        (16, 4),
+        (64, 32),
+        (32, 64),
+    ];
+    let specials = [
+        f32::NAN,
+        f32::INFINITY,
+        -f32::INFINITY,
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        0.5,
+        1e9,
+        -1e9,
+        2_147_483_648.0,
+        -2_147_483_904.0,
+        f32::MIN_POSITIVE / 8.0,
+        f32::MAX,
+        f32::MIN,
+    ];
+    let (mut taken, mut refused) = (0, 0);
+    for round in 0..3000 {
+        let (w, h) = sizes[round % sizes.len()];
+        let linear = round / sizes.len() % 2 == 1;
+        let vals: Vec<[f32; 4]> = (0..w * h)
+            .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
+            .collect();
+        let filter = if linear { gl::LINEAR } else { gl::NEAREST };
+        let mut obj = obj_with(
+            vec![level(w, h, gl::RGBA, |i, j| vals[(j * w + i) as usize])],
+            filter,
+            filter,
+        );
+        obj.wrap_s = wraps[(next() % 5) as usize];
+        obj.wrap_t = wraps[(next() % 5) as usize];
+        let smp = sampler(obj, gl::REPLACE);
+        let lv = smp.obj.face_level(0, 0).expect("level 0");
+        let tx: &[[f32; 4]] = &lv.texels;
+        assert!(dense_level(tx, w, h));
+        let Some(kind) = kernel_kind(linear, smp.wrap) else {
+            refused += 1;
+            continue;
+        };
+        for _ in 0..16 {
+            let coord = |next: &mut dyn FnMut() -> u64, n: i32| match next() % 8 {
+                0 => specials[(next() % specials.len() as u64) as usize],
+                1 => f32::from_bits(next() as u32),
+                // Texel centres and edges (and their neighbours), inside and outside [0, 1].
+                2 => ((next() % (8 * n as u64)) as f32 - 2.0 * n as f32) / (2.0 * n as f32),
+                3 => f32::from_bits(
+                    ((next() % (4 * n as u64)) as f32 / n as f32 - 1.0).to_bits() + 1,
+                ),
+                _ => (next() % 100_000) as f32 * 6e-5 - 3.0,
+            };
+            let cs: [f32; LANES] = std::array::from_fn(|_| coord(&mut next, w));
+            let ct: [f32; LANES] = std::array::from_fn(|_| coord(&mut next, h));
+            let m = (next() % 256) as u8;
+            let fill = [f32::from_bits(0x7fc0_dead); 4];
+            let (mut got, mut want) = ([fill; LANES], [fill; LANES]);
+            dense_kernel(kind, tx, w, h, &cs, &ct, m, &mut got);
+            smp.pass_on(linear, tx, Some(tx), w, h, &cs, &ct, m, &mut want, |_, t| t);
+            for l in 0..LANES {
+                let bits = |t: [f32; 4]| t.map(f32::to_bits);
+                assert_eq!(
+                    bits(got[l]),
+                    bits(want[l]),
+                    "round {round} {w}x{h} kind {kind} lane {l} m {m:#x}: ({}, {})",
+                    cs[l],
+                    ct[l]
+                );
+                if m & (1 << l) != 0 {
+                    let scalar = smp.texel([cs[l], ct[l], 0.0, 1.0], 0.0);
+                    assert_eq!(bits(got[l]), bits(scalar), "round {round} lane {l}");
+                    taken += 1;
+                }
+            }
+        }
+    }
+    assert!(taken > 40_000 && refused > 500, "{taken} {refused}");
+}
