@@ -519,9 +519,12 @@ pub fn fb_texels(base: u32, run: RowRun<'_>, dst: &mut [[f32; 4]]) {
             Src::Fill(v) => dst.fill(f(v)),
         }
     }
-    let unit = |c: [u8; 4]| c.map(|v| f32::from(v) / 255.0);
+    let unit = unit4;
     match base {
-        gl::DEPTH_COMPONENT => each(dst, depth, |d| [d as f32 / DEPTH_MAX, 0.0, 0.0, 0.0]),
+        gl::DEPTH_COMPONENT => match depth {
+            Src::Mem(s) => depth_texels(dst, s),
+            Src::Fill(d) => dst.fill([d as f32 / DEPTH_MAX, 0.0, 0.0, 0.0]),
+        },
         gl::DEPTH_STENCIL => {
             for (k, t) in dst.iter_mut().enumerate() {
                 if let (Some(d), Some(s)) = (depth.get(k), stencil.get(k)) {
@@ -534,7 +537,86 @@ pub fn fb_texels(base: u32, run: RowRun<'_>, dst: &mut [[f32; 4]]) {
         gl::INTENSITY => each(dst, color, |c| keep(gl::INTENSITY, unit(c))),
         gl::LUMINANCE_ALPHA => each(dst, color, |c| keep(gl::LUMINANCE_ALPHA, unit(c))),
         gl::RGB => each(dst, color, |c| keep(gl::RGB, unit(c))),
+        // `keep` of RGBA is the texel itself: the arm with the constant lets the four
+        // components go to memory as one store.
+        gl::RGBA => each(dst, color, |c| keep(gl::RGBA, unit(c))),
         _ => each(dst, color, |c| keep(base, unit(c))),
+    }
+}
+
+/// `c.map(|v| f32::from(v) / 255.0)`: a colour pixel's four components in [0, 1] (SSE2: the
+/// bytes widened to i32, converted exactly, then one `divps`, the same correctly rounded
+/// division per component as the scalar `/`).
+#[inline(always)]
+fn unit4(c: [u8; 4]) -> [f32; 4] {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE2 is part of the x86-64 baseline; the only memory written is `out`.
+    unsafe {
+        use std::arch::x86_64::*;
+        let z = _mm_setzero_si128();
+        let b = _mm_cvtsi32_si128(i32::from_le_bytes(c));
+        let v = _mm_cvtepi32_ps(_mm_unpacklo_epi16(_mm_unpacklo_epi8(b, z), z));
+        let mut out = [0.0f32; 4];
+        _mm_storeu_ps(out.as_mut_ptr(), _mm_div_ps(v, _mm_set1_ps(255.0)));
+        out
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    c.map(|v| f32::from(v) / 255.0)
+}
+
+/// The DEPTH_COMPONENT texels of a run of depths: `[d as f32 / (2^24 - 1), 0, 0, 0]` for each
+/// d of `src` into `dst` (as far as the shorter goes). SSE2: four depths at a time converted
+/// (`cvtdq2ps`, exact and equal to `as f32` for values below 2^31; a group with a larger one
+/// takes the scalar expression) and divided by one `divps`, each quotient stored with three
+/// zeros.
+#[inline]
+fn depth_texels(dst: &mut [[f32; 4]], src: &[u32]) {
+    const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;
+    let scalar = |d: &mut [f32; 4], v: u32| *d = [v as f32 / DEPTH_MAX, 0.0, 0.0, 0.0];
+    let n = dst.len().min(src.len());
+    let (dst, src) = (&mut dst[..n], &src[..n]);
+    #[cfg(target_arch = "x86_64")]
+    {
+        let mut dc = dst.chunks_exact_mut(4);
+        let mut sc = src.chunks_exact(4);
+        for (d, s) in (&mut dc).zip(&mut sc) {
+            let (Ok(d), Ok(s)) = (<&mut [[f32; 4]; 4]>::try_from(d), <&[u32; 4]>::try_from(s))
+            else {
+                continue;
+            };
+            // SAFETY: SSE2 is part of the x86-64 baseline; the loads and stores are of `s`
+            // (16 bytes) and of the four texels of `d` (16 bytes each).
+            unsafe {
+                use std::arch::x86_64::*;
+                let vi = _mm_loadu_si128(s.as_ptr().cast());
+                if _mm_movemask_ps(_mm_castsi128_ps(vi)) != 0 {
+                    for (t, &v) in d.iter_mut().zip(s) {
+                        scalar(t, v);
+                    }
+                    continue;
+                }
+                let q = _mm_div_ps(_mm_cvtepi32_ps(vi), _mm_set1_ps(DEPTH_MAX));
+                // (q0, 0, q1, 0) and (q2, 0, q3, 0), then each 64-bit half with 64 zero bits.
+                let z = _mm_setzero_ps();
+                let (lo, hi) = (
+                    _mm_castps_pd(_mm_unpacklo_ps(q, z)),
+                    _mm_castps_pd(_mm_unpackhi_ps(q, z)),
+                );
+                let zd = _mm_setzero_pd();
+                let p = |v: __m128d| _mm_castpd_ps(v);
+                _mm_storeu_ps(d[0].as_mut_ptr(), p(_mm_unpacklo_pd(lo, zd)));
+                _mm_storeu_ps(d[1].as_mut_ptr(), p(_mm_unpackhi_pd(lo, zd)));
+                _mm_storeu_ps(d[2].as_mut_ptr(), p(_mm_unpacklo_pd(hi, zd)));
+                _mm_storeu_ps(d[3].as_mut_ptr(), p(_mm_unpackhi_pd(hi, zd)));
+            }
+        }
+        for (d, &v) in dc.into_remainder().iter_mut().zip(sc.remainder()) {
+            scalar(d, v);
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    for (d, &v) in dst.iter_mut().zip(src) {
+        scalar(d, v);
     }
 }
 
@@ -1204,7 +1286,11 @@ mod tests {
         for round in 0..200 {
             let len = 1 + (next() % 64) as usize;
             let colors: Vec<[u8; 4]> = (0..len).map(|_| next().to_le_bytes()).collect();
-            let depths: Vec<u32> = (0..len).map(|_| next() >> 8).collect();
+            // Every seventh round full 32-bit values (the SSE2 conversion is exact only
+            // below 2^31: such a group takes the scalar expression).
+            let depths: Vec<u32> = (0..len)
+                .map(|_| if round % 7 == 3 { next() } else { next() >> 8 })
+                .collect();
             let stencils: Vec<u8> = (0..len).map(|_| next() as u8).collect();
             let (fc, fd, fs) = (next().to_le_bytes(), next() >> 8, next() as u8);
             let color = if round % 3 == 0 {
@@ -1352,6 +1438,56 @@ mod tests {
             unpack_with(&mut a, &img, 256, 1, base, &identity, &maps, true);
             unpack_with(&mut b, &img, 256, 1, base, &identity, &maps, false);
             assert_eq!(bits(&a), bits(&b), "base {base:#x}");
+        }
+    }
+
+    /// `unit4` is the scalar c / 255 of each component (every byte value in every position)
+    /// and `depth_texels` the scalar d / (2^24 - 1) of each depth: every 24-bit depth, values
+    /// at and above 2^31 (the scalar route of a group), destinations and sources of every
+    /// length up to 21 against each other (the shorter one decides, the rest untouched).
+    #[test]
+    fn depth_texels_and_unit4_are_the_scalar_expressions() {
+        const DEPTH_MAX: f32 = crate::cpu::framebuffer::DEPTH_MAX as f32;
+        let want = |v: u32| [v as f32 / DEPTH_MAX, 0.0, 0.0, 0.0].map(f32::to_bits);
+        for v in 0..=255u8 {
+            for k in 0..4 {
+                let mut c = [v.wrapping_mul(7), v ^ 0x5a, 255 - v, v.wrapping_add(99)];
+                c[k] = v;
+                let got = unit4(c).map(f32::to_bits);
+                assert_eq!(got, c.map(|v| (f32::from(v) / 255.0).to_bits()), "{c:?}");
+            }
+        }
+        let all: Vec<u32> = (0..1u32 << 24).collect();
+        let mut dst = vec![[f32::NAN; 4]; all.len()];
+        depth_texels(&mut dst, &all);
+        for (d, &v) in dst.iter().zip(&all) {
+            assert_eq!(d.map(f32::to_bits), want(v), "{v}");
+        }
+        let mut seed = 0x9e37_79b9u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        for round in 0..400 {
+            let (nd, ns) = (round % 22, (round / 22) % 22);
+            let src: Vec<u32> = (0..ns)
+                .map(|k| match (round + k) % 5 {
+                    0 => next(),
+                    1 => u32::MAX - (next() & 3),
+                    2 => (1 << 31) + (next() & 1),
+                    _ => next() >> 8,
+                })
+                .collect();
+            let mut dst = vec![[f32::NAN; 4]; nd];
+            depth_texels(&mut dst, &src);
+            for (k, d) in dst.iter().enumerate() {
+                match src.get(k) {
+                    Some(&v) => assert_eq!(d.map(f32::to_bits), want(v), "{v} at {k}"),
+                    None => assert!(d.iter().all(|x| x.is_nan())),
+                }
+            }
         }
     }
 

@@ -1150,11 +1150,21 @@ impl Context {
             att @ Attachment::Texture { zoffset, .. } => {
                 if let Some(lv) = attached_level(objects, &att) {
                     let mut row = vec![[0u8; 4]; w as usize];
+                    let rgb = lv.base == gl::RGB;
+                    let px =
+                        |t: [f32; 4]| unorm8x4([t[0], t[1], t[2], if rgb { 1.0 } else { t[3] }]);
                     for y in 0..h as i32 {
-                        for (x, c) in row.iter_mut().enumerate() {
-                            let t = lv.texel3(x as i32, y, zoffset);
-                            let a = if lv.base == gl::RGB { 1.0 } else { t[3] };
-                            *c = unorm8x4([t[0], t[1], t[2], a]);
+                        match level_row(lv, y, zoffset, row.len()) {
+                            Some(src) => {
+                                for (c, &t) in row.iter_mut().zip(src) {
+                                    *c = px(t);
+                                }
+                            }
+                            None => {
+                                for (x, c) in row.iter_mut().enumerate() {
+                                    *c = px(lv.texel3(x as i32, y, zoffset));
+                                }
+                            }
                         }
                         fb.set_row(y as u32, &row, |f| &mut f.color);
                     }
@@ -1175,9 +1185,18 @@ impl Context {
                 if let Some(lv) = attached_level(objects, &att) {
                     let mut row = vec![0u32; w as usize];
                     for y in 0..h as i32 {
-                        for (x, d) in row.iter_mut().enumerate() {
-                            let z = lv.texel3(x as i32, y, zoffset)[0];
-                            *d = depth_unorm(f64::from(z));
+                        match level_row(lv, y, zoffset, row.len()) {
+                            Some(src) => {
+                                for (d, t) in row.iter_mut().zip(src) {
+                                    *d = depth_unorm(f64::from(t[0]));
+                                }
+                            }
+                            None => {
+                                for (x, d) in row.iter_mut().enumerate() {
+                                    let z = lv.texel3(x as i32, y, zoffset)[0];
+                                    *d = depth_unorm(f64::from(z));
+                                }
+                            }
                         }
                         fb.set_row(y as u32, &row, |f| &mut f.depth);
                     }
@@ -1225,6 +1244,19 @@ impl Context {
         self.fbo_switch(0);
         self.fbos = Fbos::default();
     }
+}
+
+/// The `n` texels `Level::texel3` reads at (x, y, k), x = 0 .. n, as one slice of the level
+/// (`texel3`'s index of (0, y, k), in the same i32 arithmetic, and the n texels after it);
+/// `None` when they are not all inside the level's texels (then `texel3` per texel, which reads
+/// zero outside).
+fn level_row(lv: &crate::texture::Level, y: i32, k: i32, n: usize) -> Option<&[[f32; 4]]> {
+    let at = k
+        .checked_mul(lv.height)?
+        .checked_add(y)?
+        .checked_mul(lv.width)?;
+    let at = usize::try_from(at).ok()?;
+    lv.texels.get(at..at.checked_add(n)?)
 }
 
 /// `c.map(unorm8)`: the four components at once (SSE2: NaN to 0 by `maxps` against 0, which
@@ -1416,6 +1448,60 @@ fn filled<T: Clone>(v: &mut Vec<T>, n: usize, value: T) -> bool {
 mod tests {
     use super::*;
     use crate::cpu::framebuffer::unorm8;
+
+    /// `level_row` is `Level::texel3` of each texel of the row where it gives a slice: levels
+    /// of several sizes (texel vectors as long as the sizes say, shorter and longer), rows and
+    /// images inside, past the end and negative, rows of every length up to twice the width.
+    #[test]
+    fn level_row_is_texel3() {
+        use crate::texture::Level;
+        let mut seed = 0x51ed_2701u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let mut some = 0;
+        for round in 0..3000 {
+            let (w, h, d) = (1 + next() % 9, 1 + next() % 7, 1 + next() % 3);
+            let len = match round % 3 {
+                0 => w * h * d,
+                1 => (w * h * d).saturating_sub(next() % 5),
+                _ => w * h * d + next() % 5,
+            } as usize;
+            let texels: Vec<[f32; 4]> = (0..len).map(|k| [k as f32, 0.5, 0.25, 1.0]).collect();
+            let lv = Level {
+                width: w as i32,
+                height: h as i32,
+                depth: d as i32,
+                internal_format: gl::RGBA as i32,
+                base: gl::RGBA,
+                texels: Arc::new(texels),
+            };
+            let y = (next() % (h + 3)) as i32 - 1;
+            let k = (next() % (d + 2)) as i32 - 1;
+            let n = (next() % (2 * w + 1)) as usize;
+            if let Some(row) = level_row(&lv, y, k, n) {
+                some += 1;
+                assert_eq!(row.len(), n);
+                for (x, t) in row.iter().enumerate() {
+                    assert_eq!(*t, lv.texel3(x as i32, y, k), "{w}x{h}x{d} ({x}, {y}, {k})");
+                }
+            }
+        }
+        assert!(some > 1000, "{some}");
+        let huge = Level {
+            width: i32::MAX,
+            height: i32::MAX,
+            depth: 1,
+            internal_format: gl::RGBA as i32,
+            base: gl::RGBA,
+            texels: Arc::new(vec![[0.0; 4]; 4]),
+        };
+        assert!(level_row(&huge, 5, 3, 2).is_none());
+        assert!(level_row(&huge, -1, 0, 2).is_none());
+    }
 
     /// `unorm8x4` is `unorm8` per component: every k / 255 and the values between, NaN, ±0,
     /// ±∞, subnormals, values beyond [0, 1], random bit patterns, in every position.

@@ -566,6 +566,11 @@ impl Sampler {
         }
         match self.compare {
             None => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |_, t| t),
+            // NEAREST compares each lane's one texel: after the gather, the function chosen once.
+            Some(func) if !linear => {
+                self.pass_on(false, tx, dense, w, h, s, t, m, out, |_, t| t);
+                depth_compare_lanes(func, r, m, out);
+            }
             Some(func) => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |l, t| {
                 depth_compare(func, r[l], t)
             }),
@@ -619,6 +624,10 @@ impl Sampler {
         let m = m & have;
         match self.compare {
             None => self.pass_on(linear, &tx, None, &w, &h, s, t, m, out, |_, t| t),
+            Some(func) if !linear => {
+                self.pass_on(false, &tx, None, &w, &h, s, t, m, out, |_, t| t);
+                depth_compare_lanes(func, r, m, out);
+            }
             Some(func) => self.pass_on(linear, &tx, None, &w, &h, s, t, m, out, |l, t| {
                 depth_compare(func, r[l], t)
             }),
@@ -775,17 +784,30 @@ impl Sampler {
     #[inline]
     pub fn env_lanes(&self, cf: &mut [Vec4; LANES], t: &TexelLanes, m: u8) {
         if crate::texture::is_depth(self.base) {
-            let alpha = self.depth_mode == gl::ALPHA;
-            let base = if alpha { gl::ALPHA } else { self.depth_mode };
-            for l in 0..LANES {
-                if m & (1 << l) != 0 {
-                    let t = if alpha {
-                        [0.0, 0.0, 0.0, t[l][0]]
-                    } else {
-                        t[l]
-                    };
-                    cf[l] = env_of(self.env, base, self.env_color, cf[l], t);
-                }
+            // A depth texture through DEPTH_TEXTURE_MODE; the common pairs with the
+            // environment and the mode constant, so that `env_of`'s choice folds away.
+            macro_rules! depth_each {
+                ($e:expr, $b:expr) => {{
+                    let (env, base) = ($e, $b);
+                    for l in 0..LANES {
+                        if m & (1 << l) != 0 {
+                            let t = if base == gl::ALPHA {
+                                [0.0, 0.0, 0.0, t[l][0]]
+                            } else {
+                                t[l]
+                            };
+                            cf[l] = env_of(env, base, self.env_color, cf[l], t);
+                        }
+                    }
+                }};
+            }
+            match (self.env, self.depth_mode) {
+                (gl::BLEND, gl::LUMINANCE) => depth_each!(gl::BLEND, gl::LUMINANCE),
+                (gl::MODULATE, gl::LUMINANCE) => depth_each!(gl::MODULATE, gl::LUMINANCE),
+                (gl::REPLACE, gl::LUMINANCE) => depth_each!(gl::REPLACE, gl::LUMINANCE),
+                (gl::MODULATE, gl::INTENSITY) => depth_each!(gl::MODULATE, gl::INTENSITY),
+                (e, gl::ALPHA) => depth_each!(e, gl::ALPHA),
+                (e, b) => depth_each!(e, b),
             }
             return;
         }
@@ -1183,6 +1205,32 @@ fn depth_compare(func: u32, r: f32, t: [f32; 4]) -> [f32; 4] {
         _ => false,
     };
     [f32::from(u8::from(pass)), 0.0, 0.0, 0.0]
+}
+
+/// [`depth_compare`] of each lane of `m`, lane l's `r[l]` against the texel `out[l]`, into
+/// `out[l]`: the function chosen once for the eight lanes (NEAREST's comparison after its
+/// gather: the same texel, the same clamp and comparison as `fetch`'s).
+#[inline(always)]
+fn depth_compare_lanes(func: u32, r: &[f32; LANES], m: u8, out: &mut TexelLanes) {
+    #[inline(always)]
+    fn each(r: &[f32; LANES], m: u8, out: &mut TexelLanes, pass: impl Fn(f32, f32) -> bool) {
+        for (l, o) in out.iter_mut().enumerate() {
+            if m & (1 << l) != 0 {
+                let p = pass(r[l].clamp(0.0, 1.0), o[0]);
+                *o = [f32::from(u8::from(p)), 0.0, 0.0, 0.0];
+            }
+        }
+    }
+    match func {
+        gl::LEQUAL => each(r, m, out, |r, d| r <= d),
+        gl::GEQUAL => each(r, m, out, |r, d| r >= d),
+        gl::LESS => each(r, m, out, |r, d| r < d),
+        gl::GREATER => each(r, m, out, |r, d| r > d),
+        gl::EQUAL => each(r, m, out, |r, d| r == d),
+        gl::NOTEQUAL => each(r, m, out, |r, d| r != d),
+        gl::ALWAYS => each(r, m, out, |_, _| true),
+        _ => each(r, m, out, |_, _| false),
+    }
 }
 
 /// log2 as exponent plus (mantissa - 1): exact at powers of two, linear between them.
