@@ -97,6 +97,27 @@ struct FVert {
     eye: Vec4,
     /// The vertex's edge flag (for a clip-made vertex: draw's rule).
     edge: bool,
+    /// The outside-plane bits of `clip` and `eye` ([`Sink::clipmask`]; read only for the
+    /// batch's vertices, not for clip-made ones).
+    mask: u16,
+    /// The window coordinates of `clip` ([`Sink::win`]), set once a vertex is complete.
+    win: [f32; 4],
+}
+
+impl FVert {
+    /// The vertex with its clip mask and window coordinates computed (once a vertex, not once
+    /// a primitive that uses it).
+    fn prepared(mut self, ctx: &Ctx) -> Self {
+        self.mask = Sink::clipmask(ctx, &self);
+        self.win = Sink::win(ctx, &self);
+        self
+    }
+
+    /// The vertex with its window coordinates computed (a clip-made vertex).
+    fn windowed(mut self, ctx: &Ctx) -> Self {
+        self.win = Sink::win(ctx, &self);
+        self
+    }
 }
 
 /// Draw's triangle flags: the boundary edges (edge i runs from v[i] to v[i+1]) and the line
@@ -120,6 +141,9 @@ struct Ctx {
     modes: [u32; 2],
     flat: bool,
     select: bool,
+    /// The enabled user clip planes' indices (6 + plane), in order, `nuser` of them.
+    users: [u8; MAX_CLIP_PLANES],
+    nuser: usize,
 }
 
 impl Sink {
@@ -271,17 +295,24 @@ impl Sink {
         wins: &mut Vec<super::setup::Win>,
         tiles: (usize, usize),
     ) {
-        let layout = Layout::for_feedback(state);
+        let select = state.render_mode == gl::SELECT;
+        let layout = match select {
+            true => Layout::for_select(state),
+            false => Layout::for_feedback(state),
+        };
         let rect = super::framebuffer::scissor_rect(state);
         let setup = super::setup::SetupCtx::new(state, layout, rect, tiles);
-        super::vertex::process(state, batch, &layout, &setup, vout, wins, false);
+        match select {
+            true => super::vertex::positions(state, batch, &layout, &setup, vout, wins),
+            false => super::vertex::process(state, batch, &layout, &setup, vout, wins, false),
+        }
         let get = |v: &[f32], o: Option<usize>| -> Vec4 {
             match o.and_then(|o| v.get(o..o + 4)) {
                 Some(s) => Vec4::new(s[0], s[1], s[2], s[3]),
                 None => Vec4::ZERO,
             }
         };
-        let verts: Vec<FVert> = vout
+        let mut verts: Vec<FVert> = vout
             .chunks_exact(layout.stride.max(1))
             .zip(&batch.edge)
             .map(|(v, &edge)| FVert {
@@ -291,6 +322,7 @@ impl Sink {
                 tex: get(v, layout.tex[0]),
                 eye: get(v, layout.eye),
                 edge,
+                ..FVert::default()
             })
             .collect();
         let [vx, vy, vw, vh] = state.viewport;
@@ -302,6 +334,16 @@ impl Sink {
         }
         let unfilled = state.polygon_mode != [gl::FILL; 2];
         let two_side = state.enables.lighting && state.light_model.two_side;
+        let mut users = [0u8; MAX_CLIP_PLANES];
+        let mut nuser = 0;
+        for (k, u) in user.iter().enumerate() {
+            if u.0 {
+                if let Some(slot) = users.get_mut(nuser) {
+                    *slot = (6 + k) as u8;
+                    nuser += 1;
+                }
+            }
+        }
         let ctx = Ctx {
             scale: [hw, hh, (0.5 * (f - n)) as f32],
             trans: [hw + vx as f32, hh + vy as f32, (0.5 * (n + f)) as f32],
@@ -312,11 +354,17 @@ impl Sink {
             two_side,
             modes: state.polygon_mode,
             flat: state.shade_model == gl::FLAT,
-            select: state.render_mode == gl::SELECT,
+            select,
+            users,
+            nuser,
         };
+        for v in &mut verts {
+            *v = v.prepared(&ctx);
+        }
+        let zero = FVert::default().prepared(&ctx);
         let vert = |i: u32| {
             let u = batch.idx.get(i as usize).copied().unwrap_or(u32::MAX);
-            verts.get(u as usize).copied().unwrap_or_default()
+            verts.get(u as usize).copied().unwrap_or(zero)
         };
         for p in &batch.prims {
             let (f0, n) = (p.first, p.count);
@@ -388,7 +436,8 @@ impl Sink {
     /// 4 near, 5 far, 6.. the enabled user planes.
     fn clipmask(ctx: &Ctx, v: &FVert) -> u16 {
         let mut m = 0;
-        for k in 0..6 + MAX_CLIP_PLANES {
+        let users = ctx.users.get(..ctx.nuser).unwrap_or(&[]);
+        for k in (0..6).chain(users.iter().map(|&k| k as usize)) {
             if let Some(d) = Self::dist(ctx, v, k) {
                 if d < 0.0 {
                     m |= 1 << k;
@@ -443,18 +492,20 @@ impl Sink {
             tex: l(out.tex, inside.tex),
             eye: l(out.eye, inside.eye),
             edge: out.edge,
+            mask: 0,
+            win: [0.0; 4],
         }
     }
 
     fn point(&mut self, ctx: &Ctx, v: FVert) {
-        if Self::clipmask(ctx, &v) != 0 {
+        if v.mask != 0 {
             return;
         }
         self.emit_point(ctx, &v);
     }
 
     fn emit_point(&mut self, ctx: &Ctx, v: &FVert) {
-        let w = Self::win(ctx, v);
+        let w = v.win;
         if ctx.select {
             self.update_hit(w[2]);
         } else {
@@ -471,7 +522,7 @@ impl Sink {
 
     /// A line of a Begin line mode: clipped (draw's do_clip_line), then emitted.
     fn line(&mut self, ctx: &Ctx, v0: FVert, v1: FVert) {
-        let (m0, m1) = (Self::clipmask(ctx, &v0), Self::clipmask(ctx, &v1));
+        let (m0, m1) = (v0.mask, v1.mask);
         if m0 & m1 != 0 {
             return;
         }
@@ -502,14 +553,14 @@ impl Sink {
         // A clip-made end takes the provoking (last) vertex's colours under FLAT.
         let mut a = v0;
         if m0 != 0 {
-            a = Self::interp(t0, &v0, &v1);
+            a = Self::interp(t0, &v0, &v1).windowed(ctx);
             if ctx.flat {
                 (a.col, a.col_b) = (v1.col, v1.col_b);
             }
         }
         let mut b = v1;
         if m1 != 0 {
-            b = Self::interp(t1, &v1, &v0);
+            b = Self::interp(t1, &v1, &v0).windowed(ctx);
             if ctx.flat {
                 (b.col, b.col_b) = (v1.col, v1.col_b);
             }
@@ -518,7 +569,7 @@ impl Sink {
     }
 
     fn emit_line(&mut self, ctx: &Ctx, v0: &FVert, v1: &FVert) {
-        let (w0, w1) = (Self::win(ctx, v0), Self::win(ctx, v1));
+        let (w0, w1) = (v0.win, v1.win);
         if ctx.select {
             self.update_hit(w0[2]);
             self.update_hit(w1[2]);
@@ -537,7 +588,7 @@ impl Sink {
     /// A triangle with draw's flags: clipped (draw's do_clip_tri and emit_poly) when a vertex
     /// is outside a plane, then the later stages.
     fn tri(&mut self, ctx: &Ctx, v: [FVert; 3], flags: u8) {
-        let m = v.map(|x| Self::clipmask(ctx, &x));
+        let m = v.map(|x| x.mask);
         if m[0] & m[1] & m[2] != 0 {
             return;
         }
@@ -563,7 +614,7 @@ impl Sink {
                 return;
             }
             for i in 1..=n {
-                let cur = list.get(i % n).copied().unwrap_or_default();
+                let cur = list.get(i % n).copied().unwrap_or(prev);
                 let edge = edges.get(i % n).copied().unwrap_or(false);
                 let Some(dp) = Self::dist(ctx, &cur, k) else {
                     return;
@@ -588,7 +639,7 @@ impl Sink {
                         };
                         let user = k >= 6;
                         nv.edge = user;
-                        out.push(nv);
+                        out.push(nv.windowed(ctx));
                         out_edges.push(if user { true } else { edge_prev });
                     } else {
                         // Coming back in.
@@ -598,7 +649,7 @@ impl Sink {
                             Self::interp(dp / denom, &cur, &prev)
                         };
                         nv.edge = prev.edge;
-                        out.push(nv);
+                        out.push(nv.windowed(ctx));
                         out_edges.push(edge_prev);
                     }
                 }
@@ -647,7 +698,7 @@ impl Sink {
     /// The stages after clipping: cull, two-sided colour, flat shading of unfilled polygons,
     /// PolygonMode, emission.
     fn after_clip(&mut self, ctx: &Ctx, mut v: [FVert; 3], flags: u8) {
-        let w = v.map(|x| Self::win(ctx, &x));
+        let w = v.map(|x| x.win);
         // Facing from the window-coordinate area (positive: counter-clockwise in GL's window);
         // a zero-area triangle counts as back-facing, as draw's cull stage takes it.
         let mut front = true;
@@ -752,5 +803,185 @@ mod tests {
             ]
         );
         assert_eq!(s.end_feedback(), 8);
+    }
+
+    /// Random triangles and strips, lit two-sided, under a perspective projection and a user
+    /// clip plane (many of them clipped), once in SELECT mode (positions only, no lighting)
+    /// and once in FEEDBACK mode (the whole vertex stage): each name's hit holds exactly the
+    /// minimum and maximum window z of the polygons feedback reports for it. Also: the clip
+    /// mask computed once a vertex ([`FVert::prepared`]) is the mask over every plane.
+    #[test]
+    fn selection_depths_are_the_feedback_depths() {
+        use crate::Context;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = move |lo: f32, hi: f32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            lo + (hi - lo) * ((seed >> 40) as f32 / (1u64 << 24) as f32)
+        };
+        const NAMES: u32 = 60;
+        let mut batches = Vec::new();
+        for _ in 0..NAMES {
+            let n = 3 * (1 + (rnd(0.0, 4.0) as usize));
+            let vs: Vec<[f32; 9]> = (0..n)
+                .map(|_| {
+                    let mut v = [0.0f32; 9];
+                    for (k, x) in v.iter_mut().enumerate() {
+                        *x = match k {
+                            0 | 1 => rnd(-3.0, 3.0),
+                            2 => rnd(-9.0, 0.5),
+                            _ => rnd(-1.0, 1.0),
+                        };
+                    }
+                    v
+                })
+                .collect();
+            batches.push((rnd(0.0, 1.0) < 0.5, vs));
+        }
+        let draw = |gl: &mut Context| {
+            gl.init_names();
+            gl.push_name(0);
+            for (name, (strip, vs)) in batches.iter().enumerate() {
+                gl.load_name(name as u32 + 1);
+                gl.begin(if *strip {
+                    gl::TRIANGLE_STRIP
+                } else {
+                    gl::TRIANGLES
+                });
+                for v in vs {
+                    gl.normal3f(v[3], v[4], v[5]);
+                    gl.color3f(v[6], v[7], v[8]);
+                    gl.vertex3f(v[0], v[1], v[2]);
+                }
+                gl.end();
+            }
+        };
+        let mut gl = Context::new(64, 48).expect("context");
+        gl.matrix_mode(gl::PROJECTION);
+        gl.frustum(-1.0, 1.0, -0.75, 0.75, 1.0, 8.0);
+        gl.matrix_mode(gl::MODELVIEW);
+        gl.translatef(0.1, -0.2, -1.5);
+        gl.clip_plane(gl::CLIP_PLANE0 + 2, &[0.3, -1.0, 0.2, 0.4]);
+        gl.enable(gl::CLIP_PLANE0 + 2);
+        gl.enable(gl::LIGHTING);
+        gl.enable(gl::LIGHT0);
+        gl.light_modeli(gl::LIGHT_MODEL_TWO_SIDE, 1);
+        gl.select_buffer(4 * NAMES as i32);
+        gl.render_mode(gl::SELECT);
+        draw(&mut gl);
+        let hits = gl.render_mode(gl::RENDER);
+        assert!(hits > 5, "too few hits ({hits}) to compare");
+        let select = gl.selection_buffer().to_vec();
+        gl.feedback_buffer(1 << 20, gl::GL_3D);
+        gl.render_mode(gl::FEEDBACK);
+        for name in 0..NAMES {
+            // A pass-through token marks where each name's polygons start.
+            gl.load_name(name + 1);
+            let (strip, vs) = &batches[name as usize];
+            gl.pass_through(name as f32);
+            gl.begin(if *strip {
+                gl::TRIANGLE_STRIP
+            } else {
+                gl::TRIANGLES
+            });
+            for v in vs {
+                gl.normal3f(v[3], v[4], v[5]);
+                gl.color3f(v[6], v[7], v[8]);
+                gl.vertex3f(v[0], v[1], v[2]);
+            }
+            gl.end();
+        }
+        let count = gl.render_mode(gl::RENDER);
+        assert!(count > 0);
+        let fb = gl.feedback_values().to_vec();
+        // Each name's depth range from the feedback polygons.
+        let mut ranges: Vec<Option<(f32, f32)>> = vec![None; NAMES as usize];
+        let (mut at, mut cur) = (0usize, 0usize);
+        while let Some(&t) = fb.get(at) {
+            if t == gl::PASS_THROUGH_TOKEN as f32 {
+                cur = fb[at + 1] as usize;
+                at += 2;
+            } else {
+                assert_eq!(t, gl::POLYGON_TOKEN as f32);
+                let n = fb[at + 1] as usize;
+                for k in 0..n {
+                    let z = fb[at + 2 + 3 * k + 2];
+                    let r = &mut ranges[cur];
+                    *r = Some(match *r {
+                        Some((lo, hi)) => (lo.min(z), hi.max(z)),
+                        None => (z, z),
+                    });
+                }
+                at += 2 + 3 * n;
+            }
+        }
+        let scale = |z: f32| ((z * 4_294_967_296.0f32) as u64) as u32;
+        let mut want = Vec::new();
+        for (name, r) in ranges.iter().enumerate() {
+            if let Some((lo, hi)) = r {
+                want.extend([1, scale(*lo), scale(*hi), name as u32 + 1]);
+            }
+        }
+        assert_eq!(select, want);
+        assert_eq!(hits as usize, want.len() / 4);
+
+        // The clip mask of a prepared vertex against the mask over every plane.
+        let mut user = [(false, Vec4::ZERO); MAX_CLIP_PLANES];
+        for trial in 0..2000 {
+            for u in user.iter_mut() {
+                *u = (
+                    rnd(0.0, 1.0) < 0.4,
+                    Vec4::new(
+                        rnd(-1.0, 1.0),
+                        rnd(-1.0, 1.0),
+                        rnd(-1.0, 1.0),
+                        rnd(-1.0, 1.0),
+                    ),
+                );
+            }
+            let mut users = [0u8; MAX_CLIP_PLANES];
+            let mut nuser = 0;
+            for (k, u) in user.iter().enumerate() {
+                if u.0 {
+                    users[nuser] = (6 + k) as u8;
+                    nuser += 1;
+                }
+            }
+            let ctx = Ctx {
+                scale: [32.0, 24.0, 0.5],
+                trans: [32.0, 24.0, 0.5],
+                user,
+                cull: None,
+                det: false,
+                ccw_front: true,
+                two_side: false,
+                modes: [gl::FILL; 2],
+                flat: false,
+                select: true,
+                users,
+                nuser,
+            };
+            let r4 = |r: &mut dyn FnMut(f32, f32) -> f32| {
+                Vec4::new(r(-2.0, 2.0), r(-2.0, 2.0), r(-2.0, 2.0), r(-2.0, 2.0))
+            };
+            let v = FVert {
+                clip: r4(&mut rnd),
+                eye: r4(&mut rnd),
+                ..FVert::default()
+            };
+            let mut full = 0u16;
+            for k in 0..6 + MAX_CLIP_PLANES {
+                if Sink::dist(&ctx, &v, k).is_some_and(|d| d < 0.0) {
+                    full |= 1 << k;
+                }
+            }
+            let p = v.prepared(&ctx);
+            assert_eq!(p.mask, full, "trial {trial}");
+            assert_eq!(
+                p.win.map(f32::to_bits),
+                Sink::win(&ctx, &v).map(f32::to_bits)
+            );
+        }
     }
 }

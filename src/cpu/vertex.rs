@@ -120,6 +120,19 @@ impl Layout {
         }
         l
     }
+
+    /// The layout selection needs: the clip position, and the eye position under user clip
+    /// planes. A hit records window depths only, so no colour (the `col` slot is left as it
+    /// was), texture coordinate or lighting is computed.
+    pub fn for_select(state: &State) -> Self {
+        let user = state.enables.clip_planes.iter().any(|&b| b);
+        Layout {
+            col: 4,
+            eye: user.then_some(8),
+            stride: if user { 12 } else { 8 },
+            ..Layout::default()
+        }
+    }
 }
 
 /// One enabled light with what the equation needs, in eye coordinates.
@@ -522,6 +535,34 @@ pub fn process(
     wins: &mut Vec<Win>,
     parallel: bool,
 ) {
+    run(state, batch, layout, setup, out, wins, parallel, true);
+}
+
+/// The clip positions (and eye positions where `layout` has them) and window coordinates of
+/// `batch`'s vertices, as [`process`] computes them, without colours, lighting or any other
+/// attribute: for selection ([`Layout::for_select`]).
+pub fn positions(
+    state: &State,
+    batch: &Batch,
+    layout: &Layout,
+    setup: &SetupCtx,
+    out: &mut Vec<f32>,
+    wins: &mut Vec<Win>,
+) {
+    run(state, batch, layout, setup, out, wins, false, false);
+}
+
+#[allow(clippy::too_many_arguments)]
+fn run(
+    state: &State,
+    batch: &Batch,
+    layout: &Layout,
+    setup: &SetupCtx,
+    out: &mut Vec<f32>,
+    wins: &mut Vec<Win>,
+    parallel: bool,
+    attributes: bool,
+) {
     let n = batch.len();
     // Every float of `out` (`Lit::run` writes each attribute of the layout for every vertex) and
     // every element of `wins` (one per vertex) is overwritten below, so the previous flush's
@@ -529,7 +570,7 @@ pub fn process(
     out.resize(n * layout.stride, 0.0);
     wins.resize(n, Win::default());
     let tf = Transform::new(state);
-    let lighting = state.enables.lighting.then(|| Lighting::new(state));
+    let lighting = (attributes && state.enables.lighting).then(|| Lighting::new(state));
     let lit = Lit {
         state,
         batch,
@@ -537,6 +578,7 @@ pub fn process(
         tf: &tf,
         lighting: lighting.as_ref(),
         setup,
+        attributes,
     };
     const CHUNK: usize = 4096;
     if parallel && n > 2 * CHUNK {
@@ -566,6 +608,8 @@ struct Lit<'a> {
     tf: &'a Transform,
     lighting: Option<&'a Lighting>,
     setup: &'a SetupCtx,
+    /// Colours and the layout's other attributes are computed (not for [`positions`]).
+    attributes: bool,
 }
 
 impl Lit<'_> {
@@ -581,11 +625,12 @@ impl Lit<'_> {
         let tf = self.tf;
         let uniform = b.snapshots.is_empty();
         // The vertex colour is read only where an output or COLOR_MATERIAL needs it.
-        let need_attribs = self.lighting.map_or(true, |g| g.color_material.is_some())
-            || l.tex.iter().any(Option::is_some)
-            || l.fog.is_some()
-            || l.psize.is_some()
-            || l.raw.is_some();
+        let need_attribs = self.attributes
+            && (self.lighting.map_or(true, |g| g.color_material.is_some())
+                || l.tex.iter().any(Option::is_some)
+                || l.fog.is_some()
+                || l.psize.is_some()
+                || l.raw.is_some());
         // The carried units only, in unit order: a vertex pays for the units in use.
         let mut units = [TexOut::default(); MAX_TEXTURE_UNITS];
         let mut n_units = 0;
