@@ -105,7 +105,9 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
     },
-    /// Median milliseconds per frame on the CPU and GL pipelines, measured interleaved.
+    /// Median milliseconds per frame on the CPU and GL pipelines, measured interleaved: a frame
+    /// is the scene's calls replayed from the initial state up to the return of glFinish, on
+    /// both sides (no readback).
     Bench {
         /// Scene names (default: all).
         scenes: Vec<String>,
@@ -126,9 +128,10 @@ enum Command {
         #[arg(long)]
         cpu_only: bool,
         /// Time the CPU frame stage by stage instead (CPU only, no API timing): reset, replay
-        /// (the front end and the draws it starts), the final flush and readback (`to_image`),
-        /// the draws, their time on the calling thread, its waits for the pool, how many of
-        /// the draws were handed to the pool, and the rasterisation passes over the scene.
+        /// (the front end and the draws it starts), glFinish (the final flush and the
+        /// rasterisation of what is pending), then the readback (`to_image`, after the frame and
+        /// not part of it), the draws, their time on the calling thread, its waits for the
+        /// pool, how many of the draws were handed to the pool, and the rasterisation passes.
         #[arg(long)]
         stages: bool,
     },
@@ -535,12 +538,13 @@ fn bench_stages(
     let selected = select(names, true)?;
     cpu_threads(threads)?;
     out!(
-        "{:<20} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>7} {:>8} {:>6}",
+        "{:<20} {:>7} {:>7} {:>7} {:>7} {:>8} {:>9} {:>9} {:>7} {:>8} {:>6}",
         "scene",
         "frame",
         "reset",
         "replay",
-        "image",
+        "finish",
+        "readback",
         "draws",
         "draw ms",
         "wait",
@@ -551,9 +555,10 @@ fn bench_stages(
         let (w, h) = size.unwrap_or(scene.default_size);
         let (_, calls) = scene.record(w, h)?;
         let mut ctx = Context::with_config(w, h, scene.config)?;
-        // Per frame: total, reset, replay, to_image, draws, draw ms, wait ms, hand-offs,
+        // Per frame: total (up to glFinish, as `bench` times it), reset, replay, finish,
+        // to_image after it (not in the total), draws, draw ms, wait ms, hand-offs,
         // rasterisation passes.
-        let mut rows: Vec<[f64; 9]> = Vec::new();
+        let mut rows: Vec<[f64; 10]> = Vec::new();
         for i in 0..=frames {
             let s0 = ctx.draw_stats();
             let t0 = Instant::now();
@@ -561,8 +566,10 @@ fn bench_stages(
             let t1 = Instant::now();
             ctx.replay(&calls);
             let t2 = Instant::now();
-            let img = ctx.to_image();
+            ctx.finish();
             let t3 = Instant::now();
+            let img = ctx.to_image();
+            let t4 = Instant::now();
             drop(img);
             let s1 = ctx.draw_stats();
             let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
@@ -573,6 +580,7 @@ fn bench_stages(
                     ms(t0, t1),
                     ms(t1, t2),
                     ms(t2, t3),
+                    ms(t3, t4),
                     (s1.draws - s0.draws + s1.handoffs - s0.handoffs) as f64,
                     dms(s0.draw_ns, s1.draw_ns) + dms(s0.handoff_ns, s1.handoff_ns),
                     dms(s0.wait_ns, s1.wait_ns),
@@ -581,11 +589,11 @@ fn bench_stages(
                 ]);
             }
         }
-        let med: Vec<f64> = (0..9)
+        let med: Vec<f64> = (0..10)
             .map(|k| median_ms(&mut rows.iter().map(|r| r[k]).collect::<Vec<_>>()))
             .collect();
         out!(
-            "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9} {:>9.3} {:>7.3} {:>8} {:>6}",
+            "{:<20} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>8.3} {:>9} {:>9.3} {:>7.3} {:>8} {:>6}",
             scene.name,
             med[0],
             med[1],
@@ -595,7 +603,8 @@ fn bench_stages(
             med[5],
             med[6],
             med[7],
-            med[8]
+            med[8],
+            med[9]
         );
     }
     Ok(ExitCode::SUCCESS)
@@ -631,16 +640,16 @@ fn bench(
             false => Some(gl_side::Bench::new(w, h, scene.config, device)?),
         };
         // Like the GL side (one context, state restored around each frame), one CPU context
-        // reset to its initial state before each frame; its framebuffer memory is reused.
+        // reset to its initial state before each frame; its framebuffer memory is reused. A
+        // frame ends, on both sides, when glFinish returns: every pixel is in the framebuffer,
+        // not yet read back (`--stages` gives the CPU read-back on its own).
         let mut ctx = Context::with_config(w, h, scene.config)?;
         let mut cpu_frame = || -> Result<f64, Error> {
             let start = Instant::now();
             ctx.reset();
             ctx.replay(&calls);
-            let img = ctx.to_image();
-            let ms = start.elapsed().as_secs_f64() * 1e3;
-            drop(img);
-            Ok(ms)
+            ctx.finish();
+            Ok(start.elapsed().as_secs_f64() * 1e3)
         };
         // One warm-up frame each (shader compilation, first-touch allocation), then interleaved.
         cpu_frame()?;

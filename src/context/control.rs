@@ -77,9 +77,13 @@ impl Context {
         self.outside_begin_end();
     }
 
-    /// `glFinish`: as `flush`; the CPU renderer has finished when it returns.
+    /// `glFinish`: as `flush`, and the CPU renderer has rasterised everything drawn so far into
+    /// the framebuffer when it returns (GL 2.1 §5.5: the effects of every earlier command are
+    /// complete). Pending clears stay pending: they are the framebuffer's contents already.
     pub fn finish(&mut self) {
         record!(self, Call::Finish);
-        self.outside_begin_end();
+        if self.outside_begin_end() {
+            self.renderer.finish();
+        }
     }
 }

@@ -324,3 +324,32 @@ fn raster_framebuffer_and_control_state() {
     assert_eq!(s.shade_model, gl::PHONG_WIN);
     assert_eq!(c.get_error(), gl::NO_ERROR);
 }
+
+#[test]
+fn finish_rasterises_the_scene_and_flush_does_not() {
+    let mut c = Context::new(16, 16).expect("context");
+    let passes = |c: &Context| c.draw_stats().passes;
+    c.begin(gl::TRIANGLES);
+    c.vertex2f(-1.0, -1.0);
+    c.vertex2f(1.0, -1.0);
+    c.vertex2f(0.0, 1.0);
+    c.end();
+    c.flush();
+    // The triangle waits in the scene after a flush...
+    assert_eq!(passes(&c), 0);
+    // ...and is in the framebuffer when Finish returns: one pass, none for nothing new.
+    c.finish();
+    assert_eq!(passes(&c), 1);
+    c.finish();
+    assert_eq!(passes(&c), 1);
+    // Between Begin and End, Finish is INVALID_OPERATION and draws nothing.
+    c.begin(gl::POINTS);
+    c.vertex2f(0.0, 0.0);
+    c.finish();
+    assert_eq!(passes(&c), 1);
+    c.end();
+    assert_eq!(c.get_error(), gl::INVALID_OPERATION);
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+    let img = c.to_image();
+    assert_eq!(img.get_pixel(8, 8).0, [255, 255, 255, 255]);
+}

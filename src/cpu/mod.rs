@@ -577,6 +577,12 @@ impl Renderer {
         self.core().fb.clear(state, mask);
     }
 
+    /// `glFinish` after a flush: the scene is rasterised into the framebuffer and no background
+    /// draw holds it when this returns.
+    pub fn finish(&mut self) {
+        self.core();
+    }
+
     /// Framebuffer width and height.
     pub fn size(&self) -> (u32, u32) {
         self.size
