@@ -1,6 +1,6 @@
 //! The per-fragment operations of `fragops` (fog §3.10, alpha test §4.1.4, stencil §4.1.5,
 //! depth §4.1.6, blending §4.1.8, logic op §4.1.10) on groups of `LANES` fragments of a span,
-//! for `FragCtx::full_span`: the span runs stage by stage over eight fragments at a time with a
+//! for `FragCtx::ops_rows`: a span runs stage by stage over eight fragments at a time with a
 //! coverage mask (bit l for lane l), each stage chosen once per group from the flush's `Ops`
 //! (the `match` on the mode, function, factor or equation sits outside the loop over lanes, so
 //! the compiler turns the loop into SIMD instructions), in the order of §4.1: alpha test,
@@ -57,27 +57,58 @@ pub fn clamp01(c: F) -> F {
     }
 }
 
-/// `FogEval::factor` on every lane of `live`: LINEAR on lanes, EXP and EXP2 through the scalar
-/// `exp` for the lanes of `live` only (the others get 0: they are thrown away).
+/// `FogEval::factor` on every lane of `live`: LINEAR on lanes; EXP and EXP2 with their
+/// arguments (−density·c, −(density·c)², the scalar products in the scalar order) on lanes,
+/// the scalar `exp` for the lanes of `live` only (`exp_live`; the others are thrown away),
+/// then the clamp on lanes.
 #[inline(always)]
 pub fn fog_factor(fog: &FogEval, coord: F, live: u8) -> F {
     let mut out = [0.0; LANES];
-    if fog.mode != gl::LINEAR {
-        for l in 0..LANES {
-            if live & (1 << l) != 0 {
-                out[l] = fog.factor(coord[l]);
+    let f = if fog.mode != gl::LINEAR {
+        let mut arg = [0.0; LANES];
+        if fog.mode == gl::EXP {
+            let nd = -fog.density;
+            for l in 0..LANES {
+                arg[l] = nd * coord[l];
+            }
+        } else {
+            for l in 0..LANES {
+                let dc = fog.density * coord[l];
+                arg[l] = -dc * dc;
             }
         }
-        return out;
-    }
-    let scale = -1.0 / (fog.end - fog.start);
-    let e = fog.end * -scale;
+        exp_live(&arg, live)
+    } else {
+        let scale = -1.0 / (fog.end - fog.start);
+        let e = fog.end * -scale;
+        let mut f = [0.0; LANES];
+        for l in 0..LANES {
+            f[l] = coord[l] * scale + e;
+        }
+        f
+    };
     for l in 0..LANES {
-        let f = coord[l] * scale + e;
         // `f32::clamp(0, 1)` with a NaN counted as 0: the same selects as `FogEval::factor`.
-        let f = if f.is_nan() { 0.0 } else { f };
+        let f = if f[l].is_nan() { 0.0 } else { f[l] };
         let f = if f < 0.0 { 0.0 } else { f };
         out[l] = if f > 1.0 { 1.0 } else { f };
+    }
+    out
+}
+
+/// `exp` of the lanes of `live` (the others 0), one libm call each: a function of its own, so
+/// that only this loop waits on the calls (inlined into the group loop, every call made the
+/// caller spill and reload a dozen vector registers, ≈25 instructions a call).
+#[inline(never)]
+fn exp_live(arg: &F, live: u8) -> F {
+    let mut out = [0.0; LANES];
+    let mut m = live;
+    while m != 0 {
+        let l = m.trailing_zeros() as usize;
+        m &= m - 1;
+        if let (Some(o), Some(a)) = (out.get_mut(l), arg.get(l)) {
+            *o = a.exp();
+        }
     }
     out
 }
