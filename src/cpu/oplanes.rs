@@ -759,7 +759,8 @@ pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool
 }
 
 /// The usual blends of `blend` (FUNC_ADD for RGB and alpha with SRC_ALPHA,
-/// ONE_MINUS_SRC_ALPHA, ONE, ONE or SRC_ALPHA, ONE for both) of the unorm8 conversion of `rgb` and `a` over a
+/// ONE_MINUS_SRC_ALPHA, ONE, ONE, SRC_ALPHA, ONE or CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA for
+/// both) of the unorm8 conversion of `rgb` and `a` over a
 /// whole group of `row` (eight pixels), stored as `store` stores; false (nothing written) for
 /// another state, a shorter row or another architecture. On x86-64 every step stays
 /// pixel-major (no channel-major bytes between): the source pixels are assembled as in
@@ -789,9 +790,48 @@ pub fn blend_unorm8(
     // SRC_ALPHA, ONE (additive glow, point sprites): mul8(s, αs) + mul8(d, 255), and
     // mul8(d, 255) is d, so the sum saturating in bytes.
     let glow = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE;
-    if !(add || over || glow) {
+    // CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA (a panel weighted by the constant alpha):
+    // mul8(s, αc) + mul8(d, 255 − αc), as `over` with the constant for the source alpha.
+    let konst =
+        usual && b.src_rgb == gl::CONSTANT_ALPHA && b.dst_rgb == gl::ONE_MINUS_CONSTANT_ALPHA;
+    if !(add || over || glow || konst) {
         return false;
     }
+    if konst {
+        return blend_konst(b, row, rgb, a, m, mask);
+    }
+    blend_group::<false>(b, row, rgb, a, m, mask, add, glow)
+}
+
+/// `blend_unorm8`'s CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA route, a function of its own:
+/// inlined beside the others, it cost the group loop of every other state 1–3% (register
+/// allocation).
+#[inline(never)]
+fn blend_konst(
+    b: &BlendEval,
+    row: &mut [[u8; 4]],
+    rgb: &[F; 3],
+    a: &F,
+    m: u8,
+    mask: [bool; 4],
+) -> bool {
+    blend_group::<true>(b, row, rgb, a, m, mask, false, false)
+}
+
+/// `blend_unorm8`'s stores: ONE, ONE when `add`, SRC_ALPHA, ONE when `glow`, CONSTANT_ALPHA,
+/// ONE_MINUS_CONSTANT_ALPHA when `KONST`, else SRC_ALPHA, ONE_MINUS_SRC_ALPHA.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn blend_group<const KONST: bool>(
+    b: &BlendEval,
+    row: &mut [[u8; 4]],
+    rgb: &[F; 3],
+    a: &F,
+    m: u8,
+    mask: [bool; 4],
+    add: bool,
+    glow: bool,
+) -> bool {
     #[cfg(target_arch = "x86_64")]
     if let Some(px) = row.get_mut(..LANES) {
         use std::arch::x86_64::{
@@ -821,6 +861,9 @@ pub fn blend_unorm8(
                 let sa = _mm_shufflehi_epi16::<0xFF>(_mm_shufflelo_epi16::<0xFF>(s));
                 _mm_add_epi16(mul8(s, sa), mul8(d, _mm_sub_epi16(c255, sa)))
             };
+            // The constant route's two factors on every 16-bit lane.
+            let ca = _mm_set1_epi16(i16::from(b.constant[3]));
+            let ica = _mm_sub_epi16(c255, ca);
             let bits = _mm_set_epi32(8, 4, 2, 1);
             let cmv = _mm_set1_epi32(cm as i32);
             let p = px.as_mut_ptr().cast::<__m128i>();
@@ -837,6 +880,12 @@ pub fn blend_unorm8(
                     // Each product is at most 255: the pack keeps it.
                     let sf = _mm_packus_epi16(mul8(lo, sa(lo)), mul8(hi, sa(hi)));
                     _mm_adds_epu8(sf, old)
+                } else if KONST {
+                    let w = |s: __m128i, d: __m128i| _mm_add_epi16(mul8(s, ca), mul8(d, ica));
+                    _mm_packus_epi16(
+                        w(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
+                        w(_mm_unpackhi_epi8(src, z), _mm_unpackhi_epi8(old, z)),
+                    )
                 } else {
                     _mm_packus_epi16(
                         over2(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
@@ -851,7 +900,7 @@ pub fn blend_unorm8(
         }
         return true;
     }
-    let _ = (row, rgb, a, m, mask);
+    let _ = (b, row, rgb, a, m, mask, add, glow);
     false
 }
 
@@ -960,7 +1009,7 @@ mod expf_fma {
         use std::arch::x86_64::*;
         let mut special = 0u8;
         for (h, (xs, os)) in x.chunks_exact(4).zip(out.chunks_exact_mut(4)).enumerate() {
-            // SAFETY (the block): AVX2 and FMA are present (the caller's promise); the loads
+            // SAFETY: AVX2 and FMA are present (the caller's promise); the loads
             // and stores touch four f32 of a four-element chunk; the gather's indices are
             // masked to 0..32, inside `TAB`.
             unsafe {
@@ -1369,10 +1418,11 @@ mod tests {
             let c: [F; 4] = std::array::from_fn(|_| g.lanes());
             let m = g.next() as u8;
             let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
-            let (sf, df) = match g.next() % 4 {
+            let (sf, df) = match g.next() % 5 {
                 0 => (gl::ONE, gl::ONE),
                 1 => (gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA),
                 2 => (gl::SRC_ALPHA, gl::ONE),
+                3 => (gl::CONSTANT_ALPHA, gl::ONE_MINUS_CONSTANT_ALPHA),
                 _ => (g.pick(&factors), g.pick(&factors)),
             };
             let b = BlendEval {
@@ -1386,7 +1436,12 @@ mod tests {
                 } else {
                     gl::FUNC_ADD
                 },
-                constant: [0; 4],
+                constant: [
+                    g.byte(),
+                    g.byte(),
+                    g.byte(),
+                    [0, 255, g.byte()][(g.next() % 3) as usize],
+                ],
             };
             let mut got = row0.clone();
             if !blend_unorm8(&b, &mut got, &[c[0], c[1], c[2]], &c[3], m, mask) {
