@@ -453,15 +453,15 @@ impl FragCtx<'_> {
         if p.flags & (F_AAPOINT | F_AALINE) != 0 {
             return self.aa_rows(bufs, p, planes, &[[y, x0, x1]]);
         }
+        if let Some(ops) = &self.ops {
+            return self.ops_rows(ops, bufs, p, planes, &[[y, x0, x1]]);
+        }
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
         let zrow = p.z[0] + p.z[2] * fy;
         let row = ((y - bufs.y) as usize) * TILE;
         let base = row + (x0 - bufs.x) as usize;
         let n = (x1 - x0 + 1) as usize;
-        if let Some(ops) = &self.ops {
-            return self.full_span(ops, bufs, p, planes, fy, zrow, base, x0, n);
-        }
         // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits), the
         // comparison chosen once per span; a polygon stipple (§3.5.6) removes fragments first.
         let (fx0, dz) = (x0 - ox, p.z[1]);
@@ -946,58 +946,75 @@ impl FragCtx<'_> {
         lambda
     }
 
-    /// A span through the full sequence (`ops` enabled), eight fragments at a time
+    /// Spans through the full sequence (`ops` enabled), eight fragments at a time
     /// (`oplanes`): varyings, colour, clamp (§3.9), alpha test (§4.1.4), stencil and depth
     /// tests (§4.1.5, §4.1.6), fog (§3.10: it changes neither alpha nor anything the tests
     /// read, so it runs on the survivors only), blending or logic op (§4.1.8, §4.1.10), masked
     /// write; each lane computes what `full` computes for its fragment.
     ///
-    /// The route is chosen here, once per span, and each route is a function of its own, so
-    /// that a span sets up only what its route reads (one function holding every route paid
-    /// ≈570 instructions a span hoisting the texture units' and all varyings' addresses, and
-    /// a 1.2 KB `memset`, for spans of three groups on average): `tests_span` when no colour
-    /// is needed (ColorMask all false, no coverage count, no alpha test), `plain_span` for an
-    /// untextured colour, `tex_span` for a textured or PHONG_WIN one.
-    #[allow(clippy::too_many_arguments)]
-    fn full_span(
+    /// The route is chosen here, once per primitive and tile, and each route is a function of
+    /// its own, so that a span sets up only what its route reads (one function holding every
+    /// route paid ≈570 instructions a span hoisting the texture units' and all varyings'
+    /// addresses, and a 1.2 KB `memset`, for spans of three groups on average): `tests_rows`
+    /// when no colour is needed (ColorMask all false, no coverage count, no alpha test),
+    /// `plain_rows` for an untextured colour, `tex_span` (each row) for a textured or
+    /// PHONG_WIN one. `rows` holds each span's window row and first and last pixel (all
+    /// inside the tile), drawn in order: the untextured routes set up what depends on the
+    /// primitive alone once for all its rows in the tile (≈480 instructions a span when each
+    /// span was a call of its own).
+    pub fn ops_rows(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
         p: &RPrim,
         planes: &[f32],
-        fy: f32,
-        zrow: f32,
-        base: usize,
-        x0: i32,
-        n: usize,
+        rows: &[[i32; 3]],
     ) {
-        let n = n.min(TILE);
-        // A polygon stipple (§3.5.6) removes fragments before any test.
-        let y = p.bbox[1] + fy as i32;
-        let all = u64::MAX >> (64 - n.clamp(1, 64));
-        let live = match self.stipple {
-            Some(rows) if p.flags & F_LINE == 0 => all & stipple_mask(&rows, x0, y),
-            _ => all,
-        };
-        if live == 0 {
-            return;
-        }
         // With ColorMask all false (and no coverage count) nothing reaches a colour buffer,
         // so fog, blending and the stores are skipped, and without an alpha test the colour
         // itself (the varyings, texturing) is never computed: only the stencil and depth
         // tests and their writes remain.
         let writes_color = self.count || self.color_mask != [false; 4];
         if !writes_color && ops.alpha.is_none() {
-            self.tests_span(ops, bufs, p, zrow, base, x0, n, live);
+            self.tests_rows(ops, bufs, p, rows);
         } else if self.tex[0].is_none() && p.flags & F_PHONG == 0 {
-            self.plain_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+            self.plain_rows(ops, bufs, p, planes, rows);
         } else {
-            self.tex_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+            for &[y, x0, x1] in rows {
+                if let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) {
+                    self.tex_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+                }
+            }
         }
     }
 
+    /// The span `x0..=x1` of row `y` of `p` (inside the tile): its row offset `fy` from the
+    /// bounding box, depth `zrow` at the box's left edge, tile index `base` of its first
+    /// pixel, length `n` (at most a tile row) and the fragments `live` after a polygon stipple
+    /// (§3.5.6 removes fragments before any test); None when the stipple leaves none.
+    #[inline(always)]
+    fn row_at(
+        &self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) -> Option<(f32, f32, usize, usize, u64)> {
+        let fy = (y - p.bbox[1]) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let base = ((y - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+        let n = ((x1 - x0 + 1) as usize).min(TILE);
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
+        let live = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => all & stipple_mask(&rows, x0, y),
+            _ => all,
+        };
+        (live != 0).then_some((fy, zrow, base, n, live))
+    }
+
     /// The stencil and depth tests of a group (§4.1.5, §4.1.6) and their writes, for
-    /// `full_span`'s routes: fragment k of the group has z = `zrow + dz·fx[k]`; returns the
+    /// `ops_rows`'s routes: fragment k of the group has z = `zrow + dz·fx[k]`; returns the
     /// survivors of `m`, counted for an occlusion query.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -1110,59 +1127,45 @@ impl FragCtx<'_> {
         }
     }
 
-    /// `full_span` when no colour is needed (no colour buffer written, no coverage count, no
-    /// alpha test): the stencil and depth tests and their writes alone, lanes `live` of the
-    /// `n` fragments from tile index `base`.
+    /// `ops_rows` when no colour is needed (no colour buffer written, no coverage count, no
+    /// alpha test): the stencil and depth tests and their writes alone, row by row.
     #[inline(never)]
-    #[allow(clippy::too_many_arguments)]
-    fn tests_span(
-        &self,
-        ops: &Ops,
-        bufs: &mut TileBufs,
-        p: &RPrim,
-        zrow: f32,
-        base: usize,
-        x0: i32,
-        n: usize,
-        live: u64,
-    ) {
+    fn tests_rows(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
         let ox = p.bbox[0];
         let side = ops
             .stencil
             .as_ref()
             .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
         let dz = p.z[1];
-        let mut c = 0;
-        while c < n {
-            let m = ((live >> c) & 0xFF) as u8;
-            if m != 0 {
-                let fx = super::lanes::lane_x(x0 - ox + c as i32);
-                self.tests_group(side, bufs, zrow, dz, &fx, base + c, m);
+        for &[y, x0, x1] in rows {
+            let Some((_, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) else {
+                continue;
+            };
+            let mut c = 0;
+            while c < n {
+                let m = ((live >> c) & 0xFF) as u8;
+                if m != 0 {
+                    let fx = super::lanes::lane_x(x0 - ox + c as i32);
+                    self.tests_group(side, bufs, zrow, dz, &fx, base + c, m);
+                }
+                c += LANES;
             }
-            c += LANES;
         }
     }
 
-    /// `full_span` for an untextured colour (no texturing unit, not PHONG_WIN), lanes `live`
-    /// of the `n` fragments from tile index `base`: the colour is the interpolated primary
-    /// (plus the secondary's RGB with the colour sum, §3.9), so the primary, the secondary's
-    /// RGB and the fog coordinate are the only varyings read and the only ones interpolated
-    /// (`lanes::RowVaryings`, the bits `lanes::varyings` gives them; their planes looked up
-    /// once per span), into eight rows.
+    /// `ops_rows` for an untextured colour (no texturing unit, not PHONG_WIN), row by row: the
+    /// colour is the interpolated primary (plus the secondary's RGB with the colour sum,
+    /// §3.9), so the primary, the secondary's RGB and the fog coordinate are the only varyings
+    /// read and the only ones interpolated (`lanes::RowVaryings`, the bits `lanes::varyings`
+    /// gives them; their planes looked up once per row), into eight rows.
     #[inline(never)]
-    #[allow(clippy::too_many_arguments)]
-    fn plain_span(
+    fn plain_rows(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
         p: &RPrim,
         planes: &[f32],
-        fy: f32,
-        zrow: f32,
-        base: usize,
-        x0: i32,
-        n: usize,
-        live: u64,
+        rows: &[[i32; 3]],
     ) {
         use super::lanes::{lane_x, RowVaryings};
         use super::oplanes as ol;
@@ -1195,52 +1198,70 @@ impl FragCtx<'_> {
             .as_ref()
             .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
         let dz = p.z[1];
-        let row = RowVaryings::new(planes, nflat, nv, fy, &sel, k);
+        // Without an alpha test no test reads the colour, and computing it has no effect of
+        // its own: the stencil and depth tests run first, and a group none of whose
+        // fragments survives them interpolates nothing (`full`'s order of effects is kept:
+        // the tests' writes, then the colour write of the survivors).
+        let tests_first = ops.alpha.is_none();
         let mut v = [[0.0f32; LANES]; 8];
-        let mut c = 0;
-        while c < n {
-            let mut m = ((live >> c) & 0xFF) as u8;
-            let i0 = base + c;
-            let fx0 = x0 - ox + c as i32;
-            c += LANES;
-            if m == 0 {
+        for &[y, x0, x1] in rows {
+            let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) else {
                 continue;
-            }
-            // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
-            row.eval(fx0, &mut v);
-            let [r, g, b, a] = [v[0], v[1], v[2], v[3]];
-            let mut rgb = [r, g, b];
-            if spec.is_some() {
-                for (ch, add) in rgb.iter_mut().zip(&v[4..7]) {
-                    for l in 0..LANES {
-                        ch[l] += add[l];
-                    }
-                }
-                // (Alpha gains 0.0, which leaves every value's bits as they are but −0,
-                // whose clamp below gives +0 either way.)
-            }
-            let mut rgb = [
-                ol::clamp01(rgb[0]),
-                ol::clamp01(rgb[1]),
-                ol::clamp01(rgb[2]),
-            ];
-            let a = ol::clamp01(a);
-            if let Some((func, reference)) = ops.alpha {
-                m &= ol::alpha_test(func, reference, a);
+            };
+            let row = RowVaryings::new(planes, nflat, nv, fy, &sel, k);
+            let mut c = 0;
+            while c < n {
+                let mut m = ((live >> c) & 0xFF) as u8;
+                let i0 = base + c;
+                let fx0 = x0 - ox + c as i32;
+                c += LANES;
                 if m == 0 {
                     continue;
                 }
+                if tests_first {
+                    m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+                    if m == 0 || !writes_color {
+                        continue;
+                    }
+                }
+                // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+                row.eval(fx0, &mut v);
+                let [r, g, b, a] = [v[0], v[1], v[2], v[3]];
+                let mut rgb = [r, g, b];
+                if spec.is_some() {
+                    for (ch, add) in rgb.iter_mut().zip(&v[4..7]) {
+                        for l in 0..LANES {
+                            ch[l] += add[l];
+                        }
+                    }
+                    // (Alpha gains 0.0, which leaves every value's bits as they are but −0,
+                    // whose clamp below gives +0 either way.)
+                }
+                let mut rgb = [
+                    ol::clamp01(rgb[0]),
+                    ol::clamp01(rgb[1]),
+                    ol::clamp01(rgb[2]),
+                ];
+                let a = ol::clamp01(a);
+                if let Some((func, reference)) = ops.alpha {
+                    m &= ol::alpha_test(func, reference, a);
+                    if m == 0 {
+                        continue;
+                    }
+                }
+                if !tests_first {
+                    m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+                    if m == 0 || !writes_color {
+                        continue;
+                    }
+                }
+                let coord = fog_row.map_or([0.0; LANES], |i| v[i]);
+                self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
             }
-            m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
-            if m == 0 || !writes_color {
-                continue;
-            }
-            let coord = fog_row.map_or([0.0; LANES], |i| v[i]);
-            self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
         }
     }
 
-    /// `full_span` for a textured or PHONG_WIN colour (`color_lanes`; a PHONG_WIN one from
+    /// `ops_rows` for a textured or PHONG_WIN colour (`color_lanes`; a PHONG_WIN one from
     /// `color`, one fragment at a time), lanes `live` of the `n` fragments from tile index
     /// `base`.
     #[inline(never)]
@@ -1325,7 +1346,7 @@ impl FragCtx<'_> {
         }
     }
 
-    /// The colour write of a group (`full_span`) to one colour buffer's row from the group's
+    /// The colour write of a group (`ops_rows`) to one colour buffer's row from the group's
     /// first pixel: blending or the logic op with the row's own contents (§4.1.8, §4.1.10),
     /// then the masked store of lanes `m` (§4.2.2), or the coverage count.
     #[inline(always)]
@@ -1350,7 +1371,7 @@ impl FragCtx<'_> {
 
 #[cfg(test)]
 mod tests {
-    //! `full_span` (eight fragments at a time) against the scalar sequence it replaced, each
+    //! `ops_rows` (eight fragments at a time) against the scalar sequence it replaced, each
     //! fragment through `full`, on random states, spans and buffers: byte for byte.
 
     use super::*;
@@ -1510,6 +1531,9 @@ mod tests {
         origin: (i32, i32),
         y: i32,
         xs: (i32, i32),
+        /// Further rows (window row, first and last pixel) drawn after the first: on lanes
+        /// all in one `ops_rows` call, in the scalar sequence one span after the other.
+        more: &'a [[i32; 3]],
     }
 
     impl Span<'_> {
@@ -1528,14 +1552,20 @@ mod tests {
                 y: ty,
                 samples: 0,
             };
-            if lanes {
+            if lanes && self.more.is_empty() {
                 f.tri_span(&mut bufs, p, self.planes, y, x0, x1);
+            } else if lanes {
+                let mut rows = vec![[y, x0, x1]];
+                rows.extend_from_slice(self.more);
+                f.ops_rows(ops, &mut bufs, p, self.planes, &rows);
             } else {
-                let fy = (y - p.bbox[1]) as f32;
-                let zrow = p.z[0] + p.z[2] * fy;
-                let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
-                let n = (x1 - x0 + 1) as usize;
-                scalar_span(f, ops, &mut bufs, p, self.planes, fy, zrow, base, x0, n);
+                for &[y, x0, x1] in std::iter::once(&[y, x0, x1]).chain(self.more) {
+                    let fy = (y - p.bbox[1]) as f32;
+                    let zrow = p.z[0] + p.z[2] * fy;
+                    let base = ((y - ty) as usize) * TILE + (x0 - tx) as usize;
+                    let n = (x1 - x0 + 1) as usize;
+                    scalar_span(f, ops, &mut bufs, p, self.planes, fy, zrow, base, x0, n);
+                }
             }
             let samples = bufs.samples;
             ((c, c2, d, s), samples)
@@ -1954,7 +1984,7 @@ mod tests {
                 got == want,
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
             );
-            // The same span with per-fragment operations (`full_span`'s textured route,
+            // The same span with per-fragment operations (`ops_rows`'s textured route,
             // `tex_span`) against each fragment through `full`.
             let mut h = Gen(1000 + round as u64);
             let ops = Ops {
@@ -2001,6 +2031,7 @@ mod tests {
                 origin: (tx, ty),
                 y,
                 xs: (x0, x1),
+                more: &[],
             };
             let [got, want] = span.both(&fo, &ops, &tile, two);
             assert!(
@@ -2043,7 +2074,7 @@ mod tests {
                 rl.n += 4;
             }
             // Now and then coordinates of a unit without texturing between the colours and
-            // the fog coordinate (`plain_span` interpolates only the varyings it reads).
+            // the fog coordinate (`plain_rows` interpolates only the varyings it reads).
             let unused = g.next() % 3 == 0;
             if unused {
                 rl.tex[1] = Some(rl.n);
@@ -2096,7 +2127,7 @@ mod tests {
                 depth_test: g.next() % 4 != 0,
                 depth_func: g.pick(&FUNCS),
                 depth_mask: g.next() % 2 == 0,
-                // All false now and then: `full_span`'s route without a colour write.
+                // All false now and then: `ops_rows`'s route without a colour write.
                 color_mask: match g.next() % 6 {
                     0 | 1 => std::array::from_fn(|_| g.next() % 2 == 0),
                     2 => [false; 4],
@@ -2157,17 +2188,30 @@ mod tests {
             let x0 = tx + (g.next() % TILE as u64) as i32;
             let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
             let tile = (color, color2, depth, stencil);
+            // Half the time up to three further rows of the primitive in the same call
+            // (`ops_rows`: what depends on the primitive set up once), rows above and below,
+            // each its own columns, the same pixels now and then drawn twice.
+            let mut more = Vec::new();
+            if g.next() % 2 == 0 {
+                for _ in 0..1 + g.next() % 3 {
+                    let y = ty + (g.next() % TILE as u64) as i32;
+                    let x0 = tx + (g.next() % TILE as u64) as i32;
+                    let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+                    more.push([y, x0, x1]);
+                }
+            }
             let span = Span {
                 p: &p,
                 planes: &planes,
                 origin: (tx, ty),
                 y,
                 xs: (x0, x1),
+                more: &more,
             };
             let [got, want] = span.both(&f, &ops, &tile, two);
             assert!(
                 got == want,
-                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+                "round {round}: {f:?} {p:?} y {y} x {x0}..={x1} {more:?}"
             );
         }
     }

@@ -159,6 +159,28 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
     // `pl(o + 2) * fy` is the same product for every fragment of the row.
     let ch: [(f32, f32, f32); 4] =
         std::array::from_fn(|c| (co[3 * c], co[3 * c + 1], co[3 * c + 2] * fy));
+    if (0..4).all(|c| co[3 * c + 1] == 0.0 && co[3 * c + 2] == 0.0) {
+        // The planes setup gives a FLAT varying, (value, 0, 0): every fragment has the same
+        // colour. (o + 0·fx) + 0·fy is o for any finite fx and fy (fragment positions are)
+        // unless o is ±0, where it is ±0 — the same byte, 0, either way; a NaN stays NaN.
+        // So the first fragment's bytes are every fragment's, stored in runs.
+        let px: [u8; 4] =
+            ch.map(|(o, dx, yt)| unorm8_lanes([(o + dx * fx0 as f32) + yt; LANES])[0]);
+        let n = dst.len().min(64);
+        let mut m = mask & (u64::MAX >> (64 - n.max(1)));
+        if n == 0 {
+            m = 0;
+        }
+        while m != 0 {
+            let s = m.trailing_zeros() as usize;
+            let run = (!(m >> s)).trailing_zeros() as usize;
+            if let Some(out) = dst.get_mut(s..s + run) {
+                out.fill(px);
+            }
+            m &= !(u64::MAX >> (64 - run) << s);
+        }
+        return;
+    }
     let mut c = 0;
     while c < dst.len().min(64) {
         let m = (mask >> c) & ((1 << LANES) - 1);
@@ -865,7 +887,22 @@ mod tests {
     fn flat_rgba_is_the_scalar_expression_bit_for_bit() {
         let mut g = Gen(5);
         for _ in 0..2000 {
-            let co: [f32; 12] = std::array::from_fn(|_| g.float());
+            let mut co: [f32; 12] = std::array::from_fn(|_| g.float());
+            // Mostly the planes of a FLAT varying (value, ±0, ±0), the constant route;
+            // now and then one of the eight steps nonzero (the general route).
+            if g.next() % 3 != 0 {
+                for c in 0..4 {
+                    co[3 * c + 1] = [0.0, -0.0][(g.next() % 2) as usize];
+                    co[3 * c + 2] = [0.0, -0.0][(g.next() % 2) as usize];
+                    if g.next() % 4 == 0 {
+                        co[3 * c] = [0.0, -0.0, f32::NAN, f32::INFINITY, -1.0, 2.0]
+                            [(g.next() % 6) as usize];
+                    }
+                }
+                if g.next() % 5 == 0 {
+                    co[1 + (g.next() % 11) as usize] = g.float();
+                }
+            }
             let n = 1 + (g.next() % 64) as usize;
             let mask = g.next() | g.next() << 40;
             let fx0 = (g.next() % 900) as i32 - 100;

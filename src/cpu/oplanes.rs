@@ -1,6 +1,6 @@
 //! The per-fragment operations of `fragops` (fog §3.10, alpha test §4.1.4, stencil §4.1.5,
 //! depth §4.1.6, blending §4.1.8, logic op §4.1.10) on groups of `LANES` fragments of a span,
-//! for `FragCtx::full_span`: the span runs stage by stage over eight fragments at a time with a
+//! for `FragCtx::ops_rows`: a span runs stage by stage over eight fragments at a time with a
 //! coverage mask (bit l for lane l), each stage chosen once per group from the flush's `Ops`
 //! (the `match` on the mode, function, factor or equation sits outside the loop over lanes, so
 //! the compiler turns the loop into SIMD instructions), in the order of §4.1: alpha test,
@@ -57,27 +57,66 @@ pub fn clamp01(c: F) -> F {
     }
 }
 
-/// `FogEval::factor` on every lane of `live`: LINEAR on lanes, EXP and EXP2 through the scalar
-/// `exp` for the lanes of `live` only (the others get 0: they are thrown away).
+/// `FogEval::factor` on every lane of `live`: LINEAR on lanes; EXP and EXP2 with their
+/// arguments (−density·c, −(density·c)², the scalar products in the scalar order) on lanes,
+/// the scalar `exp` for the lanes of `live` only (`exp_live`; the others are thrown away),
+/// then the clamp on lanes.
 #[inline(always)]
 pub fn fog_factor(fog: &FogEval, coord: F, live: u8) -> F {
     let mut out = [0.0; LANES];
-    if fog.mode != gl::LINEAR {
-        for l in 0..LANES {
-            if live & (1 << l) != 0 {
-                out[l] = fog.factor(coord[l]);
+    let f = if fog.mode != gl::LINEAR {
+        let mut arg = [0.0; LANES];
+        if fog.mode == gl::EXP {
+            let nd = -fog.density;
+            for l in 0..LANES {
+                arg[l] = nd * coord[l];
+            }
+        } else {
+            for l in 0..LANES {
+                let dc = fog.density * coord[l];
+                arg[l] = -dc * dc;
             }
         }
-        return out;
-    }
-    let scale = -1.0 / (fog.end - fog.start);
-    let e = fog.end * -scale;
+        exp_live(&arg, live)
+    } else {
+        let scale = -1.0 / (fog.end - fog.start);
+        let e = fog.end * -scale;
+        let mut f = [0.0; LANES];
+        for l in 0..LANES {
+            f[l] = coord[l] * scale + e;
+        }
+        f
+    };
     for l in 0..LANES {
-        let f = coord[l] * scale + e;
         // `f32::clamp(0, 1)` with a NaN counted as 0: the same selects as `FogEval::factor`.
-        let f = if f.is_nan() { 0.0 } else { f };
+        let f = if f[l].is_nan() { 0.0 } else { f[l] };
         let f = if f < 0.0 { 0.0 } else { f };
         out[l] = if f > 1.0 { 1.0 } else { f };
+    }
+    out
+}
+
+/// `exp` of the lanes of `live` (the others unspecified): `f32::exp`'s bits. Where libm's
+/// `expf` is glibc's FMA variant (`expf8_fma`'s self-check, once) the lanes in its main range
+/// come from `expf8_fma` eight at a time, the others from libm; elsewhere one libm call a
+/// lane. A function of its own, so that only this loop waits on the calls (inlined into the
+/// group loop, every call made the caller spill and reload a dozen vector registers, ≈25
+/// instructions a call).
+#[inline(never)]
+fn exp_live(arg: &F, live: u8) -> F {
+    let mut out = [0.0; LANES];
+    let mut m = live;
+    #[cfg(target_arch = "x86_64")]
+    if expf_fma::usable() {
+        // SAFETY: `usable` is true only where the CPU has AVX2 and FMA.
+        m &= unsafe { expf_fma::expf8(arg, &mut out) };
+    }
+    while m != 0 {
+        let l = m.trailing_zeros() as usize;
+        m &= m - 1;
+        if let (Some(o), Some(a)) = (out.get_mut(l), arg.get(l)) {
+            *o = a.exp();
+        }
     }
     out
 }
@@ -720,7 +759,8 @@ pub fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool
 }
 
 /// The usual blends of `blend` (FUNC_ADD for RGB and alpha with SRC_ALPHA,
-/// ONE_MINUS_SRC_ALPHA, ONE, ONE or SRC_ALPHA, ONE for both) of the unorm8 conversion of `rgb` and `a` over a
+/// ONE_MINUS_SRC_ALPHA, ONE, ONE, SRC_ALPHA, ONE or CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA for
+/// both) of the unorm8 conversion of `rgb` and `a` over a
 /// whole group of `row` (eight pixels), stored as `store` stores; false (nothing written) for
 /// another state, a shorter row or another architecture. On x86-64 every step stays
 /// pixel-major (no channel-major bytes between): the source pixels are assembled as in
@@ -750,9 +790,48 @@ pub fn blend_unorm8(
     // SRC_ALPHA, ONE (additive glow, point sprites): mul8(s, αs) + mul8(d, 255), and
     // mul8(d, 255) is d, so the sum saturating in bytes.
     let glow = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE;
-    if !(add || over || glow) {
+    // CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA (a panel weighted by the constant alpha):
+    // mul8(s, αc) + mul8(d, 255 − αc), as `over` with the constant for the source alpha.
+    let konst =
+        usual && b.src_rgb == gl::CONSTANT_ALPHA && b.dst_rgb == gl::ONE_MINUS_CONSTANT_ALPHA;
+    if !(add || over || glow || konst) {
         return false;
     }
+    if konst {
+        return blend_konst(b, row, rgb, a, m, mask);
+    }
+    blend_group::<false>(b, row, rgb, a, m, mask, add, glow)
+}
+
+/// `blend_unorm8`'s CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA route, a function of its own:
+/// inlined beside the others, it cost the group loop of every other state 1–3% (register
+/// allocation).
+#[inline(never)]
+fn blend_konst(
+    b: &BlendEval,
+    row: &mut [[u8; 4]],
+    rgb: &[F; 3],
+    a: &F,
+    m: u8,
+    mask: [bool; 4],
+) -> bool {
+    blend_group::<true>(b, row, rgb, a, m, mask, false, false)
+}
+
+/// `blend_unorm8`'s stores: ONE, ONE when `add`, SRC_ALPHA, ONE when `glow`, CONSTANT_ALPHA,
+/// ONE_MINUS_CONSTANT_ALPHA when `KONST`, else SRC_ALPHA, ONE_MINUS_SRC_ALPHA.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn blend_group<const KONST: bool>(
+    b: &BlendEval,
+    row: &mut [[u8; 4]],
+    rgb: &[F; 3],
+    a: &F,
+    m: u8,
+    mask: [bool; 4],
+    add: bool,
+    glow: bool,
+) -> bool {
     #[cfg(target_arch = "x86_64")]
     if let Some(px) = row.get_mut(..LANES) {
         use std::arch::x86_64::{
@@ -782,6 +861,9 @@ pub fn blend_unorm8(
                 let sa = _mm_shufflehi_epi16::<0xFF>(_mm_shufflelo_epi16::<0xFF>(s));
                 _mm_add_epi16(mul8(s, sa), mul8(d, _mm_sub_epi16(c255, sa)))
             };
+            // The constant route's two factors on every 16-bit lane.
+            let ca = _mm_set1_epi16(i16::from(b.constant[3]));
+            let ica = _mm_sub_epi16(c255, ca);
             let bits = _mm_set_epi32(8, 4, 2, 1);
             let cmv = _mm_set1_epi32(cm as i32);
             let p = px.as_mut_ptr().cast::<__m128i>();
@@ -798,6 +880,12 @@ pub fn blend_unorm8(
                     // Each product is at most 255: the pack keeps it.
                     let sf = _mm_packus_epi16(mul8(lo, sa(lo)), mul8(hi, sa(hi)));
                     _mm_adds_epu8(sf, old)
+                } else if KONST {
+                    let w = |s: __m128i, d: __m128i| _mm_add_epi16(mul8(s, ca), mul8(d, ica));
+                    _mm_packus_epi16(
+                        w(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
+                        w(_mm_unpackhi_epi8(src, z), _mm_unpackhi_epi8(old, z)),
+                    )
                 } else {
                     _mm_packus_epi16(
                         over2(_mm_unpacklo_epi8(src, z), _mm_unpacklo_epi8(old, z)),
@@ -812,8 +900,152 @@ pub fn blend_unorm8(
         }
         return true;
     }
-    let _ = (row, rgb, a, m, mask);
+    let _ = (b, row, rgb, a, m, mask, add, glow);
     false
+}
+
+/// glibc's `expf` (`sysdeps/ieee754/flt-32/e_expf.c`, the build `__expf_fma` that glibc's
+/// ifunc picks on CPUs with AVX2 and FMA) on eight lanes, four doubles a register: the same
+/// table, constants, operations and fused multiply-adds in the same order (the compiler's
+/// contractions in that build read off its code: `z = InvLn2N·x + SHIFT` fused,
+/// `r = InvLn2N·x − kd` fused, both polynomial steps fused), so the same bits wherever libm's
+/// `expf` is that function. Whether it is, is checked once at run time against `f32::exp`
+/// (`usable`); if not, every lane goes to libm. Lanes outside the main range (|x| ≥ 85.33,
+/// infinities, NaN) are left to libm too.
+#[cfg(target_arch = "x86_64")]
+mod expf_fma {
+    use super::{F, LANES};
+    use std::sync::atomic::{AtomicU8, Ordering};
+
+    /// 2^(i/32) as doubles, their exponent bits taken out (glibc's `__exp2f_data.tab`).
+    const TAB: [u64; 32] = [
+        0x3ff0000000000000,
+        0x3fefd9b0d3158574,
+        0x3fefb5586cf9890f,
+        0x3fef9301d0125b51,
+        0x3fef72b83c7d517b,
+        0x3fef54873168b9aa,
+        0x3fef387a6e756238,
+        0x3fef1e9df51fdee1,
+        0x3fef06fe0a31b715,
+        0x3feef1a7373aa9cb,
+        0x3feedea64c123422,
+        0x3feece086061892d,
+        0x3feebfdad5362a27,
+        0x3feeb42b569d4f82,
+        0x3feeab07dd485429,
+        0x3feea47eb03a5585,
+        0x3feea09e667f3bcd,
+        0x3fee9f75e8ec5f74,
+        0x3feea11473eb0187,
+        0x3feea589994cce13,
+        0x3feeace5422aa0db,
+        0x3feeb737b0cdc5e5,
+        0x3feec49182a3f090,
+        0x3feed503b23e255d,
+        0x3feee89f995ad3ad,
+        0x3feeff76f2fb5e47,
+        0x3fef199bdd85529c,
+        0x3fef3720dcef9069,
+        0x3fef5818dcfba487,
+        0x3fef7c97337b9b5f,
+        0x3fefa4afa2a490da,
+        0x3fefd0765b6e4540,
+    ];
+    /// 32/ln 2.
+    const INV_LN2_N: u64 = 0x40471547652b82fe;
+    /// 1.5·2^52: adding it rounds to an integer in the low bits.
+    const SHIFT: u64 = 0x4338000000000000;
+    /// The polynomial's coefficients (`C[0]`, `C[1]`, `C[2]` of `__exp2f_data.poly_scaled`).
+    const C: [u64; 3] = [0x3ebc6af84b912394, 0x3f2ebfce50fac4f3, 0x3f962e42ff0c52d6];
+
+    /// 0: not checked yet, 1: the kernel is libm's `expf`, 2: it is not (or no AVX2/FMA).
+    static STATE: AtomicU8 = AtomicU8::new(0);
+
+    /// Whether `expf8` may stand for libm's `expf`: the CPU has AVX2 and FMA, and the kernel
+    /// gives `f32::exp`'s bits on 4096 arguments spread over its range (checked once).
+    pub fn usable() -> bool {
+        match STATE.load(Ordering::Relaxed) {
+            1 => true,
+            2 => false,
+            _ => {
+                let ok = is_x86_feature_detected!("avx2")
+                    && is_x86_feature_detected!("fma")
+                    && self_check();
+                STATE.store(if ok { 1 } else { 2 }, Ordering::Relaxed);
+                ok
+            }
+        }
+    }
+
+    fn self_check() -> bool {
+        let mut x = 0x9E37_79B9u32;
+        (0..512).all(|i| {
+            let a: F = std::array::from_fn(|l| {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                // Every eighth lane evenly over the range, the others any main-range bits.
+                if l == 0 {
+                    -87.0 + 174.0 * i as f32 / 512.0
+                } else {
+                    f32::from_bits(x & 0xC2AF_FFFF)
+                }
+            });
+            let mut out = [0.0; LANES];
+            // SAFETY: called only after AVX2 and FMA were detected (`usable`).
+            let left = unsafe { expf8(&a, &mut out) };
+            (0..LANES).all(|l| left & (1 << l) != 0 || out[l].to_bits() == a[l].exp().to_bits())
+        })
+    }
+
+    /// `expf` of every lane in the main range into `out`; returns the mask of the lanes left
+    /// to libm (|x| ≥ 85.33, ±∞, NaN), whose `out` is unspecified.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and FMA.
+    #[target_feature(enable = "avx2,fma")]
+    pub unsafe fn expf8(x: &F, out: &mut F) -> u8 {
+        use std::arch::x86_64::*;
+        let mut special = 0u8;
+        for (h, (xs, os)) in x.chunks_exact(4).zip(out.chunks_exact_mut(4)).enumerate() {
+            // SAFETY: AVX2 and FMA are present (the caller's promise); the loads
+            // and stores touch four f32 of a four-element chunk; the gather's indices are
+            // masked to 0..32, inside `TAB`.
+            unsafe {
+                let xf = _mm_loadu_ps(xs.as_ptr());
+                // abstop12(x) > abstop12(85.33…): glibc's test for its special cases.
+                let top = _mm_and_si128(
+                    _mm_srli_epi32(_mm_castps_si128(xf), 20),
+                    _mm_set1_epi32(0x7ff),
+                );
+                let big = _mm_cmpgt_epi32(top, _mm_set1_epi32(0x42a));
+                special |= (_mm_movemask_ps(_mm_castsi128_ps(big)) as u8) << (4 * h);
+                let xd = _mm256_cvtps_pd(xf);
+                let inv = _mm256_set1_pd(f64::from_bits(INV_LN2_N));
+                let shift = _mm256_set1_pd(f64::from_bits(SHIFT));
+                let kz = _mm256_fmadd_pd(inv, xd, shift);
+                let ki = _mm256_castpd_si256(kz);
+                let kd = _mm256_sub_pd(kz, shift);
+                let r = _mm256_fmsub_pd(inv, xd, kd);
+                let idx = _mm256_and_si256(ki, _mm256_set1_epi64x(31));
+                let t = _mm256_i64gather_epi64::<8>(TAB.as_ptr().cast::<i64>(), idx);
+                let s = _mm256_castsi256_pd(_mm256_add_epi64(t, _mm256_slli_epi64::<47>(ki)));
+                let z = _mm256_fmadd_pd(
+                    r,
+                    _mm256_set1_pd(f64::from_bits(C[0])),
+                    _mm256_set1_pd(f64::from_bits(C[1])),
+                );
+                let r2 = _mm256_mul_pd(r, r);
+                let y =
+                    _mm256_fmadd_pd(r, _mm256_set1_pd(f64::from_bits(C[2])), _mm256_set1_pd(1.0));
+                let y = _mm256_fmadd_pd(z, r2, y);
+                let y = _mm256_mul_pd(y, s);
+                _mm_storeu_ps(os.as_mut_ptr(), _mm256_cvtpd_ps(y));
+            }
+        }
+        special
+    }
 }
 
 #[cfg(test)]
@@ -876,6 +1108,73 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// `expf_fma::expf8` against libm's `expf` (`f32::exp`) bit for bit on 400 000 lanes: any
+    /// bits (NaN, ±∞, denormals, huge), the main range's bits, and arguments the fog scene
+    /// gives (−density·c, −(density·c)²). Where the kernel is not usable (no AVX2/FMA, or
+    /// libm's `expf` is another function) `exp_live` alone is compared.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn expf8_is_libm_expf_bit_for_bit() {
+        let mut g = Gen(17);
+        let usable = super::expf_fma::usable();
+        for round in 0..50_000 {
+            let a: F = std::array::from_fn(|_| match g.next() % 4 {
+                0 => f32::from_bits(g.next() as u32),
+                1 => f32::from_bits(g.next() as u32 & 0xC2AF_FFFF),
+                2 => -((g.next() % 4000) as f32 * 0.01) * g.float().abs(),
+                _ => {
+                    let dc = (g.next() % 100) as f32 * 0.05 * g.float();
+                    -dc * dc
+                }
+            });
+            let live = if round % 2 == 0 { 0xFF } else { g.next() as u8 };
+            let got = exp_live(&a, live);
+            for l in (0..LANES).filter(|l| live & (1 << l) != 0) {
+                assert_eq!(got[l].to_bits(), a[l].exp().to_bits(), "exp_live {}", a[l]);
+            }
+            if usable {
+                let mut out = [0.0; LANES];
+                // SAFETY: `usable` says AVX2 and FMA are present.
+                let left = unsafe { super::expf_fma::expf8(&a, &mut out) };
+                for l in 0..LANES {
+                    let top = (a[l].to_bits() >> 20) & 0x7ff;
+                    assert_eq!(left & (1 << l) != 0, top > 0x42a, "{}", a[l]);
+                    if top <= 0x42a {
+                        assert_eq!(out[l].to_bits(), a[l].exp().to_bits(), "expf8 {}", a[l]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Every argument of `expf8`'s main range (2.2·10^9 floats) against libm; about a minute
+    /// in release: `cargo test --release --lib expf8_every -- --ignored`.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    #[ignore]
+    fn expf8_every_main_range_argument_is_libm_expf() {
+        if !super::expf_fma::usable() {
+            return;
+        }
+        let mut bad = 0u64;
+        for sign in [0u32, 0x8000_0000] {
+            let mut b = 0u32;
+            while b <= 0x42AF_FFFF {
+                let a: F = std::array::from_fn(|l| f32::from_bits(sign | (b + l as u32)));
+                let mut out = [0.0; LANES];
+                // SAFETY: `usable` says AVX2 and FMA are present.
+                unsafe { super::expf_fma::expf8(&a, &mut out) };
+                for l in 0..LANES {
+                    if out[l].to_bits() != a[l].exp().to_bits() {
+                        bad += 1;
+                    }
+                }
+                b += LANES as u32;
+            }
+        }
+        assert_eq!(bad, 0);
     }
 
     #[test]
@@ -1119,10 +1418,11 @@ mod tests {
             let c: [F; 4] = std::array::from_fn(|_| g.lanes());
             let m = g.next() as u8;
             let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
-            let (sf, df) = match g.next() % 4 {
+            let (sf, df) = match g.next() % 5 {
                 0 => (gl::ONE, gl::ONE),
                 1 => (gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA),
                 2 => (gl::SRC_ALPHA, gl::ONE),
+                3 => (gl::CONSTANT_ALPHA, gl::ONE_MINUS_CONSTANT_ALPHA),
                 _ => (g.pick(&factors), g.pick(&factors)),
             };
             let b = BlendEval {
@@ -1136,7 +1436,12 @@ mod tests {
                 } else {
                     gl::FUNC_ADD
                 },
-                constant: [0; 4],
+                constant: [
+                    g.byte(),
+                    g.byte(),
+                    g.byte(),
+                    [0, 255, g.byte()][(g.next() % 3) as usize],
+                ],
             };
             let mut got = row0.clone();
             if !blend_unorm8(&b, &mut got, &[c[0], c[1], c[2]], &c[3], m, mask) {

@@ -69,6 +69,19 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         });
         return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
     }
+    if let Some(ops) = &ctx.ops {
+        // Per-fragment operations: the rows (at most a tile's) are gathered and shaded in one
+        // call, which sets up what depends on the primitive once (`ops_rows`).
+        let mut rows = [[0i32; 3]; TILE];
+        let mut k = 0;
+        spans(p, r, |y, l, h| {
+            if let Some(row) = rows.get_mut(k) {
+                *row = [y, l, h];
+                k += 1;
+            }
+        });
+        return ctx.ops_rows(ops, bufs, p, planes, rows.get(..k).unwrap_or_default());
+    }
     spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
 }
 
