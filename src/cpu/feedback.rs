@@ -844,6 +844,9 @@ mod tests {
             gl.push_name(0);
             for (name, (strip, vs)) in batches.iter().enumerate() {
                 gl.load_name(name as u32 + 1);
+                // In FEEDBACK mode a pass-through token marks where each name's polygons start
+                // (SELECT mode ignores it, as FEEDBACK mode ignores the name stack).
+                gl.pass_through(name as f32);
                 gl.begin(if *strip {
                     gl::TRIANGLE_STRIP
                 } else {
@@ -875,23 +878,7 @@ mod tests {
         let select = gl.selection_buffer().to_vec();
         gl.feedback_buffer(1 << 20, gl::GL_3D);
         gl.render_mode(gl::FEEDBACK);
-        for name in 0..NAMES {
-            // A pass-through token marks where each name's polygons start.
-            gl.load_name(name + 1);
-            let (strip, vs) = &batches[name as usize];
-            gl.pass_through(name as f32);
-            gl.begin(if *strip {
-                gl::TRIANGLE_STRIP
-            } else {
-                gl::TRIANGLES
-            });
-            for v in vs {
-                gl.normal3f(v[3], v[4], v[5]);
-                gl.color3f(v[6], v[7], v[8]);
-                gl.vertex3f(v[0], v[1], v[2]);
-            }
-            gl.end();
-        }
+        draw(&mut gl);
         let count = gl.render_mode(gl::RENDER);
         assert!(count > 0);
         let fb = gl.feedback_values().to_vec();
