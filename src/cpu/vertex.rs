@@ -535,7 +535,17 @@ pub fn process(
     wins: &mut Vec<Win>,
     parallel: bool,
 ) {
-    run(state, batch, layout, setup, out, wins, parallel, true);
+    run(
+        state,
+        batch,
+        layout,
+        setup,
+        out,
+        wins,
+        parallel,
+        true,
+        Route::best(),
+    );
 }
 
 /// The clip positions (and eye positions where `layout` has them) and window coordinates of
@@ -549,7 +559,77 @@ pub fn positions(
     out: &mut Vec<f32>,
     wins: &mut Vec<Win>,
 ) {
-    run(state, batch, layout, setup, out, wins, false, false);
+    run(
+        state,
+        batch,
+        layout,
+        setup,
+        out,
+        wins,
+        false,
+        false,
+        Route::best(),
+    );
+}
+
+/// How the vertex stage's lane loops are compiled: for the x86-64 baseline (SSE2, four `f32`
+/// lanes a vector), or with AVX2 (eight), chosen once at run time. Both are the same Rust code,
+/// operation for operation (AVX2 alone enables no fused multiply-add), so the same bits; the
+/// test `both_routes_process_the_same_bits` compares them on random batches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Route {
+    /// The baseline build.
+    Baseline,
+    /// The AVX2 build of the same code (only where the CPU has AVX2).
+    Avx2,
+}
+
+impl Route {
+    /// AVX2 where the CPU has it (detected once), else the baseline.
+    #[inline]
+    pub fn best() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::sync::atomic::{AtomicU8, Ordering};
+            // 0: not checked yet, 1: AVX2, 2: baseline.
+            static ROUTE: AtomicU8 = AtomicU8::new(0);
+            match ROUTE.load(Ordering::Relaxed) {
+                1 => Route::Avx2,
+                2 => Route::Baseline,
+                _ => {
+                    let avx2 = is_x86_feature_detected!("avx2");
+                    ROUTE.store(if avx2 { 1 } else { 2 }, Ordering::Relaxed);
+                    if avx2 {
+                        Route::Avx2
+                    } else {
+                        Route::Baseline
+                    }
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Route::Baseline
+        }
+    }
+}
+
+/// [`process`] (`attributes`) or [`positions`] by `route` (for the test comparing the routes).
+#[cfg(test)]
+#[allow(clippy::too_many_arguments)]
+pub fn process_by(
+    state: &State,
+    batch: &Batch,
+    layout: &Layout,
+    setup: &SetupCtx,
+    out: &mut Vec<f32>,
+    wins: &mut Vec<Win>,
+    attributes: bool,
+    route: Route,
+) {
+    run(
+        state, batch, layout, setup, out, wins, false, attributes, route,
+    );
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -562,6 +642,7 @@ fn run(
     wins: &mut Vec<Win>,
     parallel: bool,
     attributes: bool,
+    route: Route,
 ) {
     let n = batch.len();
     // Every float of `out` (`Lit::run` writes each attribute of the layout for every vertex) and
@@ -579,6 +660,7 @@ fn run(
         lighting: lighting.as_ref(),
         setup,
         attributes,
+        route,
     };
     const CHUNK: usize = 4096;
     if parallel && n > 2 * CHUNK {
@@ -610,15 +692,40 @@ struct Lit<'a> {
     setup: &'a SetupCtx,
     /// Colours and the layout's other attributes are computed (not for [`positions`]).
     attributes: bool,
+    /// The build of the lane loops to run.
+    route: Route,
 }
 
 impl Lit<'_> {
+    /// Processes the vertices from `first` into `out` and `wins` ([`Lit::body`]) by `route`.
+    fn run(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+        #[cfg(target_arch = "x86_64")]
+        if self.route == Route::Avx2 {
+            // SAFETY: `Route::Avx2` is chosen only where the CPU has AVX2 (`Route::best`; the
+            // test asks for it only after detecting it).
+            unsafe { self.run_avx2(first, out, wins) };
+            return;
+        }
+        self.body(first, out, wins);
+    }
+
+    /// [`Lit::body`] compiled with AVX2: its lane loops on eight `f32` lanes a vector.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_avx2(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+        self.body(first, out, wins);
+    }
+
     /// Processes the vertices from `first` into `out` and `wins`, one block of [`LANES`] at a
     /// time in a single pass: transforms on a structure of arrays, window coordinates and clip
     /// codes from the clip positions in hand, the other attributes, then lighting.
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
-    fn run(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+    #[inline(always)]
+    fn body(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;

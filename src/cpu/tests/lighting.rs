@@ -589,3 +589,188 @@ fn window_coordinates_of_a_block_equal_those_of_each_vertex() {
     ctx.win_block(&c, &e, &mut w);
     assert_eq!(w[0].code, 1 << 1 | 1 << 8);
 }
+
+/// `v`'s bits, every NaN as one value: the sign and payload of a NaN made from NaN or infinite
+/// inputs are not defined by the compiler (x86 returns the first operand's NaN, and either build
+/// may order a commutative operation's operands either way), and nothing downstream reads them
+/// (comparisons, clamps and conversions treat every NaN alike).
+pub(super) fn nan_bits(v: f32) -> u32 {
+    if v.is_nan() {
+        u32::MAX
+    } else {
+        v.to_bits()
+    }
+}
+
+/// The vertex stage's two builds ([`Route::Baseline`], and [`Route::Avx2`] where the CPU has
+/// AVX2) write the same bits (every NaN counted as one value, see `nan_bits`): every float of every processed vertex and every window record, over
+/// random batches (1 to 70 vertices: whole and partial blocks) under random states — lighting on
+/// and off, up to four positional, directional and spot lights, local viewer, separate specular,
+/// two-sided, COLOR_MATERIAL, NORMALIZE and RESCALE_NORMAL, a projective modelview, TexGen and
+/// the texture matrix, fog, point attenuation, a user clip plane, a Material change inside
+/// Begin/End — with positions and normals holding zeros, infinities and NaNs; and positions only
+/// (selection). Without AVX2 it checks the baseline against itself and says so.
+#[test]
+fn both_routes_process_the_same_bits() {
+    use crate::cpu::batch::Batch;
+    use crate::cpu::framebuffer::scissor_rect;
+    use crate::cpu::setup::{SetupCtx, Win};
+    use crate::cpu::vertex::{process_by, Layout, Route};
+    use glam::DVec4;
+    let wide = Route::best();
+    if wide != Route::Avx2 {
+        eprintln!("no AVX2 on this CPU: the baseline route is compared with itself");
+    }
+    let mut rng = Rng(0x0bad_cafe);
+    let special = [0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 1e-30];
+    let mut lanes_lit = 0;
+    for case in 0..300 {
+        let mut st = State::new(200, 150);
+        st.viewport = [0, 0, 200, 150];
+        let e = &mut st.enables;
+        e.lighting = case % 5 != 0;
+        e.normalize = case % 3 == 0;
+        e.rescale_normal = case % 7 == 1;
+        e.color_material = case % 4 == 1;
+        e.fog = case % 3 == 1;
+        e.texture_2d[0] = case % 2 == 0;
+        e.texture_gen[0] = [case % 6 == 0, case % 6 == 0, false, false];
+        e.clip_planes[2] = case % 5 == 2;
+        st.clip_planes[2] = DVec4::new(0.3, -1.0, 0.5, 0.2);
+        st.textures.units[0].gen[0].mode = [gl::SPHERE_MAP, gl::EYE_LINEAR][case % 2];
+        st.textures.units[0].gen[1].mode = gl::OBJECT_LINEAR;
+        st.textures.units[0].gen[1].object_plane = rng.vec3(-1.0, 1.0).extend(0.5);
+        *st.texture_matrix[0].top_mut() =
+            Mat4::from_scale(rng.vec3(0.5, 2.0)) * Mat4::from_rotation_z(rng.range(0.0, 3.0));
+        if case % 4 == 3 {
+            st.point.distance_attenuation = [1.0, rng.range(0.0, 0.5), rng.range(0.0, 0.2)];
+        }
+        st.light_model.local_viewer = case % 2 == 1;
+        st.light_model.two_side = case % 3 == 2;
+        st.light_model.color_control = if case % 4 == 0 {
+            gl::SEPARATE_SPECULAR_COLOR
+        } else {
+            gl::SINGLE_COLOR
+        };
+        st.color_material_mode = [gl::AMBIENT_AND_DIFFUSE, gl::SPECULAR, gl::DIFFUSE][case % 3];
+        st.light_model.ambient = rng.vec3(0.0, 0.3).extend(1.0);
+        for (i, l) in st.lights.iter_mut().enumerate().take(1 + case % 4) {
+            st.enables.lights[i] = true;
+            l.ambient = rng.vec3(0.0, 0.2).extend(1.0);
+            l.diffuse = rng.vec3(0.0, 1.0).extend(1.0);
+            l.specular = rng.vec3(0.0, 1.0).extend(1.0);
+            let w = if i % 2 == 1 { 0.0 } else { 1.0 };
+            l.position = rng.vec3(-3.0, 3.0).extend(w);
+            l.linear_attenuation = rng.range(0.0, 0.5);
+            if i == 2 {
+                l.spot_cutoff = rng.range(10.0, 90.0);
+                l.spot_exponent = rng.range(0.0, 20.0);
+                l.spot_direction = rng.vec3(-1.0, 1.0);
+            }
+        }
+        for m in &mut st.materials {
+            m.ambient = rng.vec3(0.0, 1.0).extend(1.0);
+            m.diffuse = rng.vec3(0.0, 1.0).extend(rng.next());
+            m.specular = rng.vec3(0.0, 1.0).extend(1.0);
+            m.emission = rng.vec3(0.0, 0.1).extend(1.0);
+            m.shininess = [0.0, 1.0, 10.0, 100.0, 128.0][case % 5];
+        }
+        let mut mv = Mat4::from_translation(rng.vec3(-1.0, 1.0) - Vec3::Z * 4.0)
+            * Mat4::from_rotation_y(rng.range(0.0, 6.0))
+            * Mat4::from_scale(rng.vec3(0.3, 2.0));
+        if case % 8 == 5 {
+            // A projective modelview: eye w other than 1.
+            mv.w_axis.w = rng.range(0.5, 2.0);
+            mv.x_axis.w = rng.range(-0.2, 0.2);
+        }
+        *st.modelview.top_mut() = mv;
+        *st.projection.top_mut() = Mat4::perspective_rh_gl(1.0, 4.0 / 3.0, 0.5, 20.0);
+        let mut b = Batch::default();
+        let n = 1 + (rng.next() * 70.0) as usize;
+        b.begin(gl::TRIANGLES);
+        b.note_materials(&st.materials);
+        let pick = |rng: &mut Rng, lo: f32, hi: f32| {
+            if rng.next() < 0.04 {
+                special[(rng.next() * special.len() as f32) as usize % special.len()]
+            } else {
+                rng.range(lo, hi)
+            }
+        };
+        for k in 0..n {
+            if case % 9 == 4 && k == n / 2 {
+                let mut m = st.materials;
+                m[0].diffuse = rng.vec3(0.0, 1.0).extend(1.0);
+                m[1].shininess = 5.0;
+                b.materials_changed(&m);
+            }
+            let p = Vec4::new(
+                pick(&mut rng, -2.0, 2.0),
+                pick(&mut rng, -2.0, 2.0),
+                pick(&mut rng, -2.0, 2.0),
+                if rng.next() < 0.1 {
+                    rng.range(0.5, 2.0)
+                } else {
+                    1.0
+                },
+            );
+            let nrm = Vec3::new(
+                pick(&mut rng, -1.0, 1.0),
+                pick(&mut rng, -1.0, 1.0),
+                pick(&mut rng, -1.0, 1.0),
+            );
+            let mut c = cur(rng.vec3(0.0, 1.0).extend(rng.next()), nrm);
+            c.tex_coords[0] = rng.vec3(-1.0, 1.0).extend(1.0);
+            c.fog_coord = rng.range(0.0, 5.0);
+            b.vertex(p, &c);
+        }
+        b.end();
+        for attributes in [true, false] {
+            let layout = if attributes {
+                Layout::for_state(&st)
+            } else {
+                Layout::for_select(&st)
+            };
+            let ctx = SetupCtx::new(&st, layout, scissor_rect(&st), (4, 3));
+            let run = |route| {
+                let (mut out, mut wins) = (Vec::new(), Vec::new());
+                process_by(
+                    &st, &b, &layout, &ctx, &mut out, &mut wins, attributes, route,
+                );
+                (out, wins)
+            };
+            let (o1, w1) = run(Route::Baseline);
+            let (o2, w2) = run(wide);
+            assert_eq!(o1.len(), b.len() * layout.stride);
+            let bits = |o: &[f32]| o.iter().map(|&v| nan_bits(v)).collect::<Vec<_>>();
+            assert_eq!(
+                bits(&o1),
+                bits(&o2),
+                "case {case}: processed vertices differ"
+            );
+            let wb = |w: &Win| {
+                (
+                    nan_bits(w.x),
+                    nan_bits(w.y),
+                    w.fx,
+                    w.fy,
+                    if w.z.is_nan() {
+                        u64::MAX
+                    } else {
+                        w.z.to_bits()
+                    },
+                    nan_bits(w.iw),
+                    w.code,
+                )
+            };
+            assert_eq!(
+                w1.iter().map(wb).collect::<Vec<_>>(),
+                w2.iter().map(wb).collect::<Vec<_>>(),
+                "case {case}: window records differ"
+            );
+            if attributes && st.enables.lighting {
+                lanes_lit += b.len();
+            }
+        }
+    }
+    assert!(lanes_lit > 5000, "only {lanes_lit} lit vertices compared");
+}
