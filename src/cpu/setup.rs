@@ -21,7 +21,7 @@ use super::assembly::Asm;
 use super::batch::{Batch, Prim};
 use super::clip::Clipper;
 use super::framebuffer::TILE;
-use super::vertex::{Lanes4, Layout};
+use super::vertex::{Lanes4, Layout, Route};
 use crate::gl;
 use crate::state::{State, MAX_TEXTURE_UNITS};
 
@@ -462,8 +462,60 @@ pub struct Worker {
 }
 
 impl Worker {
-    /// Assembles `prims` of batch `b` (§2.6) and sets them up.
+    /// Assembles `prims` of batch `b` (§2.6) and sets them up ([`Worker::assemble_body`]),
+    /// compiled for the baseline or with AVX2 by `Route::best` (the same code, so the same
+    /// primitives; `both_routes_set_up_the_same_primitives` compares them).
     pub fn assemble_and_run(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        b: &Batch,
+        prims: &[Prim],
+    ) {
+        self.assemble_by(ctx, vout, wins, b, prims, Route::best());
+    }
+
+    /// [`Worker::assemble_and_run`] by `route`.
+    pub(super) fn assemble_by(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        b: &Batch,
+        prims: &[Prim],
+        route: Route,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if route == Route::Avx2 {
+            // SAFETY: `Route::Avx2` is chosen only where the CPU has AVX2.
+            unsafe { self.assemble_avx2(ctx, vout, wins, b, prims) };
+            return;
+        }
+        let _ = route;
+        self.assemble_body(ctx, vout, wins, b, prims);
+    }
+
+    /// [`Worker::assemble_body`] compiled with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn assemble_avx2(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        b: &Batch,
+        prims: &[Prim],
+    ) {
+        self.assemble_body(ctx, vout, wins, b, prims);
+    }
+
+    /// Assembles `prims` of batch `b` (§2.6) and sets them up.
+    #[inline(always)]
+    fn assemble_body(
         &mut self,
         ctx: &SetupCtx,
         vout: &[f32],

@@ -7,6 +7,7 @@ mod lighting;
 mod overlap;
 mod raster;
 mod reference;
+mod routes;
 mod scene;
 
 use glam::{Vec3, Vec4};

@@ -1,0 +1,155 @@
+//! The setup stage's two builds (`Route::Baseline`, and `Route::Avx2` where the CPU has AVX2)
+//! against each other: the same primitives, floats and bins, bit for bit (every NaN counted as
+//! one value, as `lighting::nan_bits` explains).
+
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::cpu::batch::Batch;
+use crate::cpu::framebuffer::scissor_rect;
+use crate::cpu::setup::{SetupCtx, Worker};
+use crate::cpu::vertex::{process_by, Layout, Route};
+use crate::gl;
+use crate::state::{Current, State};
+
+/// A small deterministic generator (xorshift32), in [0, 1).
+struct Rng(u32);
+
+impl Rng {
+    fn next(&mut self) -> f32 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 17;
+        self.0 ^= self.0 << 5;
+        (self.0 >> 8) as f32 / (1u32 << 24) as f32
+    }
+
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next()
+    }
+}
+
+/// Random strips, fans, triangles, quads and polygons (some crossing the view volume's planes,
+/// so that clipping runs, many a pixel or two wide, so that the 2x2 coverage runs) under random
+/// culling, facing, FLAT, polygon offset, scissor, lighting and texturing, set up by both
+/// routes: every primitive's fields, every float of the pool, every touched bin and the area
+/// are the same.
+#[test]
+fn both_routes_set_up_the_same_primitives() {
+    let wide = Route::best();
+    if wide != Route::Avx2 {
+        eprintln!("no AVX2 on this CPU: the baseline route is compared with itself");
+    }
+    let mut rng = Rng(0x7f4a_7c15);
+    let modes = [
+        gl::TRIANGLE_STRIP,
+        gl::TRIANGLES,
+        gl::QUADS,
+        gl::TRIANGLE_FAN,
+        gl::POLYGON,
+        gl::QUAD_STRIP,
+    ];
+    let mut prims = 0;
+    for case in 0..200 {
+        let (w, h) = (300, 200);
+        let mut st = State::new(w, h);
+        st.viewport = [0, 0, w as i32, h as i32];
+        st.enables.cull_face = case % 4 == 1;
+        st.cull_face_mode = [gl::BACK, gl::FRONT][case % 2];
+        st.front_face = [gl::CCW, gl::CW][(case / 2) % 2];
+        st.shade_model = if case % 5 == 2 { gl::FLAT } else { gl::SMOOTH };
+        st.enables.polygon_offset_fill = case % 6 == 3;
+        st.polygon_offset_factor = rng.range(-2.0, 2.0);
+        st.polygon_offset_units = rng.range(-2.0, 2.0);
+        st.enables.scissor_test = case % 7 == 4;
+        st.scissor = [20, 10, 200, 150];
+        st.enables.lighting = case % 3 == 0;
+        st.enables.lights[0] = true;
+        st.light_model.two_side = case % 2 == 0;
+        st.enables.texture_2d[0] = case % 4 == 2;
+        st.enables.fog = case % 5 == 0;
+        // Small cells (many triangles of a pixel or two) or large ones.
+        let scale = if case % 2 == 0 { 0.02 } else { 0.6 };
+        *st.projection.top_mut() = Mat4::perspective_rh_gl(1.2, 1.5, 0.5, 20.0);
+        *st.modelview.top_mut() = Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0));
+        let mut b = Batch::default();
+        for _ in 0..12 {
+            let mode = modes[(rng.next() * modes.len() as f32) as usize % modes.len()];
+            let n = 3 + (rng.next() * 20.0) as usize;
+            b.begin(mode);
+            b.note_materials(&st.materials);
+            let (cx, cy) = (rng.range(-2.5, 2.5), rng.range(-2.0, 2.0));
+            for k in 0..n {
+                let p = Vec4::new(
+                    cx + scale * (k as f32 * 0.5 + rng.range(-1.0, 1.0)),
+                    cy + scale * rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 2.9) * if rng.next() < 0.1 { 2.0 } else { 1.0 },
+                    1.0,
+                );
+                let c = Current {
+                    color: Vec4::new(rng.next(), rng.next(), rng.next(), rng.next()),
+                    normal: Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0),
+                    tex_coords: [Vec4::new(rng.next(), rng.next(), 0.0, 1.0); 4],
+                    edge_flag: rng.next() < 0.8,
+                    ..Current::default()
+                };
+                b.vertex(p, &c);
+            }
+            b.end();
+        }
+        let layout = Layout::for_state(&st);
+        let tiles = (w.div_ceil(64) as usize, h.div_ceil(64) as usize);
+        let ctx = SetupCtx::new(&st, layout, scissor_rect(&st), tiles);
+        let (mut vout, mut wins) = (Vec::new(), Vec::new());
+        process_by(
+            &st,
+            &b,
+            &layout,
+            &ctx,
+            &mut vout,
+            &mut wins,
+            true,
+            Route::Baseline,
+        );
+        let run = |route| {
+            let mut wk = Worker::default();
+            wk.assemble_by(&ctx, &vout, &wins, &b, &b.prims, route);
+            wk
+        };
+        let (a, c) = (run(Route::Baseline), run(wide));
+        let fields = |wk: &Worker| {
+            wk.prims
+                .iter()
+                .map(|p| {
+                    (
+                        p.kind,
+                        p.flags,
+                        p.bbox,
+                        p.mat,
+                        p.voff,
+                        p.xy,
+                        p.owns,
+                        p.cover,
+                        p.z.map(super::lighting::nan_bits),
+                    )
+                })
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(fields(&a), fields(&c), "case {case}: primitives differ");
+        let bits = |wk: &Worker| {
+            wk.pool
+                .iter()
+                .map(|&v| super::lighting::nan_bits(v))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(bits(&a), bits(&c), "case {case}: pools differ");
+        assert_eq!(a.touched, c.touched, "case {case}");
+        for &t in &a.touched {
+            assert_eq!(
+                a.bins[t as usize], c.bins[t as usize],
+                "case {case}, tile {t}"
+            );
+        }
+        assert_eq!(a.area, c.area, "case {case}");
+        prims += a.prims.len();
+    }
+    assert!(prims > 5000, "only {prims} primitives compared");
+}
