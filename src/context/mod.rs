@@ -350,8 +350,38 @@ impl Context {
         }
     }
 
-    /// Executes every call of `calls` in order.
+    /// Executes every call of `calls` in order. The loop, with the hot calls `execute` inlines
+    /// (the immediate-mode vertex path and its batching), is compiled for the baseline or with
+    /// AVX2 by `Route::best`: the same code, so the same calls and pixels
+    /// (`both_replay_routes_draw_the_same_image` compares them).
     pub fn replay(&mut self, calls: &[Call]) {
+        self.replay_by(calls, crate::cpu::vertex::Route::best());
+    }
+
+    /// [`Context::replay`] by `route`.
+    pub(crate) fn replay_by(&mut self, calls: &[Call], route: crate::cpu::vertex::Route) {
+        #[cfg(target_arch = "x86_64")]
+        if route == crate::cpu::vertex::Route::Avx2 {
+            // SAFETY: `Route::Avx2` is chosen only where the CPU has AVX2.
+            unsafe { self.replay_avx2(calls) };
+            return;
+        }
+        let _ = route;
+        self.replay_body(calls);
+    }
+
+    /// [`Context::replay_body`] compiled with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn replay_avx2(&mut self, calls: &[Call]) {
+        self.replay_body(calls);
+    }
+
+    #[inline(always)]
+    fn replay_body(&mut self, calls: &[Call]) {
         for call in calls {
             self.execute(call);
         }
