@@ -630,8 +630,33 @@ impl FragCtx<'_> {
     /// span's window row and first and last pixel (all inside the tile): `smooth_row` of each.
     #[inline(never)]
     pub fn smooth_rows(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], rows: &[[i32; 3]]) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.smooth_rows_avx2(bufs, p, pl, rows) };
+            return;
+        }
         for &[y, x0, x1] in rows {
-            self.smooth_row(bufs, p, pl, y, x0, x1);
+            self.smooth_row::<false>(bufs, p, pl, y, x0, x1);
+        }
+    }
+
+    /// `smooth_rows` compiled for AVX2, each row's groups through
+    /// `lanes::smooth_depth_span_avx2` (the same bits as the SSE2 route).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn smooth_rows_avx2(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        pl: &[f32; 15],
+        rows: &[[i32; 3]],
+    ) {
+        for &[y, x0, x1] in rows {
+            self.smooth_row::<true>(bufs, p, pl, y, x0, x1);
         }
     }
 
@@ -640,7 +665,15 @@ impl FragCtx<'_> {
     /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
     /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
     #[inline(always)]
-    fn smooth_row(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], y: i32, x0: i32, x1: i32) {
+    fn smooth_row<const AVX2: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        pl: &[f32; 15],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
         let [w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay] = *pl;
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -662,16 +695,32 @@ impl FragCtx<'_> {
         let test = self
             .depth_test
             .then_some((self.depth_func, self.depth_mask));
-        let mask = super::lanes::smooth_depth_span(
+        let (color, depth) = (
             bufs.color.get_mut(base..).unwrap_or_default(),
             bufs.depth.get_mut(base..).unwrap_or_default(),
-            n,
-            x0 - ox,
-            zrow,
-            p.z[1],
-            test,
-            &co,
         );
+        #[cfg(target_arch = "x86_64")]
+        let mask = if AVX2 {
+            // SAFETY: `AVX2` is true only in `smooth_rows_avx2`, which runs where the CPU has
+            // AVX2.
+            unsafe {
+                super::lanes::smooth_depth_span_avx2(
+                    color,
+                    depth,
+                    n,
+                    x0 - ox,
+                    zrow,
+                    p.z[1],
+                    test,
+                    &co,
+                )
+            }
+        } else {
+            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let mask =
+            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co);
         if self.samples {
             bufs.samples += u64::from(mask.count_ones());
         }
