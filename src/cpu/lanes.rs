@@ -408,7 +408,18 @@ fn smooth_group(dst: &mut [[u8; 4]], m: u8, fx: &[f32; LANES], co: &[f32; 10]) {
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 pub(super) fn has_avx2() -> bool {
+    #[cfg(test)]
+    if NO_AVX2.with(|c| c.get()) {
+        return false;
+    }
     is_x86_feature_detected!("avx2") && is_x86_feature_detected!("popcnt")
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+thread_local! {
+    /// Tests: the AVX2 routes turned off on this thread (`has_avx2` false), to compare the
+    /// SSE2 routes with them.
+    pub(super) static NO_AVX2: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// `smooth_depth_span` with eight lanes a register (AVX2): the same operations in the same
