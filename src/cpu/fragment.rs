@@ -630,8 +630,33 @@ impl FragCtx<'_> {
     /// span's window row and first and last pixel (all inside the tile): `smooth_row` of each.
     #[inline(never)]
     pub fn smooth_rows(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], rows: &[[i32; 3]]) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.smooth_rows_avx2(bufs, p, pl, rows) };
+            return;
+        }
         for &[y, x0, x1] in rows {
-            self.smooth_row(bufs, p, pl, y, x0, x1);
+            self.smooth_row::<false>(bufs, p, pl, y, x0, x1);
+        }
+    }
+
+    /// `smooth_rows` compiled for AVX2, each row's groups through
+    /// `lanes::smooth_depth_span_avx2` (the same bits as the SSE2 route).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn smooth_rows_avx2(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        pl: &[f32; 15],
+        rows: &[[i32; 3]],
+    ) {
+        for &[y, x0, x1] in rows {
+            self.smooth_row::<true>(bufs, p, pl, y, x0, x1);
         }
     }
 
@@ -640,7 +665,15 @@ impl FragCtx<'_> {
     /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
     /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
     #[inline(always)]
-    fn smooth_row(&self, bufs: &mut TileBufs, p: &RPrim, pl: &[f32; 15], y: i32, x0: i32, x1: i32) {
+    fn smooth_row<const AVX2: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        pl: &[f32; 15],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
         let [w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay] = *pl;
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -662,16 +695,32 @@ impl FragCtx<'_> {
         let test = self
             .depth_test
             .then_some((self.depth_func, self.depth_mask));
-        let mask = super::lanes::smooth_depth_span(
+        let (color, depth) = (
             bufs.color.get_mut(base..).unwrap_or_default(),
             bufs.depth.get_mut(base..).unwrap_or_default(),
-            n,
-            x0 - ox,
-            zrow,
-            p.z[1],
-            test,
-            &co,
         );
+        #[cfg(target_arch = "x86_64")]
+        let mask = if AVX2 {
+            // SAFETY: `AVX2` is true only in `smooth_rows_avx2`, which runs where the CPU has
+            // AVX2.
+            unsafe {
+                super::lanes::smooth_depth_span_avx2(
+                    color,
+                    depth,
+                    n,
+                    x0 - ox,
+                    zrow,
+                    p.z[1],
+                    test,
+                    &co,
+                )
+            }
+        } else {
+            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let mask =
+            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co);
         if self.samples {
             bufs.samples += u64::from(mask.count_ones());
         }
@@ -689,6 +738,34 @@ impl FragCtx<'_> {
     /// and the masked store; each lane computes what one fragment's `color`, alpha times
     /// coverage, then `full` (or `depth` and `write`) computes.
     pub fn aa_rows(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], rows: &[[i32; 3]]) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.aa_rows_avx2(bufs, p, planes, rows) };
+            return;
+        }
+        self.aa_rows_in(bufs, p, planes, rows);
+    }
+
+    /// `aa_rows` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn aa_rows_avx2(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) {
+        self.aa_rows_in(bufs, p, planes, rows);
+    }
+
+    /// The body of `aa_rows`.
+    #[inline(always)]
+    fn aa_rows_in(&self, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], rows: &[[i32; 3]]) {
         use super::lanes::{depth_lanes, lane_x, lin_lanes, unorm8_lanes};
         use super::oplanes as ol;
         const ZERO: [f32; LANES] = [0.0; LANES];
@@ -1131,6 +1208,28 @@ impl FragCtx<'_> {
     /// alpha test): the stencil and depth tests and their writes alone, row by row.
     #[inline(never)]
     fn tests_rows(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.tests_rows_avx2(ops, bufs, p, rows) };
+            return;
+        }
+        self.tests_rows_in(ops, bufs, p, rows);
+    }
+
+    /// `tests_rows` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn tests_rows_avx2(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
+        self.tests_rows_in(ops, bufs, p, rows);
+    }
+
+    /// The body of `tests_rows`.
+    #[inline(always)]
+    fn tests_rows_in(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
         let ox = p.bbox[0];
         let side = ops
             .stencil
@@ -1160,6 +1259,43 @@ impl FragCtx<'_> {
     /// gives them; their planes looked up once per row), into eight rows.
     #[inline(never)]
     fn plain_rows(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.plain_rows_avx2(ops, bufs, p, planes, rows) };
+            return;
+        }
+        self.plain_rows_in(ops, bufs, p, planes, rows);
+    }
+
+    /// `plain_rows` compiled for AVX2 and POPCNT: the same operations (the lane code's SSE2
+    /// intrinsics VEX-encoded, no FMA), so the same bits.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn plain_rows_avx2(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) {
+        self.plain_rows_in(ops, bufs, p, planes, rows);
+    }
+
+    /// The body of `plain_rows`.
+    #[inline(always)]
+    fn plain_rows_in(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -1572,7 +1708,17 @@ mod tests {
         }
 
         /// The span on lanes and through the scalar sequence (see `draw`).
+        /// On x86-64 with AVX2 the lanes run twice, through the AVX2 routes and with them
+        /// turned off (`lanes::NO_AVX2`, the SSE2 routes), which must agree byte for byte.
         fn both(&self, f: &FragCtx, ops: &Ops, tile: &Tile, two: bool) -> [(Tile, u64); 2] {
+            #[cfg(target_arch = "x86_64")]
+            if crate::cpu::lanes::has_avx2() {
+                let avx2 = self.draw(f, ops, tile, two, true);
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(true));
+                let sse2 = self.draw(f, ops, tile, two, true);
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
+                assert!(avx2 == sse2, "the AVX2 and SSE2 routes differ");
+            }
             [true, false].map(|lanes| self.draw(f, ops, tile, two, lanes))
         }
     }

@@ -403,6 +403,185 @@ fn smooth_group(dst: &mut [[u8; 4]], m: u8, fx: &[f32; LANES], co: &[f32; 10]) {
     }
 }
 
+/// Whether the AVX2 routes may run (`smooth_depth_span_avx2`, `FragCtx::smooth_rows_avx2`):
+/// the CPU has AVX2 and POPCNT (std caches the detection).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn has_avx2() -> bool {
+    #[cfg(test)]
+    if NO_AVX2.with(|c| c.get()) {
+        return false;
+    }
+    is_x86_feature_detected!("avx2") && is_x86_feature_detected!("popcnt")
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+thread_local! {
+    /// Tests: the AVX2 routes turned off on this thread (`has_avx2` false), to compare the
+    /// SSE2 routes with them.
+    pub(super) static NO_AVX2: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// `smooth_depth_span` with eight lanes a register (AVX2): the same operations in the same
+/// order on each lane — `lane_x`'s `(fx0 + c) as f32 + l`, `lin_lanes`' `zrow + dz·x`,
+/// `depth_lanes`' clamp, scale, bias and truncation in double precision (`vcvtps2pd`,
+/// `vmaxpd`/`vminpd` with a NaN giving 0, `vcvttpd2dq`), `depth_group`'s unsigned compare
+/// and select, `smooth_group`'s `addps`/`mulps`/`divps` and `unorm8` conversion, assembled
+/// pixel-major and stored as a whole group (unwritten lanes stored back unchanged) — so the
+/// same bits. A depth or colour row shorter than a group takes the SSE2 route's per-lane
+/// code for that group.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn smooth_depth_span_avx2(
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+    n: usize,
+    fx0: i32,
+    zrow: f32,
+    dz: f32,
+    test: Option<(u32, bool)>,
+    co: &[f32; 10],
+) -> u64 {
+    use std::arch::x86_64::{
+        __m256, __m256i, _mm256_add_pd, _mm256_add_ps, _mm256_and_si256, _mm256_andnot_si256,
+        _mm256_castps256_ps128, _mm256_castps_si256, _mm256_castsi256_ps, _mm256_cmpeq_epi32,
+        _mm256_cmpgt_epi32, _mm256_cvtps_pd, _mm256_cvttpd_epi32, _mm256_div_ps,
+        _mm256_extractf128_ps, _mm256_loadu_si256, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd,
+        _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_si256,
+        _mm256_set1_epi32, _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128i, _mm256_setr_epi32,
+        _mm256_setr_ps, _mm256_setzero_pd, _mm256_setzero_ps, _mm256_setzero_si256,
+        _mm256_slli_epi32, _mm256_storeu_si256, _mm256_xor_si256,
+    };
+    let n = n.min(64);
+    let [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax] = *co;
+    let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+    let (k, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+    let low = _mm256_set1_epi32(0xFF);
+    let (zd, oned) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0));
+    let (kd, hd) = (_mm256_set1_pd(f64::from(DEPTH_MAX)), _mm256_set1_pd(0.5));
+    let (sign, ones) = (_mm256_set1_epi32(i32::MIN), _mm256_set1_epi32(-1));
+    // `o + d·x` on every lane.
+    macro_rules! lin {
+        ($o:expr, $d:expr, $x:expr) => {
+            _mm256_add_ps(_mm256_set1_ps($o), _mm256_mul_ps(_mm256_set1_ps($d), $x))
+        };
+    }
+    // `unorm8_lanes`' conversion: the byte in the low bits of each 32-bit lane.
+    macro_rules! conv {
+        ($c:expr) => {{
+            let c = _mm256_min_ps(_mm256_max_ps($c, zero), one);
+            _mm256_and_si256(
+                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), bias)),
+                low,
+            )
+        }};
+    }
+    // `depth_lanes`' conversion of four lanes.
+    macro_rules! depth4 {
+        ($z:expr) => {{
+            let z = _mm256_min_pd(_mm256_max_pd(_mm256_cvtps_pd($z), zd), oned);
+            _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, kd), hd))
+        }};
+    }
+    let mut out = 0u64;
+    let mut c = 0;
+    while c < n {
+        let left = n - c;
+        let mut m: u8 = if left >= LANES {
+            0xFF
+        } else {
+            (1u8 << left) - 1
+        };
+        let fx: __m256 = _mm256_add_ps(_mm256_set1_ps(fx0.wrapping_add(c as i32) as f32), iota);
+        if let Some((func, write)) = test {
+            let row = depth.get_mut(c..).unwrap_or_default();
+            if let Some(r) = row.get_mut(..LANES) {
+                let z = lin!(zrow, dz, fx);
+                let d = _mm256_set_m128i(
+                    depth4!(_mm256_extractf128_ps::<1>(z)),
+                    depth4!(_mm256_castps256_ps128(z)),
+                );
+                let rp = r.as_mut_ptr().cast::<__m256i>();
+                // SAFETY: `r` holds eight u32, 32 bytes (no alignment needed).
+                let s = unsafe { _mm256_loadu_si256(rp) };
+                let (a, b) = (_mm256_xor_si256(d, sign), _mm256_xor_si256(s, sign));
+                let pass = match func {
+                    crate::gl::NEVER => _mm256_setzero_si256(),
+                    crate::gl::LESS => _mm256_cmpgt_epi32(b, a),
+                    crate::gl::EQUAL => _mm256_cmpeq_epi32(a, b),
+                    crate::gl::LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), ones),
+                    crate::gl::GREATER => _mm256_cmpgt_epi32(a, b),
+                    crate::gl::NOTEQUAL => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), ones),
+                    crate::gl::GEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), ones),
+                    _ => ones,
+                };
+                let lv = _mm256_set1_epi32(i32::from(m));
+                let on = _mm256_cmpeq_epi32(_mm256_and_si256(lv, bits), bits);
+                let pass = _mm256_and_si256(pass, on);
+                if write {
+                    let v =
+                        _mm256_or_si256(_mm256_and_si256(pass, d), _mm256_andnot_si256(pass, s));
+                    // SAFETY: as the load above.
+                    unsafe { _mm256_storeu_si256(rp, v) };
+                }
+                m = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8;
+            } else {
+                // SAFETY: `__m256` has the layout of `[f32; 8]`.
+                let xs = unsafe { std::mem::transmute::<__m256, [f32; LANES]>(fx) };
+                let d = depth_lanes(lin_lanes(zrow, dz, &xs));
+                m = super::oplanes::depth_test(func, write, row, d, m);
+            }
+        }
+        if m != 0 {
+            let inv = _mm256_div_ps(one, lin!(w0, wx, fx));
+            macro_rules! ch {
+                ($o:expr, $d:expr) => {
+                    conv!(_mm256_mul_ps(lin!($o, $d, fx), inv))
+                };
+            }
+            let v = _mm256_or_si256(
+                _mm256_or_si256(ch!(r0, rx), _mm256_slli_epi32::<8>(ch!(g0, gx))),
+                _mm256_or_si256(
+                    _mm256_slli_epi32::<16>(ch!(b0, bx)),
+                    _mm256_slli_epi32::<24>(ch!(a0, ax)),
+                ),
+            );
+            let dst = color.get_mut(c..).unwrap_or_default();
+            if let Some(px) = dst.get_mut(..LANES) {
+                let lv = _mm256_set1_epi32(i32::from(m));
+                let sel = _mm256_cmpeq_epi32(_mm256_and_si256(lv, bits), bits);
+                let p = px.as_mut_ptr().cast::<__m256i>();
+                // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment
+                // needed).
+                unsafe {
+                    let old = _mm256_loadu_si256(p);
+                    let o =
+                        _mm256_or_si256(_mm256_andnot_si256(sel, old), _mm256_and_si256(sel, v));
+                    _mm256_storeu_si256(p, o);
+                }
+            } else {
+                // SAFETY: `__m256i` has the layout of `[u32; 8]`.
+                let v = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(v) };
+                for (l, px) in dst.iter_mut().take(LANES).enumerate() {
+                    if m & (1 << l) != 0 {
+                        *px = v[l].to_le_bytes();
+                    }
+                }
+            }
+            out |= u64::from(m) << c;
+        }
+        c += LANES;
+    }
+    out
+}
+
 /// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'
 /// lane kernels (texture λ).
 #[inline(always)]
@@ -1001,6 +1180,18 @@ mod tests {
                 .collect();
             let (mut color, mut depth) = (color0.clone(), depth0.clone());
             let got = smooth_depth_span(&mut color, &mut depth, n, fx0, zrow, dz, test, &co);
+            // The AVX2 route (where the CPU has it) against the SSE2 one, bit for bit.
+            #[cfg(target_arch = "x86_64")]
+            if has_avx2() {
+                let (mut c2, mut d2) = (color0.clone(), depth0.clone());
+                // SAFETY: the CPU has AVX2.
+                let m2 = unsafe {
+                    smooth_depth_span_avx2(&mut c2, &mut d2, n, fx0, zrow, dz, test, &co)
+                };
+                assert_eq!(m2, got, "avx2: n {n} test {test:?} co {co:?}");
+                assert_eq!(c2, color, "avx2: n {n} test {test:?} co {co:?} fx0 {fx0}");
+                assert_eq!(d2, depth, "avx2: n {n} test {test:?} zrow {zrow} dz {dz}");
+            }
             // `FragCtx::tri_span`'s fast path: the depth test over the span, then the colour
             // of each survivor, fragment by fragment.
             let (mut wcolor, mut wdepth) = (color0.clone(), depth0.clone());
