@@ -560,9 +560,17 @@ impl Sampler {
         let tx: &[[f32; 4]] = &v.texels;
         let (w, h) = (v.width, v.height);
         let dense = dense_level(tx, w, h).then_some(tx);
-        if let (None, Some(dt), Some(kind)) = (self.compare, dense, kernel_kind(linear, self.wrap))
-        {
-            return dense_kernel(kind, dt, w, h, s, t, m, out);
+        if let (Some(dt), Some(kind)) = (dense, kernel_kind(linear, self.wrap)) {
+            match self.compare {
+                None => return dense_kernel(kind, dt, w, h, s, t, m, out),
+                // A depth texture's NEAREST: the kernel's gather (the texels `pass_on` reads),
+                // then the comparison of each lane's one texel, as below.
+                Some(func) if !linear => {
+                    dense_kernel(kind, dt, w, h, s, t, m, out);
+                    return depth_compare_lanes(func, r, m, out);
+                }
+                Some(_) => {}
+            }
         }
         match self.compare {
             None => self.pass_on(linear, tx, dense, w, h, s, t, m, out, |_, t| t),

@@ -452,3 +452,66 @@ fn coherent_lanes_are_the_scalar_texel_bit_for_bit() {
     }
     assert!(checked.iter().all(|&n| n > 20_000), "{checked:?}");
 }
+
+/// A 2D depth texture of power-of-two size with NEAREST filters and a wrap mode the dense
+/// kernels take (REPEAT, CLAMP, CLAMP_TO_EDGE), comparison on with every function: the
+/// kernel's gather then `depth_compare_lanes` (`pass_level`), each lane the scalar texel bit
+/// for bit, over every coverage mask.
+#[test]
+fn dense_depth_nearest_is_the_scalar_texel_bit_for_bit() {
+    let mut next = lcg(59);
+    let mut checked = 0usize;
+    let funcs = [
+        gl::LEQUAL,
+        gl::GEQUAL,
+        gl::LESS,
+        gl::GREATER,
+        gl::EQUAL,
+        gl::NOTEQUAL,
+        gl::ALWAYS,
+        gl::NEVER,
+    ];
+    let wraps = [gl::REPEAT, gl::CLAMP, gl::CLAMP_TO_EDGE];
+    for round in 0..2000 {
+        let sizes = [1, 2, 4, 8, 16, 64];
+        let (w, h) = (sizes[(next() % 6) as usize], sizes[(next() % 6) as usize]);
+        let mut o = TexObject::new(gl::TEXTURE_2D);
+        // Depths in [0, 1] in steps of 1/1000, so that r often equals a texel.
+        o.levels[0] = Some(random_level(w, h, 1, gl::DEPTH_COMPONENT, &mut next));
+        o.min_filter = gl::NEAREST;
+        o.mag_filter = gl::NEAREST;
+        o.wrap_s = wraps[(next() % 3) as usize];
+        o.wrap_t = wraps[(next() % 3) as usize];
+        o.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+        o.compare_func = funcs[round % 8];
+        o.depth_texture_mode = gl::LUMINANCE;
+        let s = sampler_on(gl::TEXTURE_2D, o, gl::MODULATE, Default::default());
+        for _ in 0..6 {
+            let ([cs, ct, mut cr, cq], lambda) = random_lanes(&mut next);
+            if next() % 2 == 0 {
+                for r in &mut cr {
+                    *r = (next() % 1201) as f32 / 1000.0 - 0.1;
+                }
+            }
+            let m = (next() % 256) as u8;
+            let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+            for l in 0..LANES {
+                if m & (1 << l) == 0 {
+                    continue;
+                }
+                let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                assert!(
+                    same(got[l], want),
+                    "round {round} lane {l}: {:?} vs {want:?} ({}, {}, {}, {})",
+                    got[l],
+                    cs[l],
+                    ct[l],
+                    cr[l],
+                    cq[l]
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 40_000, "{checked}");
+}

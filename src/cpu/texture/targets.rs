@@ -184,6 +184,41 @@ impl Sampler {
         if m == 0 {
             return;
         }
+        // Whether every lane of `m` is on one (face, level), compared on all eight lanes at
+        // once (the common case): then one lookup, and the pass reads that one image with its
+        // sizes in registers (as the 2D passes' one-level route). Looking the level up per lane
+        // and filling the per-lane views cost ≈270 instructions a group on texture-targets.
+        let first = m.trailing_zeros() as usize & (LANES - 1);
+        let (f0, k0) = (face[first], lv[first]);
+        let mut other = 0u8;
+        for l in 0..LANES {
+            other |= u8::from(face[l] != f0 || lv[l] != k0) << l;
+        }
+        if other & m == 0 {
+            let Some(x) = self.obj.face_level(f0, k0) else {
+                for (l, o) in out.iter_mut().enumerate() {
+                    if m & (1 << l) != 0 {
+                        *o = [0.0; 4];
+                    }
+                }
+                return;
+            };
+            let tx: &[[f32; 4]] = &x.texels[..];
+            let n = [x.width, x.height, x.depth];
+            if dense3(tx, n) && self.in_image(linear) {
+                match self.compare {
+                    None => self.pass_dense(linear, tx, n, s, t, r, m, out, |_, x| x),
+                    Some(func) => self.pass_dense(linear, tx, n, s, t, r, m, out, |l, x| {
+                        depth_compare(func, r[l], x)
+                    }),
+                }
+            } else {
+                self.pass_targets_cmp(linear, tx, n, s, t, r, m, out)
+            }
+            return;
+        }
+        // The lanes on two or more (face, level) pairs: each lane's level, looked up once per
+        // run of equal pairs.
         let empty: &[[f32; 4]] = &[];
         let mut v = Views3 {
             tx: [empty; LANES],
@@ -192,10 +227,6 @@ impl Sampler {
             d: [1; LANES],
         };
         let mut have = 0u8;
-        // Whether every lane of `m` is on one (face, level): then the pass reads one image
-        // whose sizes the compiler keeps in registers (as the 2D passes' one-level route).
-        let mut uniform = true;
-        // The level of each lane, looked up once per run of equal (face, level).
         let mut cur: Option<(usize, i32, Option<&Level>)> = None;
         for l in 0..LANES {
             if m & (1 << l) == 0 {
@@ -204,7 +235,6 @@ impl Sampler {
             let level = match cur {
                 Some((f, k, x)) if f == face[l] && k == lv[l] => x,
                 _ => {
-                    uniform &= cur.is_none();
                     let x = self.obj.face_level(face[l], lv[l]);
                     cur = Some((face[l], lv[l], x));
                     x
@@ -221,23 +251,7 @@ impl Sampler {
         if m == 0 {
             return;
         }
-        match cur {
-            Some((_, _, Some(x))) if uniform => {
-                let tx: &[[f32; 4]] = &x.texels[..];
-                let n = [x.width, x.height, x.depth];
-                if dense3(tx, n) && self.in_image(linear) {
-                    match self.compare {
-                        None => self.pass_dense(linear, tx, n, s, t, r, m, out, |_, x| x),
-                        Some(func) => self.pass_dense(linear, tx, n, s, t, r, m, out, |l, x| {
-                            depth_compare(func, r[l], x)
-                        }),
-                    }
-                } else {
-                    self.pass_targets_cmp(linear, tx, n, s, t, r, m, out)
-                }
-            }
-            _ => self.pass_targets_cmp(linear, &v.tx, [&v.w, &v.h, &v.d], s, t, r, m, out),
-        }
+        self.pass_targets_cmp(linear, &v.tx, [&v.w, &v.h, &v.d], s, t, r, m, out)
     }
 
     /// Whether every index the wrap modes of this sampler's axes give lies inside the image
@@ -302,7 +316,19 @@ impl Sampler {
         let dims = self.dims;
         // ((k·h + j)·w + i) = k·(h·w) + j·w + i: the same value (below 2^31) in wrapping i32.
         let slab = h.wrapping_mul(w);
-        let at = |l: usize, k: i32| cmp(l, dt[k as usize & km]);
+        // The gathers (macros: as closures they were not always inlined, a call of ≈13
+        // instructions per texel).
+        macro_rules! at {
+            ($l:expr, $k:expr) => {{
+                let (l, k): (usize, i32) = ($l, $k);
+                cmp(l, dt[k as usize & km])
+            }};
+        }
+        macro_rules! tv {
+            ($l:expr, $k:expr) => {
+                Vec4::from_array(at!($l, $k))
+            };
+        }
         if !linear {
             let [(i, _), (j, _), (k, _)] = self.nearest_axes([s, t, r], [w, h, d]);
             for (l, o) in out.iter_mut().enumerate() {
@@ -311,19 +337,18 @@ impl Sampler {
                         .wrapping_mul(slab)
                         .wrapping_add(j[l].wrapping_mul(w))
                         .wrapping_add(i[l]);
-                    *o = at(l, n);
+                    *o = at!(l, n);
                 }
             }
             return;
         }
-        let tv = |l: usize, k: i32| Vec4::from_array(at(l, k));
         let x = wrap_linear_lanes(self.wrap[0], s, w);
         if dims == 1 {
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) == 0 {
                     continue;
                 }
-                let (t0, t1) = (tv(l, x.i0[l]), tv(l, x.i1[l]));
+                let (t0, t1) = (tv!(l, x.i0[l]), tv!(l, x.i1[l]));
                 let a = x.w[l];
                 // (1 - α)·t0 + α·t1.
                 *o = (Vec4::splat(1.0 - a) * t0 + Vec4::splat(a) * t1).to_array();
@@ -347,10 +372,10 @@ impl Sampler {
                     k0.wrapping_add(y.i0[l].wrapping_mul(w)),
                     k0.wrapping_add(y.i1[l].wrapping_mul(w)),
                 );
-                let t00 = tv(l, r0.wrapping_add(x.i0[l]));
-                let t10 = tv(l, r0.wrapping_add(x.i1[l]));
-                let t01 = tv(l, r1.wrapping_add(x.i0[l]));
-                let t11 = tv(l, r1.wrapping_add(x.i1[l]));
+                let t00 = tv!(l, r0.wrapping_add(x.i0[l]));
+                let t10 = tv!(l, r0.wrapping_add(x.i1[l]));
+                let t01 = tv!(l, r1.wrapping_add(x.i0[l]));
+                let t11 = tv!(l, r1.wrapping_add(x.i1[l]));
                 weigh(&wt, l, [t00, t10, t01, t11])
             }};
         }
