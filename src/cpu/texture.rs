@@ -1759,6 +1759,56 @@ fn dense_kernel(
     out: &mut TexelLanes,
 ) {
     #[cfg(target_arch = "x86_64")]
+    dense_kernel_on(avx2(), kind, dt, w, h, s, t, m, out);
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (kind, dt, w, h, s, t, m, out);
+    }
+}
+
+/// Does the CPU have AVX2 (for the eight-lane dense kernels)? `is_x86_feature_detected`
+/// caches the CPUID answer: a load and a bit test.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn avx2() -> bool {
+    is_x86_feature_detected!("avx2")
+}
+
+/// [`dense_kernel`] on the AVX2 kernels (`wide`: only where [`avx2`] holds) or the SSE2 ones.
+/// The AVX2 kernels ([`dense_nearest8`], [`dense_linear8`]) compute the SSE2 kernels'
+/// expressions on eight lanes at once, the LINEAR one gathering each channel of each corner
+/// for the eight lanes (`vgatherdps`, the indices j·w + i times four f32 a texel, so a level
+/// of at most 2^28 texels; larger ones take the SSE2 kernel).
+#[cfg(target_arch = "x86_64")]
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn dense_kernel_on(
+    wide: bool,
+    kind: u8,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    if wide && dt.len() <= 1 << 28 {
+        // SAFETY: the caller passes `wide` only when the CPU has AVX2 (`avx2`).
+        unsafe {
+            match kind {
+                0 => dense_nearest8::<false, false>(dt, w, h, s, t, m, out),
+                1 => dense_nearest8::<false, true>(dt, w, h, s, t, m, out),
+                2 => dense_nearest8::<true, false>(dt, w, h, s, t, m, out),
+                3 => dense_nearest8::<true, true>(dt, w, h, s, t, m, out),
+                4 => dense_linear8::<false, false>(dt, w, h, s, t, m, out),
+                5 => dense_linear8::<false, true>(dt, w, h, s, t, m, out),
+                6 => dense_linear8::<true, false>(dt, w, h, s, t, m, out),
+                _ => dense_linear8::<true, true>(dt, w, h, s, t, m, out),
+            }
+        }
+        return;
+    }
     match kind {
         0 => dense_nearest::<false, false>(dt, w, h, s, t, m, out),
         1 => dense_nearest::<false, true>(dt, w, h, s, t, m, out),
@@ -1768,10 +1818,6 @@ fn dense_kernel(
         5 => dense_linear::<false, true>(dt, w, h, s, t, m, out),
         6 => dense_linear::<true, false>(dt, w, h, s, t, m, out),
         _ => dense_linear::<true, true>(dt, w, h, s, t, m, out),
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        let _ = (kind, dt, w, h, s, t, m, out);
     }
 }
 
@@ -1998,6 +2044,227 @@ fn linear_half<const RX: bool, const RY: bool, const LO: usize>(
     lane!(1);
     lane!(2);
     lane!(3);
+}
+
+/// [`ifloor4`] on eight lanes (AVX2).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn ifloor8(v: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let t = _mm256_cvttps_epi32(v);
+    let big = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GE_OQ>(
+        v,
+        _mm256_set1_ps(2_147_483_648.0),
+    ));
+    let t = _mm256_or_si256(
+        _mm256_andnot_si256(big, t),
+        _mm256_and_si256(big, _mm256_set1_epi32(i32::MAX)),
+    );
+    let nan = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_UNORD_Q>(v, v));
+    let t = _mm256_andnot_si256(nan, t);
+    // -1 where (t as f32) > x and t is not i32::MIN.
+    let gt = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_cvtepi32_ps(t), v));
+    let at_min = _mm256_cmpeq_epi32(t, _mm256_set1_epi32(i32::MIN));
+    _mm256_add_epi32(t, _mm256_andnot_si256(at_min, gt))
+}
+
+/// [`wrap4`] on eight lanes (AVX2).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn wrap8<const REP: bool>(
+    i: std::arch::x86_64::__m256i,
+    nm1: std::arch::x86_64::__m256i,
+) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    if REP {
+        _mm256_and_si256(i, nm1)
+    } else {
+        let i = _mm256_and_si256(i, _mm256_cmpgt_epi32(i, _mm256_setzero_si256()));
+        let gt = _mm256_cmpgt_epi32(i, nm1);
+        _mm256_or_si256(_mm256_and_si256(gt, nm1), _mm256_andnot_si256(gt, i))
+    }
+}
+
+/// [`linear_axis4`] on eight lanes (AVX2).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn linear_axis8<const REP: bool>(
+    c: std::arch::x86_64::__m256,
+    n: i32,
+) -> (
+    std::arch::x86_64::__m256i,
+    std::arch::x86_64::__m256i,
+    std::arch::x86_64::__m256,
+) {
+    use std::arch::x86_64::*;
+    // u = s·n - 1/2, a NaN u taken as 0.
+    let u = _mm256_sub_ps(
+        _mm256_mul_ps(c, _mm256_set1_ps(n as f32)),
+        _mm256_set1_ps(0.5),
+    );
+    let u = _mm256_and_ps(u, _mm256_cmp_ps::<_CMP_ORD_Q>(u, u));
+    let i0 = ifloor8(u);
+    // (u - i0).clamp(0, 1) in `f32::clamp`'s order (a -0 stays -0).
+    let a = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i0));
+    let a = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), a));
+    // i0.saturating_add(1): i0 + 1, less 1 where i0 was i32::MAX.
+    let at_max = _mm256_cmpeq_epi32(i0, _mm256_set1_epi32(i32::MAX));
+    let i1 = _mm256_add_epi32(_mm256_add_epi32(i0, _mm256_set1_epi32(1)), at_max);
+    let nm1 = _mm256_set1_epi32(n - 1);
+    (wrap8::<REP>(i0, nm1), wrap8::<REP>(i1, nm1), a)
+}
+
+/// Eight lanes of `x` as one AVX register.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn lanes8(x: &[f32; LANES]) -> std::arch::x86_64::__m256 {
+    // SAFETY: `__m256` is eight f32 lanes in memory order, the layout of `[f32; 8]`.
+    unsafe { std::mem::transmute::<[f32; LANES], std::arch::x86_64::__m256>(*x) }
+}
+
+/// [`dense_nearest`] on eight lanes at once (AVX2): the same index per lane, each channel
+/// gathered for the eight lanes, the four channel registers transposed back to a texel per
+/// lane.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn dense_nearest8<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
+    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    // The f32 offset of each lane's texel: (k & km)·4 ([`dense_linear8`]).
+    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
+    let k = _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)));
+    let base = dt.as_ptr().cast::<f32>();
+    // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+    // 4·(dt.len() - 1) and c < 4, so every f32 read lies inside `dt`.
+    let ch: [__m256; 4] =
+        std::array::from_fn(|c| unsafe { _mm256_i32gather_ps::<4>(base.add(c), k) });
+    store8(&ch, m, out);
+}
+
+/// [`dense_linear`] on eight lanes at once (AVX2): the wraps and eq. 3.24's weights as
+/// [`linear_half`] computes them, then per channel the four corners' values gathered for the
+/// eight lanes and summed (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order, the
+/// four channel registers transposed back to a texel per lane.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn dense_linear8<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    let (x0, x1, a) = linear_axis8::<RX>(lanes8(s), w);
+    let (y0, y1, b) = linear_axis8::<RY>(lanes8(t), h);
+    let one = _mm256_set1_ps(1.0);
+    let (na, nb) = (_mm256_sub_ps(one, a), _mm256_sub_ps(one, b));
+    let wt = [
+        _mm256_mul_ps(na, nb),
+        _mm256_mul_ps(a, nb),
+        _mm256_mul_ps(na, b),
+        _mm256_mul_ps(a, b),
+    ];
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
+    // The f32 offset of each corner's texel: (k & km)·4, k & km being k (in-image indices
+    // are below the power-of-two count) and at most 2^28 - 1 (the caller's bound).
+    let kmv = _mm256_set1_epi32(km as i32);
+    let f = |k: __m256i| _mm256_slli_epi32::<2>(_mm256_and_si256(k, kmv));
+    let k = [
+        f(_mm256_add_epi32(r0, x0)),
+        f(_mm256_add_epi32(r0, x1)),
+        f(_mm256_add_epi32(r1, x0)),
+        f(_mm256_add_epi32(r1, x1)),
+    ];
+    let base = dt.as_ptr().cast::<f32>();
+    let mut ch = [_mm256_setzero_ps(); 4];
+    for (c, v) in ch.iter_mut().enumerate() {
+        // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+        // 4·(dt.len() - 1) and c < 4, so every f32 read lies inside `dt`.
+        let at = |q: usize| unsafe { _mm256_i32gather_ps::<4>(base.add(c), k[q]) };
+        let x = _mm256_add_ps(_mm256_mul_ps(wt[0], at(0)), _mm256_mul_ps(wt[1], at(1)));
+        let x = _mm256_add_ps(x, _mm256_mul_ps(wt[2], at(2)));
+        *v = _mm256_add_ps(x, _mm256_mul_ps(wt[3], at(3)));
+    }
+    store8(&ch, m, out);
+}
+
+/// Eight texels whose channels are `ch` (channel-major, a lane each) into `out`, lane-major:
+/// the lanes of `m` written, the others left as they were.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn store8(ch: &[std::arch::x86_64::__m256; 4], m: u8, out: &mut TexelLanes) {
+    use std::arch::x86_64::*;
+    // Transposed: p[q] holds lane q's texel in its low half, lane q + 4's in its high half.
+    let (t0, t1) = (
+        _mm256_unpacklo_ps(ch[0], ch[1]),
+        _mm256_unpackhi_ps(ch[0], ch[1]),
+    );
+    let (t2, t3) = (
+        _mm256_unpacklo_ps(ch[2], ch[3]),
+        _mm256_unpackhi_ps(ch[2], ch[3]),
+    );
+    let p = [
+        _mm256_shuffle_ps::<0x44>(t0, t2),
+        _mm256_shuffle_ps::<0xEE>(t0, t2),
+        _mm256_shuffle_ps::<0x44>(t1, t3),
+        _mm256_shuffle_ps::<0xEE>(t1, t3),
+    ];
+    // SAFETY: `__m128` is four f32 lanes in memory order, the layout of `[f32; 4]`, and
+    // `__m256` eight, the layout of `[[f32; 4]; 2]`.
+    unsafe {
+        let pair = |v: __m256| std::mem::transmute::<__m256, [[f32; 4]; 2]>(v);
+        if m == 0xff {
+            [out[0], out[1]] = pair(_mm256_permute2f128_ps::<0x20>(p[0], p[1]));
+            [out[2], out[3]] = pair(_mm256_permute2f128_ps::<0x20>(p[2], p[3]));
+            [out[4], out[5]] = pair(_mm256_permute2f128_ps::<0x31>(p[0], p[1]));
+            [out[6], out[7]] = pair(_mm256_permute2f128_ps::<0x31>(p[2], p[3]));
+            return;
+        }
+        for (q, v) in p.iter().enumerate() {
+            let [lo, hi] = pair(*v);
+            if m & (1 << q) != 0 {
+                out[q] = lo;
+            }
+            if m & (1 << (q + 4)) != 0 {
+                out[q + 4] = hi;
+            }
+        }
+    }
 }
 
 /// Are all of `n` (each taken as at least 1) powers of two?

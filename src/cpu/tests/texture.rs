@@ -1104,9 +1104,11 @@ fn ifloor_lanes_is_ifloor() {
 }
 
 #[test]
+#[cfg(target_arch = "x86_64")]
 fn dense_kernels_are_the_lane_pass_bit_for_bit() {
-    // `dense_kernel` (the SSE2 NEAREST and LINEAR kernels of a whole power-of-two level)
-    // against `pass_on`'s lane loops on the same level, and against the scalar `texel`, on
+    // `dense_kernel` (the NEAREST and LINEAR kernels of a whole power-of-two level: SSE2,
+    // and AVX2 where the CPU has it, each route run on its own) against `pass_on`'s lane
+    // loops on the same level, and against the scalar `texel`, on
     // every wrap pair `kernel_kind` takes (and none it refuses), levels from 1x1 to 64x32,
     // coordinates with NaN, infinities, signed zeros, subnormals, huge values, texel centres
     // and edges, random masks: the same bits on the lanes of the mask, and the lanes outside it
@@ -1146,7 +1148,7 @@ fn dense_kernels_are_the_lane_pass_bit_for_bit() {
         f32::MAX,
         f32::MIN,
     ];
-    let (mut taken, mut refused) = (0, 0);
+    let (mut taken, mut refused, mut wide_runs) = (0, 0, 0usize);
     for round in 0..3000 {
         let (w, h) = sizes[round % sizes.len()];
         let linear = round / sizes.len() % 2 == 1;
@@ -1187,15 +1189,28 @@ fn dense_kernels_are_the_lane_pass_bit_for_bit() {
             let (mut got, mut want) = ([fill; LANES], [fill; LANES]);
             dense_kernel(kind, tx, w, h, &cs, &ct, m, &mut got);
             smp.pass_on(linear, tx, Some(tx), w, h, &cs, &ct, m, &mut want, |_, t| t);
+            // Both routes: the SSE2 kernels, and the AVX2 ones where the CPU has AVX2.
+            let mut routes = vec![("any", got)];
+            for wide in [false, true] {
+                if wide && !avx2() {
+                    continue;
+                }
+                let mut o = [fill; LANES];
+                dense_kernel_on(wide, kind, tx, w, h, &cs, &ct, m, &mut o);
+                routes.push((if wide { "avx2" } else { "sse2" }, o));
+                wide_runs += usize::from(wide);
+            }
             for l in 0..LANES {
                 let bits = |t: [f32; 4]| t.map(f32::to_bits);
-                assert_eq!(
-                    bits(got[l]),
-                    bits(want[l]),
-                    "round {round} {w}x{h} kind {kind} lane {l} m {m:#x}: ({}, {})",
-                    cs[l],
-                    ct[l]
-                );
+                for (name, got) in &routes {
+                    assert_eq!(
+                        bits(got[l]),
+                        bits(want[l]),
+                        "round {round} {w}x{h} kind {kind} {name} lane {l} m {m:#x}: ({}, {})",
+                        cs[l],
+                        ct[l]
+                    );
+                }
                 if m & (1 << l) != 0 {
                     let scalar = smp.texel([cs[l], ct[l], 0.0, 1.0], 0.0);
                     assert_eq!(bits(got[l]), bits(scalar), "round {round} lane {l}");
@@ -1205,4 +1220,5 @@ fn dense_kernels_are_the_lane_pass_bit_for_bit() {
         }
     }
     assert!(taken > 40_000 && refused > 500, "{taken} {refused}");
+    assert!(!avx2() || wide_runs > 10_000, "{wide_runs}");
 }
