@@ -403,7 +403,8 @@ fn smooth_group(dst: &mut [[u8; 4]], m: u8, fx: &[f32; LANES], co: &[f32; 10]) {
     }
 }
 
-/// Whether the AVX2 routes may run (`smooth_depth_span_avx2`, `FragCtx::smooth_rows_avx2`):
+/// Whether the AVX2 routes may run (`smooth_depth_span_avx2`, `FragCtx::smooth_rows_avx2`,
+/// the sampler's eight-lane dense kernels):
 /// the CPU has AVX2 and POPCNT (std caches the detection).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]

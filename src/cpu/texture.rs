@@ -1766,12 +1766,13 @@ fn dense_kernel(
     }
 }
 
-/// Does the CPU have AVX2 (for the eight-lane dense kernels)? `is_x86_feature_detected`
-/// caches the CPUID answer: a load and a bit test.
+/// May the eight-lane dense kernels run? The fragment stage's one answer
+/// ([`super::lanes::has_avx2`]: AVX2 on this CPU, and in tests not switched off on this
+/// thread), so that every AVX2 route of a span is on or off together.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn avx2() -> bool {
-    is_x86_feature_detected!("avx2")
+    super::lanes::has_avx2()
 }
 
 /// [`dense_kernel`] on the AVX2 kernels (`wide`: only where [`avx2`] holds) or the SSE2 ones.
