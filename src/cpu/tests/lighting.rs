@@ -313,18 +313,19 @@ fn material_change_inside_begin_end_applies_from_the_next_vertex() {
     assert_eq!(px(&mut r, 6, 6)[..3], [0, 0, 255]);
 }
 
-/// A small deterministic generator for the property tests below (xorshift32), in [0, 1).
-struct Rng(u32);
+/// A small deterministic generator for the property tests below and `routes`'s (xorshift32),
+/// in [0, 1).
+pub(super) struct Rng(pub(super) u32);
 
 impl Rng {
-    fn next(&mut self) -> f32 {
+    pub(super) fn next(&mut self) -> f32 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 17;
         self.0 ^= self.0 << 5;
         (self.0 >> 8) as f32 / (1u32 << 24) as f32
     }
 
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+    pub(super) fn range(&mut self, lo: f32, hi: f32) -> f32 {
         lo + (hi - lo) * self.next()
     }
 

@@ -11,21 +11,7 @@ use crate::cpu::vertex::{process_by, Layout, Route};
 use crate::gl;
 use crate::state::{Current, State};
 
-/// A small deterministic generator (xorshift32), in [0, 1).
-struct Rng(u32);
-
-impl Rng {
-    fn next(&mut self) -> f32 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 17;
-        self.0 ^= self.0 << 5;
-        (self.0 >> 8) as f32 / (1u32 << 24) as f32
-    }
-
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * self.next()
-    }
-}
+use super::lighting::Rng;
 
 /// Random strips, fans, triangles, quads and polygons (some crossing the view volume's planes,
 /// so that clipping runs, many a pixel or two wide, so that the 2x2 coverage runs) under random
