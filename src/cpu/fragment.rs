@@ -450,6 +450,44 @@ impl FragCtx<'_> {
         x0: i32,
         x1: i32,
     ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.tri_span_avx2(bufs, p, planes, y, x0, x1) };
+            return;
+        }
+        self.tri_span_in(bufs, p, planes, y, x0, x1);
+    }
+
+    /// `tri_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn tri_span_avx2(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
+        self.tri_span_in(bufs, p, planes, y, x0, x1);
+    }
+
+    /// The body of `tri_span`.
+    #[inline(always)]
+    fn tri_span_in(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        y: i32,
+        x0: i32,
+        x1: i32,
+    ) {
         if p.flags & (F_AAPOINT | F_AALINE) != 0 {
             return self.aa_rows(bufs, p, planes, &[[y, x0, x1]]);
         }
@@ -1403,6 +1441,54 @@ impl FragCtx<'_> {
     #[inline(never)]
     #[allow(clippy::too_many_arguments)]
     fn tex_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+        live: u64,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.tex_span_avx2(ops, bufs, p, planes, fy, zrow, base, x0, n, live) };
+            return;
+        }
+        self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+    }
+
+    /// `tex_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn tex_span_avx2(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fy: f32,
+        zrow: f32,
+        base: usize,
+        x0: i32,
+        n: usize,
+        live: u64,
+    ) {
+        self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+    }
+
+    /// The body of `tex_span`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn tex_span_in(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
