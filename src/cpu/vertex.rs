@@ -585,32 +585,15 @@ pub enum Route {
 }
 
 impl Route {
-    /// AVX2 where the CPU has it (detected once), else the baseline.
+    /// AVX2 where the CPU has it, else the baseline (std caches the detection: a load and a
+    /// bit test).
     #[inline]
     pub fn best() -> Self {
         #[cfg(target_arch = "x86_64")]
-        {
-            use std::sync::atomic::{AtomicU8, Ordering};
-            // 0: not checked yet, 1: AVX2, 2: baseline.
-            static ROUTE: AtomicU8 = AtomicU8::new(0);
-            match ROUTE.load(Ordering::Relaxed) {
-                1 => Route::Avx2,
-                2 => Route::Baseline,
-                _ => {
-                    let avx2 = is_x86_feature_detected!("avx2");
-                    ROUTE.store(if avx2 { 1 } else { 2 }, Ordering::Relaxed);
-                    if avx2 {
-                        Route::Avx2
-                    } else {
-                        Route::Baseline
-                    }
-                }
-            }
+        if is_x86_feature_detected!("avx2") {
+            return Route::Avx2;
         }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            Route::Baseline
-        }
+        Route::Baseline
     }
 }
 
