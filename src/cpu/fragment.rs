@@ -520,6 +520,11 @@ impl FragCtx<'_> {
         if self.samples {
             bufs.samples += u64::from(mask.count_ones());
         }
+        // ColorMask all false (a depth-only pass, as a shadow map's first pass): the depth test
+        // above wrote what this span writes; its colours would be computed to be thrown away.
+        if self.color_mask == [false; 4] && !self.count {
+            return;
+        }
         // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
         let nv = self.rl.n;
         let nflat = if p.flags & F_FLAT != 0 {
