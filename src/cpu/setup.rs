@@ -585,8 +585,53 @@ impl Worker {
     }
 
     /// Sets up `asm` (indices into `vout`; `wins` the vertices' clip codes and window
-    /// coordinates, `mats` their material indices).
+    /// coordinates, `mats` their material indices), compiled for the baseline or with AVX2 by
+    /// `Route::best` as [`Worker::assemble_and_run`] is (the same code, so the same
+    /// primitives; `both_routes_set_up_the_same_primitives` compares them).
     pub fn run(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
+        self.run_by(ctx, vout, wins, mats, asm, Route::best());
+    }
+
+    /// [`Worker::run`] by `route`.
+    pub(super) fn run_by(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        asm: &[Asm],
+        route: Route,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if route == Route::Avx2 {
+            // SAFETY: `Route::Avx2` is chosen only where the CPU has AVX2.
+            unsafe { self.run_avx2(ctx, vout, wins, mats, asm) };
+            return;
+        }
+        let _ = route;
+        self.run_body(ctx, vout, wins, mats, asm);
+    }
+
+    /// [`Worker::run_body`] compiled with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_avx2(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        asm: &[Asm],
+    ) {
+        self.run_body(ctx, vout, wins, mats, asm);
+    }
+
+    /// Sets up `asm`.
+    #[inline(always)]
+    fn run_body(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
         self.start(ctx);
         for p in asm {
             self.one(ctx, vout, wins, mats, p);

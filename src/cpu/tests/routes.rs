@@ -101,6 +101,16 @@ fn both_routes_set_up_the_same_primitives() {
             wk
         };
         let (a, c) = (run(Route::Baseline), run(wide));
+        // The same triangles assembled first and set up by `run` (the route a flush takes
+        // when one primitive dominates): the same primitives again, by both routes.
+        let mut asm = Vec::new();
+        crate::cpu::assembly::assemble(&b.prims, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+        let run_asm = |route| {
+            let mut wk = Worker::default();
+            wk.run_by(&ctx, &vout, &wins, &b.mat, &asm, route);
+            wk
+        };
+        let (d, e) = (run_asm(Route::Baseline), run_asm(wide));
         let fields = |wk: &Worker| {
             wk.prims
                 .iter()
@@ -120,21 +130,25 @@ fn both_routes_set_up_the_same_primitives() {
                 .collect::<Vec<_>>()
         };
         assert_eq!(fields(&a), fields(&c), "case {case}: primitives differ");
+        assert_eq!(fields(&a), fields(&d), "case {case}: run's primitives differ");
+        assert_eq!(fields(&a), fields(&e), "case {case}: run's primitives differ (route)");
         let bits = |wk: &Worker| {
             wk.pool
                 .iter()
                 .map(|&v| super::lighting::nan_bits(v))
                 .collect::<Vec<_>>()
         };
-        assert_eq!(bits(&a), bits(&c), "case {case}: pools differ");
-        assert_eq!(a.touched, c.touched, "case {case}");
-        for &t in &a.touched {
-            assert_eq!(
-                a.bins[t as usize], c.bins[t as usize],
-                "case {case}, tile {t}"
-            );
+        for (o, name) in [(&c, "route"), (&d, "run"), (&e, "run by route")] {
+            assert_eq!(bits(&a), bits(o), "case {case}: pools differ ({name})");
+            assert_eq!(a.touched, o.touched, "case {case} ({name})");
+            for &t in &a.touched {
+                assert_eq!(
+                    a.bins[t as usize], o.bins[t as usize],
+                    "case {case}, tile {t} ({name})"
+                );
+            }
+            assert_eq!(a.area, o.area, "case {case} ({name})");
         }
-        assert_eq!(a.area, c.area, "case {case}");
         prims += a.prims.len();
     }
     assert!(prims > 5000, "only {prims} primitives compared");
