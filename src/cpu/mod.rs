@@ -427,10 +427,17 @@ impl Renderer {
     /// the batch was specified under is still current. The draw runs in the background on the
     /// thread pool while the front end fills the next batch (see the module docs); it keeps
     /// the batch (and its memory) bounded and cache-warm without changing the result.
+    #[inline(always)]
     pub fn flush_if_large(&mut self, state: &State) {
-        if self.batch.idx.len() < FLUSH_AT {
-            return;
+        // The test alone inline (it runs at every End); the draw out of line.
+        if self.batch.idx.len() >= FLUSH_AT {
+            self.flush_large(state);
         }
+    }
+
+    /// [`Renderer::flush_if_large`]'s draw of a large batch.
+    #[inline(never)]
+    fn flush_large(&mut self, state: &State) {
         if state.render_mode != crate::gl::RENDER {
             return self.flush(state);
         }

@@ -52,6 +52,19 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
     if let Some(pl) = ctx.smooth_planes(bufs, p, planes) {
+        if p.cover & COVER_KNOWN != 0 {
+            // At most 2x2 pixels (a dense mesh's usual triangle): at most two rows, the same
+            // ones the general gathering below hands over in one call, without its sixteen.
+            let mut rows = [[0i32; 3]; 2];
+            let mut k = 0;
+            spans(p, r, |y, l, h| {
+                if let Some(row) = rows.get_mut(k) {
+                    *row = [y, l, h];
+                    k += 1;
+                }
+            });
+            return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
+        }
         // Smooth colour and the depth test alone: decided here once; the rows are gathered
         // (sixteen at a time) and shaded in one call, which keeps what depends on the
         // primitive alone in registers (a call per span paid its set-up every time).

@@ -130,8 +130,16 @@ fn both_routes_set_up_the_same_primitives() {
                 .collect::<Vec<_>>()
         };
         assert_eq!(fields(&a), fields(&c), "case {case}: primitives differ");
-        assert_eq!(fields(&a), fields(&d), "case {case}: run's primitives differ");
-        assert_eq!(fields(&a), fields(&e), "case {case}: run's primitives differ (route)");
+        assert_eq!(
+            fields(&a),
+            fields(&d),
+            "case {case}: run's primitives differ"
+        );
+        assert_eq!(
+            fields(&a),
+            fields(&e),
+            "case {case}: run's primitives differ (route)"
+        );
         let bits = |wk: &Worker| {
             wk.pool
                 .iter()
