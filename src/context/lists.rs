@@ -40,6 +40,9 @@ pub(crate) struct DisplayLists {
     pub(crate) compiling: Option<Compiling>,
     /// How many CallList levels are executing now (0: the caller's own calls).
     pub(crate) depth: u32,
+    /// Lists run on the baseline route even where the CPU has AVX2 (`Context::replay_by`
+    /// with `Route::Baseline` sets it, so that the routes test compares the lists' loop too).
+    pub(crate) baseline: bool,
 }
 
 /// A list being defined.
@@ -344,7 +347,46 @@ impl Context {
     }
 
     /// Executes list `name` one nesting level down (GL 2.1 §5.4), recording nothing of it.
+    /// The loop, with the hot calls `execute_in_list` inlines (the vertex path and its
+    /// batching), is compiled for the baseline or with AVX2 by `Route::best`, as
+    /// `Context::replay` is: the same code, so the same calls and pixels
+    /// (`both_replay_routes_draw_the_same_image`).
     fn run_list(&mut self, name: u32) {
+        #[cfg(target_arch = "x86_64")]
+        if !self.lists.baseline
+            && crate::cpu::vertex::Route::best() == crate::cpu::vertex::Route::Avx2
+        {
+            // SAFETY: `Route::Avx2` is chosen only where the CPU has AVX2.
+            unsafe { self.run_list_avx2(name) };
+            return;
+        }
+        self.run_list_body(name);
+    }
+
+    /// [`Context::run_list_body`] compiled with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_list_avx2(&mut self, name: u32) {
+        self.run_list_body(name);
+    }
+
+    /// [`Context::execute`] with what a display list of GLUT meshes holds inlined too (kept
+    /// out of `execute` itself: more arms there made the replay loop's dispatch dearer).
+    #[inline(always)]
+    fn execute_in_list(&mut self, call: &Call) {
+        match *call {
+            Call::Vertex3fv(ref v) => self.vertex3fv(v),
+            Call::Normal3fv(ref v) => self.normal3fv(v),
+            Call::TexCoord2fv(ref v) => self.tex_coord2fv(v),
+            _ => self.execute(call),
+        }
+    }
+
+    #[inline(always)]
+    fn run_list_body(&mut self, name: u32) {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
@@ -356,7 +398,7 @@ impl Context {
         let mut i = 0;
         while let Some(call) = list.calls.get(i) {
             let Some(&&(first, end)) = draws.peek().filter(|&&&(first, _)| first == i) else {
-                self.execute(call);
+                self.execute_in_list(call);
                 i += 1;
                 continue;
             };
@@ -368,7 +410,7 @@ impl Context {
             } else {
                 let kept = (self.state.current, self.state.materials);
                 for call in list.calls.get(first..end).unwrap_or(&[]) {
-                    self.execute(call);
+                    self.execute_in_list(call);
                 }
                 (self.state.current, self.state.materials) = kept;
             }

@@ -367,7 +367,10 @@ impl Context {
             return;
         }
         let _ = route;
+        // Lists called from `calls` follow the route too (for the routes test).
+        self.lists.baseline = true;
         self.replay_body(calls);
+        self.lists.baseline = false;
     }
 
     /// [`Context::replay_body`] compiled with AVX2.
