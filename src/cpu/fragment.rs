@@ -1173,6 +1173,55 @@ impl FragCtx<'_> {
         m
     }
 
+    /// `tests_group` of the group whose first lane is at x offset `fx0`, with the eight-lane
+    /// AVX2 depth test (`oplanes::avx2::depth_test`) where `AVX2` and no stencil test.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn tests_group_on<const AVX2: bool>(
+        &self,
+        side: Option<&super::fragops::StencilSide>,
+        bufs: &mut TileBufs,
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+        i0: usize,
+        m: u8,
+    ) -> u8 {
+        use super::lanes::{depth_lanes, lane_x, lin_lanes};
+        use super::oplanes as ol;
+        let d = || {
+            if self.depth_test {
+                depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0)))
+            } else {
+                [0; LANES]
+            }
+        };
+        let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
+        let m = match side {
+            Some(side) => {
+                let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                let depth = self
+                    .depth_test
+                    .then_some((self.depth_func, self.depth_mask));
+                ol::stencil_depth(side, depth, st, dp, d(), m)
+            }
+            #[cfg(target_arch = "x86_64")]
+            None if AVX2 && self.depth_test => {
+                // SAFETY: `AVX2` is true only in `plain_rows_avx2` and `tests_rows_avx2`,
+                // which run where the CPU has AVX2.
+                unsafe {
+                    ol::avx2::depth_test(self.depth_func, self.depth_mask, dp, zrow, dz, fx0, m)
+                }
+            }
+            None if self.depth_test => ol::depth_test(self.depth_func, self.depth_mask, dp, d(), m),
+            None => m,
+        };
+        if self.samples {
+            bufs.samples += u64::from(m.count_ones());
+        }
+        m
+    }
+
     /// The fog (§3.10), conversion to unorm8 and colour write (`write_group`) of a group's
     /// survivors `m`, clamped colour `rgb`, `a`, fog coordinates `coord`, at tile index `i0`.
     #[inline(always)]
@@ -1187,41 +1236,73 @@ impl FragCtx<'_> {
         i0: usize,
         m: u8,
     ) {
+        self.finish_group_on::<false>(ops, bufs, rgb, a, coord, i0, m);
+    }
+
+    /// `finish_group` with the eight-lane AVX2 kernels (`oplanes::avx2`) where `AVX2`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn finish_group_on<const AVX2: bool>(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        rgb: &mut [[f32; LANES]; 3],
+        a: [f32; LANES],
+        coord: [f32; LANES],
+        i0: usize,
+        m: u8,
+    ) {
         use super::lanes::unorm8_lanes;
         use super::oplanes as ol;
+        // The eight-lane kernels where `AVX2` (true only in `plain_rows_avx2`, which runs where
+        // the CPU has AVX2: the SAFETY of each call), else the SSE2 ones.
+        macro_rules! k {
+            ($f:ident($($arg:expr),* $(,)?)) => {{
+                #[cfg(target_arch = "x86_64")]
+                let r = if AVX2 {
+                    // SAFETY: see above.
+                    unsafe { ol::avx2::$f($($arg),*) }
+                } else {
+                    ol::$f($($arg),*)
+                };
+                #[cfg(not(target_arch = "x86_64"))]
+                let r = ol::$f($($arg),*);
+                r
+            }};
+        }
         // Fog (§3.10) changes only R, G and B, which nothing before the colour write
         // reads (the alpha test reads alpha): it runs on the survivors alone, so EXP and
         // EXP2 call `expf` only for fragments that are written.
         if let Some(f) = &ops.fog {
-            ol::fog(f, rgb, coord, m);
+            k!(fog(f, rgb, coord, m));
         }
         if !self.count {
             if let ColorWrite::Replace = ops.write {
                 // Straight to the pixels: each lane's four bytes assembled in its 32-bit lane
                 // (the copy of the channel-major bytes was taken apart byte by byte, ≈130
                 // instructions a group).
-                ol::store_unorm8(
+                k!(store_unorm8(
                     bufs.color.get_mut(i0..).unwrap_or_default(),
                     rgb,
                     &a,
                     m,
                     self.color_mask,
-                );
+                ));
                 if let Some(c2) = bufs.color2.as_deref_mut() {
                     let row = c2.get_mut(i0..).unwrap_or_default();
-                    ol::store_unorm8(row, rgb, &a, m, self.color_mask);
+                    k!(store_unorm8(row, rgb, &a, m, self.color_mask));
                 }
                 return;
             }
             if let ColorWrite::Blend(b) = &ops.write {
                 // SRC_ALPHA, ONE_MINUS_SRC_ALPHA and ONE, ONE stay pixel-major too.
                 let row = bufs.color.get_mut(i0..).unwrap_or_default();
-                if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                if k!(blend_unorm8(b, row, rgb, &a, m, self.color_mask)) {
                     match bufs.color2.as_deref_mut() {
                         None => return,
                         Some(c2) => {
                             let row = c2.get_mut(i0..).unwrap_or_default();
-                            if ol::blend_unorm8(b, row, rgb, &a, m, self.color_mask) {
+                            if k!(blend_unorm8(b, row, rgb, &a, m, self.color_mask)) {
                                 return;
                             }
                             // (A short second row: it takes the general route alone.)
@@ -1257,7 +1338,7 @@ impl FragCtx<'_> {
             unsafe { self.tests_rows_avx2(ops, bufs, p, rows) };
             return;
         }
-        self.tests_rows_in(ops, bufs, p, rows);
+        self.tests_rows_in::<false>(ops, bufs, p, rows);
     }
 
     /// `tests_rows` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
@@ -1267,12 +1348,18 @@ impl FragCtx<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     unsafe fn tests_rows_avx2(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
-        self.tests_rows_in(ops, bufs, p, rows);
+        self.tests_rows_in::<true>(ops, bufs, p, rows);
     }
 
     /// The body of `tests_rows`.
     #[inline(always)]
-    fn tests_rows_in(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
+    fn tests_rows_in<const AVX2: bool>(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        rows: &[[i32; 3]],
+    ) {
         let ox = p.bbox[0];
         let side = ops
             .stencil
@@ -1287,8 +1374,15 @@ impl FragCtx<'_> {
             while c < n {
                 let m = ((live >> c) & 0xFF) as u8;
                 if m != 0 {
-                    let fx = super::lanes::lane_x(x0 - ox + c as i32);
-                    self.tests_group(side, bufs, zrow, dz, &fx, base + c, m);
+                    self.tests_group_on::<AVX2>(
+                        side,
+                        bufs,
+                        zrow,
+                        dz,
+                        x0 - ox + c as i32,
+                        base + c,
+                        m,
+                    );
                 }
                 c += LANES;
             }
@@ -1315,7 +1409,7 @@ impl FragCtx<'_> {
             unsafe { self.plain_rows_avx2(ops, bufs, p, planes, rows) };
             return;
         }
-        self.plain_rows_in(ops, bufs, p, planes, rows);
+        self.plain_rows_in::<false>(ops, bufs, p, planes, rows);
     }
 
     /// `plain_rows` compiled for AVX2 and POPCNT: the same operations (the lane code's SSE2
@@ -1333,12 +1427,12 @@ impl FragCtx<'_> {
         planes: &[f32],
         rows: &[[i32; 3]],
     ) {
-        self.plain_rows_in(ops, bufs, p, planes, rows);
+        self.plain_rows_in::<true>(ops, bufs, p, planes, rows);
     }
 
     /// The body of `plain_rows`.
     #[inline(always)]
-    fn plain_rows_in(
+    fn plain_rows_in<const AVX2: bool>(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -1346,7 +1440,7 @@ impl FragCtx<'_> {
         planes: &[f32],
         rows: &[[i32; 3]],
     ) {
-        use super::lanes::{lane_x, RowVaryings};
+        use super::lanes::RowVaryings;
         use super::oplanes as ol;
         let ox = p.bbox[0];
         let nflat = if p.flags & F_FLAT != 0 {
@@ -1398,12 +1492,21 @@ impl FragCtx<'_> {
                     continue;
                 }
                 if tests_first {
-                    m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+                    m = self.tests_group_on::<AVX2>(side, bufs, zrow, dz, fx0, i0, m);
                     if m == 0 || !writes_color {
                         continue;
                     }
                 }
                 // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
+                #[cfg(target_arch = "x86_64")]
+                if AVX2 {
+                    // SAFETY: `AVX2` is true only in `plain_rows_avx2`, which runs where the
+                    // CPU has AVX2.
+                    unsafe { row.eval_avx2(fx0, &mut v) };
+                } else {
+                    row.eval(fx0, &mut v);
+                }
+                #[cfg(not(target_arch = "x86_64"))]
                 row.eval(fx0, &mut v);
                 let [r, g, b, a] = [v[0], v[1], v[2], v[3]];
                 let mut rgb = [r, g, b];
@@ -1416,12 +1519,16 @@ impl FragCtx<'_> {
                     // (Alpha gains 0.0, which leaves every value's bits as they are but −0,
                     // whose clamp below gives +0 either way.)
                 }
-                let mut rgb = [
-                    ol::clamp01(rgb[0]),
-                    ol::clamp01(rgb[1]),
-                    ol::clamp01(rgb[2]),
-                ];
-                let a = ol::clamp01(a);
+                let clamp = |c| {
+                    #[cfg(target_arch = "x86_64")]
+                    if AVX2 {
+                        // SAFETY: as above.
+                        return unsafe { ol::avx2::clamp01(c) };
+                    }
+                    ol::clamp01(c)
+                };
+                let mut rgb = [clamp(rgb[0]), clamp(rgb[1]), clamp(rgb[2])];
+                let a = clamp(a);
                 if let Some((func, reference)) = ops.alpha {
                     m &= ol::alpha_test(func, reference, a);
                     if m == 0 {
@@ -1429,13 +1536,13 @@ impl FragCtx<'_> {
                     }
                 }
                 if !tests_first {
-                    m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
+                    m = self.tests_group_on::<AVX2>(side, bufs, zrow, dz, fx0, i0, m);
                     if m == 0 || !writes_color {
                         continue;
                     }
                 }
                 let coord = fog_row.map_or([0.0; LANES], |i| v[i]);
-                self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
+                self.finish_group_on::<AVX2>(ops, bufs, &mut rgb, a, coord, i0, m);
             }
         }
     }

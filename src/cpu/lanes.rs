@@ -849,6 +849,36 @@ impl<const K: usize> RowVaryings<K> {
             }
         }
     }
+
+    /// `eval` with eight lanes a register (AVX2): lane x `fx0 as f32 + l` (`lane_xs_sse`'s
+    /// values), each plane `(a + dx·x) + yt`, 1/w by `vdivps`, the product by `vmulps`, the
+    /// same operations in the same order, so the same bits.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    pub fn eval_avx2(&self, fx0: i32, out: &mut [[f32; LANES]; K]) {
+        use std::arch::x86_64::{
+            _mm256_add_ps, _mm256_div_ps, _mm256_mul_ps, _mm256_set1_ps, _mm256_setr_ps,
+            _mm256_storeu_ps,
+        };
+        let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let x = _mm256_add_ps(_mm256_set1_ps(fx0 as f32), iota);
+        let plane = |p: &[f32; 3]| {
+            _mm256_add_ps(
+                _mm256_add_ps(_mm256_set1_ps(p[0]), _mm256_mul_ps(_mm256_set1_ps(p[1]), x)),
+                _mm256_set1_ps(p[2]),
+            )
+        };
+        let inv = _mm256_div_ps(_mm256_set1_ps(1.0), plane(&self.w));
+        for ((o, p), &d) in out.iter_mut().zip(&self.p).zip(&self.div).take(self.k) {
+            let mut v = plane(p);
+            if d {
+                v = _mm256_mul_ps(v, inv);
+            }
+            // SAFETY: `o` holds eight f32, 32 bytes (no alignment needed).
+            unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
+        }
+    }
 }
 
 /// The eight lanes' colours as pixel-major vectors: `out[l]` = (r[l], g[l], b[l], a[l]) (SSE
@@ -1260,6 +1290,49 @@ mod tests {
                     assert!(same, "l {l} j {j}: {} vs {want} {planes:?}", lanes[l]);
                 }
             }
+        }
+    }
+
+    /// `RowVaryings::eval_avx2` against `eval` bit for bit, where the CPU has AVX2: random
+    /// planes (NaN, ±∞, −0, denormals, any bits), flat and divided rows, selections past `nv`
+    /// and pools shorter than the layout, lane offsets on both sides of 0.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn row_varyings_on_avx2_are_the_sse2_rows_bit_for_bit() {
+        if !has_avx2() {
+            return;
+        }
+        let mut g = Gen(41);
+        for _ in 0..20_000 {
+            let len = (g.next() % 40) as usize;
+            let planes: Vec<f32> = (0..len)
+                .map(|_| match g.next() % 12 {
+                    0 => f32::from_bits(g.next() as u32),
+                    1 => f32::from_bits((g.next() as u32) & 0x807F_FFFF),
+                    _ => g.float(),
+                })
+                .collect();
+            let nv = (g.next() % 12) as usize;
+            let nflat = (g.next() % 6) as usize;
+            let sel: [usize; 8] = std::array::from_fn(|_| (g.next() % 12) as usize);
+            let k = (g.next() % 9) as usize;
+            let fy = (g.next() % 200) as f32 - 50.0;
+            let row = RowVaryings::new(&planes, nflat, nv, fy, &sel, k);
+            let fx0 = (g.next() % 400) as i32 - 100;
+            let fill = f32::from_bits(g.next() as u32);
+            let (mut want, mut have) = ([[fill; LANES]; 8], [[fill; LANES]; 8]);
+            row.eval(fx0, &mut want);
+            // SAFETY: the CPU has AVX2 (checked above).
+            unsafe { row.eval_avx2(fx0, &mut have) };
+            // Bit for bit, a NaN as any NaN: LLVM may swap the operands of the SSE2 route's
+            // additions and products, so of two NaN operands either payload comes out (every
+            // NaN colour or fog coordinate gives the same pixel: the clamps take it to 0).
+            let key = |v: f32| if v.is_nan() { u32::MAX } else { v.to_bits() };
+            assert_eq!(
+                have.map(|r| r.map(key)),
+                want.map(|r| r.map(key)),
+                "{planes:?} nflat {nflat} nv {nv} sel {sel:?} k {k} fy {fy} fx0 {fx0}"
+            );
         }
     }
 

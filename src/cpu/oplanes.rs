@@ -1048,6 +1048,299 @@ mod expf_fma {
     }
 }
 
+/// Eight-lane AVX2 versions of the group kernels above, for `FragCtx::plain_rows_avx2`: each
+/// lane computes the same operations in the same order as the SSE2 kernel it replaces
+/// (`clamp01`, `depth_lanes` of `lin_lanes` with `depth_test`, `fog`, `store_unorm8`,
+/// `blend_unorm8`), one 256-bit instruction where that kernel takes two 128-bit halves, so
+/// the same bits (no FMA: nothing is fused). A row shorter than a group, and the states a
+/// kernel has no route for, take the SSE2 kernel.
+///
+/// Each kernel is an `#[inline(always)]` `unsafe fn` rather than a `#[target_feature]` one
+/// (which cannot be `inline(always)`; LLVM left the depth test and the store out of line,
+/// each call passing its lanes through memory): inlined into a function compiled for AVX2
+/// (`plain_rows_avx2`), the intrinsics are inlined there too.
+///
+/// # Safety
+/// Every kernel needs a CPU with AVX2 (`lanes::has_avx2`).
+#[cfg(target_arch = "x86_64")]
+pub(super) mod avx2 {
+    use super::{BlendEval, FogEval, F, LANES};
+    use crate::gl;
+    use std::arch::x86_64::{
+        __m256, __m256i, _mm256_add_epi16, _mm256_add_pd, _mm256_add_ps, _mm256_adds_epu8,
+        _mm256_and_si256, _mm256_andnot_ps, _mm256_andnot_si256, _mm256_castps256_ps128,
+        _mm256_castps_si256, _mm256_castsi256_ps, _mm256_cmp_ps, _mm256_cmpeq_epi32,
+        _mm256_cmpgt_epi32, _mm256_cvtps_pd, _mm256_cvttpd_epi32, _mm256_extractf128_ps,
+        _mm256_loadu_ps, _mm256_loadu_si256, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd,
+        _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_mullo_epi16,
+        _mm256_or_si256, _mm256_packus_epi16, _mm256_set1_epi16, _mm256_set1_epi32, _mm256_set1_pd,
+        _mm256_set1_ps, _mm256_set_m128i, _mm256_setr_epi32, _mm256_setr_ps, _mm256_setzero_pd,
+        _mm256_setzero_ps, _mm256_setzero_si256, _mm256_shufflehi_epi16, _mm256_shufflelo_epi16,
+        _mm256_slli_epi32, _mm256_srli_epi16, _mm256_storeu_si256, _mm256_sub_epi16, _mm256_sub_ps,
+        _mm256_unpackhi_epi8, _mm256_unpacklo_epi8, _mm256_xor_ps, _mm256_xor_si256, _CMP_UNORD_Q,
+    };
+
+    /// Eight lanes in a register.
+    #[inline(always)]
+    unsafe fn ld(c: &F) -> __m256 {
+        // SAFETY: `c` holds eight f32, 32 bytes (no alignment needed).
+        unsafe { _mm256_loadu_ps(c.as_ptr()) }
+    }
+
+    /// A register's eight lanes.
+    #[inline(always)]
+    unsafe fn out(v: __m256) -> F {
+        // SAFETY: `__m256` has the layout of `[f32; 8]`; every bit pattern is valid for both.
+        unsafe { std::mem::transmute::<__m256, F>(v) }
+    }
+
+    /// The lane-select mask of coverage bits `m` (lane l all ones when bit l is set).
+    #[inline(always)]
+    unsafe fn lanes_of(m: u8) -> __m256i {
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+            bits,
+        )
+    }
+
+    /// `super::clamp01`: `maxps` with 0, then `minps` with 1.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    pub unsafe fn clamp01(c: F) -> F {
+        out(_mm256_min_ps(
+            _mm256_max_ps(ld(&c), _mm256_setzero_ps()),
+            _mm256_set1_ps(1.0),
+        ))
+    }
+
+    /// `super::depth_test(func, write, row, depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0))),
+    /// live)`: lane x `fx0 as f32 + l` (exact, as `lane_x`), `zrow + dz·x`, the conversion in
+    /// double precision (`vcvtps2pd`, `vmaxpd` with 0 — a NaN or −0 gives +0 —, `vminpd` with
+    /// 1, `vmulpd`, `vaddpd`, `vcvttpd2dq`), the unsigned compare on values with the top bit
+    /// flipped, the select for the write.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    pub unsafe fn depth_test(
+        func: u32,
+        write: bool,
+        row: &mut [u32],
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+        live: u8,
+    ) -> u8 {
+        let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let x = _mm256_add_ps(_mm256_set1_ps(fx0 as f32), iota);
+        let z = _mm256_add_ps(_mm256_set1_ps(zrow), _mm256_mul_ps(_mm256_set1_ps(dz), x));
+        let Some(r) = row.get_mut(..LANES) else {
+            let d = super::super::lanes::depth_lanes(out(z));
+            return super::depth_test(func, write, row, d, live);
+        };
+        let (zd, oned) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0));
+        let (kd, hd) = (
+            _mm256_set1_pd(f64::from(crate::cpu::framebuffer::DEPTH_MAX)),
+            _mm256_set1_pd(0.5),
+        );
+        // (Macros, not closures, here and below: a closure is not always inlined, and out of
+        // line its intrinsics would be calls.)
+        macro_rules! depth4 {
+            ($z:expr) => {{
+                let z = _mm256_min_pd(_mm256_max_pd(_mm256_cvtps_pd($z), zd), oned);
+                _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, kd), hd))
+            }};
+        }
+        let d = _mm256_set_m128i(
+            depth4!(_mm256_extractf128_ps::<1>(z)),
+            depth4!(_mm256_castps256_ps128(z)),
+        );
+        let (sign, ones) = (_mm256_set1_epi32(i32::MIN), _mm256_set1_epi32(-1));
+        let rp = r.as_mut_ptr().cast::<__m256i>();
+        // SAFETY: `r` holds eight u32, 32 bytes (no alignment needed).
+        let s = unsafe { _mm256_loadu_si256(rp) };
+        let (a, b) = (_mm256_xor_si256(d, sign), _mm256_xor_si256(s, sign));
+        let pass = match func {
+            gl::NEVER => _mm256_setzero_si256(),
+            gl::LESS => _mm256_cmpgt_epi32(b, a),
+            gl::EQUAL => _mm256_cmpeq_epi32(a, b),
+            gl::LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), ones),
+            gl::GREATER => _mm256_cmpgt_epi32(a, b),
+            gl::NOTEQUAL => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), ones),
+            gl::GEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), ones),
+            _ => ones,
+        };
+        let pass = _mm256_and_si256(pass, lanes_of(live));
+        if write {
+            let v = _mm256_or_si256(_mm256_and_si256(pass, d), _mm256_andnot_si256(pass, s));
+            // SAFETY: as the load above.
+            unsafe { _mm256_storeu_si256(rp, v) };
+        }
+        _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8
+    }
+
+    /// `super::fog`: the factor (LINEAR `c·scale + e`; EXP and EXP2 their arguments on lanes,
+    /// `exp_live` for the lanes of `live`), the clamp (a NaN gives +0, then `vmaxps(0, f)` and
+    /// `vminps(1, f)`, which are `if f < 0 {0} else {f}` and `if f > 1 {1} else {f}`, −0 kept),
+    /// then `C_f + (C − C_f)·f` on R, G and B.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    pub unsafe fn fog(fog: &FogEval, rgb: &mut [F; 3], coord: F, live: u8) {
+        let c = ld(&coord);
+        let f = if fog.mode != gl::LINEAR {
+            let arg = if fog.mode == gl::EXP {
+                _mm256_mul_ps(_mm256_set1_ps(-fog.density), c)
+            } else {
+                let dc = _mm256_mul_ps(_mm256_set1_ps(fog.density), c);
+                _mm256_mul_ps(_mm256_xor_ps(dc, _mm256_set1_ps(-0.0)), dc)
+            };
+            ld(&super::exp_live(&out(arg), live))
+        } else {
+            let scale = -1.0 / (fog.end - fog.start);
+            let e = fog.end * -scale;
+            _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(scale)), _mm256_set1_ps(e))
+        };
+        let f = _mm256_andnot_ps(_mm256_cmp_ps::<_CMP_UNORD_Q>(f, f), f);
+        let f = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), f));
+        let cf = fog.color.to_array();
+        for (ch, cf) in rgb.iter_mut().zip(cf) {
+            let cf = _mm256_set1_ps(cf);
+            *ch = out(_mm256_add_ps(
+                cf,
+                _mm256_mul_ps(_mm256_sub_ps(ld(ch), cf), f),
+            ));
+        }
+    }
+
+    /// `super::pack4` of all eight lanes: each pixel as an RGBA8 word, red in the low byte.
+    #[inline(always)]
+    unsafe fn pack8(rgb: &[F; 3], a: &F) -> __m256i {
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        let (k, b) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+        let low = _mm256_set1_epi32(0xFF);
+        macro_rules! conv {
+            ($c:expr) => {{
+                let c = _mm256_min_ps(_mm256_max_ps(ld($c), zero), one);
+                _mm256_and_si256(
+                    _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), b)),
+                    low,
+                )
+            }};
+        }
+        _mm256_or_si256(
+            _mm256_or_si256(conv!(&rgb[0]), _mm256_slli_epi32::<8>(conv!(&rgb[1]))),
+            _mm256_or_si256(
+                _mm256_slli_epi32::<16>(conv!(&rgb[2])),
+                _mm256_slli_epi32::<24>(conv!(a)),
+            ),
+        )
+    }
+
+    /// The select of `store`: lanes of `m`, bytes of `mask`, from `v` over `old`.
+    #[inline(always)]
+    unsafe fn select(old: __m256i, v: __m256i, m: u8, mask: [bool; 4]) -> __m256i {
+        let [r, g, b, a] = mask.map(u32::from);
+        let cm = (r | g << 8 | b << 16 | a << 24) * 0xFF;
+        let sel = _mm256_and_si256(lanes_of(m), _mm256_set1_epi32(cm as i32));
+        _mm256_or_si256(_mm256_andnot_si256(sel, old), _mm256_and_si256(sel, v))
+    }
+
+    /// `super::store_unorm8`.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    pub unsafe fn store_unorm8(row: &mut [[u8; 4]], rgb: &[F; 3], a: &F, m: u8, mask: [bool; 4]) {
+        let Some(px) = row.get_mut(..LANES) else {
+            return super::store_unorm8(row, rgb, a, m, mask);
+        };
+        let p = px.as_mut_ptr().cast::<__m256i>();
+        let v = pack8(rgb, a);
+        // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment needed).
+        unsafe {
+            let old = _mm256_loadu_si256(p);
+            _mm256_storeu_si256(p, select(old, v, m, mask));
+        }
+    }
+
+    /// `super::blend_unorm8`: ONE, ONE (`vpaddusb`), SRC_ALPHA, ONE and SRC_ALPHA,
+    /// ONE_MINUS_SRC_ALPHA on sixteen 16-bit lanes (the unpacks and packs work within each
+    /// 128-bit half, so the pixels come back in their order); CONSTANT_ALPHA,
+    /// ONE_MINUS_CONSTANT_ALPHA and a short row take the SSE2 kernel. False (nothing written)
+    /// for another state.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    pub unsafe fn blend_unorm8(
+        b: &BlendEval,
+        row: &mut [[u8; 4]],
+        rgb: &[F; 3],
+        a: &F,
+        m: u8,
+        mask: [bool; 4],
+    ) -> bool {
+        let usual = b.eq_rgb == gl::FUNC_ADD
+            && b.eq_alpha == gl::FUNC_ADD
+            && b.src_rgb == b.src_alpha
+            && b.dst_rgb == b.dst_alpha;
+        let add = usual && b.src_rgb == gl::ONE && b.dst_rgb == gl::ONE;
+        let over = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE_MINUS_SRC_ALPHA;
+        let glow = usual && b.src_rgb == gl::SRC_ALPHA && b.dst_rgb == gl::ONE;
+        let px = match row.get_mut(..LANES) {
+            Some(px) if add || over || glow => px,
+            _ => return super::blend_unorm8(b, row, rgb, a, m, mask),
+        };
+        let p = px.as_mut_ptr().cast::<__m256i>();
+        let src = pack8(rgb, a);
+        // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment needed).
+        let old = unsafe { _mm256_loadu_si256(p) };
+        let z = _mm256_setzero_si256();
+        let (c255, c128) = (_mm256_set1_epi16(255), _mm256_set1_epi16(128));
+        macro_rules! mul8 {
+            ($x:expr, $y:expr) => {{
+                let p = _mm256_mullo_epi16($x, $y);
+                _mm256_srli_epi16::<8>(_mm256_add_epi16(
+                    _mm256_add_epi16(p, _mm256_srli_epi16::<8>(p)),
+                    c128,
+                ))
+            }};
+        }
+        macro_rules! sa {
+            ($s:expr) => {
+                _mm256_shufflehi_epi16::<0xFF>(_mm256_shufflelo_epi16::<0xFF>($s))
+            };
+        }
+        let v = if add {
+            _mm256_adds_epu8(src, old)
+        } else if glow {
+            let (lo, hi) = (_mm256_unpacklo_epi8(src, z), _mm256_unpackhi_epi8(src, z));
+            let sf = _mm256_packus_epi16(mul8!(lo, sa!(lo)), mul8!(hi, sa!(hi)));
+            _mm256_adds_epu8(sf, old)
+        } else {
+            macro_rules! over2 {
+                ($s:expr, $d:expr) => {{
+                    let (s, d) = ($s, $d);
+                    let sa = sa!(s);
+                    _mm256_add_epi16(mul8!(s, sa), mul8!(d, _mm256_sub_epi16(c255, sa)))
+                }};
+            }
+            _mm256_packus_epi16(
+                over2!(_mm256_unpacklo_epi8(src, z), _mm256_unpacklo_epi8(old, z)),
+                over2!(_mm256_unpackhi_epi8(src, z), _mm256_unpackhi_epi8(old, z)),
+            )
+        };
+        // SAFETY: as the load above.
+        unsafe { _mm256_storeu_si256(p, select(old, v, m, mask)) };
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1456,5 +1749,130 @@ mod tests {
             assert_eq!(got, want, "{b:?} m {m:#x} mask {mask:?} {c:?}");
         }
         assert!(done > 1000, "{done} handled");
+    }
+
+    /// The eight-lane AVX2 kernels (`avx2::*`) against the SSE2 ones bit for bit, where the
+    /// CPU has AVX2: clamp, fog (every mode, NaN/±∞/−0/denormal coordinates and colours),
+    /// the depth test with its plane (every DepthFunc, DepthMask on and off, rows shorter
+    /// than a group), the unorm8 store and the blends (handled and unhandled states, short
+    /// rows, every ColorMask).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx2_kernels_are_the_sse2_kernels_bit_for_bit() {
+        if !super::super::lanes::has_avx2() {
+            return;
+        }
+        use super::super::lanes::{depth_lanes, lane_x, lin_lanes};
+        let mut g = Gen(37);
+        let bits = |c: &[F]| -> Vec<u32> { c.iter().flatten().map(|v| v.to_bits()).collect() };
+        let f = |g: &mut Gen| match g.next() % 16 {
+            0 => f32::NAN,
+            1 => f32::INFINITY,
+            2 => f32::NEG_INFINITY,
+            3 => f32::from_bits((g.next() as u32) & 0x807F_FFFF),
+            _ => g.float(),
+        };
+        let (mut written, mut blended) = (0, 0);
+        for _ in 0..20_000 {
+            let c: [F; 4] = std::array::from_fn(|_| std::array::from_fn(|_| f(&mut g)));
+            // SAFETY: the CPU has AVX2 (checked above).
+            let got = unsafe { c.map(|c| avx2::clamp01(c)) };
+            assert_eq!(bits(&got), bits(&c.map(clamp01)), "clamp {c:?}");
+
+            let fe = FogEval {
+                mode: [gl::LINEAR, gl::EXP, gl::EXP2][(g.next() % 3) as usize],
+                density: if g.next() % 8 == 0 {
+                    f(&mut g)
+                } else {
+                    g.float().abs()
+                },
+                start: f(&mut g),
+                end: if g.next() % 8 == 0 {
+                    f32::NAN
+                } else {
+                    g.float()
+                },
+                color: Vec3::new(f(&mut g), g.float(), g.float()),
+            };
+            let coord: F = std::array::from_fn(|_| f(&mut g) * 4.0);
+            let live = g.next() as u8;
+            let rgb = [got[0], got[1], got[2]];
+            let (mut want, mut have) = (rgb, rgb);
+            fog(&fe, &mut want, coord, live);
+            // SAFETY: as above.
+            unsafe { avx2::fog(&fe, &mut have, coord, live) };
+            for l in (0..LANES).filter(|l| live & (1 << l) != 0) {
+                for k in 0..3 {
+                    assert_eq!(
+                        have[k][l].to_bits(),
+                        want[k][l].to_bits(),
+                        "fog {fe:?} coord {} c {}",
+                        coord[l],
+                        rgb[k][l]
+                    );
+                }
+            }
+
+            let n = (g.next() % 12) as usize;
+            let row0: Vec<u32> = (0..n)
+                .map(|_| match g.next() % 3 {
+                    0 => (g.next() % 5) as u32 * (crate::cpu::framebuffer::DEPTH_MAX / 4),
+                    1 => g.next() as u32,
+                    _ => g.next() as u32 & crate::cpu::framebuffer::DEPTH_MAX,
+                })
+                .collect();
+            let func = g.pick(&COMPARE_FUNCS);
+            let write = g.next() % 2 == 0;
+            let zrow = f(&mut g);
+            let dz = if g.next() % 2 == 0 { f(&mut g) } else { 1e-3 };
+            let fx0 = (g.next() % 300) as i32 - 20;
+            let (mut want, mut have) = (row0.clone(), row0.clone());
+            let d = depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0)));
+            let mw = depth_test(func, write, &mut want, d, live);
+            // SAFETY: as above.
+            let mh = unsafe { avx2::depth_test(func, write, &mut have, zrow, dz, fx0, live) };
+            assert_eq!(
+                (mh, &have),
+                (mw, &want),
+                "depth {func:#x} {write} {zrow} {dz} {fx0}"
+            );
+
+            let px0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
+            let (mut want, mut have) = (px0.clone(), px0.clone());
+            store_unorm8(&mut want, &rgb, &c[3], live, mask);
+            // SAFETY: as above.
+            unsafe { avx2::store_unorm8(&mut have, &rgb, &c[3], live, mask) };
+            assert_eq!(have, want, "store m {live:#x} mask {mask:?} {c:?}");
+            written += usize::from(n >= LANES);
+
+            let (sf, df) = match g.next() % 6 {
+                0 => (gl::ONE, gl::ONE),
+                1 | 5 => (gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA),
+                2 => (gl::SRC_ALPHA, gl::ONE),
+                3 => (gl::CONSTANT_ALPHA, gl::ONE_MINUS_CONSTANT_ALPHA),
+                _ => (gl::ONE_MINUS_SRC_ALPHA, gl::ZERO),
+            };
+            let b = BlendEval {
+                src_rgb: sf,
+                dst_rgb: df,
+                src_alpha: if g.next() % 8 == 0 { gl::ONE } else { sf },
+                dst_alpha: df,
+                eq_rgb: gl::FUNC_ADD,
+                eq_alpha: gl::FUNC_ADD,
+                constant: [g.byte(), g.byte(), g.byte(), g.byte()],
+            };
+            let (mut want, mut have) = (px0.clone(), px0);
+            let ow = blend_unorm8(&b, &mut want, &rgb, &c[3], live, mask);
+            // SAFETY: as above.
+            let oh = unsafe { avx2::blend_unorm8(&b, &mut have, &rgb, &c[3], live, mask) };
+            assert_eq!(
+                (oh, &have),
+                (ow, &want),
+                "blend {b:?} m {live:#x} mask {mask:?}"
+            );
+            blended += usize::from(ow && n >= LANES);
+        }
+        assert!(written > 5000 && blended > 3000, "{written} {blended}");
     }
 }
