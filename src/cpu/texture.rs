@@ -566,6 +566,9 @@ impl Sampler {
                 // A depth texture's NEAREST: the kernel's gather (the texels `pass_on` reads),
                 // then the comparison of each lane's one texel, as below.
                 Some(func) if !linear => {
+                    if dense_depth(kind, func, dt, w, h, s, t, r, m, out) {
+                        return;
+                    }
                     dense_kernel(kind, dt, w, h, s, t, m, out);
                     return depth_compare_lanes(func, r, m, out);
                 }
@@ -2278,6 +2281,95 @@ fn store8(ch: &[std::arch::x86_64::__m256; 4], m: u8, out: &mut TexelLanes) {
             }
         }
     }
+}
+
+/// NEAREST on a dense depth level followed by the depth comparison (`pass_level`'s
+/// `dense_kernel` then [`depth_compare_lanes`]) as one AVX2 kernel ([`dense_depth8`]) for a
+/// NEAREST `kind` of [`kernel_kind`]: only the depth channel gathered, the eight comparisons at
+/// once. Returns false, having done nothing, where the CPU lacks AVX2 or the level has more
+/// than 2^28 texels (the caller then takes the two steps).
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_depth(
+    kind: u8,
+    func: u32,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() && dt.len() <= 1 << 28 && kind < 4 {
+        // SAFETY: AVX2 is present (checked above) and `dt` at most 2^28 texels.
+        unsafe {
+            match kind {
+                0 => dense_depth8::<false, false>(func, dt, w, h, s, t, r, m, out),
+                1 => dense_depth8::<false, true>(func, dt, w, h, s, t, r, m, out),
+                2 => dense_depth8::<true, false>(func, dt, w, h, s, t, r, m, out),
+                _ => dense_depth8::<true, true>(func, dt, w, h, s, t, r, m, out),
+            }
+        }
+        return true;
+    }
+    let _ = (kind, func, dt, w, h, s, t, r, m, out);
+    false
+}
+
+/// [`dense_nearest8`]'s index per lane, the depth (channel 0) gathered for the eight lanes,
+/// then [`depth_compare_lanes`]: r clamped to [0, 1] in `f32::clamp`'s order (maxps/minps
+/// return their second operand when the compare fails, so a NaN and -0 are kept), compared with
+/// `func`'s predicate (the ordered forms for the comparisons Rust's operators make false on a
+/// NaN, the unordered one for `!=`), the result (1 or +0, 0, 0, 0) into the lanes of `m`.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dense_depth8<const RX: bool, const RY: bool>(
+    func: u32,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
+    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
+    let k = _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)));
+    // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+    // 4·(dt.len() - 1), so every f32 read lies inside `dt`.
+    let d = unsafe { _mm256_i32gather_ps::<4>(dt.as_ptr().cast::<f32>(), k) };
+    let one = _mm256_set1_ps(1.0);
+    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), lanes8(r)));
+    let pass = match func {
+        gl::LEQUAL => _mm256_cmp_ps::<_CMP_LE_OQ>(r, d),
+        gl::GEQUAL => _mm256_cmp_ps::<_CMP_GE_OQ>(r, d),
+        gl::LESS => _mm256_cmp_ps::<_CMP_LT_OQ>(r, d),
+        gl::GREATER => _mm256_cmp_ps::<_CMP_GT_OQ>(r, d),
+        gl::EQUAL => _mm256_cmp_ps::<_CMP_EQ_OQ>(r, d),
+        gl::NOTEQUAL => _mm256_cmp_ps::<_CMP_NEQ_UQ>(r, d),
+        gl::ALWAYS => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+        _ => _mm256_setzero_ps(),
+    };
+    let z = _mm256_setzero_ps();
+    store8(&[_mm256_and_ps(pass, one), z, z, z], m, out);
 }
 
 /// The wrap class of one axis for the border kernels ([`border_kind`]): the edge clamp

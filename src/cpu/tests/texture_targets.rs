@@ -494,26 +494,32 @@ fn dense_depth_nearest_is_the_scalar_texel_bit_for_bit() {
                 }
             }
             let m = (next() % 256) as u8;
-            let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
-            for l in 0..LANES {
-                if m & (1 << l) == 0 {
-                    continue;
+            // The AVX2 kernel (gather and comparison in one, `dense_depth`) where the CPU has
+            // it, and the SSE2 route (the gather, then `depth_compare_lanes`).
+            for off in [false, true] {
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(off));
+                let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+                for l in 0..LANES {
+                    if m & (1 << l) == 0 {
+                        continue;
+                    }
+                    let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                    assert_eq!(
+                        got[l].map(f32::to_bits),
+                        want.map(f32::to_bits),
+                        "round {round} off {off} lane {l}: ({}, {}, {}, {})",
+                        cs[l],
+                        ct[l],
+                        cr[l],
+                        cq[l]
+                    );
+                    checked += 1;
                 }
-                let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
-                assert!(
-                    same(got[l], want),
-                    "round {round} lane {l}: {:?} vs {want:?} ({}, {}, {}, {})",
-                    got[l],
-                    cs[l],
-                    ct[l],
-                    cr[l],
-                    cq[l]
-                );
-                checked += 1;
             }
         }
     }
-    assert!(checked > 40_000, "{checked}");
+    assert!(checked > 80_000, "{checked}");
 }
 
 /// The kernels of the one-image route of `pass_targets` (a cube face by the 2D
