@@ -566,7 +566,22 @@ impl Sampler {
                 // A depth texture's NEAREST: the kernel's gather (the texels `pass_on` reads),
                 // then the comparison of each lane's one texel, as below.
                 Some(func) if !linear => {
+                    if dense_depth(kind, func, dt, w, h, s, t, r, m, out) {
+                        return;
+                    }
                     dense_kernel(kind, dt, w, h, s, t, m, out);
+                    return depth_compare_lanes(func, r, m, out);
+                }
+                Some(_) => {}
+            }
+        }
+        // A border texel (CLAMP_TO_BORDER, LINEAR's CLAMP): the AVX2 border kernel, the same way.
+        if let (Some(dt), Some(kind)) = (dense, border_kind(linear, self.wrap)) {
+            let border = crate::texture::keep(self.base, self.border);
+            match self.compare {
+                None => return dense_border(kind, dt, w, h, border, s, t, m, out),
+                Some(func) if !linear => {
+                    dense_border(kind, dt, w, h, border, s, t, m, out);
                     return depth_compare_lanes(func, r, m, out);
                 }
                 Some(_) => {}
@@ -2266,6 +2281,356 @@ fn store8(ch: &[std::arch::x86_64::__m256; 4], m: u8, out: &mut TexelLanes) {
             }
         }
     }
+}
+
+/// NEAREST on a dense depth level followed by the depth comparison (`pass_level`'s
+/// `dense_kernel` then [`depth_compare_lanes`]) as one AVX2 kernel ([`dense_depth8`]) for a
+/// NEAREST `kind` of [`kernel_kind`]: only the depth channel gathered, the eight comparisons at
+/// once. Returns false, having done nothing, where the CPU lacks AVX2 or the level has more
+/// than 2^28 texels (the caller then takes the two steps).
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_depth(
+    kind: u8,
+    func: u32,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() && dt.len() <= 1 << 28 && kind < 4 {
+        // SAFETY: AVX2 is present (checked above) and `dt` at most 2^28 texels.
+        unsafe {
+            match kind {
+                0 => dense_depth8::<false, false>(func, dt, w, h, s, t, r, m, out),
+                1 => dense_depth8::<false, true>(func, dt, w, h, s, t, r, m, out),
+                2 => dense_depth8::<true, false>(func, dt, w, h, s, t, r, m, out),
+                _ => dense_depth8::<true, true>(func, dt, w, h, s, t, r, m, out),
+            }
+        }
+        return true;
+    }
+    let _ = (kind, func, dt, w, h, s, t, r, m, out);
+    false
+}
+
+/// [`dense_nearest8`]'s index per lane, the depth (channel 0) gathered for the eight lanes,
+/// then [`depth_compare_lanes`]: r clamped to [0, 1] in `f32::clamp`'s order (maxps/minps
+/// return their second operand when the compare fails, so a NaN and -0 are kept), compared with
+/// `func`'s predicate (the ordered forms for the comparisons Rust's operators make false on a
+/// NaN, the unordered one for `!=`), the result (1 or +0, 0, 0, 0) into the lanes of `m`.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dense_depth8<const RX: bool, const RY: bool>(
+    func: u32,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
+    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
+    let k = _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)));
+    // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+    // 4·(dt.len() - 1), so every f32 read lies inside `dt`.
+    let d = unsafe { _mm256_i32gather_ps::<4>(dt.as_ptr().cast::<f32>(), k) };
+    let one = _mm256_set1_ps(1.0);
+    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), lanes8(r)));
+    let pass = match func {
+        gl::LEQUAL => _mm256_cmp_ps::<_CMP_LE_OQ>(r, d),
+        gl::GEQUAL => _mm256_cmp_ps::<_CMP_GE_OQ>(r, d),
+        gl::LESS => _mm256_cmp_ps::<_CMP_LT_OQ>(r, d),
+        gl::GREATER => _mm256_cmp_ps::<_CMP_GT_OQ>(r, d),
+        gl::EQUAL => _mm256_cmp_ps::<_CMP_EQ_OQ>(r, d),
+        gl::NOTEQUAL => _mm256_cmp_ps::<_CMP_NEQ_UQ>(r, d),
+        gl::ALWAYS => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+        _ => _mm256_setzero_ps(),
+    };
+    let z = _mm256_setzero_ps();
+    store8(&[_mm256_and_ps(pass, one), z, z, z], m, out);
+}
+
+/// The wrap class of one axis for the border kernels ([`border_kind`]): the edge clamp
+/// (CLAMP_TO_EDGE, and NEAREST's CLAMP), REPEAT, CLAMP_TO_BORDER (an index outside the level
+/// reads the border colour), and LINEAR's CLAMP (s clamped to [0, 1] first, then as
+/// CLAMP_TO_BORDER).
+const AX_EDGE: u8 = 0;
+const AX_REPEAT: u8 = 1;
+const AX_BORDER: u8 = 2;
+const AX_CLAMP: u8 = 3;
+
+/// Which border kernel ([`dense_border`]) covers a one-level pass with filter `linear` and
+/// wrap modes `wrap` (s, t) where [`kernel_kind`] has none: at least one axis CLAMP_TO_BORDER
+/// (or LINEAR's CLAMP), the other REPEAT, CLAMP, CLAMP_TO_EDGE or CLAMP_TO_BORDER (not
+/// MIRRORED_REPEAT). Bit 4 LINEAR, bits 2–3 the class of s, bits 0–1 that of t. Only on a
+/// CPU with AVX2 ([`avx2`]; other CPUs keep `pass_on`), None elsewhere.
+#[inline(always)]
+fn border_kind(linear: bool, wrap: [u32; 3]) -> Option<u8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let class = |mode: u32| match mode {
+            gl::CLAMP_TO_EDGE => Some(AX_EDGE),
+            gl::REPEAT => Some(AX_REPEAT),
+            gl::CLAMP_TO_BORDER => Some(AX_BORDER),
+            gl::CLAMP if linear => Some(AX_CLAMP),
+            gl::CLAMP => Some(AX_EDGE),
+            _ => None,
+        };
+        let (x, y) = (class(wrap[0])?, class(wrap[1])?);
+        if x < AX_BORDER && y < AX_BORDER || !avx2() {
+            return None;
+        }
+        Some(u8::from(linear) << 4 | x << 2 | y)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (linear, wrap);
+        None
+    }
+}
+
+/// The one-level pass (`pass_on`) of a [`dense_level`] level `dt` (`w` x `h`, powers of two)
+/// with a border texel, for the filter and wrap classes [`border_kind`] encodes in `kind`, as
+/// one AVX2 kernel ([`dense_border8`]) for the eight lanes: the lanes of `m` get `pass_on`'s
+/// bits, the others are left as they were. `border` is the border colour in the base format's
+/// components (`pass_on`'s). Does nothing where the CPU lacks AVX2 or the level has more than
+/// 2^28 texels (`border_kind` is None there, so no caller reaches it). Out of line, as
+/// [`dense_kernel`].
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_border(
+    kind: u8,
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    border: [f32; 4],
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() && dt.len() <= 1 << 28 {
+        macro_rules! pick {
+            ($($k:literal => $lin:literal, $x:ident, $y:ident;)*) => {
+                match kind {
+                    // SAFETY: AVX2 is present (checked above) and `dt` at most 2^28 texels.
+                    $($k => unsafe {
+                        dense_border8::<$lin, $x, $y>(dt, w, h, border, s, t, m, out)
+                    },)*
+                    _ => {}
+                }
+            };
+        }
+        pick! {
+            0b0_0010 => false, AX_EDGE, AX_BORDER;
+            0b0_0110 => false, AX_REPEAT, AX_BORDER;
+            0b0_1000 => false, AX_BORDER, AX_EDGE;
+            0b0_1001 => false, AX_BORDER, AX_REPEAT;
+            0b0_1010 => false, AX_BORDER, AX_BORDER;
+            0b1_0010 => true, AX_EDGE, AX_BORDER;
+            0b1_0011 => true, AX_EDGE, AX_CLAMP;
+            0b1_0110 => true, AX_REPEAT, AX_BORDER;
+            0b1_0111 => true, AX_REPEAT, AX_CLAMP;
+            0b1_1000 => true, AX_BORDER, AX_EDGE;
+            0b1_1001 => true, AX_BORDER, AX_REPEAT;
+            0b1_1010 => true, AX_BORDER, AX_BORDER;
+            0b1_1011 => true, AX_BORDER, AX_CLAMP;
+            0b1_1100 => true, AX_CLAMP, AX_EDGE;
+            0b1_1101 => true, AX_CLAMP, AX_REPEAT;
+            0b1_1110 => true, AX_CLAMP, AX_BORDER;
+            0b1_1111 => true, AX_CLAMP, AX_CLAMP;
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (kind, dt, w, h, border, s, t, m, out);
+    }
+}
+
+/// An axis of [`dense_border8`] for wrap class `MODE` (AVX2): the wrapped index and an
+/// all-ones lane where it is inside the level (always for the edge clamp and REPEAT), from
+/// the floor `i` on `n` texels ([`nearest_finish`], [`linear_finish`]).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn border_finish8<const MODE: u8>(
+    i: std::arch::x86_64::__m256i,
+    n: i32,
+) -> (std::arch::x86_64::__m256i, std::arch::x86_64::__m256i) {
+    use std::arch::x86_64::*;
+    match MODE {
+        AX_EDGE => (
+            wrap8::<false>(i, _mm256_set1_epi32(n - 1)),
+            _mm256_set1_epi32(-1),
+        ),
+        AX_REPEAT => (
+            wrap8::<true>(i, _mm256_set1_epi32(n - 1)),
+            _mm256_set1_epi32(-1),
+        ),
+        // i >= 0 && i < n.
+        _ => (
+            i,
+            _mm256_and_si256(
+                _mm256_cmpgt_epi32(i, _mm256_set1_epi32(-1)),
+                _mm256_cmpgt_epi32(_mm256_set1_epi32(n), i),
+            ),
+        ),
+    }
+}
+
+/// A LINEAR axis of [`dense_border8`] for wrap class `MODE` (AVX2): [`linear_u`] (CLAMP's
+/// clamp of s to [0, 1] in `f32::clamp`'s order, u = s·n − ½, a NaN u taken as 0), the floor,
+/// the weight from the unwrapped floor and the second index by `saturating_add`
+/// ([`linear_finish`], as [`linear_axis8`]), then each index's finish and inside lanes.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::type_complexity)]
+fn border_linear8<const MODE: u8>(
+    c: std::arch::x86_64::__m256,
+    n: i32,
+) -> (
+    [std::arch::x86_64::__m256i; 2],
+    [std::arch::x86_64::__m256i; 2],
+    std::arch::x86_64::__m256,
+) {
+    use std::arch::x86_64::*;
+    let c = if MODE == AX_CLAMP {
+        // `f32::clamp(0, 1)`: below 0 taken as 0, above 1 as 1, a NaN and -0 kept (maxps and
+        // minps return their second operand when the compare fails).
+        _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), c))
+    } else {
+        c
+    };
+    let u = _mm256_sub_ps(
+        _mm256_mul_ps(c, _mm256_set1_ps(n as f32)),
+        _mm256_set1_ps(0.5),
+    );
+    let u = _mm256_and_ps(u, _mm256_cmp_ps::<_CMP_ORD_Q>(u, u));
+    let i0 = ifloor8(u);
+    let a = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i0));
+    let a = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), a));
+    let at_max = _mm256_cmpeq_epi32(i0, _mm256_set1_epi32(i32::MAX));
+    let i1 = _mm256_add_epi32(_mm256_add_epi32(i0, _mm256_set1_epi32(1)), at_max);
+    let (i0, in0) = border_finish8::<MODE>(i0, n);
+    let (i1, in1) = border_finish8::<MODE>(i1, n);
+    ([i0, i1], [in0, in1], a)
+}
+
+/// NEAREST or LINEAR (`LIN`) on a dense level with a border texel (AVX2), wrap classes `MX`
+/// on s and `MY` on t ([`AX_EDGE`], [`AX_REPEAT`], [`AX_BORDER`], [`AX_CLAMP`]): `pass_on`'s
+/// wraps, indices j·w + i and eq. 3.24's weights and sum in its order, on eight lanes; each
+/// channel of each texel gathered for the eight lanes through the lanes' inside mask
+/// (`vgatherdps` with the border colour's channel where a texel is outside the level: the
+/// texel `pass_on` takes, without reading it), then transposed back to a texel per lane.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dense_border8<const LIN: bool, const MX: u8, const MY: u8>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    border: [f32; 4],
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h) = (w.max(1), h.max(1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    // The f32 offset of a texel: (k & km)·4, k & km being k for every in-image index (below
+    // the power-of-two count) and at most 2^28 - 1 (the caller's bound), so that a lane
+    // outside the mask reads nothing outside `dt` either.
+    let kmv = _mm256_set1_epi32(km as i32);
+    let off = |j: __m256i, i: __m256i| {
+        _mm256_slli_epi32::<2>(_mm256_and_si256(
+            _mm256_add_epi32(_mm256_sll_epi32(j, sh), i),
+            kmv,
+        ))
+    };
+    let base = dt.as_ptr().cast::<f32>();
+    let mut ch = [_mm256_setzero_ps(); 4];
+    if !LIN {
+        // [`nearest_u`], [`nearest_finish`].
+        let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
+        let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
+        let (i, ii) = border_finish8::<MX>(i, w);
+        let (j, ji) = border_finish8::<MY>(j, h);
+        let (k, inside) = (off(j, i), _mm256_castsi256_ps(_mm256_and_si256(ii, ji)));
+        for (c, v) in ch.iter_mut().enumerate() {
+            // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+            // 4·(dt.len() - 1) and c < 4, so every f32 the mask lets it read lies inside `dt`.
+            *v = unsafe {
+                _mm256_mask_i32gather_ps::<4>(_mm256_set1_ps(border[c]), base.add(c), k, inside)
+            };
+        }
+    } else {
+        let (x, xi, a) = border_linear8::<MX>(lanes8(s), w);
+        let (y, yi, b) = border_linear8::<MY>(lanes8(t), h);
+        let one = _mm256_set1_ps(1.0);
+        let (na, nb) = (_mm256_sub_ps(one, a), _mm256_sub_ps(one, b));
+        let wt = [
+            _mm256_mul_ps(na, nb),
+            _mm256_mul_ps(a, nb),
+            _mm256_mul_ps(na, b),
+            _mm256_mul_ps(a, b),
+        ];
+        // t00, t10, t01, t11.
+        let k = [
+            off(y[0], x[0]),
+            off(y[0], x[1]),
+            off(y[1], x[0]),
+            off(y[1], x[1]),
+        ];
+        let inside = [
+            _mm256_and_si256(xi[0], yi[0]),
+            _mm256_and_si256(xi[1], yi[0]),
+            _mm256_and_si256(xi[0], yi[1]),
+            _mm256_and_si256(xi[1], yi[1]),
+        ]
+        .map(|v| _mm256_castsi256_ps(v));
+        for (c, v) in ch.iter_mut().enumerate() {
+            let src = _mm256_set1_ps(border[c]);
+            // SAFETY: as above.
+            let at = |q: usize| unsafe {
+                _mm256_mask_i32gather_ps::<4>(src, base.add(c), k[q], inside[q])
+            };
+            let x = _mm256_add_ps(_mm256_mul_ps(wt[0], at(0)), _mm256_mul_ps(wt[1], at(1)));
+            let x = _mm256_add_ps(x, _mm256_mul_ps(wt[2], at(2)));
+            *v = _mm256_add_ps(x, _mm256_mul_ps(wt[3], at(3)));
+        }
+    }
+    store8(&ch, m, out);
 }
 
 /// Are all of `n` (each taken as at least 1) powers of two?

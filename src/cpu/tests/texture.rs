@@ -1222,3 +1222,165 @@ fn dense_kernels_are_the_lane_pass_bit_for_bit() {
     assert!(taken > 40_000 && refused > 500, "{taken} {refused}");
     assert!(!avx2() || wide_runs > 10_000, "{wide_runs}");
 }
+
+#[test]
+#[cfg(target_arch = "x86_64")]
+fn dense_border_kernels_are_the_lane_pass_bit_for_bit() {
+    // `dense_border` (the AVX2 kernels of a whole power-of-two level with a border texel:
+    // CLAMP_TO_BORDER, and LINEAR's CLAMP, on one axis or both) against `pass_on`'s lane loops
+    // (the route every CPU without AVX2 keeps) and the scalar `texel`, on every wrap pair
+    // `border_kind` takes and none it refuses, NEAREST and LINEAR, levels from 1x1 to 64x32,
+    // random border colours in several base formats, coordinates with NaN, infinities, signed
+    // zeros, subnormals, huge values, texel centres and edges inside and far outside [0, 1],
+    // random masks: the same bits on the lanes of the mask, the others left as they were; then
+    // the same groups through `texels_lanes` (the dispatch in `pass_level`, depth textures
+    // with their comparison included) against `texel`, with the AVX2 routes on and off.
+    let mut next = lcg(41u64);
+    let wraps = [
+        gl::REPEAT,
+        gl::CLAMP,
+        gl::CLAMP_TO_EDGE,
+        gl::CLAMP_TO_BORDER,
+        gl::MIRRORED_REPEAT,
+    ];
+    let sizes = [
+        (1, 1),
+        (1, 8),
+        (8, 1),
+        (2, 2),
+        (4, 16),
+        (16, 4),
+        (64, 32),
+        (32, 64),
+        (64, 64),
+    ];
+    let bases = [
+        gl::RGBA,
+        gl::RGB,
+        gl::LUMINANCE,
+        gl::LUMINANCE_ALPHA,
+        gl::ALPHA,
+        gl::INTENSITY,
+        gl::DEPTH_COMPONENT,
+    ];
+    let specials = [
+        f32::NAN,
+        f32::INFINITY,
+        -f32::INFINITY,
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        0.5,
+        1e9,
+        -1e9,
+        2_147_483_648.0,
+        -2_147_483_904.0,
+        f32::MIN_POSITIVE / 8.0,
+        f32::MAX,
+        f32::MIN,
+    ];
+    let (mut taken, mut refused, mut lanes_checked) = (0usize, 0usize, 0usize);
+    let mut kinds = std::collections::BTreeSet::new();
+    for round in 0..4000 {
+        let (w, h) = sizes[round % sizes.len()];
+        let linear = round / sizes.len() % 2 == 1;
+        let base = bases[(next() % bases.len() as u64) as usize];
+        let vals: Vec<[f32; 4]> = (0..w * h)
+            .map(|_| std::array::from_fn(|_| (next() % 1001) as f32 / 1000.0))
+            .collect();
+        let filter = if linear { gl::LINEAR } else { gl::NEAREST };
+        let mut obj = obj_with(
+            vec![level(w, h, base, |i, j| vals[(j * w + i) as usize])],
+            filter,
+            filter,
+        );
+        random_border_lod_compare(&mut obj, base == gl::DEPTH_COMPONENT, &mut next);
+        obj.border_color = Vec4::from_array(std::array::from_fn(|_| match next() % 5 {
+            0 => 0.0,
+            1 => 1.0,
+            _ => (next() % 1001) as f32 / 1000.0,
+        }));
+        obj.wrap_s = wraps[(next() % 5) as usize];
+        obj.wrap_t = wraps[(next() % 5) as usize];
+        let smp = sampler(obj, gl::REPLACE);
+        let lv = smp.obj.face_level(0, 0).expect("level 0");
+        let tx: &[[f32; 4]] = &lv.texels;
+        assert!(dense_level(tx, w, h));
+        let border_axis = |mode: u32| mode == gl::CLAMP_TO_BORDER || (linear && mode == gl::CLAMP);
+        let other_ok = |mode: u32| mode != gl::MIRRORED_REPEAT;
+        let expect = (border_axis(smp.wrap[0]) || border_axis(smp.wrap[1]))
+            && other_ok(smp.wrap[0])
+            && other_ok(smp.wrap[1]);
+        let kind = border_kind(linear, smp.wrap);
+        assert_eq!(kind.is_some(), expect && avx2(), "{linear} {:?}", smp.wrap);
+        // The two kinds of kernel never overlap.
+        assert!(kind.is_none() || kernel_kind(linear, smp.wrap).is_none());
+        if kind.is_none() {
+            refused += 1;
+        }
+        let border = crate::texture::keep(smp.base, smp.border);
+        for _ in 0..16 {
+            let coord = |next: &mut dyn FnMut() -> u64, n: i32| match next() % 8 {
+                0 => specials[(next() % specials.len() as u64) as usize],
+                1 => f32::from_bits(next() as u32),
+                2 => ((next() % (8 * n as u64)) as f32 - 2.0 * n as f32) / (2.0 * n as f32),
+                3 => f32::from_bits(
+                    ((next() % (4 * n as u64)) as f32 / n as f32 - 1.0).to_bits() + 1,
+                ),
+                _ => (next() % 100_000) as f32 * 6e-5 - 3.0,
+            };
+            let cs: [f32; LANES] = std::array::from_fn(|_| coord(&mut next, w));
+            let ct: [f32; LANES] = std::array::from_fn(|_| coord(&mut next, h));
+            let cr: [f32; LANES] = std::array::from_fn(|_| (next() % 1201) as f32 / 1000.0 - 0.1);
+            let m = (next() % 256) as u8;
+            let bits = |t: [f32; 4]| t.map(f32::to_bits);
+            if let Some(kind) = kind {
+                kinds.insert(kind);
+                let fill = [f32::from_bits(0x7fc0_dead); 4];
+                let (mut got, mut want) = ([fill; LANES], [fill; LANES]);
+                dense_border(kind, tx, w, h, border, &cs, &ct, m, &mut got);
+                smp.pass_on(linear, tx, Some(tx), w, h, &cs, &ct, m, &mut want, |_, t| t);
+                for l in 0..LANES {
+                    assert_eq!(
+                        bits(got[l]),
+                        bits(want[l]),
+                        "round {round} {w}x{h} kind {kind:#x} lane {l} m {m:#x}: ({}, {})",
+                        cs[l],
+                        ct[l]
+                    );
+                    taken += usize::from(m & (1 << l) != 0);
+                }
+            }
+            // Through the sampler's own dispatch, AVX2 on (where the CPU has it) and off.
+            let q = [1.0f32; LANES];
+            for off in [false, true] {
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(off));
+                let got = smp.texels_lanes([&cs, &ct, &cr, &q], &[0.0; LANES], m);
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
+                for l in 0..LANES {
+                    if m & (1 << l) != 0 {
+                        let want = smp.texel([cs[l], ct[l], cr[l], 1.0], 0.0);
+                        assert_eq!(
+                            bits(got[l]),
+                            bits(want),
+                            "round {round} {w}x{h} off {off} lane {l}: ({}, {}, {})",
+                            cs[l],
+                            ct[l],
+                            cr[l]
+                        );
+                        lanes_checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        refused > 1000 && lanes_checked > 200_000,
+        "{refused} {lanes_checked}"
+    );
+    assert!(
+        !avx2() || (taken > 50_000 && kinds.len() == 17),
+        "{taken} {kinds:?}"
+    );
+}

@@ -494,24 +494,151 @@ fn dense_depth_nearest_is_the_scalar_texel_bit_for_bit() {
                 }
             }
             let m = (next() % 256) as u8;
-            let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
-            for l in 0..LANES {
-                if m & (1 << l) == 0 {
-                    continue;
+            // The AVX2 kernel (gather and comparison in one, `dense_depth`) where the CPU has
+            // it, and the SSE2 route (the gather, then `depth_compare_lanes`).
+            for off in [false, true] {
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(off));
+                let got = s.texels_lanes([&cs, &ct, &cr, &cq], &lambda, m);
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+                for l in 0..LANES {
+                    if m & (1 << l) == 0 {
+                        continue;
+                    }
+                    let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
+                    assert_eq!(
+                        got[l].map(f32::to_bits),
+                        want.map(f32::to_bits),
+                        "round {round} off {off} lane {l}: ({}, {}, {}, {})",
+                        cs[l],
+                        ct[l],
+                        cr[l],
+                        cq[l]
+                    );
+                    checked += 1;
                 }
-                let want = s.texel([cs[l], ct[l], cr[l], cq[l]], lambda[l]);
-                assert!(
-                    same(got[l], want),
-                    "round {round} lane {l}: {:?} vs {want:?} ({}, {}, {}, {})",
-                    got[l],
-                    cs[l],
-                    ct[l],
-                    cr[l],
-                    cq[l]
-                );
-                checked += 1;
             }
         }
     }
-    assert!(checked > 40_000, "{checked}");
+    assert!(checked > 80_000, "{checked}");
+}
+
+/// The kernels of the one-image route of `pass_targets` (a cube face by the 2D
+/// `dense_kernel`, a 1D or 3D LINEAR level by the AVX2 `dense_targets`) against the scalar
+/// `texel`, bit for bit, with the AVX2 routes on (where the CPU has them) and off (then the
+/// cube face takes the SSE2 kernel and the 1D/3D levels `pass_dense`): power-of-two 1D, 3D
+/// and cube objects of every base format, REPEAT and CLAMP_TO_EDGE on most axes (the other
+/// modes now and then, which keep the lane passes), NEAREST, LINEAR and mipmapped filters,
+/// lanes a small step apart (one face and level: the kernels) or awkward ones (NaN, ±∞, huge),
+/// random masks and λ.
+#[test]
+fn dense_target_kernels_are_the_scalar_texel_bit_for_bit() {
+    let mut next = lcg(67);
+    let mut checked = [0usize; 3];
+    let mut kernel_groups = 0usize;
+    let sizes = [1, 2, 4, 8, 16, 32];
+    for round in 0..3000 {
+        let (ti, target) = [
+            (0, gl::TEXTURE_1D),
+            (1, gl::TEXTURE_3D),
+            (2, gl::TEXTURE_CUBE_MAP),
+        ][round % 3];
+        let base = BASES[(next() % 6) as usize];
+        let pick = |next: &mut dyn FnMut() -> u64| sizes[(next() % sizes.len() as u64) as usize];
+        let (mut w, mut h, mut d) = match target {
+            gl::TEXTURE_1D => (pick(&mut next), 1, 1),
+            gl::TEXTURE_3D => (pick(&mut next), pick(&mut next), pick(&mut next)),
+            _ => {
+                let n = pick(&mut next);
+                (n, n, 1)
+            }
+        };
+        let mut o = TexObject::new(target);
+        o.min_filter = [
+            gl::LINEAR,
+            gl::LINEAR_MIPMAP_LINEAR,
+            gl::NEAREST,
+            MINS[(next() % 6) as usize],
+        ][(next() % 4) as usize];
+        o.mag_filter = if next() % 4 == 0 {
+            gl::NEAREST
+        } else {
+            gl::LINEAR
+        };
+        let faces = if target == gl::TEXTURE_CUBE_MAP { 6 } else { 1 };
+        let mut k = 0;
+        loop {
+            for f in 0..faces {
+                o.levels[f * MAX_LEVELS + k] = Some(random_level(w, h, d, base, &mut next));
+            }
+            if w == 1 && h == 1 && d == 1 {
+                break;
+            }
+            let dim = |n: i32, on: bool| if on { (n / 2).max(1) } else { 1 };
+            (w, h, d) = (
+                dim(w, true),
+                dim(h, target != gl::TEXTURE_1D),
+                dim(d, target == gl::TEXTURE_3D),
+            );
+            k += 1;
+        }
+        let wrap = |next: &mut dyn FnMut() -> u64| match next() % 8 {
+            0 => WRAPS[(next() % 5) as usize],
+            1..=3 => gl::REPEAT,
+            _ => gl::CLAMP_TO_EDGE,
+        };
+        o.wrap_s = wrap(&mut next);
+        o.wrap_t = wrap(&mut next);
+        o.wrap_r = wrap(&mut next);
+        random_border_lod_compare(&mut o, false, &mut next);
+        let s = sampler_on(target, o, gl::MODULATE, Default::default());
+        for _ in 0..8 {
+            let c: [[f32; LANES]; 4] = if next() % 4 == 0 {
+                random_lanes(&mut next).0
+            } else {
+                let base: [f32; 4] = std::array::from_fn(|_| match next() % 4 {
+                    0 => coord(&mut next),
+                    _ => (next() % 4000) as f32 * 1e-3 - 1.5,
+                });
+                let step: [f32; 4] = std::array::from_fn(|_| (next() % 2001) as f32 * 1e-4 - 0.1);
+                std::array::from_fn(|k| {
+                    std::array::from_fn(|l| match k {
+                        3 => 1.0,
+                        _ => base[k] + step[k] * l as f32,
+                    })
+                })
+            };
+            let l0 = (next() % 4000) as f32 * 1e-3 - 1.0;
+            let dl = if next() % 2 == 0 { 0.0 } else { 0.01 };
+            let lambda: [f32; LANES] = std::array::from_fn(|l| l0 + dl * l as f32);
+            let m = match next() % 3 {
+                0 => 0xff,
+                _ => (next() % 256) as u8,
+            };
+            if m.count_ones() > 3 {
+                kernel_groups += 1;
+            }
+            for off in [false, true] {
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(off));
+                let got = s.texels_lanes([&c[0], &c[1], &c[2], &c[3]], &lambda, m);
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+                for l in 0..LANES {
+                    if m & (1 << l) == 0 {
+                        continue;
+                    }
+                    let want = s.texel([c[0][l], c[1][l], c[2][l], c[3][l]], lambda[l]);
+                    assert_eq!(
+                        got[l].map(f32::to_bits),
+                        want.map(f32::to_bits),
+                        "round {round} target {target:#x} off {off} lane {l}: {:?}",
+                        [c[0][l], c[1][l], c[2][l]]
+                    );
+                    checked[ti] += 1;
+                }
+            }
+        }
+    }
+    assert!(
+        checked.iter().all(|&n| n > 40_000) && kernel_groups > 10_000,
+        "{checked:?}"
+    );
 }

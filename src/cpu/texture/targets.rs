@@ -9,9 +9,11 @@
 
 use glam::Vec4;
 
+#[cfg(target_arch = "x86_64")]
+use super::{avx2, lanes8, linear_axis8, store8};
 use super::{
-    cube_face, cube_project, depth_compare, fast_log2_lane, lambda_point, wrap_linear_lanes,
-    wrap_nearest_lanes, Axis, Route, Sampler, TexelLanes, Texels,
+    cube_face, cube_project, dense_kernel, depth_compare, fast_log2_lane, kernel_kind,
+    lambda_point, wrap_linear_lanes, wrap_nearest_lanes, Axis, Route, Sampler, TexelLanes, Texels,
 };
 use crate::cpu::lanes::{recip_lanes, LANES};
 use crate::gl;
@@ -206,6 +208,18 @@ impl Sampler {
             let tx: &[[f32; 4]] = &x.texels[..];
             let n = [x.width, x.height, x.depth];
             if dense3(tx, n) && self.in_image(linear) {
+                // Without comparison, the kernels: a cube face (2D) by the 2D sampler's
+                // `dense_kernel`, a 1D or 3D LINEAR level by `dense_targets` (AVX2).
+                if self.compare.is_none() {
+                    if self.dims == 2 {
+                        if let Some(kind) = kernel_kind(linear, self.wrap) {
+                            return dense_kernel(kind, tx, n[0], n[1], s, t, m, out);
+                        }
+                    } else if linear && targets_kernel_ok(self.dims, self.wrap, tx.len()) {
+                        let rep = self.wrap.map(|mode| mode == gl::REPEAT);
+                        return dense_targets(self.dims, rep, tx, n, s, t, r, m, out);
+                    }
+                }
                 match self.compare {
                     None => self.pass_dense(linear, tx, n, s, t, r, m, out, |_, x| x),
                     Some(func) => self.pass_dense(linear, tx, n, s, t, r, m, out, |l, x| {
@@ -709,6 +723,172 @@ impl Sampler {
         }
         out
     }
+}
+
+/// Can the AVX2 kernel [`dense_targets8`] take a one-image LINEAR pass of a 1D or 3D
+/// texture without depth comparison: every axis the texture has REPEAT or CLAMP_TO_EDGE (the
+/// indices `linear_axis8` wraps; no border texel, no mirror), a CPU with AVX2 ([`avx2`]) and
+/// a level of at most 2^28 texels (the gathers' byte offsets fit an i32).
+#[inline(always)]
+fn targets_kernel_ok(dims: usize, wrap: [u32; 3], len: usize) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        (dims == 1 || dims == 3)
+            && wrap
+                .iter()
+                .take(dims)
+                .all(|&mode| mode == gl::REPEAT || mode == gl::CLAMP_TO_EDGE)
+            && len <= 1 << 28
+            && avx2()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (dims, wrap, len);
+        false
+    }
+}
+
+/// `pass_dense`'s LINEAR on a 1D (`dims` 1) or 3D texture as one AVX2 kernel
+/// ([`dense_targets8`]) for the eight lanes, when [`targets_kernel_ok`] holds; `rep` tells
+/// which axes REPEAT (else CLAMP_TO_EDGE). Out of line, as the 2D `dense_kernel`.
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_targets(
+    dims: usize,
+    rep: [bool; 3],
+    dt: &[[f32; 4]],
+    n: [i32; 3],
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() && dt.len() <= 1 << 28 {
+        // SAFETY: AVX2 is present (checked above) and `dt` at most 2^28 texels.
+        unsafe { dense_targets8(dims == 3, rep, dt, n, s, t, r, m, out) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = (dims, rep, dt, n, s, t, r, m, out);
+    }
+}
+
+/// [`linear_axis8`] with the wrap (REPEAT or the edge clamp) chosen at run time (AVX2).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::type_complexity)]
+fn axis8(
+    c: std::arch::x86_64::__m256,
+    n: i32,
+    rep: bool,
+) -> (
+    std::arch::x86_64::__m256i,
+    std::arch::x86_64::__m256i,
+    std::arch::x86_64::__m256,
+) {
+    if rep {
+        linear_axis8::<true>(c, n)
+    } else {
+        linear_axis8::<false>(c, n)
+    }
+}
+
+/// LINEAR on one dense 1D or 3D (`three`) level, eight lanes at once (AVX2): each axis's
+/// `linear_u`, floor, weight and wrapped indices as `wrap_linear_lanes` computes them
+/// ([`linear_axis8`]), the indices k·(h·w) + j·w + i as shifts (w, h, d are powers of two:
+/// [`dense3`]), each channel of each corner gathered for the eight lanes (`vgatherdps`, the
+/// offsets (k & (len − 1))·4), then `linear`'s sums in its order: 1D (1 − α)·t0 + α·t1; 3D
+/// eq. 3.24's plane at k0 and at k1, then (1 − γ)·p0 + γ·p1; the channel registers transposed
+/// back to a texel per lane, the lanes of `m` written.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dense_targets8(
+    three: bool,
+    rep: [bool; 3],
+    dt: &[[f32; 4]],
+    [w, h, d]: [i32; 3],
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    r: &[f32; LANES],
+    m: u8,
+    out: &mut TexelLanes,
+) {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return;
+    };
+    let (w, h, d) = (w.max(1), h.max(1), d.max(1));
+    let kmv = _mm256_set1_epi32(km as i32);
+    let off = |k: __m256i| _mm256_slli_epi32::<2>(_mm256_and_si256(k, kmv));
+    let base = dt.as_ptr().cast::<f32>();
+    let one = _mm256_set1_ps(1.0);
+    let (x0, x1, a) = axis8(lanes8(s), w, rep[0]);
+    let na = _mm256_sub_ps(one, a);
+    let mut ch = [_mm256_setzero_ps(); 4];
+    if !three {
+        let (k0, k1) = (off(x0), off(x1));
+        for (c, v) in ch.iter_mut().enumerate() {
+            // SAFETY: AVX2 is present (the caller's promise); each offset is at most
+            // 4·(dt.len() - 1) and c < 4, so every f32 read lies inside `dt`.
+            let (t0, t1) = unsafe {
+                (
+                    _mm256_i32gather_ps::<4>(base.add(c), k0),
+                    _mm256_i32gather_ps::<4>(base.add(c), k1),
+                )
+            };
+            *v = _mm256_add_ps(_mm256_mul_ps(na, t0), _mm256_mul_ps(a, t1));
+        }
+        store8(&ch, m, out);
+        return;
+    }
+    let (y0, y1, b) = axis8(lanes8(t), h, rep[1]);
+    let (z0, z1, g) = axis8(lanes8(r), d, rep[2]);
+    let nb = _mm256_sub_ps(one, b);
+    let wt = [
+        _mm256_mul_ps(na, nb),
+        _mm256_mul_ps(a, nb),
+        _mm256_mul_ps(na, b),
+        _mm256_mul_ps(a, b),
+    ];
+    let ng = _mm256_sub_ps(one, g);
+    let shw = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    // h·w's log2 (both powers of two, their product at most 2^28).
+    let shs = _mm_cvtsi32_si128((w.trailing_zeros() + h.trailing_zeros()) as i32);
+    let (r0, r1) = (_mm256_sll_epi32(y0, shw), _mm256_sll_epi32(y1, shw));
+    // The four corners of the plane at slab offset `z`: t00, t10, t01, t11.
+    let corners = |z: __m256i| {
+        let z = _mm256_sll_epi32(z, shs);
+        let (q0, q1) = (_mm256_add_epi32(z, r0), _mm256_add_epi32(z, r1));
+        [
+            off(_mm256_add_epi32(q0, x0)),
+            off(_mm256_add_epi32(q0, x1)),
+            off(_mm256_add_epi32(q1, x0)),
+            off(_mm256_add_epi32(q1, x1)),
+        ]
+    };
+    let (k0, k1) = (corners(z0), corners(z1));
+    for (c, v) in ch.iter_mut().enumerate() {
+        // SAFETY: as above.
+        let at = |k: __m256i| unsafe { _mm256_i32gather_ps::<4>(base.add(c), k) };
+        let plane = |k: &[__m256i; 4]| {
+            let x = _mm256_add_ps(
+                _mm256_mul_ps(wt[0], at(k[0])),
+                _mm256_mul_ps(wt[1], at(k[1])),
+            );
+            let x = _mm256_add_ps(x, _mm256_mul_ps(wt[2], at(k[2])));
+            _mm256_add_ps(x, _mm256_mul_ps(wt[3], at(k[3])))
+        };
+        let (p0, p1) = (plane(&k0), plane(&k1));
+        *v = _mm256_add_ps(_mm256_mul_ps(ng, p0), _mm256_mul_ps(g, p1));
+    }
+    store8(&ch, m, out);
 }
 
 /// Eq. 3.24's sum for lane l of a LINEAR pass, in the scalar code's order:
