@@ -634,7 +634,9 @@ mod tests {
                 panic!("the fused route covers this sampler");
             };
             // SAFETY: the CPU has AVX2 (checked above).
-            let got = unsafe { std::mem::transmute::<_, [f32; LANES]>(fs.lambda(x)) };
+            let got = unsafe {
+                std::mem::transmute::<std::arch::x86_64::__m256, [f32; LANES]>(fs.lambda(x))
+            };
             let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(ox) as f32);
             let want = s.quad_lambda_lanes(&planes, to, qx, qy);
             assert!(
