@@ -64,6 +64,58 @@ pub struct FragCtx<'a> {
     pub crossbar: bool,
 }
 
+/// A span's row state for [`fused_span`]: its first window x and pixel count, its tile index,
+/// its coverage mask, the flat varyings, its y and the quad row's y relative to the planes'
+/// origin, whose window x is `ox`.
+#[cfg(target_arch = "x86_64")]
+struct FusedArgs {
+    x0: i32,
+    n: usize,
+    base: usize,
+    mask: u64,
+    nflat: usize,
+    fy: f32,
+    ox: i32,
+    qy: f32,
+}
+
+/// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
+/// `tx` with coordinates at varying `to`): each covered group from the planes to the store.
+/// False, with nothing written, when the sampler's state is not the route's. Out of line, so
+/// that the general path's code stays as it was.
+///
+/// # Safety
+/// The CPU must have AVX2 (`lanes::has_avx2`).
+///
+/// [`FusedSpan`]: super::texture::FusedSpan
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,popcnt")]
+#[inline(never)]
+unsafe fn fused_span(
+    bufs: &mut TileBufs,
+    tx: &Sampler,
+    to: usize,
+    planes: &[f32],
+    a: &FusedArgs,
+) -> bool {
+    let Some(mut fs) = super::texture::FusedSpan::new(tx, to, planes, a.nflat, a.fy, a.ox, a.qy)
+    else {
+        return false;
+    };
+    let mut g = 0;
+    while g < a.n.min(64) {
+        let m = (a.mask >> g) & ((1 << LANES) - 1);
+        if m != 0 {
+            if let Some(dst) = bufs.color.get_mut(a.base + g..) {
+                // SAFETY: the CPU has AVX2 (the caller's promise).
+                unsafe { fs.group(a.x0 + g as i32, m as u8, dst) };
+            }
+        }
+        g += LANES;
+    }
+    true
+}
+
 /// `FragCtx::crossbar` of the units `tex`.
 pub fn crossbar(tex: &[Option<(&Sampler, usize)>]) -> bool {
     tex.iter().flatten().any(|(s, _)| s.crossbar())
@@ -590,13 +642,42 @@ impl FragCtx<'_> {
         // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
         // colour, stored on lanes when one colour buffer is written whole.
         let nv = nv.min(MAXV);
-        let mut vl = [[0.0f32; LANES]; MAXV];
         let on_lanes = self.tex_lanes_ok(p);
         let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
         // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
         // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
         let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
         let qy = ((y & !1) - oy) as f32;
+        // The common textured state (one 2D unit, MODULATE or REPLACE, no colour sum, one
+        // colour buffer written whole) on AVX2: each group from the planes to the store in
+        // registers, its λ included (`FusedSpan`).
+        #[cfg(target_arch = "x86_64")]
+        if let [Some((tx, to)), None, ..] = self.tex {
+            if whole
+                && on_lanes
+                && super::texture::FusedSpan::covers(tx)
+                && !(self.color_sum && self.rl.spec.is_some())
+                && to.checked_add(4).is_some_and(|e| e <= nv)
+                && planes.len() >= 3 + 3 * nv
+                && super::lanes::has_avx2()
+            {
+                let span = FusedArgs {
+                    x0,
+                    n,
+                    base,
+                    mask,
+                    nflat,
+                    fy,
+                    ox,
+                    qy,
+                };
+                // SAFETY: the CPU has AVX2 (`has_avx2`).
+                if unsafe { fused_span(bufs, tx, to, planes, &span) } {
+                    return;
+                }
+            }
+        }
+        let mut vl = [[0.0f32; LANES]; MAXV];
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         // Each quad's λ once (not once per lane): computed as the groups reach it.
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
@@ -2169,24 +2250,47 @@ mod tests {
             gl::LINEAR_MIPMAP_LINEAR,
         ];
         let envs = [gl::MODULATE, gl::REPLACE, gl::DECAL, gl::ADD, gl::BLEND];
-        for round in 0..600 {
+        let wraps = [
+            gl::REPEAT,
+            gl::CLAMP_TO_EDGE,
+            gl::REPEAT,
+            gl::CLAMP_TO_EDGE,
+            gl::CLAMP,
+            gl::MIRRORED_REPEAT,
+        ];
+        // Rounds the fused AVX2 route (`FusedSpan`) covers.
+        let mut fused = 0;
+        for round in 0..900 {
             let mut obj = TexObject {
                 min_filter: g.pick(&mins),
                 mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                wrap_s: g.pick(&wraps),
+                wrap_t: g.pick(&wraps),
                 ..TexObject::default()
             };
-            let mut w = 8;
+            let (ws, wt) = (obj.wrap_s, obj.wrap_t);
+            // Mostly power-of-two levels (the dense ones), sometimes 6x6, 3x3, 1x1; RGBA or
+            // RGB (alpha 1).
+            let mut w = [8, 8, 4, 6][(g.next() % 4) as usize];
+            let rgb = g.next() % 3 == 0;
             let mut k = 0;
             while w >= 1 {
                 let texels = (0..w * w)
-                    .map(|_| std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0))
+                    .map(|_| {
+                        let mut t: [f32; 4] =
+                            std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
+                        if rgb {
+                            t[3] = 1.0;
+                        }
+                        t
+                    })
                     .collect::<Vec<_>>();
                 obj.levels[k] = Some(Level {
                     depth: 1,
                     width: w,
                     height: w,
-                    internal_format: gl::RGBA as i32,
-                    base: gl::RGBA,
+                    internal_format: if rgb { gl::RGB } else { gl::RGBA } as i32,
+                    base: if rgb { gl::RGB } else { gl::RGBA },
                     texels: texels.into(),
                 });
                 k += 1;
@@ -2260,10 +2364,28 @@ mod tests {
                 };
                 planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
             }
+            // Now and then a coordinate plane term that is NaN, infinite or zero (q = 0).
+            if g.next() % 8 == 0 {
+                let k = 3 + 3 * 4 + (g.next() % 12) as usize;
+                if let Some(v) = planes.get_mut(k) {
+                    *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
+                }
+            }
             let color: Vec<[u8; 4]> = (0..TILE * TILE)
                 .map(|_| (g.next() as u32).to_le_bytes())
                 .collect();
             let two = g.next() % 4 == 0;
+            if units == 1
+                && matches!(state.textures.units[0].env_mode, gl::MODULATE | gl::REPLACE)
+                && [ws, wt]
+                    .iter()
+                    .all(|&m| m == gl::REPEAT || m == gl::CLAMP_TO_EDGE)
+                && !f.count
+                && f.color_mask == [true; 4]
+                && !two
+            {
+                fused += 1;
+            }
             let depth: Vec<u32> = (0..TILE * TILE)
                 .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
                 .collect();
@@ -2328,6 +2450,14 @@ mod tests {
                 got == want,
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
             );
+            // The AVX2 routes (the fused one among them) against the SSE2 ones.
+            #[cfg(target_arch = "x86_64")]
+            if crate::cpu::lanes::has_avx2() {
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(true));
+                let sse2 = run(true);
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
+                assert!(got == sse2, "round {round}: AVX2 and SSE2 differ");
+            }
             // The same span with per-fragment operations (`ops_rows`'s textured route,
             // `tex_span`) against each fragment through `full`.
             let mut h = Gen(1000 + round as u64);
@@ -2383,6 +2513,10 @@ mod tests {
                 "round {round} with {ops:?}: {f:?} {p:?} y {y} x {x0}..={x1}"
             );
         }
+        assert!(
+            fused > 30,
+            "{fused} of 900 rounds in the fused route's state"
+        );
     }
 
     #[test]

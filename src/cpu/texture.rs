@@ -22,10 +22,12 @@ use glam::Vec4;
 
 use super::lanes::{recip_lanes, LANES};
 
+mod span;
 mod targets;
 use crate::gl;
 use crate::state::{State, MAX_TEXTURE_UNITS};
 use crate::texture::{as_rgba, is_mipmap_filter, Combine, Level, TexObject, MAX_TEXTURE_LOD_BIAS};
+pub use span::FusedSpan;
 
 /// Eight fragments' texels, lane-major (each lane's RGBA as `shade`'s filters return it).
 pub type TexelLanes = [[f32; 4]; LANES];

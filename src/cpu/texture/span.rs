@@ -1,0 +1,648 @@
+//! The fused textured group (AVX2): for a span whose state is the common one — one 2D unit
+//! with [`Sampler::lanes_ok`], no depth comparison, REPEAT or CLAMP_TO_EDGE on s and t, the
+//! MODULATE or REPLACE environment on an RGBA or RGB texture, no colour sum, one colour buffer
+//! written whole — eight fragments go from the planes to the RGBA8 store in registers: 1/w and
+//! the varyings, s/q and t/q, the level choice ([`Sampler::select_lanes`]), the one or two
+//! levels' filter on a [`dense_level`] with plain 16-byte texel loads (no gathers), the level
+//! blend, the environment and the unorm8 pack. Each lane computes the expressions of the
+//! general path (`lanes::varyings`, [`Sampler::texels_lanes`], `env_of`, `store_pixels`) in
+//! the same order, so each pixel has the same bytes; a group whose lanes fall on different
+//! levels or filters, or whose level is not dense, takes [`Sampler::texels_lanes`] for its
+//! texels and goes on in registers.
+
+#[cfg(target_arch = "x86_64")]
+use super::{dense_level, ifloor8, linear_axis8, mask_eq, mask_ne_zero, wrap8, Route};
+use super::{Sampler, LANES};
+use crate::gl;
+
+/// A span's fused route: the unit's sampler, its coordinates' varying and the state chosen
+/// once ([`FusedSpan::new`]).
+#[derive(Clone, Copy, Debug)]
+pub struct FusedSpan<'a> {
+    s: &'a Sampler,
+    /// REPEAT on s (else CLAMP_TO_EDGE), on t.
+    rep: [bool; 2],
+    /// REPLACE (else MODULATE).
+    replace: bool,
+    /// An RGB texture (the fragment's alpha passes).
+    rgb: bool,
+    /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
+    /// varyings and s, t, q.
+    pl: [[f32; 3]; 8],
+    /// Which of the colour, s, t, q varyings are smooth (multiplied by 1/w).
+    div: [bool; 7],
+    /// The levels looked up last: their numbers and views.
+    cache: [(i32, View<'a>); 2],
+    /// Window x of the planes' origin.
+    ox: i32,
+    /// λ's planes of s, t and q: constant, x step, y term at the quad row's y and at one
+    /// more (`quad_lambda_lanes`' `qy` and `qy + 1`).
+    lp: [[f32; 4]; 3],
+}
+
+/// A level as the route reads it.
+#[derive(Clone, Copy, Debug)]
+enum View<'a> {
+    /// Not looked up yet (the cache's initial state).
+    Unknown,
+    /// No such level: (0, 0, 0, 0).
+    Missing,
+    /// Not [`dense_level`]: the group takes `texels_lanes`.
+    Sparse,
+    /// A dense level: its texels, width and height.
+    Dense(&'a [[f32; 4]], i32, i32),
+}
+
+impl<'a> FusedSpan<'a> {
+    /// Does the route cover sampler `s`'s state (the checks of [`FusedSpan::new`] on the
+    /// sampler alone, cheap enough for the caller to make before the call)?
+    #[inline(always)]
+    pub fn covers(s: &Sampler) -> bool {
+        let edge = |m: u32| m == gl::REPEAT || m == gl::CLAMP_TO_EDGE;
+        cfg!(target_arch = "x86_64")
+            && s.dims == 2
+            && !s.cube
+            && !s.crossbar
+            && s.compare.is_none()
+            && (s.env == gl::MODULATE || s.env == gl::REPLACE)
+            && (s.base == gl::RGBA || s.base == gl::RGB)
+            && edge(s.wrap[0])
+            && edge(s.wrap[1])
+    }
+
+    /// The fused route of sampler `s` whose coordinates are varyings `to..to + 4`, or None
+    /// when its state is not the one the route covers (see the module documentation; the
+    /// caller checks the rest of the span's state).
+    /// `planes` must hold the 1/w plane and the planes of the `nv` varyings (the first
+    /// `nflat` flat), with `to + 4 <= nv`; `fy` is the row's y relative to the planes' origin.
+    #[inline]
+    pub fn new(
+        s: &'a Sampler,
+        to: usize,
+        planes: &[f32],
+        nflat: usize,
+        fy: f32,
+        ox: i32,
+        qy: f32,
+    ) -> Option<FusedSpan<'a>> {
+        let rep = |mode: u32| match mode {
+            gl::REPEAT => Some(true),
+            gl::CLAMP_TO_EDGE => Some(false),
+            _ => None,
+        };
+        if cfg!(not(target_arch = "x86_64"))
+            || s.dims != 2
+            || s.cube
+            || s.crossbar
+            || s.compare.is_some()
+            || !matches!(s.env, gl::MODULATE | gl::REPLACE)
+            || !matches!(s.base, gl::RGBA | gl::RGB)
+        {
+            return None;
+        }
+        let rep = [rep(s.wrap[0])?, rep(s.wrap[1])?];
+        // `lanes::varyings`' planes: (a, dx, dy·fy) of 1/w, then varying j at 3 + 3j.
+        let vars = [0, 1, 2, 3, to, to + 1, to + 3];
+        let row = |k: usize| -> Option<[f32; 3]> {
+            let p = planes.get(k..k + 3)?;
+            Some([p[0], p[1], p[2] * fy])
+        };
+        let mut pl = [[0.0f32; 3]; 8];
+        pl[0] = row(0)?;
+        for (p, &j) in pl[1..].iter_mut().zip(&vars) {
+            *p = row(3 + 3 * j)?;
+        }
+        Some(FusedSpan {
+            s,
+            rep,
+            replace: s.env == gl::REPLACE,
+            rgb: s.base == gl::RGB,
+            pl,
+            div: vars.map(|j| j >= nflat),
+            cache: [(0, View::Unknown); 2],
+            ox,
+            lp: [to, to + 1, to + 3].map(|j| {
+                let k = 3 + 3 * j;
+                let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+                let (a, dx, dy) = (g(k), g(k + 1), g(k + 2));
+                [a, dx, dy * qy, dy * (qy + 1.0)]
+            }),
+        })
+    }
+
+    /// The group of eight fragments from window-relative x `fx0` on row `fy` (relative to the
+    /// planes' origin), lanes `m`, λ before bias `lam`: their colours stored into `dst` (a
+    /// lane l into `dst[l]`), what `tri_span`'s general path stores for them. `planes` holds
+    /// the 1/w plane and at least `nv` varyings' planes, the first `nflat` of them flat, the
+    /// colour at 0..4 and the coordinates at `to..to + 4` below `nv` (the caller's checks).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[allow(clippy::too_many_arguments)]
+    pub unsafe fn group(&mut self, x: i32, m: u8, dst: &mut [[u8; 4]]) {
+        use std::arch::x86_64::*;
+        let fx0 = x - self.ox;
+        let lam = if self.s.route == Route::Lod {
+            std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x))
+        } else {
+            [0.0; LANES]
+        };
+        let lam = &lam;
+        const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+        // `lanes::varyings`: x = fx0 as f32 + l, each plane (a + dx·x) + dy·fy, 1/w by
+        // `divps`, the smooth varyings times it.
+        // SAFETY: the load reads the eight floats of `IOTA`.
+        let xs = _mm256_add_ps(_mm256_set1_ps(fx0 as f32), unsafe {
+            _mm256_loadu_ps(IOTA.as_ptr())
+        });
+        let plane = |[a, dx, yt]: [f32; 3]| {
+            _mm256_add_ps(
+                _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
+                _mm256_set1_ps(yt),
+            )
+        };
+        let one = _mm256_set1_ps(1.0);
+        let inv = _mm256_div_ps(one, plane(self.pl[0]));
+        let vary = |k: usize| {
+            let v = plane(self.pl[k + 1]);
+            if self.div[k] {
+                _mm256_mul_ps(v, inv)
+            } else {
+                v
+            }
+        };
+        let col = [vary(0), vary(1), vary(2), vary(3)];
+        let (s, t, q) = (vary(4), vary(5), vary(6));
+        // `texels_lanes`: inv = 1/q where q ≠ 0 (a NaN q included), else 0; s·inv, t·inv.
+        let rq = _mm256_div_ps(one, q);
+        let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
+        let (ss, tt) = (_mm256_mul_ps(s, qi), _mm256_mul_ps(t, qi));
+        let tex = match self.texels(ss, tt, lam, m) {
+            Some(p) => p,
+            None => {
+                // Any other case: `texels_lanes` on the same coordinates (r is read only by
+                // the depth comparison, which this route excludes).
+                let a = |v: __m256| std::mem::transmute::<__m256, [f32; LANES]>(v);
+                let (sa, ta, qa) = (a(s), a(t), a(q));
+                let ra = [0.0f32; LANES];
+                let tl = self.s.texels_lanes([&sa, &ta, &ra, &qa], lam, m);
+                std::array::from_fn(|k| _mm256_loadu2_m128(tl[k + 4].as_ptr(), tl[k].as_ptr()))
+            }
+        };
+        // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha),
+        // clamped to [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
+        let cf = pairs(&col);
+        let (zero, k255, bias) = (
+            _mm256_setzero_ps(),
+            _mm256_set1_ps(255.0 / 256.0),
+            _mm256_set1_ps(32768.0),
+        );
+        let low = _mm256_set1_epi32(0xFF);
+        let px: [__m256i; 4] = std::array::from_fn(|k| {
+            let c = if self.replace {
+                tex[k]
+            } else {
+                _mm256_mul_ps(cf[k], tex[k])
+            };
+            let c = if self.rgb {
+                _mm256_blend_ps::<0x88>(c, cf[k])
+            } else {
+                c
+            };
+            let c = _mm256_min_ps(_mm256_max_ps(c, zero), one);
+            // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
+            _mm256_and_si256(
+                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k255), bias)),
+                low,
+            )
+        });
+        // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
+        let v = _mm256_packus_epi16(
+            _mm256_packs_epi32(px[0], px[1]),
+            _mm256_packs_epi32(px[2], px[3]),
+        );
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let on = _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+            bits,
+        );
+        if let Some(d) = dst.get_mut(..LANES) {
+            let p = d.as_mut_ptr().cast::<__m256i>();
+            // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
+            // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
+            unsafe {
+                let old = _mm256_loadu_si256(p);
+                _mm256_storeu_si256(p, _mm256_blendv_epi8(old, v, on));
+            }
+            return;
+        }
+        let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
+        for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
+            if m & (1 << l) != 0 {
+                *d = c;
+            }
+        }
+    }
+
+    /// λ before bias of the eight pixels from window x `x` (lane l at x + l): each lane its
+    /// quad's, what `quad_lambda_lanes` gives for the quad at
+    /// ((x + l) & !1) - ox (each lane computes its quad's value; two lanes share a quad).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    pub(super) fn lambda(&self, x: i32) -> std::arch::x86_64::__m256 {
+        use std::arch::x86_64::*;
+        let iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        let qi = _mm256_and_si256(
+            _mm256_add_epi32(_mm256_set1_epi32(x), iota),
+            _mm256_set1_epi32(!1),
+        );
+        let qx = _mm256_cvtepi32_ps(_mm256_sub_epi32(qi, _mm256_set1_epi32(self.ox)));
+        let one = _mm256_set1_ps(1.0);
+        let qx1 = _mm256_add_ps(qx, one);
+        let [ps, pt, pq] = self.lp;
+        let size = [self.s.size[0], self.s.size[1]];
+        // `lambda_point` (dims 2): each plane (a + dx·x) + yt, 1/q where q ≠ 0 else 0,
+        // then (c·inv)·size for s and t; r's component is 0.
+        let point = |xv: __m256, row: usize| {
+            let ev = |p: [f32; 4]| {
+                _mm256_add_ps(
+                    _mm256_add_ps(
+                        _mm256_set1_ps(p[0]),
+                        _mm256_mul_ps(_mm256_set1_ps(p[1]), xv),
+                    ),
+                    _mm256_set1_ps(p[2 + row]),
+                )
+            };
+            let q = ev(pq);
+            let rq = _mm256_div_ps(one, q);
+            let inv = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
+            let sc =
+                |p: [f32; 4], n: f32| _mm256_mul_ps(_mm256_mul_ps(ev(p), inv), _mm256_set1_ps(n));
+            (sc(ps, size[0]), sc(pt, size[1]))
+        };
+        let (p0, px, py) = (point(qx, 0), point(qx1, 0), point(qx, 1));
+        // `len2`: ax·ax + ay·ay + az·az, az = 0 - 0.
+        let zero = _mm256_setzero_ps();
+        let zz = _mm256_mul_ps(zero, zero);
+        let len2 = |p: (__m256, __m256)| {
+            let (a, b) = (_mm256_sub_ps(p.0, p0.0), _mm256_sub_ps(p.1, p0.1));
+            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a, a), _mm256_mul_ps(b, b)), zz)
+        };
+        let (lx, ly) = (len2(px), len2(py));
+        // `f32::max`: the other argument where one is NaN.
+        let rho2 = _mm256_blendv_ps(
+            _mm256_max_ps(lx, ly),
+            lx,
+            _mm256_cmp_ps::<_CMP_UNORD_Q>(ly, ly),
+        );
+        _mm256_mul_ps(_mm256_set1_ps(0.5), fast_log2_8(rho2))
+    }
+
+    /// The texels of the group (pixel-major pairs: register k holds lane k's texel in its low
+    /// half and lane k + 4's in its high half) at s/q `ss`, t/q `tt` and λ `lam`, when every
+    /// lane of `m` is on one level with one filter and the levels read are dense: what
+    /// `texels_lanes` gives (`lod_lanes`' one-level case, `pass_level`'s dense kernels,
+    /// `blend_levels`). None otherwise.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn texels(
+        &mut self,
+        ss: std::arch::x86_64::__m256,
+        tt: std::arch::x86_64::__m256,
+        lam: &[f32; LANES],
+        m: u8,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        let s = self.s;
+        let (level, linear, second, f) = match s.route {
+            Route::Nearest => (s.base_level, false, 0, [0.0f32; LANES]),
+            Route::Linear => (s.base_level, true, 0, [0.0f32; LANES]),
+            Route::Lod => {
+                let (la, linear, f) = s.select_lanes(lam);
+                let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
+                let (second, same) = (mask_ne_zero(&f) & m, mask_eq(&la, first));
+                let linear = linear & m;
+                if same & m != m || (linear != 0 && linear != m) {
+                    return None;
+                }
+                (first, linear != 0, second, f)
+            }
+        };
+        let a = self.level(level, linear, ss, tt)?;
+        if second == 0 {
+            return Some(a);
+        }
+        // f ≠ 0 only below `span`: level + 1 is at most `last`.
+        let b = self.level(level.saturating_add(1), linear, ss, tt)?;
+        // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others.
+        let fv = _mm256_loadu_ps(f.as_ptr());
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let on = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
+            bits,
+        ));
+        let one = _mm256_set1_ps(1.0);
+        Some(std::array::from_fn(|k| {
+            let idx = pair_index(k);
+            let (fk, onk) = (
+                _mm256_permutevar8x32_ps(fv, idx),
+                _mm256_permutevar8x32_ps(on, idx),
+            );
+            let x = _mm256_add_ps(
+                _mm256_mul_ps(a[k], _mm256_sub_ps(one, fk)),
+                _mm256_mul_ps(b[k], fk),
+            );
+            _mm256_blendv_ps(a[k], x, onk)
+        }))
+    }
+
+    /// One level's NEAREST or LINEAR for the eight lanes (pixel-major pairs), as
+    /// `pass_level` computes it: a missing level gives (0, 0, 0, 0); a level that is not
+    /// [`dense_level`] gives None.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn level(
+        &mut self,
+        level: i32,
+        linear: bool,
+        ss: std::arch::x86_64::__m256,
+        tt: std::arch::x86_64::__m256,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        // Two cache slots by parity: a trilinear group's two levels keep one each.
+        let slot = &mut self.cache[(level & 1) as usize];
+        let view = match *slot {
+            (n, v) if n == level && !matches!(v, View::Unknown) => v,
+            _ => {
+                let sampler: &'a Sampler = self.s;
+                let v = match sampler.obj.face_level(0, level) {
+                    None => View::Missing,
+                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
+                        View::Dense(&v.texels, v.width, v.height)
+                    }
+                    Some(_) => View::Sparse,
+                };
+                *slot = (level, v);
+                v
+            }
+        };
+        let (dt, w, h) = match view {
+            View::Dense(dt, w, h) => (dt, w, h),
+            View::Missing => return Some([_mm256_setzero_ps(); 4]),
+            View::Sparse | View::Unknown => return None,
+        };
+        let km = dt.len().checked_sub(1)?;
+        Some(match (linear, self.rep) {
+            (false, [false, false]) => nearest::<false, false>(dt, km, w, h, ss, tt),
+            (false, [false, true]) => nearest::<false, true>(dt, km, w, h, ss, tt),
+            (false, [true, false]) => nearest::<true, false>(dt, km, w, h, ss, tt),
+            (false, [true, true]) => nearest::<true, true>(dt, km, w, h, ss, tt),
+            (true, [false, false]) => bilinear::<false, false>(dt, km, w, h, ss, tt),
+            (true, [false, true]) => bilinear::<false, true>(dt, km, w, h, ss, tt),
+            (true, [true, false]) => bilinear::<true, false>(dt, km, w, h, ss, tt),
+            (true, [true, true]) => bilinear::<true, true>(dt, km, w, h, ss, tt),
+        })
+    }
+}
+
+/// The `vpermps` index that puts lane k in the low half and lane k + 4 in the high half.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn pair_index(k: usize) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let (a, b) = (k as i32, k as i32 + 4);
+    _mm256_setr_epi32(a, a, a, a, b, b, b, b)
+}
+
+/// Channel-major lanes `ch` as pixel-major pairs (register k: lane k's RGBA, then lane
+/// k + 4's), `store8`'s transposition.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn pairs(ch: &[std::arch::x86_64::__m256; 4]) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let (t0, t1) = (
+        _mm256_unpacklo_ps(ch[0], ch[1]),
+        _mm256_unpackhi_ps(ch[0], ch[1]),
+    );
+    let (t2, t3) = (
+        _mm256_unpacklo_ps(ch[2], ch[3]),
+        _mm256_unpackhi_ps(ch[2], ch[3]),
+    );
+    [
+        _mm256_shuffle_ps::<0x44>(t0, t2),
+        _mm256_shuffle_ps::<0xEE>(t0, t2),
+        _mm256_shuffle_ps::<0x44>(t1, t3),
+        _mm256_shuffle_ps::<0xEE>(t1, t3),
+    ]
+}
+
+/// The eight texel offsets `k` (indices into `dt`, already masked by `km`) as pixel-major
+/// pairs: lane q's texel in the low half of register q, lane q + 4's in the high half.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    // SAFETY: `__m256i` has the layout of `[i32; 8]`; every bit pattern is valid.
+    let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
+    // Each index is below `dt.len()` already (masked by `km`); the mask again here lets the
+    // bounds check fold away.
+    let km = dt.len().wrapping_sub(1);
+    let at = |l: usize| &dt[k[l] as usize & km];
+    std::array::from_fn(|q| {
+        let (lo, hi) = (at(q), at(q + 4));
+        // SAFETY: each load reads one `[f32; 4]` of `dt`.
+        unsafe { _mm256_loadu2_m128(hi.as_ptr(), lo.as_ptr()) }
+    })
+}
+
+/// `dense_nearest8`'s indices (the same wraps, floors and masks), the texels loaded per lane.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn nearest<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    km: usize,
+    w: i32,
+    h: i32,
+    s: std::arch::x86_64::__m256,
+    t: std::arch::x86_64::__m256,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let (w, h) = (w.max(1), h.max(1));
+    let i = ifloor8(_mm256_mul_ps(s, _mm256_set1_ps(w as f32)));
+    let j = ifloor8(_mm256_mul_ps(t, _mm256_set1_ps(h as f32)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
+    load_pairs(dt, _mm256_and_si256(k, _mm256_set1_epi32(km as i32)))
+}
+
+/// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
+/// pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order per channel.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn bilinear<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    km: usize,
+    w: i32,
+    h: i32,
+    s: std::arch::x86_64::__m256,
+    t: std::arch::x86_64::__m256,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let (w, h) = (w.max(1), h.max(1));
+    let (x0, x1, a) = linear_axis8::<RX>(s, w);
+    let (y0, y1, b) = linear_axis8::<RY>(t, h);
+    let one = _mm256_set1_ps(1.0);
+    let (na, nb) = (_mm256_sub_ps(one, a), _mm256_sub_ps(one, b));
+    let wt = [
+        _mm256_mul_ps(na, nb),
+        _mm256_mul_ps(a, nb),
+        _mm256_mul_ps(na, b),
+        _mm256_mul_ps(a, b),
+    ];
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
+    let kmv = _mm256_set1_epi32(km as i32);
+    let f = |k: __m256i| _mm256_and_si256(k, kmv);
+    let c = [
+        load_pairs(dt, f(_mm256_add_epi32(r0, x0))),
+        load_pairs(dt, f(_mm256_add_epi32(r0, x1))),
+        load_pairs(dt, f(_mm256_add_epi32(r1, x0))),
+        load_pairs(dt, f(_mm256_add_epi32(r1, x1))),
+    ];
+    std::array::from_fn(|q| {
+        let idx = pair_index(q);
+        let wq = |n: usize| _mm256_permutevar8x32_ps(wt[n], idx);
+        let x = _mm256_add_ps(_mm256_mul_ps(wq(0), c[0][q]), _mm256_mul_ps(wq(1), c[1][q]));
+        let x = _mm256_add_ps(x, _mm256_mul_ps(wq(2), c[2][q]));
+        _mm256_add_ps(x, _mm256_mul_ps(wq(3), c[3][q]))
+    })
+}
+
+/// `fast_log2_lanes` on eight lanes (AVX2): the exponent as an integer converted exactly plus
+/// the mantissa minus one where 0 < x < +∞; -∞ for ±0, +∞ for +∞, NaN otherwise.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn fast_log2_8(v: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    let bits = _mm256_castps_si256(v);
+    let e = _mm256_sub_epi32(
+        _mm256_and_si256(_mm256_srli_epi32::<23>(bits), _mm256_set1_epi32(0xff)),
+        _mm256_set1_epi32(127),
+    );
+    let m = _mm256_castsi256_ps(_mm256_or_si256(
+        _mm256_and_si256(bits, _mm256_set1_epi32(0x007f_ffff)),
+        _mm256_set1_epi32(0x3f80_0000),
+    ));
+    let val = _mm256_add_ps(_mm256_cvtepi32_ps(e), _mm256_sub_ps(m, _mm256_set1_ps(1.0)));
+    let inf = _mm256_set1_ps(f32::INFINITY);
+    let zero = _mm256_cmp_ps::<_CMP_EQ_OQ>(v, _mm256_setzero_ps());
+    let is_inf = _mm256_cmp_ps::<_CMP_EQ_OQ>(v, inf);
+    let not_zero = _mm256_or_ps(
+        _mm256_and_ps(is_inf, inf),
+        _mm256_andnot_ps(is_inf, _mm256_set1_ps(f32::NAN)),
+    );
+    let special = _mm256_or_ps(
+        _mm256_and_ps(zero, _mm256_set1_ps(f32::NEG_INFINITY)),
+        _mm256_andnot_ps(zero, not_zero),
+    );
+    let ok = _mm256_and_ps(
+        _mm256_cmp_ps::<_CMP_GT_OQ>(v, _mm256_setzero_ps()),
+        _mm256_cmp_ps::<_CMP_LT_OQ>(v, inf),
+    );
+    _mm256_or_ps(_mm256_and_ps(ok, val), _mm256_andnot_ps(ok, special))
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::*;
+    use crate::cpu::testgen::Gen;
+    use crate::state::State;
+    use crate::texture::{Level, TexObject};
+    use std::sync::Arc;
+
+    /// [`FusedSpan::lambda`] against [`Sampler::quad_lambda_lanes`] bit for bit: random
+    /// planes (some terms NaN, infinite or zero, q = 0 among them), origins, quad rows and
+    /// groups, textures of a few sizes.
+    #[test]
+    fn fused_lambda_is_quad_lambda_lanes_bit_for_bit() {
+        if !crate::cpu::lanes::has_avx2() {
+            return;
+        }
+        let mut g = Gen(91);
+        for round in 0..4000 {
+            let (w, h) = (
+                [1, 4, 16, 64][(g.next() % 4) as usize],
+                [1, 8, 32][(g.next() % 3) as usize],
+            );
+            let mut obj = TexObject {
+                min_filter: gl::LINEAR_MIPMAP_LINEAR,
+                ..TexObject::default()
+            };
+            obj.levels[0] = Some(Level {
+                depth: 1,
+                width: w,
+                height: h,
+                internal_format: gl::RGBA as i32,
+                base: gl::RGBA,
+                texels: vec![[0.5f32; 4]; (w * h) as usize].into(),
+            });
+            obj.max_level = 0;
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            state.enables.texture_2d[0] = true;
+            let Some(s) = Sampler::new(&state, 0) else {
+                panic!("complete");
+            };
+            let to = 4;
+            let mut planes: Vec<f32> = (0..3 + 3 * 8)
+                .map(|k| {
+                    let d = [1e-3, 3e-2, 0.3][(g.next() % 3) as usize];
+                    if k % 3 == 0 {
+                        g.mostly_unit()
+                    } else {
+                        g.mostly_unit() * d
+                    }
+                })
+                .collect();
+            if g.next() % 4 == 0 {
+                let k = 3 + 3 * to + (g.next() % 12) as usize;
+                planes[k] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0, -0.0]
+                    [(g.next() % 5) as usize];
+            }
+            if g.next() % 8 == 0 {
+                // q = 0 over the whole plane.
+                let k = 3 + 3 * (to + 3);
+                planes[k..k + 3].copy_from_slice(&[0.0; 3]);
+            }
+            let ox = (g.next() % 300) as i32 - 100;
+            let qy = ((g.next() % 200) as i32 - 50) as f32;
+            let x = (g.next() % 400) as i32 - 100;
+            let Some(fs) = FusedSpan::new(&s, to, &planes, 0, 0.0, ox, qy) else {
+                panic!("the fused route covers this sampler");
+            };
+            // SAFETY: the CPU has AVX2 (checked above).
+            let got = unsafe {
+                std::mem::transmute::<std::arch::x86_64::__m256, [f32; LANES]>(fs.lambda(x))
+            };
+            let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(ox) as f32);
+            let want = s.quad_lambda_lanes(&planes, to, qx, qy);
+            assert!(
+                got.map(f32::to_bits) == want.map(f32::to_bits),
+                "round {round}: {got:?} {want:?}"
+            );
+        }
+    }
+}
