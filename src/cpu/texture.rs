@@ -2135,6 +2135,30 @@ fn linear_axis8<const REP: bool>(
     (wrap8::<REP>(i0, nm1), wrap8::<REP>(i1, nm1), a)
 }
 
+/// The f32 offsets of the NEAREST texels of eight lanes on a dense `w` x `h` level of
+/// `km + 1` texels (AVX2): [`nearest_u`]'s floors, [`wrap8`]'s wraps, then (j·w + i & km)·4
+/// ([`dense_linear8`]), so that no lane's offset leaves the level.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn nearest_offsets8<const RX: bool, const RY: bool>(
+    w: i32,
+    h: i32,
+    km: usize,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let (w, h) = (w.max(1), h.max(1));
+    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
+    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
+    _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)))
+}
+
 /// Eight lanes of `x` as one AVX register.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
@@ -2165,15 +2189,7 @@ unsafe fn dense_nearest8<const RX: bool, const RY: bool>(
     let Some(km) = dt.len().checked_sub(1) else {
         return;
     };
-    let (w, h) = (w.max(1), h.max(1));
-    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
-    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
-    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
-    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
-    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    // The f32 offset of each lane's texel: (k & km)·4 ([`dense_linear8`]).
-    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
-    let k = _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)));
+    let k = nearest_offsets8::<RX, RY>(w, h, km, s, t);
     let base = dt.as_ptr().cast::<f32>();
     // SAFETY: AVX2 is present (the caller's promise); each offset is at most
     // 4·(dt.len() - 1) and c < 4, so every f32 read lies inside `dt`.
@@ -2347,14 +2363,7 @@ unsafe fn dense_depth8<const RX: bool, const RY: bool>(
     let Some(km) = dt.len().checked_sub(1) else {
         return;
     };
-    let (w, h) = (w.max(1), h.max(1));
-    let i = ifloor8(_mm256_mul_ps(lanes8(s), _mm256_set1_ps(w as f32)));
-    let j = ifloor8(_mm256_mul_ps(lanes8(t), _mm256_set1_ps(h as f32)));
-    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
-    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
-    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
-    let k = _mm256_slli_epi32::<2>(_mm256_and_si256(k, _mm256_set1_epi32(km as i32)));
+    let k = nearest_offsets8::<RX, RY>(w, h, km, s, t);
     // SAFETY: AVX2 is present (the caller's promise); each offset is at most
     // 4·(dt.len() - 1), so every f32 read lies inside `dt`.
     let d = unsafe { _mm256_i32gather_ps::<4>(dt.as_ptr().cast::<f32>(), k) };
