@@ -79,6 +79,19 @@ struct FusedArgs {
     qy: f32,
 }
 
+/// A span's row state for `FragCtx::fused_tex_span`: its row offset from the bounding box,
+/// depth at the box's left edge, tile index of its first pixel, first window x, pixel count and
+/// the fragments left after a polygon stipple (`tex_span`'s arguments).
+#[cfg(target_arch = "x86_64")]
+struct TexSpan {
+    fy: f32,
+    zrow: f32,
+    base: usize,
+    x0: i32,
+    n: usize,
+    live: u64,
+}
+
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
 /// `tx` with coordinates at varying `to`): each covered group from the planes to the store.
 /// False, with nothing written, when the sampler's state is not the route's. Out of line, so
@@ -1648,11 +1661,121 @@ impl FragCtx<'_> {
     ) {
         #[cfg(target_arch = "x86_64")]
         if super::lanes::has_avx2() {
+            // The fused route's state (one 2D unit, `FusedSpan::covers`, no colour sum): each
+            // group's colours from the planes in registers.
+            if let [Some((tx, to)), None, ..] = self.tex {
+                let nv = self.rl.n.min(MAXV);
+                if p.flags & F_PHONG == 0
+                    && tx.lanes_ok()
+                    && super::texture::FusedSpan::covers(tx)
+                    && !(self.color_sum && self.rl.spec.is_some())
+                    && to.checked_add(4).is_some_and(|e| e <= nv)
+                    && planes.len() >= 3 + 3 * nv
+                {
+                    let span = TexSpan {
+                        fy,
+                        zrow,
+                        base,
+                        x0,
+                        n,
+                        live,
+                    };
+                    // SAFETY: the CPU has AVX2 and POPCNT.
+                    if unsafe { self.fused_tex_span(ops, bufs, p, planes, tx, to, &span) } {
+                        return;
+                    }
+                }
+            }
             // SAFETY: the CPU has AVX2 and POPCNT.
             unsafe { self.tex_span_avx2(ops, bufs, p, planes, fy, zrow, base, x0, n, live) };
             return;
         }
         self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+    }
+
+    /// `tex_span` for a span in the fused route's state ([`FusedSpan`], sampler `tx` with
+    /// coordinates at varying `to`): each group's clamped colours from
+    /// [`FusedSpan::channels`] (the bits of `oplanes::clamp01` of `color_lanes`), then the
+    /// alpha test, the stencil and depth tests and `finish_group` as `tex_span_in`, on the
+    /// eight-lane AVX2 kernels. False, with nothing done, when the sampler's state is not the
+    /// route's. Out of line, so that `tex_span_in`'s code stays as it was.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    ///
+    /// [`FusedSpan`]: super::texture::FusedSpan
+    /// [`FusedSpan::channels`]: super::texture::FusedSpan::channels
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn fused_tex_span(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        tx: &Sampler,
+        to: usize,
+        a: &TexSpan,
+    ) -> bool {
+        use super::oplanes as ol;
+        let ox = p.bbox[0];
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let nv = self.rl.n.min(MAXV);
+        let y = p.bbox[1] + a.fy as i32;
+        let qy = ((y & !1) - p.bbox[1]) as f32;
+        let Some(mut fs) = super::texture::FusedSpan::new(tx, to, planes, nflat, a.fy, ox, qy)
+        else {
+            return false;
+        };
+        let fog_at = self.rl.fog.filter(|&o| o < nv);
+        let side = ops
+            .stencil
+            .as_ref()
+            .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
+        let writes_color = self.count || self.color_mask != [false; 4];
+        let dz = p.z[1];
+        let mut c = 0;
+        while c < a.n {
+            let mut m = ((a.live >> c) & 0xFF) as u8;
+            let i0 = a.base + c;
+            let fx0 = a.x0 - ox + c as i32;
+            let gx = a.x0 + c as i32;
+            c += LANES;
+            if m == 0 {
+                continue;
+            }
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            let [r, g, b, al] = unsafe { fs.channels(gx, m) };
+            let mut rgb = [r, g, b];
+            if let Some((func, reference)) = ops.alpha {
+                m &= ol::alpha_test(func, reference, al);
+                if m == 0 {
+                    continue;
+                }
+            }
+            m = self.tests_group_on::<true>(side, bufs, a.zrow, dz, fx0, i0, m);
+            if m == 0 || !writes_color {
+                continue;
+            }
+            // The fog coordinate alone of the varyings (each varying is computed on its own).
+            let coord = match fog_at {
+                Some(o) => {
+                    let mut v = [[0.0f32; LANES]; MAXV];
+                    let vs = v.get_mut(..=o).unwrap_or_default();
+                    super::lanes::varyings(planes, nflat, fx0, a.fy, vs);
+                    vs.last().copied().unwrap_or([0.0; LANES])
+                }
+                None => [0.0; LANES],
+            };
+            self.finish_group_on::<true>(ops, bufs, &mut rgb, al, coord, i0, m);
+        }
+        true
     }
 
     /// `tex_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
@@ -2479,8 +2602,18 @@ mod tests {
                         write: 0xFF,
                     })
                 }),
-                write: match h.next() % 3 {
+                write: match h.next() % 4 {
                     0 => ColorWrite::Replace,
+                    // The additive blend of point sprites (`blend_unorm8`'s SRC_ALPHA, ONE).
+                    3 => ColorWrite::Blend(BlendEval {
+                        src_rgb: gl::SRC_ALPHA,
+                        dst_rgb: gl::ONE,
+                        src_alpha: gl::SRC_ALPHA,
+                        dst_alpha: gl::ONE,
+                        eq_rgb: gl::FUNC_ADD,
+                        eq_alpha: gl::FUNC_ADD,
+                        constant: [0; 4],
+                    }),
                     1 => ColorWrite::Blend(BlendEval {
                         src_rgb: gl::SRC_ALPHA,
                         dst_rgb: gl::ONE_MINUS_SRC_ALPHA,
@@ -2517,6 +2650,167 @@ mod tests {
             fused > 30,
             "{fused} of 900 rounds in the fused route's state"
         );
+    }
+
+    /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against
+    /// `oplanes::clamp01` of `color_lanes` (what `tex_span_in` computes for them, λ from each
+    /// pixel's `quad_lambda`), bit for bit on the lanes of the mask: random states the fused
+    /// route covers (filters, REPEAT or CLAMP_TO_EDGE, RGB or RGBA, power-of-two and 6x6
+    /// levels, MODULATE or REPLACE), flat or smooth colours, planes with NaN, infinite or zero
+    /// terms, groups and masks.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
+        use crate::cpu::oplanes::clamp01;
+        use crate::cpu::texture::{FusedSpan, Sampler};
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        if !crate::cpu::lanes::has_avx2() {
+            return;
+        }
+        let mut g = Gen(53);
+        let mins = [
+            gl::NEAREST,
+            gl::LINEAR,
+            gl::NEAREST_MIPMAP_NEAREST,
+            gl::LINEAR_MIPMAP_NEAREST,
+            gl::NEAREST_MIPMAP_LINEAR,
+            gl::LINEAR_MIPMAP_LINEAR,
+        ];
+        let wraps = [gl::REPEAT, gl::CLAMP_TO_EDGE];
+
+        for round in 0..1500 {
+            let mut obj = TexObject {
+                min_filter: g.pick(&mins),
+                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                wrap_s: g.pick(&wraps),
+                wrap_t: g.pick(&wraps),
+                ..TexObject::default()
+            };
+            let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+            let rgb = g.next() % 3 == 0;
+            let mut k = 0;
+            while w >= 1 {
+                let texels = (0..w * w)
+                    .map(|_| {
+                        let mut t: [f32; 4] =
+                            std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
+                        if rgb {
+                            t[3] = 1.0;
+                        }
+                        t
+                    })
+                    .collect::<Vec<_>>();
+                obj.levels[k] = Some(Level {
+                    depth: 1,
+                    width: w,
+                    height: w,
+                    internal_format: if rgb { gl::RGB } else { gl::RGBA } as i32,
+                    base: if rgb { gl::RGB } else { gl::RGBA },
+                    texels: texels.into(),
+                });
+                k += 1;
+                w /= 2;
+            }
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            state.enables.texture_2d[0] = true;
+            state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
+            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+            samplers[0] = Sampler::new(&state, 0);
+            let mut rl = RLayout {
+                n: 8,
+                ..Default::default()
+            };
+            rl.tex[0] = Some(4);
+            let tex = tex_units(&samplers, &rl);
+            let Some((tx, to)) = tex[0] else {
+                panic!("unit 0 complete");
+            };
+            assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
+            let f = FragCtx {
+                depth_test: false,
+                depth_func: gl::LESS,
+                depth_mask: false,
+                color_mask: [true; 4],
+                color_sum: false,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: false,
+                samples: false,
+                stipple: None,
+                ops: None,
+                tex,
+                crossbar: crossbar(&tex),
+            };
+            let flat = g.next() % 4 == 0;
+            let bbox = [(g.next() % 300) as i32 - 50, (g.next() % 300) as i32 - 50];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags: if flat { F_FLAT } else { 0 },
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z: [0.5, 0.0, 0.0],
+            };
+            // 1/w, the colour (around [0, 1], beyond it now and then) and coordinates
+            // spanning a few repeats, derivatives large and small so that λ crosses levels.
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for j in 0..rl.n {
+                let d = if j < 4 {
+                    [1e-2, 0.2][(g.next() % 2) as usize]
+                } else {
+                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+                };
+                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+            }
+            if g.next() % 6 == 0 {
+                let k = (g.next() % planes.len() as u64) as usize;
+                planes[k] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0, -0.0]
+                    [(g.next() % 5) as usize];
+            }
+            if g.next() % 10 == 0 {
+                // q = 0 over the whole plane.
+                planes[3 + 3 * 7..3 + 3 * 8].copy_from_slice(&[0.0; 3]);
+            }
+            let nflat = if flat { 4 } else { 0 };
+            let y = bbox[1] + (g.next() % 64) as i32;
+            let fy = (y - bbox[1]) as f32;
+            let qy = ((y & !1) - bbox[1]) as f32;
+            let Some(mut fs) = FusedSpan::new(tx, to, &planes, nflat, fy, bbox[0], qy) else {
+                panic!("round {round}: the fused route covers this sampler");
+            };
+            for _ in 0..4 {
+                let gx = bbox[0] + (g.next() % 64) as i32;
+                let m = match g.next() % 3 {
+                    0 => 0xFF,
+                    _ => (g.next() as u8).max(1),
+                };
+                let mut v = [[0.0f32; LANES]; 8];
+                crate::cpu::lanes::varyings(&planes, nflat, gx - bbox[0], fy, &mut v);
+                let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+                for (l, x) in lam[0].iter_mut().enumerate() {
+                    *x = f.quad_lambda(&planes, gx + l as i32, y, bbox[0], bbox[1])[0];
+                }
+                let want = f.color_lanes(&p, &v, m, &lam, true).map(clamp01);
+                // SAFETY: the CPU has AVX2 (checked above).
+                let got = unsafe { fs.channels(gx, m) };
+                for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
+                    let (a, b) = (got.map(|c| c[l].to_bits()), want.map(|c| c[l].to_bits()));
+                    assert!(
+                        a == b,
+                        "round {round} x {gx} lane {l}: {:?} {:?}",
+                        got.map(|c| c[l]),
+                        want.map(|c| c[l])
+                    );
+                }
+            }
+        }
     }
 
     #[test]

@@ -130,18 +130,67 @@ impl<'a> FusedSpan<'a> {
         })
     }
 
-    /// The group of eight fragments from window-relative x `fx0` on row `fy` (relative to the
-    /// planes' origin), lanes `m`, λ before bias `lam`: their colours stored into `dst` (a
-    /// lane l into `dst[l]`), what `tri_span`'s general path stores for them. `planes` holds
-    /// the 1/w plane and at least `nv` varyings' planes, the first `nflat` of them flat, the
-    /// colour at 0..4 and the coordinates at `to..to + 4` below `nv` (the caller's checks).
+    /// The group of eight fragments from window x `x` (lane l at x + l), lanes `m`: their
+    /// colours stored into `dst` (a lane l into `dst[l]`), what `tri_span`'s general path
+    /// stores for them (`tex_pixels`, then `store_pixels`).
     ///
     /// # Safety
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    #[allow(clippy::too_many_arguments)]
     pub unsafe fn group(&mut self, x: i32, m: u8, dst: &mut [[u8; 4]]) {
+        use std::arch::x86_64::*;
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        let c = unsafe { self.colors(x, m) };
+        let (k255, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+        let low = _mm256_set1_epi32(0xFF);
+        let px: [__m256i; 4] = std::array::from_fn(|k| {
+            // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
+            _mm256_and_si256(
+                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c[k], k255), bias)),
+                low,
+            )
+        });
+        // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
+        let v = _mm256_packus_epi16(
+            _mm256_packs_epi32(px[0], px[1]),
+            _mm256_packs_epi32(px[2], px[3]),
+        );
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let on = _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+            bits,
+        );
+        if let Some(d) = dst.get_mut(..LANES) {
+            let p = d.as_mut_ptr().cast::<__m256i>();
+            // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
+            // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
+            unsafe {
+                let old = _mm256_loadu_si256(p);
+                _mm256_storeu_si256(p, _mm256_blendv_epi8(old, v, on));
+            }
+            return;
+        }
+        let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
+        for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
+            if m & (1 << l) != 0 {
+                *d = c;
+            }
+        }
+    }
+
+    /// The colours of the group of eight fragments from window x `x` (lane l at x + l), lanes
+    /// `m`, as pixel-major pairs (register k: lane k's RGBA, then lane k + 4's), clamped to
+    /// [0, 1]: what `tex_pixels` gives for them, each channel through `Vec4::clamp`
+    /// (`oplanes::clamp01`: `maxps` with 0, then `minps` with 1). Lanes outside `m` hold
+    /// unspecified values.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn colors(&mut self, x: i32, m: u8) -> [std::arch::x86_64::__m256; 4] {
         use std::arch::x86_64::*;
         let fx0 = x - self.ox;
         let lam = if self.s.route == Route::Lod {
@@ -194,13 +243,8 @@ impl<'a> FusedSpan<'a> {
         // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha),
         // clamped to [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
         let cf = pairs(&col);
-        let (zero, k255, bias) = (
-            _mm256_setzero_ps(),
-            _mm256_set1_ps(255.0 / 256.0),
-            _mm256_set1_ps(32768.0),
-        );
-        let low = _mm256_set1_epi32(0xFF);
-        let px: [__m256i; 4] = std::array::from_fn(|k| {
+        let zero = _mm256_setzero_ps();
+        std::array::from_fn(|k| {
             let c = if self.replace {
                 tex[k]
             } else {
@@ -211,39 +255,39 @@ impl<'a> FusedSpan<'a> {
             } else {
                 c
             };
-            let c = _mm256_min_ps(_mm256_max_ps(c, zero), one);
-            // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
-            _mm256_and_si256(
-                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k255), bias)),
-                low,
-            )
-        });
-        // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
-        let v = _mm256_packus_epi16(
-            _mm256_packs_epi32(px[0], px[1]),
-            _mm256_packs_epi32(px[2], px[3]),
+            _mm256_min_ps(_mm256_max_ps(c, zero), one)
+        })
+    }
+
+    /// The colours of [`FusedSpan::colors`] channel-major (`channels[c][l]`: channel c of
+    /// lane l), as `tex_span` takes them: `oplanes::clamp01` of each channel of
+    /// `color_lanes`, bit for bit. Lanes outside `m` hold unspecified values.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn channels(&mut self, x: i32, m: u8) -> [[f32; LANES]; 4] {
+        use std::arch::x86_64::*;
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        let p = unsafe { self.colors(x, m) };
+        // The 4x4 transposition in each half: register k holds lanes k and k + 4.
+        let (t0, t1) = (
+            _mm256_unpacklo_ps(p[0], p[1]),
+            _mm256_unpackhi_ps(p[0], p[1]),
         );
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let on = _mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-            bits,
+        let (t2, t3) = (
+            _mm256_unpacklo_ps(p[2], p[3]),
+            _mm256_unpackhi_ps(p[2], p[3]),
         );
-        if let Some(d) = dst.get_mut(..LANES) {
-            let p = d.as_mut_ptr().cast::<__m256i>();
-            // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
-            // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
-            unsafe {
-                let old = _mm256_loadu_si256(p);
-                _mm256_storeu_si256(p, _mm256_blendv_epi8(old, v, on));
-            }
-            return;
-        }
-        let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
-        for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
-            if m & (1 << l) != 0 {
-                *d = c;
-            }
-        }
+        let ch = [
+            _mm256_shuffle_ps::<0x44>(t0, t2),
+            _mm256_shuffle_ps::<0xEE>(t0, t2),
+            _mm256_shuffle_ps::<0x44>(t1, t3),
+            _mm256_shuffle_ps::<0xEE>(t1, t3),
+        ];
+        // SAFETY: `__m256` has the layout of `[f32; 8]`; every bit pattern is valid.
+        ch.map(|v| unsafe { std::mem::transmute::<__m256, [f32; LANES]>(v) })
     }
 
     /// λ before bias of the eight pixels from window x `x` (lane l at x + l): each lane its
