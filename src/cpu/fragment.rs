@@ -79,19 +79,6 @@ struct FusedArgs {
     qy: f32,
 }
 
-/// A span's row state for `FragCtx::fused_tex_span`: its row offset from the bounding box,
-/// depth at the box's left edge, tile index of its first pixel, first window x, pixel count and
-/// the fragments left after a polygon stipple (`tex_span`'s arguments).
-#[cfg(target_arch = "x86_64")]
-struct TexSpan {
-    fy: f32,
-    zrow: f32,
-    base: usize,
-    x0: i32,
-    n: usize,
-    live: u64,
-}
-
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
 /// `tx` with coordinates at varying `to`): each covered group from the planes to the store.
 /// False, with nothing written, when the sampler's state is not the route's. Out of line, so
@@ -1194,6 +1181,15 @@ impl FragCtx<'_> {
         } else if self.tex[0].is_none() && p.flags & F_PHONG == 0 {
             self.plain_rows(ops, bufs, p, planes, rows);
         } else {
+            // The fused route's state (one 2D unit, `FusedSpan::covers`, no colour sum) on
+            // AVX2: each group's colours from the planes in registers (`fused_tex_rows`).
+            #[cfg(target_arch = "x86_64")]
+            if let (true, Some((tx, to))) = (super::lanes::has_avx2(), self.fused_unit(p, planes)) {
+                // SAFETY: the CPU has AVX2 and POPCNT (`has_avx2`).
+                if unsafe { self.fused_tex_rows(ops, bufs, p, planes, tx, to, rows) } {
+                    return;
+                }
+            }
             for &[y, x0, x1] in rows {
                 if let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) {
                     self.tex_span(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
@@ -1661,31 +1657,6 @@ impl FragCtx<'_> {
     ) {
         #[cfg(target_arch = "x86_64")]
         if super::lanes::has_avx2() {
-            // The fused route's state (one 2D unit, `FusedSpan::covers`, no colour sum): each
-            // group's colours from the planes in registers.
-            if let [Some((tx, to)), None, ..] = self.tex {
-                let nv = self.rl.n.min(MAXV);
-                if p.flags & F_PHONG == 0
-                    && tx.lanes_ok()
-                    && super::texture::FusedSpan::covers(tx)
-                    && !(self.color_sum && self.rl.spec.is_some())
-                    && to.checked_add(4).is_some_and(|e| e <= nv)
-                    && planes.len() >= 3 + 3 * nv
-                {
-                    let span = TexSpan {
-                        fy,
-                        zrow,
-                        base,
-                        x0,
-                        n,
-                        live,
-                    };
-                    // SAFETY: the CPU has AVX2 and POPCNT.
-                    if unsafe { self.fused_tex_span(ops, bufs, p, planes, tx, to, &span) } {
-                        return;
-                    }
-                }
-            }
             // SAFETY: the CPU has AVX2 and POPCNT.
             unsafe { self.tex_span_avx2(ops, bufs, p, planes, fy, zrow, base, x0, n, live) };
             return;
@@ -1693,12 +1664,32 @@ impl FragCtx<'_> {
         self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
     }
 
-    /// `tex_span` for a span in the fused route's state ([`FusedSpan`], sampler `tx` with
-    /// coordinates at varying `to`): each group's clamped colours from
-    /// [`FusedSpan::channels`] (the bits of `oplanes::clamp01` of `color_lanes`), then the
-    /// alpha test, the stencil and depth tests and `finish_group` as `tex_span_in`, on the
-    /// eight-lane AVX2 kernels. False, with nothing done, when the sampler's state is not the
-    /// route's. Out of line, so that `tex_span_in`'s code stays as it was.
+    /// The one texture unit of `p`'s fragments when `tex_span` would take it on lanes in the
+    /// fused route's state (`FusedSpan::covers`, no PHONG_WIN, no colour sum), its
+    /// coordinates' varyings and `planes` present.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn fused_unit(&self, p: &RPrim, planes: &[f32]) -> Option<(&Sampler, usize)> {
+        let [Some((tx, to)), None, ..] = self.tex else {
+            return None;
+        };
+        let nv = self.rl.n.min(MAXV);
+        (p.flags & F_PHONG == 0
+            && tx.lanes_ok()
+            && super::texture::FusedSpan::covers(tx)
+            && !(self.color_sum && self.rl.spec.is_some())
+            && to.checked_add(4).is_some_and(|e| e <= nv)
+            && planes.len() >= 3 + 3 * nv)
+            .then_some((tx, to))
+    }
+
+    /// `ops_rows`'s textured rows (`tex_span` each) for a primitive in the fused route's state
+    /// ([`FusedSpan`], sampler `tx` with coordinates at varying `to`): each group's clamped
+    /// colours from [`FusedSpan::channels`] (the bits of `oplanes::clamp01` of
+    /// `color_lanes`), then the alpha test, the stencil and depth tests and `finish_group` as
+    /// `tex_span_in`, on the eight-lane AVX2 kernels. The route is set up once for the rows
+    /// (its levels looked up once). False, with nothing done, when the sampler's state is not
+    /// the route's. Out of line, so that `tex_span`'s code stays as it was.
     ///
     /// # Safety
     /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
@@ -1709,7 +1700,7 @@ impl FragCtx<'_> {
     #[target_feature(enable = "avx2,popcnt")]
     #[inline(never)]
     #[allow(clippy::too_many_arguments)]
-    unsafe fn fused_tex_span(
+    unsafe fn fused_tex_rows(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -1717,19 +1708,17 @@ impl FragCtx<'_> {
         planes: &[f32],
         tx: &Sampler,
         to: usize,
-        a: &TexSpan,
+        rows: &[[i32; 3]],
     ) -> bool {
         use super::oplanes as ol;
-        let ox = p.bbox[0];
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
         let nv = self.rl.n.min(MAXV);
-        let y = p.bbox[1] + a.fy as i32;
-        let qy = ((y & !1) - p.bbox[1]) as f32;
-        let Some(mut fs) = super::texture::FusedSpan::new(tx, to, planes, nflat, a.fy, ox, qy)
+        let Some(mut fs) = super::texture::FusedSpan::new(tx, to, planes, nflat, 0.0, ox, 0.0)
         else {
             return false;
         };
@@ -1740,40 +1729,48 @@ impl FragCtx<'_> {
             .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
         let writes_color = self.count || self.color_mask != [false; 4];
         let dz = p.z[1];
-        let mut c = 0;
-        while c < a.n {
-            let mut m = ((a.live >> c) & 0xFF) as u8;
-            let i0 = a.base + c;
-            let fx0 = a.x0 - ox + c as i32;
-            let gx = a.x0 + c as i32;
-            c += LANES;
-            if m == 0 {
+        for &[y, x0, x1] in rows {
+            let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) else {
                 continue;
-            }
-            // SAFETY: the CPU has AVX2 (the caller's promise).
-            let [r, g, b, al] = unsafe { fs.channels(gx, m) };
-            let mut rgb = [r, g, b];
-            if let Some((func, reference)) = ops.alpha {
-                m &= ol::alpha_test(func, reference, al);
+            };
+            // `tex_span_in`'s row: y = oy + fy, its quad row (y & !1) - oy.
+            let y = oy + fy as i32;
+            fs.row(fy, ((y & !1) - oy) as f32);
+            let mut c = 0;
+            while c < n {
+                let mut m = ((live >> c) & 0xFF) as u8;
+                let i0 = base + c;
+                let fx0 = x0 - ox + c as i32;
+                let gx = x0 + c as i32;
+                c += LANES;
                 if m == 0 {
                     continue;
                 }
-            }
-            m = self.tests_group_on::<true>(side, bufs, a.zrow, dz, fx0, i0, m);
-            if m == 0 || !writes_color {
-                continue;
-            }
-            // The fog coordinate alone of the varyings (each varying is computed on its own).
-            let coord = match fog_at {
-                Some(o) => {
-                    let mut v = [[0.0f32; LANES]; MAXV];
-                    let vs = v.get_mut(..=o).unwrap_or_default();
-                    super::lanes::varyings(planes, nflat, fx0, a.fy, vs);
-                    vs.last().copied().unwrap_or([0.0; LANES])
+                // SAFETY: the CPU has AVX2 (the caller's promise).
+                let [r, g, b, al] = unsafe { fs.channels(gx, m) };
+                let mut rgb = [r, g, b];
+                if let Some((func, reference)) = ops.alpha {
+                    m &= ol::alpha_test(func, reference, al);
+                    if m == 0 {
+                        continue;
+                    }
                 }
-                None => [0.0; LANES],
-            };
-            self.finish_group_on::<true>(ops, bufs, &mut rgb, al, coord, i0, m);
+                m = self.tests_group_on::<true>(side, bufs, zrow, dz, fx0, i0, m);
+                if m == 0 || !writes_color {
+                    continue;
+                }
+                // The fog coordinate alone of the varyings (each is computed on its own).
+                let coord = match fog_at {
+                    Some(o) => {
+                        let mut v = [[0.0f32; LANES]; MAXV];
+                        let vs = v.get_mut(..=o).unwrap_or_default();
+                        super::lanes::varyings(planes, nflat, fx0, fy, vs);
+                        vs.last().copied().unwrap_or([0.0; LANES])
+                    }
+                    None => [0.0; LANES],
+                };
+                self.finish_group_on::<true>(ops, bufs, &mut rgb, al, coord, i0, m);
+            }
         }
         true
     }

@@ -29,6 +29,10 @@ pub struct FusedSpan<'a> {
     /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
     /// varyings and s, t, q.
     pl: [[f32; 3]; 8],
+    /// The primitive's planes (`pl` and `lp` of another row are taken from them again,
+    /// [`FusedSpan::row`]) and the coordinates' first varying.
+    planes: &'a [f32],
+    to: usize,
     /// Which of the colour, s, t, q varyings are smooth (multiplied by 1/w).
     div: [bool; 7],
     /// The levels looked up last: their numbers and views.
@@ -79,7 +83,7 @@ impl<'a> FusedSpan<'a> {
     pub fn new(
         s: &'a Sampler,
         to: usize,
-        planes: &[f32],
+        planes: &'a [f32],
         nflat: usize,
         fy: f32,
         ox: i32,
@@ -101,33 +105,33 @@ impl<'a> FusedSpan<'a> {
             return None;
         }
         let rep = [rep(s.wrap[0])?, rep(s.wrap[1])?];
-        // `lanes::varyings`' planes: (a, dx, dy·fy) of 1/w, then varying j at 3 + 3j.
         let vars = [0, 1, 2, 3, to, to + 1, to + 3];
-        let row = |k: usize| -> Option<[f32; 3]> {
-            let p = planes.get(k..k + 3)?;
-            Some([p[0], p[1], p[2] * fy])
-        };
-        let mut pl = [[0.0f32; 3]; 8];
-        pl[0] = row(0)?;
-        for (p, &j) in pl[1..].iter_mut().zip(&vars) {
-            *p = row(3 + 3 * j)?;
-        }
         Some(FusedSpan {
             s,
             rep,
             replace: s.env == gl::REPLACE,
             rgb: s.base == gl::RGB,
-            pl,
+            pl: row_planes(planes, to, fy)?,
+            planes,
+            to,
             div: vars.map(|j| j >= nflat),
             cache: [(0, View::Unknown); 2],
             ox,
-            lp: [to, to + 1, to + 3].map(|j| {
-                let k = 3 + 3 * j;
-                let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-                let (a, dx, dy) = (g(k), g(k + 1), g(k + 2));
-                [a, dx, dy * qy, dy * (qy + 1.0)]
-            }),
+            lp: lambda_planes(planes, to, qy),
         })
+    }
+
+    /// Moves the route to another row of the same primitive: `fy` the row's y relative to
+    /// the planes' origin, `qy` its quad row's (the levels looked up stay).
+    #[inline]
+    pub fn row(&mut self, fy: f32, qy: f32) {
+        // (`new` found the planes present.)
+        if let Some(pl) = row_planes(self.planes, self.to, fy) {
+            self.pl = pl;
+        }
+        if self.s.route == Route::Lod {
+            self.lp = lambda_planes(self.planes, self.to, qy);
+        }
     }
 
     /// The group of eight fragments from window x `x` (lane l at x + l), lanes `m`: their
@@ -452,6 +456,37 @@ impl<'a> FusedSpan<'a> {
             (true, [true, true]) => bilinear::<true, true>(dt, km, w, h, ss, tt),
         })
     }
+}
+
+/// `lanes::varyings`' planes of row `fy` (constant, x step, y term `dy·fy`) of 1/w, the
+/// colour's four varyings and s, t, q (varyings `to`, `to + 1`, `to + 3`); None when
+/// `planes` does not hold them.
+#[inline(always)]
+fn row_planes(planes: &[f32], to: usize, fy: f32) -> Option<[[f32; 3]; 8]> {
+    // (a, dx, dy·fy) of 1/w, then varying j at 3 + 3j.
+    let vars = [0, 1, 2, 3, to, to + 1, to + 3];
+    let row = |k: usize| -> Option<[f32; 3]> {
+        let p = planes.get(k..k + 3)?;
+        Some([p[0], p[1], p[2] * fy])
+    };
+    let mut pl = [[0.0f32; 3]; 8];
+    pl[0] = row(0)?;
+    for (p, &j) in pl[1..].iter_mut().zip(&vars) {
+        *p = row(3 + 3 * j)?;
+    }
+    Some(pl)
+}
+
+/// λ's planes of s, t and q (varyings `to`, `to + 1`, `to + 3`): constant, x step, y term
+/// at quad row `qy` and at `qy + 1` (0 for a float `planes` does not hold).
+#[inline(always)]
+fn lambda_planes(planes: &[f32], to: usize, qy: f32) -> [[f32; 4]; 3] {
+    [to, to + 1, to + 3].map(|j| {
+        let k = 3 + 3 * j;
+        let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+        let (a, dx, dy) = (g(k), g(k + 1), g(k + 2));
+        [a, dx, dy * qy, dy * (qy + 1.0)]
+    })
 }
 
 /// The `vpermps` index that puts lane k in the low half and lane k + 4 in the high half.
