@@ -164,8 +164,12 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
         // colour. (o + 0·fx) + 0·fy is o for any finite fx and fy (fragment positions are)
         // unless o is ±0, where it is ±0 — the same byte, 0, either way; a NaN stays NaN.
         // So the first fragment's bytes are every fragment's, stored in runs.
-        let px: [u8; 4] =
-            ch.map(|(o, dx, yt)| unorm8_lanes([(o + dx * fx0 as f32) + yt; LANES])[0]);
+        // The four channels share one conversion, a lane each (the lanes are independent:
+        // each byte is the one `unorm8_lanes` gives that value alone; four conversions of a
+        // broadcast value were ≈60 instructions a span in transforms).
+        let v = ch.map(|(o, dx, yt)| (o + dx * fx0 as f32) + yt);
+        let b = unorm8_lanes([v[0], v[1], v[2], v[3], 0.0, 0.0, 0.0, 0.0]);
+        let px: [u8; 4] = [b[0], b[1], b[2], b[3]];
         let n = dst.len().min(64);
         let mut m = mask & (u64::MAX >> (64 - n.max(1)));
         if n == 0 {
