@@ -1288,6 +1288,16 @@ impl FragCtx<'_> {
         };
         let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
         let m = match side {
+            #[cfg(target_arch = "x86_64")]
+            Some(side) if AVX2 => {
+                let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
+                let depth = self
+                    .depth_test
+                    .then_some((self.depth_func, self.depth_mask));
+                // SAFETY: `AVX2` is true only in `plain_rows_avx2` and `tests_rows_avx2`,
+                // which run where the CPU has AVX2.
+                unsafe { ol::avx2::stencil_depth(side, depth, st, dp, zrow, dz, fx0, m) }
+            }
             Some(side) => {
                 let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
                 let depth = self
@@ -1567,11 +1577,30 @@ impl FragCtx<'_> {
         // the tests' writes, then the colour write of the survivors).
         let tests_first = ops.alpha.is_none();
         let mut v = [[0.0f32; LANES]; 8];
+        // On AVX2 the chosen planes are broadcast once per call (`RowPlanes8`), a row only its
+        // y terms; the SSE2 route builds its `RowVaryings` a row.
+        // (Held by value, not in an Option: a reference kept beside the group loop's values
+        // cost ≈35 instructions a group in blending.)
+        #[cfg(target_arch = "x86_64")]
+        let planes8 = if AVX2 {
+            // SAFETY: `AVX2` is true only in `plain_rows_avx2`, which runs where the CPU has
+            // AVX2.
+            unsafe { super::lanes::RowPlanes8::new(planes, nflat, nv, &sel, k) }
+        } else {
+            super::lanes::RowPlanes8::zeroed()
+        };
         for &[y, x0, x1] in rows {
             let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) else {
                 continue;
             };
-            let row = RowVaryings::new(planes, nflat, nv, fy, &sel, k);
+            #[cfg(target_arch = "x86_64")]
+            let row8 = if AVX2 {
+                // SAFETY: as above.
+                unsafe { planes8.row(fy) }
+            } else {
+                super::lanes::RowY8::zeroed()
+            };
+            let row = (!AVX2).then(|| RowVaryings::new(planes, nflat, nv, fy, &sel, k));
             let mut c = 0;
             while c < n {
                 let mut m = ((live >> c) & 0xFF) as u8;
@@ -1592,12 +1621,14 @@ impl FragCtx<'_> {
                 if AVX2 {
                     // SAFETY: `AVX2` is true only in `plain_rows_avx2`, which runs where the
                     // CPU has AVX2.
-                    unsafe { row.eval_avx2(fx0, &mut v) };
-                } else {
+                    unsafe { planes8.eval(&row8, fx0, &mut v) };
+                } else if let Some(row) = &row {
                     row.eval(fx0, &mut v);
                 }
                 #[cfg(not(target_arch = "x86_64"))]
-                row.eval(fx0, &mut v);
+                if let Some(row) = &row {
+                    row.eval(fx0, &mut v);
+                }
                 let [r, g, b, a] = [v[0], v[1], v[2], v[3]];
                 let mut rgb = [r, g, b];
                 if spec.is_some() {

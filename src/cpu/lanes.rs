@@ -164,8 +164,12 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
         // colour. (o + 0·fx) + 0·fy is o for any finite fx and fy (fragment positions are)
         // unless o is ±0, where it is ±0 — the same byte, 0, either way; a NaN stays NaN.
         // So the first fragment's bytes are every fragment's, stored in runs.
-        let px: [u8; 4] =
-            ch.map(|(o, dx, yt)| unorm8_lanes([(o + dx * fx0 as f32) + yt; LANES])[0]);
+        // The four channels share one conversion, a lane each (the lanes are independent:
+        // each byte is the one `unorm8_lanes` gives that value alone; four conversions of a
+        // broadcast value were ≈60 instructions a span in transforms).
+        let v = ch.map(|(o, dx, yt)| (o + dx * fx0 as f32) + yt);
+        let b = unorm8_lanes([v[0], v[1], v[2], v[3], 0.0, 0.0, 0.0, 0.0]);
+        let px: [u8; 4] = [b[0], b[1], b[2], b[3]];
         let n = dst.len().min(64);
         let mut m = mask & (u64::MAX >> (64 - n.max(1)));
         if n == 0 {
@@ -852,8 +856,9 @@ impl<const K: usize> RowVaryings<K> {
 
     /// `eval` with eight lanes a register (AVX2): lane x `fx0 as f32 + l` (`lane_xs_sse`'s
     /// values), each plane `(a + dx·x) + yt`, 1/w by `vdivps`, the product by `vmulps`, the
-    /// same operations in the same order, so the same bits.
-    #[cfg(target_arch = "x86_64")]
+    /// same operations in the same order, so the same bits. (The rows use `RowPlanes8`, its
+    /// per-primitive form; this one is the tests' reference between the two.)
+    #[cfg(all(target_arch = "x86_64", test))]
     #[target_feature(enable = "avx2")]
     #[inline]
     pub fn eval_avx2(&self, fx0: i32, out: &mut [[f32; LANES]; K]) {
@@ -877,6 +882,164 @@ impl<const K: usize> RowVaryings<K> {
             }
             // SAFETY: `o` holds eight f32, 32 bytes (no alignment needed).
             unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
+        }
+    }
+}
+
+/// `RowVaryings` for the AVX2 route, split by what changes: the chosen planes' constants and
+/// x steps, broadcast to eight lanes once per primitive ([`RowPlanes8::new`], with each y
+/// step), and per row only the y terms ([`RowPlanes8::row`]: `dy·fy` as `RowVaryings::new`
+/// multiplies it, broadcast). [`RowPlanes8::eval`] is `RowVaryings::eval_avx2` with those
+/// vectors: `(a + dx·x) + yt`, 1/w by `vdivps`, the product by `vmulps`, the same operations
+/// in the same order, so the same bits. (Building `RowVaryings` a row, its bounds-checked
+/// look-ups and its broadcasts were ≈180 instructions a row, with 2.7 groups a row in fog.)
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+pub struct RowPlanes8<const K: usize> {
+    /// 1/w's plane: constant and x step broadcast, y step.
+    wa: std::arch::x86_64::__m256,
+    wdx: std::arch::x86_64::__m256,
+    wdy: f32,
+    /// Each chosen varying's plane, as `w` (all 0 past `nv`).
+    a: [std::arch::x86_64::__m256; K],
+    dx: [std::arch::x86_64::__m256; K],
+    dy: [f32; K],
+    /// The plane is the pool's (the varying is before `nv`): its y term is `dy·fy`, else +0.
+    live: [bool; K],
+    /// Multiplied by w (not flat, not past `nv`).
+    div: [bool; K],
+    /// Rows evaluated.
+    k: usize,
+}
+
+/// The y terms of one row for [`RowPlanes8`].
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+pub struct RowY8<const K: usize> {
+    w: std::arch::x86_64::__m256,
+    y: [std::arch::x86_64::__m256; K],
+}
+
+#[cfg(target_arch = "x86_64")]
+impl<const K: usize> RowY8<K> {
+    /// Every lane +0 (a placeholder where the AVX2 route is not taken).
+    #[inline(always)]
+    pub fn zeroed() -> Self {
+        // SAFETY: all zero bits are a valid `__m256` (eight +0.0).
+        unsafe { std::mem::zeroed() }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+impl<const K: usize> RowPlanes8<K> {
+    /// Every plane 0 and no row (a placeholder where the AVX2 route is not taken).
+    #[inline(always)]
+    pub fn zeroed() -> Self {
+        // SAFETY: all zero bits are valid for every field: `__m256` (+0.0 lanes), `f32`,
+        // `bool` (false) and `usize`.
+        unsafe { std::mem::zeroed() }
+    }
+
+    /// The varyings `sel[..k]` of `planes` (as [`RowVaryings::new`], without the row).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`has_avx2`); meant to be inlined into a function compiled for it.
+    #[inline(always)]
+    pub unsafe fn new(planes: &[f32], nflat: usize, nv: usize, sel: &[usize; K], k: usize) -> Self {
+        use std::arch::x86_64::{_mm256_set1_ps, _mm256_setzero_ps};
+        let pl = |j: usize| planes.get(j).copied().unwrap_or(0.0);
+        let k = k.min(K);
+        // SAFETY: the caller's CPU has AVX; register operations only.
+        let zero = unsafe { _mm256_setzero_ps() };
+        let mut a = [zero; K];
+        let mut dx = [zero; K];
+        let mut dy = [0.0; K];
+        let mut live = [false; K];
+        let mut div = [false; K];
+        for (i, &j) in sel.iter().enumerate().take(k) {
+            if j < nv {
+                let q = 3 + 3 * j;
+                if let (Some(a), Some(dx), Some(dy), Some(l), Some(d)) = (
+                    a.get_mut(i),
+                    dx.get_mut(i),
+                    dy.get_mut(i),
+                    live.get_mut(i),
+                    div.get_mut(i),
+                ) {
+                    // SAFETY: as above.
+                    unsafe {
+                        *a = _mm256_set1_ps(pl(q));
+                        *dx = _mm256_set1_ps(pl(q + 1));
+                    }
+                    *dy = pl(q + 2);
+                    *l = true;
+                    *d = j >= nflat;
+                }
+            }
+        }
+        // SAFETY: as above.
+        let (wa, wdx) = unsafe { (_mm256_set1_ps(pl(0)), _mm256_set1_ps(pl(1))) };
+        RowPlanes8 {
+            wa,
+            wdx,
+            wdy: pl(2),
+            a,
+            dx,
+            dy,
+            live,
+            div,
+            k,
+        }
+    }
+
+    /// The y terms of row `fy`: `dy·fy` (+0 for a plane past `nv`), broadcast.
+    ///
+    /// # Safety
+    /// As [`RowPlanes8::new`].
+    #[inline(always)]
+    pub unsafe fn row(&self, fy: f32) -> RowY8<K> {
+        use std::arch::x86_64::{_mm256_set1_ps, _mm256_setzero_ps};
+        // SAFETY: the caller's CPU has AVX; register operations only.
+        unsafe {
+            let mut y = [_mm256_setzero_ps(); K];
+            for ((o, &dy), &l) in y.iter_mut().zip(&self.dy).zip(&self.live).take(self.k) {
+                if l {
+                    *o = _mm256_set1_ps(dy * fy);
+                }
+            }
+            RowY8 {
+                w: _mm256_set1_ps(self.wdy * fy),
+                y,
+            }
+        }
+    }
+
+    /// The chosen varyings of the group whose first lane is at x offset `fx0` in the row `y`:
+    /// `out[i]` for i < `k` (rows past it are left as they are).
+    ///
+    /// # Safety
+    /// As [`RowPlanes8::new`].
+    #[inline(always)]
+    pub unsafe fn eval(&self, y: &RowY8<K>, fx0: i32, out: &mut [[f32; LANES]; K]) {
+        use std::arch::x86_64::{
+            _mm256_add_ps, _mm256_div_ps, _mm256_mul_ps, _mm256_set1_ps, _mm256_setr_ps,
+            _mm256_storeu_ps,
+        };
+        // SAFETY: the caller's CPU has AVX; each store writes eight f32, 32 bytes, into a
+        // `[f32; 8]` (no alignment needed).
+        unsafe {
+            let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+            let x = _mm256_add_ps(_mm256_set1_ps(fx0 as f32), iota);
+            let w = _mm256_add_ps(_mm256_add_ps(self.wa, _mm256_mul_ps(self.wdx, x)), y.w);
+            let inv = _mm256_div_ps(_mm256_set1_ps(1.0), w);
+            let rows = self.a.iter().zip(&self.dx).zip(&y.y).zip(&self.div);
+            for (o, (((a, dx), yt), &d)) in out.iter_mut().zip(rows).take(self.k) {
+                let mut v = _mm256_add_ps(_mm256_add_ps(*a, _mm256_mul_ps(*dx, x)), *yt);
+                if d {
+                    v = _mm256_mul_ps(v, inv);
+                }
+                _mm256_storeu_ps(o.as_mut_ptr(), v);
+            }
         }
     }
 }
@@ -1324,6 +1487,13 @@ mod tests {
             row.eval(fx0, &mut want);
             // SAFETY: the CPU has AVX2 (checked above).
             unsafe { row.eval_avx2(fx0, &mut have) };
+            // The per-primitive form (`RowPlanes8`, the same instructions) as `eval_avx2`.
+            let mut split = [[fill; LANES]; 8];
+            // SAFETY: as above.
+            unsafe {
+                let p8 = RowPlanes8::new(&planes, nflat, nv, &sel, k);
+                p8.eval(&p8.row(fy), fx0, &mut split);
+            }
             // Bit for bit, a NaN as any NaN: LLVM may swap the operands of the SSE2 route's
             // additions and products, so of two NaN operands either payload comes out (every
             // NaN colour or fog coordinate gives the same pixel: the clamps take it to 0).
@@ -1332,6 +1502,11 @@ mod tests {
                 have.map(|r| r.map(key)),
                 want.map(|r| r.map(key)),
                 "{planes:?} nflat {nflat} nv {nv} sel {sel:?} k {k} fy {fy} fx0 {fx0}"
+            );
+            assert_eq!(
+                split.map(|r| r.map(key)),
+                want.map(|r| r.map(key)),
+                "RowPlanes8: {planes:?} nflat {nflat} nv {nv} sel {sel:?} k {k} fy {fy} fx0 {fx0}"
             );
         }
     }

@@ -246,7 +246,7 @@ pub fn stencil_depth(
 ) -> u8 {
     #[cfg(target_arch = "x86_64")]
     if let (Some(st), Some(dp)) = (st.get_mut(..LANES), dp.get_mut(..LANES)) {
-        return stencil_group(side, depth, st, dp, d, live);
+        return stencil_group(side, depth, st, dp, GroupZ::Lanes(d), live);
     }
     let mut m = 0u8;
     for (l, s) in st.iter_mut().take(LANES).enumerate() {
@@ -276,6 +276,21 @@ pub fn stencil_depth(
     m
 }
 
+/// The depths of a group for `stencil_group`: eight values, or (AVX2 only) the plane they come
+/// from, `depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0)))`, computed with the depth test by
+/// `avx2::depth_test` (the same values and stores, eight lanes a register).
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+enum GroupZ {
+    Lanes([u32; LANES]),
+    /// Made only where the CPU has AVX2 (`avx2::stencil_depth`).
+    Plane {
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+    },
+}
+
 /// `stencil_depth` on a whole group (`st` and `dp` hold eight values each) with SSE2: the
 /// stencil comparison of `(ref & mask)` with `(s & mask)` as unsigned byte compares (`pminub`,
 /// `pcmpeqb`; the function chosen once), the depth test of the stencil survivors by
@@ -291,7 +306,7 @@ fn stencil_group(
     depth: Option<(u32, bool)>,
     st: &mut [u8],
     dp: &mut [u32],
-    d: [u32; LANES],
+    z: GroupZ,
     live: u8,
 ) -> u8 {
     use std::arch::x86_64::{
@@ -305,7 +320,8 @@ fn stencil_group(
     }
     // SAFETY: SSE2 is part of the x86-64 baseline; `st` holds at least eight bytes (checked
     // above), so the 8-byte load and store at its start are in bounds (no alignment needed);
-    // `__m128i` is plain bits.
+    // `__m128i` is plain bits; `avx2::depth_test` runs only for a `GroupZ::Plane`, made only
+    // where the CPU has AVX2.
     unsafe {
         let p = st.as_mut_ptr().cast::<__m128i>();
         let s = _mm_loadl_epi64(p);
@@ -333,10 +349,15 @@ fn stencil_group(
         };
         let spass = _mm_and_si128(pass, live_v);
         let sbits = (_mm_movemask_epi8(spass) & 0xFF) as u8;
-        let zbits = match depth {
-            Some((func, write)) if sbits != 0 => depth_group(func, write, dp, d, sbits),
-            Some(_) => 0,
-            None => sbits,
+        let zbits = match (depth, z) {
+            (Some((func, write)), GroupZ::Lanes(d)) if sbits != 0 => {
+                depth_group(func, write, dp, d, sbits)
+            }
+            (Some((func, write)), GroupZ::Plane { zrow, dz, fx0 }) if sbits != 0 => {
+                avx2::depth_test(func, write, dp, zrow, dz, fx0, sbits)
+            }
+            (Some(_), _) => 0,
+            (None, _) => sbits,
         };
         let zpass = lanes(zbits);
         let classes = [
@@ -1064,7 +1085,7 @@ mod expf_fma {
 /// Every kernel needs a CPU with AVX2 (`lanes::has_avx2`).
 #[cfg(target_arch = "x86_64")]
 pub(super) mod avx2 {
-    use super::{BlendEval, FogEval, F, LANES};
+    use super::{BlendEval, FogEval, StencilSide, F, LANES};
     use crate::gl;
     use std::arch::x86_64::{
         __m256, __m256i, _mm256_add_epi16, _mm256_add_pd, _mm256_add_ps, _mm256_adds_epu8,
@@ -1180,6 +1201,39 @@ pub(super) mod avx2 {
             unsafe { _mm256_storeu_si256(rp, v) };
         }
         _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8
+    }
+
+    /// `super::stencil_depth(side, depth, st, dp, depth_lanes(lin_lanes(zrow, dz,
+    /// &lane_x(fx0))), live)`: on a whole group the stencil test and operations as there (SSE2,
+    /// eight bytes) and the depth test of the stencil survivors by `depth_test` above (the
+    /// depths computed only when some lane passes the stencil test); a shorter row takes
+    /// `super::stencil_depth` with the lanes' depths.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub unsafe fn stencil_depth(
+        side: &StencilSide,
+        depth: Option<(u32, bool)>,
+        st: &mut [u8],
+        dp: &mut [u32],
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+        live: u8,
+    ) -> u8 {
+        use super::super::lanes::{depth_lanes, lane_x, lin_lanes};
+        if let (Some(st), Some(dp)) = (st.get_mut(..LANES), dp.get_mut(..LANES)) {
+            let z = super::GroupZ::Plane { zrow, dz, fx0 };
+            return super::stencil_group(side, depth, st, dp, z, live);
+        }
+        let d = if depth.is_some() {
+            depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0)))
+        } else {
+            [0; LANES]
+        };
+        super::stencil_depth(side, depth, st, dp, d, live)
     }
 
     /// `super::fog`: the factor (LINEAR `c·scale + e`; EXP and EXP2 their arguments on lanes,
@@ -1772,7 +1826,7 @@ mod tests {
             3 => f32::from_bits((g.next() as u32) & 0x807F_FFFF),
             _ => g.float(),
         };
-        let (mut written, mut blended) = (0, 0);
+        let (mut written, mut blended, mut stenciled) = (0, 0, 0);
         for _ in 0..20_000 {
             let c: [F; 4] = std::array::from_fn(|_| std::array::from_fn(|_| f(&mut g)));
             // SAFETY: the CPU has AVX2 (checked above).
@@ -1837,6 +1891,49 @@ mod tests {
                 "depth {func:#x} {write} {zrow} {dz} {fx0}"
             );
 
+            // The stencil test and operations with the depth test of the plane.
+            let ops = [
+                gl::KEEP,
+                gl::ZERO,
+                gl::REPLACE,
+                gl::INCR,
+                gl::DECR,
+                gl::INVERT,
+                gl::INCR_WRAP,
+                gl::DECR_WRAP,
+            ];
+            let side = StencilSide {
+                func: g.pick(&COMPARE_FUNCS),
+                reference: g.byte(),
+                mask: if g.next() % 2 == 0 { 0xFF } else { g.byte() },
+                ops: std::array::from_fn(|_| ops[(g.next() % 8) as usize]),
+                write: if g.next() % 2 == 0 { 0xFF } else { g.byte() },
+            };
+            let depth = (g.next() % 4 != 0).then_some((func, write));
+            let ns = if g.next() % 8 == 0 { n / 2 } else { n };
+            let st0: Vec<u8> = (0..ns)
+                .map(|_| {
+                    if g.next() % 2 == 0 {
+                        side.reference
+                    } else {
+                        g.byte()
+                    }
+                })
+                .collect();
+            let (mut wst, mut wdp) = (st0.clone(), row0.clone());
+            let (mut hst, mut hdp) = (st0, row0.clone());
+            let mw = stencil_depth(&side, depth, &mut wst, &mut wdp, d, live);
+            // SAFETY: as above.
+            let mh = unsafe {
+                avx2::stencil_depth(&side, depth, &mut hst, &mut hdp, zrow, dz, fx0, live)
+            };
+            assert_eq!(
+                (mh, &hst, &hdp),
+                (mw, &wst, &wdp),
+                "stencil {side:?} {depth:?} {zrow} {dz} {fx0}"
+            );
+            stenciled += usize::from(ns >= LANES && n >= LANES && mw != 0);
+
             let px0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
             let mask: [bool; 4] = std::array::from_fn(|_| g.next() % 3 != 0);
             let (mut want, mut have) = (px0.clone(), px0.clone());
@@ -1873,6 +1970,9 @@ mod tests {
             );
             blended += usize::from(ow && n >= LANES);
         }
-        assert!(written > 5000 && blended > 3000, "{written} {blended}");
+        assert!(
+            written > 5000 && blended > 3000 && stenciled > 1000,
+            "{written} {blended} {stenciled}"
+        );
     }
 }

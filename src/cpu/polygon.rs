@@ -14,6 +14,7 @@ use super::setup::{
     F_PHONG, MAXV,
 };
 use crate::gl;
+use std::mem::MaybeUninit;
 
 impl Worker {
     /// Sets up `p` when it is not an unclipped triangle for `fast_tri`: clipping, lines, points,
@@ -172,11 +173,16 @@ impl Worker {
         if n < 3 {
             return;
         }
-        let mut w = [ZERO_W; N];
-        for (wv, win) in w.iter_mut().zip(wins) {
-            *wv = from_win(win);
+        // Only the `n` vertices used are written: zeroing all `N` (`MAX_POLY` of about 200
+        // bytes each on the clipped path) cost a 3.2 KB memset a polygon.
+        let mut buf = [const { MaybeUninit::<WVert>::uninit() }; N];
+        for (slot, win) in buf.iter_mut().zip(wins).take(n) {
+            slot.write(from_win(win));
         }
-        let w = &mut w[..n];
+        // SAFETY: the loop above initialised `buf[..n]` (n ≤ wins.len() and n ≤ N), and
+        // `MaybeUninit<WVert>` has `WVert`'s layout; `WVert` is `Copy`, so nothing is dropped.
+        let w: &mut [WVert] =
+            unsafe { std::slice::from_raw_parts_mut(buf.as_mut_ptr().cast::<WVert>(), n) };
         // §3.5.1 eq. 3.6: the signed area in window coordinates decides the facing.
         let mut area: i128 = 0;
         for i in 0..n {
@@ -326,17 +332,6 @@ fn from_win(w: &Win) -> WVert {
         ps: 0.0,
     }
 }
-
-const ZERO_W: WVert = WVert {
-    x: 0.0,
-    y: 0.0,
-    fx: 0,
-    fy: 0,
-    z: 0.0,
-    iw: 0.0,
-    v: [0.0; MAXV],
-    ps: 0.0,
-};
 
 /// The z plane of three window vertices: `[_, dz/dx, dz/dy]` per pixel (for polygon offset).
 fn z_slopes(a: &WVert, b: &WVert, c: &WVert) -> [f64; 3] {
