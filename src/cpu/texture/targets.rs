@@ -543,7 +543,7 @@ impl Sampler {
     /// values divided by q, times 1, which changes no bit of a number), then per lane the face
     /// of the quad's first point, the three points projected on it and scaled, and
     /// `quad_lambda`'s ρ² and λ: each lane the scalar λ (a NaN where it is NaN).
-    #[inline]
+    #[inline(always)]
     pub(super) fn cube_lambda_lanes(
         &self,
         planes: &[f32],
