@@ -33,8 +33,10 @@ struct Views3<'a> {
 /// of by the lane passes: the passes compute their wraps and weights on all eight lanes, which
 /// costs more than the scalar route for a sparse group (the small triangles of a sphere).
 /// Measured again in the eighth session (texture-targets, callgrind, millions of
-/// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0.
-const SPARSE: u32 = 3;
+/// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0. The eleventh session, with the
+/// AVX2 kernels and λ (a lane-pass group ≈896 instructions, a sparse lane ≈354): 1 727.9,
+/// 2 721.4, 3 726.5.
+const SPARSE: u32 = 2;
 
 /// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
 /// index mask: at least one texel per axis, exactly w·h·d texels, a power-of-two count that
