@@ -233,6 +233,49 @@ impl Sampler {
         qx: [f32; LANES],
         qy: f32,
     ) -> [f32; LANES] {
+        #[cfg(target_arch = "x86_64")]
+        if avx2() {
+            // SAFETY: `avx2()` holds only on a CPU with AVX2.
+            return unsafe { self.quad_lambda_avx2(planes, to, qx, qy) };
+        }
+        self.quad_lambda_on(planes, to, qx, qy)
+    }
+
+    /// [`Sampler::quad_lambda_lanes`] on AVX2: a cube map by `cube_lambda_lanes` compiled
+    /// for AVX2, the other targets by [`quad_lambda8`] (eight lanes a register, the same
+    /// operations in the same order, no FMA). texture-targets (callgrind, 3 frames):
+    /// `quad_lambda_lanes` 404 → ≈247 instructions a call inclusive.
+    ///
+    /// # Safety
+    /// Only on a CPU with AVX2 ([`avx2`]).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn quad_lambda_avx2(
+        &self,
+        planes: &[f32],
+        to: usize,
+        qx: [f32; LANES],
+        qy: f32,
+    ) -> [f32; LANES] {
+        if self.cube {
+            return self.cube_lambda_lanes(planes, to, qx, qy);
+        }
+        // The s, t, r and q planes; past the end of `planes`, 0 (as `quad_lambda_on`).
+        let o = to.saturating_add(1).saturating_mul(3);
+        let pl: [[f32; 3]; 4] = match planes.get(o..o.saturating_add(12)) {
+            Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
+            None => {
+                let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+                let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
+                [plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to)]
+            }
+        };
+        quad_lambda8(&pl, &qx, qy, self.size, self.dims)
+    }
+
+    /// [`Sampler::quad_lambda_lanes`] without AVX2: plain lane loops (SSE2 on x86-64).
+    #[inline(always)]
+    fn quad_lambda_on(&self, planes: &[f32], to: usize, qx: [f32; LANES], qy: f32) -> [f32; LANES] {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
@@ -1370,6 +1413,100 @@ fn lambda_point(
         [0.0; LANES]
     };
     [u, v, w]
+}
+
+/// [`Sampler::quad_lambda_on`] without a cube map on eight AVX registers: `lambda_point`'s
+/// three points (planes `pl` = s, t, r, q, each (a, ∂x, ∂y), at (`qx[l]`, `qy`),
+/// (`qx[l]` + 1, `qy`) and (`qx[l]`, `qy` + 1)), the two squared lengths, their larger and
+/// `0.5·fast_log2`: each lane the same operations in the same order as the SSE2 lane loops
+/// (no FMA), so the same bits but a NaN's payload (every NaN becomes `fast_log2`'s NaN).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn quad_lambda8(
+    pl: &[[f32; 3]; 4],
+    qx: &[f32; LANES],
+    qy: f32,
+    size: [f32; 3],
+    dims: usize,
+) -> [f32; LANES] {
+    use std::arch::x86_64::*;
+    let [ps, pt, pr, pq] = pl;
+    let x0 = lanes8(qx);
+    let x1 = _mm256_add_ps(x0, _mm256_set1_ps(1.0));
+    let zero = _mm256_setzero_ps();
+    // `lambda_point`: (a + dx·x) + dy·y per plane, the division by q (0 where q is 0;
+    // `!=` is true for a NaN), then each component times its size.
+    let point = |x: __m256, y: f32| -> [__m256; 3] {
+        let ev = |p: &[f32; 3]| {
+            let yt = _mm256_set1_ps(p[2] * y);
+            _mm256_add_ps(
+                _mm256_add_ps(_mm256_set1_ps(p[0]), _mm256_mul_ps(_mm256_set1_ps(p[1]), x)),
+                yt,
+            )
+        };
+        let q = ev(pq);
+        let inv = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, zero),
+            _mm256_div_ps(_mm256_set1_ps(1.0), q),
+        );
+        let scaled = |p: &[f32; 3], size: f32| {
+            _mm256_mul_ps(_mm256_mul_ps(ev(p), inv), _mm256_set1_ps(size))
+        };
+        let u = scaled(ps, size[0]);
+        let v = if dims >= 2 { scaled(pt, size[1]) } else { zero };
+        let w = if dims == 3 { scaled(pr, size[2]) } else { zero };
+        [u, v, w]
+    };
+    let p0 = point(x0, qy);
+    let px = point(x1, qy);
+    let py = point(x0, qy + 1.0);
+    let len2 = |p: &[__m256; 3]| {
+        let (a, b, c) = (
+            _mm256_sub_ps(p[0], p0[0]),
+            _mm256_sub_ps(p[1], p0[1]),
+            _mm256_sub_ps(p[2], p0[2]),
+        );
+        _mm256_add_ps(
+            _mm256_add_ps(_mm256_mul_ps(a, a), _mm256_mul_ps(b, b)),
+            _mm256_mul_ps(c, c),
+        )
+    };
+    let (lx, ly) = (len2(&px), len2(&py));
+    // `lx.max(ly)`: the larger, the other where one is NaN (`vmaxps` gives its second operand
+    // where either is NaN: lx where ly is NaN; then ly where lx is NaN).
+    let m = _mm256_max_ps(ly, lx);
+    let rho2 = _mm256_blendv_ps(m, ly, _mm256_cmp_ps::<_CMP_UNORD_Q>(lx, lx));
+    // `fast_log2_lanes` on eight lanes.
+    let bits = _mm256_castps_si256(rho2);
+    let e = _mm256_sub_epi32(
+        _mm256_and_si256(_mm256_srli_epi32::<23>(bits), _mm256_set1_epi32(0xff)),
+        _mm256_set1_epi32(127),
+    );
+    let mant = _mm256_castsi256_ps(_mm256_or_si256(
+        _mm256_and_si256(bits, _mm256_set1_epi32(0x007f_ffff)),
+        _mm256_set1_epi32(0x3f80_0000),
+    ));
+    let val = _mm256_add_ps(
+        _mm256_cvtepi32_ps(e),
+        _mm256_sub_ps(mant, _mm256_set1_ps(1.0)),
+    );
+    let inf = _mm256_set1_ps(f32::INFINITY);
+    let is_zero = _mm256_cmp_ps::<_CMP_EQ_OQ>(rho2, zero);
+    let is_inf = _mm256_cmp_ps::<_CMP_EQ_OQ>(rho2, inf);
+    let special = _mm256_blendv_ps(
+        _mm256_blendv_ps(_mm256_set1_ps(f32::NAN), inf, is_inf),
+        _mm256_set1_ps(f32::NEG_INFINITY),
+        is_zero,
+    );
+    let ok = _mm256_and_ps(
+        _mm256_cmp_ps::<_CMP_GT_OQ>(rho2, zero),
+        _mm256_cmp_ps::<_CMP_LT_OQ>(rho2, inf),
+    );
+    let lg = _mm256_blendv_ps(special, val, ok);
+    let out = _mm256_mul_ps(_mm256_set1_ps(0.5), lg);
+    // SAFETY: `__m256` is eight f32 lanes in memory order, the layout of `[f32; 8]`.
+    unsafe { std::mem::transmute::<__m256, [f32; LANES]>(out) }
 }
 
 /// [`fast_log2`] without the library call on the paths a lane takes: the same value for
@@ -2799,64 +2936,28 @@ fn bilinear(w: [f32; 4], t: [[f32; 4]; 4]) -> [f32; 4] {
     o
 }
 
-/// Chunks of eight quads (16 pixels, from a multiple of 16) whose λ a [`LamRow`] keeps: a
-/// tile row of 64 pixels is four, and a span may run one chunk further.
-const ROW_CHUNKS: usize = 5;
-
-/// What λ of a quad depends on besides its position (the bits of): the s, t, r and q planes
-/// `quad_lambda_lanes` reads, the sampler's base size, dimensions and cube flag, the quad
-/// row's y and the planes' origin x. Two spans with equal keys get equal λ for each quad.
-type LamKey = [u32; 20];
-
-/// λ of one unit for the quads of one quad row (two pixel rows) of one primitive, per thread:
-/// the span of row y computes its quads, the span of row y + 1 (the same quads, §3.8.8's
-/// derivatives are per 2x2 quad) finds them here instead of computing them again.
-#[derive(Clone, Copy)]
-struct LamRow {
-    key: LamKey,
-    /// Bumped whenever the row is started over, so a [`SpanLambda`] that checked the key
-    /// once need not compare it again while the row stays its own.
-    gen: u32,
-    /// The chunk number (window x / 16) of `lam[..LANES]`.
-    c0: i32,
-    /// Which chunks are computed (bit k: `lam[k * LANES..][..LANES]`).
-    done: u8,
-    /// The chunks' λ, and a spare entry (the window `SpanLambda::lanes` reads is five quads).
-    lam: [f32; ROW_CHUNKS * LANES + 1],
-}
-
-impl LamRow {
-    const EMPTY: LamRow = LamRow {
-        key: [0; 20],
-        gen: 0,
-        c0: 0,
-        done: 0,
-        lam: [0.0; ROW_CHUNKS * LANES + 1],
-    };
-}
-
-thread_local! {
-    /// One λ row per texture unit, per thread (each tile is rasterised on one thread).
-    static LAM_ROWS: std::cell::RefCell<[LamRow; MAX_TEXTURE_UNITS]> =
-        const { std::cell::RefCell::new([LamRow::EMPTY; MAX_TEXTURE_UNITS]) };
-}
-
 /// λ of one unit for the 2x2 quads of a span row, computed eight quads at a time as the
-/// span's lane groups ask for them ([`SpanLambda::lanes`]): each quad once per quad row. The
-/// quads live in the thread's [`LamRow`] of the unit, so the span of the second pixel row of a
-/// quad row reuses what the first computed when the key (planes, sampler size, quad row,
-/// origin) is the same. Each value is [`Sampler::quad_lambda_lanes`]'s for the same quad
-/// position (its lanes are independent of each other), so the same bits.
+/// span's lane groups ask for them ([`SpanLambda::lanes`]): a group of eight pixels needs four
+/// or five quads, so one call of [`Sampler::quad_lambda_lanes`] for eight quads from the
+/// group's first usually serves the next group too. Each value is `quad_lambda_lanes`'s for the
+/// same quad position (its lanes are independent of each other), so the same bits.
+///
+/// The eleventh session dropped the per-thread row of quads that the span of the second pixel
+/// row of a quad row reused (keyed by the planes, 80 bytes): on texture-targets (small
+/// triangles) its bookkeeping cost ≈162 instructions a group and saved too few λ calls (140 634
+/// for 192 444 groups), more than the AVX2 λ (≈215 a call) it saved.
 #[derive(Clone, Copy, Debug)]
 pub struct SpanLambda {
     /// Window x of the planes' origin (the primitive's bounding-box corner).
     ox: i32,
     /// The quads' lower-left y relative to the planes' origin.
     qy: f32,
-    /// The key, once the first call has made it.
-    key: Option<LamKey>,
-    /// The [`LamRow::gen`] this span last found its key in (None: not looked yet).
-    gen: Option<u32>,
+    /// The window quad number (window x / 2, floor) of `lam[0]`; `lam` holds nothing yet when
+    /// `have` is false.
+    q0: i32,
+    have: bool,
+    /// λ of quads `q0..q0 + 8`, and a spare entry (the window `lanes` reads is five quads).
+    lam: [f32; LANES + 1],
 }
 
 impl SpanLambda {
@@ -2869,29 +2970,10 @@ impl SpanLambda {
         SpanLambda {
             ox,
             qy,
-            key: None,
-            gen: None,
+            q0: 0,
+            have: false,
+            lam: [0.0; LANES + 1],
         }
-    }
-
-    /// The key of this span with sampler `s` and planes `planes` (the varying s at `to`).
-    fn key(&self, s: &Sampler, planes: &[f32], to: usize) -> LamKey {
-        let mut k = [0u32; 20];
-        for (j, v) in k.iter_mut().take(12).enumerate() {
-            *v = planes
-                .get(3 * (1 + to) + j)
-                .copied()
-                .unwrap_or(0.0)
-                .to_bits();
-        }
-        k[12] = s.size[0].to_bits();
-        k[13] = s.size[1].to_bits();
-        k[14] = s.size[2].to_bits();
-        k[15] = s.dims as u32;
-        k[16] = u32::from(s.cube);
-        k[17] = self.qy.to_bits();
-        k[18] = self.ox as u32;
-        k
     }
 
     /// λ for the eight pixels from window x `x` (lane l at x + l): each its quad's, as
@@ -2899,80 +2981,36 @@ impl SpanLambda {
     /// on every call for one `SpanLambda`.
     #[inline]
     pub fn lanes(&mut self, s: &Sampler, planes: &[f32], to: usize, x: i32) -> [f32; LANES] {
-        let direct = |this: &SpanLambda| {
-            let qx = std::array::from_fn(|l| {
-                (x.wrapping_add(l as i32) & !1).wrapping_sub(this.ox) as f32
-            });
-            s.quad_lambda_lanes(planes, to, qx, this.qy)
-        };
         let last = x.saturating_add(LANES as i32 - 1);
         if last == i32::MAX || x < i32::MIN / 2 {
-            return direct(self);
+            let qx = std::array::from_fn(|l| {
+                (x.wrapping_add(l as i32) & !1).wrapping_sub(self.ox) as f32
+            });
+            return s.quad_lambda_lanes(planes, to, qx, self.qy);
         }
-        if self.key.is_none() {
-            self.key = Some(self.key(s, planes, to));
+        // The group's first and last quads (lane l's is (x + l) / 2, floor).
+        let (qa, qb) = (x >> 1, last >> 1);
+        if !self.have || qa < self.q0 || qb - self.q0 >= LANES as i32 {
+            // Quads qa..qa + 8, at window x 2·q (what `(x + l) & !1` is for lane l's quad).
+            let ox = self.ox;
+            let qx = std::array::from_fn(|j| {
+                qa.wrapping_add(j as i32).wrapping_mul(2).wrapping_sub(ox) as f32
+            });
+            let v = s.quad_lambda_lanes(planes, to, qx, self.qy);
+            self.lam[..LANES].copy_from_slice(&v);
+            (self.q0, self.have) = (qa, true);
         }
-        // Chunk numbers of the group's first and last pixels (floor of x / 16).
-        let (ca, cb) = (x >> 4, last >> 4);
-        // The key is read in place (only when the generation check fails; copying its 80
-        // bytes out on every call was ≈8% of this function's own instructions).
-        let (ox, qy) = (self.ox, self.qy);
-        let (key, gen) = (&self.key, &mut self.gen);
-        let got = LAM_ROWS.try_with(|rows| {
-            let mut rows = rows.try_borrow_mut().ok()?;
-            let row = rows.get_mut(s.unit)?;
-            let fits = |row: &LamRow| ca >= row.c0 && cb - row.c0 < ROW_CHUNKS as i32;
-            if *gen != Some(row.gen) || !fits(row) {
-                let key = key.as_ref()?;
-                if row.key != *key || !fits(row) {
-                    // Start the row over: the 64-pixel block holding x, or from x's chunk
-                    // when the group runs past that block's last chunk.
-                    row.key = *key;
-                    row.c0 = if cb - ((x >> 6) << 2) < ROW_CHUNKS as i32 {
-                        (x >> 6) << 2
-                    } else {
-                        ca
-                    };
-                    row.done = 0;
-                    row.gen = row.gen.wrapping_add(1);
-                }
-                *gen = Some(row.gen);
-            }
-            for c in ca..=cb {
-                let k = (c - row.c0) as usize;
-                if row.done & (1 << k) != 0 {
-                    continue;
-                }
-                // Chunk c's quads start at window x 16c, two pixels apart.
-                let first = c.wrapping_mul(2 * LANES as i32);
-                let qx = std::array::from_fn(|j| {
-                    first.wrapping_add(2 * j as i32).wrapping_sub(ox) as f32
-                });
-                let v = s.quad_lambda_lanes(planes, to, qx, qy);
-                row.lam
-                    .get_mut(k * LANES..(k + 1) * LANES)?
-                    .copy_from_slice(&v);
-                row.done |= 1 << k;
-            }
-            // Lane l's quad is number (x + l) / 2 (floor): d + (x mod 2 + l) / 2 in the row,
-            // d = x / 2 - 8·c0 (lane 7's at most d + 4, inside the chunks; `lam` has one
-            // spare entry after them for the window of an even x).
-            let d = (x >> 1) - row.c0 * LANES as i32;
-            let w: [f32; 5] = row
-                .lam
-                .get(usize::try_from(d).ok()?..)?
-                .get(..5)?
-                .try_into()
-                .ok()?;
-            Some(if x & 1 == 0 {
-                [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
-            } else {
-                [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
-            })
-        });
-        match got {
-            Ok(Some(v)) => v,
-            _ => direct(self),
+        // qa - q0 is 0..=4 here (qb - qa is 3 or 4, qb - q0 < 8); the five entries from it are
+        // inside `lam` (its spare one is read only for an even x, whose lanes use four).
+        let d = usize::try_from(qa - self.q0).unwrap_or(0).min(4);
+        let mut w = [0.0f32; 5];
+        if let Some(src) = self.lam.get(d..d + 5) {
+            w.copy_from_slice(src);
+        }
+        if x & 1 == 0 {
+            [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
+        } else {
+            [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
         }
     }
 }

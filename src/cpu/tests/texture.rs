@@ -586,7 +586,20 @@ fn quad_lambda_lanes_is_the_scalar_lambda_bit_for_bit() {
         let to = (next() % 4) as usize;
         let qx: [f32; LANES] = std::array::from_fn(|_| ((next() % 400) as i32 - 50) as f32);
         let qy = ((next() % 400) as i32 - 50) as f32;
-        let got = s.quad_lambda_lanes(&planes, to, qx, qy);
+        // The AVX2 route (`quad_lambda8`, where the CPU has AVX2) and the SSE2 one.
+        let mut both = [[0.0f32; LANES]; 2];
+        for (off, b) in [false, true].into_iter().zip(&mut both) {
+            crate::cpu::lanes::NO_AVX2.with(|c| c.set(off));
+            *b = s.quad_lambda_lanes(&planes, to, qx, qy);
+            crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
+        }
+        // The two routes agree bit for bit, NaNs included (both end in `fast_log2`'s NaN).
+        assert_eq!(
+            both[0].map(f32::to_bits),
+            both[1].map(f32::to_bits),
+            "{planes:?}"
+        );
+        let got = both[0];
         for l in 0..LANES {
             let want = s.quad_lambda(&planes, to, qx[l], qy);
             // A NaN's payload may differ (operand order); every use of λ treats NaN alike.
@@ -996,6 +1009,8 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
         let y = oy + (next() % 200) as i32;
         let qy = ((y & !1) - oy) as f32;
         let n = 1 + (next() % 90) as usize;
+        // Every other round on the SSE2 λ (the AVX2 one where the CPU has it otherwise).
+        crate::cpu::lanes::NO_AVX2.with(|c| c.set(round % 2 == 1));
         let mut sl = SpanLambda::new(x0, ox, qy);
         let mut g = 0;
         while g < n {
@@ -1012,16 +1027,17 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
             g += LANES;
         }
     }
+    crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
     assert!(checked > 50_000, "{checked}");
 }
 
 #[test]
-fn span_lambda_rows_share_quads_only_with_the_same_key() {
+fn span_lambda_spans_of_many_rows_are_quad_lambda() {
     // Spans of both pixel rows of quad rows, of a few primitives (plane sets) and samplers
-    // that differ only in size or dimensions, all on unit 0, in a random order, so that the
-    // thread's λ row is reused (same planes, sampler, quad row and origin), started over
-    // (any of them differs), and reached by spans that start left of, right of and past the
-    // quads it holds: every lane is `quad_lambda` of its quad, bit for bit.
+    // that differ only in size or dimensions, all on unit 0, in a random order, with groups
+    // skipped (so that a span's eight kept quads are reused, passed and started over): every
+    // lane is `quad_lambda` of its quad, bit for bit. (Written when the spans of one quad row
+    // shared a per-thread row of quads keyed by the planes; that row is gone.)
     let mut next = lcg(41u64);
     let mut samplers = lambda_samplers();
     let mut wide = samplers[1].clone();

@@ -13,7 +13,8 @@ use glam::Vec4;
 use super::{avx2, lanes8, linear_axis8, store8};
 use super::{
     cube_face, cube_project, dense_kernel, depth_compare, fast_log2_lane, kernel_kind,
-    lambda_point, wrap_linear_lanes, wrap_nearest_lanes, Axis, Route, Sampler, TexelLanes, Texels,
+    lambda_point, mask_eq, mask_ne_zero, wrap_linear_lanes, wrap_nearest_lanes, Axis, Route,
+    Sampler, TexelLanes, Texels,
 };
 use crate::cpu::lanes::{recip_lanes, LANES};
 use crate::gl;
@@ -32,8 +33,10 @@ struct Views3<'a> {
 /// of by the lane passes: the passes compute their wraps and weights on all eight lanes, which
 /// costs more than the scalar route for a sparse group (the small triangles of a sphere).
 /// Measured again in the eighth session (texture-targets, callgrind, millions of
-/// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0.
-const SPARSE: u32 = 3;
+/// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0. The eleventh session, with the
+/// AVX2 kernels and λ (a lane-pass group ≈896 instructions, a sparse lane ≈354): 1 727.9,
+/// 2 721.4, 3 726.5.
+const SPARSE: u32 = 2;
 
 /// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
 /// index mask: at least one texel per axis, exactly w·h·d texels, a power-of-two count that
@@ -139,11 +142,7 @@ impl Sampler {
         // Each lane's level, filter and weight: `select` on lanes, as the 2D path takes them.
         let (la, linear, f) = self.select_lanes(lambda);
         let mut lb = [self.base_level; LANES];
-        let mut second = 0u8;
-        for (l, &w) in f.iter().enumerate() {
-            second |= u8::from(w != 0.0) << l;
-        }
-        let (linear, second) = (linear & m, second & m);
+        let (linear, second) = (linear & m, mask_ne_zero(&f) & m);
         self.pass_targets(false, face, &la, s, t, r, m & !linear, out);
         self.pass_targets(true, face, &la, s, t, r, linear, out);
         if second == 0 {
@@ -192,9 +191,13 @@ impl Sampler {
         // and filling the per-lane views cost ≈270 instructions a group on texture-targets.
         let first = m.trailing_zeros() as usize & (LANES - 1);
         let (f0, k0) = (face[first], lv[first]);
-        let mut other = 0u8;
-        for l in 0..LANES {
-            other |= u8::from(face[l] != f0 || lv[l] != k0) << l;
+        // The levels by one SSE2 compare (the per-lane loop of both was ≈64 instructions a
+        // call on texture-targets); the faces only for a cube map (else all 0).
+        let mut other = !mask_eq(lv, k0);
+        if self.cube {
+            for (l, &f) in face.iter().enumerate() {
+                other |= u8::from(f != f0) << l;
+            }
         }
         if other & m == 0 {
             let Some(x) = self.obj.face_level(f0, k0) else {
@@ -543,7 +546,7 @@ impl Sampler {
     /// values divided by q, times 1, which changes no bit of a number), then per lane the face
     /// of the quad's first point, the three points projected on it and scaled, and
     /// `quad_lambda`'s ρ² and λ: each lane the scalar λ (a NaN where it is NaN).
-    #[inline]
+    #[inline(always)]
     pub(super) fn cube_lambda_lanes(
         &self,
         planes: &[f32],
