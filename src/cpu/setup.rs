@@ -203,6 +203,9 @@ pub struct SetupCtx {
     pub(super) sprite_lower_left: bool,
     /// Framebuffer ∩ scissor, inclusive.
     pub rect: [i32; 4],
+    /// `rect` as `Win::cen` orders its bounds: `[x0, y0, -x1, -y1]` (negated saturating), so
+    /// that cutting a bounding box to `rect` is one `max` per bound (`geom_wins`).
+    rect_cen: [i32; 4],
     /// Tiles across.
     pub tiles_x: usize,
     /// Total tiles.
@@ -320,6 +323,7 @@ impl SetupCtx {
             sprite_units: std::array::from_fn(|u| rl.tex[u].filter(|_| p.coord_replace[u])),
             sprite_lower_left: p.sprite_coord_origin == gl::LOWER_LEFT,
             rect,
+            rect_cen: rect_cen(rect),
             tiles_x: tiles.0,
             tiles: tiles.0 * tiles.1,
             fast: state.polygon_mode == [gl::FILL; 2] && layout.nrm.is_none(),
@@ -333,7 +337,7 @@ impl SetupCtx {
 
 /// A processed vertex's clip code and window coordinates (computed once per vertex by the
 /// vertex stage; the window values are meaningful only when `code` is 0).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct Win {
     /// Window x before snapping.
     pub x: f32,
@@ -349,6 +353,57 @@ pub struct Win {
     pub iw: f32,
     /// Outside-plane bits (`Clipper::code`).
     pub code: u16,
+    /// The pixel centres this vertex bounds, from the snapped `fx`, `fy`: `[centre_lo(fx),
+    /// centre_lo(fy), -centre_hi(fx), -centre_hi(fy)]`. Both functions are monotone, so a
+    /// triangle's bounding box of centres is the minimum of its vertices' (`geom_wins`), without
+    /// the per-triangle divisions of `geom`.
+    pub cen: [i32; 4],
+}
+
+impl Default for Win {
+    /// Zeros, with the `cen` of (0, 0) so that the record stays consistent.
+    fn default() -> Self {
+        Win {
+            x: 0.0,
+            y: 0.0,
+            fx: 0,
+            fy: 0,
+            z: 0.0,
+            iw: 0.0,
+            code: 0,
+            cen: cen(0, 0),
+        }
+    }
+}
+
+/// The first pixel whose centre (i + 0.5) is at or right of snapped coordinate `m` (1/256
+/// pixel): `geom`'s `lo` in i32 (|m| <= 2^29 + 1 after `snap`, so nothing overflows; the shift
+/// is the floor division `div_euclid(256)` is).
+#[inline(always)]
+fn centre_lo(m: i32) -> i32 {
+    -((128 - m) >> 8)
+}
+
+/// The last pixel whose centre is at or left of `m`: `geom`'s `hi` in i32.
+#[inline(always)]
+fn centre_hi(m: i32) -> i32 {
+    (m - 128) >> 8
+}
+
+/// `SetupCtx::rect_cen` of `rect`.
+fn rect_cen(rect: [i32; 4]) -> [i32; 4] {
+    [
+        rect[0],
+        rect[1],
+        rect[2].saturating_neg(),
+        rect[3].saturating_neg(),
+    ]
+}
+
+/// `Win::cen` of snapped coordinates `fx`, `fy`.
+#[inline(always)]
+fn cen(fx: i32, fy: i32) -> [i32; 4] {
+    [centre_lo(fx), centre_lo(fy), -centre_hi(fx), -centre_hi(fy)]
 }
 
 impl SetupCtx {
@@ -361,14 +416,16 @@ impl SetupCtx {
         let xw = g(0) * iw * self.scale[0] + self.offset[0];
         let yw = g(1) * iw * self.scale[1] + self.offset[1];
         let zw = g(2) * iw * self.scale[2] + self.offset[2];
+        let (fx, fy) = (snap(xw), snap(yw));
         Win {
             x: xw as f32,
             y: yw as f32,
-            fx: i64::from(snap(xw)),
-            fy: i64::from(snap(yw)),
+            fx: i64::from(fx),
+            fy: i64::from(fy),
             z: zw,
             iw: iw as f32,
             code: self.clipper.code(v),
+            cen: cen(fx, fy),
         }
     }
 
@@ -392,6 +449,10 @@ impl SetupCtx {
             fx[i] = snap(xw[i]);
             fy[i] = snap(yw[i]);
         }
+        let mut cn = [[0i32; 4]; N];
+        for i in 0..N {
+            cn[i] = cen(fx[i], fy[i]);
+        }
         let mut code = [0u16; N];
         self.clipper.code_block(c, e, &mut code);
         for (i, w) in out.iter_mut().take(N).enumerate() {
@@ -403,6 +464,7 @@ impl SetupCtx {
                 z: zw[i],
                 iw: iw[i] as f32,
                 code: code[i],
+                cen: cn[i],
             };
         }
     }
@@ -706,10 +768,7 @@ impl Worker {
         ids: [u32; 3],
         provoking: u32,
     ) {
-        let Some(g) = geom(
-            &ctx.rect,
-            [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
-        ) else {
+        let Some(g) = geom_wins(&ctx.rect_cen, w) else {
             return;
         };
         // §3.5.1 eq. 3.6: `swapped` means a negative signed area (clockwise).
@@ -962,10 +1021,22 @@ impl Geom {
         if x1 - x0 > 1 || y1 - y0 > 1 {
             return 0;
         }
-        // Each edge function at the four centres of the 2x2 block at (x0, y0), stepping by
-        // its exact integer increments; centres outside the box are masked off at the end.
-        // Per centre the three edges' values are OR-ed: the sign bit of the result is clear
-        // exactly when all three are >= 0 (four lanes, one test each, instead of twelve).
+        #[cfg(target_arch = "x86_64")]
+        let inside = self.inside_sse2();
+        #[cfg(not(target_arch = "x86_64"))]
+        let inside = self.inside_scalar();
+        let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
+        let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
+        COVER_KNOWN | (inside & cols & rows)
+    }
+
+    /// Bit c (2·row + column) set when centre c of the 2x2 block at the box's corner is inside
+    /// all three edges (with the tie rule's bias): each edge function at the four centres,
+    /// stepping by its exact integer increments, the three edges' values OR-ed per centre, whose
+    /// sign bit is then clear exactly when all three are >= 0.
+    #[cfg(any(test, not(target_arch = "x86_64")))]
+    #[inline(always)]
+    pub(super) fn inside_scalar(&self) -> u8 {
         let mut or = [0i64; 4];
         for k in 0..3 {
             let [dx, dy] = self.d[k];
@@ -977,13 +1048,40 @@ impl Geom {
             or[2] |= e + ey;
             or[3] |= e + ex + ey;
         }
-        let inside = u8::from(or[0] >= 0)
+        u8::from(or[0] >= 0)
             | u8::from(or[1] >= 0) << 1
             | u8::from(or[2] >= 0) << 2
-            | u8::from(or[3] >= 0) << 3;
-        let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
-        let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
-        COVER_KNOWN | (inside & cols & rows)
+            | u8::from(or[3] >= 0) << 3
+    }
+
+    /// [`Geom::inside_scalar`] on two SSE2 registers of two i64 lanes (centres 0, 1 and 2, 3):
+    /// the same integer sums (exact: |e| < 2^62 and the steps below 2^40, see `COORD_LIMIT`),
+    /// the sign bits taken with `movmskpd` instead of four comparisons.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub(super) fn inside_sse2(&self) -> u8 {
+        use std::arch::x86_64::{
+            _mm_add_epi64, _mm_castsi128_pd, _mm_movemask_pd, _mm_or_si128, _mm_set1_epi64x,
+            _mm_set_epi64x, _mm_setzero_si128,
+        };
+        // SAFETY: SSE2 is part of the x86-64 baseline; register arithmetic only.
+        unsafe {
+            let (mut lo, mut hi) = (_mm_setzero_si128(), _mm_setzero_si128());
+            for k in 0..3 {
+                let [dx, dy] = self.d[k];
+                let bias = i64::from(self.owns & (1 << k) == 0);
+                let e = self.e[k].wrapping_sub(bias);
+                let (ex, ey) = (dy.wrapping_mul(-256), dx.wrapping_mul(256));
+                // Centres 0 and 1 (row 0), then 2 and 3: the same plus ey.
+                let a = _mm_set_epi64x(e.wrapping_add(ex), e);
+                let b = _mm_add_epi64(a, _mm_set1_epi64x(ey));
+                lo = _mm_or_si128(lo, a);
+                hi = _mm_or_si128(hi, b);
+            }
+            let neg =
+                _mm_movemask_pd(_mm_castsi128_pd(lo)) | _mm_movemask_pd(_mm_castsi128_pd(hi)) << 2;
+            (!neg & 0b1111) as u8
+        }
     }
 }
 
@@ -1012,7 +1110,40 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
     if b64[0] > b64[2] || b64[1] > b64[3] {
         return None;
     }
-    let bbox = b64.map(|v| v as i32);
+    geom_in(b64.map(|v| v as i32), p)
+}
+
+/// `geom(rect, p)` for the window records `w` of a triangle's vertices, `rect_cen` being
+/// `SetupCtx::rect_cen` of `rect`: the bounding box from the vertices' `Win::cen` (the
+/// minimum of a monotone function's values is its value at the minimum, so these are `geom`'s
+/// bounds exactly), cut to `rect` by one `max` per bound; the same `Geom`
+/// (`geom_wins_is_geom` compares them).
+#[inline(always)]
+pub(super) fn geom_wins(rect_cen: &[i32; 4], w: [&Win; 3]) -> Option<Geom> {
+    let c: [i32; 4] = std::array::from_fn(|i| {
+        w[0].cen[i]
+            .min(w[1].cen[i])
+            .min(w[2].cen[i])
+            .max(rect_cen[i])
+    });
+    // Empty: x0 > x1 or y0 > y1 with x1 = -c[2], y1 = -c[3] (in i64: `rect_cen`'s saturated
+    // bounds stay comparable).
+    let neg = |v: i32| -i64::from(v);
+    if i64::from(c[0]) > neg(c[2]) || i64::from(c[1]) > neg(c[3]) {
+        return None;
+    }
+    // Not empty, so x1 >= x0 and y1 >= y0 > i32::MIN: the negations fit.
+    let bbox = [c[0], c[1], c[2].wrapping_neg(), c[3].wrapping_neg()];
+    geom_in(
+        bbox,
+        [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
+    )
+}
+
+/// The rest of `geom` once the bounding box `bbox` (not empty, inside the rectangle) is known.
+#[inline(always)]
+fn geom_in(bbox: [i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
+    let [a, b, c] = p;
     let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
     if area == 0 {
         return None;
@@ -1060,4 +1191,101 @@ pub(super) fn offset(ctx: &SetupCtx, dzdx: f64, dzdy: f64) -> f64 {
 pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
     let t = |v: i32| (v.max(0) as usize) / TILE;
     [t(bbox[0]), t(bbox[1]), t(bbox[2]), t(bbox[3])]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{cen, geom, geom_wins, rect_cen, Geom, Win, SNAP_LIMIT};
+    use crate::cpu::testgen::Gen;
+
+    /// Every field of `g`.
+    type Fields = (
+        [[i64; 2]; 3],
+        bool,
+        i64,
+        [i32; 4],
+        u8,
+        [[i64; 2]; 3],
+        [i64; 3],
+    );
+
+    fn fields(g: Option<Geom>) -> Option<Fields> {
+        g.map(|g| (g.v, g.swapped, g.area, g.bbox, g.owns, g.d, g.e))
+    }
+
+    /// `geom_wins` (the bounding box from the vertices' `Win::cen`) against `geom` on random
+    /// triangles: a few pixels wide near the grid's centres (ties at centres and at 1/256
+    /// steps), large, at the snap limits, under rectangles small, ordinary, empty and extreme
+    /// (`i32::MIN`/`MAX` bounds): the same `Geom`, field for field, or both `None`.
+    #[test]
+    fn geom_wins_is_geom() {
+        let mut g = Gen(0x5eed_0011);
+        let lim = SNAP_LIMIT as i64;
+        let mut some = 0;
+        for case in 0..200_000 {
+            let rect = match case % 7 {
+                0 => [0, 0, 799, 799],
+                1 => [i32::MIN, i32::MIN, i32::MAX, i32::MAX],
+                2 => [3, 5, 2, 9],
+                3 => [i32::MAX, 0, i32::MIN, 10],
+                _ => {
+                    let mut r = || (g.next() % 40) as i32 - 8;
+                    [r(), r(), r(), r()]
+                }
+            };
+            let coord = |g: &mut Gen| -> i64 {
+                match g.next() % 8 {
+                    0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
+                    1 => [lim, -lim, 0, 128, -128][(g.next() % 5) as usize],
+                    2 => (g.next() % 64) as i64 * 128,
+                    _ => (g.next() % 8000) as i64 - 1000,
+                }
+            };
+            let p: [[i64; 2]; 3] = std::array::from_fn(|_| [coord(&mut g), coord(&mut g)]);
+            let w = p.map(|[x, y]| Win {
+                fx: x,
+                fy: y,
+                cen: cen(x as i32, y as i32),
+                ..Win::default()
+            });
+            let a = fields(geom(&rect, p));
+            let b = fields(geom_wins(&rect_cen(rect), [&w[0], &w[1], &w[2]]));
+            assert_eq!(a, b, "case {case}: rect {rect:?}, {p:?}");
+            some += usize::from(a.is_some());
+        }
+        assert!(some > 50_000, "too few triangles with a box: {some}");
+    }
+
+    /// The 2x2 coverage on SSE2 lanes against the scalar sums, on the `Geom`s of random small
+    /// and large triangles (ties at centres, every owned-edge pattern, the snap limits).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn inside_sse2_is_inside_scalar() {
+        let mut g = Gen(0x0c0f_fee5);
+        let lim = SNAP_LIMIT as i64;
+        let mut n = 0;
+        for case in 0..200_000 {
+            let coord = |g: &mut Gen| -> i64 {
+                match g.next() % 6 {
+                    0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
+                    1 => (g.next() % 16) as i64 * 128,
+                    _ => (g.next() % 1200) as i64 - 100,
+                }
+            };
+            let p: [[i64; 2]; 3] = std::array::from_fn(|_| [coord(&mut g), coord(&mut g)]);
+            let Some(t) = geom(&[i32::MIN, i32::MIN, i32::MAX, i32::MAX], p) else {
+                continue;
+            };
+            assert_eq!(t.inside_sse2(), t.inside_scalar(), "case {case}: {p:?}");
+            n += 1;
+        }
+        assert!(n > 100_000, "too few triangles: {n}");
+    }
+
+    #[test]
+    fn default_win_is_consistent() {
+        let w = Win::default();
+        assert_eq!(w.cen, cen(0, 0));
+        assert_eq!(w.cen, [0, 0, 1, 1]);
+    }
 }

@@ -569,6 +569,7 @@ fn window_coordinates_of_a_block_equal_those_of_each_vertex() {
                     w.z.to_bits(),
                     w.iw.to_bits(),
                     w.code,
+                    w.cen,
                 )
             };
             assert_eq!(bits(w), bits(&r), "lane {k}: {w:?} vs {r:?}");
