@@ -2708,7 +2708,20 @@ mod tests {
         ];
         let wraps = [gl::REPEAT, gl::CLAMP_TO_EDGE];
 
+        let funcs = [
+            gl::NEVER,
+            gl::LESS,
+            gl::EQUAL,
+            gl::LEQUAL,
+            gl::GREATER,
+            gl::NOTEQUAL,
+            gl::GEQUAL,
+            gl::ALWAYS,
+        ];
         for round in 0..1500 {
+            // One round in three a depth texture's comparison (NEAREST, LUMINANCE, env
+            // BLEND), the shadow-map state.
+            let shadow = round % 3 == 2;
             let mut obj = TexObject {
                 min_filter: g.pick(&mins),
                 mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
@@ -2716,6 +2729,13 @@ mod tests {
                 wrap_t: g.pick(&wraps),
                 ..TexObject::default()
             };
+            if shadow {
+                obj.min_filter = gl::NEAREST;
+                obj.mag_filter = gl::NEAREST;
+                obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+                obj.compare_func = g.pick(&funcs);
+                obj.depth_texture_mode = gl::LUMINANCE;
+            }
             let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
             let rgb = g.next() % 3 == 0;
             let mut k = 0;
@@ -2727,15 +2747,23 @@ mod tests {
                         if rgb {
                             t[3] = 1.0;
                         }
+                        if shadow {
+                            t = [t[0], 0.0, 0.0, 1.0];
+                        }
                         t
                     })
                     .collect::<Vec<_>>();
+                let (fmt, base) = match (shadow, rgb) {
+                    (true, _) => (gl::DEPTH_COMPONENT, gl::DEPTH_COMPONENT),
+                    (false, true) => (gl::RGB, gl::RGB),
+                    (false, false) => (gl::RGBA, gl::RGBA),
+                };
                 obj.levels[k] = Some(Level {
                     depth: 1,
                     width: w,
                     height: w,
-                    internal_format: if rgb { gl::RGB } else { gl::RGBA } as i32,
-                    base: if rgb { gl::RGB } else { gl::RGBA },
+                    internal_format: fmt as i32,
+                    base,
                     texels: texels.into(),
                 });
                 k += 1;
@@ -2745,6 +2773,11 @@ mod tests {
             state.textures.defaults[1] = Arc::new(obj);
             state.enables.texture_2d[0] = true;
             state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
+            if shadow {
+                state.textures.units[0].env_mode = gl::BLEND;
+                state.textures.units[0].env_color =
+                    Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
+            }
             let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
             samplers[0] = Sampler::new(&state, 0);
             let mut rl = RLayout {

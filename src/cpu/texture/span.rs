@@ -1,6 +1,9 @@
 //! The fused textured group (AVX2): for a span whose state is the common one — one 2D unit
-//! with [`Sampler::lanes_ok`], no depth comparison, REPEAT or CLAMP_TO_EDGE on s and t, the
-//! MODULATE or REPLACE environment on an RGBA or RGB texture, no colour sum, one colour buffer
+//! with [`Sampler::lanes_ok`], REPEAT or CLAMP_TO_EDGE on s and t, the MODULATE or REPLACE
+//! environment on an RGBA or RGB texture without depth comparison, or a depth texture's
+//! comparison (NEAREST on the base level, DEPTH_TEXTURE_MODE LUMINANCE) under the BLEND
+//! environment (shadow-map's state: r/q compared with the stored depth as `dense_depth8`
+//! does, then Cf·(1 - L) + Cc·L as `env_of`), no colour sum, one colour buffer
 //! written whole — eight fragments go from the planes to the RGBA8 store in registers: 1/w and
 //! the varyings, s/q and t/q, the level choice ([`Sampler::select_lanes`]), the one or two
 //! levels' filter on a [`dense_level`] with plain 16-byte texel loads (no gathers), the level
@@ -22,8 +25,17 @@ pub struct FusedSpan<'a> {
     s: &'a Sampler,
     /// REPEAT on s (else CLAMP_TO_EDGE), on t.
     rep: [bool; 2],
-    /// REPLACE (else MODULATE).
-    replace: bool,
+    /// The environment: REPLACE, MODULATE, or BLEND of a depth comparison's LUMINANCE.
+    env: Env,
+    /// TEXTURE_COMPARE_FUNC of a depth texture's comparison (NEAREST on the base level,
+    /// DEPTH_TEXTURE_MODE LUMINANCE, env BLEND), else None.
+    depth: Option<u32>,
+    /// TEXTURE_ENV_COLOR's RGB and 0, twice (BLEND's Cc as `env_of` reads it).
+    cc: [f32; 8],
+    /// r's row plane (constant, x step, y term), and whether r is smooth (only read with
+    /// `depth`).
+    rpl: [f32; 3],
+    rdiv: bool,
     /// An RGB texture (the fragment's alpha passes).
     rgb: bool,
     /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
@@ -42,6 +54,17 @@ pub struct FusedSpan<'a> {
     /// λ's planes of s, t and q: constant, x step, y term at the quad row's y and at one
     /// more (`quad_lambda_lanes`' `qy` and `qy + 1`).
     lp: [[f32; 4]; 3],
+}
+
+/// The environments the route computes (`env_of`'s arms).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Env {
+    /// MODULATE on RGBA or RGB.
+    Modulate,
+    /// REPLACE on RGBA or RGB.
+    Replace,
+    /// BLEND on a depth texture read as LUMINANCE: Cf·(1 - L) + Cc·L, the fragment's alpha.
+    BlendLum,
 }
 
 /// A level as the route reads it.
@@ -63,13 +86,14 @@ impl<'a> FusedSpan<'a> {
     #[inline(always)]
     pub fn covers(s: &Sampler) -> bool {
         let edge = |m: u32| m == gl::REPEAT || m == gl::CLAMP_TO_EDGE;
+        let color = s.compare.is_none()
+            && (s.env == gl::MODULATE || s.env == gl::REPLACE)
+            && (s.base == gl::RGBA || s.base == gl::RGB);
         cfg!(target_arch = "x86_64")
             && s.dims == 2
             && !s.cube
             && !s.crossbar
-            && s.compare.is_none()
-            && (s.env == gl::MODULATE || s.env == gl::REPLACE)
-            && (s.base == gl::RGBA || s.base == gl::RGB)
+            && (color || depth_blend(s))
             && edge(s.wrap[0])
             && edge(s.wrap[1])
     }
@@ -79,7 +103,7 @@ impl<'a> FusedSpan<'a> {
     /// caller checks the rest of the span's state).
     /// `planes` must hold the 1/w plane and the planes of the `nv` varyings (the first
     /// `nflat` flat), with `to + 4 <= nv`; `fy` is the row's y relative to the planes' origin.
-    #[inline]
+    #[inline(always)]
     pub fn new(
         s: &'a Sampler,
         to: usize,
@@ -94,22 +118,27 @@ impl<'a> FusedSpan<'a> {
             gl::CLAMP_TO_EDGE => Some(false),
             _ => None,
         };
-        if cfg!(not(target_arch = "x86_64"))
-            || s.dims != 2
-            || s.cube
-            || s.crossbar
-            || s.compare.is_some()
-            || !matches!(s.env, gl::MODULATE | gl::REPLACE)
-            || !matches!(s.base, gl::RGBA | gl::RGB)
-        {
+        if cfg!(not(target_arch = "x86_64")) || s.dims != 2 || s.cube || s.crossbar {
             return None;
         }
+        let (env, depth) = match (s.compare, s.env, s.base) {
+            (None, gl::MODULATE, gl::RGBA | gl::RGB) => (Env::Modulate, None),
+            (None, gl::REPLACE, gl::RGBA | gl::RGB) => (Env::Replace, None),
+            (Some(func), _, _) if depth_blend(s) => (Env::BlendLum, Some(func)),
+            _ => return None,
+        };
         let rep = [rep(s.wrap[0])?, rep(s.wrap[1])?];
         let vars = [0, 1, 2, 3, to, to + 1, to + 3];
+        let c = s.env_color;
+        let rj = to.checked_add(2)?;
         Some(FusedSpan {
             s,
             rep,
-            replace: s.env == gl::REPLACE,
+            env,
+            depth,
+            cc: [c.x, c.y, c.z, 0.0, c.x, c.y, c.z, 0.0],
+            rpl: r_plane(planes, rj, fy)?,
+            rdiv: rj >= nflat,
             rgb: s.base == gl::RGB,
             pl: row_planes(planes, to, fy)?,
             planes,
@@ -117,7 +146,12 @@ impl<'a> FusedSpan<'a> {
             div: vars.map(|j| j >= nflat),
             cache: [(0, View::Unknown); 2],
             ox,
-            lp: lambda_planes(planes, to, qy),
+            // (λ's planes are read on the LOD route only.)
+            lp: if s.route == Route::Lod {
+                lambda_planes(planes, to, qy)
+            } else {
+                [[0.0; 4]; 3]
+            },
         })
     }
 
@@ -128,6 +162,11 @@ impl<'a> FusedSpan<'a> {
         // (`new` found the planes present.)
         if let Some(pl) = row_planes(self.planes, self.to, fy) {
             self.pl = pl;
+        }
+        if self.depth.is_some() {
+            if let Some(rp) = r_plane(self.planes, self.to + 2, fy) {
+                self.rpl = rp;
+            }
         }
         if self.s.route == Route::Lod {
             self.lp = lambda_planes(self.planes, self.to, qy);
@@ -232,29 +271,55 @@ impl<'a> FusedSpan<'a> {
         let rq = _mm256_div_ps(one, q);
         let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
         let (ss, tt) = (_mm256_mul_ps(s, qi), _mm256_mul_ps(t, qi));
-        let tex = match self.texels(ss, tt, lam, m) {
+        // r (varying `to + 2`) and r/q, read by the depth comparison only (as in
+        // `texels_lanes`).
+        let r = if self.depth.is_some() {
+            let v = plane(self.rpl);
+            if self.rdiv {
+                _mm256_mul_ps(v, inv)
+            } else {
+                v
+            }
+        } else {
+            _mm256_setzero_ps()
+        };
+        let rr = _mm256_mul_ps(r, qi);
+        let tex = match self.depth {
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            Some(func) => unsafe { self.depth_texels(func, ss, tt, rr) },
+            None => self.texels(ss, tt, lam, m),
+        };
+        let tex = match tex {
             Some(p) => p,
             None => {
-                // Any other case: `texels_lanes` on the same coordinates (r is read only by
-                // the depth comparison, which this route excludes).
+                // Any other case: `texels_lanes` on the same coordinates.
                 let a = |v: __m256| std::mem::transmute::<__m256, [f32; LANES]>(v);
                 let (sa, ta, qa) = (a(s), a(t), a(q));
-                let ra = [0.0f32; LANES];
+                let ra = a(r);
                 let tl = self.s.texels_lanes([&sa, &ta, &ra, &qa], lam, m);
                 std::array::from_fn(|k| _mm256_loadu2_m128(tl[k + 4].as_ptr(), tl[k].as_ptr()))
             }
         };
-        // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha),
-        // clamped to [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
+        // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha;
+        // BLEND of LUMINANCE L = t[0]: cfr·(1 - L) + cc·L, the fragment's alpha), clamped to
+        // [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
         let cf = pairs(&col);
         let zero = _mm256_setzero_ps();
+        // SAFETY: the load reads the eight floats of `cc`.
+        let cc = unsafe { _mm256_loadu_ps(self.cc.as_ptr()) };
         std::array::from_fn(|k| {
-            let c = if self.replace {
-                tex[k]
-            } else {
-                _mm256_mul_ps(cf[k], tex[k])
+            let c = match self.env {
+                Env::Replace => tex[k],
+                Env::Modulate => _mm256_mul_ps(cf[k], tex[k]),
+                Env::BlendLum => {
+                    let l = _mm256_permute_ps::<0x00>(tex[k]);
+                    _mm256_add_ps(
+                        _mm256_mul_ps(cf[k], _mm256_sub_ps(one, l)),
+                        _mm256_mul_ps(cc, l),
+                    )
+                }
             };
-            let c = if self.rgb {
+            let c = if self.rgb || self.env == Env::BlendLum {
                 _mm256_blend_ps::<0x88>(c, cf[k])
             } else {
                 c
@@ -408,6 +473,58 @@ impl<'a> FusedSpan<'a> {
         }))
     }
 
+    /// The depth comparison's texels (pixel-major pairs, L in every channel) of the group at
+    /// s/q `ss`, t/q `tt`, r/q `rr`, on the base level (the route's depth state is NEAREST
+    /// without mipmaps): `pass_level`'s NEAREST then the comparison of each lane's texel
+    /// (`dense_depth8`), (0, 0, 0, 0) for a missing level, None for a level that is not
+    /// [`dense_level`]. Out of line, so that [`FusedSpan::level`]'s colour kernels stay
+    /// inlined as they were.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn depth_texels(
+        &mut self,
+        func: u32,
+        ss: std::arch::x86_64::__m256,
+        tt: std::arch::x86_64::__m256,
+        rr: std::arch::x86_64::__m256,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        let level = self.s.base_level;
+        let slot = &mut self.cache[(level & 1) as usize];
+        let view = match *slot {
+            (n, v) if n == level && !matches!(v, View::Unknown) => v,
+            _ => {
+                let sampler: &'a Sampler = self.s;
+                let v = match sampler.obj.face_level(0, level) {
+                    None => View::Missing,
+                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
+                        View::Dense(&v.texels, v.width, v.height)
+                    }
+                    Some(_) => View::Sparse,
+                };
+                *slot = (level, v);
+                v
+            }
+        };
+        let (dt, w, h) = match view {
+            View::Dense(dt, w, h) => (dt, w, h),
+            View::Missing => return Some([_mm256_setzero_ps(); 4]),
+            View::Sparse | View::Unknown => return None,
+        };
+        let km = dt.len().checked_sub(1)?;
+        let d = match self.rep {
+            [false, false] => nearest::<false, false>(dt, km, w, h, ss, tt),
+            [false, true] => nearest::<false, true>(dt, km, w, h, ss, tt),
+            [true, false] => nearest::<true, false>(dt, km, w, h, ss, tt),
+            [true, true] => nearest::<true, true>(dt, km, w, h, ss, tt),
+        };
+        Some(compare_pairs(func, d, rr))
+    }
+
     /// One level's NEAREST or LINEAR for the eight lanes (pixel-major pairs), as
     /// `pass_level` computes it: a missing level gives (0, 0, 0, 0); a level that is not
     /// [`dense_level`] gives None.
@@ -455,6 +572,67 @@ impl<'a> FusedSpan<'a> {
             (true, [true, false]) => bilinear::<true, false>(dt, km, w, h, ss, tt),
             (true, [true, true]) => bilinear::<true, true>(dt, km, w, h, ss, tt),
         })
+    }
+}
+
+/// Is sampler `s` a depth texture's comparison the route covers: NEAREST on the base level
+/// (no mipmaps), DEPTH_TEXTURE_MODE LUMINANCE, the BLEND environment?
+#[inline(always)]
+fn depth_blend(s: &Sampler) -> bool {
+    s.compare.is_some()
+        && s.route == super::Route::Nearest
+        && s.depth_mode == gl::LUMINANCE
+        && s.env == gl::BLEND
+        && crate::texture::is_depth(s.base)
+}
+
+/// `lanes::varyings`' plane of varying `j` at row `fy` (constant, x step, y term `dy·fy`);
+/// None when `planes` does not hold it.
+#[inline(always)]
+fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
+    let k = j.checked_mul(3)?.checked_add(3)?;
+    let p = planes.get(k..k.checked_add(3)?)?;
+    Some([p[0], p[1], p[2] * fy])
+}
+
+/// `dense_depth8`'s comparison on pixel-major pairs: the depth `d[k]`'s channel 0 of lanes k
+/// and k + 4 against r/q `rr` clamped to [0, 1] (`minps(1, maxps(0, r))`), under `func`'s
+/// predicate; each lane's result 1 or +0 in its four channels (the environment reads
+/// channel 0, the LUMINANCE L).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn compare_pairs(
+    func: u32,
+    d: [std::arch::x86_64::__m256; 4],
+    rr: std::arch::x86_64::__m256,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let one = _mm256_set1_ps(1.0);
+    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), rr));
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn each<const P: i32>(
+        d: [std::arch::x86_64::__m256; 4],
+        r: std::arch::x86_64::__m256,
+    ) -> [std::arch::x86_64::__m256; 4] {
+        use std::arch::x86_64::*;
+        let one = _mm256_set1_ps(1.0);
+        std::array::from_fn(|k| {
+            let dk = _mm256_permute_ps::<0x00>(d[k]);
+            let rk = _mm256_permutevar8x32_ps(r, pair_index(k));
+            _mm256_and_ps(_mm256_cmp_ps::<P>(rk, dk), one)
+        })
+    }
+    match func {
+        gl::LEQUAL => each::<_CMP_LE_OQ>(d, r),
+        gl::GEQUAL => each::<_CMP_GE_OQ>(d, r),
+        gl::LESS => each::<_CMP_LT_OQ>(d, r),
+        gl::GREATER => each::<_CMP_GT_OQ>(d, r),
+        gl::EQUAL => each::<_CMP_EQ_OQ>(d, r),
+        gl::NOTEQUAL => each::<_CMP_NEQ_UQ>(d, r),
+        gl::ALWAYS => [one; 4],
+        _ => [_mm256_setzero_ps(); 4],
     }
 }
 
