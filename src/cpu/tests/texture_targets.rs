@@ -642,3 +642,30 @@ fn dense_target_kernels_are_the_scalar_texel_bit_for_bit() {
         "{checked:?}"
     );
 }
+
+/// The scalar LINEAR's 3D in-image route (`linear_on::<true>`: the eight texels read directly,
+/// no per-texel border or comparison choice) against its `fetch` route (`linear_on::<false>`)
+/// on random 3D textures (every wrap mode, power-of-two or not, depth ones with and without
+/// comparison), every level and awkward coordinates: the same bits (or both NaN).
+#[test]
+fn scalar_linear_3d_in_image_is_the_fetch_route_bit_for_bit() {
+    let mut next = lcg(113);
+    let mut fast = 0usize;
+    for round in 0..2000 {
+        let depth = round % 5 == 4;
+        let obj = random_object(gl::TEXTURE_3D, depth, &mut next);
+        let s = sampler_on(gl::TEXTURE_3D, obj, gl::MODULATE, Default::default());
+        for _ in 0..40 {
+            let (cs, ct, cr) = (coord(&mut next), coord(&mut next), coord(&mut next));
+            let level = (next() % 6) as i32 - 1;
+            let got = s.linear_on::<true>(0, level, cs, ct, cr);
+            let want = s.linear_on::<false>(0, level, cs, ct, cr);
+            assert!(
+                same(got, want),
+                "round {round} level {level}: {got:?} vs {want:?} ({cs}, {ct}, {cr})"
+            );
+            fast += usize::from(cs.is_finite() && !depth);
+        }
+    }
+    assert!(fast > 20_000, "{fast}");
+}
