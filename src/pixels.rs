@@ -277,6 +277,57 @@ impl BitLayout {
         };
         byte & mask != 0
     }
+
+    /// Bits (`i`, `j`) for each `i` of `cols`, appended to `out` as 0 or 1: what [`Self::bit`]
+    /// gives for each, with the row's start found once.
+    pub fn push_row(&self, data: &[u8], cols: &[usize], j: usize, out: &mut Vec<u8>) {
+        // A row starting past the data (or whose start overflows) has no bits set, as `bit`
+        // finds no byte for any of its columns.
+        let row = j
+            .checked_mul(self.stride)
+            .and_then(|r| r.checked_add(self.offset))
+            .and_then(|r| data.get(r..))
+            .unwrap_or(&[]);
+        let lsb = self.lsb_first;
+        out.extend(cols.iter().map(|&i| {
+            let b = self.skip.wrapping_add(i);
+            let byte = row.get(b / 8).copied().unwrap_or(0);
+            let k = (b % 8) as u32;
+            let bit = if lsb { byte >> k } else { byte >> (7 - k) };
+            bit & 1
+        }));
+    }
+
+    /// Bits (`i`, `j`) for `i` in `i0..i0 + n`, appended to `out` as 0 or 1: what
+    /// [`Self::push_row`] gives for those columns, a byte of the row at a time.
+    pub fn push_run(&self, data: &[u8], i0: usize, n: usize, j: usize, out: &mut Vec<u8>) {
+        let row = j
+            .checked_mul(self.stride)
+            .and_then(|r| r.checked_add(self.offset))
+            .and_then(|r| data.get(r..))
+            .unwrap_or(&[]);
+        // Byte k of `byte · ONES & select` keeps the byte's bit for the row's bit 8·(b / 8) + k
+        // (bit k LSB first, bit 7 − k MSB first); + 0x7F carries a kept bit (at most 0x80)
+        // into bit 7 of its byte without touching the next, which >> 7 makes 0 or 1.
+        const ONES: u64 = 0x0101_0101_0101_0101;
+        let select: u64 = if self.lsb_first {
+            0x8040_2010_0804_0201
+        } else {
+            0x0102_0408_1020_4080
+        };
+        let mut b = self.skip.wrapping_add(i0);
+        let mut left = n;
+        while left > 0 {
+            let byte = u64::from(row.get(b / 8).copied().unwrap_or(0));
+            let kept = byte.wrapping_mul(ONES) & select;
+            let bits = ((kept + 0x7F7F_7F7F_7F7F_7F7F) >> 7) & ONES;
+            let k0 = b % 8;
+            let take = (8 - k0).min(left);
+            out.extend_from_slice(bits.to_le_bytes().get(k0..k0 + take).unwrap_or(&[]));
+            b = b.wrapping_add(take);
+            left -= take;
+        }
+    }
 }
 
 impl PixelModes {
@@ -934,6 +985,46 @@ pub type SharedMaps = Arc<PixelMaps>;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `push_row` appends what `bit` gives for each column: random layouts (either bit order,
+    /// skips, strides), columns in any order and past the row, rows past the data.
+    #[test]
+    fn push_row_is_bit_for_each_column() {
+        let mut seed = 17u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) as usize
+        };
+        for case in 0..3000 {
+            let data: Vec<u8> = (0..next() % 200).map(|_| next() as u8).collect();
+            let l = BitLayout {
+                offset: next() % 40,
+                stride: 1 + next() % 12,
+                skip: next() % 30,
+                lsb_first: next() % 2 == 1,
+                need: 0,
+            };
+            let cols: Vec<usize> = match case % 2 {
+                0 => (next() % 9..next() % 120).collect(),
+                _ => (0..next() % 60).map(|_| next() % 150).collect(),
+            };
+            let j = next() % 30;
+            let mut out = vec![7u8];
+            l.push_row(&data, &cols, j, &mut out);
+            let want: Vec<u8> = std::iter::once(7)
+                .chain(cols.iter().map(|&i| u8::from(l.bit(&data, i, j))))
+                .collect();
+            assert_eq!(out, want, "case {case}: {l:?} row {j}");
+            // The same columns as a run, where they are one.
+            if let (Some(&i0), true) = (cols.first(), case % 2 == 0) {
+                let mut run = vec![7u8];
+                l.push_run(&data, i0, cols.len(), j, &mut run);
+                assert_eq!(run, want, "case {case}: run {l:?} row {j}");
+            }
+        }
+    }
 
     #[test]
     fn format_and_type_errors_follow_gl_2_1_in_mesas_order() {

@@ -302,7 +302,14 @@ impl Context {
             let y = (r.y + EPSILON - yorig).floor() as i32;
             let (cols, rows) = spans(&self.state, x, y, w, h, [1.0, 1.0]);
             let (gi, gj, cols, rows) = compact(cols, rows);
-            let Some(bits) = gather(&gi, &gj, |i, j| u8::from(layout.bit(data, i, j))) else {
+            // The columns are one run (zoom 1: always), taken a byte at a time, or any others.
+            let run = gi
+                .first()
+                .filter(|_| gi.windows(2).all(|p| p[0].checked_add(1) == Some(p[1])));
+            let Some(bits) = gather_bits(&gi, &gj, |j, out| match run {
+                Some(&i0) => layout.push_run(data, i0, gi.len(), j, out),
+                None => layout.push_row(data, &gi, j, out),
+            }) else {
                 return self.error(gl::OUT_OF_MEMORY);
             };
             let d = PixelDraw {
@@ -659,9 +666,111 @@ fn gather<T>(gi: &[usize], gj: &[usize], mut f: impl FnMut(usize, usize) -> T) -
     Some(out)
 }
 
+/// What [`gather`] gives for `f(i, j) = bit (i, j)`, a row at a time: `row(j, out)` appends
+/// row `j`'s values for every column of `gi` to `out`.
+fn gather_bits(
+    gi: &[usize],
+    gj: &[usize],
+    mut row: impl FnMut(usize, &mut Vec<u8>),
+) -> Option<Vec<u8>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(gi.len().checked_mul(gj.len())?)
+        .ok()?;
+    for &j in gj {
+        row(j, &mut out);
+    }
+    Some(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Plain bitmaps (only the colour write applies: `put_row`'s bits, a row at a time) give the
+    /// pixels of the same bitmaps through the per-fragment route (`FragCtx::pixel`, taken when a
+    /// depth test ALWAYS without depth writes makes the draw not plain): random glyphs under
+    /// random unpack modes, positions across tile edges and off the window, colours and colour
+    /// masks.
+    #[test]
+    fn plain_bitmap_rows_are_the_fragment_route() {
+        let mut seed = 23u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 33
+        };
+        let (w, h) = (90usize, 75usize);
+        let mut drew = 0;
+        for case in 0..150 {
+            let mut ctxs: Vec<Context> = (0..2)
+                .map(|_| match Context::new(w as u32, h as u32) {
+                    Ok(c) => c,
+                    Err(e) => panic!("{e}"),
+                })
+                .collect();
+            let (lsb, skip_px, skip_rows) = (next() % 2 == 1, next() % 11, next() % 3);
+            let align = [1, 2, 4, 8][(next() % 4) as usize];
+            let row_length = if next() % 3 == 0 { 45 } else { 0 };
+            let clear =
+                [next() % 256, next() % 256, next() % 256, next() % 256].map(|v| v as f32 / 255.0);
+            let mask = [0, 1, 2, 3].map(|_| next() % 5 != 0);
+            let draws: Vec<_> = (0..4)
+                .map(|_| {
+                    let (bw, bh) = (1 + next() as i32 % 40, 1 + next() as i32 % 40);
+                    let pos = [
+                        next() as f32 % 130.0 - 30.0 + 0.5 * (next() % 2) as f32,
+                        next() as f32 % 110.0 - 30.0,
+                    ];
+                    let orig = [(next() % 5) as f32 - 2.0, (next() % 5) as f32 - 2.0];
+                    let color = [0, 1, 2, 3].map(|_| (next() % 1001) as f32 / 1000.0);
+                    let data: Vec<u8> = (0..4000).map(|_| next() as u8).collect();
+                    (bw, bh, pos, orig, color, data)
+                })
+                .collect();
+            let mut images = Vec::new();
+            for (k, c) in ctxs.iter_mut().enumerate() {
+                c.clear_color(clear[0], clear[1], clear[2], clear[3]);
+                c.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+                c.pixel_storei(gl::UNPACK_LSB_FIRST, i32::from(lsb));
+                c.pixel_storei(gl::UNPACK_SKIP_PIXELS, skip_px as i32);
+                c.pixel_storei(gl::UNPACK_SKIP_ROWS, skip_rows as i32);
+                c.pixel_storei(gl::UNPACK_ALIGNMENT, align);
+                c.pixel_storei(gl::UNPACK_ROW_LENGTH, row_length);
+                c.color_mask(mask[0], mask[1], mask[2], mask[3]);
+                if k == 1 {
+                    c.enable(gl::DEPTH_TEST);
+                    c.depth_func(gl::ALWAYS);
+                    c.depth_mask(false);
+                }
+                for (bw, bh, pos, orig, color, data) in &draws {
+                    c.color4f(color[0], color[1], color[2], color[3]);
+                    c.window_pos2f(pos[0], pos[1]);
+                    c.bitmap(*bw, *bh, orig[0], orig[1], 3.0, 1.0, Some(data));
+                }
+                let mut out = vec![0u8; w * h * 4];
+                c.read_pixels(
+                    0,
+                    0,
+                    w as i32,
+                    h as i32,
+                    gl::RGBA,
+                    gl::UNSIGNED_BYTE,
+                    &mut out,
+                );
+                assert_eq!(c.get_error(), gl::NO_ERROR, "case {case}");
+                images.push(out);
+            }
+            assert_eq!(images[0], images[1], "case {case}");
+            let cleared = images[0].chunks(4).filter(|p| {
+                p.iter()
+                    .zip(clear)
+                    .all(|(&b, c)| b == crate::cpu::framebuffer::unorm8(c))
+            });
+            drew += usize::from(cleared.count() < w * h);
+        }
+        assert!(drew > 100, "{drew} cases drew something");
+    }
 
     /// `compact_span` gives each covered pixel the position of its group among the sorted
     /// distinct groups, for runs that rise one by one (its shortcut) and any others.

@@ -325,6 +325,7 @@ impl Framebuffer {
 
     /// Colour of colour buffer `buf`, depth and stencil of pixel (x, y), or `None` outside the
     /// framebuffer.
+    #[inline]
     pub fn pixel_in(&self, buf: ColorBuf, x: i64, y: i64) -> Option<([u8; 4], u32, u8)> {
         if x < 0 || y < 0 || x >= i64::from(self.width) || y >= i64::from(self.height) {
             return None;

@@ -383,6 +383,9 @@ impl Renderer {
             && shared.secondary.is_none()
             && !fctx.count
             && !fctx.samples;
+        // A bitmap fragment's colour in the buffer's bytes (`FragCtx::pixel`'s write of it).
+        let c = shared.shaded;
+        let bit_px = [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)];
         let stencil_mask = (state.stencil_writemask & 0xFF) as u8;
         let counting = self.counting;
         let core = self.core();
@@ -447,7 +450,15 @@ impl Renderer {
                     // Only the colour write applies: a whole row at a time.
                     if let Some(cols) = d.cols.groups.get(cols.clone()) {
                         let first = base + (tx0 - ox) as usize;
-                        if put_row(&mut bufs, first, cols, row, d.groups, fctx.color_mask) {
+                        if put_row(
+                            &mut bufs,
+                            first,
+                            cols,
+                            row,
+                            d.groups,
+                            fctx.color_mask,
+                            bit_px,
+                        ) {
                             continue;
                         }
                     }
@@ -516,8 +527,9 @@ fn put(bufs: &mut TileBufs, i: usize, px: [u8; 4], mask: [bool; 4]) {
 
 /// The colour groups of row `row` (the index of its first group) that `cols` names, as the
 /// fragments at tile indices `first..first + cols.len()`, when nothing but the colour write
-/// applies to them (`plain`): what [`fragment`] does to each, a row at a time. False, with
-/// nothing written, for groups that are not colours.
+/// applies to them (`plain`): what [`fragment`] does to each, a row at a time; a bitmap's set
+/// bits as `bit_px` (the shaded raster colour's bytes). False, with nothing written, for groups
+/// that are neither colours nor bits.
 fn put_row(
     bufs: &mut TileBufs,
     first: usize,
@@ -525,6 +537,7 @@ fn put_row(
     row: usize,
     groups: Groups,
     mask: [bool; 4],
+    bit_px: [u8; 4],
 ) -> bool {
     let end = first + cols.len();
     let second = bufs
@@ -572,6 +585,18 @@ fn put_row(
                 for (d, &gi) in dst.iter_mut().zip(cols) {
                     if let Some(&px) = b.get(gi as usize) {
                         store(d, px);
+                    }
+                }
+            }
+        }
+        // Plain: `FragCtx::pixel` is the masked write of the shaded colour (no depth test,
+        // no count), for each set bit.
+        Groups::Bits(b) => {
+            let Some(b) = b.get(row..) else { return true };
+            for dst in targets {
+                for (d, &gi) in dst.iter_mut().zip(cols) {
+                    if b.get(gi as usize).is_some_and(|&v| v != 0) {
+                        store(d, bit_px);
                     }
                 }
             }
