@@ -1294,8 +1294,8 @@ impl FragCtx<'_> {
                 let depth = self
                     .depth_test
                     .then_some((self.depth_func, self.depth_mask));
-                // SAFETY: `AVX2` is true only in `plain_rows_avx2` and `tests_rows_avx2`,
-                // which run where the CPU has AVX2.
+                // SAFETY: `AVX2` is true only in `plain_rows_avx2`, `tests_rows_avx2` and
+                // `fused_tex_rows`, which run where the CPU has AVX2.
                 unsafe { ol::avx2::stencil_depth(side, depth, st, dp, zrow, dz, fx0, m) }
             }
             Some(side) => {
@@ -1307,8 +1307,8 @@ impl FragCtx<'_> {
             }
             #[cfg(target_arch = "x86_64")]
             None if AVX2 && self.depth_test => {
-                // SAFETY: `AVX2` is true only in `plain_rows_avx2` and `tests_rows_avx2`,
-                // which run where the CPU has AVX2.
+                // SAFETY: `AVX2` is true only in `plain_rows_avx2`, `tests_rows_avx2` and
+                // `fused_tex_rows`, which run where the CPU has AVX2.
                 unsafe {
                     ol::avx2::depth_test(self.depth_func, self.depth_mask, dp, zrow, dz, fx0, m)
                 }
@@ -1354,8 +1354,9 @@ impl FragCtx<'_> {
     ) {
         use super::lanes::unorm8_lanes;
         use super::oplanes as ol;
-        // The eight-lane kernels where `AVX2` (true only in `plain_rows_avx2`, which runs where
-        // the CPU has AVX2: the SAFETY of each call), else the SSE2 ones.
+        // The eight-lane kernels where `AVX2` (true only in `plain_rows_avx2` and
+        // `fused_tex_rows`, which run where the CPU has AVX2: the SAFETY of each call), else
+        // the SSE2 ones.
         macro_rules! k {
             ($f:ident($($arg:expr),* $(,)?)) => {{
                 #[cfg(target_arch = "x86_64")]

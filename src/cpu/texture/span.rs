@@ -493,23 +493,7 @@ impl<'a> FusedSpan<'a> {
         rr: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let level = self.s.base_level;
-        let slot = &mut self.cache[(level & 1) as usize];
-        let view = match *slot {
-            (n, v) if n == level && !matches!(v, View::Unknown) => v,
-            _ => {
-                let sampler: &'a Sampler = self.s;
-                let v = match sampler.obj.face_level(0, level) {
-                    None => View::Missing,
-                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
-                        View::Dense(&v.texels, v.width, v.height)
-                    }
-                    Some(_) => View::Sparse,
-                };
-                *slot = (level, v);
-                v
-            }
-        };
+        let view = self.view(self.s.base_level);
         let (dt, w, h) = match view {
             View::Dense(dt, w, h) => (dt, w, h),
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
@@ -523,6 +507,29 @@ impl<'a> FusedSpan<'a> {
             [true, true] => nearest::<true, true>(dt, km, w, h, ss, tt),
         };
         Some(compare_pairs(func, d, rr))
+    }
+
+    /// Level `level` as the route reads it, from the cache or looked up (and cached). Two
+    /// cache slots by parity: a trilinear group's two levels keep one each.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn view(&mut self, level: i32) -> View<'a> {
+        let slot = &mut self.cache[(level & 1) as usize];
+        match *slot {
+            (n, v) if n == level && !matches!(v, View::Unknown) => v,
+            _ => {
+                let sampler: &'a Sampler = self.s;
+                let v = match sampler.obj.face_level(0, level) {
+                    None => View::Missing,
+                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
+                        View::Dense(&v.texels, v.width, v.height)
+                    }
+                    Some(_) => View::Sparse,
+                };
+                *slot = (level, v);
+                v
+            }
+        }
     }
 
     /// One level's NEAREST or LINEAR for the eight lanes (pixel-major pairs), as
@@ -539,23 +546,7 @@ impl<'a> FusedSpan<'a> {
         tt: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        // Two cache slots by parity: a trilinear group's two levels keep one each.
-        let slot = &mut self.cache[(level & 1) as usize];
-        let view = match *slot {
-            (n, v) if n == level && !matches!(v, View::Unknown) => v,
-            _ => {
-                let sampler: &'a Sampler = self.s;
-                let v = match sampler.obj.face_level(0, level) {
-                    None => View::Missing,
-                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
-                        View::Dense(&v.texels, v.width, v.height)
-                    }
-                    Some(_) => View::Sparse,
-                };
-                *slot = (level, v);
-                v
-            }
-        };
+        let view = self.view(level);
         let (dt, w, h) = match view {
             View::Dense(dt, w, h) => (dt, w, h),
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
