@@ -79,6 +79,19 @@ struct FusedArgs {
     qy: f32,
 }
 
+/// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
+/// (`zrow`, `dz`), its first lane's x offset `fx0` and tile index `i0`, its lanes `m`, and
+/// whether the span writes colour.
+struct TexGroup<'a> {
+    side: Option<&'a super::fragops::StencilSide>,
+    zrow: f32,
+    dz: f32,
+    fx0: i32,
+    i0: usize,
+    m: u8,
+    writes_color: bool,
+}
+
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
 /// `tx` with coordinates at varying `to`): each covered group from the planes to the store.
 /// False, with nothing written, when the sampler's state is not the route's. Out of line, so
@@ -1224,47 +1237,9 @@ impl FragCtx<'_> {
     }
 
     /// The stencil and depth tests of a group (§4.1.5, §4.1.6) and their writes, for
-    /// `ops_rows`'s routes: fragment k of the group has z = `zrow + dz·fx[k]`; returns the
-    /// survivors of `m`, counted for an occlusion query.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn tests_group(
-        &self,
-        side: Option<&super::fragops::StencilSide>,
-        bufs: &mut TileBufs,
-        zrow: f32,
-        dz: f32,
-        fx: &[f32; LANES],
-        i0: usize,
-        m: u8,
-    ) -> u8 {
-        use super::lanes::{depth_lanes, lin_lanes};
-        use super::oplanes as ol;
-        let d = if self.depth_test {
-            depth_lanes(lin_lanes(zrow, dz, fx))
-        } else {
-            [0; LANES]
-        };
-        let dp = bufs.depth.get_mut(i0..).unwrap_or_default();
-        let m = match side {
-            Some(side) => {
-                let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
-                let depth = self
-                    .depth_test
-                    .then_some((self.depth_func, self.depth_mask));
-                ol::stencil_depth(side, depth, st, dp, d, m)
-            }
-            None if self.depth_test => ol::depth_test(self.depth_func, self.depth_mask, dp, d, m),
-            None => m,
-        };
-        if self.samples {
-            bufs.samples += u64::from(m.count_ones());
-        }
-        m
-    }
-
-    /// `tests_group` of the group whose first lane is at x offset `fx0`, with the eight-lane
-    /// AVX2 depth test (`oplanes::avx2::depth_test`) where `AVX2` and no stencil test.
+    /// `ops_rows`'s routes: fragment k of the group, whose first lane is at x offset `fx0`,
+    /// has z = `zrow + dz·(fx0 + k)`; returns the survivors of `m`, counted for an occlusion
+    /// query. The eight-lane AVX2 kernels (`oplanes::avx2`) where `AVX2`.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn tests_group_on<const AVX2: bool>(
@@ -1323,23 +1298,8 @@ impl FragCtx<'_> {
     }
 
     /// The fog (§3.10), conversion to unorm8 and colour write (`write_group`) of a group's
-    /// survivors `m`, clamped colour `rgb`, `a`, fog coordinates `coord`, at tile index `i0`.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn finish_group(
-        &self,
-        ops: &Ops,
-        bufs: &mut TileBufs,
-        rgb: &mut [[f32; LANES]; 3],
-        a: [f32; LANES],
-        coord: [f32; LANES],
-        i0: usize,
-        m: u8,
-    ) {
-        self.finish_group_on::<false>(ops, bufs, rgb, a, coord, i0, m);
-    }
-
-    /// `finish_group` with the eight-lane AVX2 kernels (`oplanes::avx2`) where `AVX2`.
+    /// survivors `m`, clamped colour `rgb`, `a`, fog coordinates `coord`, at tile index `i0`;
+    /// the eight-lane AVX2 kernels (`oplanes::avx2`) where `AVX2`.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn finish_group_on<const AVX2: bool>(
@@ -1718,7 +1678,7 @@ impl FragCtx<'_> {
     /// `ops_rows`'s textured rows (`tex_span` each) for a primitive in the fused route's state
     /// ([`FusedSpan`], sampler `tx` with coordinates at varying `to`): each group's clamped
     /// colours from [`FusedSpan::channels`] (the bits of `oplanes::clamp01` of
-    /// `color_lanes`), then the alpha test, the stencil and depth tests and `finish_group` as
+    /// `color_lanes`), then the alpha test, the stencil and depth tests and `finish_group_on` as
     /// `tex_span_in`, on the eight-lane AVX2 kernels. The route is set up once for the rows
     /// (its levels looked up once). False, with nothing done, when the sampler's state is not
     /// the route's. Out of line, so that `tex_span`'s code stays as it was.
@@ -1742,7 +1702,6 @@ impl FragCtx<'_> {
         to: usize,
         rows: &[[i32; 3]],
     ) -> bool {
-        use super::oplanes as ol;
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
@@ -1770,7 +1729,7 @@ impl FragCtx<'_> {
             fs.row(fy, ((y & !1) - oy) as f32);
             let mut c = 0;
             while c < n {
-                let mut m = ((live >> c) & 0xFF) as u8;
+                let m = ((live >> c) & 0xFF) as u8;
                 let i0 = base + c;
                 let fx0 = x0 - ox + c as i32;
                 let gx = x0 + c as i32;
@@ -1780,19 +1739,17 @@ impl FragCtx<'_> {
                 }
                 // SAFETY: the CPU has AVX2 (the caller's promise).
                 let [r, g, b, al] = unsafe { fs.channels(gx, m) };
-                let mut rgb = [r, g, b];
-                if let Some((func, reference)) = ops.alpha {
-                    m &= ol::alpha_test(func, reference, al);
-                    if m == 0 {
-                        continue;
-                    }
-                }
-                m = self.tests_group_on::<true>(side, bufs, zrow, dz, fx0, i0, m);
-                if m == 0 || !writes_color {
-                    continue;
-                }
+                let grp = TexGroup {
+                    side,
+                    zrow,
+                    dz,
+                    fx0,
+                    i0,
+                    m,
+                    writes_color,
+                };
                 // The fog coordinate alone of the varyings (each is computed on its own).
-                let coord = match fog_at {
+                let coord = || match fog_at {
                     Some(o) => {
                         let mut v = [[0.0f32; LANES]; MAXV];
                         let vs = v.get_mut(..=o).unwrap_or_default();
@@ -1801,7 +1758,7 @@ impl FragCtx<'_> {
                     }
                     None => [0.0; LANES],
                 };
-                self.finish_group_on::<true>(ops, bufs, &mut rgb, al, coord, i0, m);
+                self.tex_group_rest::<true>(ops, bufs, &grp, [r, g, b], al, coord);
             }
         }
         true
@@ -1846,7 +1803,6 @@ impl FragCtx<'_> {
         n: usize,
         live: u64,
     ) {
-        use super::lanes::lane_x;
         use super::oplanes as ol;
         let ox = p.bbox[0];
         let nflat = if p.flags & F_FLAT != 0 {
@@ -1871,7 +1827,7 @@ impl FragCtx<'_> {
         let mut v = [[0.0f32; LANES]; MAXV];
         let mut c = 0;
         while c < n {
-            let mut m = ((live >> c) & 0xFF) as u8;
+            let m = ((live >> c) & 0xFF) as u8;
             let i0 = base + c;
             let fx0 = x0 - ox + c as i32;
             let gx = x0 + c as i32;
@@ -1892,25 +1848,53 @@ impl FragCtx<'_> {
                 }
             }
             let col = self.color_lanes(p, &v[..nv], m, &lam, on_lanes);
-            let mut rgb = [
+            let rgb = [
                 ol::clamp01(col[0]),
                 ol::clamp01(col[1]),
                 ol::clamp01(col[2]),
             ];
             let a = ol::clamp01(col[3]);
-            if let Some((func, reference)) = ops.alpha {
-                m &= ol::alpha_test(func, reference, a);
-                if m == 0 {
-                    continue;
-                }
-            }
-            m = self.tests_group(side, bufs, zrow, dz, &lane_x(fx0), i0, m);
-            if m == 0 || !writes_color {
-                continue;
-            }
-            let coord = fog_at.map_or([0.0; LANES], |o| v[o]);
-            self.finish_group(ops, bufs, &mut rgb, a, coord, i0, m);
+            let grp = TexGroup {
+                side,
+                zrow,
+                dz,
+                fx0,
+                i0,
+                m,
+                writes_color,
+            };
+            let coord = || fog_at.map_or([0.0; LANES], |o| v[o]);
+            self.tex_group_rest::<false>(ops, bufs, &grp, rgb, a, coord);
         }
+    }
+
+    /// A textured group after its clamped colours `rgb`, `a` (`tex_span_in`,
+    /// `fused_tex_rows`): the alpha test (§4.1.4), the stencil and depth tests
+    /// (`tests_group_on`), then fog and the colour write (`finish_group_on`) with the fog
+    /// coordinates `coord` gives, asked only for a group that reaches the write.
+    #[inline(always)]
+    fn tex_group_rest<const AVX2: bool>(
+        &self,
+        ops: &Ops,
+        bufs: &mut TileBufs,
+        g: &TexGroup,
+        mut rgb: [[f32; LANES]; 3],
+        a: [f32; LANES],
+        coord: impl FnOnce() -> [f32; LANES],
+    ) {
+        use super::oplanes as ol;
+        let mut m = g.m;
+        if let Some((func, reference)) = ops.alpha {
+            m &= ol::alpha_test(func, reference, a);
+            if m == 0 {
+                return;
+            }
+        }
+        m = self.tests_group_on::<AVX2>(g.side, bufs, g.zrow, g.dz, g.fx0, g.i0, m);
+        if m == 0 || !g.writes_color {
+            return;
+        }
+        self.finish_group_on::<AVX2>(ops, bufs, &mut rgb, a, coord(), g.i0, m);
     }
 
     /// The colour write of a group (`ops_rows`) to one colour buffer's row from the group's

@@ -1398,6 +1398,18 @@ pub(super) mod avx2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The eight stencil operations (§4.1.5).
+    const STENCIL_OPS: [u32; 8] = [
+        gl::KEEP,
+        gl::ZERO,
+        gl::REPLACE,
+        gl::INCR,
+        gl::DECR,
+        gl::INVERT,
+        gl::INCR_WRAP,
+        gl::DECR_WRAP,
+    ];
     use crate::cpu::fragops::{logic_op, BlendEval};
     use crate::cpu::framebuffer::unorm8;
     use crate::cpu::testgen::{Gen, COMPARE_FUNCS};
@@ -1547,16 +1559,7 @@ mod tests {
     fn depth_and_stencil_are_the_scalar_sequence() {
         let mut g = Gen(13);
         let funcs = COMPARE_FUNCS;
-        let ops = [
-            gl::KEEP,
-            gl::ZERO,
-            gl::REPLACE,
-            gl::INCR,
-            gl::DECR,
-            gl::INVERT,
-            gl::INCR_WRAP,
-            gl::DECR_WRAP,
-        ];
+        let ops = STENCIL_OPS;
         for _ in 0..4000 {
             let side = StencilSide {
                 func: funcs[(g.next() % 8) as usize],
@@ -1892,16 +1895,7 @@ mod tests {
             );
 
             // The stencil test and operations with the depth test of the plane.
-            let ops = [
-                gl::KEEP,
-                gl::ZERO,
-                gl::REPLACE,
-                gl::INCR,
-                gl::DECR,
-                gl::INVERT,
-                gl::INCR_WRAP,
-                gl::DECR_WRAP,
-            ];
+            let ops = STENCIL_OPS;
             let side = StencilSide {
                 func: g.pick(&COMPARE_FUNCS),
                 reference: g.byte(),
