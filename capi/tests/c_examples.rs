@@ -164,6 +164,12 @@ fn gaussian_follows_window_resize() {
             conn.resize(window, w, h);
             let size = format!(" {w}x{h}");
             p.wait_for(LIMIT, |l| l.ends_with(&size));
+            // That frame may have been drawn before the program handled the resize (the size
+            // is asked after drawing). A key sent now reaches it after the resize: the frame
+            // drawn after its answer is drawn at the new size.
+            conn.press(window, 'f');
+            p.wait_for(LIMIT, |l| l.starts_with("FLAT shading"));
+            p.wait_for(LIMIT, |l| l.ends_with(&size));
             let image = conn.read(window);
             assert_eq!((image.width, image.height), (w, h));
             shown.insert((gl, i as u32), image);

@@ -380,6 +380,44 @@ impl Connection {
         }
     }
 
+    /// Sends `window` a key press and release of `key` (an ASCII letter or digit), as a user
+    /// typing would, and waits for the server to have sent them on.
+    pub fn press(&self, window: c_ulong, key: char) {
+        let x = xlib();
+        let name = std::ffi::CString::new(key.to_string()).expect("a key without NUL");
+        // SAFETY: an open display, a window of it; the event is plain data filled in here.
+        unsafe {
+            let sym = (x.XStringToKeysym)(name.as_ptr());
+            let code = (x.XKeysymToKeycode)(self.0, sym);
+            assert!(code != 0, "no key code for {key:?}");
+            for (kind, mask) in [
+                (xlib::KeyPress, xlib::KeyPressMask),
+                (xlib::KeyRelease, xlib::KeyReleaseMask),
+            ] {
+                let mut e: xlib::XEvent = std::mem::zeroed();
+                e.key = xlib::XKeyEvent {
+                    type_: kind,
+                    serial: 0,
+                    send_event: xlib::True,
+                    display: self.0,
+                    window,
+                    root: (x.XDefaultRootWindow)(self.0),
+                    subwindow: 0,
+                    time: xlib::CurrentTime,
+                    x: 1,
+                    y: 1,
+                    x_root: 1,
+                    y_root: 1,
+                    state: 0,
+                    keycode: u32::from(code),
+                    same_screen: xlib::True,
+                };
+                (x.XSendEvent)(self.0, window, xlib::True, mask, &mut e);
+            }
+            (x.XSync)(self.0, xlib::False);
+        }
+    }
+
     /// Reads `drawable` back from the server (XGetImage): RGB, top row first.
     pub fn read(&self, drawable: c_ulong) -> Image {
         let x = xlib();
