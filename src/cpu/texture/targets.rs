@@ -758,35 +758,44 @@ impl Sampler {
         let zero = _mm256_setzero_ps();
         let (one, half) = (_mm256_set1_ps(1.0), _mm256_set1_ps(0.5));
         let used = |s: u32| c.src_rgb.contains(&s) || c.src_alpha.contains(&s);
-        let tex: C = match used(gl::TEXTURE) {
+        // The sources by reference (copied by value, each read moved four registers through
+        // the stack), an unused one as zeros.
+        let zeros: C = [zero; 4];
+        let tex_ch: C;
+        let tex = match used(gl::TEXTURE) {
             true => {
                 let ch = load8(|l| t[l]);
                 // `combine_texel` of the channel numbers 2..=5: each result channel is 0, 1
                 // or the number of the texel channel it reads.
                 let pick = self.combine_texel([2.0, 3.0, 4.0, 5.0]).to_array();
-                pick.map(|k| match k as usize {
+                tex_ch = pick.map(|k| match k as usize {
                     1 => one,
                     k @ 2..=5 => ch[k - 2],
                     _ => zero,
-                })
+                });
+                &tex_ch
             }
-            false => [zero; 4],
+            false => &zeros,
         };
         let prev = load8(|l| cf[l].to_array());
+        let prim_ch: C;
         let prim = match used(gl::PRIMARY_COLOR) {
-            true => load8(|l| prim[l].to_array()),
-            false => [zero; 4],
+            true => {
+                prim_ch = load8(|l| prim[l].to_array());
+                &prim_ch
+            }
+            false => &zeros,
         };
         let konst: C = self.env_color.to_array().map(|x| _mm256_set1_ps(x));
-        let src = |s: u32| -> C {
+        let src = |s: u32| -> &C {
             match s {
-                gl::CONSTANT => konst,
+                gl::CONSTANT => &konst,
                 gl::PRIMARY_COLOR => prim,
-                gl::PREVIOUS => prev,
+                gl::PREVIOUS => &prev,
                 gl::TEXTURE => tex,
                 // A TEXTUREn source (the crossbar) never reaches the lanes; an unknown source
                 // reads zero, as in `combine`.
-                _ => [zero; 4],
+                _ => &zeros,
             }
         };
         let minus = |x: __m256| _mm256_sub_ps(one, x);
