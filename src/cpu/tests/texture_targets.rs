@@ -330,6 +330,103 @@ fn combine_lanes_are_shade_bit_for_bit() {
     assert!(checked > 25_000, "{checked}");
 }
 
+/// COMBINE on lanes, the AVX2 route (channel registers, `combine8`) and the SSE2 one
+/// (`combine_lanes`), against the scalar `shade_texel` on awkward inputs: raw texels, previous
+/// and primary colours with NaN, infinities, negative, huge, tiny and above-one channels, every
+/// function, source (an unknown one too), operand and scale, every base format and depth texture
+/// mode; lanes outside the mask keep their colour's bits.
+#[test]
+fn combine_lanes_on_awkward_values_are_shade_texel_bit_for_bit() {
+    let mut next = lcg(313);
+    let funcs = [
+        gl::REPLACE,
+        gl::MODULATE,
+        gl::ADD,
+        gl::ADD_SIGNED,
+        gl::INTERPOLATE,
+        gl::SUBTRACT,
+        gl::DOT3_RGB,
+        gl::DOT3_RGBA,
+    ];
+    let sources = [
+        gl::CONSTANT,
+        gl::PRIMARY_COLOR,
+        gl::PREVIOUS,
+        gl::TEXTURE,
+        0,
+    ];
+    let operands_rgb = [
+        gl::SRC_COLOR,
+        gl::ONE_MINUS_SRC_COLOR,
+        gl::SRC_ALPHA,
+        gl::ONE_MINUS_SRC_ALPHA,
+    ];
+    let operands_a = [gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA];
+    let odd = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        -0.0,
+        0.0,
+        1.0,
+        -1.5,
+        3.0e38,
+        1.0e-40,
+        0.5,
+    ];
+    let mut checked = 0;
+    for round in 0..3000 {
+        let depth = round % 5 == 4;
+        let obj = random_object(gl::TEXTURE_2D, depth, &mut next);
+        let pick = |next: &mut dyn FnMut() -> u64, v: &[u32]| v[(next() % v.len() as u64) as usize];
+        let combine = crate::texture::Combine {
+            rgb: funcs[round % funcs.len()],
+            alpha: funcs[(round / funcs.len()) % 6],
+            src_rgb: std::array::from_fn(|_| pick(&mut next, &sources)),
+            src_alpha: std::array::from_fn(|_| pick(&mut next, &sources)),
+            operand_rgb: std::array::from_fn(|_| pick(&mut next, &operands_rgb)),
+            operand_alpha: std::array::from_fn(|_| pick(&mut next, &operands_a)),
+            rgb_scale: [1.0, 2.0, 4.0][(next() % 3) as usize],
+            alpha_scale: [1.0, 2.0, 4.0][(next() % 3) as usize],
+        };
+        let mut s = sampler_on(gl::TEXTURE_2D, obj, gl::COMBINE, combine);
+        if depth {
+            s.depth_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][round % 3];
+        }
+        let mut value = || -> f32 {
+            match next() % 4 {
+                0 => odd[(next() % odd.len() as u64) as usize],
+                _ => (next() % 3000) as f32 / 1000.0 - 1.0,
+            }
+        };
+        let mut colour = || -> [Vec4; LANES] {
+            std::array::from_fn(|_| Vec4::new(value(), value(), value(), value()))
+        };
+        let (cf, prim) = (colour(), colour());
+        let texels: [[f32; 4]; LANES] = colour().map(|v| v.to_array());
+        let m = (next() % 256) as u8;
+        for off in [false, true] {
+            let mut got = cf;
+            crate::cpu::lanes::NO_AVX2.with(|x| x.set(off));
+            s.env_lanes_with(&mut got, &prim, &texels, m);
+            crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+            for l in 0..LANES {
+                let want = match m & (1 << l) != 0 {
+                    true => s.shade_texel(cf[l], prim[l], texels[l], &[]),
+                    false => cf[l],
+                };
+                assert_eq!(
+                    got[l].to_array().map(f32::to_bits),
+                    want.to_array().map(f32::to_bits),
+                    "round {round} lane {l} avx2 off {off}: {combine:?}",
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 3000 * LANES * 2);
+}
+
 /// The other environments through `env_lanes_with` are `env_lanes`, on every target.
 #[test]
 fn env_lanes_with_other_environments_is_shade() {
