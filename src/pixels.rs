@@ -693,6 +693,14 @@ pub fn repack(modes: &PixelModes, f: Format, w: i32, h: i32, data: &[u8]) -> Opt
     Some(out)
 }
 
+/// The calls [`compile_unpacked`] may store as something else: DrawPixels and Bitmap. For
+/// every other call it is `None` after this one test, so a display list being compiled stores
+/// those as they are without calling it (`Context::capture`).
+#[inline(always)]
+pub fn unpacks_at_compile(call: &crate::Call) -> bool {
+    matches!(call, crate::Call::DrawPixels(..) | crate::Call::Bitmap(..))
+}
+
 /// The call a display list stores for `call` (GL 2.1 §5.4): DrawPixels and Bitmap with their
 /// groups unpacked under `modes` (the unpack modes at compile time) into the [`TIGHT`] layout,
 /// which a call executed from a list is read under; None for every other call (stored as it
@@ -700,6 +708,9 @@ pub fn repack(modes: &PixelModes, f: Format, w: i32, h: i32, data: &[u8]) -> Opt
 /// error when the list runs; one whose data is short is stored with none, for the same reason.
 pub fn compile_unpacked(modes: &PixelModes, call: &crate::Call) -> Option<crate::Call> {
     use crate::Call;
+    if !unpacks_at_compile(call) {
+        return None;
+    }
     match call {
         Call::DrawPixels(w, h, format, ty, data) => {
             let f = check(*format, *ty).ok().filter(|_| *w >= 0 && *h >= 0)?;

@@ -18,6 +18,24 @@ use crate::arrays::{ArrayState, Attr, GlResult, Pointer, Source};
 use crate::call::{Call, MapWrites};
 use crate::gl;
 
+/// The calls [`Context::compile_draw`] may compile into something else (the vertex-array
+/// draws and PolygonStipple); for every other call it returns `Ok(None)` without looking
+/// further, so a display list being compiled stores those as they are after this one test
+/// (`Context::capture`).
+#[inline(always)]
+pub(crate) fn compiles_draw(call: &Call) -> bool {
+    matches!(
+        call,
+        Call::PolygonStipple(_)
+            | Call::MultiDrawArrays(_)
+            | Call::MultiDrawElements(_)
+            | Call::ArrayElement(_)
+            | Call::DrawArrays(..)
+            | Call::DrawElements(..)
+            | Call::DrawRangeElements(..)
+    )
+}
+
 impl Context {
     /// Runs an `ArrayState` command outside Begin/End (GL 2.1 §2.6.3), raising its error.
     fn arrays_do(&mut self, f: impl FnOnce(&mut ArrayState, usize) -> GlResult<()>) {
@@ -476,6 +494,9 @@ impl Context {
     /// the data handed over; they are reserved in one `try_reserve_exact`, and a failure is
     /// `Err(OUT_OF_MEMORY)` instead of an abort.
     pub(crate) fn compile_draw(&self, call: &Call) -> Result<Option<Vec<Call>>, u32> {
+        if !compiles_draw(call) {
+            return Ok(None);
+        }
         // Not a draw, but resolved at compile time too: the stipple unpacked now (stipple.rs).
         if let Call::PolygonStipple(mask) = call {
             return Ok(self.compile_polygon_stipple(mask));

@@ -181,6 +181,37 @@ impl Context {
     /// Appends `call` to the recording and to the list being compiled, as the `record!` macro
     /// does; returns true when the command must not be executed now (COMPILE mode).
     pub(crate) fn capture(&mut self, call: Call) -> bool {
+        let Some(list) = self.lists.compiling.as_mut() else {
+            // Recorded only (no list being defined): what `capture_any` does then.
+            if let Some(rec) = self.recording.as_mut() {
+                rec.push(call);
+            }
+            return false;
+        };
+        // The usual call while a list is compiled and nothing is recorded (a mesh's vertices,
+        // normals, Begin, End): stored as it is, which is what `capture_any` does with it,
+        // without its other cases' work and registers.
+        if self.recording.is_none()
+            && !call.executes_immediately()
+            && !proxy_image(&call)
+            && !crate::pixels::unpacks_at_compile(&call)
+            && !super::arrays::compiles_draw(&call)
+        {
+            let compile = list.mode == gl::COMPILE;
+            if list.calls.len() < list.calls.capacity() || list.calls.try_reserve(1).is_ok() {
+                list.calls.push(call);
+            } else {
+                self.error(gl::OUT_OF_MEMORY);
+            }
+            return compile;
+        }
+        self.capture_any(call)
+    }
+
+    /// `capture` for every call: recorded, and compiled into the list being defined as §5.4
+    /// says (a vertex-array draw into the data it reads now, pixels unpacked now).
+    #[inline(never)]
+    fn capture_any(&mut self, call: Call) -> bool {
         match self.lists.compiling.as_ref() {
             Some(_) if !call.executes_immediately() && !proxy_image(&call) => {
                 if let Some(rec) = self.recording.as_mut() {
@@ -497,6 +528,58 @@ pub(crate) fn proxy_image(call: &Call) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `capture` stores a call as it is in one inline test when nothing is recorded, and goes
+    /// through `capture_any` (which compiles vertex-array draws, pixel rectangles, bitmaps and
+    /// the stipple) when a recording is on: both give the same list, call for call, for a mix
+    /// of calls stored as they are and calls compiled into something else.
+    #[test]
+    fn lists_compile_alike_recorded_or_not() {
+        let compile = |record: bool| {
+            let mut ctx = Context::new(16, 16).expect("context");
+            let pos = [0.0f32, 0.0, 1.0, 0.0, 0.0, 1.0];
+            ctx.vertex_pointer(2, gl::FLOAT, 0, &pos);
+            ctx.enable_client_state(gl::VERTEX_ARRAY);
+            ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 1);
+            if record {
+                ctx.start_recording();
+            }
+            ctx.new_list(1, gl::COMPILE);
+            ctx.color3f(0.5, 0.25, 1.0);
+            ctx.begin(gl::TRIANGLES);
+            ctx.normal3fv(&[0.0, 0.0, 1.0]);
+            ctx.vertex3fv(&[0.0, 0.0, 0.0]);
+            ctx.array_element(1);
+            ctx.vertex2f(1.0, 1.0);
+            ctx.end();
+            ctx.draw_arrays(gl::TRIANGLES, 0, 3);
+            ctx.draw_pixels(2, 1, gl::RGB, gl::UNSIGNED_BYTE, &[1, 2, 3, 4, 5, 6]);
+            ctx.bitmap(3, 1, 0.0, 0.0, 3.0, 0.0, Some(&[0xa0]));
+            ctx.polygon_stipple(&[0x55; 128]);
+            ctx.tex_image_2d(
+                gl::PROXY_TEXTURE_2D,
+                0,
+                gl::RGBA as i32,
+                1,
+                1,
+                0,
+                gl::RGBA,
+                gl::UNSIGNED_BYTE,
+                None,
+            );
+            ctx.pixel_storei(gl::UNPACK_ALIGNMENT, 4);
+            ctx.end_list();
+            assert_eq!(ctx.get_error(), gl::NO_ERROR);
+            ctx.list_calls(1).expect("list 1").to_vec()
+        };
+        let (plain, recorded) = (compile(false), compile(true));
+        assert_eq!(plain, recorded);
+        // The draws were compiled (Begin, the elements, End), not stored as they are.
+        assert!(!plain
+            .iter()
+            .any(|c| matches!(c, Call::DrawArrays(..) | Call::ArrayElement(_))));
+        assert!(plain.iter().any(|c| matches!(c, Call::DrawPixels(..))));
+    }
 
     #[test]
     fn offsets_follow_table_5_4() {
