@@ -2394,8 +2394,8 @@ mod tests {
             gl::CLAMP,
             gl::MIRRORED_REPEAT,
         ];
-        // Rounds the fused AVX2 route (`FusedSpan`) covers.
-        let mut fused = 0;
+        // Rounds the fused AVX2 route (`FusedSpan`) covers, with a border texel among them.
+        let (mut fused, mut fused_border) = (0, 0);
         for round in 0..900 {
             let mut obj = TexObject {
                 min_filter: g.pick(&mins),
@@ -2404,6 +2404,13 @@ mod tests {
                 wrap_t: g.pick(&wraps),
                 ..TexObject::default()
             };
+            // One round in four LINEAR without mipmaps with a border texel on s or t
+            // (CLAMP_TO_BORDER or LINEAR's CLAMP; projective-texture's state), a border
+            // colour of ones, zeros or random values.
+            let bordered = round % 4 == 2;
+            if bordered {
+                border_state(&mut g, &mut obj);
+            }
             let (ws, wt) = (obj.wrap_s, obj.wrap_t);
             // Mostly power-of-two levels (the dense ones), sometimes 6x6, 3x3, 1x1; RGBA or
             // RGB (alpha 1).
@@ -2513,14 +2520,16 @@ mod tests {
             let two = g.next() % 4 == 0;
             if units == 1
                 && matches!(state.textures.units[0].env_mode, gl::MODULATE | gl::REPLACE)
-                && [ws, wt]
-                    .iter()
-                    .all(|&m| m == gl::REPEAT || m == gl::CLAMP_TO_EDGE)
+                && (bordered
+                    || [ws, wt]
+                        .iter()
+                        .all(|&m| m == gl::REPEAT || m == gl::CLAMP_TO_EDGE))
                 && !f.count
                 && f.color_mask == [true; 4]
                 && !two
             {
                 fused += 1;
+                fused_border += usize::from(bordered);
             }
             let depth: Vec<u32> = (0..TILE * TILE)
                 .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
@@ -2660,17 +2669,42 @@ mod tests {
             );
         }
         assert!(
-            fused > 30,
-            "{fused} of 900 rounds in the fused route's state"
+            fused > 30 && fused_border > 8,
+            "{fused} of 900 rounds in the fused route's state, {fused_border} with a border"
         );
+    }
+
+    /// A texture object's state with a border texel the fused route covers: LINEAR on both
+    /// filters (no mipmaps read), CLAMP_TO_BORDER or CLAMP on s or t (both now and then), the
+    /// other axis any wrap the border kernels take, a border colour of ones, zeros or random
+    /// values (NaN and 1e30 among them).
+    fn border_state(g: &mut Gen, obj: &mut crate::texture::TexObject) {
+        obj.min_filter = gl::LINEAR;
+        obj.mag_filter = gl::LINEAR;
+        let (a, b) = (
+            g.pick(&[gl::CLAMP_TO_BORDER, gl::CLAMP_TO_BORDER, gl::CLAMP]),
+            g.pick(&[
+                gl::CLAMP_TO_BORDER,
+                gl::CLAMP,
+                gl::REPEAT,
+                gl::CLAMP_TO_EDGE,
+            ]),
+        );
+        (obj.wrap_s, obj.wrap_t) = if g.next() % 2 == 0 { (a, b) } else { (b, a) };
+        obj.border_color = match g.next() % 3 {
+            0 => Vec4::ONE,
+            1 => Vec4::ZERO,
+            _ => Vec4::from_array(std::array::from_fn(|_| g.mostly_unit())),
+        };
     }
 
     /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against
     /// `oplanes::clamp01` of `color_lanes` (what `tex_span_in` computes for them, λ from each
     /// pixel's `quad_lambda`), bit for bit on the lanes of the mask: random states the fused
     /// route covers (filters, REPEAT or CLAMP_TO_EDGE, RGB or RGBA, power-of-two and 6x6
-    /// levels, MODULATE or REPLACE), flat or smooth colours, planes with NaN, infinite or zero
-    /// terms, groups and masks.
+    /// levels, MODULATE or REPLACE; one round in four LINEAR with a border texel, as
+    /// `border_state`), flat or smooth colours, planes with NaN, infinite or zero terms,
+    /// groups and masks.
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
@@ -2703,10 +2737,11 @@ mod tests {
             gl::GEQUAL,
             gl::ALWAYS,
         ];
-        for round in 0..1500 {
+        for round in 0..2000 {
             // One round in three a depth texture's comparison (NEAREST, LUMINANCE, env
             // BLEND), the shadow-map state.
             let shadow = round % 3 == 2;
+            let bordered = !shadow && round % 4 == 1;
             let mut obj = TexObject {
                 min_filter: g.pick(&mins),
                 mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
@@ -2720,6 +2755,9 @@ mod tests {
                 obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
                 obj.compare_func = g.pick(&funcs);
                 obj.depth_texture_mode = gl::LUMINANCE;
+            }
+            if bordered {
+                border_state(&mut g, &mut obj);
             }
             let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
             let rgb = g.next() % 3 == 0;

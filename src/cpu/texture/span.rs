@@ -1,5 +1,7 @@
 //! The fused textured group (AVX2): for a span whose state is the common one — one 2D unit
-//! with [`Sampler::lanes_ok`], REPEAT or CLAMP_TO_EDGE on s and t, the MODULATE or REPLACE
+//! with [`Sampler::lanes_ok`], REPEAT or CLAMP_TO_EDGE on s and t (or LINEAR without mipmaps
+//! with CLAMP_TO_BORDER or LINEAR's CLAMP on s or t: `dense_border8`'s border texel, as
+//! [`border_bilinear`]), the MODULATE or REPLACE
 //! environment on an RGBA or RGB texture without depth comparison, or a depth texture's
 //! comparison (NEAREST on the base level, DEPTH_TEXTURE_MODE LUMINANCE) under the BLEND
 //! environment (shadow-map's state: r/q compared with the stored depth as `dense_depth8`
@@ -14,6 +16,8 @@
 //! texels and goes on in registers.
 
 #[cfg(target_arch = "x86_64")]
+use super::{border_linear8, AX_BORDER, AX_CLAMP, AX_EDGE, AX_REPEAT};
+#[cfg(target_arch = "x86_64")]
 use super::{dense_level, ifloor8, linear_axis8, mask_eq, mask_ne_zero, wrap8, Route};
 use super::{Sampler, LANES};
 use crate::gl;
@@ -25,6 +29,9 @@ pub struct FusedSpan<'a> {
     s: &'a Sampler,
     /// REPEAT on s (else CLAMP_TO_EDGE), on t.
     rep: [bool; 2],
+    /// LINEAR on the base level with a border texel ([`border_linear`]): `border_kind`'s
+    /// code of the wrap classes (`rep` unused then), else None.
+    border: Option<u8>,
     /// The environment: REPLACE, MODULATE, or BLEND of a depth comparison's LUMINANCE.
     env: Env,
     /// TEXTURE_COMPARE_FUNC of a depth texture's comparison (NEAREST on the base level,
@@ -94,8 +101,7 @@ impl<'a> FusedSpan<'a> {
             && !s.cube
             && !s.crossbar
             && (color || depth_blend(s))
-            && edge(s.wrap[0])
-            && edge(s.wrap[1])
+            && (edge(s.wrap[0]) && edge(s.wrap[1]) || border_linear(s).is_some())
     }
 
     /// The fused route of sampler `s` whose coordinates are varyings `to..to + 4`, or None
@@ -127,13 +133,17 @@ impl<'a> FusedSpan<'a> {
             (Some(func), _, _) if depth_blend(s) => (Env::BlendLum, Some(func)),
             _ => return None,
         };
-        let rep = [rep(s.wrap[0])?, rep(s.wrap[1])?];
+        let (rep, border) = match (rep(s.wrap[0]), rep(s.wrap[1])) {
+            (Some(x), Some(y)) => ([x, y], None),
+            _ => ([false; 2], Some(border_linear(s)?)),
+        };
         let vars = [0, 1, 2, 3, to, to + 1, to + 3];
         let c = s.env_color;
         let rj = to.checked_add(2)?;
         Some(FusedSpan {
             s,
             rep,
+            border,
             env,
             depth,
             cc: [c.x, c.y, c.z, 0.0, c.x, c.y, c.z, 0.0],
@@ -284,10 +294,11 @@ impl<'a> FusedSpan<'a> {
             _mm256_setzero_ps()
         };
         let rr = _mm256_mul_ps(r, qi);
-        let tex = match self.depth {
+        let tex = if self.depth.is_some() || self.border.is_some() {
             // SAFETY: the CPU has AVX2 (the caller's promise).
-            Some(func) => unsafe { self.depth_texels(func, ss, tt, rr) },
-            None => self.texels(ss, tt, lam, m),
+            unsafe { self.other_texels(ss, tt, rr) }
+        } else {
+            self.texels(ss, tt, lam, m)
         };
         let tex = match tex {
             Some(p) => p,
@@ -477,14 +488,14 @@ impl<'a> FusedSpan<'a> {
     /// s/q `ss`, t/q `tt`, r/q `rr`, on the base level (the route's depth state is NEAREST
     /// without mipmaps): `pass_level`'s NEAREST then the comparison of each lane's texel
     /// (`dense_depth8`), (0, 0, 0, 0) for a missing level, None for a level that is not
-    /// [`dense_level`]. Out of line, so that [`FusedSpan::level`]'s colour kernels stay
-    /// inlined as they were.
+    /// [`dense_level`]. Out of line (in [`FusedSpan::other_texels`]), so that
+    /// [`FusedSpan::level`]'s colour kernels stay inlined as they were.
     ///
     /// # Safety
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    #[inline(never)]
+    #[inline]
     unsafe fn depth_texels(
         &mut self,
         func: u32,
@@ -507,6 +518,87 @@ impl<'a> FusedSpan<'a> {
             [true, true] => nearest::<true, true>(dt, km, w, h, ss, tt),
         };
         Some(compare_pairs(func, d, rr))
+    }
+
+    /// The texels (pixel-major pairs) of a group whose state is not the colour kernels'
+    /// ([`FusedSpan::texels`]): the depth comparison's ([`FusedSpan::depth_texels`]) or the
+    /// border kernel's ([`FusedSpan::border_texels`]); None (`texels_lanes`) otherwise. One
+    /// call out of line, so that the common route's code in [`FusedSpan::colors`] stays as it
+    /// was (a second call there cost textured-cube 25 instructions a group).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn other_texels(
+        &mut self,
+        ss: std::arch::x86_64::__m256,
+        tt: std::arch::x86_64::__m256,
+        rr: std::arch::x86_64::__m256,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe {
+            match (self.depth, self.border) {
+                (Some(func), _) => self.depth_texels(func, ss, tt, rr),
+                (None, Some(kind)) => self.border_texels(kind, ss, tt),
+                (None, None) => None,
+            }
+        }
+    }
+
+    /// The texels (pixel-major pairs) of the group at s/q `ss`, t/q `tt` on the base level
+    /// with a border texel (LINEAR without mipmaps, the wrap classes `kind` of
+    /// `border_kind`): what `pass_level` gives through `dense_border` ([`border_bilinear`]),
+    /// (0, 0, 0, 0) for a missing level, None for a level that is not [`dense_level`] (or
+    /// beyond `dense_border`'s 2^28 texels). Out of line (in [`FusedSpan::other_texels`]).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn border_texels(
+        &mut self,
+        kind: u8,
+        ss: std::arch::x86_64::__m256,
+        tt: std::arch::x86_64::__m256,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        let (dt, w, h) = match self.view(self.s.base_level) {
+            View::Dense(dt, w, h) if dt.len() <= 1 << 28 => (dt, w, h),
+            View::Missing => return Some([_mm256_setzero_ps(); 4]),
+            _ => return None,
+        };
+        let km = dt.len().checked_sub(1)?;
+        // The border colour in the base format's components, as `pass_level` gives it to
+        // `dense_border` (in both halves: lanes k and k + 4 of a pixel-major pair).
+        let bc = crate::texture::keep(self.s.base, self.s.border);
+        // SAFETY: the load reads the four floats of `bc` (no alignment needed).
+        let b4 = unsafe { _mm_loadu_ps(bc.as_ptr()) };
+        let b = _mm256_set_m128(b4, b4);
+        macro_rules! pick {
+            ($($k:literal => $x:ident, $y:ident;)*) => {
+                match kind {
+                    $($k => border_bilinear::<$x, $y>(dt, km, w, h, b, ss, tt),)*
+                    _ => return None,
+                }
+            };
+        }
+        Some(pick! {
+            0b1_0010 => AX_EDGE, AX_BORDER;
+            0b1_0011 => AX_EDGE, AX_CLAMP;
+            0b1_0110 => AX_REPEAT, AX_BORDER;
+            0b1_0111 => AX_REPEAT, AX_CLAMP;
+            0b1_1000 => AX_BORDER, AX_EDGE;
+            0b1_1001 => AX_BORDER, AX_REPEAT;
+            0b1_1010 => AX_BORDER, AX_BORDER;
+            0b1_1011 => AX_BORDER, AX_CLAMP;
+            0b1_1100 => AX_CLAMP, AX_EDGE;
+            0b1_1101 => AX_CLAMP, AX_REPEAT;
+            0b1_1110 => AX_CLAMP, AX_BORDER;
+            0b1_1111 => AX_CLAMP, AX_CLAMP;
+        })
     }
 
     /// Level `level` as the route reads it, from the cache or looked up (and cached). Two
@@ -575,6 +667,19 @@ fn depth_blend(s: &Sampler) -> bool {
         && s.depth_mode == gl::LUMINANCE
         && s.env == gl::BLEND
         && crate::texture::is_depth(s.base)
+}
+
+/// The border kernel's code ([`super::border_kind`]) of sampler `s` when the route reads it
+/// with a border texel: LINEAR on the base level without mipmaps, no depth comparison,
+/// CLAMP_TO_BORDER or LINEAR's CLAMP on s or t (the other any wrap the border kernels take);
+/// None otherwise (and on a CPU without AVX2).
+#[inline(always)]
+fn border_linear(s: &Sampler) -> Option<u8> {
+    if s.route == super::Route::Linear && s.compare.is_none() {
+        super::border_kind(true, s.wrap)
+    } else {
+        None
+    }
 }
 
 /// `lanes::varyings`' plane of varying `j` at row `fy` (constant, x step, y term `dy·fy`);
@@ -751,14 +856,6 @@ fn bilinear<const RX: bool, const RY: bool>(
     let (w, h) = (w.max(1), h.max(1));
     let (x0, x1, a) = linear_axis8::<RX>(s, w);
     let (y0, y1, b) = linear_axis8::<RY>(t, h);
-    let one = _mm256_set1_ps(1.0);
-    let (na, nb) = (_mm256_sub_ps(one, a), _mm256_sub_ps(one, b));
-    let wt = [
-        _mm256_mul_ps(na, nb),
-        _mm256_mul_ps(a, nb),
-        _mm256_mul_ps(na, b),
-        _mm256_mul_ps(a, b),
-    ];
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
     let kmv = _mm256_set1_epi32(km as i32);
@@ -769,6 +866,29 @@ fn bilinear<const RX: bool, const RY: bool>(
         load_pairs(dt, f(_mm256_add_epi32(r1, x0))),
         load_pairs(dt, f(_mm256_add_epi32(r1, x1))),
     ];
+    corner_sum(a, b, &c)
+}
+
+/// eq. 3.24's sum of the four corners `c` (t00, t10, t01, t11, each pixel-major pairs) with
+/// weights from α `a` and β `b` (lanes): (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11
+/// in that order per channel, as `pass_on`, `dense_linear8` and `dense_border8` sum them.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn corner_sum(
+    a: std::arch::x86_64::__m256,
+    b: std::arch::x86_64::__m256,
+    c: &[[std::arch::x86_64::__m256; 4]; 4],
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let one = _mm256_set1_ps(1.0);
+    let (na, nb) = (_mm256_sub_ps(one, a), _mm256_sub_ps(one, b));
+    let wt = [
+        _mm256_mul_ps(na, nb),
+        _mm256_mul_ps(a, nb),
+        _mm256_mul_ps(na, b),
+        _mm256_mul_ps(a, b),
+    ];
     std::array::from_fn(|q| {
         let idx = pair_index(q);
         let wq = |n: usize| _mm256_permutevar8x32_ps(wt[n], idx);
@@ -776,6 +896,41 @@ fn bilinear<const RX: bool, const RY: bool>(
         let x = _mm256_add_ps(x, _mm256_mul_ps(wq(2), c[2][q]));
         _mm256_add_ps(x, _mm256_mul_ps(wq(3), c[3][q]))
     })
+}
+
+/// `dense_border8`'s LINEAR on eight lanes, wrap classes `MX` on s and `MY` on t: its axes
+/// ([`border_linear8`]: the wraps, inside masks and weights), indices (j·w + i) & km and
+/// eq. 3.24's sum ([`corner_sum`]), each corner's texels loaded per lane as [`bilinear`] loads
+/// them and replaced by the border colour `bc` (pixel-major pairs) where the corner is
+/// outside the level — the texel `dense_border8` takes there.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn border_bilinear<const MX: u8, const MY: u8>(
+    dt: &[[f32; 4]],
+    km: usize,
+    w: i32,
+    h: i32,
+    bc: std::arch::x86_64::__m256,
+    s: std::arch::x86_64::__m256,
+    t: std::arch::x86_64::__m256,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    let (w, h) = (w.max(1), h.max(1));
+    let (x, xi, a) = border_linear8::<MX>(s, w);
+    let (y, yi, b) = border_linear8::<MY>(t, h);
+    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let kmv = _mm256_set1_epi32(km as i32);
+    let corner = |q: usize| {
+        let (i, j) = (q & 1, q >> 1);
+        let k = _mm256_and_si256(_mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]), kmv);
+        let inside = _mm256_castsi256_ps(_mm256_and_si256(xi[i], yi[j]));
+        let c = load_pairs(dt, k);
+        std::array::from_fn(|p| {
+            _mm256_blendv_ps(bc, c[p], _mm256_permutevar8x32_ps(inside, pair_index(p)))
+        })
+    };
+    corner_sum(a, b, &[corner(0), corner(1), corner(2), corner(3)])
 }
 
 /// `fast_log2_lanes` on eight lanes (AVX2): the exponent as an integer converted exactly plus
