@@ -840,10 +840,6 @@ impl FragCtx<'_> {
         let test = self
             .depth_test
             .then_some((self.depth_func, self.depth_mask));
-        let (color, depth) = (
-            bufs.color.get_mut(base..).unwrap_or_default(),
-            bufs.depth.get_mut(base..).unwrap_or_default(),
-        );
         let mask = match () {
             // SAFETY: `AVX2` is true only in `smooth_rows_avx2`, which runs where the CPU has
             // AVX2.
@@ -851,8 +847,9 @@ impl FragCtx<'_> {
             () if AVX2 => unsafe {
                 let o = sp.row(fy);
                 super::lanes::smooth_depth_span_avx2::<F>(
-                    color,
-                    depth,
+                    bufs.color,
+                    bufs.depth,
+                    base,
                     n,
                     x0 - ox,
                     &o,
@@ -864,6 +861,8 @@ impl FragCtx<'_> {
                 // The row's terms as `SmoothPlanes8::row`'s lanes, one by one.
                 let t = |i: usize| sp.base[i] + sp.ystep[i] * fy;
                 let d = &sp.dx;
+                let color = bufs.color.get_mut(base..).unwrap_or_default();
+                let depth = bufs.depth.get_mut(base..).unwrap_or_default();
                 let co = [t(1), d[1], t(2), d[2], t(3), d[3], t(4), d[4], t(5), d[5]];
                 super::lanes::smooth_depth_span(color, depth, n, x0 - ox, t(0), d[0], test, &co)
             }

@@ -489,14 +489,16 @@ impl SmoothPlanes8 {
 /// `addps`/`mulps`/`divps` and `unorm8` conversion, assembled pixel-major and stored as a
 /// whole group (unwritten lanes stored back unchanged) — so the same bits.
 ///
-/// The row's terms `o` and x steps `dx` are those of depth, 1/w, red, green, blue and alpha
-/// (`SmoothPlanes8`): `o[0]`, `dx[0]` are `smooth_depth_span`'s `zrow`, `dz`, the others
-/// its `co` in pairs.
+/// The span starts at index `base` of `color` and `depth` (`smooth_depth_span`'s rows are
+/// their tails from there). The row's terms `o` and x steps `dx` are those of depth, 1/w,
+/// red, green, blue and alpha (`SmoothPlanes8`): `o[0]`, `dx[0]` are `smooth_depth_span`'s
+/// `zrow`, `dz`, the others its `co` in pairs.
 ///
 /// `F` other than 0 is the depth test known for the whole call: on, DepthFunc `F`, the
 /// depth mask true (`test` is then not read), so each group's compare is chosen when the
 /// function is compiled rather than by a jump per group. The groups run over the rows
-/// rounded up to whole groups, the lanes past `n` masked; a row whose last group would run
+/// rounded up to whole groups, the lanes past `n` masked, a span of one group without a
+/// loop (most spans of a dense mesh's triangles); a row whose last group would run
 /// past the end of `color` or `depth` (a tile's last pixels) goes through a copy of its
 /// pixels, the lanes past a shorter depth row failing the test and those past a shorter
 /// colour row not written, as the per-lane code does.
@@ -510,6 +512,7 @@ impl SmoothPlanes8 {
 pub(super) unsafe fn smooth_depth_span_avx2<const F: u32>(
     color: &mut [[u8; 4]],
     depth: &mut [u32],
+    base: usize,
     n: usize,
     fx0: i32,
     o: &[f32; LANES],
@@ -520,10 +523,20 @@ pub(super) unsafe fn smooth_depth_span_avx2<const F: u32>(
     let n = n.min(64);
     let live = u64::MAX.checked_shr(64 - n as u32).unwrap_or(0);
     let n8 = n.next_multiple_of(LANES);
-    if let (Some(c), Some(d)) = (color.get_mut(..n8), depth.get_mut(..n8)) {
+    let end = base.wrapping_add(n8);
+    if let (Some(c), Some(d)) = (color.get_mut(base..end), depth.get_mut(base..end)) {
         // SAFETY: the CPU has AVX2 (this function's contract).
-        return unsafe { smooth_groups_avx2(c, d, live, fx0, o, dx, test) };
+        return unsafe {
+            if n8 == LANES {
+                // One group (most spans of a dense mesh): no loop.
+                u64::from(smooth_group_depth_avx2(c, d, live as u8, fx0, o, dx, test))
+            } else {
+                smooth_groups_avx2(c, d, live, fx0, o, dx, test)
+            }
+        };
     }
+    let color = color.get_mut(base..).unwrap_or_default();
+    let depth = depth.get_mut(base..).unwrap_or_default();
     let (mut cb, mut db) = ([[0u8; 4]; 64], [0u32; 64]);
     for (b, c) in cb.iter_mut().zip(color.iter()).take(n) {
         *b = *c;
@@ -572,7 +585,6 @@ unsafe fn smooth_groups_avx2(
     dx: &[f32; LANES],
     test: Option<(u32, bool)>,
 ) -> u64 {
-    let (zrow, dz) = (o[0], dx[0]);
     let mut out = 0u64;
     // The lanes of the groups still to come (the next group's eight in the low bits), the
     // next group's first pixel and its lane x.
@@ -581,21 +593,44 @@ unsafe fn smooth_groups_avx2(
         .chunks_exact_mut(LANES)
         .zip(depth.chunks_exact_mut(LANES));
     for (px, row) in groups.take(64 / LANES) {
-        let mut m = rest as u8;
-        if let Some((func, write)) = test {
-            // SAFETY: the CPU has AVX2.
-            m = unsafe { super::oplanes::avx2::depth_test(func, write, row, zrow, dz, fxc, m) };
-        }
-        if m != 0 {
-            // SAFETY: as above.
-            unsafe { smooth_group_avx2(px, m, fxc, o, dx) };
-            out |= u64::from(m) << c;
-        }
+        // SAFETY: the CPU has AVX2.
+        let m = unsafe { smooth_group_depth_avx2(px, row, rest as u8, fxc, o, dx, test) };
+        out |= u64::from(m) << c;
         rest >>= LANES;
         c += LANES as u32;
         fxc = fxc.wrapping_add(LANES as i32);
     }
     out
+}
+
+/// One group of `smooth_groups_avx2` (`row` and `px` eight long): the depth test of lanes
+/// `m` (`oplanes::avx2::depth_test`, where `test` is on), then the colours of its survivors
+/// (`smooth_group_avx2`); the survivors' mask.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn smooth_group_depth_avx2(
+    px: &mut [[u8; 4]],
+    row: &mut [u32],
+    m: u8,
+    fxc: i32,
+    o: &[f32; LANES],
+    dx: &[f32; LANES],
+    test: Option<(u32, bool)>,
+) -> u8 {
+    let mut m = m;
+    if let Some((func, write)) = test {
+        // SAFETY: the CPU has AVX2.
+        m = unsafe { super::oplanes::avx2::depth_test(func, write, row, o[0], dx[0], fxc, m) };
+    }
+    if m != 0 {
+        // SAFETY: as above.
+        unsafe { smooth_group_avx2(px, m, fxc, o, dx) };
+    }
+    m
 }
 
 /// One group of `smooth_groups_avx2`: the colours of lanes `m` (lane x `fxc as f32 + l`)
@@ -1503,16 +1538,35 @@ mod tests {
                 let o = [zrow, co[0], co[2], co[4], co[6], co[8], 0.0, 0.0];
                 let dx = [dz, co[1], co[3], co[5], co[7], co[9], 0.0, 0.0];
                 // SAFETY: the CPU has AVX2.
-                let m2 =
-                    unsafe { smooth_depth_span_avx2::<0>(&mut c2, &mut d2, n, fx0, &o, &dx, test) };
+                let m2 = unsafe {
+                    smooth_depth_span_avx2::<0>(&mut c2, &mut d2, 0, n, fx0, &o, &dx, test)
+                };
                 assert_eq!(m2, got, "avx2: n {n} test {test:?} co {co:?}");
                 assert_eq!(c2, color, "avx2: n {n} test {test:?} co {co:?} fx0 {fx0}");
                 assert_eq!(d2, depth, "avx2: n {n} test {test:?} zrow {zrow} dz {dz}");
+                // The same span from an index past the buffers' start (a tile's row), the
+                // pixels before it untouched.
+                let pre = (g.next() % 70) as usize;
+                let mut c3 = vec![[7u8; 4]; pre];
+                c3.extend_from_slice(&color0);
+                let mut d3 = vec![7u32; pre];
+                d3.extend_from_slice(&depth0);
+                // SAFETY: the CPU has AVX2.
+                let m3 = unsafe {
+                    smooth_depth_span_avx2::<0>(&mut c3, &mut d3, pre, n, fx0, &o, &dx, test)
+                };
+                assert_eq!(m3, got, "avx2 from {pre}: n {n} test {test:?}");
+                assert_eq!(
+                    (&c3[..pre], &c3[pre..]),
+                    (&vec![[7u8; 4]; pre][..], &color[..])
+                );
+                assert_eq!((&d3[..pre], &d3[pre..]), (&vec![7u32; pre][..], &depth[..]));
                 // The depth tests chosen at compile time (`test` then not read) against the
                 // SSE2 route with the same test.
                 type Span = unsafe fn(
                     &mut [[u8; 4]],
                     &mut [u32],
+                    usize,
                     usize,
                     i32,
                     &[f32; LANES],
@@ -1535,7 +1589,7 @@ mod tests {
                     let m1 = smooth_depth_span(&mut c1, &mut d1, n, fx0, zrow, dz, t, &co);
                     let (mut c2, mut d2) = (color0.clone(), depth0.clone());
                     // SAFETY: the CPU has AVX2.
-                    let m2 = unsafe { span(&mut c2, &mut d2, n, fx0, &o, &dx, test) };
+                    let m2 = unsafe { span(&mut c2, &mut d2, 0, n, fx0, &o, &dx, test) };
                     assert_eq!(
                         (m2, &c2, &d2),
                         (m1, &c1, &d1),
