@@ -773,9 +773,7 @@ impl FragCtx<'_> {
             unsafe { self.smooth_rows_avx2(bufs, p, pl, rows) };
             return;
         }
-        for &[y, x0, x1] in rows {
-            self.smooth_row::<false>(bufs, p, pl, y, x0, x1);
-        }
+        self.smooth_rows_on::<false, 0>(bufs, p, pl, rows);
     }
 
     /// `smooth_rows` compiled for AVX2, each row's groups through
@@ -792,72 +790,83 @@ impl FragCtx<'_> {
         pl: &[f32; 15],
         rows: &[[i32; 3]],
     ) {
-        for &[y, x0, x1] in rows {
-            self.smooth_row::<true>(bufs, p, pl, y, x0, x1);
+        // The common depth tests chosen once for the call (each group's compare then known
+        // when `smooth_row` is compiled), any other through `test` per group.
+        const LESS: u32 = crate::gl::LESS;
+        const LEQUAL: u32 = crate::gl::LEQUAL;
+        match (self.depth_test, self.depth_func, self.depth_mask) {
+            (true, LESS, true) => self.smooth_rows_on::<true, LESS>(bufs, p, pl, rows),
+            (true, LEQUAL, true) => self.smooth_rows_on::<true, LEQUAL>(bufs, p, pl, rows),
+            _ => self.smooth_rows_on::<true, 0>(bufs, p, pl, rows),
         }
     }
 
-    /// A span of a primitive `smooth_planes` accepted (its planes `pl`): pixels `x0..=x1` of
-    /// row `y`, all inside the tile. What `tri_span` computes for it (the row's terms of each
-    /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
-    /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
+    /// `smooth_row` of each of `rows` (`AVX2` and `F` as there).
     #[inline(always)]
-    fn smooth_row<const AVX2: bool>(
+    fn smooth_rows_on<const AVX2: bool, const F: u32>(
         &self,
         bufs: &mut TileBufs,
         p: &RPrim,
         pl: &[f32; 15],
+        rows: &[[i32; 3]],
+    ) {
+        let sp = super::lanes::SmoothPlanes8::new(&p.z, pl);
+        for &[y, x0, x1] in rows {
+            self.smooth_row::<AVX2, F>(bufs, p, &sp, y, x0, x1);
+        }
+    }
+
+    /// A span of a primitive `smooth_planes` accepted (its planes in `sp`): pixels `x0..=x1` of
+    /// row `y`, all inside the tile. What `tri_span` computes for it (the row's terms of each
+    /// plane, `zrow`, the depth test and the smooth colour, the occlusion count), without the
+    /// per-span decisions, in one pass over its groups (`lanes::smooth_depth_span`).
+    /// On AVX2 the row's terms come from `sp` (`lanes::SmoothPlanes8`, the same scalar
+    /// expressions on eight lanes) and `F` is 0 or the depth test known for all rows
+    /// (`lanes::smooth_depth_span_avx2`).
+    #[inline(always)]
+    fn smooth_row<const AVX2: bool, const F: u32>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        sp: &super::lanes::SmoothPlanes8,
         y: i32,
         x0: i32,
         x1: i32,
     ) {
-        let [w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay] = *pl;
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
-        let zrow = p.z[0] + p.z[2] * fy;
         let base = ((y - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
         let n = (x1 - x0 + 1) as usize;
-        let co = [
-            w0 + wy * fy,
-            wx,
-            r0 + ry * fy,
-            rx,
-            g0 + gy * fy,
-            gx,
-            b0 + by * fy,
-            bx,
-            a0 + ay * fy,
-            ax,
-        ];
         let test = self
             .depth_test
             .then_some((self.depth_func, self.depth_mask));
-        let (color, depth) = (
-            bufs.color.get_mut(base..).unwrap_or_default(),
-            bufs.depth.get_mut(base..).unwrap_or_default(),
-        );
-        #[cfg(target_arch = "x86_64")]
-        let mask = if AVX2 {
+        let mask = match () {
             // SAFETY: `AVX2` is true only in `smooth_rows_avx2`, which runs where the CPU has
             // AVX2.
-            unsafe {
-                super::lanes::smooth_depth_span_avx2(
-                    color,
-                    depth,
+            #[cfg(target_arch = "x86_64")]
+            () if AVX2 => unsafe {
+                let o = sp.row(fy);
+                super::lanes::smooth_depth_span_avx2::<F>(
+                    bufs.color,
+                    bufs.depth,
+                    base,
                     n,
                     x0 - ox,
-                    zrow,
-                    p.z[1],
+                    &o,
+                    &sp.dx,
                     test,
-                    &co,
                 )
+            },
+            () => {
+                // The row's terms as `SmoothPlanes8::row`'s lanes, one by one.
+                let t = |i: usize| sp.base[i] + sp.ystep[i] * fy;
+                let d = &sp.dx;
+                let color = bufs.color.get_mut(base..).unwrap_or_default();
+                let depth = bufs.depth.get_mut(base..).unwrap_or_default();
+                let co = [t(1), d[1], t(2), d[2], t(3), d[3], t(4), d[4], t(5), d[5]];
+                super::lanes::smooth_depth_span(color, depth, n, x0 - ox, t(0), d[0], test, &co)
             }
-        } else {
-            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co)
         };
-        #[cfg(not(target_arch = "x86_64"))]
-        let mask =
-            super::lanes::smooth_depth_span(color, depth, n, x0 - ox, zrow, p.z[1], test, &co);
         if self.samples {
             bufs.samples += u64::from(mask.count_ones());
         }

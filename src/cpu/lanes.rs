@@ -427,14 +427,81 @@ thread_local! {
     pub(super) static NO_AVX2: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+/// The planes of a primitive's smooth rows for `smooth_depth_span_avx2`, one lane each for
+/// depth, 1/w, red, green, blue and alpha (the last two lanes 0): a row's terms are
+/// `base + ystep·fy` ([`SmoothPlanes8::row`], each lane the scalar `a + dy·fy` of
+/// `FragCtx::smooth_row`), its x steps `dx`.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct SmoothPlanes8 {
+    /// The constants.
+    pub base: [f32; LANES],
+    /// The y steps.
+    pub ystep: [f32; LANES],
+    /// The x steps, `smooth_depth_span_avx2`'s `dx`.
+    pub dx: [f32; LANES],
+}
+
+impl SmoothPlanes8 {
+    /// From the depth plane `z` (constant, x step, y step, as `RPrim::z`) and the smooth
+    /// planes `pl` (1/w, r, g, b, a, each constant, x step, y step).
+    pub fn new(z: &[f32; 3], pl: &[f32; 15]) -> Self {
+        let lane = |i: usize, k: usize| match i {
+            0 => z[k],
+            1..=5 => pl[(i - 1) * 3 + k],
+            _ => 0.0,
+        };
+        SmoothPlanes8 {
+            base: std::array::from_fn(|i| lane(i, 0)),
+            ystep: std::array::from_fn(|i| lane(i, 2)),
+            dx: std::array::from_fn(|i| lane(i, 1)),
+        }
+    }
+
+    /// The terms of row `fy`: `base + ystep·fy` on every lane (`vmulps`, `vaddps`: the
+    /// scalar expression's rounding, no FMA).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    pub unsafe fn row(&self, fy: f32) -> [f32; LANES] {
+        use std::arch::x86_64::{
+            __m256, _mm256_add_ps, _mm256_loadu_ps, _mm256_mul_ps, _mm256_set1_ps,
+        };
+        // SAFETY: `base` and `ystep` hold eight f32, 32 bytes (no alignment needed); `__m256`
+        // has the layout of `[f32; 8]`, every bit pattern valid for both.
+        unsafe {
+            let (b, y) = (
+                _mm256_loadu_ps(self.base.as_ptr()),
+                _mm256_loadu_ps(self.ystep.as_ptr()),
+            );
+            let v = _mm256_add_ps(b, _mm256_mul_ps(y, _mm256_set1_ps(fy)));
+            std::mem::transmute::<__m256, [f32; LANES]>(v)
+        }
+    }
+}
+
 /// `smooth_depth_span` with eight lanes a register (AVX2): the same operations in the same
 /// order on each lane — `lane_x`'s `(fx0 + c) as f32 + l`, `lin_lanes`' `zrow + dz·x`,
-/// `depth_lanes`' clamp, scale, bias and truncation in double precision (`vcvtps2pd`,
-/// `vmaxpd`/`vminpd` with a NaN giving 0, `vcvttpd2dq`), `depth_group`'s unsigned compare
-/// and select, `smooth_group`'s `addps`/`mulps`/`divps` and `unorm8` conversion, assembled
-/// pixel-major and stored as a whole group (unwritten lanes stored back unchanged) — so the
-/// same bits. A depth or colour row shorter than a group takes the SSE2 route's per-lane
-/// code for that group.
+/// `depth_lanes`' clamp, scale, bias and truncation in double precision and `depth_group`'s
+/// unsigned compare and select (both `oplanes::avx2::depth_test`), `smooth_group`'s
+/// `addps`/`mulps`/`divps` and `unorm8` conversion, assembled pixel-major and stored as a
+/// whole group (unwritten lanes stored back unchanged) — so the same bits.
+///
+/// The span starts at index `base` of `color` and `depth` (`smooth_depth_span`'s rows are
+/// their tails from there). The row's terms `o` and x steps `dx` are those of depth, 1/w,
+/// red, green, blue and alpha (`SmoothPlanes8`): `o[0]`, `dx[0]` are `smooth_depth_span`'s
+/// `zrow`, `dz`, the others its `co` in pairs.
+///
+/// `F` other than 0 is the depth test known for the whole call: on, DepthFunc `F`, the
+/// depth mask true (`test` is then not read), so each group's compare is chosen when the
+/// function is compiled rather than by a jump per group. The groups run over the rows
+/// rounded up to whole groups, the lanes past `n` masked, a span of one group without a
+/// loop (most spans of a dense mesh's triangles); a row whose last group would run
+/// past the end of `color` or `depth` (a tile's last pixels) goes through a copy of its
+/// pixels, the lanes past a shorter depth row failing the test and those past a shorter
+/// colour row not written, as the per-lane code does.
 ///
 /// # Safety
 /// The CPU must have AVX2 (`has_avx2`).
@@ -442,36 +509,161 @@ thread_local! {
 #[target_feature(enable = "avx2")]
 #[inline]
 #[allow(clippy::too_many_arguments)]
-pub(super) unsafe fn smooth_depth_span_avx2(
+pub(super) unsafe fn smooth_depth_span_avx2<const F: u32>(
     color: &mut [[u8; 4]],
     depth: &mut [u32],
+    base: usize,
     n: usize,
     fx0: i32,
-    zrow: f32,
-    dz: f32,
+    o: &[f32; LANES],
+    dx: &[f32; LANES],
     test: Option<(u32, bool)>,
-    co: &[f32; 10],
 ) -> u64 {
-    use std::arch::x86_64::{
-        __m256, __m256i, _mm256_add_pd, _mm256_add_ps, _mm256_and_si256, _mm256_andnot_si256,
-        _mm256_castps256_ps128, _mm256_castps_si256, _mm256_castsi256_ps, _mm256_cmpeq_epi32,
-        _mm256_cmpgt_epi32, _mm256_cvtps_pd, _mm256_cvttpd_epi32, _mm256_div_ps,
-        _mm256_extractf128_ps, _mm256_loadu_si256, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd,
-        _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_si256,
-        _mm256_set1_epi32, _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128i, _mm256_setr_epi32,
-        _mm256_setr_ps, _mm256_setzero_pd, _mm256_setzero_ps, _mm256_setzero_si256,
-        _mm256_slli_epi32, _mm256_storeu_si256, _mm256_xor_si256,
-    };
+    let test = if F != 0 { Some((F, true)) } else { test };
     let n = n.min(64);
-    let [w0, wx, r0, rx, g0, gx, b0, bx, a0, ax] = *co;
+    let live = u64::MAX.checked_shr(64 - n as u32).unwrap_or(0);
+    let n8 = n.next_multiple_of(LANES);
+    let end = base.wrapping_add(n8);
+    if let (Some(c), Some(d)) = (color.get_mut(base..end), depth.get_mut(base..end)) {
+        // SAFETY: the CPU has AVX2 (this function's contract).
+        return unsafe {
+            if n8 == LANES {
+                // One group (most spans of a dense mesh): no loop.
+                u64::from(smooth_group_depth_avx2(c, d, live as u8, fx0, o, dx, test))
+            } else {
+                smooth_groups_avx2(c, d, live, fx0, o, dx, test)
+            }
+        };
+    }
+    let color = color.get_mut(base..).unwrap_or_default();
+    let depth = depth.get_mut(base..).unwrap_or_default();
+    let (mut cb, mut db) = ([[0u8; 4]; 64], [0u32; 64]);
+    for (b, c) in cb.iter_mut().zip(color.iter()).take(n) {
+        *b = *c;
+    }
+    for (b, d) in db.iter_mut().zip(depth.iter()).take(n) {
+        *b = *d;
+    }
+    let live = match test {
+        Some(_) => {
+            live & u64::MAX
+                .checked_shr(64 - depth.len().min(64) as u32)
+                .unwrap_or(0)
+        }
+        None => live,
+    };
+    let (c8, d8) = (
+        cb.get_mut(..n8).unwrap_or_default(),
+        db.get_mut(..n8).unwrap_or_default(),
+    );
+    // SAFETY: as above.
+    let out = unsafe { smooth_groups_avx2(c8, d8, live, fx0, o, dx, test) };
+    for (c, b) in color.iter_mut().zip(cb.iter()).take(n) {
+        *c = *b;
+    }
+    for (d, b) in depth.iter_mut().zip(db.iter()).take(n) {
+        *d = *b;
+    }
+    out
+}
+
+/// The groups of `smooth_depth_span_avx2`: `color` and `depth` of the same whole number of
+/// groups, the lanes `live` (bit k for pixel k) taking part.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::too_many_arguments)]
+unsafe fn smooth_groups_avx2(
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+    live: u64,
+    fx0: i32,
+    o: &[f32; LANES],
+    dx: &[f32; LANES],
+    test: Option<(u32, bool)>,
+) -> u64 {
+    let mut out = 0u64;
+    // The lanes of the groups still to come (the next group's eight in the low bits), the
+    // next group's first pixel and its lane x.
+    let (mut rest, mut c, mut fxc) = (live, 0u32, fx0);
+    let groups = color
+        .chunks_exact_mut(LANES)
+        .zip(depth.chunks_exact_mut(LANES));
+    for (px, row) in groups.take(64 / LANES) {
+        // SAFETY: the CPU has AVX2.
+        let m = unsafe { smooth_group_depth_avx2(px, row, rest as u8, fxc, o, dx, test) };
+        out |= u64::from(m) << c;
+        rest >>= LANES;
+        c += LANES as u32;
+        fxc = fxc.wrapping_add(LANES as i32);
+    }
+    out
+}
+
+/// One group of `smooth_groups_avx2` (`row` and `px` eight long): the depth test of lanes
+/// `m` (`oplanes::avx2::depth_test`, where `test` is on), then the colours of its survivors
+/// (`smooth_group_avx2`); the survivors' mask.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn smooth_group_depth_avx2(
+    px: &mut [[u8; 4]],
+    row: &mut [u32],
+    m: u8,
+    fxc: i32,
+    o: &[f32; LANES],
+    dx: &[f32; LANES],
+    test: Option<(u32, bool)>,
+) -> u8 {
+    let mut m = m;
+    if let Some((func, write)) = test {
+        // SAFETY: the CPU has AVX2.
+        m = unsafe { super::oplanes::avx2::depth_test(func, write, row, o[0], dx[0], fxc, m) };
+    }
+    if m != 0 {
+        // SAFETY: as above.
+        unsafe { smooth_group_avx2(px, m, fxc, o, dx) };
+    }
+    m
+}
+
+/// One group of `smooth_groups_avx2`: the colours of lanes `m` (lane x `fxc as f32 + l`)
+/// selected into the eight pixels of `px` (a shorter `px` is left as it is).
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn smooth_group_avx2(
+    px: &mut [[u8; 4]],
+    m: u8,
+    fxc: i32,
+    o: &[f32; LANES],
+    dx: &[f32; LANES],
+) {
+    use std::arch::x86_64::{
+        __m256, __m256i, _mm256_add_ps, _mm256_and_si256, _mm256_andnot_si256, _mm256_castps_si256,
+        _mm256_cmpeq_epi32, _mm256_div_ps, _mm256_loadu_si256, _mm256_max_ps, _mm256_min_ps,
+        _mm256_mul_ps, _mm256_or_si256, _mm256_set1_epi32, _mm256_set1_ps, _mm256_setr_epi32,
+        _mm256_setr_ps, _mm256_setzero_ps, _mm256_slli_epi32, _mm256_storeu_si256,
+    };
+    let Some(px) = px.get_mut(..LANES) else {
+        return;
+    };
+    let [_, w0, r0, g0, b0, a0, ..] = *o;
+    let [_, wx, rx, gx, bx, ax, ..] = *dx;
     let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
     let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
     let (k, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
     let low = _mm256_set1_epi32(0xFF);
-    let (zd, oned) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0));
-    let (kd, hd) = (_mm256_set1_pd(f64::from(DEPTH_MAX)), _mm256_set1_pd(0.5));
-    let (sign, ones) = (_mm256_set1_epi32(i32::MIN), _mm256_set1_epi32(-1));
     // `o + d·x` on every lane.
     macro_rules! lin {
         ($o:expr, $d:expr, $x:expr) => {
@@ -488,103 +680,31 @@ pub(super) unsafe fn smooth_depth_span_avx2(
             )
         }};
     }
-    // `depth_lanes`' conversion of four lanes.
-    macro_rules! depth4 {
-        ($z:expr) => {{
-            let z = _mm256_min_pd(_mm256_max_pd(_mm256_cvtps_pd($z), zd), oned);
-            _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, kd), hd))
-        }};
-    }
-    let mut out = 0u64;
-    let mut c = 0;
-    while c < n {
-        let left = n - c;
-        let mut m: u8 = if left >= LANES {
-            0xFF
-        } else {
-            (1u8 << left) - 1
+    let fx: __m256 = _mm256_add_ps(_mm256_set1_ps(fxc as f32), iota);
+    let inv = _mm256_div_ps(one, lin!(w0, wx, fx));
+    macro_rules! ch {
+        ($o:expr, $d:expr) => {
+            conv!(_mm256_mul_ps(lin!($o, $d, fx), inv))
         };
-        let fx: __m256 = _mm256_add_ps(_mm256_set1_ps(fx0.wrapping_add(c as i32) as f32), iota);
-        if let Some((func, write)) = test {
-            let row = depth.get_mut(c..).unwrap_or_default();
-            if let Some(r) = row.get_mut(..LANES) {
-                let z = lin!(zrow, dz, fx);
-                let d = _mm256_set_m128i(
-                    depth4!(_mm256_extractf128_ps::<1>(z)),
-                    depth4!(_mm256_castps256_ps128(z)),
-                );
-                let rp = r.as_mut_ptr().cast::<__m256i>();
-                // SAFETY: `r` holds eight u32, 32 bytes (no alignment needed).
-                let s = unsafe { _mm256_loadu_si256(rp) };
-                let (a, b) = (_mm256_xor_si256(d, sign), _mm256_xor_si256(s, sign));
-                let pass = match func {
-                    crate::gl::NEVER => _mm256_setzero_si256(),
-                    crate::gl::LESS => _mm256_cmpgt_epi32(b, a),
-                    crate::gl::EQUAL => _mm256_cmpeq_epi32(a, b),
-                    crate::gl::LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), ones),
-                    crate::gl::GREATER => _mm256_cmpgt_epi32(a, b),
-                    crate::gl::NOTEQUAL => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), ones),
-                    crate::gl::GEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), ones),
-                    _ => ones,
-                };
-                let lv = _mm256_set1_epi32(i32::from(m));
-                let on = _mm256_cmpeq_epi32(_mm256_and_si256(lv, bits), bits);
-                let pass = _mm256_and_si256(pass, on);
-                if write {
-                    let v =
-                        _mm256_or_si256(_mm256_and_si256(pass, d), _mm256_andnot_si256(pass, s));
-                    // SAFETY: as the load above.
-                    unsafe { _mm256_storeu_si256(rp, v) };
-                }
-                m = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8;
-            } else {
-                // SAFETY: `__m256` has the layout of `[f32; 8]`.
-                let xs = unsafe { std::mem::transmute::<__m256, [f32; LANES]>(fx) };
-                let d = depth_lanes(lin_lanes(zrow, dz, &xs));
-                m = super::oplanes::depth_test(func, write, row, d, m);
-            }
-        }
-        if m != 0 {
-            let inv = _mm256_div_ps(one, lin!(w0, wx, fx));
-            macro_rules! ch {
-                ($o:expr, $d:expr) => {
-                    conv!(_mm256_mul_ps(lin!($o, $d, fx), inv))
-                };
-            }
-            let v = _mm256_or_si256(
-                _mm256_or_si256(ch!(r0, rx), _mm256_slli_epi32::<8>(ch!(g0, gx))),
-                _mm256_or_si256(
-                    _mm256_slli_epi32::<16>(ch!(b0, bx)),
-                    _mm256_slli_epi32::<24>(ch!(a0, ax)),
-                ),
-            );
-            let dst = color.get_mut(c..).unwrap_or_default();
-            if let Some(px) = dst.get_mut(..LANES) {
-                let lv = _mm256_set1_epi32(i32::from(m));
-                let sel = _mm256_cmpeq_epi32(_mm256_and_si256(lv, bits), bits);
-                let p = px.as_mut_ptr().cast::<__m256i>();
-                // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment
-                // needed).
-                unsafe {
-                    let old = _mm256_loadu_si256(p);
-                    let o =
-                        _mm256_or_si256(_mm256_andnot_si256(sel, old), _mm256_and_si256(sel, v));
-                    _mm256_storeu_si256(p, o);
-                }
-            } else {
-                // SAFETY: `__m256i` has the layout of `[u32; 8]`.
-                let v = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(v) };
-                for (l, px) in dst.iter_mut().take(LANES).enumerate() {
-                    if m & (1 << l) != 0 {
-                        *px = v[l].to_le_bytes();
-                    }
-                }
-            }
-            out |= u64::from(m) << c;
-        }
-        c += LANES;
     }
-    out
+    let v = _mm256_or_si256(
+        _mm256_or_si256(ch!(r0, rx), _mm256_slli_epi32::<8>(ch!(g0, gx))),
+        _mm256_or_si256(
+            _mm256_slli_epi32::<16>(ch!(b0, bx)),
+            _mm256_slli_epi32::<24>(ch!(a0, ax)),
+        ),
+    );
+    let sel = _mm256_cmpeq_epi32(
+        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+        bits,
+    );
+    let p = px.as_mut_ptr().cast::<__m256i>();
+    // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment needed).
+    unsafe {
+        let old = _mm256_loadu_si256(p);
+        let o = _mm256_or_si256(_mm256_andnot_si256(sel, old), _mm256_and_si256(sel, v));
+        _mm256_storeu_si256(p, o);
+    }
 }
 
 /// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'
@@ -1341,6 +1461,43 @@ mod tests {
         }
     }
     #[test]
+    fn smooth_planes8_rows_are_the_scalar_terms_bit_for_bit() {
+        let mut g = Gen(41);
+        for _ in 0..20_000 {
+            let z: [f32; 3] = std::array::from_fn(|_| g.float());
+            let pl: [f32; 15] = std::array::from_fn(|_| g.float());
+            let fy = match g.next() % 4 {
+                0 => g.float(),
+                _ => (g.next() % 2000) as f32 - 500.0,
+            };
+            let sp = SmoothPlanes8::new(&z, &pl);
+            // `FragCtx::smooth_row`'s scalar terms: depth, then 1/w, r, g, b, a.
+            let want: [f32; 6] = std::array::from_fn(|i| match i {
+                0 => z[0] + z[2] * fy,
+                _ => pl[(i - 1) * 3] + pl[(i - 1) * 3 + 2] * fy,
+            });
+            let dx: [f32; 6] = std::array::from_fn(|i| match i {
+                0 => z[1],
+                _ => pl[(i - 1) * 3 + 1],
+            });
+            let scalar: [f32; 6] = std::array::from_fn(|i| sp.base[i] + sp.ystep[i] * fy);
+            let same = |a: f32, b: f32| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+            for i in 0..6 {
+                assert!(same(scalar[i], want[i]), "lane {i}: {z:?} {pl:?} fy {fy}");
+                assert_eq!(sp.dx[i].to_bits(), dx[i].to_bits());
+            }
+            #[cfg(target_arch = "x86_64")]
+            if has_avx2() {
+                // SAFETY: the CPU has AVX2.
+                let got = unsafe { sp.row(fy) };
+                for i in 0..6 {
+                    assert!(same(got[i], want[i]), "avx2 lane {i}: {z:?} {pl:?} fy {fy}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn smooth_depth_span_is_the_scalar_sequence_bit_for_bit() {
         let mut g = Gen(37);
         for i in 0..4000 {
@@ -1378,13 +1535,67 @@ mod tests {
             #[cfg(target_arch = "x86_64")]
             if has_avx2() {
                 let (mut c2, mut d2) = (color0.clone(), depth0.clone());
+                let o = [zrow, co[0], co[2], co[4], co[6], co[8], 0.0, 0.0];
+                let dx = [dz, co[1], co[3], co[5], co[7], co[9], 0.0, 0.0];
                 // SAFETY: the CPU has AVX2.
                 let m2 = unsafe {
-                    smooth_depth_span_avx2(&mut c2, &mut d2, n, fx0, zrow, dz, test, &co)
+                    smooth_depth_span_avx2::<0>(&mut c2, &mut d2, 0, n, fx0, &o, &dx, test)
                 };
                 assert_eq!(m2, got, "avx2: n {n} test {test:?} co {co:?}");
                 assert_eq!(c2, color, "avx2: n {n} test {test:?} co {co:?} fx0 {fx0}");
                 assert_eq!(d2, depth, "avx2: n {n} test {test:?} zrow {zrow} dz {dz}");
+                // The same span from an index past the buffers' start (a tile's row), the
+                // pixels before it untouched.
+                let pre = (g.next() % 70) as usize;
+                let mut c3 = vec![[7u8; 4]; pre];
+                c3.extend_from_slice(&color0);
+                let mut d3 = vec![7u32; pre];
+                d3.extend_from_slice(&depth0);
+                // SAFETY: the CPU has AVX2.
+                let m3 = unsafe {
+                    smooth_depth_span_avx2::<0>(&mut c3, &mut d3, pre, n, fx0, &o, &dx, test)
+                };
+                assert_eq!(m3, got, "avx2 from {pre}: n {n} test {test:?}");
+                assert_eq!(
+                    (&c3[..pre], &c3[pre..]),
+                    (&vec![[7u8; 4]; pre][..], &color[..])
+                );
+                assert_eq!((&d3[..pre], &d3[pre..]), (&vec![7u32; pre][..], &depth[..]));
+                // The depth tests chosen at compile time (`test` then not read) against the
+                // SSE2 route with the same test.
+                type Span = unsafe fn(
+                    &mut [[u8; 4]],
+                    &mut [u32],
+                    usize,
+                    usize,
+                    i32,
+                    &[f32; LANES],
+                    &[f32; LANES],
+                    Option<(u32, bool)>,
+                ) -> u64;
+                let fixed: [(u32, Span); 2] = [
+                    (
+                        crate::gl::LESS,
+                        smooth_depth_span_avx2::<{ crate::gl::LESS }>,
+                    ),
+                    (
+                        crate::gl::LEQUAL,
+                        smooth_depth_span_avx2::<{ crate::gl::LEQUAL }>,
+                    ),
+                ];
+                for (func, span) in fixed {
+                    let t = Some((func, true));
+                    let (mut c1, mut d1) = (color0.clone(), depth0.clone());
+                    let m1 = smooth_depth_span(&mut c1, &mut d1, n, fx0, zrow, dz, t, &co);
+                    let (mut c2, mut d2) = (color0.clone(), depth0.clone());
+                    // SAFETY: the CPU has AVX2.
+                    let m2 = unsafe { span(&mut c2, &mut d2, 0, n, fx0, &o, &dx, test) };
+                    assert_eq!(
+                        (m2, &c2, &d2),
+                        (m1, &c1, &d1),
+                        "avx2 {func}: n {n} fx0 {fx0}"
+                    );
+                }
             }
             // `FragCtx::tri_span`'s fast path: the depth test over the span, then the colour
             // of each survivor, fragment by fragment.
