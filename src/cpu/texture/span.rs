@@ -773,18 +773,22 @@ fn compare_pairs(
 /// `planes` does not hold them.
 #[inline(always)]
 fn row_planes(planes: &[f32], to: usize, fy: f32) -> Option<[[f32; 3]; 8]> {
-    // (a, dx, dy·fy) of 1/w, then varying j at 3 + 3j.
-    let vars = [0, 1, 2, 3, to, to + 1, to + 3];
-    let row = |k: usize| -> Option<[f32; 3]> {
-        let p = planes.get(k..k + 3)?;
-        Some([p[0], p[1], p[2] * fy])
-    };
-    let mut pl = [[0.0f32; 3]; 8];
-    pl[0] = row(0)?;
-    for (p, &j) in pl[1..].iter_mut().zip(&vars) {
-        *p = row(3 + 3 * j)?;
-    }
-    Some(pl)
+    // (a, dx, dy) of 1/w and the colour's four varyings (floats 0..15), then of s, t, r, q
+    // (varying `to` at float 3 + 3·to): two bounds checks, not one a plane.
+    let c = <&[f32; 15]>::try_from(planes.get(..15)?).ok()?;
+    let k = to.checked_mul(3)?.checked_add(3)?;
+    let t = <&[f32; 12]>::try_from(planes.get(k..k.checked_add(12)?)?).ok()?;
+    let p = |a: f32, dx: f32, dy: f32| [a, dx, dy * fy];
+    Some([
+        p(c[0], c[1], c[2]),
+        p(c[3], c[4], c[5]),
+        p(c[6], c[7], c[8]),
+        p(c[9], c[10], c[11]),
+        p(c[12], c[13], c[14]),
+        p(t[0], t[1], t[2]),
+        p(t[3], t[4], t[5]),
+        p(t[9], t[10], t[11]),
+    ])
 }
 
 /// λ's planes of s, t and q (varyings `to`, `to + 1`, `to + 3`): constant, x step, y term
