@@ -2878,8 +2878,14 @@ mod tests {
             let Some(mut fs) = FusedSpan::new(tx, to, &planes, nflat, fy, bbox[0], qy) else {
                 panic!("round {round}: the fused route covers this sampler");
             };
-            for _ in 0..4 {
-                let gx = bbox[0] + (g.next() % 64) as i32;
+            let mut gx = bbox[0] + (g.next() % 64) as i32;
+            for k in 0..4 {
+                // The next group of the row (the row's quads' λ kept), or any group.
+                gx = if k > 0 && g.next() % 2 == 0 {
+                    gx + 8
+                } else {
+                    bbox[0] + (g.next() % 64) as i32
+                };
                 let m = match g.next() % 3 {
                     0 => 0xFF,
                     _ => (g.next() as u8).max(1),

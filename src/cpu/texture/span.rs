@@ -61,7 +61,39 @@ pub struct FusedSpan<'a> {
     /// λ's planes of s, t and q: constant, x step, y term at the quad row's y and at one
     /// more (`quad_lambda_lanes`' `qy` and `qy + 1`).
     lp: [[f32; 4]; 3],
+    /// The LOD route's level choice per quad of the row ([`Sampler::select_lanes`] of each
+    /// quad's λ, [`FusedSpan::lambda_quads`]): quad k at window x `qbase + 2k`, its level
+    /// `qlv[k]`, weight `qf[k]`, filter bit k of `qlin`. Computed eight quads (sixteen
+    /// pixels) at a time as the groups reach them: block b (quads 8b..8b + 8) when bit b of
+    /// `qdone` is set; `qbase` is the first group's quad after `new` or `row`.
+    qlv: [i32; QUADS],
+    qf: [f32; QUADS],
+    qlin: u64,
+    qbase: i32,
+    qdone: u8,
 }
+
+/// The quads [`FusedSpan`] keeps the level choice of: a row of 64 pixels from any x touches
+/// 33 quads, five blocks of eight.
+const QUADS: usize = 40;
+
+/// Bit i of the index set in bits 2i and 2i + 1: a group's filter bits from its quads' (lane
+/// pairs share a quad).
+const DOUBLE: [u16; 32] = {
+    let mut t = [0u16; 32];
+    let mut v = 0;
+    while v < 32 {
+        let mut i = 0;
+        while i < 5 {
+            if v & (1 << i) != 0 {
+                t[v] |= 3 << (2 * i);
+            }
+            i += 1;
+        }
+        v += 1;
+    }
+    t
+};
 
 /// The environments the route computes (`env_of`'s arms).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -162,6 +194,11 @@ impl<'a> FusedSpan<'a> {
             } else {
                 [[0.0; 4]; 3]
             },
+            qlv: [0; QUADS],
+            qf: [0.0; QUADS],
+            qlin: 0,
+            qbase: 0,
+            qdone: 0,
         })
     }
 
@@ -181,6 +218,7 @@ impl<'a> FusedSpan<'a> {
         if self.s.route == Route::Lod {
             self.lp = lambda_planes(self.planes, self.to, qy);
         }
+        self.qdone = 0;
     }
 
     /// The group of eight fragments from window x `x` (lane l at x + l), lanes `m`: their
@@ -246,12 +284,6 @@ impl<'a> FusedSpan<'a> {
     unsafe fn colors(&mut self, x: i32, m: u8) -> [std::arch::x86_64::__m256; 4] {
         use std::arch::x86_64::*;
         let fx0 = x - self.ox;
-        let lam = if self.s.route == Route::Lod {
-            std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x))
-        } else {
-            [0.0; LANES]
-        };
-        let lam = &lam;
         const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
         // `lanes::varyings`: x = fx0 as f32 + l, each plane (a + dx·x) + dy·fy, 1/w by
         // `divps`, the smooth varyings times it.
@@ -298,7 +330,7 @@ impl<'a> FusedSpan<'a> {
             // SAFETY: the CPU has AVX2 (the caller's promise).
             unsafe { self.other_texels(ss, tt, rr) }
         } else {
-            self.texels(ss, tt, lam, m)
+            self.texels(x, ss, tt, m)
         };
         let tex = match tex {
             Some(p) => p,
@@ -307,7 +339,12 @@ impl<'a> FusedSpan<'a> {
                 let a = |v: __m256| std::mem::transmute::<__m256, [f32; LANES]>(v);
                 let (sa, ta, qa) = (a(s), a(t), a(q));
                 let ra = a(r);
-                let tl = self.s.texels_lanes([&sa, &ta, &ra, &qa], lam, m);
+                let lam = if self.s.route == Route::Lod {
+                    a(self.lambda(x))
+                } else {
+                    [0.0; LANES]
+                };
+                let tl = self.s.texels_lanes([&sa, &ta, &ra, &qa], &lam, m);
                 std::array::from_fn(|k| _mm256_loadu2_m128(tl[k + 4].as_ptr(), tl[k].as_ptr()))
             }
         };
@@ -383,6 +420,16 @@ impl<'a> FusedSpan<'a> {
             _mm256_add_epi32(_mm256_set1_epi32(x), iota),
             _mm256_set1_epi32(!1),
         );
+        self.lambda_quads(qi)
+    }
+
+    /// λ before bias of the quads at window x `qi` (lane l's quad's lower-left pixel, even):
+    /// what `quad_lambda_lanes` gives for the quad at `qi[l] - ox`.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn lambda_quads(&self, qi: std::arch::x86_64::__m256i) -> std::arch::x86_64::__m256 {
+        use std::arch::x86_64::*;
         let qx = _mm256_cvtepi32_ps(_mm256_sub_epi32(qi, _mm256_set1_epi32(self.ox)));
         let one = _mm256_set1_ps(1.0);
         let qx1 = _mm256_add_ps(qx, one);
@@ -426,18 +473,18 @@ impl<'a> FusedSpan<'a> {
     }
 
     /// The texels of the group (pixel-major pairs: register k holds lane k's texel in its low
-    /// half and lane k + 4's in its high half) at s/q `ss`, t/q `tt` and λ `lam`, when every
-    /// lane of `m` is on one level with one filter and the levels read are dense: what
-    /// `texels_lanes` gives (`lod_lanes`' one-level case, `pass_level`'s dense kernels,
+    /// half and lane k + 4's in its high half) from window x `x` at s/q `ss`, t/q `tt` and
+    /// each lane's quad's λ, when every lane of `m` is on one level with one filter and the
+    /// levels read are dense: what `texels_lanes` gives (`lod_lanes`' one-level case, `pass_level`'s dense kernels,
     /// `blend_levels`). None otherwise.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
     unsafe fn texels(
         &mut self,
+        x: i32,
         ss: std::arch::x86_64::__m256,
         tt: std::arch::x86_64::__m256,
-        lam: &[f32; LANES],
         m: u8,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
@@ -446,7 +493,12 @@ impl<'a> FusedSpan<'a> {
             Route::Nearest => (s.base_level, false, 0, [0.0f32; LANES]),
             Route::Linear => (s.base_level, true, 0, [0.0f32; LANES]),
             Route::Lod => {
-                let (la, linear, f) = s.select_lanes(lam);
+                let (la, linear, f) = match self.quads_select(x) {
+                    Some(q) => q,
+                    None => {
+                        s.select_lanes(&std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x)))
+                    }
+                };
                 let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
                 let (second, same) = (mask_ne_zero(&f) & m, mask_eq(&la, first));
                 let linear = linear & m;
@@ -482,6 +534,95 @@ impl<'a> FusedSpan<'a> {
             );
             _mm256_blendv_ps(a[k], x, onk)
         }))
+    }
+
+    /// [`Sampler::select_lanes`] of the λ of the group from window x `x` (lane l at x + l,
+    /// each lane its quad's λ) from the row's quads (`qlv`, `qf`, `qlin`), the blocks it
+    /// reaches computed first; None when its quads are not among the row's `QUADS` from
+    /// `qbase` (the caller then computes them for the group alone). Each lane is
+    /// `select_lanes`' value of its quad's λ either way: `select_lanes` works lane by lane,
+    /// and a quad's λ depends on its window x alone.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn quads_select(&mut self, x: i32) -> Option<([i32; LANES], u8, [f32; LANES])> {
+        use std::arch::x86_64::*;
+        if self.qdone == 0 {
+            self.qbase = x & !1;
+        }
+        // The group's first quad from `qbase` (window x wrap as the lanes' integers do: lane
+        // l's quad (x + l) & !1 is qbase + 2·(off + ((x & 1) + l) / 2) modulo 2^32).
+        let d = (x & !1).wrapping_sub(self.qbase) as u32;
+        if d > 64 {
+            return None;
+        }
+        let odd = (x & 1) as usize;
+        let off = (d / 2) as usize;
+        // off + 7 < QUADS; the last quad, off + 3 + odd, in block 4 at most.
+        let (b0, b1) = (off / 8, (off + 3 + odd) / 8);
+        // (Two tests, not a loop: the block's constants stay in its branch.)
+        if self.qdone & (1 << b0) == 0 {
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            unsafe { self.quads_block(b0) };
+        }
+        if self.qdone & (1 << b1) == 0 {
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            unsafe { self.quads_block(b1) };
+        }
+        let need = (1u8 << b0) | (1 << b1);
+        if self.qdone & need != need {
+            return None;
+        }
+        // Lane l's quad: off + ((x & 1) + l) / 2.
+        const IDX: [[i32; LANES]; 2] = [[0, 0, 1, 1, 2, 2, 3, 3], [0, 1, 1, 2, 2, 3, 3, 4]];
+        let lv = <&[i32; LANES]>::try_from(self.qlv.get(off..off + LANES)?).ok()?;
+        let fv = <&[f32; LANES]>::try_from(self.qf.get(off..off + LANES)?).ok()?;
+        let idx = IDX.get(odd)?;
+        // SAFETY: each load reads the eight values of `lv`, `fv` or `idx`.
+        let (lv, fv, idx) = unsafe {
+            (
+                _mm256_loadu_si256(lv.as_ptr().cast::<__m256i>()),
+                _mm256_loadu_ps(fv.as_ptr()),
+                _mm256_loadu_si256(idx.as_ptr().cast::<__m256i>()),
+            )
+        };
+        let la = std::mem::transmute::<__m256i, [i32; LANES]>(_mm256_permutevar8x32_epi32(lv, idx));
+        let f = std::mem::transmute::<__m256, [f32; LANES]>(_mm256_permutevar8x32_ps(fv, idx));
+        let bits = DOUBLE.get(((self.qlin >> off) & 31) as usize).copied()?;
+        Some((la, (bits >> odd) as u8, f))
+    }
+
+    /// Block `b` of the row's quads (quads 8b..8b + 8 from `qbase`): their λ
+    /// ([`FusedSpan::lambda_quads`]) and [`Sampler::select_lanes`] into `qlv`, `qf`, `qlin`.
+    /// Out of line: most groups find their blocks done.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn quads_block(&mut self, b: usize) {
+        use std::arch::x86_64::*;
+        if b >= QUADS / 8 {
+            return;
+        }
+        let k = 8 * b;
+        let start = self.qbase.wrapping_add(16 * b as i32);
+        let qi = _mm256_add_epi32(
+            _mm256_set1_epi32(start),
+            _mm256_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14),
+        );
+        let lam = std::mem::transmute::<__m256, [f32; LANES]>(self.lambda_quads(qi));
+        let (la, lin, f) = self.s.select_lanes(&lam);
+        if let (Some(lv), Some(fv)) = (self.qlv.get_mut(k..k + 8), self.qf.get_mut(k..k + 8)) {
+            lv.copy_from_slice(&la);
+            fv.copy_from_slice(&f);
+            self.qlin = (self.qlin & !(0xFF << k)) | u64::from(lin) << k;
+            self.qdone |= 1 << b;
+        }
     }
 
     /// The depth comparison's texels (pixel-major pairs, L in every channel) of the group at
@@ -737,18 +878,22 @@ fn compare_pairs(
 /// `planes` does not hold them.
 #[inline(always)]
 fn row_planes(planes: &[f32], to: usize, fy: f32) -> Option<[[f32; 3]; 8]> {
-    // (a, dx, dy·fy) of 1/w, then varying j at 3 + 3j.
-    let vars = [0, 1, 2, 3, to, to + 1, to + 3];
-    let row = |k: usize| -> Option<[f32; 3]> {
-        let p = planes.get(k..k + 3)?;
-        Some([p[0], p[1], p[2] * fy])
-    };
-    let mut pl = [[0.0f32; 3]; 8];
-    pl[0] = row(0)?;
-    for (p, &j) in pl[1..].iter_mut().zip(&vars) {
-        *p = row(3 + 3 * j)?;
-    }
-    Some(pl)
+    // (a, dx, dy) of 1/w and the colour's four varyings (floats 0..15), then of s, t, r, q
+    // (varying `to` at float 3 + 3·to): two bounds checks, not one a plane.
+    let c = <&[f32; 15]>::try_from(planes.get(..15)?).ok()?;
+    let k = to.checked_mul(3)?.checked_add(3)?;
+    let t = <&[f32; 12]>::try_from(planes.get(k..k.checked_add(12)?)?).ok()?;
+    let p = |a: f32, dx: f32, dy: f32| [a, dx, dy * fy];
+    Some([
+        p(c[0], c[1], c[2]),
+        p(c[3], c[4], c[5]),
+        p(c[6], c[7], c[8]),
+        p(c[9], c[10], c[11]),
+        p(c[12], c[13], c[14]),
+        p(t[0], t[1], t[2]),
+        p(t[3], t[4], t[5]),
+        p(t[9], t[10], t[11]),
+    ])
 }
 
 /// λ's planes of s, t and q (varyings `to`, `to + 1`, `to + 3`): constant, x step, y term
@@ -1047,5 +1192,110 @@ mod tests {
                 "round {round}: {got:?} {want:?}"
             );
         }
+    }
+
+    /// [`FusedSpan::quads_select`] (the row's quads' level choice, computed eight quads at a
+    /// time) against [`Sampler::select_lanes`] of [`Sampler::quad_lambda_lanes`], bit for bit
+    /// on every lane: mipmapped textures under each MIN filter, random planes (some terms
+    /// NaN, infinite or zero), rows from an odd or even x with groups in order (eight pixels
+    /// on, now and then sixteen or more), now and then out of order or before the row's
+    /// first quad, and a new row.
+    #[test]
+    fn fused_quads_select_is_select_lanes_bit_for_bit() {
+        if !crate::cpu::lanes::has_avx2() {
+            return;
+        }
+        let mins = [
+            gl::NEAREST_MIPMAP_NEAREST,
+            gl::LINEAR_MIPMAP_NEAREST,
+            gl::NEAREST_MIPMAP_LINEAR,
+            gl::LINEAR_MIPMAP_LINEAR,
+        ];
+        let mut g = Gen(57);
+        let mut checked = 0;
+        for round in 0..1500 {
+            let (w, h) = (
+                [8, 64][(g.next() % 2) as usize],
+                [4, 32][(g.next() % 2) as usize],
+            );
+            let mut obj = TexObject {
+                min_filter: mins[(g.next() % 4) as usize],
+                mag_filter: [gl::NEAREST, gl::LINEAR][(g.next() % 2) as usize],
+                ..TexObject::default()
+            };
+            let (mut lw, mut lh, mut n) = (w, h, 0);
+            loop {
+                if let Some(l) = obj.levels.get_mut(n) {
+                    *l = Some(Level {
+                        depth: 1,
+                        width: lw,
+                        height: lh,
+                        internal_format: gl::RGBA as i32,
+                        base: gl::RGBA,
+                        texels: vec![[0.5f32; 4]; (lw * lh) as usize].into(),
+                    });
+                }
+                if lw == 1 && lh == 1 {
+                    break;
+                }
+                (lw, lh, n) = ((lw / 2).max(1), (lh / 2).max(1), n + 1);
+            }
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            state.enables.texture_2d[0] = true;
+            let Some(s) = Sampler::new(&state, 0) else {
+                panic!("complete");
+            };
+            let to = 4;
+            let mut planes: Vec<f32> = (0..3 + 3 * 8)
+                .map(|k| {
+                    let d = [1e-3, 3e-2, 0.3, 2.0][(g.next() % 4) as usize];
+                    if k % 3 == 0 {
+                        g.mostly_unit()
+                    } else {
+                        g.mostly_unit() * d
+                    }
+                })
+                .collect();
+            if g.next() % 5 == 0 {
+                let k = 3 + 3 * to + (g.next() % 12) as usize;
+                planes[k] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0, -0.0]
+                    [(g.next() % 5) as usize];
+            }
+            let ox = (g.next() % 300) as i32 - 100;
+            let mut qy = ((g.next() % 200) as i32 - 50) as f32;
+            let Some(mut fs) = FusedSpan::new(&s, to, &planes, 0, 0.0, ox, qy) else {
+                panic!("the fused route covers this sampler");
+            };
+            let mut x = (g.next() % 400) as i32 - 100;
+            for step in 0..12 {
+                if step == 6 && g.next() % 2 == 0 {
+                    // Another row (the quads' choice starts again).
+                    qy = ((g.next() % 200) as i32 - 50) as f32;
+                    fs.row(0.0, qy);
+                }
+                // SAFETY: the CPU has AVX2 (checked above).
+                let got = unsafe { fs.quads_select(x) };
+                let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(ox) as f32);
+                let want = s.select_lanes(&s.quad_lambda_lanes(&planes, to, qx, qy));
+                if let Some((la, lin, f)) = got {
+                    checked += 1;
+                    assert!(
+                        la == want.0
+                            && lin == want.1
+                            && f.map(f32::to_bits) == want.2.map(f32::to_bits),
+                        "round {round} x {x}: {la:?} {lin:#x} {f:?}, {want:?}"
+                    );
+                }
+                x += match g.next() % 8 {
+                    0 => 16,
+                    1 => 40,
+                    2 => -8,
+                    3 => -((g.next() % 30) as i32),
+                    _ => 8,
+                };
+            }
+        }
+        assert!(checked > 10000, "{checked} groups from the quads");
     }
 }
