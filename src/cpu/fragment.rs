@@ -104,15 +104,22 @@ struct TexGroup<'a> {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,popcnt")]
 #[inline(never)]
-unsafe fn fused_span(
+unsafe fn fused_span<'s>(
     bufs: &mut TileBufs,
-    tx: &Sampler,
+    tx: &'s Sampler,
     to: usize,
-    planes: &[f32],
+    planes: &'s [f32],
     a: &FusedArgs,
+    slot: &mut FusedSlot<'s>,
 ) -> bool {
-    let Some(mut fs) = super::texture::FusedSpan::new(tx, to, planes, a.nflat, a.fy, a.ox, a.qy)
-    else {
+    // The primitive's route from an earlier span, moved to this row (the levels looked up
+    // stay, as `fused_tex_rows`), else set up here and kept for the primitive's next spans.
+    if let Some(fs) = slot.as_mut() {
+        fs.row(a.fy, a.qy);
+    } else {
+        *slot = super::texture::FusedSpan::new(tx, to, planes, a.nflat, a.fy, a.ox, a.qy);
+    }
+    let Some(fs) = slot.as_mut() else {
         return false;
     };
     let mut g = 0;
@@ -128,6 +135,12 @@ unsafe fn fused_span(
     }
     true
 }
+
+/// The fused route ([`FusedSpan`]) of one primitive's spans in one tile, set up by its first
+/// fused span and moved to each next span's row (`FragCtx::tri_span_row`); None before.
+///
+/// [`FusedSpan`]: super::texture::FusedSpan
+pub type FusedSlot<'a> = Option<super::texture::FusedSpan<'a>>;
 
 /// `FragCtx::crossbar` of the units `tex`.
 pub fn crossbar(tex: &[Option<(&Sampler, usize)>]) -> bool {
@@ -506,6 +519,8 @@ impl FragCtx<'_> {
 
     /// A triangle span: pixels `x0..=x1` of row `y` (all inside the tile), `planes` the
     /// primitive's pool floats (1/w plane then one plane per varying, relative to its bbox corner).
+    /// Its fused route set up for this span alone (the tests' reference for `tri_span_row`).
+    #[cfg(test)]
     pub fn tri_span(
         &self,
         bufs: &mut TileBufs,
@@ -515,13 +530,26 @@ impl FragCtx<'_> {
         x0: i32,
         x1: i32,
     ) {
+        self.tri_span_row(bufs, p, planes, [y, x0, x1], &mut None);
+    }
+
+    /// `tri_span` of row `[y, x0, x1]` of a primitive whose spans in this tile share `slot`
+    /// (None before the first): the fused route is set up once for them, the same bits.
+    pub fn tri_span_row<'s>(
+        &'s self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &'s [f32],
+        row: [i32; 3],
+        slot: &mut FusedSlot<'s>,
+    ) {
         #[cfg(target_arch = "x86_64")]
         if super::lanes::has_avx2() {
             // SAFETY: the CPU has AVX2 and POPCNT.
-            unsafe { self.tri_span_avx2(bufs, p, planes, y, x0, x1) };
+            unsafe { self.tri_span_avx2(bufs, p, planes, row, slot) };
             return;
         }
-        self.tri_span_in(bufs, p, planes, y, x0, x1);
+        self.tri_span_in(bufs, p, planes, row, slot);
     }
 
     /// `tri_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
@@ -530,28 +558,26 @@ impl FragCtx<'_> {
     /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
-    unsafe fn tri_span_avx2(
-        &self,
+    unsafe fn tri_span_avx2<'s>(
+        &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
-        planes: &[f32],
-        y: i32,
-        x0: i32,
-        x1: i32,
+        planes: &'s [f32],
+        row: [i32; 3],
+        slot: &mut FusedSlot<'s>,
     ) {
-        self.tri_span_in(bufs, p, planes, y, x0, x1);
+        self.tri_span_in(bufs, p, planes, row, slot);
     }
 
-    /// The body of `tri_span`.
+    /// The body of `tri_span_row`.
     #[inline(always)]
-    fn tri_span_in(
-        &self,
+    fn tri_span_in<'s>(
+        &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
-        planes: &[f32],
-        y: i32,
-        x0: i32,
-        x1: i32,
+        planes: &'s [f32],
+        [y, x0, x1]: [i32; 3],
+        slot: &mut FusedSlot<'s>,
     ) {
         if p.flags & (F_AAPOINT | F_AALINE) != 0 {
             return self.aa_rows(bufs, p, planes, &[[y, x0, x1]]);
@@ -685,11 +711,13 @@ impl FragCtx<'_> {
                     qy,
                 };
                 // SAFETY: the CPU has AVX2 (`has_avx2`).
-                if unsafe { fused_span(bufs, tx, to, planes, &span) } {
+                if unsafe { fused_span(bufs, tx, to, planes, &span, slot) } {
                     return;
                 }
             }
         }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = slot;
         let mut vl = [[0.0f32; LANES]; MAXV];
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         // Each quad's λ once (not once per lane): computed as the groups reach it.
@@ -2546,7 +2574,7 @@ mod tests {
             let y = ty + (g.next() % TILE as u64) as i32;
             let x0 = tx + (g.next() % TILE as u64) as i32;
             let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
-            let run = |lanes: bool| {
+            let run = |lanes: bool, rows: &[[i32; 3]], shared: bool| {
                 let (mut c, mut c2, mut d, mut s) = (
                     color.clone(),
                     color.clone(),
@@ -2563,7 +2591,15 @@ mod tests {
                     samples: 0,
                 };
                 if lanes {
-                    f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                    // One fused route for all the rows (`raster::tri`'s) or one a row.
+                    let mut slot = None;
+                    for &[y, x0, x1] in rows {
+                        if shared {
+                            f.tri_span_row(&mut bufs, &p, &planes, [y, x0, x1], &mut slot);
+                        } else {
+                            f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                        }
+                    }
                 } else {
                     let (ox, oy) = (p.bbox[0], p.bbox[1]);
                     let fy = (y - oy) as f32;
@@ -2599,18 +2635,43 @@ mod tests {
                 let samples = bufs.samples;
                 (c, c2, d, samples)
             };
-            let (got, want) = (run(true), run(false));
+            let one = [[y, x0, x1]];
+            let (got, want) = (run(true, &one, false), run(false, &one, false));
             assert!(
                 got == want,
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1}"
+            );
+            // Several rows of the primitive (repeats and both directions among them) through
+            // one shared fused route against a route set up for each span.
+            let mut r = Gen(2000 + round as u64);
+            let rows: Vec<[i32; 3]> = (0..5)
+                .map(|_| {
+                    let y = ty + (r.next() % TILE as u64) as i32;
+                    let x0 = tx + (r.next() % TILE as u64) as i32;
+                    [
+                        y,
+                        x0,
+                        (x0 + (r.next() % 64) as i32).min(tx + TILE as i32 - 1),
+                    ]
+                })
+                .collect();
+            let shared = run(true, &rows, true);
+            assert!(
+                shared == run(true, &rows, false),
+                "round {round}: shared fused route differs, rows {rows:?}"
             );
             // The AVX2 routes (the fused one among them) against the SSE2 ones.
             #[cfg(target_arch = "x86_64")]
             if crate::cpu::lanes::has_avx2() {
                 crate::cpu::lanes::NO_AVX2.with(|c| c.set(true));
-                let sse2 = run(true);
+                let sse2 = run(true, &one, false);
+                let sse2_rows = run(true, &rows, true);
                 crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
                 assert!(got == sse2, "round {round}: AVX2 and SSE2 differ");
+                assert!(
+                    shared == sse2_rows,
+                    "round {round}: rows: AVX2 and SSE2 differ"
+                );
             }
             // The same span with per-fragment operations (`ops_rows`'s textured route,
             // `tex_span`) against each fragment through `full`.

@@ -95,7 +95,11 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         });
         return ctx.ops_rows(ops, bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
-    spans(p, r, |y, l, h| ctx.tri_span(bufs, p, planes, y, l, h));
+    // One fused route for the primitive's spans (`FusedSlot`).
+    let mut fused = None;
+    spans(p, r, |y, l, h| {
+        ctx.tri_span_row(bufs, p, planes, [y, l, h], &mut fused)
+    });
 }
 
 /// The covered run of each row of `r` (the triangle's bounding box clipped to the tile) in
