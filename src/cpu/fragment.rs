@@ -23,6 +23,10 @@ use super::vertex::Lighting;
 use crate::gl;
 use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
 
+/// The depth functions the AVX2 row routes compile in (`FragCtx::depth_fast`).
+const LESS: u32 = gl::LESS;
+const LEQUAL: u32 = gl::LEQUAL;
+
 /// The fragment-stage state of one flush.
 #[derive(Clone, Debug)]
 pub struct FragCtx<'a> {
@@ -820,12 +824,24 @@ impl FragCtx<'_> {
     ) {
         // The common depth tests chosen once for the call (each group's compare then known
         // when `smooth_row` is compiled), any other through `test` per group.
-        const LESS: u32 = crate::gl::LESS;
-        const LEQUAL: u32 = crate::gl::LEQUAL;
-        match (self.depth_test, self.depth_func, self.depth_mask) {
-            (true, LESS, true) => self.smooth_rows_on::<true, LESS>(bufs, p, pl, rows),
-            (true, LEQUAL, true) => self.smooth_rows_on::<true, LEQUAL>(bufs, p, pl, rows),
+        match self.depth_fast() {
+            LESS => self.smooth_rows_on::<true, LESS>(bufs, p, pl, rows),
+            LEQUAL => self.smooth_rows_on::<true, LEQUAL>(bufs, p, pl, rows),
             _ => self.smooth_rows_on::<true, 0>(bufs, p, pl, rows),
+        }
+    }
+
+    /// The depth test when it is one of the common ones, chosen once per call by the AVX2
+    /// routes (`smooth_rows_avx2`, `plain_rows_avx2`, `tests_rows_avx2`) so that each group's
+    /// compare is known when their loops are compiled: on with the depth mask true and
+    /// DepthFunc LESS or LEQUAL gives that function, anything else 0 (then each group reads
+    /// the context's state).
+    #[inline(always)]
+    fn depth_fast(&self) -> u32 {
+        match (self.depth_test, self.depth_func, self.depth_mask) {
+            (true, LESS, true) => LESS,
+            (true, LEQUAL, true) => LEQUAL,
+            _ => 0,
         }
     }
 
@@ -1289,10 +1305,34 @@ impl FragCtx<'_> {
         i0: usize,
         m: u8,
     ) -> u8 {
+        self.tests_group_f::<AVX2, 0>(side, bufs, zrow, dz, fx0, i0, m)
+    }
+
+    /// `tests_group_on` with `F` other than 0 the depth test known for the whole call (on,
+    /// DepthFunc `F`, the depth mask true: `depth_fast`), so that each group's compare is
+    /// chosen when the caller is compiled rather than by a jump per group; `F` = 0 reads the
+    /// context's depth state.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn tests_group_f<const AVX2: bool, const F: u32>(
+        &self,
+        side: Option<&super::fragops::StencilSide>,
+        bufs: &mut TileBufs,
+        zrow: f32,
+        dz: f32,
+        fx0: i32,
+        i0: usize,
+        m: u8,
+    ) -> u8 {
         use super::lanes::{depth_lanes, lane_x, lin_lanes};
         use super::oplanes as ol;
+        let (depth_test, depth_func, depth_mask) = if F != 0 {
+            (true, F, true)
+        } else {
+            (self.depth_test, self.depth_func, self.depth_mask)
+        };
         let d = || {
-            if self.depth_test {
+            if depth_test {
                 depth_lanes(lin_lanes(zrow, dz, &lane_x(fx0)))
             } else {
                 [0; LANES]
@@ -1303,29 +1343,23 @@ impl FragCtx<'_> {
             #[cfg(target_arch = "x86_64")]
             Some(side) if AVX2 => {
                 let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
-                let depth = self
-                    .depth_test
-                    .then_some((self.depth_func, self.depth_mask));
+                let depth = depth_test.then_some((depth_func, depth_mask));
                 // SAFETY: `AVX2` is true only in `plain_rows_avx2`, `tests_rows_avx2` and
                 // `fused_tex_rows`, which run where the CPU has AVX2.
                 unsafe { ol::avx2::stencil_depth(side, depth, st, dp, zrow, dz, fx0, m) }
             }
             Some(side) => {
                 let st = bufs.stencil.get_mut(i0..).unwrap_or_default();
-                let depth = self
-                    .depth_test
-                    .then_some((self.depth_func, self.depth_mask));
+                let depth = depth_test.then_some((depth_func, depth_mask));
                 ol::stencil_depth(side, depth, st, dp, d(), m)
             }
             #[cfg(target_arch = "x86_64")]
-            None if AVX2 && self.depth_test => {
+            None if AVX2 && depth_test => {
                 // SAFETY: `AVX2` is true only in `plain_rows_avx2`, `tests_rows_avx2` and
                 // `fused_tex_rows`, which run where the CPU has AVX2.
-                unsafe {
-                    ol::avx2::depth_test(self.depth_func, self.depth_mask, dp, zrow, dz, fx0, m)
-                }
+                unsafe { ol::avx2::depth_test(depth_func, depth_mask, dp, zrow, dz, fx0, m) }
             }
-            None if self.depth_test => ol::depth_test(self.depth_func, self.depth_mask, dp, d(), m),
+            None if depth_test => ol::depth_test(depth_func, depth_mask, dp, d(), m),
             None => m,
         };
         if self.samples {
@@ -1436,7 +1470,7 @@ impl FragCtx<'_> {
             unsafe { self.tests_rows_avx2(ops, bufs, p, rows) };
             return;
         }
-        self.tests_rows_in::<false>(ops, bufs, p, rows);
+        self.tests_rows_in::<false, 0>(ops, bufs, p, rows);
     }
 
     /// `tests_rows` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
@@ -1446,12 +1480,17 @@ impl FragCtx<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     unsafe fn tests_rows_avx2(&self, ops: &Ops, bufs: &mut TileBufs, p: &RPrim, rows: &[[i32; 3]]) {
-        self.tests_rows_in::<true>(ops, bufs, p, rows);
+        // The common depth tests chosen once for the call (`depth_fast`).
+        match self.depth_fast() {
+            LESS => self.tests_rows_in::<true, LESS>(ops, bufs, p, rows),
+            LEQUAL => self.tests_rows_in::<true, LEQUAL>(ops, bufs, p, rows),
+            _ => self.tests_rows_in::<true, 0>(ops, bufs, p, rows),
+        }
     }
 
-    /// The body of `tests_rows`.
+    /// The body of `tests_rows` (`F` as `tests_group_f`'s).
     #[inline(always)]
-    fn tests_rows_in<const AVX2: bool>(
+    fn tests_rows_in<const AVX2: bool, const F: u32>(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -1472,7 +1511,7 @@ impl FragCtx<'_> {
             while c < n {
                 let m = ((live >> c) & 0xFF) as u8;
                 if m != 0 {
-                    self.tests_group_on::<AVX2>(
+                    self.tests_group_f::<AVX2, F>(
                         side,
                         bufs,
                         zrow,
@@ -1507,7 +1546,7 @@ impl FragCtx<'_> {
             unsafe { self.plain_rows_avx2(ops, bufs, p, planes, rows) };
             return;
         }
-        self.plain_rows_in::<false>(ops, bufs, p, planes, rows);
+        self.plain_rows_in::<false, 0>(ops, bufs, p, planes, rows);
     }
 
     /// `plain_rows` compiled for AVX2 and POPCNT: the same operations (the lane code's SSE2
@@ -1525,12 +1564,17 @@ impl FragCtx<'_> {
         planes: &[f32],
         rows: &[[i32; 3]],
     ) {
-        self.plain_rows_in::<true>(ops, bufs, p, planes, rows);
+        // The common depth tests chosen once for the call (`depth_fast`).
+        match self.depth_fast() {
+            LESS => self.plain_rows_in::<true, LESS>(ops, bufs, p, planes, rows),
+            LEQUAL => self.plain_rows_in::<true, LEQUAL>(ops, bufs, p, planes, rows),
+            _ => self.plain_rows_in::<true, 0>(ops, bufs, p, planes, rows),
+        }
     }
 
-    /// The body of `plain_rows`.
+    /// The body of `plain_rows` (`F` as `tests_group_f`'s).
     #[inline(always)]
-    fn plain_rows_in<const AVX2: bool>(
+    fn plain_rows_in<const AVX2: bool, const F: u32>(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -1609,7 +1653,7 @@ impl FragCtx<'_> {
                     continue;
                 }
                 if tests_first {
-                    m = self.tests_group_on::<AVX2>(side, bufs, zrow, dz, fx0, i0, m);
+                    m = self.tests_group_f::<AVX2, F>(side, bufs, zrow, dz, fx0, i0, m);
                     if m == 0 || !writes_color {
                         continue;
                     }
@@ -1655,7 +1699,7 @@ impl FragCtx<'_> {
                     }
                 }
                 if !tests_first {
-                    m = self.tests_group_on::<AVX2>(side, bufs, zrow, dz, fx0, i0, m);
+                    m = self.tests_group_f::<AVX2, F>(side, bufs, zrow, dz, fx0, i0, m);
                     if m == 0 || !writes_color {
                         continue;
                     }
@@ -3055,7 +3099,7 @@ mod tests {
                 write,
             };
             let stipple = (g.next() % 4 == 0).then(|| std::array::from_fn(|_| g.next() as u32));
-            let f = FragCtx {
+            let mut f = FragCtx {
                 depth_test: g.next() % 4 != 0,
                 depth_func: g.pick(&FUNCS),
                 depth_mask: g.next() % 2 == 0,
@@ -3076,6 +3120,13 @@ mod tests {
                 tex: [None; MAX_TEXTURE_UNITS],
                 crossbar: false,
             };
+            // One round in four the depth tests the AVX2 routes compile in (`depth_fast`:
+            // LESS or LEQUAL, the depth mask true), against the SSE2 routes' per-group choice.
+            if round % 4 == 3 {
+                f.depth_test = true;
+                f.depth_func = [gl::LESS, gl::LEQUAL][round / 4 % 2];
+                f.depth_mask = true;
+            }
             let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
             let flags = [0, F_FLAT, F_BACK, F_LINE, F_FLAT | F_BACK][(g.next() % 5) as usize];
             let bbox = [
