@@ -244,31 +244,25 @@ fn cube_edges_and_corners_pick_the_scalar_face() {
     }
 }
 
-/// Every COMBINE function, source, operand and scale on 1D, 2D, 3D and cube textures (depth
-/// ones included): `texels_lanes` then `env_lanes_with` hold what `shade` gives for each
-/// lane's fragment with its own previous and primary colours.
-#[test]
-fn combine_lanes_are_shade_bit_for_bit() {
-    let mut next = lcg(71);
-    let funcs = [
-        gl::REPLACE,
-        gl::MODULATE,
-        gl::ADD,
-        gl::ADD_SIGNED,
-        gl::INTERPOLATE,
-        gl::SUBTRACT,
-        gl::DOT3_RGB,
-        gl::DOT3_RGBA,
-    ];
-    let alpha_funcs = [
-        gl::REPLACE,
-        gl::MODULATE,
-        gl::ADD,
-        gl::ADD_SIGNED,
-        gl::INTERPOLATE,
-        gl::SUBTRACT,
-    ];
-    let sources = [gl::CONSTANT, gl::PRIMARY_COLOR, gl::PREVIOUS, gl::TEXTURE];
+/// COMBINE's eight RGB functions; the alpha ones are the first six.
+const COMBINE_FUNCS: [u32; 8] = [
+    gl::REPLACE,
+    gl::MODULATE,
+    gl::ADD,
+    gl::ADD_SIGNED,
+    gl::INTERPOLATE,
+    gl::SUBTRACT,
+    gl::DOT3_RGB,
+    gl::DOT3_RGBA,
+];
+
+/// The COMBINE state of round `round`: every RGB function in turn and every alpha function
+/// after it, sources from `sources`, operands and scales drawn from `next`.
+fn random_combine(
+    round: usize,
+    sources: &[u32],
+    next: &mut dyn FnMut() -> u64,
+) -> crate::texture::Combine {
     let operands_rgb = [
         gl::SRC_COLOR,
         gl::ONE_MINUS_SRC_COLOR,
@@ -277,6 +271,31 @@ fn combine_lanes_are_shade_bit_for_bit() {
     ];
     let operands_a = [gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA];
     let scales = [1.0, 2.0, 4.0];
+    let n = COMBINE_FUNCS.len();
+    let mut pick = |v: &[u32]| v[(next() % v.len() as u64) as usize];
+    let src_rgb = std::array::from_fn(|_| pick(sources));
+    let src_alpha = std::array::from_fn(|_| pick(sources));
+    let operand_rgb = std::array::from_fn(|_| pick(&operands_rgb));
+    let operand_alpha = std::array::from_fn(|_| pick(&operands_a));
+    crate::texture::Combine {
+        rgb: COMBINE_FUNCS[round % n],
+        alpha: COMBINE_FUNCS[(round / n) % 6],
+        src_rgb,
+        src_alpha,
+        operand_rgb,
+        operand_alpha,
+        rgb_scale: scales[(next() % 3) as usize],
+        alpha_scale: scales[(next() % 3) as usize],
+    }
+}
+
+/// Every COMBINE function, source, operand and scale on 1D, 2D, 3D and cube textures (depth
+/// ones included): `texels_lanes` then `env_lanes_with` hold what `shade` gives for each
+/// lane's fragment with its own previous and primary colours.
+#[test]
+fn combine_lanes_are_shade_bit_for_bit() {
+    let mut next = lcg(71);
+    let sources = [gl::CONSTANT, gl::PRIMARY_COLOR, gl::PREVIOUS, gl::TEXTURE];
     let targets = [
         gl::TEXTURE_1D,
         gl::TEXTURE_2D,
@@ -288,17 +307,7 @@ fn combine_lanes_are_shade_bit_for_bit() {
         let target = targets[round % 4];
         let depth = round % 7 == 6 && target != gl::TEXTURE_3D;
         let obj = random_object(target, depth, &mut next);
-        let pick = |next: &mut dyn FnMut() -> u64, v: &[u32]| v[(next() % v.len() as u64) as usize];
-        let combine = crate::texture::Combine {
-            rgb: funcs[round % funcs.len()],
-            alpha: alpha_funcs[(round / funcs.len()) % alpha_funcs.len()],
-            src_rgb: std::array::from_fn(|_| pick(&mut next, &sources)),
-            src_alpha: std::array::from_fn(|_| pick(&mut next, &sources)),
-            operand_rgb: std::array::from_fn(|_| pick(&mut next, &operands_rgb)),
-            operand_alpha: std::array::from_fn(|_| pick(&mut next, &operands_a)),
-            rgb_scale: scales[(next() % 3) as usize],
-            alpha_scale: scales[(next() % 3) as usize],
-        };
+        let combine = random_combine(round, &sources, &mut next);
         let s = sampler_on(target, obj, gl::COMBINE, combine);
         assert!(s.lanes_ok());
         for _ in 0..4 {
@@ -338,16 +347,6 @@ fn combine_lanes_are_shade_bit_for_bit() {
 #[test]
 fn combine_lanes_on_awkward_values_are_shade_texel_bit_for_bit() {
     let mut next = lcg(313);
-    let funcs = [
-        gl::REPLACE,
-        gl::MODULATE,
-        gl::ADD,
-        gl::ADD_SIGNED,
-        gl::INTERPOLATE,
-        gl::SUBTRACT,
-        gl::DOT3_RGB,
-        gl::DOT3_RGBA,
-    ];
     let sources = [
         gl::CONSTANT,
         gl::PRIMARY_COLOR,
@@ -355,13 +354,6 @@ fn combine_lanes_on_awkward_values_are_shade_texel_bit_for_bit() {
         gl::TEXTURE,
         0,
     ];
-    let operands_rgb = [
-        gl::SRC_COLOR,
-        gl::ONE_MINUS_SRC_COLOR,
-        gl::SRC_ALPHA,
-        gl::ONE_MINUS_SRC_ALPHA,
-    ];
-    let operands_a = [gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA];
     let odd = [
         f32::NAN,
         f32::INFINITY,
@@ -378,17 +370,7 @@ fn combine_lanes_on_awkward_values_are_shade_texel_bit_for_bit() {
     for round in 0..3000 {
         let depth = round % 5 == 4;
         let obj = random_object(gl::TEXTURE_2D, depth, &mut next);
-        let pick = |next: &mut dyn FnMut() -> u64, v: &[u32]| v[(next() % v.len() as u64) as usize];
-        let combine = crate::texture::Combine {
-            rgb: funcs[round % funcs.len()],
-            alpha: funcs[(round / funcs.len()) % 6],
-            src_rgb: std::array::from_fn(|_| pick(&mut next, &sources)),
-            src_alpha: std::array::from_fn(|_| pick(&mut next, &sources)),
-            operand_rgb: std::array::from_fn(|_| pick(&mut next, &operands_rgb)),
-            operand_alpha: std::array::from_fn(|_| pick(&mut next, &operands_a)),
-            rgb_scale: [1.0, 2.0, 4.0][(next() % 3) as usize],
-            alpha_scale: [1.0, 2.0, 4.0][(next() % 3) as usize],
-        };
+        let combine = random_combine(round, &sources, &mut next);
         let mut s = sampler_on(gl::TEXTURE_2D, obj, gl::COMBINE, combine);
         if depth {
             s.depth_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][round % 3];
