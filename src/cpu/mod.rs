@@ -55,6 +55,7 @@ pub mod fragment;
 pub mod fragops;
 pub mod framebuffer;
 pub mod lanes;
+pub mod libm8;
 mod line;
 pub mod oplanes;
 pub mod pixels;

@@ -20,6 +20,7 @@
 
 use super::fragops::{compare, BlendEval, FogEval, StencilSide};
 use super::lanes::LANES;
+use super::libm8::expf;
 use crate::gl;
 
 /// One float a lane.
@@ -97,8 +98,8 @@ pub fn fog_factor(fog: &FogEval, coord: F, live: u8) -> F {
 }
 
 /// `exp` of the lanes of `live` (the others unspecified): `f32::exp`'s bits. Where libm's
-/// `expf` is glibc's FMA variant (`expf8_fma`'s self-check, once) the lanes in its main range
-/// come from `expf8_fma` eight at a time, the others from libm; elsewhere one libm call a
+/// `expf` is glibc's FMA variant (`libm8::expf::expf8`'s self-check, once) the lanes in its main range
+/// come from `libm8::expf::expf8` eight at a time, the others from libm; elsewhere one libm call a
 /// lane. A function of its own, so that only this loop waits on the calls (inlined into the
 /// group loop, every call made the caller spill and reload a dozen vector registers, ≈25
 /// instructions a call).
@@ -107,9 +108,9 @@ fn exp_live(arg: &F, live: u8) -> F {
     let mut out = [0.0; LANES];
     let mut m = live;
     #[cfg(target_arch = "x86_64")]
-    if expf_fma::usable() {
+    if expf::usable() {
         // SAFETY: `usable` is true only where the CPU has AVX2 and FMA.
-        m &= unsafe { expf_fma::expf8(arg, &mut out) };
+        m &= unsafe { expf::expf8(arg, &mut out) };
     }
     while m != 0 {
         let l = m.trailing_zeros() as usize;
@@ -925,150 +926,6 @@ fn blend_group<const KONST: bool>(
     false
 }
 
-/// glibc's `expf` (`sysdeps/ieee754/flt-32/e_expf.c`, the build `__expf_fma` that glibc's
-/// ifunc picks on CPUs with AVX2 and FMA) on eight lanes, four doubles a register: the same
-/// table, constants, operations and fused multiply-adds in the same order (the compiler's
-/// contractions in that build read off its code: `z = InvLn2N·x + SHIFT` fused,
-/// `r = InvLn2N·x − kd` fused, both polynomial steps fused), so the same bits wherever libm's
-/// `expf` is that function. Whether it is, is checked once at run time against `f32::exp`
-/// (`usable`); if not, every lane goes to libm. Lanes outside the main range (|x| ≥ 85.33,
-/// infinities, NaN) are left to libm too.
-#[cfg(target_arch = "x86_64")]
-mod expf_fma {
-    use super::{F, LANES};
-    use std::sync::atomic::{AtomicU8, Ordering};
-
-    /// 2^(i/32) as doubles, their exponent bits taken out (glibc's `__exp2f_data.tab`).
-    const TAB: [u64; 32] = [
-        0x3ff0000000000000,
-        0x3fefd9b0d3158574,
-        0x3fefb5586cf9890f,
-        0x3fef9301d0125b51,
-        0x3fef72b83c7d517b,
-        0x3fef54873168b9aa,
-        0x3fef387a6e756238,
-        0x3fef1e9df51fdee1,
-        0x3fef06fe0a31b715,
-        0x3feef1a7373aa9cb,
-        0x3feedea64c123422,
-        0x3feece086061892d,
-        0x3feebfdad5362a27,
-        0x3feeb42b569d4f82,
-        0x3feeab07dd485429,
-        0x3feea47eb03a5585,
-        0x3feea09e667f3bcd,
-        0x3fee9f75e8ec5f74,
-        0x3feea11473eb0187,
-        0x3feea589994cce13,
-        0x3feeace5422aa0db,
-        0x3feeb737b0cdc5e5,
-        0x3feec49182a3f090,
-        0x3feed503b23e255d,
-        0x3feee89f995ad3ad,
-        0x3feeff76f2fb5e47,
-        0x3fef199bdd85529c,
-        0x3fef3720dcef9069,
-        0x3fef5818dcfba487,
-        0x3fef7c97337b9b5f,
-        0x3fefa4afa2a490da,
-        0x3fefd0765b6e4540,
-    ];
-    /// 32/ln 2.
-    const INV_LN2_N: u64 = 0x40471547652b82fe;
-    /// 1.5·2^52: adding it rounds to an integer in the low bits.
-    const SHIFT: u64 = 0x4338000000000000;
-    /// The polynomial's coefficients (`C[0]`, `C[1]`, `C[2]` of `__exp2f_data.poly_scaled`).
-    const C: [u64; 3] = [0x3ebc6af84b912394, 0x3f2ebfce50fac4f3, 0x3f962e42ff0c52d6];
-
-    /// 0: not checked yet, 1: the kernel is libm's `expf`, 2: it is not (or no AVX2/FMA).
-    static STATE: AtomicU8 = AtomicU8::new(0);
-
-    /// Whether `expf8` may stand for libm's `expf`: the CPU has AVX2 and FMA, and the kernel
-    /// gives `f32::exp`'s bits on 4096 arguments spread over its range (checked once).
-    pub fn usable() -> bool {
-        match STATE.load(Ordering::Relaxed) {
-            1 => true,
-            2 => false,
-            _ => {
-                let ok = is_x86_feature_detected!("avx2")
-                    && is_x86_feature_detected!("fma")
-                    && self_check();
-                STATE.store(if ok { 1 } else { 2 }, Ordering::Relaxed);
-                ok
-            }
-        }
-    }
-
-    fn self_check() -> bool {
-        let mut x = 0x9E37_79B9u32;
-        (0..512).all(|i| {
-            let a: F = std::array::from_fn(|l| {
-                x ^= x << 13;
-                x ^= x >> 17;
-                x ^= x << 5;
-                // Every eighth lane evenly over the range, the others any main-range bits.
-                if l == 0 {
-                    -87.0 + 174.0 * i as f32 / 512.0
-                } else {
-                    f32::from_bits(x & 0xC2AF_FFFF)
-                }
-            });
-            let mut out = [0.0; LANES];
-            // SAFETY: called only after AVX2 and FMA were detected (`usable`).
-            let left = unsafe { expf8(&a, &mut out) };
-            (0..LANES).all(|l| left & (1 << l) != 0 || out[l].to_bits() == a[l].exp().to_bits())
-        })
-    }
-
-    /// `expf` of every lane in the main range into `out`; returns the mask of the lanes left
-    /// to libm (|x| ≥ 85.33, ±∞, NaN), whose `out` is unspecified.
-    ///
-    /// # Safety
-    /// The CPU must have AVX2 and FMA.
-    #[target_feature(enable = "avx2,fma")]
-    pub unsafe fn expf8(x: &F, out: &mut F) -> u8 {
-        use std::arch::x86_64::*;
-        let mut special = 0u8;
-        for (h, (xs, os)) in x.chunks_exact(4).zip(out.chunks_exact_mut(4)).enumerate() {
-            // SAFETY: AVX2 and FMA are present (the caller's promise); the loads
-            // and stores touch four f32 of a four-element chunk; the gather's indices are
-            // masked to 0..32, inside `TAB`.
-            unsafe {
-                let xf = _mm_loadu_ps(xs.as_ptr());
-                // abstop12(x) > abstop12(85.33…): glibc's test for its special cases.
-                let top = _mm_and_si128(
-                    _mm_srli_epi32(_mm_castps_si128(xf), 20),
-                    _mm_set1_epi32(0x7ff),
-                );
-                let big = _mm_cmpgt_epi32(top, _mm_set1_epi32(0x42a));
-                special |= (_mm_movemask_ps(_mm_castsi128_ps(big)) as u8) << (4 * h);
-                let xd = _mm256_cvtps_pd(xf);
-                let inv = _mm256_set1_pd(f64::from_bits(INV_LN2_N));
-                let shift = _mm256_set1_pd(f64::from_bits(SHIFT));
-                let kz = _mm256_fmadd_pd(inv, xd, shift);
-                let ki = _mm256_castpd_si256(kz);
-                let kd = _mm256_sub_pd(kz, shift);
-                let r = _mm256_fmsub_pd(inv, xd, kd);
-                let idx = _mm256_and_si256(ki, _mm256_set1_epi64x(31));
-                let t = _mm256_i64gather_epi64::<8>(TAB.as_ptr().cast::<i64>(), idx);
-                let s = _mm256_castsi256_pd(_mm256_add_epi64(t, _mm256_slli_epi64::<47>(ki)));
-                let z = _mm256_fmadd_pd(
-                    r,
-                    _mm256_set1_pd(f64::from_bits(C[0])),
-                    _mm256_set1_pd(f64::from_bits(C[1])),
-                );
-                let r2 = _mm256_mul_pd(r, r);
-                let y =
-                    _mm256_fmadd_pd(r, _mm256_set1_pd(f64::from_bits(C[2])), _mm256_set1_pd(1.0));
-                let y = _mm256_fmadd_pd(z, r2, y);
-                let y = _mm256_mul_pd(y, s);
-                _mm_storeu_ps(os.as_mut_ptr(), _mm256_cvtpd_ps(y));
-            }
-        }
-        special
-    }
-}
-
 /// Eight-lane AVX2 versions of the group kernels above, for `FragCtx::plain_rows_avx2`: each
 /// lane computes the same operations in the same order as the SSE2 kernel it replaces
 /// (`clamp01`, `depth_lanes` of `lin_lanes` with `depth_test`, `fog`, `store_unorm8`,
@@ -1469,7 +1326,7 @@ mod tests {
         }
     }
 
-    /// `expf_fma::expf8` against libm's `expf` (`f32::exp`) bit for bit on 400 000 lanes: any
+    /// `libm8::expf::expf8` against libm's `expf` (`f32::exp`) bit for bit on 400 000 lanes: any
     /// bits (NaN, ±∞, denormals, huge), the main range's bits, and arguments the fog scene
     /// gives (−density·c, −(density·c)²). Where the kernel is not usable (no AVX2/FMA, or
     /// libm's `expf` is another function) `exp_live` alone is compared.
@@ -1477,7 +1334,7 @@ mod tests {
     #[test]
     fn expf8_is_libm_expf_bit_for_bit() {
         let mut g = Gen(17);
-        let usable = super::expf_fma::usable();
+        let usable = super::expf::usable();
         for round in 0..50_000 {
             let a: F = std::array::from_fn(|_| match g.next() % 4 {
                 0 => f32::from_bits(g.next() as u32),
@@ -1496,7 +1353,7 @@ mod tests {
             if usable {
                 let mut out = [0.0; LANES];
                 // SAFETY: `usable` says AVX2 and FMA are present.
-                let left = unsafe { super::expf_fma::expf8(&a, &mut out) };
+                let left = unsafe { super::expf::expf8(&a, &mut out) };
                 for l in 0..LANES {
                     let top = (a[l].to_bits() >> 20) & 0x7ff;
                     assert_eq!(left & (1 << l) != 0, top > 0x42a, "{}", a[l]);
@@ -1514,7 +1371,7 @@ mod tests {
     #[test]
     #[ignore]
     fn expf8_every_main_range_argument_is_libm_expf() {
-        if !super::expf_fma::usable() {
+        if !super::expf::usable() {
             return;
         }
         let mut bad = 0u64;
@@ -1524,7 +1381,7 @@ mod tests {
                 let a: F = std::array::from_fn(|l| f32::from_bits(sign | (b + l as u32)));
                 let mut out = [0.0; LANES];
                 // SAFETY: `usable` says AVX2 and FMA are present.
-                unsafe { super::expf_fma::expf8(&a, &mut out) };
+                unsafe { super::expf::expf8(&a, &mut out) };
                 for l in 0..LANES {
                     if out[l].to_bits() != a[l].exp().to_bits() {
                         bad += 1;

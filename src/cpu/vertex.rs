@@ -21,6 +21,7 @@ use lanes::{clamp01, normalize_or_zero, put_arr};
 pub use lanes::{Block, Lanes3, Lanes4, Shaded, LANES};
 
 use super::batch::Batch;
+use super::libm8::powf_lanes;
 use super::setup::{SetupCtx, Win};
 use crate::gl;
 use crate::state::{Material, State, BACK, FRONT, MAX_LIGHTS, MAX_TEXTURE_UNITS};
@@ -297,6 +298,8 @@ impl Lighting {
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     fn eval<const N: usize>(&self, m: &Material, face: usize, pts: &Block<N>, out: &mut Shaded<N>) {
+        // Lane masks (`need`) are u32: checked when the function is instantiated, not at run time.
+        const { assert!(N <= 32) };
         // §2.14.3: COLOR_MATERIAL replaces the tracked property with the vertex colour.
         let tracked = self
             .color_material
@@ -384,14 +387,25 @@ impl Lighting {
                 }
             }
             if let Some(cos_cut) = l.spot_cos {
+                // The spot factor's powers, lanes inside the cone (`need`) at once.
+                let mut base = [0.0f32; N];
+                let mut need = 0u32;
                 for i in 0..N {
                     let sd = l.spot_dir;
                     let cosang = -vp.x[i] * sd.x + -vp.y[i] * sd.y + -vp.z[i] * sd.z;
                     if cosang >= cos_cut {
-                        kf[i] *= cosang.max(0.0).powf(l.spot_exp);
+                        base[i] = cosang.max(0.0);
+                        need |= 1 << i;
                     } else {
                         // Outside the cone the light contributes nothing at all.
                         on[i] = false;
+                    }
+                }
+                let mut pw = [0.0f32; N];
+                powf_lanes(&base, l.spot_exp, need, &mut pw);
+                for i in 0..N {
+                    if need & (1 << i) != 0 {
+                        kf[i] *= pw[i];
                     }
                 }
             }
@@ -421,15 +435,17 @@ impl Lighting {
             let spec_zero = l.spec_zero || (scm_zero && l.spec_finite);
             let may_neglect = !self.separate && l.spec_small && scm_small;
             let mut pw = [0.0f32; N];
+            let mut need = 0u32;
             for i in 0..N {
                 let x = ndh[i];
                 let zero = (x == 0.0 && shininess > 0.0) || (spec_zero && x <= 1.0);
                 let small = may_neglect && negligible(x, shininess, [ad.x[i], ad.y[i], ad.z[i]]);
                 // Specular only where N·L > 0.
                 if ndl[i] > 0.0 && !zero && !small {
-                    pw[i] = x.powf(shininess);
+                    need |= 1 << i;
                 }
             }
+            powf_lanes(&ndh, shininess, need, &mut pw);
             // Branch-free so that it vectorises: every term is computed, then selected.
             let sep = self.separate;
             for i in 0..N {
