@@ -651,12 +651,14 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             View::Sparse | View::Unknown => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         let d = match self.rep {
-            [false, false] => nearest::<false, false>(dt, km, w, h, ss, tt),
-            [false, true] => nearest::<false, true>(dt, km, w, h, ss, tt),
-            [true, false] => nearest::<true, false>(dt, km, w, h, ss, tt),
-            [true, true] => nearest::<true, true>(dt, km, w, h, ss, tt),
+            [false, false] => nearest::<false, false>(dt, w, h, ss, tt),
+            [false, true] => nearest::<false, true>(dt, w, h, ss, tt),
+            [true, false] => nearest::<true, false>(dt, w, h, ss, tt),
+            [true, true] => nearest::<true, true>(dt, w, h, ss, tt),
         };
         Some(compare_pairs(func, d, rr))
     }
@@ -711,7 +713,9 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             _ => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         // The border colour in the base format's components, as `pass_level` gives it to
         // `dense_border` (in both halves: lanes k and k + 4 of a pixel-major pair).
         let bc = crate::texture::keep(self.s.base, self.s.border);
@@ -721,7 +725,7 @@ impl<'a> FusedSpan<'a> {
         macro_rules! pick {
             ($($k:literal => $x:ident, $y:ident;)*) => {
                 match kind {
-                    $($k => border_bilinear::<$x, $y>(dt, km, w, h, b, ss, tt),)*
+                    $($k => border_bilinear::<$x, $y>(dt, w, h, b, ss, tt),)*
                     _ => return None,
                 }
             };
@@ -785,16 +789,18 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             View::Sparse | View::Unknown => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         Some(match (linear, self.rep) {
-            (false, [false, false]) => nearest::<false, false>(dt, km, w, h, ss, tt),
-            (false, [false, true]) => nearest::<false, true>(dt, km, w, h, ss, tt),
-            (false, [true, false]) => nearest::<true, false>(dt, km, w, h, ss, tt),
-            (false, [true, true]) => nearest::<true, true>(dt, km, w, h, ss, tt),
-            (true, [false, false]) => bilinear::<false, false>(dt, km, w, h, ss, tt),
-            (true, [false, true]) => bilinear::<false, true>(dt, km, w, h, ss, tt),
-            (true, [true, false]) => bilinear::<true, false>(dt, km, w, h, ss, tt),
-            (true, [true, true]) => bilinear::<true, true>(dt, km, w, h, ss, tt),
+            (false, [false, false]) => nearest::<false, false>(dt, w, h, ss, tt),
+            (false, [false, true]) => nearest::<false, true>(dt, w, h, ss, tt),
+            (false, [true, false]) => nearest::<true, false>(dt, w, h, ss, tt),
+            (false, [true, true]) => nearest::<true, true>(dt, w, h, ss, tt),
+            (true, [false, false]) => bilinear::<false, false>(dt, w, h, ss, tt),
+            (true, [false, true]) => bilinear::<false, true>(dt, w, h, ss, tt),
+            (true, [true, false]) => bilinear::<true, false>(dt, w, h, ss, tt),
+            (true, [true, true]) => bilinear::<true, true>(dt, w, h, ss, tt),
         })
     }
 }
@@ -941,24 +947,87 @@ fn pairs(ch: &[std::arch::x86_64::__m256; 4]) -> [std::arch::x86_64::__m256; 4] 
     ]
 }
 
-/// The eight texel offsets `k` (indices into `dt`, already masked by `km`) as pixel-major
-/// pairs: lane q's texel in the low half of register q, lane q + 4's in the high half.
+/// The texels of `dt` at the eight indices `k` (each taken modulo `dt.len()`, a power of
+/// two: masked by `dt.len() - 1` here) as pixel-major pairs: lane q's texel in the low half of
+/// register q, lane q + 4's in the high half; zeros for an empty `dt`. The byte offsets are
+/// shifted on the lanes, one `vpextrd` and the load a lane.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86_64::__m256; 4] {
     use std::arch::x86_64::*;
-    // SAFETY: `__m256i` has the layout of `[i32; 8]`; every bit pattern is valid.
-    let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
-    // Each index is below `dt.len()` already (masked by `km`); the mask again here lets the
-    // bounds check fold away.
-    let km = dt.len().wrapping_sub(1);
-    let at = |l: usize| &dt[k[l] as usize & km];
+    let Some(km) = dt.len().checked_sub(1) else {
+        return [_mm256_setzero_ps(); 4];
+    };
+    let k = _mm256_and_si256(k, _mm256_set1_epi32(km as i32));
+    if km >= 1 << 28 {
+        // (Byte offsets past 32 bits: the indices a lane, the bounds check folded by the mask.)
+        // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
+        let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
+        let at = |l: usize| &dt[k[l] as usize & km];
+        return std::array::from_fn(|q| {
+            let (lo, hi) = (at(q), at(q + 4));
+            // SAFETY: each load reads one `[f32; 4]` of `dt`.
+            unsafe { _mm256_loadu2_m128(hi.as_ptr(), lo.as_ptr()) }
+        });
+    }
+    // SAFETY: every lane of `k` is at most `km` < 2^28, so 16·k fits a u32 and lies inside
+    // `dt` (16 bytes a texel).
+    unsafe { load_at::<0>(dt, _mm256_slli_epi32::<4>(k)) }
+}
+
+/// The texels at byte offsets `off` (and `D` texels further on) of `dt` as pixel-major pairs.
+///
+/// # Safety
+/// Every lane of `off` is 16·i with i + `D` < `dt.len()`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn load_at<const D: usize>(
+    dt: &[[f32; 4]],
+    off: std::arch::x86_64::__m256i,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
+    let off = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(off) };
+    let p = dt.as_ptr().wrapping_add(D).cast::<u8>();
     std::array::from_fn(|q| {
-        let (lo, hi) = (at(q), at(q + 4));
-        // SAFETY: each load reads one `[f32; 4]` of `dt`.
-        unsafe { _mm256_loadu2_m128(hi.as_ptr(), lo.as_ptr()) }
+        // SAFETY: texel i + D of `dt` (the caller's promise), 16 bytes, no alignment needed.
+        unsafe {
+            _mm256_loadu2_m128(
+                p.add(off[q + 4] as usize).cast::<f32>(),
+                p.add(off[q] as usize).cast::<f32>(),
+            )
+        }
     })
+}
+
+/// [`load_pairs`] of `k0` and of `k1` from one address a lane when every lane's `k1` is its
+/// `k0` + 1 (modulo `dt.len()`, as [`load_pairs`] takes them): a bilinear row's two texels
+/// side by side, not wrapped. None otherwise (and for an empty `dt`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn load_pairs_next(
+    dt: &[[f32; 4]],
+    k0: std::arch::x86_64::__m256i,
+    k1: std::arch::x86_64::__m256i,
+) -> Option<[[std::arch::x86_64::__m256; 4]; 2]> {
+    use std::arch::x86_64::*;
+    let km = dt.len().checked_sub(1)?;
+    if km >= 1 << 28 {
+        return None;
+    }
+    let kmv = _mm256_set1_epi32(km as i32);
+    let (k0, k1) = (_mm256_and_si256(k0, kmv), _mm256_and_si256(k1, kmv));
+    let next = _mm256_cmpeq_epi32(k1, _mm256_add_epi32(k0, _mm256_set1_epi32(1)));
+    if _mm256_movemask_epi8(next) != -1 {
+        return None;
+    }
+    let off = _mm256_slli_epi32::<4>(k0);
+    // SAFETY: every lane has k0 + 1 = k1 <= km < 2^28: texels k0 and k0 + 1 lie inside `dt`
+    // and 16·k0 fits a u32.
+    unsafe { Some([load_at::<0>(dt, off), load_at::<1>(dt, off)]) }
 }
 
 /// `dense_nearest8`'s indices (the same wraps, floors and masks), the texels loaded per lane.
@@ -967,7 +1036,6 @@ fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86
 #[inline]
 fn nearest<const RX: bool, const RY: bool>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     s: std::arch::x86_64::__m256,
@@ -980,18 +1048,18 @@ fn nearest<const RX: bool, const RY: bool>(
     let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
     let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
-    load_pairs(dt, _mm256_and_si256(k, _mm256_set1_epi32(km as i32)))
+    load_pairs(dt, _mm256_add_epi32(_mm256_sll_epi32(j, sh), i))
 }
 
 /// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
 /// pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order per channel.
+/// A row's two corners come from one address a lane where no lane's pair wraps
+/// ([`load_pairs_next`]): the same texels.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn bilinear<const RX: bool, const RY: bool>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     s: std::arch::x86_64::__m256,
@@ -1003,15 +1071,18 @@ fn bilinear<const RX: bool, const RY: bool>(
     let (y0, y1, b) = linear_axis8::<RY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
-    let kmv = _mm256_set1_epi32(km as i32);
-    let f = |k: __m256i| _mm256_and_si256(k, kmv);
-    let c = [
-        load_pairs(dt, f(_mm256_add_epi32(r0, x0))),
-        load_pairs(dt, f(_mm256_add_epi32(r0, x1))),
-        load_pairs(dt, f(_mm256_add_epi32(r1, x0))),
-        load_pairs(dt, f(_mm256_add_epi32(r1, x1))),
-    ];
-    corner_sum(a, b, &c)
+    let (k00, k10) = (_mm256_add_epi32(r0, x0), _mm256_add_epi32(r0, x1));
+    let (k01, k11) = (_mm256_add_epi32(r1, x0), _mm256_add_epi32(r1, x1));
+    // (Two matches, not a closure a row: the closure stayed out of line.)
+    let [c00, c10] = match load_pairs_next(dt, k00, k10) {
+        Some(c) => c,
+        None => [load_pairs(dt, k00), load_pairs(dt, k10)],
+    };
+    let [c01, c11] = match load_pairs_next(dt, k01, k11) {
+        Some(c) => c,
+        None => [load_pairs(dt, k01), load_pairs(dt, k11)],
+    };
+    corner_sum(a, b, &[c00, c10, c01, c11])
 }
 
 /// eq. 3.24's sum of the four corners `c` (t00, t10, t01, t11, each pixel-major pairs) with
@@ -1053,7 +1124,6 @@ fn corner_sum(
 #[inline]
 fn border_bilinear<const MX: u8, const MY: u8>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     bc: std::arch::x86_64::__m256,
@@ -1065,10 +1135,10 @@ fn border_bilinear<const MX: u8, const MY: u8>(
     let (x, xi, a) = border_linear8::<MX>(s, w);
     let (y, yi, b) = border_linear8::<MY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    let kmv = _mm256_set1_epi32(km as i32);
     let corner = |q: usize| {
         let (i, j) = (q & 1, q >> 1);
-        let k = _mm256_and_si256(_mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]), kmv);
+        // (`load_pairs` takes the index modulo the level's texels: & km.)
+        let k = _mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]);
         let inside = _mm256_castsi256_ps(_mm256_and_si256(xi[i], yi[j]));
         let c = load_pairs(dt, k);
         std::array::from_fn(|p| {
