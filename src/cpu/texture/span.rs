@@ -65,12 +65,16 @@ pub struct FusedSpan<'a> {
     /// quad's λ, [`FusedSpan::lambda_quads`]): quad k at window x `qbase + 2k`, its level
     /// `qlv[k]`, weight `qf[k]`, filter bit k of `qlin`. Computed eight quads (sixteen
     /// pixels) at a time as the groups reach them: block b (quads 8b..8b + 8) when bit b of
-    /// `qdone` is set; `qbase` is the first group's quad after `new` or `row`.
+    /// `qdone` is set; `qbase` is the first group's quad after `new`, after `row` moved the
+    /// route to another quad row, or when a group's quads fall outside those kept.
     qlv: [i32; QUADS],
     qf: [f32; QUADS],
     qlin: u64,
     qbase: i32,
     qdone: u8,
+    /// The quad row's y of `lp` and the quads (`new`'s or `row`'s `qy`): the two rows of a
+    /// quad row share them.
+    qy: f32,
 }
 
 /// The quads [`FusedSpan`] keeps the level choice of: a row of 64 pixels from any x touches
@@ -199,11 +203,14 @@ impl<'a> FusedSpan<'a> {
             qlin: 0,
             qbase: 0,
             qdone: 0,
+            qy,
         })
     }
 
     /// Moves the route to another row of the same primitive: `fy` the row's y relative to
-    /// the planes' origin, `qy` its quad row's (the levels looked up stay).
+    /// the planes' origin, `qy` its quad row's (the levels looked up stay, and on the same
+    /// quad row λ's planes and the quads' level choice too: a quad's λ depends on its window
+    /// x and `qy` alone).
     #[inline]
     pub fn row(&mut self, fy: f32, qy: f32) {
         // (`new` found the planes present.)
@@ -215,10 +222,11 @@ impl<'a> FusedSpan<'a> {
                 self.rpl = rp;
             }
         }
-        if self.s.route == Route::Lod {
+        if self.s.route == Route::Lod && qy.to_bits() != self.qy.to_bits() {
             self.lp = lambda_planes(self.planes, self.to, qy);
+            self.qy = qy;
+            self.qdone = 0;
         }
-        self.qdone = 0;
     }
 
     /// The group of eight fragments from window x `x` (lane l at x + l), lanes `m`: their
@@ -538,8 +546,9 @@ impl<'a> FusedSpan<'a> {
 
     /// [`Sampler::select_lanes`] of the λ of the group from window x `x` (lane l at x + l,
     /// each lane its quad's λ) from the row's quads (`qlv`, `qf`, `qlin`), the blocks it
-    /// reaches computed first; None when its quads are not among the row's `QUADS` from
-    /// `qbase` (the caller then computes them for the group alone). Each lane is
+    /// reaches computed first; when its quads are not among the `QUADS` kept from `qbase`,
+    /// the quads start again from the group's (None where they could not be computed: the
+    /// caller then computes them for the group alone). Each lane is
     /// `select_lanes`' value of its quad's λ either way: `select_lanes` works lane by lane,
     /// and a quad's λ depends on its window x alone.
     ///
@@ -550,14 +559,13 @@ impl<'a> FusedSpan<'a> {
     #[inline]
     unsafe fn quads_select(&mut self, x: i32) -> Option<([i32; LANES], u8, [f32; LANES])> {
         use std::arch::x86_64::*;
-        if self.qdone == 0 {
-            self.qbase = x & !1;
-        }
         // The group's first quad from `qbase` (window x wrap as the lanes' integers do: lane
         // l's quad (x + l) & !1 is qbase + 2·(off + ((x & 1) + l) / 2) modulo 2^32).
-        let d = (x & !1).wrapping_sub(self.qbase) as u32;
-        if d > 64 {
-            return None;
+        let mut d = (x & !1).wrapping_sub(self.qbase) as u32;
+        if self.qdone == 0 || d > 64 {
+            self.qbase = x & !1;
+            self.qdone = 0;
+            d = 0;
         }
         let odd = (x & 1) as usize;
         let off = (d / 2) as usize;
@@ -1002,32 +1010,61 @@ unsafe fn load_at<const D: usize>(
     })
 }
 
-/// [`load_pairs`] of `k0` and of `k1` from one address a lane when every lane's `k1` is its
-/// `k0` + 1 (modulo `dt.len()`, as [`load_pairs`] takes them): a bilinear row's two texels
-/// side by side, not wrapped. None otherwise (and for an empty `dt`).
+/// The four corners of [`bilinear`] (indices `$k00`, `$k10`, `$k01`, `$k11` of level texels
+/// `$dt`, each taken modulo `$dt.len()` as [`load_pairs`] takes them) as pixel-major pairs.
+/// Where every lane's `k10` is its `k00` + 1 and its `k11` its `k01` + 1 (no lane's row wraps,
+/// the common case), each row's two texels come from one address a lane; the same texels
+/// either way. (A macro: as a function it stayed out of line, called from `level`'s four
+/// bilinear kernels.)
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-fn load_pairs_next(
-    dt: &[[f32; 4]],
-    k0: std::arch::x86_64::__m256i,
-    k1: std::arch::x86_64::__m256i,
-) -> Option<[[std::arch::x86_64::__m256; 4]; 2]> {
-    use std::arch::x86_64::*;
-    let km = dt.len().checked_sub(1)?;
-    if km >= 1 << 28 {
-        return None;
-    }
-    let kmv = _mm256_set1_epi32(km as i32);
-    let (k0, k1) = (_mm256_and_si256(k0, kmv), _mm256_and_si256(k1, kmv));
-    let next = _mm256_cmpeq_epi32(k1, _mm256_add_epi32(k0, _mm256_set1_epi32(1)));
-    if _mm256_movemask_epi8(next) != -1 {
-        return None;
-    }
-    let off = _mm256_slli_epi32::<4>(k0);
-    // SAFETY: every lane has k0 + 1 = k1 <= km < 2^28: texels k0 and k0 + 1 lie inside `dt`
-    // and 16·k0 fits a u32.
-    unsafe { Some([load_at::<0>(dt, off), load_at::<1>(dt, off)]) }
+macro_rules! load_corners {
+    ($dt:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr) => {{
+        let dt: &[[f32; 4]] = $dt;
+        let (k00, k10, k01, k11) = ($k00, $k10, $k01, $k11);
+        let km = dt.len().wrapping_sub(1);
+        if dt.is_empty() || km >= 1 << 28 {
+            [
+                load_pairs(dt, k00),
+                load_pairs(dt, k10),
+                load_pairs(dt, k01),
+                load_pairs(dt, k11),
+            ]
+        } else {
+            let kmv = _mm256_set1_epi32(km as i32);
+            let (k00, k10) = (_mm256_and_si256(k00, kmv), _mm256_and_si256(k10, kmv));
+            let (k01, k11) = (_mm256_and_si256(k01, kmv), _mm256_and_si256(k11, kmv));
+            let one = _mm256_set1_epi32(1);
+            let next = _mm256_and_si256(
+                _mm256_cmpeq_epi32(k10, _mm256_add_epi32(k00, one)),
+                _mm256_cmpeq_epi32(k11, _mm256_add_epi32(k01, one)),
+            );
+            let (o0, o1) = (_mm256_slli_epi32::<4>(k00), _mm256_slli_epi32::<4>(k01));
+            if _mm256_movemask_epi8(next) == -1 {
+                // SAFETY: every lane has k00 + 1 = k10 <= km and k01 + 1 = k11 <= km,
+                // km < 2^28: the texels k00, k00 + 1, k01 and k01 + 1 lie inside `dt` and 16·k
+                // fits a u32.
+                unsafe {
+                    [
+                        load_at::<0>(dt, o0),
+                        load_at::<1>(dt, o0),
+                        load_at::<0>(dt, o1),
+                        load_at::<1>(dt, o1),
+                    ]
+                }
+            } else {
+                // SAFETY: every lane of each index is at most km < 2^28: inside `dt`, and 16·k
+                // fits a u32.
+                unsafe {
+                    [
+                        load_at::<0>(dt, o0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10)),
+                        load_at::<0>(dt, o1),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11)),
+                    ]
+                }
+            }
+        }
+    }};
 }
 
 /// `dense_nearest8`'s indices (the same wraps, floors and masks), the texels loaded per lane.
@@ -1054,7 +1091,7 @@ fn nearest<const RX: bool, const RY: bool>(
 /// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
 /// pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order per channel.
 /// A row's two corners come from one address a lane where no lane's pair wraps
-/// ([`load_pairs_next`]): the same texels.
+/// (`load_corners`): the same texels.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
@@ -1071,17 +1108,13 @@ fn bilinear<const RX: bool, const RY: bool>(
     let (y0, y1, b) = linear_axis8::<RY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
-    let (k00, k10) = (_mm256_add_epi32(r0, x0), _mm256_add_epi32(r0, x1));
-    let (k01, k11) = (_mm256_add_epi32(r1, x0), _mm256_add_epi32(r1, x1));
-    // (Two matches, not a closure a row: the closure stayed out of line.)
-    let [c00, c10] = match load_pairs_next(dt, k00, k10) {
-        Some(c) => c,
-        None => [load_pairs(dt, k00), load_pairs(dt, k10)],
-    };
-    let [c01, c11] = match load_pairs_next(dt, k01, k11) {
-        Some(c) => c,
-        None => [load_pairs(dt, k01), load_pairs(dt, k11)],
-    };
+    let [c00, c10, c01, c11] = load_corners!(
+        dt,
+        _mm256_add_epi32(r0, x0),
+        _mm256_add_epi32(r0, x1),
+        _mm256_add_epi32(r1, x0),
+        _mm256_add_epi32(r1, x1)
+    );
     corner_sum(a, b, &[c00, c10, c01, c11])
 }
 
@@ -1339,10 +1372,16 @@ mod tests {
             };
             let mut x = (g.next() % 400) as i32 - 100;
             for step in 0..12 {
-                if step == 6 && g.next() % 2 == 0 {
-                    // Another row (the quads' choice starts again).
-                    qy = ((g.next() % 200) as i32 - 50) as f32;
-                    fs.row(0.0, qy);
+                if step % 6 == 0 && g.next() % 2 == 0 {
+                    // Another row: of another quad row (the quads' choice starts again) or of
+                    // the same one (the quads kept), from another x now and then.
+                    if g.next() % 2 == 0 {
+                        qy = ((g.next() % 200) as i32 - 50) as f32;
+                    }
+                    fs.row(1.0, qy);
+                    if g.next() % 2 == 0 {
+                        x = (g.next() % 400) as i32 - 100;
+                    }
                 }
                 // SAFETY: the CPU has AVX2 (checked above).
                 let got = unsafe { fs.quads_select(x) };
