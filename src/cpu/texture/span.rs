@@ -18,7 +18,7 @@
 #[cfg(target_arch = "x86_64")]
 use super::{border_linear8, AX_BORDER, AX_CLAMP, AX_EDGE, AX_REPEAT};
 #[cfg(target_arch = "x86_64")]
-use super::{dense_level, ifloor8, linear_axis8, mask_eq, mask_ne_zero, wrap8, Route};
+use super::{dense_level, ifloor8, linear_axis8, wrap8, Route};
 use super::{Sampler, LANES};
 use crate::gl;
 
@@ -497,23 +497,34 @@ impl<'a> FusedSpan<'a> {
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
         let s = self.s;
+        let zero = _mm256_setzero_ps();
         let (level, linear, second, f) = match s.route {
-            Route::Nearest => (s.base_level, false, 0, [0.0f32; LANES]),
-            Route::Linear => (s.base_level, true, 0, [0.0f32; LANES]),
+            Route::Nearest => (s.base_level, false, 0, zero),
+            Route::Linear => (s.base_level, true, 0, zero),
             Route::Lod => {
-                let (la, linear, f) = match self.quads_select(x) {
+                let (lv, linear, f) = match self.quads_select(x) {
                     Some(q) => q,
                     None => {
-                        s.select_lanes(&std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x)))
+                        let lam = std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x));
+                        let (la, lin, f) = s.select_lanes(&lam);
+                        (
+                            std::mem::transmute::<[i32; LANES], __m256i>(la),
+                            lin,
+                            std::mem::transmute::<[f32; LANES], __m256>(f),
+                        )
                     }
                 };
-                let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
-                let (second, same) = (mask_ne_zero(&f) & m, mask_eq(&la, first));
+                // The first lane of `m`'s level on every lane (`mask_eq`'s compare), the lanes
+                // with a second level (`mask_ne_zero`: f != 0, a NaN included).
+                let t = (m.trailing_zeros() as i32).min(LANES as i32 - 1);
+                let fl = _mm256_permutevar8x32_epi32(lv, _mm256_set1_epi32(t));
+                let same = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(lv, fl)));
+                let second = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_NEQ_UQ>(f, zero)) as u8 & m;
                 let linear = linear & m;
-                if same & m != m || (linear != 0 && linear != m) {
+                if same as u8 & m != m || (linear != 0 && linear != m) {
                     return None;
                 }
-                (first, linear != 0, second, f)
+                (_mm256_cvtsi256_si32(fl), linear != 0, second, f)
             }
         };
         let a = self.level(level, linear, ss, tt)?;
@@ -523,7 +534,6 @@ impl<'a> FusedSpan<'a> {
         // f ≠ 0 only below `span`: level + 1 is at most `last`.
         let b = self.level(level.saturating_add(1), linear, ss, tt)?;
         // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others.
-        let fv = _mm256_loadu_ps(f.as_ptr());
         let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
         let on = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
             _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
@@ -533,7 +543,7 @@ impl<'a> FusedSpan<'a> {
         Some(std::array::from_fn(|k| {
             let idx = pair_index(k);
             let (fk, onk) = (
-                _mm256_permutevar8x32_ps(fv, idx),
+                _mm256_permutevar8x32_ps(f, idx),
                 _mm256_permutevar8x32_ps(on, idx),
             );
             let x = _mm256_add_ps(
@@ -557,7 +567,10 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    unsafe fn quads_select(&mut self, x: i32) -> Option<([i32; LANES], u8, [f32; LANES])> {
+    unsafe fn quads_select(
+        &mut self,
+        x: i32,
+    ) -> Option<(std::arch::x86_64::__m256i, u8, std::arch::x86_64::__m256)> {
         use std::arch::x86_64::*;
         // The group's first quad from `qbase` (window x wrap as the lanes' integers do: lane
         // l's quad (x + l) & !1 is qbase + 2·(off + ((x & 1) + l) / 2) modulo 2^32).
@@ -597,8 +610,8 @@ impl<'a> FusedSpan<'a> {
                 _mm256_loadu_si256(idx.as_ptr().cast::<__m256i>()),
             )
         };
-        let la = std::mem::transmute::<__m256i, [i32; LANES]>(_mm256_permutevar8x32_epi32(lv, idx));
-        let f = std::mem::transmute::<__m256, [f32; LANES]>(_mm256_permutevar8x32_ps(fv, idx));
+        let la = _mm256_permutevar8x32_epi32(lv, idx);
+        let f = _mm256_permutevar8x32_ps(fv, idx);
         let bits = DOUBLE.get(((self.qlin >> off) & 31) as usize).copied()?;
         Some((la, (bits >> odd) as u8, f))
     }
@@ -1388,6 +1401,15 @@ mod tests {
                 let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(ox) as f32);
                 let want = s.select_lanes(&s.quad_lambda_lanes(&planes, to, qx, qy));
                 if let Some((la, lin, f)) = got {
+                    use std::arch::x86_64::{__m256, __m256i};
+                    // SAFETY: the registers have the layouts of the arrays; every bit pattern
+                    // is valid for both.
+                    let (la, f) = unsafe {
+                        (
+                            std::mem::transmute::<__m256i, [i32; LANES]>(la),
+                            std::mem::transmute::<__m256, [f32; LANES]>(f),
+                        )
+                    };
                     checked += 1;
                     assert!(
                         la == want.0
