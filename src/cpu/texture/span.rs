@@ -307,16 +307,16 @@ impl<'a> FusedSpan<'a> {
         };
         let one = _mm256_set1_ps(1.0);
         let inv = _mm256_div_ps(one, plane(self.pl[0]));
-        let vary = |k: usize| {
-            let v = plane(self.pl[k + 1]);
-            if self.div[k] {
+        // (`me` for `self`: the closure holds no borrow across the texel calls.)
+        let vary = |me: &Self, k: usize| {
+            let v = plane(me.pl[k + 1]);
+            if me.div[k] {
                 _mm256_mul_ps(v, inv)
             } else {
                 v
             }
         };
-        let col = [vary(0), vary(1), vary(2), vary(3)];
-        let (s, t, q) = (vary(4), vary(5), vary(6));
+        let (s, t, q) = (vary(self, 4), vary(self, 5), vary(self, 6));
         // `texels_lanes`: inv = 1/q where q ≠ 0 (a NaN q included), else 0; s·inv, t·inv.
         let rq = _mm256_div_ps(one, q);
         let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
@@ -359,6 +359,9 @@ impl<'a> FusedSpan<'a> {
         // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha;
         // BLEND of LUMINANCE L = t[0]: cfr·(1 - L) + cc·L, the fragment's alpha), clamped to
         // [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
+        // The colour's varyings after the texels (the same values: nothing they read changes),
+        // so that they are not kept across the `level` calls.
+        let col = [vary(self, 0), vary(self, 1), vary(self, 2), vary(self, 3)];
         let cf = pairs(&col);
         let zero = _mm256_setzero_ps();
         // SAFETY: the load reads the eight floats of `cc`.
