@@ -1177,6 +1177,12 @@ impl FragCtx<'_> {
             return 0;
         }
         let live = live & (u64::MAX >> (64 - n));
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            let (f, w) = (self.depth_func, self.depth_mask);
+            // SAFETY: the CPU has AVX2 (`has_avx2`).
+            return unsafe { super::lanes::depth_span_avx2(row, n, zrow, dz, fx0, live, w, f) };
+        }
         super::lanes::depth_span(
             row,
             n,

@@ -286,6 +286,74 @@ pub fn depth_span(
     mask
 }
 
+/// `depth_span` with eight lanes a register (AVX2): each group through
+/// `oplanes::avx2::depth_test` (the same lane x, `zrow + dz·x`, double-precision conversion,
+/// unsigned compare and select as `depth_lanes` and `oplanes::depth_test`, so the same mask and
+/// stores), the compare compiled in for the common states — LESS or LEQUAL with the depth mask
+/// on — rather than chosen by a jump per group.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn depth_span_avx2(
+    row: &mut [u32],
+    n: usize,
+    zrow: f32,
+    dz: f32,
+    fx0: i32,
+    live: u64,
+    write: bool,
+    func: u32,
+) -> u64 {
+    use crate::gl::{LEQUAL, LESS};
+    let a = (row, n, zrow, dz, fx0, live);
+    // SAFETY: the CPU has AVX2 (this function's contract).
+    unsafe {
+        match (func, write) {
+            (LESS, true) => depth_groups_avx2::<LESS>(a, func, write),
+            (LEQUAL, true) => depth_groups_avx2::<LEQUAL>(a, func, write),
+            _ => depth_groups_avx2::<0>(a, func, write),
+        }
+    }
+}
+
+/// The groups of `depth_span_avx2` (`a`: its row, pixel count, depth terms, lane x and live
+/// lanes); `F` other than 0 is DepthFunc known for the call with the depth mask on (`func` and
+/// `write` then not read).
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn depth_groups_avx2<const F: u32>(
+    (row, n, zrow, dz, fx0, live): (&mut [u32], usize, f32, f32, i32, u64),
+    func: u32,
+    write: bool,
+) -> u64 {
+    let (func, write) = if F != 0 { (F, true) } else { (func, write) };
+    let n = n.min(64).min(row.len());
+    let mut mask = 0u64;
+    let mut c = 0;
+    while c < n {
+        let m = ((live >> c) & ((1 << LANES) - 1)) as u8;
+        if m != 0 {
+            if let Some(out) = row.get_mut(c..) {
+                let fx = fx0.wrapping_add(c as i32);
+                // SAFETY: the CPU has AVX2.
+                let got =
+                    unsafe { super::oplanes::avx2::depth_test(func, write, out, zrow, dz, fx, m) };
+                mask |= u64::from(got) << c;
+            }
+        }
+        c += LANES;
+    }
+    mask
+}
+
 /// The depth test and the smooth primary colour of a span in one pass (`FragCtx::smooth_row`,
 /// the route of a triangle that `tri_span`'s fast path with `depth_mask_span` and
 /// `smooth_rgba` would take): fragment k < `n` (≤ 64) has fx = `fx0` + k, z = `zrow` +
@@ -1442,6 +1510,14 @@ mod tests {
                 .collect();
             let mut got = stored.clone();
             let mask = depth_span(&mut got, n, zrow, dz, fx0, live, write, func);
+            // The AVX2 route (where the CPU has it) on the same row: the same mask and stores.
+            #[cfg(target_arch = "x86_64")]
+            if has_avx2() {
+                let mut got2 = stored.clone();
+                // SAFETY: the CPU has AVX2 (`has_avx2`).
+                let m2 = unsafe { depth_span_avx2(&mut got2, n, zrow, dz, fx0, live, write, func) };
+                assert_eq!((m2, &got2), (mask, &got), "avx2: zrow {zrow} dz {dz}");
+            }
             let mut want = stored.clone();
             let mut want_mask = 0u64;
             for (k, s) in want.iter_mut().enumerate().take(n) {

@@ -18,7 +18,7 @@
 #[cfg(target_arch = "x86_64")]
 use super::{border_linear8, AX_BORDER, AX_CLAMP, AX_EDGE, AX_REPEAT};
 #[cfg(target_arch = "x86_64")]
-use super::{dense_level, ifloor8, linear_axis8, mask_eq, mask_ne_zero, wrap8, Route};
+use super::{dense_level, ifloor8, linear_axis8, wrap8, Route};
 use super::{Sampler, LANES};
 use crate::gl;
 
@@ -65,12 +65,16 @@ pub struct FusedSpan<'a> {
     /// quad's λ, [`FusedSpan::lambda_quads`]): quad k at window x `qbase + 2k`, its level
     /// `qlv[k]`, weight `qf[k]`, filter bit k of `qlin`. Computed eight quads (sixteen
     /// pixels) at a time as the groups reach them: block b (quads 8b..8b + 8) when bit b of
-    /// `qdone` is set; `qbase` is the first group's quad after `new` or `row`.
+    /// `qdone` is set; `qbase` is the first group's quad after `new`, after `row` moved the
+    /// route to another quad row, or when a group's quads fall outside those kept.
     qlv: [i32; QUADS],
     qf: [f32; QUADS],
     qlin: u64,
     qbase: i32,
     qdone: u8,
+    /// The quad row's y of `lp` and the quads (`new`'s or `row`'s `qy`): the two rows of a
+    /// quad row share them.
+    qy: f32,
 }
 
 /// The quads [`FusedSpan`] keeps the level choice of: a row of 64 pixels from any x touches
@@ -199,11 +203,14 @@ impl<'a> FusedSpan<'a> {
             qlin: 0,
             qbase: 0,
             qdone: 0,
+            qy,
         })
     }
 
     /// Moves the route to another row of the same primitive: `fy` the row's y relative to
-    /// the planes' origin, `qy` its quad row's (the levels looked up stay).
+    /// the planes' origin, `qy` its quad row's (the levels looked up stay, and on the same
+    /// quad row λ's planes and the quads' level choice too: a quad's λ depends on its window
+    /// x and `qy` alone).
     #[inline]
     pub fn row(&mut self, fy: f32, qy: f32) {
         // (`new` found the planes present.)
@@ -215,10 +222,11 @@ impl<'a> FusedSpan<'a> {
                 self.rpl = rp;
             }
         }
-        if self.s.route == Route::Lod {
+        if self.s.route == Route::Lod && qy.to_bits() != self.qy.to_bits() {
             self.lp = lambda_planes(self.planes, self.to, qy);
+            self.qy = qy;
+            self.qdone = 0;
         }
-        self.qdone = 0;
     }
 
     /// The group of eight fragments from window x `x` (lane l at x + l), lanes `m`: their
@@ -299,16 +307,16 @@ impl<'a> FusedSpan<'a> {
         };
         let one = _mm256_set1_ps(1.0);
         let inv = _mm256_div_ps(one, plane(self.pl[0]));
-        let vary = |k: usize| {
-            let v = plane(self.pl[k + 1]);
-            if self.div[k] {
+        // (`me` for `self`: the closure holds no borrow across the texel calls.)
+        let vary = |me: &Self, k: usize| {
+            let v = plane(me.pl[k + 1]);
+            if me.div[k] {
                 _mm256_mul_ps(v, inv)
             } else {
                 v
             }
         };
-        let col = [vary(0), vary(1), vary(2), vary(3)];
-        let (s, t, q) = (vary(4), vary(5), vary(6));
+        let (s, t, q) = (vary(self, 4), vary(self, 5), vary(self, 6));
         // `texels_lanes`: inv = 1/q where q ≠ 0 (a NaN q included), else 0; s·inv, t·inv.
         let rq = _mm256_div_ps(one, q);
         let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
@@ -351,6 +359,9 @@ impl<'a> FusedSpan<'a> {
         // `env_of` (MODULATE: cf·t, REPLACE: t; an RGB texture keeps the fragment's alpha;
         // BLEND of LUMINANCE L = t[0]: cfr·(1 - L) + cc·L, the fragment's alpha), clamped to
         // [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
+        // The colour's varyings after the texels (the same values: nothing they read changes),
+        // so that they are not kept across the `level` calls.
+        let col = [vary(self, 0), vary(self, 1), vary(self, 2), vary(self, 3)];
         let cf = pairs(&col);
         let zero = _mm256_setzero_ps();
         // SAFETY: the load reads the eight floats of `cc`.
@@ -489,23 +500,34 @@ impl<'a> FusedSpan<'a> {
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
         let s = self.s;
+        let zero = _mm256_setzero_ps();
         let (level, linear, second, f) = match s.route {
-            Route::Nearest => (s.base_level, false, 0, [0.0f32; LANES]),
-            Route::Linear => (s.base_level, true, 0, [0.0f32; LANES]),
+            Route::Nearest => (s.base_level, false, 0, zero),
+            Route::Linear => (s.base_level, true, 0, zero),
             Route::Lod => {
-                let (la, linear, f) = match self.quads_select(x) {
+                let (lv, linear, f) = match self.quads_select(x) {
                     Some(q) => q,
                     None => {
-                        s.select_lanes(&std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x)))
+                        let lam = std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x));
+                        let (la, lin, f) = s.select_lanes(&lam);
+                        (
+                            std::mem::transmute::<[i32; LANES], __m256i>(la),
+                            lin,
+                            std::mem::transmute::<[f32; LANES], __m256>(f),
+                        )
                     }
                 };
-                let first = la[(m.trailing_zeros() as usize).min(LANES - 1)];
-                let (second, same) = (mask_ne_zero(&f) & m, mask_eq(&la, first));
+                // The first lane of `m`'s level on every lane (`mask_eq`'s compare), the lanes
+                // with a second level (`mask_ne_zero`: f != 0, a NaN included).
+                let t = (m.trailing_zeros() as i32).min(LANES as i32 - 1);
+                let fl = _mm256_permutevar8x32_epi32(lv, _mm256_set1_epi32(t));
+                let same = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(lv, fl)));
+                let second = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_NEQ_UQ>(f, zero)) as u8 & m;
                 let linear = linear & m;
-                if same & m != m || (linear != 0 && linear != m) {
+                if same as u8 & m != m || (linear != 0 && linear != m) {
                     return None;
                 }
-                (first, linear != 0, second, f)
+                (_mm256_cvtsi256_si32(fl), linear != 0, second, f)
             }
         };
         let a = self.level(level, linear, ss, tt)?;
@@ -515,7 +537,6 @@ impl<'a> FusedSpan<'a> {
         // f ≠ 0 only below `span`: level + 1 is at most `last`.
         let b = self.level(level.saturating_add(1), linear, ss, tt)?;
         // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others.
-        let fv = _mm256_loadu_ps(f.as_ptr());
         let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
         let on = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
             _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
@@ -525,7 +546,7 @@ impl<'a> FusedSpan<'a> {
         Some(std::array::from_fn(|k| {
             let idx = pair_index(k);
             let (fk, onk) = (
-                _mm256_permutevar8x32_ps(fv, idx),
+                _mm256_permutevar8x32_ps(f, idx),
                 _mm256_permutevar8x32_ps(on, idx),
             );
             let x = _mm256_add_ps(
@@ -538,8 +559,9 @@ impl<'a> FusedSpan<'a> {
 
     /// [`Sampler::select_lanes`] of the λ of the group from window x `x` (lane l at x + l,
     /// each lane its quad's λ) from the row's quads (`qlv`, `qf`, `qlin`), the blocks it
-    /// reaches computed first; None when its quads are not among the row's `QUADS` from
-    /// `qbase` (the caller then computes them for the group alone). Each lane is
+    /// reaches computed first; when its quads are not among the `QUADS` kept from `qbase`,
+    /// the quads start again from the group's (None where they could not be computed: the
+    /// caller then computes them for the group alone). Each lane is
     /// `select_lanes`' value of its quad's λ either way: `select_lanes` works lane by lane,
     /// and a quad's λ depends on its window x alone.
     ///
@@ -548,16 +570,18 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    unsafe fn quads_select(&mut self, x: i32) -> Option<([i32; LANES], u8, [f32; LANES])> {
+    unsafe fn quads_select(
+        &mut self,
+        x: i32,
+    ) -> Option<(std::arch::x86_64::__m256i, u8, std::arch::x86_64::__m256)> {
         use std::arch::x86_64::*;
-        if self.qdone == 0 {
-            self.qbase = x & !1;
-        }
         // The group's first quad from `qbase` (window x wrap as the lanes' integers do: lane
         // l's quad (x + l) & !1 is qbase + 2·(off + ((x & 1) + l) / 2) modulo 2^32).
-        let d = (x & !1).wrapping_sub(self.qbase) as u32;
-        if d > 64 {
-            return None;
+        let mut d = (x & !1).wrapping_sub(self.qbase) as u32;
+        if self.qdone == 0 || d > 64 {
+            self.qbase = x & !1;
+            self.qdone = 0;
+            d = 0;
         }
         let odd = (x & 1) as usize;
         let off = (d / 2) as usize;
@@ -589,8 +613,8 @@ impl<'a> FusedSpan<'a> {
                 _mm256_loadu_si256(idx.as_ptr().cast::<__m256i>()),
             )
         };
-        let la = std::mem::transmute::<__m256i, [i32; LANES]>(_mm256_permutevar8x32_epi32(lv, idx));
-        let f = std::mem::transmute::<__m256, [f32; LANES]>(_mm256_permutevar8x32_ps(fv, idx));
+        let la = _mm256_permutevar8x32_epi32(lv, idx);
+        let f = _mm256_permutevar8x32_ps(fv, idx);
         let bits = DOUBLE.get(((self.qlin >> off) & 31) as usize).copied()?;
         Some((la, (bits >> odd) as u8, f))
     }
@@ -651,12 +675,14 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             View::Sparse | View::Unknown => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         let d = match self.rep {
-            [false, false] => nearest::<false, false>(dt, km, w, h, ss, tt),
-            [false, true] => nearest::<false, true>(dt, km, w, h, ss, tt),
-            [true, false] => nearest::<true, false>(dt, km, w, h, ss, tt),
-            [true, true] => nearest::<true, true>(dt, km, w, h, ss, tt),
+            [false, false] => nearest::<false, false>(dt, w, h, ss, tt),
+            [false, true] => nearest::<false, true>(dt, w, h, ss, tt),
+            [true, false] => nearest::<true, false>(dt, w, h, ss, tt),
+            [true, true] => nearest::<true, true>(dt, w, h, ss, tt),
         };
         Some(compare_pairs(func, d, rr))
     }
@@ -711,7 +737,9 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             _ => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         // The border colour in the base format's components, as `pass_level` gives it to
         // `dense_border` (in both halves: lanes k and k + 4 of a pixel-major pair).
         let bc = crate::texture::keep(self.s.base, self.s.border);
@@ -721,7 +749,7 @@ impl<'a> FusedSpan<'a> {
         macro_rules! pick {
             ($($k:literal => $x:ident, $y:ident;)*) => {
                 match kind {
-                    $($k => border_bilinear::<$x, $y>(dt, km, w, h, b, ss, tt),)*
+                    $($k => border_bilinear::<$x, $y>(dt, w, h, b, ss, tt),)*
                     _ => return None,
                 }
             };
@@ -785,16 +813,18 @@ impl<'a> FusedSpan<'a> {
             View::Missing => return Some([_mm256_setzero_ps(); 4]),
             View::Sparse | View::Unknown => return None,
         };
-        let km = dt.len().checked_sub(1)?;
+        if dt.is_empty() {
+            return None;
+        }
         Some(match (linear, self.rep) {
-            (false, [false, false]) => nearest::<false, false>(dt, km, w, h, ss, tt),
-            (false, [false, true]) => nearest::<false, true>(dt, km, w, h, ss, tt),
-            (false, [true, false]) => nearest::<true, false>(dt, km, w, h, ss, tt),
-            (false, [true, true]) => nearest::<true, true>(dt, km, w, h, ss, tt),
-            (true, [false, false]) => bilinear::<false, false>(dt, km, w, h, ss, tt),
-            (true, [false, true]) => bilinear::<false, true>(dt, km, w, h, ss, tt),
-            (true, [true, false]) => bilinear::<true, false>(dt, km, w, h, ss, tt),
-            (true, [true, true]) => bilinear::<true, true>(dt, km, w, h, ss, tt),
+            (false, [false, false]) => nearest::<false, false>(dt, w, h, ss, tt),
+            (false, [false, true]) => nearest::<false, true>(dt, w, h, ss, tt),
+            (false, [true, false]) => nearest::<true, false>(dt, w, h, ss, tt),
+            (false, [true, true]) => nearest::<true, true>(dt, w, h, ss, tt),
+            (true, [false, false]) => bilinear::<false, false>(dt, w, h, ss, tt),
+            (true, [false, true]) => bilinear::<false, true>(dt, w, h, ss, tt),
+            (true, [true, false]) => bilinear::<true, false>(dt, w, h, ss, tt),
+            (true, [true, true]) => bilinear::<true, true>(dt, w, h, ss, tt),
         })
     }
 }
@@ -941,24 +971,116 @@ fn pairs(ch: &[std::arch::x86_64::__m256; 4]) -> [std::arch::x86_64::__m256; 4] 
     ]
 }
 
-/// The eight texel offsets `k` (indices into `dt`, already masked by `km`) as pixel-major
-/// pairs: lane q's texel in the low half of register q, lane q + 4's in the high half.
+/// The texels of `dt` at the eight indices `k` (each taken modulo `dt.len()`, a power of
+/// two: masked by `dt.len() - 1` here) as pixel-major pairs: lane q's texel in the low half of
+/// register q, lane q + 4's in the high half; zeros for an empty `dt`. The byte offsets are
+/// shifted on the lanes, one `vpextrd` and the load a lane.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86_64::__m256; 4] {
     use std::arch::x86_64::*;
-    // SAFETY: `__m256i` has the layout of `[i32; 8]`; every bit pattern is valid.
-    let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
-    // Each index is below `dt.len()` already (masked by `km`); the mask again here lets the
-    // bounds check fold away.
-    let km = dt.len().wrapping_sub(1);
-    let at = |l: usize| &dt[k[l] as usize & km];
+    let Some(km) = dt.len().checked_sub(1) else {
+        return [_mm256_setzero_ps(); 4];
+    };
+    let k = _mm256_and_si256(k, _mm256_set1_epi32(km as i32));
+    if km >= 1 << 28 {
+        // (Byte offsets past 32 bits: the indices a lane, the bounds check folded by the mask.)
+        // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
+        let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
+        let at = |l: usize| &dt[k[l] as usize & km];
+        return std::array::from_fn(|q| {
+            let (lo, hi) = (at(q), at(q + 4));
+            // SAFETY: each load reads one `[f32; 4]` of `dt`.
+            unsafe { _mm256_loadu2_m128(hi.as_ptr(), lo.as_ptr()) }
+        });
+    }
+    // SAFETY: every lane of `k` is at most `km` < 2^28, so 16·k fits a u32 and lies inside
+    // `dt` (16 bytes a texel).
+    unsafe { load_at::<0>(dt, _mm256_slli_epi32::<4>(k)) }
+}
+
+/// The texels at byte offsets `off` (and `D` texels further on) of `dt` as pixel-major pairs.
+///
+/// # Safety
+/// Every lane of `off` is 16·i with i + `D` < `dt.len()`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn load_at<const D: usize>(
+    dt: &[[f32; 4]],
+    off: std::arch::x86_64::__m256i,
+) -> [std::arch::x86_64::__m256; 4] {
+    use std::arch::x86_64::*;
+    // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
+    let off = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(off) };
+    let p = dt.as_ptr().wrapping_add(D).cast::<u8>();
     std::array::from_fn(|q| {
-        let (lo, hi) = (at(q), at(q + 4));
-        // SAFETY: each load reads one `[f32; 4]` of `dt`.
-        unsafe { _mm256_loadu2_m128(hi.as_ptr(), lo.as_ptr()) }
+        // SAFETY: texel i + D of `dt` (the caller's promise), 16 bytes, no alignment needed.
+        unsafe {
+            _mm256_loadu2_m128(
+                p.add(off[q + 4] as usize).cast::<f32>(),
+                p.add(off[q] as usize).cast::<f32>(),
+            )
+        }
     })
+}
+
+/// The four corners of [`bilinear`] (indices `$k00`, `$k10`, `$k01`, `$k11` of level texels
+/// `$dt`, each taken modulo `$dt.len()` as [`load_pairs`] takes them) as pixel-major pairs.
+/// Where every lane's `k10` is its `k00` + 1 and its `k11` its `k01` + 1 (no lane's row wraps,
+/// the common case), each row's two texels come from one address a lane; the same texels
+/// either way. (A macro: as a function it stayed out of line, called from `level`'s four
+/// bilinear kernels.)
+#[cfg(target_arch = "x86_64")]
+macro_rules! load_corners {
+    ($dt:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr) => {{
+        let dt: &[[f32; 4]] = $dt;
+        let (k00, k10, k01, k11) = ($k00, $k10, $k01, $k11);
+        let km = dt.len().wrapping_sub(1);
+        if dt.is_empty() || km >= 1 << 28 {
+            [
+                load_pairs(dt, k00),
+                load_pairs(dt, k10),
+                load_pairs(dt, k01),
+                load_pairs(dt, k11),
+            ]
+        } else {
+            let kmv = _mm256_set1_epi32(km as i32);
+            let (k00, k10) = (_mm256_and_si256(k00, kmv), _mm256_and_si256(k10, kmv));
+            let (k01, k11) = (_mm256_and_si256(k01, kmv), _mm256_and_si256(k11, kmv));
+            let one = _mm256_set1_epi32(1);
+            let next = _mm256_and_si256(
+                _mm256_cmpeq_epi32(k10, _mm256_add_epi32(k00, one)),
+                _mm256_cmpeq_epi32(k11, _mm256_add_epi32(k01, one)),
+            );
+            let (o0, o1) = (_mm256_slli_epi32::<4>(k00), _mm256_slli_epi32::<4>(k01));
+            if _mm256_movemask_epi8(next) == -1 {
+                // SAFETY: every lane has k00 + 1 = k10 <= km and k01 + 1 = k11 <= km,
+                // km < 2^28: the texels k00, k00 + 1, k01 and k01 + 1 lie inside `dt` and 16·k
+                // fits a u32.
+                unsafe {
+                    [
+                        load_at::<0>(dt, o0),
+                        load_at::<1>(dt, o0),
+                        load_at::<0>(dt, o1),
+                        load_at::<1>(dt, o1),
+                    ]
+                }
+            } else {
+                // SAFETY: every lane of each index is at most km < 2^28: inside `dt`, and 16·k
+                // fits a u32.
+                unsafe {
+                    [
+                        load_at::<0>(dt, o0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10)),
+                        load_at::<0>(dt, o1),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11)),
+                    ]
+                }
+            }
+        }
+    }};
 }
 
 /// `dense_nearest8`'s indices (the same wraps, floors and masks), the texels loaded per lane.
@@ -967,7 +1089,6 @@ fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86
 #[inline]
 fn nearest<const RX: bool, const RY: bool>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     s: std::arch::x86_64::__m256,
@@ -980,18 +1101,18 @@ fn nearest<const RX: bool, const RY: bool>(
     let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
     let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    let k = _mm256_add_epi32(_mm256_sll_epi32(j, sh), i);
-    load_pairs(dt, _mm256_and_si256(k, _mm256_set1_epi32(km as i32)))
+    load_pairs(dt, _mm256_add_epi32(_mm256_sll_epi32(j, sh), i))
 }
 
 /// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
 /// pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order per channel.
+/// A row's two corners come from one address a lane where no lane's pair wraps
+/// (`load_corners`): the same texels.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn bilinear<const RX: bool, const RY: bool>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     s: std::arch::x86_64::__m256,
@@ -1003,15 +1124,14 @@ fn bilinear<const RX: bool, const RY: bool>(
     let (y0, y1, b) = linear_axis8::<RY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
-    let kmv = _mm256_set1_epi32(km as i32);
-    let f = |k: __m256i| _mm256_and_si256(k, kmv);
-    let c = [
-        load_pairs(dt, f(_mm256_add_epi32(r0, x0))),
-        load_pairs(dt, f(_mm256_add_epi32(r0, x1))),
-        load_pairs(dt, f(_mm256_add_epi32(r1, x0))),
-        load_pairs(dt, f(_mm256_add_epi32(r1, x1))),
-    ];
-    corner_sum(a, b, &c)
+    let [c00, c10, c01, c11] = load_corners!(
+        dt,
+        _mm256_add_epi32(r0, x0),
+        _mm256_add_epi32(r0, x1),
+        _mm256_add_epi32(r1, x0),
+        _mm256_add_epi32(r1, x1)
+    );
+    corner_sum(a, b, &[c00, c10, c01, c11])
 }
 
 /// eq. 3.24's sum of the four corners `c` (t00, t10, t01, t11, each pixel-major pairs) with
@@ -1053,7 +1173,6 @@ fn corner_sum(
 #[inline]
 fn border_bilinear<const MX: u8, const MY: u8>(
     dt: &[[f32; 4]],
-    km: usize,
     w: i32,
     h: i32,
     bc: std::arch::x86_64::__m256,
@@ -1065,10 +1184,10 @@ fn border_bilinear<const MX: u8, const MY: u8>(
     let (x, xi, a) = border_linear8::<MX>(s, w);
     let (y, yi, b) = border_linear8::<MY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    let kmv = _mm256_set1_epi32(km as i32);
     let corner = |q: usize| {
         let (i, j) = (q & 1, q >> 1);
-        let k = _mm256_and_si256(_mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]), kmv);
+        // (`load_pairs` takes the index modulo the level's texels: & km.)
+        let k = _mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]);
         let inside = _mm256_castsi256_ps(_mm256_and_si256(xi[i], yi[j]));
         let c = load_pairs(dt, k);
         std::array::from_fn(|p| {
@@ -1269,16 +1388,31 @@ mod tests {
             };
             let mut x = (g.next() % 400) as i32 - 100;
             for step in 0..12 {
-                if step == 6 && g.next() % 2 == 0 {
-                    // Another row (the quads' choice starts again).
-                    qy = ((g.next() % 200) as i32 - 50) as f32;
-                    fs.row(0.0, qy);
+                if step % 6 == 0 && g.next() % 2 == 0 {
+                    // Another row: of another quad row (the quads' choice starts again) or of
+                    // the same one (the quads kept), from another x now and then.
+                    if g.next() % 2 == 0 {
+                        qy = ((g.next() % 200) as i32 - 50) as f32;
+                    }
+                    fs.row(1.0, qy);
+                    if g.next() % 2 == 0 {
+                        x = (g.next() % 400) as i32 - 100;
+                    }
                 }
                 // SAFETY: the CPU has AVX2 (checked above).
                 let got = unsafe { fs.quads_select(x) };
                 let qx = std::array::from_fn(|l| ((x + l as i32) & !1).wrapping_sub(ox) as f32);
                 let want = s.select_lanes(&s.quad_lambda_lanes(&planes, to, qx, qy));
                 if let Some((la, lin, f)) = got {
+                    use std::arch::x86_64::{__m256, __m256i};
+                    // SAFETY: the registers have the layouts of the arrays; every bit pattern
+                    // is valid for both.
+                    let (la, f) = unsafe {
+                        (
+                            std::mem::transmute::<__m256i, [i32; LANES]>(la),
+                            std::mem::transmute::<__m256, [f32; LANES]>(f),
+                        )
+                    };
                     checked += 1;
                     assert!(
                         la == want.0
