@@ -950,6 +950,25 @@ impl Scene {
 /// thread (two tiles' worth, as the two-tile rule).
 const SERIAL_AREA: u64 = 2 * TILE_PIXELS as u64;
 
+/// Estimated work of a rasterisation (bounding-box pixels, plus `PRIM_WORK` for each
+/// primitive) below which its tiles are drawn on the calling thread: sixteen tiles' pixels.
+/// Waking the pool costs 25–40 µs on the bench machine (the workers sleep during the GL frame
+/// the bench interleaves); a single smooth triangle over 41616 box pixels takes ~25 µs.
+const SERIAL_WORK: u64 = 16 * TILE_PIXELS as u64;
+
+/// A primitive's fixed cost in a rasterisation (per tile reached: its set-up per tile, its edge
+/// walk), in bounding-box pixels, for `SERIAL_WORK`.
+const PRIM_WORK: u64 = 64;
+
+/// Whether a rasterisation of `jobs` busy tiles, primitives with `area` bounding-box pixels in
+/// all and `prims` primitives is drawn on the calling thread: handing it to the pool costs more
+/// than it saves. Tiles are independent, so the pixels are the same either way.
+fn serial_pass(jobs: usize, area: u64, prims: u64) -> bool {
+    jobs <= 2
+        || area < SERIAL_AREA
+        || area.saturating_add(prims.saturating_mul(PRIM_WORK)) < SERIAL_WORK
+}
+
 /// Given vertices after which `flush_if_large` draws the batch.
 const FLUSH_AT: usize = 1 << 15;
 
@@ -1112,15 +1131,20 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
         }
         long
     };
-    // Primitives within one or two tiles, or whose bounding boxes hold fewer pixels than two
-    // tiles, are drawn on this thread: handing them to the pool costs more than drawing them.
-    // Tiles are independent, so the pixels are the same.
-    let area: u64 = parts
-        .iter()
-        .flat_map(|(_, _, ws)| ws.iter())
-        .map(|w| w.area)
-        .sum();
-    if jobs.len() <= 2 || area < SERIAL_AREA {
+    // Primitives within one or two tiles, whose bounding boxes hold fewer pixels than two
+    // tiles, or few primitives over fewer than sixteen tiles' pixels are drawn on this thread
+    // (`serial_pass`).
+    let (area, prims) =
+        parts
+            .iter()
+            .flat_map(|(_, _, ws)| ws.iter())
+            .fold((0u64, 0u64), |(a, n), w| {
+                (
+                    a.saturating_add(w.area),
+                    n.saturating_add(w.prims.len() as u64),
+                )
+            });
+    if serial_pass(jobs.len(), area, prims) {
         jobs.into_iter().map(work).fold(Vec::new(), add)
     } else {
         jobs.into_par_iter().map(work).reduce(Vec::new, add)

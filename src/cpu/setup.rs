@@ -161,6 +161,18 @@ impl RPrim {
         };
         [edge(0, 1), edge(1, 2), edge(2, 0)]
     }
+
+    /// Whether triangle `self` may cover a pixel centre of `rect` (`[x0, y0, x1, y1]`,
+    /// inclusive, inside its bounding box): false when one edge function (`edges`) is negative
+    /// at every pixel of `rect`, its largest value being at a corner (exact, in i128). Then
+    /// the rasteriser's walk of the rectangle's rows finds no span.
+    pub fn may_reach(&self, rect: [i32; 4]) -> bool {
+        let [x0, y0, x1, y1] = rect.map(i128::from);
+        self.edges().iter().all(|e| {
+            let [c, dx, dy] = e.map(i128::from);
+            c + (dx * x0).max(dx * x1) + (dy * y0).max(dy * y1) >= 0
+        })
+    }
 }
 
 /// The per-flush constants of setup.
@@ -975,8 +987,26 @@ impl Worker {
             self.prims.push(p);
             return;
         }
+        // A long thin triangle (a line's half, a fan's sliver) crosses few of the tiles of its
+        // box: the others are not binned, so the rasteriser neither walks their rows nor
+        // clears them for it. Every tile whose pixels it covers is binned (`may_reach`).
+        let test =
+            p.kind == PrimKind::Tri && p.cover & COVER_KNOWN == 0 && (ty1 - ty0) + (tx1 - tx0) > 1;
+        let side = TILE as i32;
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
+                if test {
+                    let (x, y) = (tx as i32 * side, ty as i32 * side);
+                    let rect = [
+                        x.max(x0 as i32),
+                        y.max(y0 as i32),
+                        (x + side - 1).min(x1 as i32),
+                        (y + side - 1).min(y1 as i32),
+                    ];
+                    if !p.may_reach(rect) {
+                        continue;
+                    }
+                }
                 let t = ty * tiles_x + tx;
                 if let Some(b) = self.bins.get_mut(t) {
                     if b.is_empty() {
@@ -1211,6 +1241,56 @@ mod tests {
 
     fn fields(g: Option<Geom>) -> Option<Fields> {
         g.map(|g| (g.v, g.swapped, g.area, g.bbox, g.owns, g.d, g.e))
+    }
+
+    /// `RPrim::may_reach` on random triangles (thin, large, near the 1/256 grid, every tie
+    /// rule) and random rectangles inside their boxes: true whenever a pixel centre of the
+    /// rectangle has all three edge functions >= 0 (each pixel tested), and false for some.
+    #[test]
+    fn may_reach_keeps_every_covered_rect() {
+        use super::{PrimKind, RPrim};
+        let mut g = Gen(0x5eed_0d16);
+        let (mut reached, mut missed) = (0, 0);
+        for case in 0..20_000 {
+            let span = [24u64, 200, 3000, 40_000][case % 4];
+            let mut xy = [0i32; 6];
+            for v in xy.iter_mut() {
+                *v = (g.next() % span) as i32 - (span / 4) as i32;
+            }
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags: 0,
+                bbox: [0; 4],
+                mat: 0,
+                voff: 0,
+                xy,
+                owns: g.byte() & 7,
+                cover: 0,
+                z: [0.0; 3],
+            };
+            let edges = p.edges();
+            let lo = |k: usize| xy.iter().skip(k).step_by(2).min().copied().unwrap_or(0) / 256 - 1;
+            let hi = |k: usize| xy.iter().skip(k).step_by(2).max().copied().unwrap_or(0) / 256 + 1;
+            let (bx0, by0, bx1, by1) = (lo(0), lo(1), hi(0), hi(1));
+            let pick = |g: &mut Gen, a: i32, b: i32| a + (g.next() % (b - a + 1) as u64) as i32;
+            let (xa, xb) = (pick(&mut g, bx0, bx1), pick(&mut g, bx0, bx1));
+            let (ya, yb) = (pick(&mut g, by0, by1), pick(&mut g, by0, by1));
+            let rect = [xa.min(xb), ya.min(yb), xa.max(xb), ya.max(yb)];
+            let covered = (rect[1]..=rect[3]).any(|y| {
+                (rect[0]..=rect[2]).any(|x| {
+                    edges
+                        .iter()
+                        .all(|e| e[0] + e[1] * i64::from(x) + e[2] * i64::from(y) >= 0)
+                })
+            });
+            let may = p.may_reach(rect);
+            assert!(may || !covered, "case {case}: {xy:?} {rect:?}");
+            match may {
+                true => reached += 1,
+                false => missed += 1,
+            }
+        }
+        assert!(reached > 1000 && missed > 1000, "{reached} {missed}");
     }
 
     /// `geom_wins` (the bounding box from the vertices' `Win::cen`) against `geom` on random
