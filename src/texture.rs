@@ -1061,7 +1061,10 @@ fn unpack_with(
             /// `f` of each colour's components as c / 255, appended to `out`.
             #[inline(always)]
             fn conv(out: &mut Vec<[f32; 4]>, b: &[[u8; 4]], f: impl Fn([f32; 4]) -> [f32; 4]) {
-                out.extend(b.iter().map(|&c| f(c.map(crate::pixels::unit_u8))));
+                // `unit4` is `unit_u8` of each component (c / 255 correctly rounded, which the
+                // table's double-precision quotient rounded to f32 is for every byte: the
+                // test `unpack_byte_route_is_the_general_route` goes through all 256).
+                out.extend(b.iter().map(|&c| f(unit4(c))));
             }
             match base {
                 gl::ALPHA => conv(out, &b, |c| keep(gl::ALPHA, c)),

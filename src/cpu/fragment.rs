@@ -722,7 +722,18 @@ impl FragCtx<'_> {
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = slot;
-        let mut vl = [[0.0f32; LANES]; MAXV];
+        // The varyings' rows: only the `nv` in use are zeroed (`lanes::varyings` writes them
+        // all for each group); zeroing all MAXV rows (1248 bytes) was a memset of ≈85
+        // instructions a span on texture-targets.
+        let mut vl_rows = [std::mem::MaybeUninit::<[f32; LANES]>::uninit(); MAXV];
+        let vl_used = vl_rows.get_mut(..nv).unwrap_or_default();
+        for row in vl_used.iter_mut() {
+            row.write([0.0; LANES]);
+        }
+        // SAFETY: every element of `vl_used` was initialised just above, and
+        // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
+        let vl: &mut [[f32; LANES]] =
+            unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         // Each quad's λ once (not once per lane): computed as the groups reach it.
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
@@ -733,7 +744,7 @@ impl FragCtx<'_> {
                 g += LANES;
                 continue;
             }
-            let vs = &mut vl[..nv];
+            let vs = &mut *vl;
             super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
                 for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
