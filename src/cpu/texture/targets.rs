@@ -35,7 +35,8 @@ struct Views3<'a> {
 /// Measured again in the eighth session (texture-targets, callgrind, millions of
 /// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0. The eleventh session, with the
 /// AVX2 kernels and λ (a lane-pass group ≈896 instructions, a sparse lane ≈354): 1 727.9,
-/// 2 721.4, 3 726.5.
+/// 2 721.4, 3 726.5. The thirteenth session, with both levels of a 1D/3D group in one kernel
+/// (`lod_dense`): 1 690.08, 2 686.92 (of which the draws 534.02 and 528.81).
 const SPARSE: u32 = 2;
 
 /// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
