@@ -385,6 +385,36 @@ pub struct Image<'a> {
     pub layout: ImageLayout,
 }
 
+/// The 8-bit colour of one UNSIGNED_BYTE group `b` of components `slots` (`Image::bytes`):
+/// each byte in the channels its slot names, a missing R, G, B 0 and A 255. `K` 4 says the
+/// slots are R, G, B, A and 3 R, G, B (then `b` is copied as it is; a `b` of another length
+/// gives (0, 0, 0, 255)); 0 reads the slots.
+#[inline(always)]
+fn group_bytes<const K: usize>(b: &[u8], slots: &[Slot]) -> [u8; 4] {
+    match (K, b) {
+        (4, &[r, g, b, a]) => [r, g, b, a],
+        (3, &[r, g, b]) => [r, g, b, 255],
+        (3 | 4, _) => [0, 0, 0, 255],
+        _ => {
+            let mut c = [0, 0, 0, 255];
+            for (&byte, s) in b.iter().zip(slots) {
+                match s {
+                    Slot::R => c[0] = byte,
+                    Slot::G => c[1] = byte,
+                    Slot::B => c[2] = byte,
+                    Slot::A => c[3] = byte,
+                    Slot::L => {
+                        c[0] = byte;
+                        c[1] = byte;
+                        c[2] = byte;
+                    }
+                }
+            }
+            c
+        }
+    }
+}
+
 /// An element of `size` bytes at `at`, in the host's order (SWAP_BYTES applied), as a u32
 /// (0 past the end of `data`).
 #[inline]
@@ -567,31 +597,50 @@ impl Image<'_> {
             return None;
         };
         let n = slots.len();
-        let rgba = slots == [Slot::R, Slot::G, Slot::B, Slot::A];
+        // RGBA and RGB (the common client formats) in the channels they name, known when the
+        // loops below are compiled; any other order slot by slot.
+        let kind = match slots {
+            [Slot::R, Slot::G, Slot::B, Slot::A] => 4,
+            [Slot::R, Slot::G, Slot::B] => 3,
+            _ => 0,
+        };
+        let group = |b: &[u8]| match kind {
+            4 => group_bytes::<4>(b, slots),
+            3 => group_bytes::<3>(b, slots),
+            _ => group_bytes::<0>(b, slots),
+        };
+        // Columns that are one run i0, i0 + 1, .. (a whole row, as TexImage reads): each row's
+        // groups are then one run of bytes, `n` apart (UNSIGNED_BYTE: a group is its `n`
+        // bytes), converted without a bounds check per group. A row not wholly inside `data`
+        // takes the per-group route (whose missing groups are (0, 0, 0, 255)).
+        let run = cols.first().copied().filter(|&i0| {
+            n >= 1
+                && l.pixel == n
+                && cols
+                    .iter()
+                    .enumerate()
+                    .all(|(q, &i)| i0.checked_add(q) == Some(i))
+        });
         for &j in rows {
+            if let Some(i0) = run {
+                let at = l.at(i0, j);
+                let end = cols
+                    .len()
+                    .checked_mul(n)
+                    .and_then(|len| at.checked_add(len));
+                if let Some(row) = end.and_then(|e| self.data.get(at..e)) {
+                    let groups = row.chunks_exact(n);
+                    match kind {
+                        4 => out.extend(groups.map(|b| group_bytes::<4>(b, slots))),
+                        3 => out.extend(groups.map(|b| group_bytes::<3>(b, slots))),
+                        _ => out.extend(groups.map(|b| group_bytes::<0>(b, slots))),
+                    }
+                    continue;
+                }
+            }
             for &i in cols {
                 let at = l.at(i, j);
-                let mut c = [0, 0, 0, 255];
-                if let Some(b) = self.data.get(at..at + n) {
-                    if rgba {
-                        c.copy_from_slice(b);
-                    } else {
-                        for (&byte, s) in b.iter().zip(slots) {
-                            match s {
-                                Slot::R => c[0] = byte,
-                                Slot::G => c[1] = byte,
-                                Slot::B => c[2] = byte,
-                                Slot::A => c[3] = byte,
-                                Slot::L => {
-                                    c[0] = byte;
-                                    c[1] = byte;
-                                    c[2] = byte;
-                                }
-                            }
-                        }
-                    }
-                }
-                out.push(c);
+                out.push(self.data.get(at..at + n).map_or([0, 0, 0, 255], group));
             }
         }
         Some(())
@@ -1096,6 +1145,80 @@ mod tests {
         // LSB first: bit 3 is 0x08.
         assert!(lsb.bit(&[0, 0, 0, 0, 0b0000_1000], 0, 0));
         assert_eq!(PixelModes::default().bitmap_layout(0, 5).unwrap().need, 0);
+    }
+
+    /// `bytes` of columns that are one run (each row's groups as one run of bytes) gives what
+    /// the per-group route gives (the same columns in reverse order, a row's output reversed
+    /// back): every UNSIGNED_BYTE colour format, random alignments, row lengths and skips,
+    /// runs from any column, rows past the data and data cut short in a row (whose missing
+    /// groups are (0, 0, 0, 255)).
+    #[test]
+    fn bytes_of_a_run_of_columns_are_the_per_group_route() {
+        let mut seed = 0x2545_f491u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed as usize
+        };
+        let formats = [
+            gl::RGBA,
+            gl::RGB,
+            gl::BGRA,
+            gl::BGR,
+            gl::ABGR_EXT,
+            gl::RED,
+            gl::ALPHA,
+            gl::LUMINANCE,
+            gl::LUMINANCE_ALPHA,
+        ];
+        let mut runs = 0;
+        for case in 0..3000 {
+            let format = formats[case % formats.len()];
+            let Ok(f) = check(format, gl::UNSIGNED_BYTE) else {
+                continue;
+            };
+            let modes = PixelModes {
+                alignment: [1, 2, 4, 8][next() % 4],
+                row_length: (next() % 3 == 0) as i32 * (next() % 20) as i32,
+                skip_pixels: (next() % 3) as i32,
+                skip_rows: (next() % 3) as i32,
+                ..PixelModes::default()
+            };
+            let (w, h) = (1 + next() % 19, 1 + next() % 9);
+            let Some(layout) = modes.layout(w as i32, h as i32, f.group.components(), 1) else {
+                continue;
+            };
+            // Mostly the whole image; sometimes cut short inside a row.
+            let len = match case % 3 {
+                0 => layout.need.saturating_sub(next() % 7),
+                _ => layout.need,
+            };
+            let data: Vec<u8> = (0..len).map(|_| next() as u8).collect();
+            let img = Image {
+                data: &data,
+                format: f,
+                layout: ImageLayout::Bytes(layout),
+            };
+            let i0 = next() % w;
+            let cols: Vec<usize> = (i0..w).collect();
+            let rows: Vec<usize> = (0..h + 1).collect();
+            let mut run = vec![[1, 2, 3, 4]];
+            assert!(img.bytes(&cols, &rows, &mut run).is_some());
+            let back: Vec<usize> = cols.iter().rev().copied().collect();
+            let mut want = vec![[1, 2, 3, 4]];
+            for &j in &rows {
+                let mut row = Vec::new();
+                assert!(img.bytes(&back, &[j], &mut row).is_some());
+                want.extend(row.iter().rev());
+            }
+            assert_eq!(
+                run, want,
+                "case {case}: format {format:#x} {w}x{h} {layout:?}"
+            );
+            runs += 1;
+        }
+        assert!(runs > 2000, "{runs}");
     }
 
     #[test]

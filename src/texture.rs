@@ -393,22 +393,21 @@ pub fn halve(src: &Level) -> Level {
     let fx = if src.width > 1 { 2 } else { 1 };
     let fy = if src.height > 1 { 2 } else { 1 };
     let fz = if src.depth > 1 { 2 } else { 1 };
+    let n = Vec4::splat((fx * fy * fz) as f32);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
-                let mut sum = [0.0f32; 4];
+                // Each component's sum from zero in the order (dk, dj, di), then over n: the
+                // same f32 additions and division as component by component.
+                let mut sum = Vec4::ZERO;
                 for dk in 0..fz {
                     for dj in 0..fy {
                         for di in 0..fx {
-                            let t = src.texel3(i * fx + di, j * fy + dj, k * fz + dk);
-                            for c in 0..4 {
-                                sum[c] += t[c];
-                            }
+                            sum += Vec4::from(src.texel3(i * fx + di, j * fy + dj, k * fz + dk));
                         }
                     }
                 }
-                let n = (fx * fy * fz) as f32;
-                texels.push(quantize(src.base, sum.map(|s| s / n)));
+                texels.push(quantize(src.base, (sum / n).to_array()));
             }
         }
     }
@@ -447,10 +446,46 @@ pub fn quantize(base: u32, t: [f32; 4]) -> [f32; 4] {
         };
         [d, st, 0.0, 0.0]
     } else {
-        for (o, c) in out.iter_mut().zip(t) {
-            *o = round_small(c.clamp(0.0, 1.0) * 255.0) / 255.0;
+        quantize_colour(t).unwrap_or_else(|| {
+            for (o, c) in out.iter_mut().zip(t) {
+                *o = round_small(c.clamp(0.0, 1.0) * 255.0) / 255.0;
+            }
+            out
+        })
+    }
+}
+
+/// `quantize`'s colour components, `round_small(c.clamp(0, 1)·255) / 255` each, on four SSE2
+/// lanes when none of `t` is NaN (else None: the scalar expression then): `f32::clamp` as
+/// `maxps(0, c)` then `minps(1, ·)` (those operand orders keep −0 as −0), the truncation by
+/// `cvttps2dq` (exact on [−0, 255]), one more where the fraction is at least 1/2, `x`'s sign,
+/// then `divps`. The same bits as the scalar expression (test `quantize_colour_is_the_scalar`).
+#[inline(always)]
+fn quantize_colour(t: [f32; 4]) -> Option<[f32; 4]> {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE2 is part of the x86-64 baseline; the only memory read is `t` and written
+    // `out`, four f32 each.
+    unsafe {
+        use std::arch::x86_64::*;
+        let v = _mm_loadu_ps(t.as_ptr());
+        if _mm_movemask_ps(_mm_cmpunord_ps(v, v)) != 0 {
+            return None;
         }
-        out
+        let c = _mm_min_ps(_mm_set1_ps(1.0), _mm_max_ps(_mm_setzero_ps(), v));
+        let x = _mm_mul_ps(c, _mm_set1_ps(255.0));
+        let tr = _mm_cvtepi32_ps(_mm_cvttps_epi32(x));
+        let up = _mm_cmpge_ps(_mm_sub_ps(x, tr), _mm_set1_ps(0.5));
+        let r = _mm_add_ps(tr, _mm_and_ps(up, _mm_set1_ps(1.0)));
+        let sign = _mm_set1_ps(-0.0);
+        let r = _mm_or_ps(_mm_andnot_ps(sign, r), _mm_and_ps(sign, x));
+        let mut out = [0.0f32; 4];
+        _mm_storeu_ps(out.as_mut_ptr(), _mm_div_ps(r, _mm_set1_ps(255.0)));
+        Some(out)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = t;
+        None
     }
 }
 
@@ -1061,7 +1096,10 @@ fn unpack_with(
             /// `f` of each colour's components as c / 255, appended to `out`.
             #[inline(always)]
             fn conv(out: &mut Vec<[f32; 4]>, b: &[[u8; 4]], f: impl Fn([f32; 4]) -> [f32; 4]) {
-                out.extend(b.iter().map(|&c| f(c.map(crate::pixels::unit_u8))));
+                // `unit4` is `unit_u8` of each component (c / 255 correctly rounded, which the
+                // table's double-precision quotient rounded to f32 is for every byte: the
+                // test `unpack_byte_route_is_the_general_route` goes through all 256).
+                out.extend(b.iter().map(|&c| f(unit4(c))));
             }
             match base {
                 gl::ALPHA => conv(out, &b, |c| keep(gl::ALPHA, c)),
@@ -1203,6 +1241,50 @@ mod tests {
     /// 64 ulps of each half-integer and integer up to 2^12, every 61st bit pattern of the
     /// range, the ends; and `quantize` is the `f32::round` version on every 997th f32 bit
     /// pattern (NaN, infinities, negatives, subnormals included) in each base format.
+    /// `quantize_colour` is `quantize`'s scalar colour expression bit for bit: every value
+    /// near each of the 256 steps and their midpoints (of c·255), signed zeros, subnormals,
+    /// values below 0 and above 1, infinities, and random bits (NaN among them: None).
+    #[test]
+    fn quantize_colour_is_the_scalar() {
+        let scalar = |c: f32| round_small(c.clamp(0.0, 1.0) * 255.0) / 255.0;
+        let mut vals = vec![
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            2.0,
+            f32::INFINITY,
+            -f32::INFINITY,
+            1e-45,
+        ];
+        for k in 0..=255u32 {
+            for c in [k as f32 / 255.0, (k as f32 + 0.5) / 255.0] {
+                let b = c.to_bits();
+                vals.extend((0..=64u32).map(|d| f32::from_bits((b + d).saturating_sub(32))));
+            }
+        }
+        let mut seed = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            vals.push(f32::from_bits(seed));
+        }
+        for q in vals.chunks(4) {
+            let mut t = [0.5f32; 4];
+            t[..q.len()].copy_from_slice(q);
+            match quantize_colour(t) {
+                Some(got) => {
+                    let want = t.map(scalar);
+                    assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{t:?}");
+                }
+                None => assert!(t.iter().any(|c| c.is_nan()), "{t:?}"),
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        assert!(quantize_colour([0.1, 0.2, 0.3, 0.4]).is_some());
+    }
+
     #[test]
     fn round_small_is_round() {
         let check = |x: f32| {

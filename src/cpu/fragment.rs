@@ -539,6 +539,10 @@ impl FragCtx<'_> {
 
     /// `tri_span` of row `[y, x0, x1]` of a primitive whose spans in this tile share `slot`
     /// (None before the first): the fused route is set up once for them, the same bits.
+    /// A thin dispatch, inlined into its callers: with the portable body inlined here, every
+    /// span paid that body's prologue and epilogue (six registers saved, a 3 KiB frame) on
+    /// its way to `tri_span_avx2`, ≈28 instructions a span.
+    #[inline(always)]
     pub fn tri_span_row<'s>(
         &'s self,
         bufs: &mut TileBufs,
@@ -553,6 +557,19 @@ impl FragCtx<'_> {
             unsafe { self.tri_span_avx2(bufs, p, planes, row, slot) };
             return;
         }
+        self.tri_span_portable(bufs, p, planes, row, slot);
+    }
+
+    /// `tri_span_row` without AVX2 (out of line, as `tri_span_avx2`).
+    #[inline(never)]
+    fn tri_span_portable<'s>(
+        &'s self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &'s [f32],
+        row: [i32; 3],
+        slot: &mut FusedSlot<'s>,
+    ) {
         self.tri_span_in(bufs, p, planes, row, slot);
     }
 
@@ -722,7 +739,18 @@ impl FragCtx<'_> {
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = slot;
-        let mut vl = [[0.0f32; LANES]; MAXV];
+        // The varyings' rows: only the `nv` in use are zeroed (`lanes::varyings` writes them
+        // all for each group); zeroing all MAXV rows (1248 bytes) was a memset of ≈85
+        // instructions a span on texture-targets.
+        let mut vl_rows = [std::mem::MaybeUninit::<[f32; LANES]>::uninit(); MAXV];
+        let vl_used = vl_rows.get_mut(..nv).unwrap_or_default();
+        for row in vl_used.iter_mut() {
+            row.write([0.0; LANES]);
+        }
+        // SAFETY: every element of `vl_used` was initialised just above, and
+        // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
+        let vl: &mut [[f32; LANES]] =
+            unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         // Each quad's λ once (not once per lane): computed as the groups reach it.
         let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
@@ -733,7 +761,7 @@ impl FragCtx<'_> {
                 g += LANES;
                 continue;
             }
-            let vs = &mut vl[..nv];
+            let vs = &mut *vl;
             super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
                 for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {

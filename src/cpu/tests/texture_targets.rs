@@ -748,3 +748,97 @@ fn scalar_linear_3d_in_image_is_the_fetch_route_bit_for_bit() {
     }
     assert!(fast > 20_000, "{fast}");
 }
+
+/// `lod_dense` (both levels of a 1D or 3D LINEAR_MIPMAP_LINEAR group and their blend in one
+/// AVX2 kernel): power-of-two mipmapped textures with REPEAT and CLAMP_TO_EDGE axes, groups
+/// of nearby coordinates with one λ (all lanes on one level, most blending two), every
+/// coverage mask; `texels_lanes` on both routes (AVX2 on and off) is the scalar texel bit for
+/// bit, and `lod_dense` itself, given `select_lanes`' levels and weights as `lod_targets`
+/// gives them, takes most groups and writes the same texels.
+#[test]
+fn lod_dense_kernel_is_the_scalar_texel_bit_for_bit() {
+    let mut next = lcg(83);
+    let mut taken = [0usize; 2];
+    let sizes = [1, 2, 4, 8, 16, 32];
+    for round in 0..2000 {
+        let (ti, target) = [(0, gl::TEXTURE_1D), (1, gl::TEXTURE_3D)][round % 2];
+        let base = BASES[(next() % 6) as usize];
+        let pick = |next: &mut dyn FnMut() -> u64| sizes[(next() % sizes.len() as u64) as usize];
+        let (mut w, mut h, mut d) = match target {
+            gl::TEXTURE_1D => (pick(&mut next), 1, 1),
+            _ => (pick(&mut next), pick(&mut next), pick(&mut next)),
+        };
+        let mut o = TexObject::new(target);
+        o.min_filter = gl::LINEAR_MIPMAP_LINEAR;
+        o.mag_filter = gl::LINEAR;
+        let mut k = 0;
+        loop {
+            o.levels[k] = Some(random_level(w, h, d, base, &mut next));
+            if w == 1 && h == 1 && d == 1 {
+                break;
+            }
+            let dim = |n: i32, on: bool| if on { (n / 2).max(1) } else { 1 };
+            (w, h, d) = (
+                dim(w, true),
+                dim(h, target != gl::TEXTURE_1D),
+                dim(d, target == gl::TEXTURE_3D),
+            );
+            k += 1;
+        }
+        let wrap = |next: &mut dyn FnMut() -> u64| match next() % 2 {
+            0 => gl::REPEAT,
+            _ => gl::CLAMP_TO_EDGE,
+        };
+        o.wrap_s = wrap(&mut next);
+        o.wrap_t = wrap(&mut next);
+        o.wrap_r = wrap(&mut next);
+        let s = sampler_on(target, o, gl::MODULATE, Default::default());
+        for _ in 0..8 {
+            let base: [f32; 3] = std::array::from_fn(|_| match next() % 8 {
+                0 => coord(&mut next),
+                _ => (next() % 4000) as f32 * 1e-3 - 1.5,
+            });
+            let step: [f32; 3] = std::array::from_fn(|_| (next() % 2001) as f32 * 1e-4 - 0.1);
+            let c: [[f32; LANES]; 3] =
+                std::array::from_fn(|k| std::array::from_fn(|l| base[k] + step[k] * l as f32));
+            let q = [1.0f32; LANES];
+            let lambda = [match next() % 8 {
+                0 => coord(&mut next),
+                _ => (next() % 7000) as f32 * 1e-3 - 1.0,
+            }; LANES];
+            let m = match next() % 3 {
+                0 => 0xff,
+                _ => (next() % 256) as u8 | 0x81,
+            };
+            for off in [false, true] {
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(off));
+                let got = s.texels_lanes([&c[0], &c[1], &c[2], &q], &lambda, m);
+                // `lod_dense` alone, with the levels and weights `lod_targets` gives it.
+                let (lv, linear, f) = s.select_lanes(&lambda);
+                let second = super::mask_ne_zero(&f) & m;
+                let mut direct = [[f32::NAN; 4]; LANES];
+                let took = linear & m == m
+                    && s.lod_dense(&lv, &c[0], &c[1], &c[2], &f, second, m, &mut direct);
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+                assert!(!(off && took), "round {round}: the kernel ran without AVX2");
+                taken[ti] += usize::from(took);
+                for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
+                    let want = s.texel([c[0][l], c[1][l], c[2][l], 1.0], lambda[l]);
+                    let what = format!("round {round} target {target:#x} off {off} lane {l}");
+                    assert_eq!(got[l].map(f32::to_bits), want.map(f32::to_bits), "{what}");
+                    if took {
+                        assert_eq!(
+                            direct[l].map(f32::to_bits),
+                            want.map(f32::to_bits),
+                            "{what}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    // The kernel needs AVX2; where the CPU has it, it takes most groups.
+    if crate::cpu::lanes::has_avx2() {
+        assert!(taken.iter().all(|&n| n > 3000), "{taken:?}");
+    }
+}

@@ -35,7 +35,8 @@ struct Views3<'a> {
 /// Measured again in the eighth session (texture-targets, callgrind, millions of
 /// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0. The eleventh session, with the
 /// AVX2 kernels and λ (a lane-pass group ≈896 instructions, a sparse lane ≈354): 1 727.9,
-/// 2 721.4, 3 726.5.
+/// 2 721.4, 3 726.5. The thirteenth session, with both levels of a 1D/3D group in one kernel
+/// (`lod_dense`): 1 690.08, 2 686.92 (of which the draws 534.02 and 528.81).
 const SPARSE: u32 = 2;
 
 /// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
@@ -143,6 +144,9 @@ impl Sampler {
         let (la, linear, f) = self.select_lanes(lambda);
         let mut lb = [self.base_level; LANES];
         let (linear, second) = (linear & m, mask_ne_zero(&f) & m);
+        if linear == m && self.lod_dense(&la, s, t, r, &f, second, m, out) {
+            return;
+        }
         self.pass_targets(false, face, &la, s, t, r, m & !linear, out);
         self.pass_targets(true, face, &la, s, t, r, linear, out);
         if second == 0 {
@@ -164,6 +168,54 @@ impl Sampler {
                 out[l] = (a * Vec4::splat(1.0 - f) + b * Vec4::splat(f)).to_array();
             }
         }
+    }
+
+    /// `lod_targets` in one AVX2 kernel ([`dense_targets_lod`]) when it can take the group:
+    /// a 1D or 3D texture without depth comparison, every lane of `m` LINEAR on one level
+    /// `lv` (the common case: λ is per quad), that level and, when some lane blends two
+    /// (`second`, its weight in `f`), the next one dense ([`dense3`]) with wrap modes the
+    /// kernel takes ([`targets_kernel_ok`], [`Sampler::in_image`]). Both levels as
+    /// `pass_targets` computes them, and `sample_face`'s blend, without the texels of the
+    /// levels going through memory between the passes. Returns false (nothing written) for
+    /// any other group.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn lod_dense(
+        &self,
+        lv: &[i32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        f: &[f32; LANES],
+        second: u8,
+        m: u8,
+        out: &mut TexelLanes,
+    ) -> bool {
+        if m == 0 || self.cube || self.compare.is_some() || !self.in_image(true) {
+            return false;
+        }
+        let k0 = lv[m.trailing_zeros() as usize & (LANES - 1)];
+        if !mask_eq(lv, k0) & m != 0 {
+            return false;
+        }
+        let dense = |k: i32| {
+            let x = self.obj.face_level(0, k)?;
+            let (tx, n) = (&x.texels[..], [x.width, x.height, x.depth]);
+            (dense3(tx, n) && targets_kernel_ok(self.dims, self.wrap, tx.len())).then_some((tx, n))
+        };
+        let Some(a) = dense(k0) else {
+            return false;
+        };
+        // f ≠ 0 only below the last level: level + 1 exists (`lod_targets`).
+        let b = match second {
+            0 => None,
+            _ => match dense(k0.saturating_add(1)) {
+                Some(b) => Some(b),
+                None => return false,
+            },
+        };
+        let rep = self.wrap.map(|mode| mode == gl::REPEAT);
+        dense_targets_lod(self.dims, rep, a, b, [s, t, r], f, second, m, out)
     }
 
     /// NEAREST (`linear` false) or LINEAR for the lanes of `m`, lane l on level `lv[l]` of
@@ -1015,17 +1067,36 @@ unsafe fn dense_targets8(
     three: bool,
     rep: [bool; 3],
     dt: &[[f32; 4]],
-    [w, h, d]: [i32; 3],
+    n: [i32; 3],
     s: &[f32; LANES],
     t: &[f32; LANES],
     r: &[f32; LANES],
     m: u8,
     out: &mut TexelLanes,
 ) {
+    // SAFETY: the caller's promises are `targets_ch8`'s.
+    if let Some(ch) = unsafe { targets_ch8(three, rep, dt, n, [s, t, r]) } {
+        store8(&ch, m, out);
+    }
+}
+
+/// [`dense_targets8`]'s LINEAR of all eight lanes as channel registers (r, g, b, a), None for
+/// an empty `dt`.
+///
+/// # Safety
+/// The CPU must have AVX2, and `dt` at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn targets_ch8(
+    three: bool,
+    rep: [bool; 3],
+    dt: &[[f32; 4]],
+    [w, h, d]: [i32; 3],
+    [s, t, r]: [&[f32; LANES]; 3],
+) -> Option<[std::arch::x86_64::__m256; 4]> {
     use std::arch::x86_64::*;
-    let Some(km) = dt.len().checked_sub(1) else {
-        return;
-    };
+    let km = dt.len().checked_sub(1)?;
     let (w, h, d) = (w.max(1), h.max(1), d.max(1));
     let kmv = _mm256_set1_epi32(km as i32);
     let off = |k: __m256i| _mm256_slli_epi32::<2>(_mm256_and_si256(k, kmv));
@@ -1047,8 +1118,7 @@ unsafe fn dense_targets8(
             };
             *v = _mm256_add_ps(_mm256_mul_ps(na, t0), _mm256_mul_ps(a, t1));
         }
-        store8(&ch, m, out);
-        return;
+        return Some(ch);
     }
     let (y0, y1, b) = axis8(lanes8(t), h, rep[1]);
     let (z0, z1, g) = axis8(lanes8(r), d, rep[2]);
@@ -1090,7 +1160,85 @@ unsafe fn dense_targets8(
         let (p0, p1) = (plane(&k0), plane(&k1));
         *v = _mm256_add_ps(_mm256_mul_ps(ng, p0), _mm256_mul_ps(g, p1));
     }
+    Some(ch)
+}
+
+/// A dense level's texels and sizes (width, height, depth).
+type DenseLevel<'a> = (&'a [[f32; 4]], [i32; 3]);
+
+/// [`Sampler::lod_dense`]'s kernel: level `a` for the lanes of `m` and, when given, level `b`
+/// for the lanes of `second` blended in as `sample_face` does, `a·(1 - f) + b·f` per channel
+/// (`f` the lane's weight), each by [`targets_ch8`] (AVX2). Out of line, as
+/// [`dense_targets`]. Returns false (nothing written) where the kernel cannot run (no AVX2, a
+/// level of more than 2^28 texels, an empty one).
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn dense_targets_lod(
+    dims: usize,
+    rep: [bool; 3],
+    a: DenseLevel<'_>,
+    b: Option<DenseLevel<'_>>,
+    coords: [&[f32; LANES]; 3],
+    f: &[f32; LANES],
+    second: u8,
+    m: u8,
+    out: &mut TexelLanes,
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if avx2() && a.0.len() <= 1 << 28 && b.map_or(0, |b| b.0.len()) <= 1 << 28 {
+        // SAFETY: AVX2 is present (checked above) and both levels at most 2^28 texels.
+        return unsafe { dense_targets_lod8(dims == 3, rep, a, b, coords, f, second, m, out) };
+    }
+    let _ = (dims, rep, a, b, coords, f, second, m, out);
+    false
+}
+
+/// [`dense_targets_lod`] on AVX2.
+///
+/// # Safety
+/// The CPU must have AVX2, and both levels at most 2^28 texels.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dense_targets_lod8(
+    three: bool,
+    rep: [bool; 3],
+    (at, an): DenseLevel<'_>,
+    b: Option<DenseLevel<'_>>,
+    coords: [&[f32; LANES]; 3],
+    f: &[f32; LANES],
+    second: u8,
+    m: u8,
+    out: &mut TexelLanes,
+) -> bool {
+    use std::arch::x86_64::*;
+    // SAFETY: AVX2 is present and level `a` at most 2^28 texels (the caller's promises).
+    let ch = unsafe { targets_ch8(three, rep, at, an, coords) };
+    let Some(mut ch) = ch else {
+        return false;
+    };
+    if let Some((bt, bn)) = b {
+        // SAFETY: AVX2 is present and level `b` at most 2^28 texels (the caller's promises).
+        let cb = unsafe { targets_ch8(three, rep, bt, bn, coords) };
+        let Some(cb) = cb else {
+            return false;
+        };
+        let fv = lanes8(f);
+        let nf = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
+        // The lanes of `second` (bit l of the mask to all ones in lane l).
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let sel = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
+            bits,
+        ));
+        for (c, cb) in ch.iter_mut().zip(cb) {
+            // `sample_face`'s a·(1 - f) + b·f.
+            let mix = _mm256_add_ps(_mm256_mul_ps(*c, nf), _mm256_mul_ps(cb, fv));
+            *c = _mm256_blendv_ps(*c, mix, sel);
+        }
+    }
     store8(&ch, m, out);
+    true
 }
 
 /// Eq. 3.24's sum for lane l of a LINEAR pass, in the scalar code's order:
