@@ -146,7 +146,8 @@ pub struct DrawStats {
     /// Batches handed to the pool to be set up (and rasterised, with the scene) in the
     /// background: a caller off the pool's flush at 32k vertices (`flush_if_large`).
     pub handoffs: u64,
-    /// Their time on the calling thread: the vertex stage and the hand-off.
+    /// Their time on the calling thread: the hand-off, and the vertex stage when it ran there
+    /// (the pool runs it when it has already finished the previous batch).
     pub handoff_ns: u64,
     /// Time the calling thread waited for a background draw to end.
     pub wait_ns: u64,
