@@ -43,7 +43,14 @@ pub(crate) struct DisplayLists {
     /// Lists run on the baseline route even where the CPU has AVX2 (`Context::replay_by`
     /// with `Route::Baseline` sets it, so that the routes test compares the lists' loop too).
     pub(crate) baseline: bool,
+    /// Emptied call buffers of the lists `Context::reset` dropped, for the lists compiled
+    /// next (a frame that compiles its lists again after each reset, as display-list does,
+    /// then grows no buffer from empty); at most [`SPARE_BUFFERS`].
+    spare: Vec<Vec<Call>>,
 }
+
+/// Call buffers kept across `Context::reset` (see `DisplayLists::spare`).
+const SPARE_BUFFERS: usize = 256;
 
 /// A list being defined.
 #[derive(Debug)]
@@ -68,6 +75,36 @@ pub(crate) struct List {
 }
 
 impl DisplayLists {
+    /// A new namespace (no list, no name in use) that keeps the call buffers of this one's
+    /// lists that nothing else holds (not shared with a share group or a running CallList),
+    /// emptied: what `Context::reset` puts in place.
+    pub(crate) fn emptied(self) -> DisplayLists {
+        let mut spare = self.spare;
+        // Pushed in descending name order, so that lists compiled in ascending order get
+        // back the buffers they had.
+        let lists = self
+            .defined
+            .into_values()
+            .rev()
+            .filter_map(|l| Arc::try_unwrap(l).ok());
+        for mut calls in self
+            .compiling
+            .map(|c| c.calls)
+            .into_iter()
+            .chain(lists.map(|l| l.calls))
+        {
+            if spare.len() >= SPARE_BUFFERS {
+                break;
+            }
+            calls.clear();
+            spare.push(calls);
+        }
+        DisplayLists {
+            spare,
+            ..Default::default()
+        }
+    }
+
     /// The shared part (the lists and the names in use), for a share group (context/share.rs).
     pub(crate) fn store(&self) -> (&ListMap, &[(u32, u32)], u32) {
         (&self.defined, &self.reserved, self.max_used)
@@ -313,7 +350,7 @@ impl Context {
         self.lists.compiling = Some(Compiling {
             name: list,
             mode,
-            calls: Vec::new(),
+            calls: self.lists.spare.pop().unwrap_or_default(),
             draws: Vec::new(),
         });
         self.sync_capturing();
@@ -335,7 +372,11 @@ impl Context {
         };
         self.sync_capturing();
         let (mut calls, mut draws) = (list.calls, list.draws);
-        calls.shrink_to_fit();
+        // A buffer grown by doubling is kept as it is (it is handed on at the next reset); one
+        // much larger than its list (a spare buffer of a larger list) gives its slack back.
+        if calls.capacity() > 2 * calls.len().max(16) {
+            calls.shrink_to_fit();
+        }
         draws.shrink_to_fit();
         self.lists.max_used = self.lists.max_used.max(list.name);
         self.lists
@@ -579,6 +620,41 @@ mod tests {
             .iter()
             .any(|c| matches!(c, Call::DrawArrays(..) | Call::ArrayElement(_))));
         assert!(plain.iter().any(|c| matches!(c, Call::DrawPixels(..))));
+    }
+
+    /// `reset` keeps the call buffers of the lists it drops (and of one left open), emptied;
+    /// a list compiled after it into such a buffer holds exactly its own calls.
+    #[test]
+    fn lists_compiled_after_reset_hold_only_their_calls() {
+        let mut ctx = Context::new(16, 16).expect("context");
+        for (name, n) in [(1, 50), (2, 10)] {
+            ctx.new_list(name, gl::COMPILE);
+            for i in 0..n {
+                ctx.color3f(i as f32, 0.0, 0.0);
+            }
+            ctx.end_list();
+        }
+        ctx.new_list(3, gl::COMPILE);
+        ctx.color3f(0.0, 1.0, 0.0);
+        ctx.reset();
+        assert_eq!(ctx.lists.spare.len(), 3);
+        assert!(ctx.lists.spare.iter().all(Vec::is_empty));
+        assert!(ctx.list_calls(1).is_none());
+        // List 1 gets back its 50-call buffer (the last pushed) and stores 3 calls in it.
+        ctx.new_list(1, gl::COMPILE);
+        for i in 0..3 {
+            ctx.color3f(0.0, 0.0, i as f32);
+        }
+        ctx.end_list();
+        assert_eq!(ctx.get_error(), gl::NO_ERROR);
+        let want: Vec<Call> = (0..3).map(|i| Call::Color3f(0.0, 0.0, i as f32)).collect();
+        assert_eq!(ctx.list_calls(1).expect("list 1"), &want[..]);
+        assert_eq!(ctx.lists.spare.len(), 2);
+        ctx.call_list(1);
+        assert_eq!(
+            ctx.state().current.color,
+            glam::Vec4::new(0.0, 0.0, 2.0, 1.0)
+        );
     }
 
     #[test]

@@ -150,7 +150,7 @@ impl Context {
         self.error = gl::NO_ERROR;
         self.begin_mode = None;
         self.recording = None;
-        self.lists = Default::default();
+        self.lists = std::mem::take(&mut self.lists).emptied();
         self.sync_capturing();
         self.attrib = Default::default();
         self.map_snapshots = Default::default();

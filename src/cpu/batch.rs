@@ -223,13 +223,11 @@ impl Batch {
         });
     }
 
-    /// Appends a vertex with the current attributes to the open primitive.
+    /// Appends a vertex with the current attributes to the open primitive (the caller has
+    /// opened one: `Context::vertex` draws nothing outside Begin/End). The primitive's count
+    /// is taken at `end`.
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
-        let Some(p) = self.prims.last_mut() else {
-            return;
-        };
-        p.count += 1;
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
         let others = Others::of(c, self.cur_mat);
@@ -299,10 +297,15 @@ impl Batch {
         self.spans.get(s as usize)
     }
 
-    /// Closes the open primitive; an empty one is dropped.
+    /// Closes the open primitive: its vertices are those given since its `begin`; an empty one
+    /// is dropped.
     pub fn end(&mut self) {
-        if self.prims.last().is_some_and(|p| p.count == 0) {
-            self.prims.pop();
+        let given = self.idx.len() as u32;
+        if let Some(p) = self.prims.last_mut() {
+            p.count = given.saturating_sub(p.first);
+            if p.count == 0 {
+                self.prims.pop();
+            }
         }
     }
 

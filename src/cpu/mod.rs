@@ -27,8 +27,10 @@
 //!
 //! The front end and the drawing overlap. A batch is drawn at End once it holds 32k vertices
 //! (`flush_if_large`), so memory stays bounded. The calling thread runs that batch's vertex
-//! stage itself (the pool is still drawing the previous batch), then hands setup and
-//! rasterisation to the pool with a copy of the state (texture images are shared through
+//! stage itself when the pool is still drawing the previous batch, or leaves it to the pool
+//! when the pool has finished (so that neither idles while the other is the bottleneck), then
+//! hands the batch (setup and rasterisation, and the vertex stage if left) to the pool with a
+//! copy of the state (texture images are shared through
 //! `Arc`, not copied: a change to one still in use copies it) and goes on filling the next
 //! batch. At most one draw is in flight: the next `flush_if_large`, any other flush (a state
 //! change, Clear, a read) and every framebuffer access wait for it first, so the draws happen
@@ -124,6 +126,10 @@ pub struct Renderer {
     /// Test hook: the next background draw panics (to test that the panic reaches the caller).
     #[cfg(test)]
     pub(crate) panic_in_background: bool,
+    /// Test hook: where the vertex stage of a batch handed to the pool runs (`Some(true)`: in
+    /// the pool's job, `Some(false)`: on the calling thread), instead of the balancing rule.
+    #[cfg(test)]
+    pub(crate) vertex_stage_on_pool: Option<bool>,
 }
 
 /// Where a context's calling thread spends its drawing time, for `fixedgl bench --stages`
@@ -141,7 +147,8 @@ pub struct DrawStats {
     /// Batches handed to the pool to be set up (and rasterised, with the scene) in the
     /// background: a caller off the pool's flush at 32k vertices (`flush_if_large`).
     pub handoffs: u64,
-    /// Their time on the calling thread: the vertex stage and the hand-off.
+    /// Their time on the calling thread: the hand-off, and the vertex stage when it ran there
+    /// (the pool runs it when it has already finished the previous batch).
     pub handoff_ns: u64,
     /// Time the calling thread waited for a background draw to end.
     pub wait_ns: u64,
@@ -399,6 +406,8 @@ impl Renderer {
             stats: DrawStats::default(),
             #[cfg(test)]
             panic_in_background: false,
+            #[cfg(test)]
+            vertex_stage_on_pool: None,
         }
     }
 
@@ -447,30 +456,48 @@ impl Renderer {
         if rayon::current_thread_index().is_some() {
             return self.flush(state);
         }
-        // The vertex stage runs here, on the calling thread, while the previous batch is
-        // still being drawn on the pool; the pool then only sets up and rasterises.
+        // The two cores balanced: while the previous batch is still being drawn on the pool,
+        // the vertex stage runs here, on the calling thread, and the pool then only sets up and
+        // rasterises; when the pool has already finished (it idles while the front end fills
+        // the batch), the vertex stage goes to the pool with the rest. The vertex stage's
+        // output is the same bits on either thread (and in chunks or not).
         let t0 = std::time::Instant::now();
-        let plan = Plan::process(state, self.tiles, &self.batch, &mut self.verts, false);
+        let on_pool = self.background_done();
+        #[cfg(test)]
+        let on_pool = self.vertex_stage_on_pool.unwrap_or(on_pool);
+        let plan = if on_pool {
+            None
+        } else {
+            Some(Plan::process(
+                state,
+                self.tiles,
+                &self.batch,
+                &mut self.verts,
+                false,
+            ))
+        };
         self.draw_in_background(state, plan);
         self.stats.handoffs += 1;
         self.stats.handoff_ns = self.stats.handoff_ns.saturating_add(ns_since(t0));
     }
 
-    /// Hands the batch, whose vertex stage `plan` describes, to the pool to be set up and
-    /// rasterised with a copy of `state`, once the draw before it has handed back the core;
-    /// the caller goes on with an empty batch.
-    fn draw_in_background(&mut self, state: &State, plan: Plan) {
+    /// Hands the batch to the pool to be set up and rasterised with a copy of `state`, once
+    /// the draw before it has handed back the core; `plan` describes its vertex stage, already
+    /// run into `self.verts`, or is `None` when the job is to run the vertex stage first (split
+    /// across the pool). The caller goes on with an empty batch.
+    fn draw_in_background(&mut self, state: &State, plan: Option<Plan>) {
         self.wait();
         let (mut next, next_verts) = self.spare.take().unwrap_or_default();
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
-        let verts = std::mem::replace(&mut self.verts, next_verts);
+        let mut verts = std::mem::replace(&mut self.verts, next_verts);
         let mut core = self.take_core();
         // The state is copied (texture images are shared, not copied): the front end goes on
         // changing its own.
         let state = Box::new(state.clone());
         let count = self.count_coverage;
         let samples = self.counting;
+        let tiles = self.tiles;
         let (tx, rx) = mpsc::channel();
         self.pending = Some(Mutex::new(rx));
         self.background_draws += 1;
@@ -483,6 +510,10 @@ impl Renderer {
             let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                 #[cfg(test)]
                 assert!(!fail, "test hook: background draw panics");
+                let plan = match plan {
+                    Some(plan) => plan,
+                    None => Plan::process(&state, tiles, &batch, &mut verts, true),
+                };
                 core.draw(&state, &batch, &verts, plan, count, samples);
             }))
             .err();
@@ -492,6 +523,24 @@ impl Renderer {
             // The receiver lives until `wait` takes this; a send cannot fail before that.
             let _ = tx.send((core, batch, verts, panicked));
         });
+    }
+
+    /// Whether no background draw is running: a finished one is taken back (as `wait` does),
+    /// without blocking on one still running.
+    fn background_done(&mut self) -> bool {
+        let Some(rx) = self.pending.as_mut() else {
+            return true;
+        };
+        // See `wait` on the mutex.
+        let rx = rx.get_mut().unwrap_or_else(|e| e.into_inner());
+        match rx.try_recv() {
+            Err(mpsc::TryRecvError::Empty) => false,
+            received => {
+                self.pending = None;
+                self.take_back(received.map_err(|_| mpsc::RecvError));
+                true
+            }
+        }
     }
 
     /// Waits for the background draw, if any, and takes back what it owned. A panic of that
@@ -508,6 +557,11 @@ impl Renderer {
         let t0 = std::time::Instant::now();
         let received = rx.recv();
         self.stats.wait_ns = self.stats.wait_ns.saturating_add(ns_since(t0));
+        self.take_back(received);
+    }
+
+    /// What a background draw handed back, taken back (see `wait`).
+    fn take_back(&mut self, received: Result<Drawn, mpsc::RecvError>) {
         match received {
             Ok((core, batch, verts, panicked)) => {
                 self.core = Some(core);

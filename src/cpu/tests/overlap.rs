@@ -73,6 +73,22 @@ fn background_draws_give_the_pixels_of_drawing_in_place() {
     // The frame is not trivially uniform: the lit mesh covers most pixels with varied colours.
     let distinct: std::collections::BTreeSet<&[u8]> = img_a.chunks(4).collect();
     assert!(distinct.len() > 1000, "only {} colours", distinct.len());
+    // The vertex stage of every batch handed to the pool run in the pool's job, then on the
+    // calling thread (the two sides of the balancing rule): the same pixels.
+    for on_pool in [true, false] {
+        let mut c = Context::new(256, 256).expect("context");
+        c.renderer.vertex_stage_on_pool = Some(on_pool);
+        let (mid_c, img_c, n_c) = frame(&mut c);
+        assert_eq!(n_c, n_a);
+        assert!(
+            mid_c == mid_b,
+            "the mid-frame reads differ (on_pool {on_pool})"
+        );
+        assert!(
+            img_c == img_b,
+            "the final images differ (on_pool {on_pool})"
+        );
+    }
 }
 
 /// A background draw that panics must not be swallowed (issue #11): before, the frame went on
