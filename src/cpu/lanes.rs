@@ -268,17 +268,32 @@ pub fn depth_span(
     write: bool,
     func: u32,
 ) -> u64 {
+    live_groups(row, n, live, |out, c, m| {
+        let fx = lane_x(fx0.wrapping_add(c as i32));
+        let d = depth_lanes(lin_lanes(zrow, dz, &fx));
+        super::oplanes::depth_test(func, write, out, d, m)
+    })
+}
+
+/// The group loop of `depth_span` and `depth_groups_avx2`: for each group of eight of the
+/// first `n` (≤ 64) pixels of `row` with a lane in `live`, `group(row from the group's first
+/// pixel, its offset c, its live lanes)` returns the group's survivors, gathered into the
+/// span's mask.
+#[inline(always)]
+fn live_groups(
+    row: &mut [u32],
+    n: usize,
+    live: u64,
+    mut group: impl FnMut(&mut [u32], usize, u8) -> u8,
+) -> u64 {
     let n = n.min(64).min(row.len());
     let mut mask = 0u64;
     let mut c = 0;
     while c < n {
         let m = ((live >> c) & ((1 << LANES) - 1)) as u8;
         if m != 0 {
-            let fx = lane_x(fx0.wrapping_add(c as i32));
-            let d = depth_lanes(lin_lanes(zrow, dz, &fx));
             if let Some(out) = row.get_mut(c..) {
-                let got = super::oplanes::depth_test(func, write, out, d, m);
-                mask |= u64::from(got) << c;
+                mask |= u64::from(group(out, c, m)) << c;
             }
         }
         c += LANES;
@@ -335,23 +350,11 @@ unsafe fn depth_groups_avx2<const F: u32>(
     write: bool,
 ) -> u64 {
     let (func, write) = if F != 0 { (F, true) } else { (func, write) };
-    let n = n.min(64).min(row.len());
-    let mut mask = 0u64;
-    let mut c = 0;
-    while c < n {
-        let m = ((live >> c) & ((1 << LANES) - 1)) as u8;
-        if m != 0 {
-            if let Some(out) = row.get_mut(c..) {
-                let fx = fx0.wrapping_add(c as i32);
-                // SAFETY: the CPU has AVX2.
-                let got =
-                    unsafe { super::oplanes::avx2::depth_test(func, write, out, zrow, dz, fx, m) };
-                mask |= u64::from(got) << c;
-            }
-        }
-        c += LANES;
-    }
-    mask
+    live_groups(row, n, live, |out, c, m| {
+        let fx = fx0.wrapping_add(c as i32);
+        // SAFETY: the CPU has AVX2.
+        unsafe { super::oplanes::avx2::depth_test(func, write, out, zrow, dz, fx, m) }
+    })
 }
 
 /// The depth test and the smooth primary colour of a span in one pass (`FragCtx::smooth_row`,
