@@ -2852,7 +2852,8 @@ mod tests {
     /// route covers (filters, REPEAT or CLAMP_TO_EDGE, RGB or RGBA, power-of-two and 6x6
     /// levels, MODULATE or REPLACE; one round in four LINEAR with a border texel, as
     /// `border_state`), flat or smooth colours, planes with NaN, infinite or zero terms,
-    /// groups and masks.
+    /// groups and masks. `FusedSpan::group` (the colours packed and stored; the depth
+    /// comparison's own route) on the same groups against `store_pixels`' bytes of them.
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
@@ -3036,6 +3037,22 @@ mod tests {
                     *x = f.quad_lambda(&planes, gx + l as i32, y, bbox[0], bbox[1])[0];
                 }
                 let want = f.color_lanes(&p, &v, m, &lam, true).map(clamp01);
+                // `FusedSpan::group` from the same state (the depth comparison's groups
+                // through `depth_group`): `store_pixels`' bytes of `want` on the lanes of
+                // `m`, the others untouched.
+                let mut fg = fs;
+                let mut px = [[7u8; 4]; LANES];
+                // SAFETY: the CPU has AVX2 (checked above).
+                unsafe { fg.group(gx, m, &mut px) };
+                for (l, got) in px.iter().enumerate() {
+                    let pack = |c: f32| ((c * (255.0 / 256.0) + 32768.0).to_bits() & 0xFF) as u8;
+                    let wl = if m & (1 << l) != 0 {
+                        want.map(|c| pack(c[l]))
+                    } else {
+                        [7; 4]
+                    };
+                    assert_eq!(*got, wl, "round {round} x {gx} lane {l}: group's bytes");
+                }
                 // SAFETY: the CPU has AVX2 (checked above).
                 let got = unsafe { fs.channels(gx, m) };
                 for l in (0..LANES).filter(|l| m & (1 << l) != 0) {

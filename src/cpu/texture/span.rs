@@ -238,46 +238,210 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     pub unsafe fn group(&mut self, x: i32, m: u8, dst: &mut [[u8; 4]]) {
-        use std::arch::x86_64::*;
-        // SAFETY: the CPU has AVX2 (the caller's promise).
-        let c = unsafe { self.colors(x, m) };
-        let (k255, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-        let low = _mm256_set1_epi32(0xFF);
-        let px: [__m256i; 4] = std::array::from_fn(|k| {
-            // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
-            _mm256_and_si256(
-                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c[k], k255), bias)),
-                low,
-            )
-        });
-        // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
-        let v = _mm256_packus_epi16(
-            _mm256_packs_epi32(px[0], px[1]),
-            _mm256_packs_epi32(px[2], px[3]),
-        );
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let on = _mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-            bits,
-        );
-        if let Some(d) = dst.get_mut(..LANES) {
-            let p = d.as_mut_ptr().cast::<__m256i>();
-            // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
-            // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
-            unsafe {
-                let old = _mm256_loadu_si256(p);
-                _mm256_storeu_si256(p, _mm256_blendv_epi8(old, v, on));
+        if let Some(func) = self.depth {
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            let done = unsafe {
+                match u8::from(self.rep[0]) | u8::from(self.rep[1]) << 1 {
+                    0 => self.depth_group::<false, false>(func, x, m, dst),
+                    1 => self.depth_group::<true, false>(func, x, m, dst),
+                    2 => self.depth_group::<false, true>(func, x, m, dst),
+                    _ => self.depth_group::<true, true>(func, x, m, dst),
+                }
+            };
+            if done {
+                return;
             }
-            return;
         }
-        let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
-        for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
-            if m & (1 << l) != 0 {
-                *d = c;
-            }
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe { store_group(self.colors(x, m), m, dst) }
+    }
+
+    /// [`FusedSpan::group`] in the depth comparison's state (`func` its TEXTURE_COMPARE_FUNC,
+    /// REPEAT on s `RX`, on t `RY`, as `rep`)
+    /// on a dense base level, channel-major: each lane the expressions of
+    /// [`FusedSpan::colors`] (its varyings, `nearest`'s texel, `dense_depth8`'s comparison,
+    /// BLEND of LUMINANCE, the clamp) in the same order, so the same bytes; the comparison
+    /// and the environment on eight lanes at once instead of four pixel-major pairs. False,
+    /// with nothing written, where the base level is missing or not dense (the caller then
+    /// takes [`FusedSpan::colors`]).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn depth_group<const RX: bool, const RY: bool>(
+        &mut self,
+        func: u32,
+        x: i32,
+        m: u8,
+        dst: &mut [[u8; 4]],
+    ) -> bool {
+        use std::arch::x86_64::*;
+        let (dt, w, h) = match self.view(self.s.base_level) {
+            View::Dense(dt, w, h) if !dt.is_empty() => (dt, w, h),
+            _ => return false,
+        };
+        let (xs, inv) = self.group_x(x);
+        let [ss, tt, rr] = self.coords(xs, inv);
+        let l = compare8(func, nearest_depth::<RX, RY>(dt, w, h, ss, tt), rr);
+        // `env_of`'s BLEND of LUMINANCE: cf·(1 - L) + cc·L on r, g, b, the fragment's alpha;
+        // then `Vec4::clamp` (`maxps` with 0, then `minps` with 1).
+        let (one, zero) = (_mm256_set1_ps(1.0), _mm256_setzero_ps());
+        let nl = _mm256_sub_ps(one, l);
+        let [cr, cg, cb, _, ..] = self.cc;
+        let env = |cf: __m256, cc: f32| {
+            _mm256_add_ps(_mm256_mul_ps(cf, nl), _mm256_mul_ps(_mm256_set1_ps(cc), l))
+        };
+        let c = [
+            env(self.vary::<0>(xs, inv), cr),
+            env(self.vary::<1>(xs, inv), cg),
+            env(self.vary::<2>(xs, inv), cb),
+            self.vary::<3>(xs, inv),
+        ]
+        .map(|c| _mm256_min_ps(_mm256_max_ps(c, zero), one));
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe { store_group(pairs(&c), m, dst) };
+        true
+    }
+
+    /// `lanes::varyings`' x of the group from window x `x` (lane l at x + l) and its 1/w.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn group_x(&self, x: i32) -> (std::arch::x86_64::__m256, std::arch::x86_64::__m256) {
+        use std::arch::x86_64::*;
+        const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+        // x = fx0 as f32 + l.
+        // SAFETY: the load reads the eight floats of `IOTA`.
+        let xs = _mm256_add_ps(_mm256_set1_ps((x - self.ox) as f32), unsafe {
+            _mm256_loadu_ps(IOTA.as_ptr())
+        });
+        (
+            xs,
+            _mm256_div_ps(_mm256_set1_ps(1.0), plane8(self.pl[0], xs)),
+        )
+    }
+
+    /// Varying k of the colour (0..4) and s, t, q (4, 5, 6) at lanes `xs` (1/w `inv`): its
+    /// plane, times 1/w where smooth (`lanes::varyings`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn vary<const K: usize>(
+        &self,
+        xs: std::arch::x86_64::__m256,
+        inv: std::arch::x86_64::__m256,
+    ) -> std::arch::x86_64::__m256 {
+        use std::arch::x86_64::*;
+        // (K < 7: the indices are constants in range.)
+        let v = plane8(self.pl[K + 1], xs);
+        if self.div[K] {
+            _mm256_mul_ps(v, inv)
+        } else {
+            v
         }
     }
 
+    /// s/q, t/q and r/q of the lanes `xs` (1/w `inv`) as `texels_lanes` divides them: 1/q
+    /// where q ≠ 0 (a NaN q included), else 0; r (varying `to + 2`) read with a depth
+    /// comparison only (else 0). (`FusedSpan::colors` computes the same values and keeps s,
+    /// t, q for its fallback.)
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn coords(
+        &self,
+        xs: std::arch::x86_64::__m256,
+        inv: std::arch::x86_64::__m256,
+    ) -> [std::arch::x86_64::__m256; 3] {
+        use std::arch::x86_64::*;
+        let (s, t, q) = (
+            self.vary::<4>(xs, inv),
+            self.vary::<5>(xs, inv),
+            self.vary::<6>(xs, inv),
+        );
+        let rq = _mm256_div_ps(_mm256_set1_ps(1.0), q);
+        let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
+        let r = self.r(xs, inv);
+        [
+            _mm256_mul_ps(s, qi),
+            _mm256_mul_ps(t, qi),
+            _mm256_mul_ps(r, qi),
+        ]
+    }
+
+    /// r (varying `to + 2`) at lanes `xs` (1/w `inv`), read by the depth comparison only (as
+    /// in `texels_lanes`; 0 otherwise).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn r(
+        &self,
+        xs: std::arch::x86_64::__m256,
+        inv: std::arch::x86_64::__m256,
+    ) -> std::arch::x86_64::__m256 {
+        use std::arch::x86_64::*;
+        if self.depth.is_none() {
+            return _mm256_setzero_ps();
+        }
+        let v = plane8(self.rpl, xs);
+        if self.rdiv {
+            _mm256_mul_ps(v, inv)
+        } else {
+            v
+        }
+    }
+}
+
+/// The RGBA8 store of [`FusedSpan::group`]: colours `c` (pixel-major pairs, clamped) packed as
+/// `store_pixels` converts them and stored into `dst`'s lanes of `m` (lane l into `dst[l]`).
+///
+/// # Safety
+/// The CPU must have AVX2 (`lanes::has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn store_group(c: [std::arch::x86_64::__m256; 4], m: u8, dst: &mut [[u8; 4]]) {
+    use std::arch::x86_64::*;
+    let (k255, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+    let low = _mm256_set1_epi32(0xFF);
+    let px: [__m256i; 4] = std::array::from_fn(|k| {
+        // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
+        _mm256_and_si256(
+            _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c[k], k255), bias)),
+            low,
+        )
+    });
+    // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
+    let v = _mm256_packus_epi16(
+        _mm256_packs_epi32(px[0], px[1]),
+        _mm256_packs_epi32(px[2], px[3]),
+    );
+    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    let on = _mm256_cmpeq_epi32(
+        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+        bits,
+    );
+    if let Some(d) = dst.get_mut(..LANES) {
+        let p = d.as_mut_ptr().cast::<__m256i>();
+        // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
+        // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
+        unsafe {
+            let old = _mm256_loadu_si256(p);
+            _mm256_storeu_si256(p, _mm256_blendv_epi8(old, v, on));
+        }
+        return;
+    }
+    let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
+    for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
+        if m & (1 << l) != 0 {
+            *d = c;
+        }
+    }
+}
+
+impl<'a> FusedSpan<'a> {
     /// The colours of the group of eight fragments from window x `x` (lane l at x + l), lanes
     /// `m`, as pixel-major pairs (register k: lane k's RGBA, then lane k + 4's), clamped to
     /// [0, 1]: what `tex_pixels` gives for them, each channel through `Vec4::clamp`
@@ -291,25 +455,13 @@ impl<'a> FusedSpan<'a> {
     #[inline]
     unsafe fn colors(&mut self, x: i32, m: u8) -> [std::arch::x86_64::__m256; 4] {
         use std::arch::x86_64::*;
-        let fx0 = x - self.ox;
-        const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
         // `lanes::varyings`: x = fx0 as f32 + l, each plane (a + dx·x) + dy·fy, 1/w by
         // `divps`, the smooth varyings times it.
-        // SAFETY: the load reads the eight floats of `IOTA`.
-        let xs = _mm256_add_ps(_mm256_set1_ps(fx0 as f32), unsafe {
-            _mm256_loadu_ps(IOTA.as_ptr())
-        });
-        let plane = |[a, dx, yt]: [f32; 3]| {
-            _mm256_add_ps(
-                _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
-                _mm256_set1_ps(yt),
-            )
-        };
+        let (xs, inv) = self.group_x(x);
         let one = _mm256_set1_ps(1.0);
-        let inv = _mm256_div_ps(one, plane(self.pl[0]));
         // (`me` for `self`: the closure holds no borrow across the texel calls.)
         let vary = |me: &Self, k: usize| {
-            let v = plane(me.pl[k + 1]);
+            let v = plane8(me.pl[k + 1], xs);
             if me.div[k] {
                 _mm256_mul_ps(v, inv)
             } else {
@@ -323,16 +475,7 @@ impl<'a> FusedSpan<'a> {
         let (ss, tt) = (_mm256_mul_ps(s, qi), _mm256_mul_ps(t, qi));
         // r (varying `to + 2`) and r/q, read by the depth comparison only (as in
         // `texels_lanes`).
-        let r = if self.depth.is_some() {
-            let v = plane(self.rpl);
-            if self.rdiv {
-                _mm256_mul_ps(v, inv)
-            } else {
-                v
-            }
-        } else {
-            _mm256_setzero_ps()
-        };
+        let r = self.r(xs, inv);
         let rr = _mm256_mul_ps(r, qi);
         let tex = if self.depth.is_some() || self.border.is_some() {
             // SAFETY: the CPU has AVX2 (the caller's promise).
@@ -679,12 +822,16 @@ impl<'a> FusedSpan<'a> {
             return None;
         }
         let d = match self.rep {
-            [false, false] => nearest::<false, false>(dt, w, h, ss, tt),
-            [false, true] => nearest::<false, true>(dt, w, h, ss, tt),
-            [true, false] => nearest::<true, false>(dt, w, h, ss, tt),
-            [true, true] => nearest::<true, true>(dt, w, h, ss, tt),
+            [false, false] => nearest_depth::<false, false>(dt, w, h, ss, tt),
+            [false, true] => nearest_depth::<false, true>(dt, w, h, ss, tt),
+            [true, false] => nearest_depth::<true, false>(dt, w, h, ss, tt),
+            [true, true] => nearest_depth::<true, true>(dt, w, h, ss, tt),
         };
-        Some(compare_pairs(func, d, rr))
+        // L in every channel of each lane's pair.
+        let l = compare8(func, d, rr);
+        Some(std::array::from_fn(|k| {
+            _mm256_permutevar8x32_ps(l, pair_index(k))
+        }))
     }
 
     /// The texels (pixel-major pairs) of a group whose state is not the colour kernels'
@@ -862,45 +1009,43 @@ fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
     Some([p[0], p[1], p[2] * fy])
 }
 
-/// `dense_depth8`'s comparison on pixel-major pairs: the depth `d[k]`'s channel 0 of lanes k
-/// and k + 4 against r/q `rr` clamped to [0, 1] (`minps(1, maxps(0, r))`), under `func`'s
-/// predicate; each lane's result 1 or +0 in its four channels (the environment reads
-/// channel 0, the LUMINANCE L).
+/// `dense_depth8`'s comparison on eight lanes: the depths `d` against r/q `rr` clamped to
+/// [0, 1] (`minps(1, maxps(0, r))`), under `func`'s predicate; each lane 1 or +0 (the
+/// LUMINANCE L the environment reads).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-fn compare_pairs(
+fn compare8(
     func: u32,
-    d: [std::arch::x86_64::__m256; 4],
+    d: std::arch::x86_64::__m256,
     rr: std::arch::x86_64::__m256,
-) -> [std::arch::x86_64::__m256; 4] {
+) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
     let one = _mm256_set1_ps(1.0);
     let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), rr));
-    #[target_feature(enable = "avx2")]
-    #[inline]
-    fn each<const P: i32>(
-        d: [std::arch::x86_64::__m256; 4],
-        r: std::arch::x86_64::__m256,
-    ) -> [std::arch::x86_64::__m256; 4] {
-        use std::arch::x86_64::*;
-        let one = _mm256_set1_ps(1.0);
-        std::array::from_fn(|k| {
-            let dk = _mm256_permute_ps::<0x00>(d[k]);
-            let rk = _mm256_permutevar8x32_ps(r, pair_index(k));
-            _mm256_and_ps(_mm256_cmp_ps::<P>(rk, dk), one)
-        })
-    }
-    match func {
-        gl::LEQUAL => each::<_CMP_LE_OQ>(d, r),
-        gl::GEQUAL => each::<_CMP_GE_OQ>(d, r),
-        gl::LESS => each::<_CMP_LT_OQ>(d, r),
-        gl::GREATER => each::<_CMP_GT_OQ>(d, r),
-        gl::EQUAL => each::<_CMP_EQ_OQ>(d, r),
-        gl::NOTEQUAL => each::<_CMP_NEQ_UQ>(d, r),
-        gl::ALWAYS => [one; 4],
-        _ => [_mm256_setzero_ps(); 4],
-    }
+    let c = match func {
+        gl::LEQUAL => _mm256_cmp_ps::<_CMP_LE_OQ>(r, d),
+        gl::GEQUAL => _mm256_cmp_ps::<_CMP_GE_OQ>(r, d),
+        gl::LESS => _mm256_cmp_ps::<_CMP_LT_OQ>(r, d),
+        gl::GREATER => _mm256_cmp_ps::<_CMP_GT_OQ>(r, d),
+        gl::EQUAL => _mm256_cmp_ps::<_CMP_EQ_OQ>(r, d),
+        gl::NOTEQUAL => _mm256_cmp_ps::<_CMP_NEQ_UQ>(r, d),
+        gl::ALWAYS => return one,
+        _ => return _mm256_setzero_ps(),
+    };
+    _mm256_and_ps(c, one)
+}
+
+/// A plane `[a, dx, yt]` at lanes `xs`: (a + dx·x) + yt (`lanes::varyings`' order).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn plane8([a, dx, yt]: [f32; 3], xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    _mm256_add_ps(
+        _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
+        _mm256_set1_ps(yt),
+    )
 }
 
 /// `lanes::varyings`' planes of row `fy` (constant, x step, y term `dy·fy`) of 1/w, the
@@ -1094,6 +1239,20 @@ fn nearest<const RX: bool, const RY: bool>(
     s: std::arch::x86_64::__m256,
     t: std::arch::x86_64::__m256,
 ) -> [std::arch::x86_64::__m256; 4] {
+    load_pairs(dt, nearest_index::<RX, RY>(w, h, s, t))
+}
+
+/// `dense_nearest8`'s indices j·w + i on a `w` x `h` level (the same wraps, floors; not yet
+/// masked).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn nearest_index<const RX: bool, const RY: bool>(
+    w: i32,
+    h: i32,
+    s: std::arch::x86_64::__m256,
+    t: std::arch::x86_64::__m256,
+) -> std::arch::x86_64::__m256i {
     use std::arch::x86_64::*;
     let (w, h) = (w.max(1), h.max(1));
     let i = ifloor8(_mm256_mul_ps(s, _mm256_set1_ps(w as f32)));
@@ -1101,7 +1260,31 @@ fn nearest<const RX: bool, const RY: bool>(
     let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
     let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    load_pairs(dt, _mm256_add_epi32(_mm256_sll_epi32(j, sh), i))
+    _mm256_add_epi32(_mm256_sll_epi32(j, sh), i)
+}
+
+/// Channel 0 (the depth) of [`nearest`]'s texels, one lane each: the same indices, each
+/// taken modulo `dt.len()` (a power of two); zeros for an empty `dt`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn nearest_depth<const RX: bool, const RY: bool>(
+    dt: &[[f32; 4]],
+    w: i32,
+    h: i32,
+    s: std::arch::x86_64::__m256,
+    t: std::arch::x86_64::__m256,
+) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    let Some(km) = dt.len().checked_sub(1) else {
+        return _mm256_setzero_ps();
+    };
+    let k = nearest_index::<RX, RY>(w, h, s, t);
+    // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
+    let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
+    // (The bounds check folds: k & km < dt.len().)
+    let d = |l: usize| dt[k[l] as usize & km][0];
+    _mm256_setr_ps(d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7))
 }
 
 /// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
@@ -1184,11 +1367,31 @@ fn border_bilinear<const MX: u8, const MY: u8>(
     let (x, xi, a) = border_linear8::<MX>(s, w);
     let (y, yi, b) = border_linear8::<MY>(t, h);
     let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let index = |i: usize, j: usize| _mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]);
+    let inside = |i: usize, j: usize| _mm256_castsi256_ps(_mm256_and_si256(xi[i], yi[j]));
+    // Every lane's four corners inside the level (the blends would keep every texel: the
+    // corners loaded as `bilinear` loads them), or every lane's four outside (the blends
+    // would take the border colour for each: no texel read).
+    let all_in = _mm256_and_ps(
+        _mm256_and_ps(inside(0, 0), inside(1, 0)),
+        _mm256_and_ps(inside(0, 1), inside(1, 1)),
+    );
+    let any_in = _mm256_or_ps(
+        _mm256_or_ps(inside(0, 0), inside(1, 0)),
+        _mm256_or_ps(inside(0, 1), inside(1, 1)),
+    );
+    if _mm256_movemask_ps(all_in) == 0xFF {
+        let c = load_corners!(dt, index(0, 0), index(1, 0), index(0, 1), index(1, 1));
+        return corner_sum(a, b, &c);
+    }
+    if _mm256_movemask_ps(any_in) == 0 {
+        return corner_sum(a, b, &[[bc; 4]; 4]);
+    }
     let corner = |q: usize| {
         let (i, j) = (q & 1, q >> 1);
         // (`load_pairs` takes the index modulo the level's texels: & km.)
-        let k = _mm256_add_epi32(_mm256_sll_epi32(y[j], sh), x[i]);
-        let inside = _mm256_castsi256_ps(_mm256_and_si256(xi[i], yi[j]));
+        let k = index(i, j);
+        let inside = inside(i, j);
         let c = load_pairs(dt, k);
         std::array::from_fn(|p| {
             _mm256_blendv_ps(bc, c[p], _mm256_permutevar8x32_ps(inside, pair_index(p)))
