@@ -312,13 +312,8 @@ impl Context {
             }) else {
                 return self.error(gl::OUT_OF_MEMORY);
             };
-            let d = PixelDraw {
-                cols,
-                rows,
-                width: gi.len(),
-                groups: Groups::Bits(&bits),
-            };
-            self.renderer.draw_pixel_rect(&self.state, &d, true);
+            self.renderer
+                .bitmap(&self.state, cols, rows, gi.len(), bits);
         }
         let r = &mut self.state.raster_pos.window;
         r.x += xmove;
