@@ -301,13 +301,8 @@ fn queries_read_late_count_what_they_counted() {
 /// back, front and depth buffers must match byte for byte.
 #[test]
 fn binned_bitmaps_are_the_bitmaps_drawn_in_place() {
-    let mut seed = 77u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 33) as u32
-    };
+    let mut gen = crate::cpu::testgen::Gen(77);
+    let mut next = move || gen.next() as u32;
     let config = ContextConfig {
         double_buffered: true,
         ..ContextConfig::default()
