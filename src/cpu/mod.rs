@@ -196,7 +196,9 @@ struct Core {
 /// Flushes set up and binned but not yet rasterised, as llvmpipe's scene holds a frame's
 /// binned commands with a pointer to each one's state: a state change between two draws
 /// (a matrix, a fog mode, a bound texture) no longer makes its own pass over the tiles with
-/// its own hand-off to the pool. The scene is rasterised in one pass, every tile visiting the
+/// its own hand-off to the pool. Plain bitmaps (`Renderer::bitmap`) join it too, so that the
+/// glyphs of a text overlay neither rasterise the geometry before them nor draw one by one
+/// on the calling thread. The scene is rasterised in one pass, every tile visiting the
 /// parts in call order (so the pixels are those of drawing each flush in place), when anything
 /// reads or changes the framebuffer (`Renderer::core`), when a flush writes other colour
 /// buffers, or when it holds `SCENE_VERTICES` vertices or `SCENE_PARTS` parts (so its memory
