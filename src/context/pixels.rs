@@ -312,13 +312,8 @@ impl Context {
             }) else {
                 return self.error(gl::OUT_OF_MEMORY);
             };
-            let d = PixelDraw {
-                cols,
-                rows,
-                width: gi.len(),
-                groups: Groups::Bits(&bits),
-            };
-            self.renderer.draw_pixel_rect(&self.state, &d, true);
+            self.renderer
+                .bitmap(&self.state, cols, rows, gi.len(), bits);
         }
         let r = &mut self.state.raster_pos.window;
         r.x += xmove;
@@ -618,7 +613,11 @@ fn compact_span(span: Span) -> (Vec<usize>, Span) {
         .all(|w| w[0].checked_add(1) == Some(w[1]))
     {
         let keys = span.groups.iter().map(|&g| g as usize).collect();
-        let groups = (0..span.groups.len() as u32).collect();
+        // The positions overwrite the groups in place (one allocation less a call).
+        let mut groups = span.groups;
+        for (k, g) in groups.iter_mut().enumerate() {
+            *g = k as u32;
+        }
         return (
             keys,
             Span {

@@ -130,6 +130,10 @@ pub struct Renderer {
     /// the pool's job, `Some(false)`: on the calling thread), instead of the balancing rule.
     #[cfg(test)]
     pub(crate) vertex_stage_on_pool: Option<bool>,
+    /// Test hook: every bitmap is drawn in place (`draw_pixel_rect`), none binned into the
+    /// scene.
+    #[cfg(test)]
+    pub(crate) bitmaps_in_place: bool,
 }
 
 /// Where a context's calling thread spends its drawing time, for `fixedgl bench --stages`
@@ -192,7 +196,9 @@ struct Core {
 /// Flushes set up and binned but not yet rasterised, as llvmpipe's scene holds a frame's
 /// binned commands with a pointer to each one's state: a state change between two draws
 /// (a matrix, a fog mode, a bound texture) no longer makes its own pass over the tiles with
-/// its own hand-off to the pool. The scene is rasterised in one pass, every tile visiting the
+/// its own hand-off to the pool. Plain bitmaps (`Renderer::bitmap`) join it too, so that the
+/// glyphs of a text overlay neither rasterise the geometry before them nor draw one by one
+/// on the calling thread. The scene is rasterised in one pass, every tile visiting the
 /// parts in call order (so the pixels are those of drawing each flush in place), when anything
 /// reads or changes the framebuffer (`Renderer::core`), when a flush writes other colour
 /// buffers, or when it holds `SCENE_VERTICES` vertices or `SCENE_PARTS` parts (so its memory
@@ -201,8 +207,7 @@ struct Core {
 struct Scene {
     /// Each flush's fragment-stage state, in call order.
     frags: Vec<Frag>,
-    /// The set-up pieces in call order: which `frags` entry each belongs to and which workers
-    /// hold its binned primitives.
+    /// The set-up pieces and binned bitmaps in call order.
     parts: Vec<Part>,
     /// Setup workers: the first `used` hold the parts' primitives; the others are memory kept
     /// for the next parts.
@@ -210,15 +215,22 @@ struct Scene {
     used: usize,
     /// Vertices set up into the parts.
     vertices: usize,
+    /// Bytes the binned bitmaps hold.
+    bytes: usize,
     /// The colour buffers every part writes.
     targets: Targets,
 }
 
-/// One piece of a flush in the scene: its `Scene::frags` entry and `Scene::workers` range.
+/// One entry of the scene, in call order.
 #[derive(Debug)]
-struct Part {
-    frag: usize,
-    workers: std::ops::Range<usize>,
+enum Part {
+    /// A piece of a flush: its `Scene::frags` entry and `Scene::workers` range.
+    Prims {
+        frag: usize,
+        workers: std::ops::Range<usize>,
+    },
+    /// A plain bitmap (`Renderer::bitmap`).
+    Bits(pixels::BinnedBits),
 }
 
 /// Vertices in the scene's parts at which it is rasterised.
@@ -226,6 +238,9 @@ const SCENE_VERTICES: usize = 1 << 15;
 
 /// Parts at which the scene is rasterised.
 const SCENE_PARTS: usize = 1024;
+
+/// Bytes of binned bitmaps at which the scene is rasterised.
+const SCENE_BYTES: usize = 1 << 20;
 
 /// Workers kept past this many keep only a small part of their memory after the scene is
 /// rasterised (a draw of several pieces late in a scene uses workers beyond it).
@@ -408,6 +423,8 @@ impl Renderer {
             panic_in_background: false,
             #[cfg(test)]
             vertex_stage_on_pool: None,
+            #[cfg(test)]
+            bitmaps_in_place: false,
         }
     }
 
@@ -899,12 +916,26 @@ impl Core {
     /// Rasterises the scene if it is full, keeping the fragment state of flush `fi`, the one
     /// being set up (the last): returns its index afterwards.
     fn settle(&mut self, fi: usize) -> usize {
-        if self.scene.vertices < SCENE_VERTICES && self.scene.parts.len() < SCENE_PARTS {
+        if !self.scene.full() {
             return fi;
         }
         self.rasterise_parts();
         self.scene.frags.drain(..fi.min(self.scene.frags.len()));
         0
+    }
+
+    /// Bins the plain bitmap `bits`, drawn into `targets`, into the scene (rasterised first if
+    /// it writes other colour buffers, and after it if it fills the scene).
+    fn bin_bits(&mut self, targets: Targets, bits: pixels::BinnedBits) {
+        if targets != self.scene.targets {
+            self.resolve();
+            self.scene.targets = targets;
+        }
+        self.scene.bytes = self.scene.bytes.saturating_add(bits.bytes());
+        self.scene.parts.push(Part::Bits(bits));
+        if self.scene.full() {
+            self.resolve();
+        }
     }
 
     /// Rasterises every part of the scene into the framebuffer and empties it.
@@ -946,12 +977,13 @@ impl Core {
         let parts: Vec<Piece> = scene
             .parts
             .iter()
-            .filter_map(|p| {
-                Some((
-                    ctxs.get(p.frag)?,
-                    slots.get(p.frag).copied().flatten(),
-                    scene.workers.get(p.workers.clone())?,
-                ))
+            .filter_map(|p| match p {
+                Part::Prims { frag, workers } => Some(Piece::Prims(
+                    ctxs.get(*frag)?,
+                    slots.get(*frag).copied().flatten(),
+                    scene.workers.get(workers.clone())?,
+                )),
+                Part::Bits(b) => Some(Piece::Bits(b)),
             })
             .collect();
         let sums = rasterise(fb, &parts, queries.len(), scene.targets);
@@ -982,7 +1014,7 @@ impl Scene {
             self.workers.resize_with(range.end, Worker::default);
         }
         self.used = range.end;
-        self.parts.push(Part {
+        self.parts.push(Part::Prims {
             frag,
             workers: range.clone(),
         });
@@ -997,6 +1029,14 @@ impl Scene {
         }
         self.used = 0;
         self.vertices = 0;
+        self.bytes = 0;
+    }
+
+    /// Whether it holds enough to be rasterised (see [`Scene`]).
+    fn full(&self) -> bool {
+        self.vertices >= SCENE_VERTICES
+            || self.parts.len() >= SCENE_PARTS
+            || self.bytes >= SCENE_BYTES
     }
 }
 
@@ -1094,9 +1134,14 @@ fn setup_by_triangles(workers: &mut [Worker], ctx: &SetupCtx, v: &Verts, asm: &[
     });
 }
 
-/// One piece of a flush to rasterise: its fragment-stage state, the slot of the occlusion
-/// query it counts for (`rasterise`'s sums), and the workers holding its binned primitives.
-type Piece<'a> = (&'a FragCtx<'a>, Option<usize>, &'a [Worker]);
+/// One entry of the scene to rasterise.
+enum Piece<'a> {
+    /// A piece of a flush: its fragment-stage state, the slot of the occlusion query it counts
+    /// for (`rasterise`'s sums), and the workers holding its binned primitives.
+    Prims(&'a FragCtx<'a>, Option<usize>, &'a [Worker]),
+    /// A plain bitmap.
+    Bits(&'a pixels::BinnedBits),
+}
 
 /// Rasterisation and fragment operations of `parts` (each a flush's fragment-stage state and
 /// the workers holding a piece of its binned primitives), tiles in parallel; inside a tile,
@@ -1123,12 +1168,17 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
     };
     // The tiles some primitive reaches, from the workers' lists, in tile order (the others
     // are not visited: their pending clears stay pending).
-    let mut busy: Vec<usize> = parts
-        .iter()
-        .flat_map(|(_, _, ws)| ws.iter())
-        .flat_map(|w| w.touched.iter().map(|&t| t as usize))
-        .filter(|&t| t < tx * ty)
-        .collect();
+    let mut busy: Vec<usize> = Vec::new();
+    for piece in parts {
+        match piece {
+            Piece::Prims(_, _, ws) => busy.extend(
+                ws.iter()
+                    .flat_map(|w| w.touched.iter().map(|&t| t as usize)),
+            ),
+            Piece::Bits(b) => busy.extend(b.tiles((tx, ty))),
+        }
+    }
+    busy.retain(|&t| t < tx * ty);
     busy.sort_unstable();
     busy.dedup();
     let colors = tile_parts(primary, &busy, TILE_PIXELS);
@@ -1162,7 +1212,13 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
             samples: 0,
         };
         let mut sums = vec![0u64; queries];
-        for &(fctx, slot, workers) in parts {
+        for piece in parts {
+            let &Piece::Prims(fctx, slot, workers) = piece else {
+                if let Piece::Bits(b) = piece {
+                    b.draw(&mut bufs);
+                }
+                continue;
+            };
             let before = bufs.samples;
             for w in workers {
                 for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
@@ -1188,16 +1244,17 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
     // Primitives within one or two tiles, whose bounding boxes hold fewer pixels than two
     // tiles, or few primitives over fewer than sixteen tiles' pixels are drawn on this thread
     // (`serial_pass`).
-    let (area, prims) =
-        parts
-            .iter()
-            .flat_map(|(_, _, ws)| ws.iter())
-            .fold((0u64, 0u64), |(a, n), w| {
+    let (area, prims) = parts
+        .iter()
+        .fold((0u64, 0u64), |(a, n), piece| match piece {
+            Piece::Prims(_, _, ws) => ws.iter().fold((a, n), |(a, n), w| {
                 (
                     a.saturating_add(w.area),
                     n.saturating_add(w.prims.len() as u64),
                 )
-            });
+            }),
+            Piece::Bits(b) => (a.saturating_add(b.pixels()), n.saturating_add(1)),
+        });
     if serial_pass(jobs.len(), area, prims) {
         jobs.into_iter().map(work).fold(Vec::new(), add)
     } else {

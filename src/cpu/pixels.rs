@@ -321,6 +321,66 @@ impl Renderer {
             && super::fragops::Ops::new(state).is_none()
     }
 
+    /// The colour mask and the bytes every fragment of a bitmap drawn under `state` writes,
+    /// when nothing but the colour write applies to them: [`Renderer::pixels_plain`], no
+    /// colour sum and no occlusion query. Then no texture unit is enabled, so the fragments'
+    /// colour is the raster colour ([`Shared::shade`] changes nothing), and
+    /// `draw_pixel_rect` would take its plain rows with this mask and these bytes.
+    fn plain_bits(&self, state: &State) -> Option<([bool; 4], [u8; 4])> {
+        let lit_sum = state.enables.lighting
+            && state.light_model.color_control == crate::gl::SEPARATE_SPECULAR_COLOR;
+        if !self.pixels_plain(state)
+            || lit_sum
+            || state.enables.color_sum
+            || self.counting.is_some()
+        {
+            return None;
+        }
+        let mask = match Targets::of(state).none() {
+            true => [false; 4],
+            false => state.color_write_mask(),
+        };
+        let c = state.raster_pos.color;
+        Some((mask, [unorm8(c.x), unorm8(c.y), unorm8(c.z), unorm8(c.w)]))
+    }
+
+    /// Draws the bitmap of `bits` (one byte a group, nonzero: a fragment) whose covered window
+    /// columns and rows are `cols` and `rows` (`width` groups a row), with `state`, after
+    /// everything batched before it. A plain one ([`Renderer::plain_bits`]) is binned into the
+    /// scene and rasterised with it (a frame of text and geometry is then one pass, its glyphs
+    /// drawn on the pool's threads); any other is drawn in place by `draw_pixel_rect`.
+    pub fn bitmap(&mut self, state: &State, cols: Span, rows: Span, width: usize, bits: Vec<u8>) {
+        #[cfg(test)]
+        let in_place = self.bitmaps_in_place;
+        #[cfg(not(test))]
+        let in_place = false;
+        match self.plain_bits(state) {
+            Some((mask, px)) if !in_place && !cols.is_empty() && !rows.is_empty() => {
+                self.flush(state);
+                let part = BinnedBits {
+                    cols,
+                    rows,
+                    width,
+                    bits,
+                    mask,
+                    px,
+                };
+                let core = self.unresolved_core();
+                core.bin_bits(Targets::of(state), part);
+                self.stats.passes = core.passes;
+            }
+            _ => {
+                let d = PixelDraw {
+                    cols,
+                    rows,
+                    width,
+                    groups: Groups::Bits(&bits),
+                };
+                self.draw_pixel_rect(state, &d, true);
+            }
+        }
+    }
+
     /// Draws the pixel rectangle or bitmap `d` with `state` (the raster position, texturing,
     /// fog and the per-fragment operations it enables), after everything batched before it.
     /// `secondary`: whether the raster secondary colour is the fragments' secondary colour
@@ -391,19 +451,10 @@ impl Renderer {
         let core = self.core();
         let fb = &mut core.fb;
         let (tiles_x, tiles_y) = fb.tiles();
-        let (x0, y0) = (d.cols.lo, d.rows.lo);
-        let (x1, y1) = (x0 + d.cols.len() as i32 - 1, y0 + d.rows.len() as i32 - 1);
         // Only the tiles the rectangle reaches are visited, in ascending order, and only
         // their pending clears are written first (the others' stay pending).
-        fb.materialize_rect([x0, y0, x1, y1]);
-        let span = |lo: i32, hi: i32, n: usize| match hi < 0 {
-            true => 0..0,
-            false => (lo.max(0) as usize / TILE).min(n)..(hi as usize / TILE + 1).min(n),
-        };
-        let (across, up) = (span(x0, x1, tiles_x), span(y0, y1, tiles_y));
-        let tiles: Vec<usize> = up
-            .flat_map(|ty| across.clone().map(move |tx| ty * tiles_x + tx))
-            .collect();
+        fb.materialize_rect(rect(&d.cols, &d.rows));
+        let tiles = rect_tiles(&d.cols, &d.rows, (tiles_x, tiles_y));
         let Framebuffer {
             color,
             front,
@@ -418,69 +469,26 @@ impl Renderer {
             (true, Some(f)) => (color, Some(f)),
             _ => (color, None),
         };
-        let tile_rect = |t: usize| {
-            let (ox, oy) = (((t % tiles_x) * TILE) as i32, ((t / tiles_x) * TILE) as i32);
-            let (tx0, ty0) = (x0.max(ox), y0.max(oy));
-            let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
-            (ox, oy, tx0, ty0, tx1, ty1)
-        };
         let work = |t: usize, color, color2, depth, stencil| -> u64 {
-            let (ox, oy, tx0, ty0, tx1, ty1) = tile_rect(t);
-            if tx0 > tx1 || ty0 > ty1 {
-                return 0;
-            }
             let mut bufs = TileBufs {
                 color,
                 color2,
                 depth,
                 stencil,
-                x: ox,
-                y: oy,
+                x: ((t % tiles_x) * TILE) as i32,
+                y: ((t / tiles_x) * TILE) as i32,
                 samples: 0,
             };
-            // The tile's columns, as indices into `d.cols`.
-            let cols = (tx0 - x0) as usize..=(tx1 - x0) as usize;
-            for y in ty0..=ty1 {
-                let Some(&gj) = d.rows.groups.get((y - y0) as usize) else {
-                    continue;
-                };
-                let row = gj as usize * d.width;
-                let base = (y - oy) as usize * TILE;
-                if plain {
-                    // Only the colour write applies: a whole row at a time.
-                    if let Some(cols) = d.cols.groups.get(cols.clone()) {
-                        let first = base + (tx0 - ox) as usize;
-                        if put_row(
-                            &mut bufs,
-                            first,
-                            cols,
-                            row,
-                            d.groups,
-                            fctx.color_mask,
-                            bit_px,
-                        ) {
-                            continue;
-                        }
-                    }
-                }
-                for x in tx0..=tx1 {
-                    let Some(&gi) = d.cols.groups.get((x - x0) as usize) else {
-                        continue;
-                    };
-                    let g = row + gi as usize;
-                    let i = base + (x - ox) as usize;
-                    fragment(
-                        &fctx,
-                        &shared,
-                        &mut bufs,
-                        d.groups,
-                        g,
-                        i,
-                        plain,
-                        stencil_mask,
-                    );
-                }
-            }
+            let rows = plain.then_some((fctx.color_mask, bit_px));
+            draw_tile(
+                &d.cols,
+                &d.rows,
+                d.width,
+                d.groups,
+                &mut bufs,
+                rows,
+                |bufs, g, i| fragment(&fctx, &shared, bufs, d.groups, g, i, plain, stencil_mask),
+            );
             bufs.samples
         };
         let colors = super::tile_parts(primary, &tiles, TILE_PIXELS);
@@ -494,10 +502,12 @@ impl Renderer {
                 jobs.push((t, c, c2, z, s));
             }
         }
-        // A rectangle within one or two tiles (a glyph, a small image) is drawn on this
-        // thread: handing it to the pool costs more than drawing it (`bench bitmap-text`).
-        // Tiles are independent, so the pixels are the same either way.
-        let counted: u64 = if jobs.len() <= 2 {
+        // A rectangle within one or two tiles, or of fewer pixels than two tiles hold (a glyph
+        // across a tile corner, a small image), is drawn on this thread: handing it to the pool
+        // costs more than drawing it (`bench bitmap-text`). Tiles are independent, so the
+        // pixels are the same either way.
+        let pixels = (d.cols.len() as u64).saturating_mul(d.rows.len() as u64);
+        let counted: u64 = if jobs.len() <= 2 || pixels < super::SERIAL_AREA {
             jobs.into_iter()
                 .map(|(t, c, c2, z, s)| work(t, c, c2, z, s))
                 .sum()
@@ -509,6 +519,124 @@ impl Renderer {
         if let Some(query) = counting {
             core.add_samples(query, counted);
         }
+    }
+}
+
+/// The window rectangle `[x0, y0, x1, y1]` (inclusive) that `cols` and `rows` cover (not
+/// empty).
+fn rect(cols: &Span, rows: &Span) -> [i32; 4] {
+    let (x0, y0) = (cols.lo, rows.lo);
+    [
+        x0,
+        y0,
+        x0 + cols.len() as i32 - 1,
+        y0 + rows.len() as i32 - 1,
+    ]
+}
+
+/// The tiles of a framebuffer of `tiles` (across, down) that the rectangle of `cols` and `rows`
+/// (not empty) reaches, in ascending order.
+fn rect_tiles(cols: &Span, rows: &Span, (tiles_x, tiles_y): (usize, usize)) -> Vec<usize> {
+    let [x0, y0, x1, y1] = rect(cols, rows);
+    let span = |lo: i32, hi: i32, n: usize| match hi < 0 {
+        true => 0..0,
+        false => (lo.max(0) as usize / TILE).min(n)..(hi as usize / TILE + 1).min(n),
+    };
+    let (across, up) = (span(x0, x1, tiles_x), span(y0, y1, tiles_y));
+    up.flat_map(|ty| across.clone().map(move |tx| ty * tiles_x + tx))
+        .collect()
+}
+
+/// The fragments of the pixel rectangle `cols` x `rows` (groups `width` a row) inside the tile
+/// `bufs` holds: with `plain` (the colour mask and a bitmap's bytes) a row at a time through
+/// [`put_row`] where it applies, otherwise `each(bufs, g, i)` for group `g` at tile index `i`,
+/// rows bottom-up and left to right.
+fn draw_tile(
+    cols: &Span,
+    rows: &Span,
+    width: usize,
+    groups: Groups,
+    bufs: &mut TileBufs,
+    plain: Option<([bool; 4], [u8; 4])>,
+    mut each: impl FnMut(&mut TileBufs, usize, usize),
+) {
+    let [x0, y0, x1, y1] = rect(cols, rows);
+    let (ox, oy) = (bufs.x, bufs.y);
+    let (tx0, ty0) = (x0.max(ox), y0.max(oy));
+    let (tx1, ty1) = (x1.min(ox + TILE as i32 - 1), y1.min(oy + TILE as i32 - 1));
+    if tx0 > tx1 || ty0 > ty1 {
+        return;
+    }
+    // The tile's columns, as indices into `cols`.
+    let tile_cols = (tx0 - x0) as usize..=(tx1 - x0) as usize;
+    for y in ty0..=ty1 {
+        let Some(&gj) = rows.groups.get((y - y0) as usize) else {
+            continue;
+        };
+        let row = gj as usize * width;
+        let base = (y - oy) as usize * TILE;
+        if let Some((mask, bit_px)) = plain {
+            // Only the colour write applies: a whole row at a time.
+            if let Some(c) = cols.groups.get(tile_cols.clone()) {
+                let first = base + (tx0 - ox) as usize;
+                if put_row(bufs, first, c, row, groups, mask, bit_px) {
+                    continue;
+                }
+            }
+        }
+        for x in tx0..=tx1 {
+            let Some(&gi) = cols.groups.get((x - x0) as usize) else {
+                continue;
+            };
+            each(bufs, row + gi as usize, base + (x - ox) as usize);
+        }
+    }
+}
+
+/// A plain bitmap (only the colour write applies) binned into the scene instead of drawn in
+/// place: rasterised with the scene, each tile drawing it after the primitives and bitmaps
+/// before it and before those after it, as [`Renderer::draw_pixel_rect`] would have drawn it
+/// at its call (the same rows through [`put_row`]).
+#[derive(Debug)]
+pub(crate) struct BinnedBits {
+    cols: Span,
+    rows: Span,
+    width: usize,
+    bits: Vec<u8>,
+    mask: [bool; 4],
+    px: [u8; 4],
+}
+
+impl BinnedBits {
+    /// The tiles it reaches, in ascending order.
+    pub(crate) fn tiles(&self, tiles: (usize, usize)) -> Vec<usize> {
+        rect_tiles(&self.cols, &self.rows, tiles)
+    }
+
+    /// Covered pixels.
+    pub(crate) fn pixels(&self) -> u64 {
+        (self.cols.len() as u64).saturating_mul(self.rows.len() as u64)
+    }
+
+    /// Bytes held (for the scene's bound on memory).
+    pub(crate) fn bytes(&self) -> usize {
+        self.bits.len() + 4 * (self.cols.len() + self.rows.len())
+    }
+
+    /// Draws its part in the tile `bufs` holds.
+    pub(crate) fn draw(&self, bufs: &mut TileBufs) {
+        let groups = Groups::Bits(&self.bits);
+        let plain = Some((self.mask, self.px));
+        // `put_row` takes every row of bits: nothing is left to a fragment.
+        draw_tile(
+            &self.cols,
+            &self.rows,
+            self.width,
+            groups,
+            bufs,
+            plain,
+            |_, _, _| {},
+        );
     }
 }
 

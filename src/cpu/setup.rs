@@ -166,6 +166,7 @@ impl RPrim {
     /// inclusive, inside its bounding box): false when one edge function (`edges`) is negative
     /// at every pixel of `rect`, its largest value being at a corner (exact, in i128). Then
     /// the rasteriser's walk of the rectangle's rows finds no span.
+    #[inline(always)]
     pub fn may_reach(&self, rect: [i32; 4]) -> bool {
         let [x0, y0, x1, y1] = rect.map(i128::from);
         self.edges().iter().all(|e| {

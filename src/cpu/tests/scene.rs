@@ -291,3 +291,166 @@ fn queries_read_late_count_what_they_counted() {
     // The pixel rectangle rasterises the scene once; the results' reads once more.
     assert_eq!(late_passes, 2, "passes");
 }
+
+/// Bitmaps binned into the scene (`Renderer::bitmap`, plain ones) give the pixels of every
+/// bitmap drawn in place at its call (`draw_pixel_rect`, the test hook `bitmaps_in_place`):
+/// random interleavings of depth-tested triangles, bitmaps at random raster positions (across
+/// tile edges, partly off the window), colour masks, draw buffers (back, front, both, none),
+/// the scissor test, bitmaps made not plain (depth test, blending, fog) between plain ones,
+/// clears, reads in the middle of the frame, and bursts of bitmaps past `SCENE_PARTS`. The
+/// back, front and depth buffers must match byte for byte.
+#[test]
+fn binned_bitmaps_are_the_bitmaps_drawn_in_place() {
+    let mut gen = crate::cpu::testgen::Gen(77);
+    let mut next = move || gen.next() as u32;
+    let config = ContextConfig {
+        double_buffered: true,
+        ..ContextConfig::default()
+    };
+    let (w, h) = (150i32, 110i32);
+    // Passes of each route: binning leaves fewer.
+    let mut passes = [0u64; 2];
+    for case in 0..60 {
+        // One script of steps, replayed on both contexts.
+        let steps: Vec<[u32; 12]> = (0..60).map(|_| std::array::from_fn(|_| next())).collect();
+        let mut images = Vec::new();
+        for in_place in [false, true] {
+            let mut gl = Context::with_config(w as u32, h as u32, config).expect("context");
+            gl.renderer.bitmaps_in_place = in_place;
+            gl.matrix_mode(gl::PROJECTION);
+            gl.ortho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0);
+            gl.matrix_mode(gl::MODELVIEW);
+            gl.clear_color(0.1, 0.2, 0.3, 0.4);
+            gl.draw_buffer(gl::FRONT_AND_BACK);
+            gl.clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+            gl.draw_buffer(gl::BACK);
+            gl.depth_func(gl::LEQUAL);
+            gl.blend_func(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA);
+            gl.fogfv(gl::FOG_COLOR, &[0.9, 0.1, 0.5, 1.0]);
+            let data: Vec<u8> = (0..2000).map(|k| (k * 131 % 251) as u8 ^ 0x5A).collect();
+            let mut px = [0u8; 4];
+            for s in &steps {
+                let unit = |v: u32| (v % 1001) as f32 / 1000.0;
+                match s[0] % 16 {
+                    0..=2 => {
+                        // A triangle, depth-tested when the test is on.
+                        gl.color4f(unit(s[1]), unit(s[2]), unit(s[3]), unit(s[4]));
+                        gl.begin(gl::TRIANGLES);
+                        for k in 0..3 {
+                            let (x, y) = (s[5 + 2 * k] % 200, s[6 + 2 * k] % 160);
+                            let z = unit(s[11] >> (k * 4)) * 1.8 - 0.9;
+                            gl.vertex3f(x as f32 - 25.0, y as f32 - 25.0, z);
+                        }
+                        gl.end();
+                    }
+                    3..=8 => {
+                        // A bitmap.
+                        gl.color4f(unit(s[1]), unit(s[2]), unit(s[3]), unit(s[4]));
+                        let z = unit(s[5]) * 1.8 - 0.9;
+                        gl.window_pos3f(
+                            (s[6] % 190) as f32 - 20.0 + 0.5 * (s[7] % 2) as f32,
+                            (s[8] % 150) as f32 - 20.0,
+                            z,
+                        );
+                        let (bw, bh) = (1 + (s[9] % 40) as i32, 1 + (s[10] % 40) as i32);
+                        let off = (s[11] % 400) as usize;
+                        gl.bitmap(bw, bh, 0.0, 0.0, 3.0, 1.0, Some(&data[off..]));
+                    }
+                    9 => gl.color_mask(s[1] % 4 != 0, s[2] % 4 != 0, s[3] % 4 != 0, s[4] % 4 != 0),
+                    10 => gl.draw_buffer(
+                        [gl::BACK, gl::FRONT, gl::FRONT_AND_BACK, gl::NONE, gl::BACK]
+                            [s[1] as usize % 5],
+                    ),
+                    11 => {
+                        match s[1] % 3 == 0 {
+                            true => gl.disable(gl::SCISSOR_TEST),
+                            false => gl.enable(gl::SCISSOR_TEST),
+                        }
+                        let (x, y) = ((s[2] % 120) as i32, (s[3] % 90) as i32);
+                        gl.scissor(x, y, (s[4] % 100) as i32, (s[5] % 80) as i32);
+                    }
+                    12 => {
+                        // State that makes bitmaps not plain, or plain again.
+                        let cap = [gl::DEPTH_TEST, gl::BLEND, gl::FOG][s[1] as usize % 3];
+                        match s[2] % 2 == 0 {
+                            true => gl.enable(cap),
+                            false => gl.disable(cap),
+                        }
+                    }
+                    13 => gl.clear(gl::COLOR_BUFFER_BIT | ((s[1] % 2) * gl::DEPTH_BUFFER_BIT)),
+                    14 => {
+                        let (x, y) = ((s[1] % w as u32) as i32, (s[2] % h as u32) as i32);
+                        gl.read_pixels(x, y, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+                    }
+                    _ => {
+                        // A burst of small bitmaps, past SCENE_PARTS when it comes twice.
+                        gl.window_pos2f((s[1] % 100) as f32, (s[2] % 100) as f32);
+                        for k in 0..700 {
+                            gl.color3f(unit(s[3] ^ k), 0.5, unit(s[4] ^ (k * 7)));
+                            let (bw, bh) = (1 + (k % 9) as i32, 1 + (k % 7) as i32);
+                            let step = [1.0, -1.0][k as usize % 2];
+                            gl.bitmap(
+                                bw,
+                                bh,
+                                0.0,
+                                0.0,
+                                step,
+                                0.5 * step,
+                                Some(&data[k as usize..]),
+                            );
+                        }
+                    }
+                }
+            }
+            assert_eq!(gl.get_error(), gl::NO_ERROR, "case {case}");
+            passes[usize::from(in_place)] += gl.draw_stats().passes;
+            let mut depth = vec![0u8; (w * h * 4) as usize];
+            gl.read_pixels(
+                0,
+                0,
+                w,
+                h,
+                gl::DEPTH_COMPONENT,
+                gl::UNSIGNED_INT,
+                &mut depth,
+            );
+            images.push((gl.to_image().into_raw(), gl.front_rgba(), depth));
+        }
+        let [a, b] = [&images[0], &images[1]];
+        assert!(a.0 == b.0, "case {case}: the back buffers differ");
+        assert!(a.1 == b.1, "case {case}: the front buffers differ");
+        assert!(a.2 == b.2, "case {case}: the depth buffers differ");
+    }
+    assert!(
+        passes[0] != passes[1],
+        "passes binned and in place: {passes:?}"
+    );
+    // A plain bitmap between two triangles makes no pass of its own: the three are
+    // rasterised in one pass when the framebuffer is read (in place, the bitmap rasterises
+    // the first triangle before it is drawn).
+    for (in_place, want) in [(false, 1), (true, 2)] {
+        let mut gl = Context::new(100, 100).expect("context");
+        gl.renderer.bitmaps_in_place = in_place;
+        let before = gl.draw_stats().passes;
+        let triangle = |gl: &mut Context| {
+            gl.begin(gl::TRIANGLES);
+            gl.vertex2f(-1.0, -1.0);
+            gl.vertex2f(1.0, -1.0);
+            gl.vertex2f(0.0, 1.0);
+            gl.end();
+        };
+        triangle(&mut gl);
+        gl.window_pos2f(10.0, 10.0);
+        gl.bitmap(8, 8, 0.0, 0.0, 0.0, 0.0, Some(&[0xF0; 32]));
+        assert_eq!(gl.get_error(), gl::NO_ERROR);
+        gl.color3f(1.0, 0.0, 0.0);
+        triangle(&mut gl);
+        let mut px = [0u8; 4];
+        gl.read_pixels(12, 12, 1, 1, gl::RGBA, gl::UNSIGNED_BYTE, &mut px);
+        assert_eq!(
+            gl.draw_stats().passes - before,
+            want,
+            "in place: {in_place}"
+        );
+    }
+}
