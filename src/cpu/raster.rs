@@ -52,35 +52,14 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         return ctx.aa_rows(bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
     if let Some(pl) = ctx.smooth_planes(bufs, p, planes) {
-        if p.cover & COVER_KNOWN != 0 {
-            // At most 2x2 pixels (a dense mesh's usual triangle): at most two rows, the same
-            // ones the general gathering below hands over in one call, without its sixteen.
-            let mut rows = [[0i32; 3]; 2];
-            let mut k = 0;
-            spans(p, r, |y, l, h| {
-                if let Some(row) = rows.get_mut(k) {
-                    *row = [y, l, h];
-                    k += 1;
-                }
-            });
-            return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
-        }
-        // Smooth colour and the depth test alone: decided here once; the rows are gathered
-        // (sixteen at a time) and shaded in one call, which keeps what depends on the
-        // primitive alone in registers (a call per span paid its set-up every time).
-        let mut rows = [[0i32; 3]; 16];
-        let mut k = 0;
-        spans(p, r, |y, l, h| {
-            if k == rows.len() {
-                ctx.smooth_rows(bufs, p, pl, &rows);
-                k = 0;
-            }
-            if let Some(row) = rows.get_mut(k) {
-                *row = [y, l, h];
-                k += 1;
-            }
-        });
-        return ctx.smooth_rows(bufs, p, pl, rows.get(..k).unwrap_or_default());
+        // Smooth colour and the depth test alone: decided here once, the rows shaded a batch
+        // at a time (`batched`).
+        return batched(p, r, |rows| ctx.smooth_rows(bufs, p, pl, rows));
+    }
+    if let Some(fill) = ctx.const_fill(bufs, p, planes) {
+        // One colour (FLAT) or none (depth only) and the depth test: the same, the rows'
+        // groups tested and stored in one pass (`const_rows`).
+        return batched(p, r, |rows| ctx.const_rows(bufs, p, planes, fill, rows));
     }
     if let Some(ops) = &ctx.ops {
         // Per-fragment operations: the rows (at most a tile's) are gathered and shaded in one
@@ -100,6 +79,39 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
     spans(p, r, |y, l, h| {
         ctx.tri_span_row(bufs, p, planes, [y, l, h], &mut fused)
     });
+}
+
+/// The spans of `p` in `r` handed to `shade` in batches, so that what depends on the
+/// primitive alone is set up once a batch and kept in registers (a call per span paid its
+/// set-up every time): a triangle of at most 2x2 pixels (a dense mesh's usual triangle) in
+/// one batch of at most two rows, without the sixteen-row array; any other sixteen rows at a
+/// time.
+#[inline(always)]
+fn batched(p: &RPrim, r: [i32; 4], mut shade: impl FnMut(&[[i32; 3]])) {
+    if p.cover & COVER_KNOWN != 0 {
+        let mut rows = [[0i32; 3]; 2];
+        let mut k = 0;
+        spans(p, r, |y, l, h| {
+            if let Some(row) = rows.get_mut(k) {
+                *row = [y, l, h];
+                k += 1;
+            }
+        });
+        return shade(rows.get(..k).unwrap_or_default());
+    }
+    let mut rows = [[0i32; 3]; 16];
+    let mut k = 0;
+    spans(p, r, |y, l, h| {
+        if k == rows.len() {
+            shade(&rows);
+            k = 0;
+        }
+        if let Some(row) = rows.get_mut(k) {
+            *row = [y, l, h];
+            k += 1;
+        }
+    });
+    shade(rows.get(..k).unwrap_or_default())
 }
 
 /// The covered run of each row of `r` (the triangle's bounding box clipped to the tile) in
