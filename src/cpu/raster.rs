@@ -122,7 +122,7 @@ fn spans(p: &RPrim, r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
     if p.cover & COVER_KNOWN != 0 {
         // At most 2x2 pixels whose covered centres setup already found: no edge walk.
         let (bx, by) = (p.bbox[0], p.bbox[1]);
-        for y in y0..=y1 {
+        for y in rows(y0, y1) {
             let row = (p.cover >> (2 * (y - by))) & 3;
             // Columns x0..=x1 of the tile, relative to the bounding box (0 or 1).
             let cols = row & (((2u8 << (x1 - bx)) - 1) & !((1u8 << (x0 - bx)) - 1));
@@ -144,7 +144,7 @@ fn spans(p: &RPrim, r: [i32; 4], mut span: impl FnMut(i32, i32, i32)) {
         }
         return narrow(&edges, r, span);
     }
-    for y in y0..=y1 {
+    for y in rows(y0, y1) {
         let (mut l, mut h) = (i64::from(x0), i64::from(x1));
         for e in &edges {
             // E(x) = erow + e[1]·x must be >= 0 (the tie-break bias is already in e[0]).
@@ -247,7 +247,7 @@ fn narrow_sse(edges: &[[i64; 3]; 3], r: [i32; 4], span: &mut impl FnMut(i32, i32
             let o = _mm_or_si128(_mm_or_si128(v[0][c], v[1][c]), v[2][c]);
             _mm_movemask_ps(_mm_castsi128_ps(o)) as u32
         };
-        for y in y0..=y1 {
+        for y in rows(y0, y1) {
             let cov = !(neg(&v, 0) | neg(&v, 1) << 4 | neg(&v, 2) << 8) & cols;
             if cov != 0 {
                 let l = x0 + cov.trailing_zeros() as i32;
@@ -260,6 +260,13 @@ fn narrow_sse(edges: &[[i64; 3]; 3], r: [i32; 4], span: &mut impl FnMut(i32, i32
         }
     }
     true
+}
+
+/// Rows `y0..=y1` as a half-open range (`y1` is at most a tile's last row, far below
+/// `i32::MAX`): the inclusive range's exhaustion flag cost a test and a branch per row.
+#[inline(always)]
+fn rows(y0: i32, y1: i32) -> std::ops::Range<i32> {
+    y0..y1.saturating_add(1)
 }
 
 /// Bounding boxes narrower than this are scanned pixel by pixel.
