@@ -146,6 +146,16 @@ unsafe fn fused_span<'s>(
 /// [`FusedSpan`]: super::texture::FusedSpan
 pub type FusedSlot<'a> = Option<super::texture::FusedSpan<'a>>;
 
+/// What each fragment of a primitive's spans writes besides its depth when that is the same
+/// for all (`FragCtx::const_fill`): one colour, its bytes as stored, or none.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConstFill {
+    /// A FLAT primitive's one colour.
+    Flat([u8; 4]),
+    /// A depth-only pass (ColorMask all false): nothing but the depth test.
+    Depth,
+}
+
 /// `FragCtx::crossbar` of the units `tex`.
 pub fn crossbar(tex: &[Option<(&Sampler, usize)>]) -> bool {
     tex.iter().flatten().any(|(s, _)| s.crossbar())
@@ -941,6 +951,154 @@ impl FragCtx<'_> {
         };
         if self.samples {
             bufs.samples += u64::from(mask.count_ones());
+        }
+    }
+
+    /// What every span of `p` writes when it is one colour or none — a FLAT primitive whose
+    /// planes give one colour for all its fragments (`lanes::flat_px`) into one colour buffer
+    /// written whole, or a depth-only pass (ColorMask all false) — with no per-fragment
+    /// operation beyond the depth test, no polygon stipple and no coverage count: the spans
+    /// `tri_span` sends through `depth_mask_span` and then `lanes::flat_rgba` or nothing.
+    /// None for any other primitive. Decided once per primitive and tile (`raster::tri`).
+    #[inline(always)]
+    pub fn const_fill(&self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> Option<ConstFill> {
+        let stippled = self.stipple.is_some() && p.flags & F_LINE == 0;
+        if self.ops.is_some() || p.flags & (F_AAPOINT | F_AALINE) != 0 || stippled || self.count {
+            return None;
+        }
+        if self.color_mask == [false; 4] {
+            return Some(ConstFill::Depth);
+        }
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        if self.rl.n != 4
+            || nflat != 4
+            || p.flags & F_PHONG != 0
+            || self.color_mask != [true; 4]
+            || bufs.color2.is_some()
+        {
+            return None;
+        }
+        let pl = planes.get(3..15)?.try_into().ok()?;
+        super::lanes::flat_px(pl, 0, 0.0).map(ConstFill::Flat)
+    }
+
+    /// Spans of a primitive `const_fill` accepted (`fill`), `rows` holding each span's window
+    /// row and first and last pixel (all inside the tile): what `tri_span` does with each,
+    /// on AVX2 the depth test and the store of each group in one pass
+    /// (`lanes::depth_color_span_avx2`) with the depth test chosen once per call.
+    #[inline(never)]
+    pub fn const_rows(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        fill: ConstFill,
+        rows: &[[i32; 3]],
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 and POPCNT.
+            unsafe { self.const_rows_avx2(bufs, p, fill, rows) };
+            return;
+        }
+        let _ = fill;
+        for &row in rows {
+            self.tri_span_portable(bufs, p, planes, row, &mut None);
+        }
+    }
+
+    /// `const_rows` compiled for AVX2 and POPCNT, the common depth tests chosen once for the
+    /// call (`depth_fast`, as `smooth_rows_avx2`).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    unsafe fn const_rows_avx2(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        fill: ConstFill,
+        rows: &[[i32; 3]],
+    ) {
+        // SAFETY: the CPU has AVX2 and POPCNT (this function's contract).
+        unsafe {
+            match (fill, self.depth_fast()) {
+                (ConstFill::Flat(px), LESS) => self.const_rows_on::<LESS, true>(bufs, p, px, rows),
+                (ConstFill::Flat(px), LEQUAL) => {
+                    self.const_rows_on::<LEQUAL, true>(bufs, p, px, rows)
+                }
+                (ConstFill::Flat(px), _) => self.const_rows_on::<0, true>(bufs, p, px, rows),
+                (ConstFill::Depth, LESS) => {
+                    self.const_rows_on::<LESS, false>(bufs, p, [0; 4], rows)
+                }
+                (ConstFill::Depth, LEQUAL) => {
+                    self.const_rows_on::<LEQUAL, false>(bufs, p, [0; 4], rows)
+                }
+                (ConstFill::Depth, _) => self.const_rows_on::<0, false>(bufs, p, [0; 4], rows),
+            }
+        }
+    }
+
+    /// Each of `rows` as `tri_span` computes it for `const_fill`'s primitives: its `zrow`, the
+    /// depth test over the span (`depth_mask_span`: every pixel of it live, the depth row's
+    /// length bounding it) and, when `FLAT`, the colour `px` stored into its survivors group
+    /// by group as the groups are tested (`lanes::flat_group_avx2`, what `flat_rgba` stores);
+    /// the occlusion count. `F` as in `lanes::depth_groups_avx2`.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn const_rows_on<const F: u32, const FLAT: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        px: [u8; 4],
+        rows: &[[i32; 3]],
+    ) {
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let (func, write) = (self.depth_func, self.depth_mask);
+        for &[y, x0, x1] in rows {
+            let fy = (y - oy) as f32;
+            let zrow = p.z[0] + p.z[2] * fy;
+            let base = ((y - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+            let n = (x1 - x0 + 1) as usize;
+            let mask = if self.depth_test {
+                let Some(row) = bufs.depth.get_mut(base..) else {
+                    continue;
+                };
+                let n = n.min(64).min(row.len());
+                if n == 0 {
+                    continue;
+                }
+                let live = u64::MAX >> (64 - n);
+                let color = bufs.color.get_mut(base..).unwrap_or_default();
+                let a = (row, n, zrow, p.z[1], x0 - ox, live);
+                // SAFETY: the CPU has AVX2 (this function's contract).
+                unsafe {
+                    super::lanes::depth_groups_avx2::<F>(a, func, write, |c, m| {
+                        if FLAT {
+                            super::lanes::flat_group_avx2(color, c, m, px);
+                        }
+                    })
+                }
+            } else {
+                let n = n.clamp(1, 64);
+                if FLAT {
+                    if let Some(dst) = bufs.color.get_mut(base..base + n) {
+                        dst.fill(px);
+                    }
+                }
+                u64::MAX >> (64 - n)
+            };
+            if self.samples {
+                bufs.samples += u64::from(mask.count_ones());
+            }
         }
     }
 
@@ -3248,5 +3406,133 @@ mod tests {
                 "round {round}: {f:?} {p:?} y {y} x {x0}..={x1} {more:?}"
             );
         }
+    }
+
+    /// `const_rows` (a FLAT primitive of one colour, or a depth-only pass, its rows in one
+    /// call) against each row through `tri_span`, on the AVX2 route and with it turned off
+    /// (`lanes::NO_AVX2`): the same colours, depths and samples, byte for byte. Random depth
+    /// states (the compiled-in LESS and LEQUAL among them), depth planes crossing the stored
+    /// values, flat colours with ±0, NaN and ∞, rows anywhere in the tile (its last pixels
+    /// among them, where a group runs past the buffers' end).
+    #[test]
+    fn const_rows_are_tri_span_byte_for_byte() {
+        let mut g = Gen(61);
+        let (mut taken, mut flat) = (0, 0);
+        for round in 0..3000 {
+            let mut f = FragCtx {
+                depth_test: g.next() % 5 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: match g.next() % 8 {
+                    0 => std::array::from_fn(|_| g.next() % 2 == 0),
+                    1 | 2 => [false; 4],
+                    _ => [true; 4],
+                },
+                color_sum: false,
+                rl: RLayout {
+                    n: 4,
+                    ..Default::default()
+                },
+                lighting: None,
+                mats: &[],
+                count: g.next() % 20 == 0,
+                samples: g.next() % 2 == 0,
+                stipple: None,
+                ops: None,
+                tex: [None; MAX_TEXTURE_UNITS],
+                crossbar: false,
+            };
+            if round % 3 == 2 {
+                f.depth_test = true;
+                f.depth_func = [gl::LESS, gl::LEQUAL][round / 3 % 2];
+                f.depth_mask = true;
+            }
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let flags = [F_FLAT, F_FLAT, F_FLAT | F_BACK, 0][(g.next() % 4) as usize];
+            let bbox = [tx - (g.next() % 20) as i32, ty - (g.next() % 20) as i32];
+            let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags,
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z,
+            };
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for _ in 0..4 {
+                let v = match g.next() % 8 {
+                    0 => [0.0, -0.0, f32::NAN, f32::INFINITY, -1.0, 2.0][(g.next() % 6) as usize],
+                    _ => g.mostly_unit(),
+                };
+                let z = |g: &mut Gen| [0.0, -0.0][(g.next() % 2) as usize];
+                planes.extend([v, z(&mut g), z(&mut g)]);
+            }
+            if g.next() % 10 == 0 {
+                // A step: not one colour (`const_fill` says None).
+                planes[4 + 3 * (g.next() % 4) as usize] = 1e-3;
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let stencil = vec![0u8; TILE * TILE];
+            let rows: Vec<[i32; 3]> = (0..1 + g.next() % 20)
+                .map(|_| {
+                    let y = ty + (g.next() % TILE as u64) as i32;
+                    let x0 = tx + (g.next() % TILE as u64) as i32;
+                    let x1 = (x0 + (g.next() % 64) as i32).min(tx + TILE as i32 - 1);
+                    [y, x0, x1]
+                })
+                .collect();
+            let draw = |by_rows: bool| {
+                let (mut c, mut d, mut s) = (color.clone(), depth.clone(), stencil.clone());
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: None,
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                let fill = f.const_fill(&bufs, &p, &planes);
+                match fill {
+                    Some(fill) if by_rows => f.const_rows(&mut bufs, &p, &planes, fill, &rows),
+                    _ => {
+                        for &[y, x0, x1] in &rows {
+                            f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
+                        }
+                    }
+                }
+                let samples = bufs.samples;
+                (fill, c, d, samples)
+            };
+            let want = draw(false);
+            let got = draw(true);
+            assert!(
+                got == want,
+                "round {round}: {f:?} {p:?} {planes:?} {rows:?}"
+            );
+            #[cfg(target_arch = "x86_64")]
+            if crate::cpu::lanes::has_avx2() {
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(true));
+                let sse2 = draw(false);
+                crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
+                assert!(got == sse2, "round {round}: the SSE2 route differs");
+            }
+            taken += usize::from(got.0.is_some());
+            flat += usize::from(matches!(got.0, Some(ConstFill::Flat(_))));
+        }
+        // Both fills were taken, and the other primitives left to `tri_span`.
+        assert!(
+            taken > 1500 && flat > 800 && taken < 2900,
+            "taken {taken} flat {flat}"
+        );
     }
 }

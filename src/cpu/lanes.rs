@@ -151,25 +151,32 @@ pub fn smooth_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, co: &[f32; 10]) {
     }
 }
 
+/// The one colour of every fragment of `flat_rgba`'s spans when its planes `co` are those setup
+/// gives a FLAT varying, (value, ±0, ±0) in each channel; None when a step is nonzero.
+/// (o + 0·fx) + 0·fy is o for any finite fx and fy (fragment positions are) unless o is ±0,
+/// where it is ±0 — the same byte, 0, either way; a NaN stays NaN. So fragment (`fx0`, `fy`)'s
+/// bytes are every fragment's, whatever its position: `FragCtx::const_rows` takes them once
+/// per primitive (at 0, 0). The four channels share one conversion, a lane each (the lanes
+/// are independent: each byte is the one `unorm8_lanes` gives that value alone; four
+/// conversions of a broadcast value were ≈60 instructions a span in transforms).
+#[inline(always)]
+pub fn flat_px(co: &[f32; 12], fx0: i32, fy: f32) -> Option<[u8; 4]> {
+    if !(0..4).all(|c| co[3 * c + 1] == 0.0 && co[3 * c + 2] == 0.0) {
+        return None;
+    }
+    let v: [f32; 4] =
+        std::array::from_fn(|c| (co[3 * c] + co[3 * c + 1] * fx0 as f32) + co[3 * c + 2] * fy);
+    let b = unorm8_lanes([v[0], v[1], v[2], v[3], 0.0, 0.0, 0.0, 0.0]);
+    Some([b[0], b[1], b[2], b[3]])
+}
+
 /// The flat primary colour of a span (`FragCtx::tri_span` with FLAT shading and no other
 /// varying): channel c of fragment k is (`co[3c]` + `co[3c+1]`·fx) + `co[3c+2]`·fy with fx =
 /// `fx0` + k, not divided by w (the general path's expression for a flat varying). Stores the
 /// unorm8 colour of every fragment whose bit is set in `mask` into `dst[k]`.
 pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 12]) {
-    // `pl(o + 2) * fy` is the same product for every fragment of the row.
-    let ch: [(f32, f32, f32); 4] =
-        std::array::from_fn(|c| (co[3 * c], co[3 * c + 1], co[3 * c + 2] * fy));
-    if (0..4).all(|c| co[3 * c + 1] == 0.0 && co[3 * c + 2] == 0.0) {
-        // The planes setup gives a FLAT varying, (value, 0, 0): every fragment has the same
-        // colour. (o + 0·fx) + 0·fy is o for any finite fx and fy (fragment positions are)
-        // unless o is ±0, where it is ±0 — the same byte, 0, either way; a NaN stays NaN.
-        // So the first fragment's bytes are every fragment's, stored in runs.
-        // The four channels share one conversion, a lane each (the lanes are independent:
-        // each byte is the one `unorm8_lanes` gives that value alone; four conversions of a
-        // broadcast value were ≈60 instructions a span in transforms).
-        let v = ch.map(|(o, dx, yt)| (o + dx * fx0 as f32) + yt);
-        let b = unorm8_lanes([v[0], v[1], v[2], v[3], 0.0, 0.0, 0.0, 0.0]);
-        let px: [u8; 4] = [b[0], b[1], b[2], b[3]];
+    if let Some(px) = flat_px(co, fx0, fy) {
+        // Every fragment has the same colour: the first fragment's bytes, stored in runs.
         let n = dst.len().min(64);
         let mut m = mask & (u64::MAX >> (64 - n.max(1)));
         if n == 0 {
@@ -185,6 +192,9 @@ pub fn flat_rgba(dst: &mut [[u8; 4]], mask: u64, fx0: i32, fy: f32, co: &[f32; 1
         }
         return;
     }
+    // `pl(o + 2) * fy` is the same product for every fragment of the row.
+    let ch: [(f32, f32, f32); 4] =
+        std::array::from_fn(|c| (co[3 * c], co[3 * c + 1], co[3 * c + 2] * fy));
     let mut c = 0;
     while c < dst.len().min(64) {
         let m = (mask >> c) & ((1 << LANES) - 1);
@@ -328,33 +338,74 @@ pub(super) unsafe fn depth_span_avx2(
     // SAFETY: the CPU has AVX2 (this function's contract).
     unsafe {
         match (func, write) {
-            (LESS, true) => depth_groups_avx2::<LESS>(a, func, write),
-            (LEQUAL, true) => depth_groups_avx2::<LEQUAL>(a, func, write),
-            _ => depth_groups_avx2::<0>(a, func, write),
+            (LESS, true) => depth_groups_avx2::<LESS>(a, func, write, |_, _| {}),
+            (LEQUAL, true) => depth_groups_avx2::<LEQUAL>(a, func, write, |_, _| {}),
+            _ => depth_groups_avx2::<0>(a, func, write, |_, _| {}),
         }
     }
 }
 
 /// The groups of `depth_span_avx2` (`a`: its row, pixel count, depth terms, lane x and live
 /// lanes); `F` other than 0 is DepthFunc known for the call with the depth mask on (`func` and
-/// `write` then not read).
+/// `write` then not read). `then(c, m)` runs after each tested group, with its first pixel's
+/// offset and its survivors (`FragCtx::const_rows`' flat colour; nothing for `depth_span`).
 ///
 /// # Safety
 /// The CPU must have AVX2 (`has_avx2`).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-unsafe fn depth_groups_avx2<const F: u32>(
+pub(super) unsafe fn depth_groups_avx2<const F: u32>(
     (row, n, zrow, dz, fx0, live): (&mut [u32], usize, f32, f32, i32, u64),
     func: u32,
     write: bool,
+    mut then: impl FnMut(usize, u8),
 ) -> u64 {
     let (func, write) = if F != 0 { (F, true) } else { (func, write) };
     live_groups(row, n, live, |out, c, m| {
         let fx = fx0.wrapping_add(c as i32);
         // SAFETY: the CPU has AVX2.
-        unsafe { super::oplanes::avx2::depth_test(func, write, out, zrow, dz, fx, m) }
+        let m = unsafe { super::oplanes::avx2::depth_test(func, write, out, zrow, dz, fx, m) };
+        then(c, m);
+        m
     })
+}
+
+/// Lanes `m` of the eight pixels of `dst` from index `c` set to `px` (one `vpmaskmovd` when
+/// eight pixels follow, else lane by lane), the others left as they are: what `flat_rgba`
+/// stores for a group of a FLAT span whose colour is `px` (`flat_px`).
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) unsafe fn flat_group_avx2(dst: &mut [[u8; 4]], c: usize, m: u8, px: [u8; 4]) {
+    use std::arch::x86_64::{
+        _mm256_maskstore_epi32, _mm256_set1_epi32, _mm256_setr_epi32, _mm256_sllv_epi32,
+    };
+    if m == 0 {
+        return;
+    }
+    if let Some(g) = dst.get_mut(c..c.wrapping_add(LANES)) {
+        // SAFETY: the CPU has AVX2 (this function's contract); `g` holds eight `[u8; 4]`, 32
+        // contiguous bytes, each lane's four bytes an i32 (no alignment needed); lane l's
+        // mask is bit l of `m` moved to its sign bit.
+        unsafe {
+            let sel = _mm256_sllv_epi32(
+                _mm256_set1_epi32(i32::from(m)),
+                _mm256_setr_epi32(31, 30, 29, 28, 27, 26, 25, 24),
+            );
+            let v = _mm256_set1_epi32(i32::from_le_bytes(px));
+            _mm256_maskstore_epi32(g.as_mut_ptr().cast::<i32>(), sel, v);
+        }
+        return;
+    }
+    let rest = dst.get_mut(c..).unwrap_or_default();
+    for (l, d) in rest.iter_mut().enumerate().take(LANES) {
+        if m & (1 << l) != 0 {
+            *d = px;
+        }
+    }
 }
 
 /// The depth test and the smooth primary colour of a span in one pass (`FragCtx::smooth_row`,
