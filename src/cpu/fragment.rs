@@ -96,6 +96,26 @@ struct TexGroup<'a> {
     writes_color: bool,
 }
 
+/// `lanes::varyings` of a group, on eight lanes a register where `AVX2` (the same bits:
+/// `lanes::varyings_avx2`). `AVX2` is true only in functions compiled for AVX2 that run where
+/// the CPU has it (`tri_span_avx2`, `tex_span_avx2`).
+#[inline(always)]
+fn varyings_on<const AVX2: bool>(
+    planes: &[f32],
+    nflat: usize,
+    fx0: i32,
+    fy: f32,
+    out: &mut [[f32; LANES]],
+) {
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 {
+        // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+        unsafe { super::lanes::varyings_avx2(planes, nflat, fx0, fy, out) };
+        return;
+    }
+    super::lanes::varyings(planes, nflat, fx0, fy, out);
+}
+
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
 /// `tx` with coordinates at varying `to`): each covered group from the planes to the store.
 /// False, with nothing written, when the sampler's state is not the route's. Out of line, so
@@ -580,7 +600,7 @@ impl FragCtx<'_> {
         row: [i32; 3],
         slot: &mut FusedSlot<'s>,
     ) {
-        self.tri_span_in(bufs, p, planes, row, slot);
+        self.tri_span_in::<false>(bufs, p, planes, row, slot);
     }
 
     /// `tri_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
@@ -597,12 +617,13 @@ impl FragCtx<'_> {
         row: [i32; 3],
         slot: &mut FusedSlot<'s>,
     ) {
-        self.tri_span_in(bufs, p, planes, row, slot);
+        self.tri_span_in::<true>(bufs, p, planes, row, slot);
     }
 
-    /// The body of `tri_span_row`.
+    /// The body of `tri_span_row` (`AVX2`: true only in `tri_span_avx2`, where the CPU has
+    /// AVX2; the general path's varyings then on eight lanes a register).
     #[inline(always)]
-    fn tri_span_in<'s>(
+    fn tri_span_in<'s, const AVX2: bool>(
         &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
@@ -772,7 +793,7 @@ impl FragCtx<'_> {
                 continue;
             }
             let vs = &mut *vl;
-            super::lanes::varyings(planes, nflat, x0 - ox + g as i32, fy, vs);
+            varyings_on::<AVX2>(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
                 for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
                     let Some((tx, to)) = *t else { break };
@@ -1926,7 +1947,7 @@ impl FragCtx<'_> {
             unsafe { self.tex_span_avx2(ops, bufs, p, planes, fy, zrow, base, x0, n, live) };
             return;
         }
-        self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+        self.tex_span_in::<false>(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
     }
 
     /// The one texture unit of `p`'s fragments when `tex_span` would take it on lanes in the
@@ -2057,13 +2078,13 @@ impl FragCtx<'_> {
         n: usize,
         live: u64,
     ) {
-        self.tex_span_in(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
+        self.tex_span_in::<true>(ops, bufs, p, planes, fy, zrow, base, x0, n, live);
     }
 
-    /// The body of `tex_span`.
+    /// The body of `tex_span` (`AVX2` as `tri_span_in`'s: true only in `tex_span_avx2`).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn tex_span_in(
+    fn tex_span_in<const AVX2: bool>(
         &self,
         ops: &Ops,
         bufs: &mut TileBufs,
@@ -2110,7 +2131,7 @@ impl FragCtx<'_> {
             }
             // Varyings (§3.5.1 eq. 3.9), as `full`'s caller computes them.
             // (`lanes::varyings` computes `full`'s caller's expressions bit for bit.)
-            super::lanes::varyings(planes, nflat, fx0, fy, &mut v[..nv]);
+            varyings_on::<AVX2>(planes, nflat, fx0, fy, &mut v[..nv]);
             // λ per 2x2 quad on lanes (as `tri_span`), then the colours.
             if lod {
                 for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
