@@ -256,6 +256,61 @@ impl<'a> FusedSpan<'a> {
         unsafe { store_group(self.colors(x, m), m, dst) }
     }
 
+    /// [`FusedSpan::group`] for each group of the span of `n` pixels (at most 64) from
+    /// window x `x0`, lanes `mask` (bit i for pixel x0 + i), pixel i stored into `dst[i]`:
+    /// the groups with a lane in `mask`, in order, as that many `group` calls do. The depth
+    /// comparison's state is tested once here instead of once a group.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn span(&mut self, x0: i32, n: usize, mask: u64, dst: &mut [[u8; 4]]) {
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe {
+            if self.depth.is_some() {
+                self.groups::<true>(x0, n, mask, dst);
+            } else {
+                self.groups::<false>(x0, n, mask, dst);
+            }
+        }
+    }
+
+    /// [`FusedSpan::span`]'s loop, the depth state `DEPTH` (`depth.is_some()`): `group`,
+    /// else `group`'s colour route without its depth test.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn groups<const DEPTH: bool>(
+        &mut self,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        dst: &mut [[u8; 4]],
+    ) {
+        let mut g = 0;
+        while g < n.min(64) {
+            let m = (mask >> g) & ((1 << LANES) - 1);
+            if m != 0 {
+                if let Some(d) = dst.get_mut(g..) {
+                    let x = x0.wrapping_add(g as i32);
+                    // SAFETY: the CPU has AVX2 (the caller's promise).
+                    unsafe {
+                        if DEPTH {
+                            self.group(x, m as u8, d);
+                        } else {
+                            store_group(self.colors(x, m as u8), m as u8, d);
+                        }
+                    }
+                }
+            }
+            g += LANES;
+        }
+    }
+
     /// [`FusedSpan::group`] in the depth comparison's state (`func` its TEXTURE_COMPARE_FUNC,
     /// REPEAT on s `RX`, on t `RY`, as `rep`)
     /// on a dense base level, channel-major: each lane the expressions of
