@@ -146,16 +146,9 @@ unsafe fn fused_span<'s>(
     let Some(fs) = slot.as_mut() else {
         return false;
     };
-    let mut g = 0;
-    while g < a.n.min(64) {
-        let m = (a.mask >> g) & ((1 << LANES) - 1);
-        if m != 0 {
-            if let Some(dst) = bufs.color.get_mut(a.base + g..) {
-                // SAFETY: the CPU has AVX2 (the caller's promise).
-                unsafe { fs.group(a.x0 + g as i32, m as u8, dst) };
-            }
-        }
-        g += LANES;
+    if let Some(dst) = bufs.color.get_mut(a.base..) {
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe { fs.span(a.x0, a.n, a.mask, dst) };
     }
     true
 }
@@ -3232,6 +3225,13 @@ mod tests {
                     };
                     assert_eq!(*got, wl, "round {round} x {gx} lane {l}: group's bytes");
                 }
+                // `FusedSpan::span` on the same group (its depth state chosen once): the
+                // same bytes, the lanes outside `m` untouched.
+                let mut fg = fs;
+                let mut ps = [[7u8; 4]; LANES];
+                // SAFETY: the CPU has AVX2 (checked above).
+                unsafe { fg.span(gx, LANES, u64::from(m), &mut ps) };
+                assert_eq!(ps, px, "round {round} x {gx}: span's bytes");
                 // SAFETY: the CPU has AVX2 (checked above).
                 let got = unsafe { fs.channels(gx, m) };
                 for l in (0..LANES).filter(|l| m & (1 << l) != 0) {

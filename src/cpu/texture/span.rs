@@ -237,6 +237,7 @@ impl<'a> FusedSpan<'a> {
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
+    #[inline]
     pub unsafe fn group(&mut self, x: i32, m: u8, dst: &mut [[u8; 4]]) {
         if let Some(func) = self.depth {
             // SAFETY: the CPU has AVX2 (the caller's promise).
@@ -254,6 +255,61 @@ impl<'a> FusedSpan<'a> {
         }
         // SAFETY: the CPU has AVX2 (the caller's promise).
         unsafe { store_group(self.colors(x, m), m, dst) }
+    }
+
+    /// [`FusedSpan::group`] for each group of the span of `n` pixels (at most 64) from
+    /// window x `x0`, lanes `mask` (bit i for pixel x0 + i), pixel i stored into `dst[i]`:
+    /// the groups with a lane in `mask`, in order, as that many `group` calls do. The depth
+    /// comparison's state is tested once here instead of once a group.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn span(&mut self, x0: i32, n: usize, mask: u64, dst: &mut [[u8; 4]]) {
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe {
+            if self.depth.is_some() {
+                self.groups::<true>(x0, n, mask, dst);
+            } else {
+                self.groups::<false>(x0, n, mask, dst);
+            }
+        }
+    }
+
+    /// [`FusedSpan::span`]'s loop, the depth state `DEPTH` (`depth.is_some()`): `group`,
+    /// else `group`'s colour route without its depth test.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn groups<const DEPTH: bool>(
+        &mut self,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        dst: &mut [[u8; 4]],
+    ) {
+        let mut g = 0;
+        while g < n.min(64) {
+            let m = (mask >> g) & ((1 << LANES) - 1);
+            if m != 0 {
+                if let Some(d) = dst.get_mut(g..) {
+                    let x = x0.wrapping_add(g as i32);
+                    // SAFETY: the CPU has AVX2 (the caller's promise).
+                    unsafe {
+                        if DEPTH {
+                            self.group(x, m as u8, d);
+                        } else {
+                            store_group(self.colors(x, m as u8), m as u8, d);
+                        }
+                    }
+                }
+            }
+            g += LANES;
+        }
     }
 
     /// [`FusedSpan::group`] in the depth comparison's state (`func` its TEXTURE_COMPARE_FUNC,
@@ -679,24 +735,32 @@ impl<'a> FusedSpan<'a> {
         }
         // f ≠ 0 only below `span`: level + 1 is at most `last`.
         let b = self.level(level.saturating_add(1), linear, ss, tt)?;
-        // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others.
+        // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others (every
+        // lane of `m` blended: no select, the lanes outside `m` are unspecified).
+        let one = _mm256_set1_ps(1.0);
+        let mix = |k: usize, fk: __m256| {
+            _mm256_add_ps(
+                _mm256_mul_ps(a[k], _mm256_sub_ps(one, fk)),
+                _mm256_mul_ps(b[k], fk),
+            )
+        };
+        if second == m {
+            return Some(std::array::from_fn(|k| {
+                mix(k, _mm256_permutevar8x32_ps(f, pair_index(k)))
+            }));
+        }
         let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
         let on = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
             _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
             bits,
         ));
-        let one = _mm256_set1_ps(1.0);
         Some(std::array::from_fn(|k| {
             let idx = pair_index(k);
             let (fk, onk) = (
                 _mm256_permutevar8x32_ps(f, idx),
                 _mm256_permutevar8x32_ps(on, idx),
             );
-            let x = _mm256_add_ps(
-                _mm256_mul_ps(a[k], _mm256_sub_ps(one, fk)),
-                _mm256_mul_ps(b[k], fk),
-            );
-            _mm256_blendv_ps(a[k], x, onk)
+            _mm256_blendv_ps(a[k], mix(k, fk), onk)
         }))
     }
 
