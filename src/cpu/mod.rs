@@ -86,8 +86,10 @@ use framebuffer::{Framebuffer, Targets, TILE, TILE_PIXELS};
 use setup::{SetupCtx, Worker};
 use vertex::{Layout, Lighting};
 
-/// Primitives below which setup stays on one thread.
+/// Vertex indices below which setup stays on one thread.
 const PARALLEL_SETUP: usize = 4096;
+/// The same for a batch with texture coordinates, whose set-up costs more a triangle.
+const PARALLEL_SETUP_TEXTURED: usize = 1024;
 
 /// The CPU renderer: the vertex batch being filled, the framebuffer with the scratch space the
 /// drawing reuses, and the draw running in the background, if any.
@@ -856,7 +858,12 @@ impl Core {
         self.scene.frags.push(frag);
         // The line stipple counter runs from segment to segment in submission order: one
         // worker sets up everything while LINE_STIPPLE is on.
-        let nw = if batch.idx.len() >= PARALLEL_SETUP && ctx.line_stipple.is_none() {
+        let parallel = if layout.tex.iter().any(Option::is_some) {
+            PARALLEL_SETUP_TEXTURED
+        } else {
+            PARALLEL_SETUP
+        };
+        let nw = if batch.idx.len() >= parallel && ctx.line_stipple.is_none() {
             // More workers than threads balances the load when other processes share the cores.
             (4 * rayon::current_num_threads()).clamp(1, 32)
         } else {
