@@ -3247,6 +3247,21 @@ mod tests {
         }
     }
 
+    /// A triangle of the random span tests: `flags`, its box 100 pixels square from `bbox`,
+    /// the depth plane `z`.
+    fn box_tri(flags: u8, bbox: [i32; 2], z: [f32; 3]) -> RPrim {
+        RPrim {
+            kind: PrimKind::Tri,
+            flags,
+            bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+            mat: 0,
+            voff: 0,
+            xy: [0; 6],
+            owns: 0,
+            cover: 0,
+            z,
+        }
+    }
     #[test]
     fn full_span_on_lanes_is_the_scalar_sequence_byte_for_byte() {
         let mut g = Gen(21);
@@ -3365,17 +3380,7 @@ mod tests {
             ];
             // Depths: a plane crossing the stored values, sometimes outside [0, 1].
             let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
-            let p = RPrim {
-                kind: PrimKind::Tri,
-                flags,
-                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
-                mat: 0,
-                voff: 0,
-                xy: [0; 6],
-                owns: 0,
-                cover: 0,
-                z,
-            };
+            let p = box_tri(flags, bbox, z);
             let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
             for _ in 0..rl.n {
                 planes.extend([
@@ -3472,17 +3477,7 @@ mod tests {
             let flags = [F_FLAT, F_FLAT, F_FLAT | F_BACK, 0][(g.next() % 4) as usize];
             let bbox = [tx - (g.next() % 20) as i32, ty - (g.next() % 20) as i32];
             let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
-            let p = RPrim {
-                kind: PrimKind::Tri,
-                flags,
-                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
-                mat: 0,
-                voff: 0,
-                xy: [0; 6],
-                owns: 0,
-                cover: 0,
-                z,
-            };
+            let p = box_tri(flags, bbox, z);
             let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
             for _ in 0..4 {
                 let v = match g.next() % 8 {

@@ -2550,20 +2550,35 @@ unsafe fn dense_depth8<const RX: bool, const RY: bool>(
     // SAFETY: AVX2 is present (the caller's promise); each offset is at most
     // 4·(dt.len() - 1), so every f32 read lies inside `dt`.
     let d = unsafe { _mm256_i32gather_ps::<4>(dt.as_ptr().cast::<f32>(), k) };
+    let z = _mm256_setzero_ps();
+    store8(&[compare8(func, d, lanes8(r)), z, z, z], m, out);
+}
+
+/// The depth comparison of [`dense_depth8`] and the fused route's depth groups on eight lanes: the depths `d` against r/q `rr` clamped to
+/// [0, 1] (`minps(1, maxps(0, r))`), under `func`'s predicate; each lane 1 or +0 (the
+/// LUMINANCE L the environment reads).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn compare8(
+    func: u32,
+    d: std::arch::x86_64::__m256,
+    rr: std::arch::x86_64::__m256,
+) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
     let one = _mm256_set1_ps(1.0);
-    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), lanes8(r)));
-    let pass = match func {
+    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), rr));
+    let c = match func {
         gl::LEQUAL => _mm256_cmp_ps::<_CMP_LE_OQ>(r, d),
         gl::GEQUAL => _mm256_cmp_ps::<_CMP_GE_OQ>(r, d),
         gl::LESS => _mm256_cmp_ps::<_CMP_LT_OQ>(r, d),
         gl::GREATER => _mm256_cmp_ps::<_CMP_GT_OQ>(r, d),
         gl::EQUAL => _mm256_cmp_ps::<_CMP_EQ_OQ>(r, d),
         gl::NOTEQUAL => _mm256_cmp_ps::<_CMP_NEQ_UQ>(r, d),
-        gl::ALWAYS => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
-        _ => _mm256_setzero_ps(),
+        gl::ALWAYS => return one,
+        _ => return _mm256_setzero_ps(),
     };
-    let z = _mm256_setzero_ps();
-    store8(&[_mm256_and_ps(pass, one), z, z, z], m, out);
+    _mm256_and_ps(c, one)
 }
 
 /// The wrap class of one axis for the border kernels ([`border_kind`]): the edge clamp

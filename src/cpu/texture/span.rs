@@ -18,7 +18,7 @@
 #[cfg(target_arch = "x86_64")]
 use super::{border_linear8, AX_BORDER, AX_CLAMP, AX_EDGE, AX_REPEAT};
 #[cfg(target_arch = "x86_64")]
-use super::{dense_level, ifloor8, linear_axis8, wrap8, Route};
+use super::{compare8, dense_level, ifloor8, linear_axis8, wrap8, Route};
 use super::{Sampler, LANES};
 use crate::gl;
 
@@ -1071,33 +1071,6 @@ fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
     let k = j.checked_mul(3)?.checked_add(3)?;
     let p = planes.get(k..k.checked_add(3)?)?;
     Some([p[0], p[1], p[2] * fy])
-}
-
-/// `dense_depth8`'s comparison on eight lanes: the depths `d` against r/q `rr` clamped to
-/// [0, 1] (`minps(1, maxps(0, r))`), under `func`'s predicate; each lane 1 or +0 (the
-/// LUMINANCE L the environment reads).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-fn compare8(
-    func: u32,
-    d: std::arch::x86_64::__m256,
-    rr: std::arch::x86_64::__m256,
-) -> std::arch::x86_64::__m256 {
-    use std::arch::x86_64::*;
-    let one = _mm256_set1_ps(1.0);
-    let r = _mm256_min_ps(one, _mm256_max_ps(_mm256_setzero_ps(), rr));
-    let c = match func {
-        gl::LEQUAL => _mm256_cmp_ps::<_CMP_LE_OQ>(r, d),
-        gl::GEQUAL => _mm256_cmp_ps::<_CMP_GE_OQ>(r, d),
-        gl::LESS => _mm256_cmp_ps::<_CMP_LT_OQ>(r, d),
-        gl::GREATER => _mm256_cmp_ps::<_CMP_GT_OQ>(r, d),
-        gl::EQUAL => _mm256_cmp_ps::<_CMP_EQ_OQ>(r, d),
-        gl::NOTEQUAL => _mm256_cmp_ps::<_CMP_NEQ_UQ>(r, d),
-        gl::ALWAYS => return one,
-        _ => return _mm256_setzero_ps(),
-    };
-    _mm256_and_ps(c, one)
 }
 
 /// A plane `[a, dx, yt]` at lanes `xs`: (a + dx·x) + yt (`lanes::varyings`' order).
