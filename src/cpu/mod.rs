@@ -1220,11 +1220,12 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
         };
         let mut sums = vec![0u64; queries];
         for piece in parts {
-            let &Piece::Prims(fctx, slot, workers) = piece else {
-                if let Piece::Bits(b) = piece {
+            let (fctx, slot, workers) = match *piece {
+                Piece::Prims(fctx, slot, workers) => (fctx, slot, workers),
+                Piece::Bits(b) => {
                     b.draw(&mut bufs);
+                    continue;
                 }
-                continue;
             };
             let before = bufs.samples;
             for w in workers {
