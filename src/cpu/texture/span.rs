@@ -515,16 +515,11 @@ impl<'a> FusedSpan<'a> {
         // `divps`, the smooth varyings times it.
         let (xs, inv) = self.group_x(x);
         let one = _mm256_set1_ps(1.0);
-        // (`me` for `self`: the closure holds no borrow across the texel calls.)
-        let vary = |me: &Self, k: usize| {
-            let v = plane8(me.pl[k + 1], xs);
-            if me.div[k] {
-                _mm256_mul_ps(v, inv)
-            } else {
-                v
-            }
-        };
-        let (s, t, q) = (vary(self, 4), vary(self, 5), vary(self, 6));
+        let (s, t, q) = (
+            self.vary::<4>(xs, inv),
+            self.vary::<5>(xs, inv),
+            self.vary::<6>(xs, inv),
+        );
         // `texels_lanes`: inv = 1/q where q ≠ 0 (a NaN q included), else 0; s·inv, t·inv.
         let rq = _mm256_div_ps(one, q);
         let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
@@ -560,7 +555,12 @@ impl<'a> FusedSpan<'a> {
         // [0, 1] as `Vec4::clamp` does (`maxps` with 0, then `minps` with 1).
         // The colour's varyings after the texels (the same values: nothing they read changes),
         // so that they are not kept across the `level` calls.
-        let col = [vary(self, 0), vary(self, 1), vary(self, 2), vary(self, 3)];
+        let col = [
+            self.vary::<0>(xs, inv),
+            self.vary::<1>(xs, inv),
+            self.vary::<2>(xs, inv),
+            self.vary::<3>(xs, inv),
+        ];
         let cf = pairs(&col);
         let zero = _mm256_setzero_ps();
         // SAFETY: the load reads the eight floats of `cc`.
