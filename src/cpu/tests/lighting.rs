@@ -776,3 +776,63 @@ fn both_routes_process_the_same_bits() {
     }
     assert!(lanes_lit > 5000, "only {lanes_lit} lit vertices compared");
 }
+
+/// A lit batch large enough for `vertex::process` to split across the pool (chunks of 1024
+/// vertices), with a material change and TexGen partway: the same bits as the whole batch on
+/// one thread, for every vertex of every chunk.
+#[test]
+fn a_lit_batch_split_across_the_pool_is_the_whole_batch_bit_for_bit() {
+    use crate::cpu::batch::Batch;
+    use crate::cpu::framebuffer::scissor_rect;
+    use crate::cpu::setup::SetupCtx;
+    use crate::cpu::vertex::{process, Layout};
+    let mut st = dark();
+    st.lights[0].diffuse = Vec4::new(0.8, 0.7, 0.6, 1.0);
+    st.lights[0].specular = Vec4::new(0.5, 0.5, 0.5, 1.0);
+    st.lights[0].position = Vec4::new(1.0, 2.0, 3.0, 1.0);
+    st.materials[FRONT].diffuse = Vec4::new(0.9, 0.5, 0.2, 1.0);
+    st.materials[FRONT].specular = Vec4::new(0.4, 0.4, 0.4, 1.0);
+    st.materials[FRONT].shininess = 20.0;
+    st.enables.texture_2d[0] = true;
+    st.enables.texture_gen[0] = [true, true, false, false];
+    st.textures.units[0].gen[0].mode = gl::SPHERE_MAP;
+    st.textures.units[0].gen[1].mode = gl::SPHERE_MAP;
+    *st.modelview.top_mut() = Mat4::from_translation(Vec3::new(0.1, -0.2, -4.0));
+    *st.projection.top_mut() = Mat4::perspective_rh_gl(1.0, 1.0, 0.5, 20.0);
+    let mut rng = Rng(91);
+    let mut b = Batch::default();
+    let n = 3 * 1700;
+    b.begin(gl::TRIANGLES);
+    b.note_materials(&st.materials);
+    for k in 0..n {
+        if k == 2900 {
+            let mut m = st.materials;
+            m[FRONT].diffuse = Vec4::new(0.1, 0.8, 0.3, 1.0);
+            b.materials_changed(&m);
+        }
+        let c = Current {
+            normal: rng.vec3(-1.0, 1.0),
+            ..Current::default()
+        };
+        b.vertex(rng.vec3(-2.0, 2.0).extend(1.0), &c);
+    }
+    b.end();
+    let layout = Layout::for_state(&st);
+    let ctx = SetupCtx::new(&st, layout, scissor_rect(&st), (1, 1));
+    let run = |parallel| {
+        let (mut out, mut wins) = (Vec::new(), Vec::new());
+        process(&st, &b, &layout, &ctx, &mut out, &mut wins, parallel);
+        let w: Vec<_> = wins
+            .iter()
+            .map(|w| (w.x.to_bits(), w.y.to_bits(), w.z.to_bits(), w.code))
+            .collect();
+        (out.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), w)
+    };
+    let (whole, split) = (run(false), run(true));
+    assert_eq!(whole.0.len(), n * layout.stride);
+    assert!(
+        layout.tex[0].is_some(),
+        "the layout carries no texture coordinates"
+    );
+    assert!(whole == split, "the split batch's vertices differ");
+}
