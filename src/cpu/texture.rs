@@ -404,11 +404,7 @@ impl Sampler {
             return self.targets_texels(coords, lambda, m);
         }
         let [s, t, r, q] = coords;
-        let rq = recip_lanes(*q);
-        let mut inv = [0.0f32; LANES];
-        for l in 0..LANES {
-            inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
-        }
+        let inv = inv_q_lanes(q);
         let (ss, tt) = (mul_lanes(s, &inv), mul_lanes(t, &inv));
         // r/q is read by the depth comparison only.
         let rr = if self.compare.is_some() {
@@ -910,6 +906,7 @@ impl Sampler {
             (gl::REPLACE, gl::RGBA) => each!(gl::REPLACE, gl::RGBA),
             (gl::REPLACE, gl::RGB) => each!(gl::REPLACE, gl::RGB),
             (gl::DECAL, gl::RGBA) => each!(gl::DECAL, gl::RGBA),
+            (gl::ADD, gl::RGBA) => each!(gl::ADD, gl::RGBA),
             (e, b) => each!(e, b),
         }
     }
@@ -1881,6 +1878,17 @@ fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
     {
         x.map(ifloor)
     }
+}
+
+/// `texel`'s 1/q for eight lanes: `recip_lanes` (`divps`), 0 where q is 0.
+#[inline(always)]
+fn inv_q_lanes(q: &[f32; LANES]) -> [f32; LANES] {
+    let rq = recip_lanes(*q);
+    let mut inv = [0.0f32; LANES];
+    for l in 0..LANES {
+        inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
+    }
+    inv
 }
 
 /// `a[l] * b[l]` on every lane (`mulps` on x86-64: LLVM's vectoriser left the plain loop
