@@ -87,6 +87,12 @@ pub struct Sampler {
     /// TEXTURE_COMPARE_FUNC when TEXTURE_COMPARE_MODE is COMPARE_R_TO_TEXTURE on a depth texture.
     compare: Option<u32>,
     depth_mode: u32,
+    /// Per face, the levels (bit k: level k) whose texels an index mask can address; the
+    /// levels the 1D/3D trilinear kernel may read; whether the wrap modes keep NEAREST's and
+    /// LINEAR's indices inside the image: `targets::target_levels`.
+    dense: [u16; 6],
+    lod_kernel: u16,
+    in_image: [bool; 2],
 }
 
 impl Sampler {
@@ -113,9 +119,21 @@ impl Sampler {
                 .iter()
                 .chain(&u.combine.src_alpha)
                 .any(|&s| unit_of_source(s).is_some());
+        let compare = (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
+            && crate::texture::is_depth(b.base))
+        .then_some(obj.compare_func);
+        let (cube, wrap) = (
+            target == gl::TEXTURE_CUBE_MAP,
+            [obj.wrap_s, obj.wrap_t, obj.wrap_r],
+        );
+        let (dense, lod_kernel, in_image) =
+            targets::target_levels(obj, dims, cube, compare.is_some(), wrap);
         Some(Sampler {
             unit,
             crossbar,
+            dense,
+            lod_kernel,
+            in_image,
             base: b.base,
             base_level: obj.base_level,
             last: if mipmapped {
@@ -124,7 +142,7 @@ impl Sampler {
                 obj.base_level
             },
             dims,
-            cube: target == gl::TEXTURE_CUBE_MAP,
+            cube,
             size: [
                 b.width as f32,
                 if dims >= 2 { b.height as f32 } else { 0.0 },
@@ -132,7 +150,7 @@ impl Sampler {
             ],
             min: obj.min_filter,
             mag: obj.mag_filter,
-            wrap: [obj.wrap_s, obj.wrap_t, obj.wrap_r],
+            wrap,
             border: obj.border_color.to_array(),
             min_lod: obj.min_lod,
             max_lod: obj.max_lod,
@@ -155,9 +173,7 @@ impl Sampler {
                 (false, true, _) => Route::Linear,
                 _ => Route::Lod,
             },
-            compare: (obj.compare_mode == gl::COMPARE_R_TO_TEXTURE
-                && crate::texture::is_depth(b.base))
-            .then_some(obj.compare_func),
+            compare,
             depth_mode: obj.depth_texture_mode,
             obj: Arc::clone(obj),
         })
@@ -388,11 +404,7 @@ impl Sampler {
             return self.targets_texels(coords, lambda, m);
         }
         let [s, t, r, q] = coords;
-        let rq = recip_lanes(*q);
-        let mut inv = [0.0f32; LANES];
-        for l in 0..LANES {
-            inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
-        }
+        let inv = inv_q_lanes(q);
         let (ss, tt) = (mul_lanes(s, &inv), mul_lanes(t, &inv));
         // r/q is read by the depth comparison only.
         let rr = if self.compare.is_some() {
@@ -894,6 +906,7 @@ impl Sampler {
             (gl::REPLACE, gl::RGBA) => each!(gl::REPLACE, gl::RGBA),
             (gl::REPLACE, gl::RGB) => each!(gl::REPLACE, gl::RGB),
             (gl::DECAL, gl::RGBA) => each!(gl::DECAL, gl::RGBA),
+            (gl::ADD, gl::RGBA) => each!(gl::ADD, gl::RGBA),
             (e, b) => each!(e, b),
         }
     }
@@ -1865,6 +1878,17 @@ fn ifloor_lanes(x: &[f32; LANES]) -> [i32; LANES] {
     {
         x.map(ifloor)
     }
+}
+
+/// `texel`'s 1/q for eight lanes: `recip_lanes` (`divps`), 0 where q is 0.
+#[inline(always)]
+fn inv_q_lanes(q: &[f32; LANES]) -> [f32; LANES] {
+    let rq = recip_lanes(*q);
+    let mut inv = [0.0f32; LANES];
+    for l in 0..LANES {
+        inv[l] = if q[l] != 0.0 { rq[l] } else { 0.0 };
+    }
+    inv
 }
 
 /// `a[l] * b[l]` on every lane (`mulps` on x86-64: LLVM's vectoriser left the plain loop

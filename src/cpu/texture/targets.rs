@@ -12,11 +12,11 @@ use glam::Vec4;
 #[cfg(target_arch = "x86_64")]
 use super::{avx2, lanes8, linear_axis8, store8};
 use super::{
-    cube_face, cube_project, dense_kernel, depth_compare, fast_log2_lane, kernel_kind,
-    lambda_point, mask_eq, mask_ne_zero, wrap_linear_lanes, wrap_nearest_lanes, Axis, Route,
-    Sampler, TexelLanes, Texels,
+    cube_face, cube_project, dense_kernel, depth_compare, fast_log2_lane, inv_q_lanes, kernel_kind,
+    lambda_point, mask_eq, mask_ne_zero, mul_lanes, wrap_linear_lanes, wrap_nearest_lanes, Axis,
+    Route, Sampler, TexelLanes, Texels,
 };
-use crate::cpu::lanes::{recip_lanes, LANES};
+use crate::cpu::lanes::LANES;
 use crate::gl;
 use crate::texture::Level;
 
@@ -36,8 +36,16 @@ struct Views3<'a> {
 /// instructions): 0 929.5, 1 894.0, 2 877.3, 3 872.6, 4 876.0. The eleventh session, with the
 /// AVX2 kernels and λ (a lane-pass group ≈896 instructions, a sparse lane ≈354): 1 727.9,
 /// 2 721.4, 3 726.5. The thirteenth session, with both levels of a 1D/3D group in one kernel
-/// (`lod_dense`): 1 690.08, 2 686.92 (of which the draws 534.02 and 528.81).
+/// (`lod_dense`): 1 690.08, 2 686.92 (of which the draws 534.02 and 528.81). The fifteenth
+/// session, per target (cube map, 1D, 3D; the cube route's faces now computed for the lanes
+/// of the group only): 2,2,2 646.32, 1,2,2 645.34, 0,2,2 649.71, 2,3,2 649.50, 2,2,1
+/// 645.57, 1,1,1 646.17, 1,2,1 644.59: [`SPARSE`] for 1D textures (and 2D ones, which do not
+/// come here), [`SPARSE_CUBE`] and [`SPARSE_3D`] (a 3D lane filters up to sixteen texels).
 const SPARSE: u32 = 2;
+/// [`SPARSE`] for a cube map.
+const SPARSE_CUBE: u32 = 1;
+/// [`SPARSE`] for a 3D texture.
+const SPARSE_3D: u32 = 1;
 
 /// Can a one-level pass gather `tx`, a level of `n` texels (width, height, depth), through an
 /// index mask: at least one texel per axis, exactly w·h·d texels, a power-of-two count that
@@ -72,7 +80,12 @@ impl Sampler {
     ) -> TexelLanes {
         let [s, t, r, q] = coords;
         let mut out = [[0.0f32; 4]; LANES];
-        if m.count_ones() <= SPARSE {
+        let sparse = match (self.cube, self.dims) {
+            (true, _) => SPARSE_CUBE,
+            (false, 3) => SPARSE_3D,
+            _ => SPARSE,
+        };
+        if m.count_ones() <= sparse {
             for (l, o) in out.iter_mut().enumerate() {
                 if m & (1 << l) != 0 {
                     *o = self.texel([s[l], t[l], r[l], q[l]], lambda[l]);
@@ -80,14 +93,10 @@ impl Sampler {
             }
             return out;
         }
-        let rq = recip_lanes(*q);
-        let (mut ss, mut tt, mut rr) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
-        for l in 0..LANES {
-            let inv = if q[l] != 0.0 { rq[l] } else { 0.0 };
-            ss[l] = s[l] * inv;
-            tt[l] = t[l] * inv;
-            rr[l] = r[l] * inv;
-        }
+        // On SSE2 registers (as a lane loop of all three, LLVM did not always vectorise it:
+        // ≈28 instructions a group more in one build).
+        let inv = inv_q_lanes(q);
+        let (ss, tt, rr) = (mul_lanes(s, &inv), mul_lanes(t, &inv), mul_lanes(r, &inv));
         self.targets_lanes(&ss, &tt, &rr, lambda, m, &mut out);
         out
     }
@@ -107,21 +116,29 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        let mut face = [0usize; LANES];
-        let (mut fs, mut ft) = (*s, *t);
-        if self.cube {
-            for l in 0..LANES {
-                let p = [s[l], t[l], r[l]];
-                let (f, _) = cube_face(p);
-                (fs[l], ft[l]) = cube_project(f, p);
-                face[l] = f;
+        let mut face = [0i32; LANES];
+        let (mut fs, mut ft) = ([0.0f32; LANES], [0.0f32; LANES]);
+        let (s, t) = match self.cube {
+            false => (s, t),
+            true => {
+                // The lanes of `m` only: the others' face and coordinates are read by nobody.
+                let mut b = m;
+                while b != 0 {
+                    let l = b.trailing_zeros() as usize & (LANES - 1);
+                    b &= b - 1;
+                    let p = [s[l], t[l], r[l]];
+                    let (f, _) = cube_face(p);
+                    (fs[l], ft[l]) = cube_project(f, p);
+                    face[l] = f as i32;
+                }
+                (&fs, &ft)
             }
-        }
-        let base = [self.base_level; LANES];
+        };
+        let base = || [self.base_level; LANES];
         match self.route {
-            Route::Nearest => self.pass_targets(false, &face, &base, &fs, &ft, r, m, out),
-            Route::Linear => self.pass_targets(true, &face, &base, &fs, &ft, r, m, out),
-            Route::Lod => self.lod_targets(&face, &fs, &ft, r, lambda, m, out),
+            Route::Nearest => self.pass_targets(false, &face, &base(), s, t, r, m, out),
+            Route::Linear => self.pass_targets(true, &face, &base(), s, t, r, m, out),
+            Route::Lod => self.lod_targets(&face, s, t, r, lambda, m, out),
         }
     }
 
@@ -132,7 +149,7 @@ impl Sampler {
     #[inline(always)]
     fn lod_targets(
         &self,
-        face: &[usize; LANES],
+        face: &[i32; LANES],
         s: &[f32; LANES],
         t: &[f32; LANES],
         r: &[f32; LANES],
@@ -174,7 +191,7 @@ impl Sampler {
     /// a 1D or 3D texture without depth comparison, every lane of `m` LINEAR on one level
     /// `lv` (the common case: λ is per quad), that level and, when some lane blends two
     /// (`second`, its weight in `f`), the next one dense ([`dense3`]) with wrap modes the
-    /// kernel takes ([`targets_kernel_ok`], [`Sampler::in_image`]). Both levels as
+    /// kernel takes ([`targets_kernel_ok`], [`in_image`]). Both levels as
     /// `pass_targets` computes them, and `sample_face`'s blend, without the texels of the
     /// levels going through memory between the passes. Returns false (nothing written) for
     /// any other group.
@@ -191,17 +208,21 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) -> bool {
-        if m == 0 || self.cube || self.compare.is_some() || !self.in_image(true) {
+        if m == 0 || self.lod_kernel == 0 {
             return false;
         }
         let k0 = lv[m.trailing_zeros() as usize & (LANES - 1)];
         if !mask_eq(lv, k0) & m != 0 {
             return false;
         }
+        // The level's bit in `lod_kernel` (decided once a flush by `target_levels`; a
+        // negative level shifts by more than 15 and has none).
         let dense = |k: i32| {
+            if self.lod_kernel.checked_shr(k as u32).unwrap_or(0) & 1 == 0 {
+                return None;
+            }
             let x = self.obj.face_level(0, k)?;
-            let (tx, n) = (&x.texels[..], [x.width, x.height, x.depth]);
-            (dense3(tx, n) && targets_kernel_ok(self.dims, self.wrap, tx.len())).then_some((tx, n))
+            Some((&x.texels[..], [x.width, x.height, x.depth]))
         };
         let Some(a) = dense(k0) else {
             return false;
@@ -226,7 +247,7 @@ impl Sampler {
     fn pass_targets(
         &self,
         linear: bool,
-        face: &[usize; LANES],
+        face: &[i32; LANES],
         lv: &[i32; LANES],
         s: &[f32; LANES],
         t: &[f32; LANES],
@@ -244,15 +265,14 @@ impl Sampler {
         let first = m.trailing_zeros() as usize & (LANES - 1);
         let (f0, k0) = (face[first], lv[first]);
         // The levels by one SSE2 compare (the per-lane loop of both was ≈64 instructions a
-        // call on texture-targets); the faces only for a cube map (else all 0).
+        // call on texture-targets); the faces only for a cube map (else all 0), the same way
+        // (a loop over the lanes was ≈35 instructions a call).
         let mut other = !mask_eq(lv, k0);
         if self.cube {
-            for (l, &f) in face.iter().enumerate() {
-                other |= u8::from(f != f0) << l;
-            }
+            other |= !mask_eq(face, f0);
         }
         if other & m == 0 {
-            let Some(x) = self.obj.face_level(f0, k0) else {
+            let Some(x) = self.obj.face_level(f0 as usize, k0) else {
                 for (l, o) in out.iter_mut().enumerate() {
                     if m & (1 << l) != 0 {
                         *o = [0.0; 4];
@@ -262,7 +282,8 @@ impl Sampler {
             };
             let tx: &[[f32; 4]] = &x.texels[..];
             let n = [x.width, x.height, x.depth];
-            if dense3(tx, n) && self.in_image(linear) {
+            // `dense3` and `in_image` as decided once a flush (`target_levels`).
+            if self.dense_level(f0, k0) && self.in_image[usize::from(linear)] {
                 // Without comparison, the kernels: a cube face (2D) by the 2D sampler's
                 // `dense_kernel`, a 1D or 3D LINEAR level by `dense_targets` (AVX2).
                 if self.compare.is_none() {
@@ -296,7 +317,7 @@ impl Sampler {
             d: [1; LANES],
         };
         let mut have = 0u8;
-        let mut cur: Option<(usize, i32, Option<&Level>)> = None;
+        let mut cur: Option<(i32, i32, Option<&Level>)> = None;
         for l in 0..LANES {
             if m & (1 << l) == 0 {
                 continue;
@@ -304,7 +325,7 @@ impl Sampler {
             let level = match cur {
                 Some((f, k, x)) if f == face[l] && k == lv[l] => x,
                 _ => {
-                    let x = self.obj.face_level(face[l], lv[l]);
+                    let x = self.obj.face_level(face[l] as usize, lv[l]);
                     cur = Some((face[l], lv[l], x));
                     x
                 }
@@ -323,18 +344,12 @@ impl Sampler {
         self.pass_targets_cmp(linear, &v.tx, [&v.w, &v.h, &v.d], s, t, r, m, out)
     }
 
-    /// Whether every index the wrap modes of this sampler's axes give lies inside the image
-    /// (no border texel): for LINEAR none of CLAMP and CLAMP_TO_BORDER, for NEAREST (whose
-    /// CLAMP clamps the index as CLAMP_TO_EDGE does) no CLAMP_TO_BORDER.
+    /// Is level `k` of face `f` one that [`dense3`] holds for (`Sampler::dense`, decided
+    /// once a flush by [`target_levels`])?
     #[inline(always)]
-    fn in_image(&self, linear: bool) -> bool {
-        self.wrap
-            .iter()
-            .take(self.dims.clamp(1, 3))
-            .all(|&mode| match linear {
-                true => !matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER),
-                false => mode != gl::CLAMP_TO_BORDER,
-            })
+    fn dense_level(&self, f: i32, k: i32) -> bool {
+        let bits = self.dense.get(f as usize).copied().unwrap_or(0);
+        bits.checked_shr(k as u32).unwrap_or(0) & 1 != 0
     }
 
     /// Each axis's NEAREST index and inside flag (`wrap_nearest_lanes`) for coordinates `s`,
@@ -362,7 +377,7 @@ impl Sampler {
 
     /// `pass_targets_on` for every lane on one level `dt` of `n` texels (width, height,
     /// depth) that [`dense3`] holds for, with wrap modes that keep every index inside the
-    /// image ([`Sampler::in_image`]): each index ((k·h + j)·w + i) of an in-image texel is
+    /// image ([`in_image`]): each index ((k·h + j)·w + i) of an in-image texel is
     /// below dt.len(), a power of two, so `& (dt.len() - 1)` keeps it, and the gathers need no
     /// bounds check and no border choice. The weights and blends are `pass_targets_on`'s.
     #[allow(clippy::too_many_arguments)]
@@ -987,19 +1002,76 @@ fn load8(at: impl Fn(usize) -> [f32; 4]) -> [std::arch::x86_64::__m256; 4] {
 fn targets_kernel_ok(dims: usize, wrap: [u32; 3], len: usize) -> bool {
     #[cfg(target_arch = "x86_64")]
     {
-        (dims == 1 || dims == 3)
-            && wrap
-                .iter()
-                .take(dims)
-                .all(|&mode| mode == gl::REPEAT || mode == gl::CLAMP_TO_EDGE)
-            && len <= 1 << 28
-            && avx2()
+        targets_wraps_ok(dims, wrap, len) && avx2()
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
         let _ = (dims, wrap, len);
         false
     }
+}
+
+/// [`targets_kernel_ok`] but for the CPU: a 1D or 3D texture whose axes REPEAT or
+/// CLAMP_TO_EDGE, a level of at most 2^28 texels.
+#[inline]
+fn targets_wraps_ok(dims: usize, wrap: [u32; 3], len: usize) -> bool {
+    (dims == 1 || dims == 3)
+        && wrap
+            .iter()
+            .take(dims)
+            .all(|&mode| mode == gl::REPEAT || mode == gl::CLAMP_TO_EDGE)
+        && len <= 1 << 28
+}
+
+/// What [`Sampler::pass_targets`] and [`Sampler::lod_dense`] would otherwise decide per group
+/// (≈87 instructions a level a group in `lod_dense`), decided once a flush in
+/// [`Sampler::new`] from the texture object `obj` of `dims` dimensions (a cube map: six
+/// faces), its depth comparison and wrap modes: for each face, the levels (bit k for level
+/// k) that [`dense3`] holds for; the levels `lod_dense`'s kernel may read (none for a cube
+/// map or with a depth comparison; else each dense level of face 0 with wrap modes the
+/// kernel takes, [`targets_wraps_ok`], which also keeps every index inside the image; whether
+/// the CPU has AVX2 is still asked per group, [`dense_targets_lod`]); and [`in_image`] for
+/// NEAREST and LINEAR.
+pub(super) fn target_levels(
+    obj: &crate::texture::TexObject,
+    dims: usize,
+    cube: bool,
+    compare: bool,
+    wrap: [u32; 3],
+) -> ([u16; 6], u16, [bool; 2]) {
+    let levels = crate::texture::MAX_LEVELS.min(16);
+    let mut dense = [0u16; 6];
+    let mut kernel = 0u16;
+    for (f, bits) in dense.iter_mut().enumerate().take(if cube { 6 } else { 1 }) {
+        for k in 0..levels {
+            let Some(x) = obj.face_level(f, k as i32) else {
+                continue;
+            };
+            let tx = &x.texels[..];
+            if dense3(tx, [x.width, x.height, x.depth]) {
+                *bits |= 1 << k;
+                let ok = f == 0 && !cube && !compare && targets_wraps_ok(dims, wrap, tx.len());
+                kernel |= u16::from(ok) << k;
+            }
+        }
+    }
+    (
+        dense,
+        kernel,
+        [false, true].map(|linear| in_image(dims, wrap, linear)),
+    )
+}
+
+/// Whether every index the wrap modes `wrap` of a texture of `dims` dimensions give lies
+/// inside the image (no border texel): for LINEAR none of CLAMP and CLAMP_TO_BORDER, for
+/// NEAREST (whose CLAMP clamps the index as CLAMP_TO_EDGE does) no CLAMP_TO_BORDER.
+fn in_image(dims: usize, wrap: [u32; 3], linear: bool) -> bool {
+    wrap.iter()
+        .take(dims.clamp(1, 3))
+        .all(|&mode| match linear {
+            true => !matches!(mode, gl::CLAMP | gl::CLAMP_TO_BORDER),
+            false => mode != gl::CLAMP_TO_BORDER,
+        })
 }
 
 /// `pass_dense`'s LINEAR on a 1D (`dims` 1) or 3D texture as one AVX2 kernel
@@ -1170,9 +1242,11 @@ type DenseLevel<'a> = (&'a [[f32; 4]], [i32; 3]);
 /// for the lanes of `second` blended in as `sample_face` does, `a·(1 - f) + b·f` per channel
 /// (`f` the lane's weight), each by [`targets_ch8`] (AVX2). Out of line, as
 /// [`dense_targets`]. Returns false (nothing written) where the kernel cannot run (no AVX2, a
-/// level of more than 2^28 texels, an empty one).
+/// level of more than 2^28 texels, an empty one). Inlined into `lod_dense`, which calls the
+/// AVX2 kernel directly (out of line, its call and arguments were ≈37 instructions a group;
+/// inlined, `targets_lanes` grew by about as much).
 #[allow(clippy::too_many_arguments)]
-#[inline(never)]
+#[inline(always)]
 fn dense_targets_lod(
     dims: usize,
     rep: [bool; 3],
