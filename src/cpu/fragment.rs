@@ -83,6 +83,13 @@ struct FusedArgs {
     qy: f32,
 }
 
+/// The 2x2 quads' λ of a span row that the general path keeps, eight quads a block: a span's
+/// covered groups (at most 64 pixels) lie in at most 33 quads.
+const ROW_QUAD_BLOCKS: usize = 5;
+
+/// Each unit's λ of a span row's quads (`Sampler::quad_lambda_row`), for `FragCtx::tri_span_in`.
+type RowQuads = [[[f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
+
 /// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
 /// (`zrow`, `dz`), its first lane's x offset `fx0` and tile index `i0`, its lanes `m`, and
 /// whether the span writes colour.
@@ -650,14 +657,16 @@ impl FragCtx<'_> {
         // λ per unit and lane: a unit's entry is written for each group before it is read
         // where the unit needs λ, and stays 0 where it does not, whatever the row.
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         for &row in rows {
-            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam);
+            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq);
         }
     }
 
     /// One row of `tri_rows_in` (`AVX2`: true only in `tri_rows_avx2`, where the CPU has
     /// AVX2; the general path's varyings then on eight lanes a register), the general path's
-    /// scratch `vl` (the `rl.n` varying rows, at most MAXV) and `lam` set up by the caller.
+    /// scratch `vl` (the `rl.n` varying rows, at most MAXV), `lam` and `lq` (each unit's λ of
+    /// the span's quads) set up by the caller.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn tri_span_in<'s, const AVX2: bool>(
@@ -669,6 +678,7 @@ impl FragCtx<'_> {
         slot: &mut FusedSlot<'s>,
         vl: &mut [[f32; LANES]],
         lam: &mut [[f32; LANES]; MAX_TEXTURE_UNITS],
+        lq: &mut RowQuads,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -803,8 +813,25 @@ impl FragCtx<'_> {
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = slot;
-        // Each quad's λ once (not once per lane): computed as the groups reach it.
-        let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
+        // Each quad's λ once (not once per lane), those of the span's covered groups all at
+        // once, eight quads a call (`Sampler::quad_lambda_row`): the groups from the first
+        // covered one's (ga) to the last's (gb) lie in window quads qa..=qb (at most 33), quad
+        // qa + j's λ in `lq[unit][j / 8][j % 8]`. Texture-targets (small triangles, spans of a
+        // group or two): a `SpanLambda` window per group cost ≈55 instructions a group besides
+        // its λ calls.
+        let qa = (x0 + (mask.trailing_zeros() as i32 & !7)) >> 1;
+        if lod {
+            let gb = (63 - mask.leading_zeros()) as i32 & !7;
+            let nq = (((x0 + gb + 7) >> 1) - qa + 1) as usize;
+            let blocks = nq.div_ceil(LANES).min(ROW_QUAD_BLOCKS);
+            for (lu, t) in lq.iter_mut().zip(&self.tex) {
+                let Some((tx, to)) = *t else { break };
+                if tx.needs_lambda() {
+                    let out = lu.get_mut(..blocks).unwrap_or_default();
+                    tx.quad_lambda_row::<AVX2>(planes, to, ox, qy, qa, out);
+                }
+            }
+        }
         let mut g = 0;
         while g < n.min(64) {
             let m = (mask >> g) & ((1 << LANES) - 1);
@@ -815,10 +842,12 @@ impl FragCtx<'_> {
             let vs = &mut *vl;
             varyings_on::<AVX2>(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
-                for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
-                    let Some((tx, to)) = *t else { break };
+                // The group's first pixel's quad, 0..=28 quads from qa.
+                let d = (((x0 + g as i32) >> 1) - qa) as usize;
+                for ((lu, t), q) in lam.iter_mut().zip(&self.tex).zip(&*lq) {
+                    let Some((tx, _)) = *t else { break };
                     if tx.needs_lambda() {
-                        *lu = sq.lanes(tx, planes, to, x0 + g as i32);
+                        *lu = super::texture::spread_quads(q.as_flattened(), d, x0 + g as i32);
                     }
                 }
             }

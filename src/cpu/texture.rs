@@ -241,6 +241,39 @@ impl Sampler {
         self.quad_lambda_on(planes, to, qx, qy)
     }
 
+    /// λ of the 2x2 quads `q0..q0 + 8·out.len()` of a row (window quad numbers: quad q's
+    /// lower-left pixel at window x 2q), eight a call of [`Sampler::quad_lambda_lanes`] (quad
+    /// q0 + 8k + j in `out[k][j]`); the planes' origin is at window x `ox` and the quads'
+    /// y is `qy` relative to it. Each value is `quad_lambda_lanes`'s for its quad (its lanes
+    /// are independent of each other), so the same bits as [`SpanLambda`]'s windows. With
+    /// `AVX2` (true only in functions compiled for AVX2 that run where the CPU has it) the
+    /// AVX2 kernel is called directly, without `quad_lambda_lanes`' check (≈28 instructions a
+    /// call on texture-targets).
+    #[inline(always)]
+    pub fn quad_lambda_row<const AVX2: bool>(
+        &self,
+        planes: &[f32],
+        to: usize,
+        ox: i32,
+        qy: f32,
+        q0: i32,
+        out: &mut [[f32; LANES]],
+    ) {
+        for (k, o) in out.iter_mut().enumerate() {
+            let qa = q0.wrapping_add((k * LANES) as i32);
+            let qx = std::array::from_fn(|j| {
+                qa.wrapping_add(j as i32).wrapping_mul(2).wrapping_sub(ox) as f32
+            });
+            #[cfg(target_arch = "x86_64")]
+            if AVX2 {
+                // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+                *o = unsafe { self.quad_lambda_avx2(planes, to, qx, qy) };
+                continue;
+            }
+            *o = self.quad_lambda_lanes(planes, to, qx, qy);
+        }
+    }
+
     /// [`Sampler::quad_lambda_lanes`] on AVX2: a cube map by `cube_lambda_lanes` compiled
     /// for AVX2, the other targets by [`quad_lambda8`] (eight lanes a register, the same
     /// operations in the same order, no FMA). texture-targets (callgrind, 3 frames):
@@ -3064,15 +3097,24 @@ impl SpanLambda {
         // qa - q0 is 0..=4 here (qb - qa is 3 or 4, qb - q0 < 8); the five entries from it are
         // inside `lam` (its spare one is read only for an even x, whose lanes use four).
         let d = usize::try_from(qa - self.q0).unwrap_or(0).min(4);
-        let mut w = [0.0f32; 5];
-        if let Some(src) = self.lam.get(d..d + 5) {
-            w.copy_from_slice(src);
-        }
-        if x & 1 == 0 {
-            [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
-        } else {
-            [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
-        }
+        spread_quads(&self.lam, d, x)
+    }
+}
+
+/// λ for the eight pixels from window x `x` (lane l at x + l) from a row of quads' λ, `lam[d]`
+/// the quad of pixel x (window x / 2, floor) and the next four after it: lane l takes its
+/// quad's, `lam[d + (x % 2 + l) / 2]`. Entries past `lam`'s end read as 0 (lane 7 of an even
+/// x never reads entry d + 4).
+#[inline(always)]
+pub fn spread_quads(lam: &[f32], d: usize, x: i32) -> [f32; LANES] {
+    let mut w = [0.0f32; 5];
+    if let Some(src) = lam.get(d..d + 5) {
+        w.copy_from_slice(src);
+    }
+    if x & 1 == 0 {
+        [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
+    } else {
+        [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
     }
 }
 
