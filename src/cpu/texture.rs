@@ -293,15 +293,16 @@ impl Sampler {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
-        // The s, t, r and q planes; past the end of `planes`, 0 (as `quad_lambda_on`).
+        // The s, t, r and q planes; past the end of `planes`, 0 (as `quad_lambda_on`), out of
+        // line: merged with the twelve loads, the bounded lookups cost ≈40 instructions a call
+        // (texture-targets, callgrind).
         let o = to.saturating_add(1).saturating_mul(3);
-        let pl: [[f32; 3]; 4] = match planes.get(o..o.saturating_add(12)) {
+        let whole = planes
+            .get(o..o.saturating_add(12))
+            .and_then(|p| <&[f32; 12]>::try_from(p).ok());
+        let pl: [[f32; 3]; 4] = match whole {
             Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
-            None => {
-                let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-                let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
-                [plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to)]
-            }
+            None => lambda_planes_short(planes, to),
         };
         quad_lambda8(&pl, &qx, qy, self.size, self.dims)
     }
@@ -312,9 +313,7 @@ impl Sampler {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
-        let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-        let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
-        let (ps, pt, pr, pq) = (plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to));
+        let [ps, pt, pr, pq] = lambda_planes(planes, to);
         let (size, dims) = (self.size, self.dims);
         let mut qx1 = qx;
         for x in &mut qx1 {
@@ -3099,6 +3098,23 @@ impl SpanLambda {
         let d = usize::try_from(qa - self.q0).unwrap_or(0).min(4);
         spread_quads(&self.lam, d, x)
     }
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to` (`Sampler::quad_lambda_avx2`)
+/// when `planes` ends before their last: each value past the end 0 (as `quad_lambda_on`).
+#[cold]
+#[inline(never)]
+fn lambda_planes_short(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    lambda_planes(planes, to)
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to`, each value past the end of
+/// `planes` 0 (`Sampler::quad_lambda_on`).
+#[inline(always)]
+fn lambda_planes(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+    let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
+    [plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to)]
 }
 
 /// λ for the eight pixels from window x `x` (lane l at x + l) from a row of quads' λ, `lam[d]`
