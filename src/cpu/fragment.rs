@@ -696,9 +696,9 @@ impl FragCtx<'_> {
                 if live == 0 {
                     return;
                 }
-                self.depth_mask_span(bufs, base, n, zrow, dz, fx0, live)
+                self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, live)
             }
-            _ => self.depth_mask_span(bufs, base, n, zrow, dz, fx0, all),
+            _ => self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
@@ -1405,10 +1405,12 @@ impl FragCtx<'_> {
     /// with a polygon stipple it lacks some inside the span) when the test is off, else what
     /// the depth test and write (§4.1.6) of the `n` fragments from tile index `b` leave of it:
     /// z = `zrow + dz * (fx0 + k)` for the k-th, DepthFunc and DepthMask applied eight
-    /// fragments at a time (`lanes::depth_span`).
+    /// fragments at a time (`lanes::depth_span`; `lanes::depth_span_avx2` where `AVX2`, true
+    /// only in functions compiled for AVX2 that run where the CPU has it, or where the CPU is
+    /// found to have it).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_mask_span(
+    fn depth_mask_span<const AVX2: bool>(
         &self,
         bufs: &mut TileBufs,
         b: usize,
@@ -1432,9 +1434,9 @@ impl FragCtx<'_> {
         }
         let live = live & (u64::MAX >> (64 - n));
         #[cfg(target_arch = "x86_64")]
-        if super::lanes::has_avx2() {
+        if AVX2 || super::lanes::has_avx2() {
             let (f, w) = (self.depth_func, self.depth_mask);
-            // SAFETY: the CPU has AVX2 (`has_avx2`).
+            // SAFETY: the CPU has AVX2 (`AVX2`'s promise, else `has_avx2`).
             return unsafe { super::lanes::depth_span_avx2(row, n, zrow, dz, fx0, live, w, f) };
         }
         super::lanes::depth_span(

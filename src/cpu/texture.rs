@@ -259,14 +259,26 @@ impl Sampler {
         q0: i32,
         out: &mut [[f32; LANES]],
     ) {
+        // Without a cube map on AVX2: the planes looked up once for the row and
+        // `quad_lambda_avx2`'s kernel called directly.
+        #[cfg(target_arch = "x86_64")]
+        let pl = (AVX2 && !self.cube).then(|| lambda_planes_at(planes, to));
         for (k, o) in out.iter_mut().enumerate() {
-            let qa = q0.wrapping_add((k * LANES) as i32);
-            let qx = std::array::from_fn(|j| {
-                qa.wrapping_add(j as i32).wrapping_mul(2).wrapping_sub(ox) as f32
-            });
+            // Window x 2·q of quad q, relative to the origin (2·(q0 + 8k + j) - ox).
+            let xa = q0
+                .wrapping_add((k * LANES) as i32)
+                .wrapping_mul(2)
+                .wrapping_sub(ox);
+            let qx = std::array::from_fn(|j| xa.wrapping_add(2 * j as i32) as f32);
+            #[cfg(target_arch = "x86_64")]
+            if let Some(pl) = &pl {
+                // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+                *o = unsafe { quad_lambda8(pl, &qx, qy, self.size, self.dims) };
+                continue;
+            }
             #[cfg(target_arch = "x86_64")]
             if AVX2 {
-                // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+                // SAFETY: as above.
                 *o = unsafe { self.quad_lambda_avx2(planes, to, qx, qy) };
                 continue;
             }
@@ -293,17 +305,7 @@ impl Sampler {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
-        // The s, t, r and q planes; past the end of `planes`, 0 (as `quad_lambda_on`), out of
-        // line: merged with the twelve loads, the bounded lookups cost ≈40 instructions a call
-        // (texture-targets, callgrind).
-        let o = to.saturating_add(1).saturating_mul(3);
-        let whole = planes
-            .get(o..o.saturating_add(12))
-            .and_then(|p| <&[f32; 12]>::try_from(p).ok());
-        let pl: [[f32; 3]; 4] = match whole {
-            Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
-            None => lambda_planes_short(planes, to),
-        };
+        let pl = lambda_planes_at(planes, to);
         quad_lambda8(&pl, &qx, qy, self.size, self.dims)
     }
 
@@ -3100,8 +3102,26 @@ impl SpanLambda {
     }
 }
 
-/// The s, t, r and q planes of the coordinates at varying `to` (`Sampler::quad_lambda_avx2`)
+/// The s, t, r and q planes of the coordinates at varying `to` (`Sampler::quad_lambda_avx2`,
+/// `Sampler::quad_lambda_row`); past the end of `planes`, 0 (as `quad_lambda_on`), out of
+/// line: merged with the twelve loads, the bounded lookups cost ≈40 instructions a call
+/// (texture-targets, callgrind).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn lambda_planes_at(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    let o = to.saturating_add(1).saturating_mul(3);
+    let whole = planes
+        .get(o..o.saturating_add(12))
+        .and_then(|p| <&[f32; 12]>::try_from(p).ok());
+    match whole {
+        Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
+        None => lambda_planes_short(planes, to),
+    }
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to` (`lambda_planes_at`)
 /// when `planes` ends before their last: each value past the end 0 (as `quad_lambda_on`).
+#[cfg(target_arch = "x86_64")]
 #[cold]
 #[inline(never)]
 fn lambda_planes_short(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
