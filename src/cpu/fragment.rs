@@ -853,14 +853,14 @@ impl FragCtx<'_> {
             }
             if whole && on_lanes {
                 // Pixel-major colours straight to RGBA8 (no transposition back).
-                let px = self.tex_pixels(vs, m as u8, &lam);
+                let px = self.tex_pixels(vs, m as u8, lam);
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
                     super::lanes::store_pixels(dst, m as u8, &px);
                 }
                 g += LANES;
                 continue;
             }
-            let col = self.color_lanes(p, vs, m as u8, &lam, on_lanes);
+            let col = self.color_lanes(p, vs, m as u8, lam, on_lanes);
             if whole {
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
                     super::lanes::store_rgba(dst, m, &col);
