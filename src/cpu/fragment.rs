@@ -83,6 +83,13 @@ struct FusedArgs {
     qy: f32,
 }
 
+/// The 2x2 quads' λ of a span row that the general path keeps, eight quads a block: a span's
+/// covered groups (at most 64 pixels) lie in at most 33 quads.
+const ROW_QUAD_BLOCKS: usize = 5;
+
+/// Each unit's λ of a span row's quads (`Sampler::quad_lambda_row`), for `FragCtx::tri_span_in`.
+type RowQuads = [[[f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
+
 /// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
 /// (`zrow`, `dz`), its first lane's x offset `fx0` and tile index `i0`, its lanes `m`, and
 /// whether the span writes colour.
@@ -98,7 +105,7 @@ struct TexGroup<'a> {
 
 /// `lanes::varyings` of a group, on eight lanes a register where `AVX2` (the same bits:
 /// `lanes::varyings_avx2`). `AVX2` is true only in functions compiled for AVX2 that run where
-/// the CPU has it (`tri_span_avx2`, `tex_span_avx2`).
+/// the CPU has it (`tri_rows_avx2`, `tex_span_avx2`).
 #[inline(always)]
 fn varyings_on<const AVX2: bool>(
     planes: &[f32],
@@ -154,7 +161,7 @@ unsafe fn fused_span<'s>(
 }
 
 /// The fused route ([`FusedSpan`]) of one primitive's spans in one tile, set up by its first
-/// fused span and moved to each next span's row (`FragCtx::tri_span_row`); None before.
+/// fused span and moved to each next span's row (`FragCtx::tri_rows`); None before.
 ///
 /// [`FusedSpan`]: super::texture::FusedSpan
 pub type FusedSlot<'a> = Option<super::texture::FusedSpan<'a>>;
@@ -546,7 +553,7 @@ impl FragCtx<'_> {
 
     /// A triangle span: pixels `x0..=x1` of row `y` (all inside the tile), `planes` the
     /// primitive's pool floats (1/w plane then one plane per varying, relative to its bbox corner).
-    /// Its fused route set up for this span alone (the tests' reference for `tri_span_row`).
+    /// Its fused route set up for this span alone (the tests' reference for `tri_rows`).
     #[cfg(test)]
     pub fn tri_span(
         &self,
@@ -557,65 +564,111 @@ impl FragCtx<'_> {
         x0: i32,
         x1: i32,
     ) {
-        self.tri_span_row(bufs, p, planes, [y, x0, x1], &mut None);
+        self.tri_rows(bufs, p, planes, &[[y, x0, x1]], &mut None);
     }
 
-    /// `tri_span` of row `[y, x0, x1]` of a primitive whose spans in this tile share `slot`
-    /// (None before the first): the fused route is set up once for them, the same bits.
-    /// A thin dispatch, inlined into its callers: with the portable body inlined here, every
-    /// span paid that body's prologue and epilogue (six registers saved, a 3 KiB frame) on
-    /// its way to `tri_span_avx2`, ≈28 instructions a span.
+    /// `tri_span` of rows `[y, x0, x1]` of one primitive (in the tile), whose spans in this
+    /// tile share `slot` (None before the first): the fused route is set up once for them, the
+    /// same bits. A thin dispatch, inlined into its callers: with the portable body inlined
+    /// here, every call paid that body's prologue and epilogue (six registers saved, a 3 KiB
+    /// frame) on its way to `tri_rows_avx2`, ≈28 instructions a call. Rows come a batch at a
+    /// time (`raster::tri`): the general path's set-up (its scratch zeroed, the units' varying
+    /// rows looked up) is paid once a batch, not once a span.
     #[inline(always)]
-    pub fn tri_span_row<'s>(
+    pub fn tri_rows<'s>(
         &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
         planes: &'s [f32],
-        row: [i32; 3],
+        rows: &[[i32; 3]],
         slot: &mut FusedSlot<'s>,
     ) {
         #[cfg(target_arch = "x86_64")]
         if super::lanes::has_avx2() {
             // SAFETY: the CPU has AVX2 and POPCNT.
-            unsafe { self.tri_span_avx2(bufs, p, planes, row, slot) };
+            unsafe { self.tri_rows_avx2(bufs, p, planes, rows, slot) };
             return;
         }
-        self.tri_span_portable(bufs, p, planes, row, slot);
+        self.tri_rows_portable(bufs, p, planes, rows, slot);
     }
 
-    /// `tri_span_row` without AVX2 (out of line, as `tri_span_avx2`).
+    /// `tri_rows` without AVX2 (out of line, as `tri_rows_avx2`).
     #[inline(never)]
-    fn tri_span_portable<'s>(
+    fn tri_rows_portable<'s>(
         &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
         planes: &'s [f32],
-        row: [i32; 3],
+        rows: &[[i32; 3]],
         slot: &mut FusedSlot<'s>,
     ) {
-        self.tri_span_in::<false>(bufs, p, planes, row, slot);
+        self.tri_rows_in::<false>(bufs, p, planes, rows, slot);
     }
 
-    /// `tri_span` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
+    /// `tri_rows` compiled for AVX2 and POPCNT (as `plain_rows_avx2`: the same bits).
     ///
     /// # Safety
     /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
-    unsafe fn tri_span_avx2<'s>(
+    unsafe fn tri_rows_avx2<'s>(
         &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
         planes: &'s [f32],
-        row: [i32; 3],
+        rows: &[[i32; 3]],
         slot: &mut FusedSlot<'s>,
     ) {
-        self.tri_span_in::<true>(bufs, p, planes, row, slot);
+        self.tri_rows_in::<true>(bufs, p, planes, rows, slot);
     }
 
-    /// The body of `tri_span_row` (`AVX2`: true only in `tri_span_avx2`, where the CPU has
-    /// AVX2; the general path's varyings then on eight lanes a register).
+    /// The body of `tri_rows`: the rows of a smooth point or line (`aa_rows`) or with
+    /// per-fragment operations (`ops_rows`) together, any other row by `tri_span_in` with the
+    /// general path's scratch set up here once for all the rows (texture-targets, callgrind:
+    /// ≈370 instructions of set-up a span before).
     #[inline(always)]
+    fn tri_rows_in<'s, const AVX2: bool>(
+        &'s self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &'s [f32],
+        rows: &[[i32; 3]],
+        slot: &mut FusedSlot<'s>,
+    ) {
+        if p.flags & (F_AAPOINT | F_AALINE) != 0 {
+            return self.aa_rows(bufs, p, planes, rows);
+        }
+        if let Some(ops) = &self.ops {
+            return self.ops_rows(ops, bufs, p, planes, rows);
+        }
+        // The varyings' rows: only the `nv` in use are zeroed (`lanes::varyings` writes them
+        // all for each group); zeroing all MAXV rows (1248 bytes) was a memset of ≈85
+        // instructions a span on texture-targets.
+        let nv = self.rl.n.min(MAXV);
+        let mut vl_rows = [std::mem::MaybeUninit::<[f32; LANES]>::uninit(); MAXV];
+        let vl_used = vl_rows.get_mut(..nv).unwrap_or_default();
+        for row in vl_used.iter_mut() {
+            row.write([0.0; LANES]);
+        }
+        // SAFETY: every element of `vl_used` was initialised just above, and
+        // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
+        let vl: &mut [[f32; LANES]] =
+            unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
+        // λ per unit and lane: a unit's entry is written for each group before it is read
+        // where the unit needs λ, and stays 0 where it does not, whatever the row.
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
+        for &row in rows {
+            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq);
+        }
+    }
+
+    /// One row of `tri_rows_in` (`AVX2`: true only in `tri_rows_avx2`, where the CPU has
+    /// AVX2; the general path's varyings then on eight lanes a register), the general path's
+    /// scratch `vl` (the `rl.n` varying rows, at most MAXV), `lam` and `lq` (each unit's λ of
+    /// the span's quads) set up by the caller.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn tri_span_in<'s, const AVX2: bool>(
         &'s self,
         bufs: &mut TileBufs,
@@ -623,13 +676,10 @@ impl FragCtx<'_> {
         planes: &'s [f32],
         [y, x0, x1]: [i32; 3],
         slot: &mut FusedSlot<'s>,
+        vl: &mut [[f32; LANES]],
+        lam: &mut [[f32; LANES]; MAX_TEXTURE_UNITS],
+        lq: &mut RowQuads,
     ) {
-        if p.flags & (F_AAPOINT | F_AALINE) != 0 {
-            return self.aa_rows(bufs, p, planes, &[[y, x0, x1]]);
-        }
-        if let Some(ops) = &self.ops {
-            return self.ops_rows(ops, bufs, p, planes, &[[y, x0, x1]]);
-        }
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
         let zrow = p.z[0] + p.z[2] * fy;
@@ -646,9 +696,9 @@ impl FragCtx<'_> {
                 if live == 0 {
                     return;
                 }
-                self.depth_mask_span(bufs, base, n, zrow, dz, fx0, live)
+                self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, live)
             }
-            _ => self.depth_mask_span(bufs, base, n, zrow, dz, fx0, all),
+            _ => self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, all),
         };
         if mask == 0 {
             return;
@@ -763,21 +813,25 @@ impl FragCtx<'_> {
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = slot;
-        // The varyings' rows: only the `nv` in use are zeroed (`lanes::varyings` writes them
-        // all for each group); zeroing all MAXV rows (1248 bytes) was a memset of ≈85
-        // instructions a span on texture-targets.
-        let mut vl_rows = [std::mem::MaybeUninit::<[f32; LANES]>::uninit(); MAXV];
-        let vl_used = vl_rows.get_mut(..nv).unwrap_or_default();
-        for row in vl_used.iter_mut() {
-            row.write([0.0; LANES]);
+        // Each quad's λ once (not once per lane), those of the span's covered groups all at
+        // once, eight quads a call (`Sampler::quad_lambda_row`): the groups from the first
+        // covered one's (ga) to the last's (gb) lie in window quads qa..=qb (at most 33), quad
+        // qa + j's λ in `lq[unit][j / 8][j % 8]`. Texture-targets (small triangles, spans of a
+        // group or two): a `SpanLambda` window per group cost ≈55 instructions a group besides
+        // its λ calls.
+        let qa = (x0 + (mask.trailing_zeros() as i32 & !7)) >> 1;
+        if lod {
+            let gb = (63 - mask.leading_zeros()) as i32 & !7;
+            let nq = (((x0 + gb + 7) >> 1) - qa + 1) as usize;
+            let blocks = nq.div_ceil(LANES).min(ROW_QUAD_BLOCKS);
+            for (lu, t) in lq.iter_mut().zip(&self.tex) {
+                let Some((tx, to)) = *t else { break };
+                if tx.needs_lambda() {
+                    let out = lu.get_mut(..blocks).unwrap_or_default();
+                    tx.quad_lambda_row::<AVX2>(planes, to, ox, qy, qa, out);
+                }
+            }
         }
-        // SAFETY: every element of `vl_used` was initialised just above, and
-        // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
-        let vl: &mut [[f32; LANES]] =
-            unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
-        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
-        // Each quad's λ once (not once per lane): computed as the groups reach it.
-        let mut quads = [SpanLambda::new(x0, ox, qy); MAX_TEXTURE_UNITS];
         let mut g = 0;
         while g < n.min(64) {
             let m = (mask >> g) & ((1 << LANES) - 1);
@@ -788,23 +842,25 @@ impl FragCtx<'_> {
             let vs = &mut *vl;
             varyings_on::<AVX2>(planes, nflat, x0 - ox + g as i32, fy, vs);
             if lod {
-                for ((lu, t), sq) in lam.iter_mut().zip(&self.tex).zip(&mut quads) {
-                    let Some((tx, to)) = *t else { break };
+                // The group's first pixel's quad, 0..=28 quads from qa.
+                let d = (((x0 + g as i32) >> 1) - qa) as usize;
+                for ((lu, t), q) in lam.iter_mut().zip(&self.tex).zip(&*lq) {
+                    let Some((tx, _)) = *t else { break };
                     if tx.needs_lambda() {
-                        *lu = sq.lanes(tx, planes, to, x0 + g as i32);
+                        *lu = super::texture::spread_quads(q.as_flattened(), d, x0 + g as i32);
                     }
                 }
             }
             if whole && on_lanes {
                 // Pixel-major colours straight to RGBA8 (no transposition back).
-                let px = self.tex_pixels(vs, m as u8, &lam);
+                let px = self.tex_pixels(vs, m as u8, lam);
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
                     super::lanes::store_pixels(dst, m as u8, &px);
                 }
                 g += LANES;
                 continue;
             }
-            let col = self.color_lanes(p, vs, m as u8, &lam, on_lanes);
+            let col = self.color_lanes(p, vs, m as u8, lam, on_lanes);
             if whole {
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
                     super::lanes::store_rgba(dst, m, &col);
@@ -1020,9 +1076,7 @@ impl FragCtx<'_> {
             return;
         }
         let _ = fill;
-        for &row in rows {
-            self.tri_span_portable(bufs, p, planes, row, &mut None);
-        }
+        self.tri_rows_portable(bufs, p, planes, rows, &mut None);
     }
 
     /// `const_rows` compiled for AVX2 and POPCNT, the common depth tests chosen once for the
@@ -1351,10 +1405,12 @@ impl FragCtx<'_> {
     /// with a polygon stipple it lacks some inside the span) when the test is off, else what
     /// the depth test and write (§4.1.6) of the `n` fragments from tile index `b` leave of it:
     /// z = `zrow + dz * (fx0 + k)` for the k-th, DepthFunc and DepthMask applied eight
-    /// fragments at a time (`lanes::depth_span`).
+    /// fragments at a time (`lanes::depth_span`; `lanes::depth_span_avx2` where `AVX2`, true
+    /// only in functions compiled for AVX2 that run where the CPU has it, or where the CPU is
+    /// found to have it).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn depth_mask_span(
+    fn depth_mask_span<const AVX2: bool>(
         &self,
         bufs: &mut TileBufs,
         b: usize,
@@ -1378,9 +1434,9 @@ impl FragCtx<'_> {
         }
         let live = live & (u64::MAX >> (64 - n));
         #[cfg(target_arch = "x86_64")]
-        if super::lanes::has_avx2() {
+        if AVX2 || super::lanes::has_avx2() {
             let (f, w) = (self.depth_func, self.depth_mask);
-            // SAFETY: the CPU has AVX2 (`has_avx2`).
+            // SAFETY: the CPU has AVX2 (`AVX2`'s promise, else `has_avx2`).
             return unsafe { super::lanes::depth_span_avx2(row, n, zrow, dz, fx0, live, w, f) };
         }
         super::lanes::depth_span(
@@ -2841,12 +2897,12 @@ mod tests {
                     samples: 0,
                 };
                 if lanes {
-                    // One fused route for all the rows (`raster::tri`'s) or one a row.
-                    let mut slot = None;
-                    for &[y, x0, x1] in rows {
-                        if shared {
-                            f.tri_span_row(&mut bufs, &p, &planes, [y, x0, x1], &mut slot);
-                        } else {
+                    // One fused route for all the rows in one call (`raster::tri`'s) or one
+                    // a row.
+                    if shared {
+                        f.tri_rows(&mut bufs, &p, &planes, rows, &mut None);
+                    } else {
+                        for &[y, x0, x1] in rows {
                             f.tri_span(&mut bufs, &p, &planes, y, x0, x1);
                         }
                     }

@@ -74,11 +74,10 @@ fn tri(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, planes: &[f32], r: [i32; 4
         });
         return ctx.ops_rows(ops, bufs, p, planes, rows.get(..k).unwrap_or_default());
     }
-    // One fused route for the primitive's spans (`FusedSlot`).
+    // One fused route for the primitive's spans (`FusedSlot`), the rows a batch at a time
+    // (the general path's set-up once a batch, `tri_rows`).
     let mut fused = None;
-    spans(p, r, |y, l, h| {
-        ctx.tri_span_row(bufs, p, planes, [y, l, h], &mut fused)
-    });
+    batched(p, r, |rows| ctx.tri_rows(bufs, p, planes, rows, &mut fused));
 }
 
 /// The spans of `p` in `r` handed to `shade` in batches, so that what depends on the

@@ -257,6 +257,51 @@ impl Sampler {
         self.quad_lambda_on(planes, to, qx, qy)
     }
 
+    /// λ of the 2x2 quads `q0..q0 + 8·out.len()` of a row (window quad numbers: quad q's
+    /// lower-left pixel at window x 2q), eight a call of [`Sampler::quad_lambda_lanes`] (quad
+    /// q0 + 8k + j in `out[k][j]`); the planes' origin is at window x `ox` and the quads'
+    /// y is `qy` relative to it. Each value is `quad_lambda_lanes`'s for its quad (its lanes
+    /// are independent of each other), so the same bits as [`SpanLambda`]'s windows. With
+    /// `AVX2` (true only in functions compiled for AVX2 that run where the CPU has it) the
+    /// AVX2 kernel is called directly, without `quad_lambda_lanes`' check (≈28 instructions a
+    /// call on texture-targets).
+    #[inline(always)]
+    pub fn quad_lambda_row<const AVX2: bool>(
+        &self,
+        planes: &[f32],
+        to: usize,
+        ox: i32,
+        qy: f32,
+        q0: i32,
+        out: &mut [[f32; LANES]],
+    ) {
+        // Without a cube map on AVX2: the planes looked up once for the row and
+        // `quad_lambda_avx2`'s kernel called directly.
+        #[cfg(target_arch = "x86_64")]
+        let pl = (AVX2 && !self.cube).then(|| lambda_planes_at(planes, to));
+        for (k, o) in out.iter_mut().enumerate() {
+            // Window x 2·q of quad q, relative to the origin (2·(q0 + 8k + j) - ox).
+            let xa = q0
+                .wrapping_add((k * LANES) as i32)
+                .wrapping_mul(2)
+                .wrapping_sub(ox);
+            #[cfg(target_arch = "x86_64")]
+            if let Some(pl) = &pl {
+                // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+                *o = unsafe { quad_lambda8(pl, &quad_xs8(xa), qy, self.size, self.dims) };
+                continue;
+            }
+            let qx = std::array::from_fn(|j| xa.wrapping_add(2 * j as i32) as f32);
+            #[cfg(target_arch = "x86_64")]
+            if AVX2 {
+                // SAFETY: as above.
+                *o = unsafe { self.quad_lambda_avx2(planes, to, qx, qy) };
+                continue;
+            }
+            *o = self.quad_lambda_lanes(planes, to, qx, qy);
+        }
+    }
+
     /// [`Sampler::quad_lambda_lanes`] on AVX2: a cube map by `cube_lambda_lanes` compiled
     /// for AVX2, the other targets by [`quad_lambda8`] (eight lanes a register, the same
     /// operations in the same order, no FMA). texture-targets (callgrind, 3 frames):
@@ -276,16 +321,7 @@ impl Sampler {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
-        // The s, t, r and q planes; past the end of `planes`, 0 (as `quad_lambda_on`).
-        let o = to.saturating_add(1).saturating_mul(3);
-        let pl: [[f32; 3]; 4] = match planes.get(o..o.saturating_add(12)) {
-            Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
-            None => {
-                let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-                let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
-                [plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to)]
-            }
-        };
+        let pl = lambda_planes_at(planes, to);
         quad_lambda8(&pl, &qx, qy, self.size, self.dims)
     }
 
@@ -295,9 +331,7 @@ impl Sampler {
         if self.cube {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
-        let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
-        let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
-        let (ps, pt, pr, pq) = (plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to));
+        let [ps, pt, pr, pq] = lambda_planes(planes, to);
         let (size, dims) = (self.size, self.dims);
         let mut qx1 = qx;
         for x in &mut qx1 {
@@ -1472,6 +1506,23 @@ fn lambda_point(
         [0.0; LANES]
     };
     [u, v, w]
+}
+
+/// The x of eight quads' lower-left pixels from `xa` on (`Sampler::quad_lambda_row`), lane j
+/// `xa + 2j` (the add wrapping) as f32, on one register: `vpaddd` and `vcvtdq2ps` (rounding
+/// as `as f32`'s `cvtsi2ss`) in place of eight scalar conversions put together lane by lane
+/// (≈20 instructions).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn quad_xs8(xa: i32) -> [f32; LANES] {
+    use std::arch::x86_64::*;
+    let steps = _mm256_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14);
+    let v = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_set1_epi32(xa), steps));
+    let mut out = [0.0f32; LANES];
+    // SAFETY: the store writes the eight f32 of `out` (no alignment needed).
+    unsafe { _mm256_storeu_ps(out.as_mut_ptr(), v) };
+    out
 }
 
 /// [`Sampler::quad_lambda_on`] without a cube map on eight AVX registers: `lambda_point`'s
@@ -3088,15 +3139,59 @@ impl SpanLambda {
         // qa - q0 is 0..=4 here (qb - qa is 3 or 4, qb - q0 < 8); the five entries from it are
         // inside `lam` (its spare one is read only for an even x, whose lanes use four).
         let d = usize::try_from(qa - self.q0).unwrap_or(0).min(4);
-        let mut w = [0.0f32; 5];
-        if let Some(src) = self.lam.get(d..d + 5) {
-            w.copy_from_slice(src);
-        }
-        if x & 1 == 0 {
-            [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
-        } else {
-            [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
-        }
+        spread_quads(&self.lam, d, x)
+    }
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to` (`Sampler::quad_lambda_avx2`,
+/// `Sampler::quad_lambda_row`); past the end of `planes`, 0 (as `quad_lambda_on`), out of
+/// line: merged with the twelve loads, the bounded lookups cost ≈40 instructions a call
+/// (texture-targets, callgrind).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn lambda_planes_at(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    let o = to.saturating_add(1).saturating_mul(3);
+    let whole = planes
+        .get(o..o.saturating_add(12))
+        .and_then(|p| <&[f32; 12]>::try_from(p).ok());
+    match whole {
+        Some(p) => std::array::from_fn(|j| [p[3 * j], p[3 * j + 1], p[3 * j + 2]]),
+        None => lambda_planes_short(planes, to),
+    }
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to` (`lambda_planes_at`)
+/// when `planes` ends before their last: each value past the end 0 (as `quad_lambda_on`).
+#[cfg(target_arch = "x86_64")]
+#[cold]
+#[inline(never)]
+fn lambda_planes_short(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    lambda_planes(planes, to)
+}
+
+/// The s, t, r and q planes of the coordinates at varying `to`, each value past the end of
+/// `planes` 0 (`Sampler::quad_lambda_on`).
+#[inline(always)]
+fn lambda_planes(planes: &[f32], to: usize) -> [[f32; 3]; 4] {
+    let g = |o: usize| planes.get(o).copied().unwrap_or(0.0);
+    let plane = |j: usize| [g(3 * j), g(3 * j + 1), g(3 * j + 2)];
+    [plane(1 + to), plane(2 + to), plane(3 + to), plane(4 + to)]
+}
+
+/// λ for the eight pixels from window x `x` (lane l at x + l) from a row of quads' λ, `lam[d]`
+/// the quad of pixel x (window x / 2, floor) and the next four after it: lane l takes its
+/// quad's, `lam[d + (x % 2 + l) / 2]`. Entries past `lam`'s end read as 0 (lane 7 of an even
+/// x never reads entry d + 4).
+#[inline(always)]
+pub fn spread_quads(lam: &[f32], d: usize, x: i32) -> [f32; LANES] {
+    let mut w = [0.0f32; 5];
+    if let Some(src) = lam.get(d..d + 5) {
+        w.copy_from_slice(src);
+    }
+    if x & 1 == 0 {
+        [w[0], w[0], w[1], w[1], w[2], w[2], w[3], w[3]]
+    } else {
+        [w[0], w[1], w[1], w[2], w[2], w[3], w[3], w[4]]
     }
 }
 

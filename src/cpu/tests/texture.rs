@@ -995,9 +995,14 @@ fn level_selection_is_the_reference_selection() {
 fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
     // Spans of every alignment (odd and even first pixel, odd and even plane origin), lengths
     // up to and past the row buffer, groups visited with gaps as a span's coverage skips them:
-    // each lane's λ is `quad_lambda` of its pixel's quad, bit for bit.
+    // each lane's λ is `quad_lambda` of its pixel's quad, bit for bit. Likewise the general
+    // path's (`FragCtx::tri_span_in`): the quads of the groups from the first visited (ga) to
+    // the last within 64 pixels of it (gb), eight a call of `quad_lambda_row` (the AVX2
+    // kernels called directly in a third of the rounds where the CPU has them, else through
+    // `quad_lambda_lanes`, on AVX2 or SSE2), each group's lanes by `spread_quads`.
     let mut next = lcg(23u64);
     let samplers = lambda_samplers();
+    let avx2 = crate::cpu::lanes::has_avx2();
     let mut checked = 0;
     for round in 0..3000 {
         let s = &samplers[round % samplers.len()];
@@ -1012,23 +1017,50 @@ fn span_lambda_is_quad_lambda_per_pixel_bit_for_bit() {
         // Every other round on the SSE2 λ (the AVX2 one where the CPU has it otherwise).
         crate::cpu::lanes::NO_AVX2.with(|c| c.set(round % 2 == 1));
         let mut sl = SpanLambda::new(x0, ox, qy);
+        let mut check = |g: usize, got: [f32; LANES]| {
+            for (l, got) in got.iter().enumerate() {
+                let qx = (((x0 + (g + l) as i32) & !1) - ox) as f32;
+                let want = s.quad_lambda(&planes, to, qx, qy);
+                let same = got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan();
+                assert!(same, "x0 {x0} ox {ox} g {g} lane {l}: {got} vs {want}");
+                checked += 1;
+            }
+        };
+        let mut visited = Vec::new();
         let mut g = 0;
         while g < n {
             if next() % 4 != 0 {
-                let got = sl.lanes(s, &planes, to, x0 + g as i32);
-                for (l, got) in got.iter().enumerate() {
-                    let qx = (((x0 + (g + l) as i32) & !1) - ox) as f32;
-                    let want = s.quad_lambda(&planes, to, qx, qy);
-                    let same = got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan();
-                    assert!(same, "x0 {x0} ox {ox} g {g} lane {l}: {got} vs {want}");
-                    checked += 1;
-                }
+                check(g, sl.lanes(s, &planes, to, x0 + g as i32));
+                visited.push(g);
             }
             g += LANES;
         }
+        let Some(&ga) = visited.first() else { continue };
+        let gb = visited
+            .iter()
+            .copied()
+            .filter(|&g| g < ga + 64)
+            .max()
+            .unwrap_or(ga);
+        let qa = (x0 + ga as i32) >> 1;
+        let nq = (((x0 + gb as i32 + 7) >> 1) - qa + 1) as usize;
+        let mut lq = [[f32::NAN; LANES]; 5];
+        let out = &mut lq[..nq.div_ceil(LANES)];
+        if avx2 && round % 3 == 0 {
+            s.quad_lambda_row::<true>(&planes, to, ox, qy, qa, out);
+        } else {
+            s.quad_lambda_row::<false>(&planes, to, ox, qy, qa, out);
+        }
+        for g in (ga..=gb).step_by(LANES) {
+            let x = x0 + g as i32;
+            check(
+                g,
+                spread_quads(lq.as_flattened(), ((x >> 1) - qa) as usize, x),
+            );
+        }
     }
     crate::cpu::lanes::NO_AVX2.with(|c| c.set(false));
-    assert!(checked > 50_000, "{checked}");
+    assert!(checked > 80_000, "{checked}");
 }
 
 #[test]
