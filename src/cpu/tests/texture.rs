@@ -1116,6 +1116,26 @@ fn ifloor_lanes_is_ifloor() {
         for l in 0..LANES {
             assert_eq!(got[l], ifloor(x[l]), "{} ({:#x})", x[l], x[l].to_bits());
         }
+        // `ifloor8` (AVX2: `vroundps`' floor, then the truncation) on the same lanes.
+        #[cfg(target_arch = "x86_64")]
+        if crate::cpu::lanes::has_avx2() {
+            // SAFETY: the CPU has AVX2 (tested above); `__m256`/`__m256i` have the layouts of
+            // `[f32; 8]`/`[i32; 8]`, every bit pattern valid.
+            let got = unsafe {
+                std::mem::transmute::<std::arch::x86_64::__m256i, [i32; LANES]>(ifloor8(
+                    std::mem::transmute::<[f32; LANES], std::arch::x86_64::__m256>(x),
+                ))
+            };
+            for l in 0..LANES {
+                assert_eq!(
+                    got[l],
+                    ifloor(x[l]),
+                    "ifloor8 {} ({:#x})",
+                    x[l],
+                    x[l].to_bits()
+                );
+            }
+        }
     }
 }
 
