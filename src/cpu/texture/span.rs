@@ -48,6 +48,9 @@ pub struct FusedSpan<'a> {
     /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
     /// varyings and s, t, q.
     pl: [[f32; 3]; 8],
+    /// `pl`'s constants and x steps (the primitive's: the same for every row) on eight lanes
+    /// each, so that a group reads them as memory operands instead of broadcasting them.
+    pad: [[[f32; LANES]; 2]; 8],
     /// The primitive's planes (`pl` and `lp` of another row are taken from them again,
     /// [`FusedSpan::row`]) and the coordinates' first varying.
     planes: &'a [f32],
@@ -176,6 +179,7 @@ impl<'a> FusedSpan<'a> {
         let vars = [0, 1, 2, 3, to, to + 1, to + 3];
         let c = s.env_color;
         let rj = to.checked_add(2)?;
+        let pl = row_planes(planes, to, fy)?;
         Some(FusedSpan {
             s,
             rep,
@@ -186,7 +190,8 @@ impl<'a> FusedSpan<'a> {
             rpl: r_plane(planes, rj, fy)?,
             rdiv: rj >= nflat,
             rgb: s.base == gl::RGB,
-            pl: row_planes(planes, to, fy)?,
+            pl,
+            pad: pl.map(|[a, dx, _]| [[a; LANES], [dx; LANES]]),
             planes,
             to,
             div: vars.map(|j| j >= nflat),
@@ -360,6 +365,15 @@ impl<'a> FusedSpan<'a> {
         true
     }
 
+    /// Plane `k` of `pl` at lanes `xs` ([`plane8`]), its constant and x step from `pad`.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn plane(&self, k: usize, xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+        // (k < 8 at every call: the indices are constants in range.)
+        plane8l(&self.pad[k], self.pl[k][2], xs)
+    }
+
     /// `lanes::varyings`' x of the group from window x `x` (lane l at x + l) and its 1/w.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
@@ -372,10 +386,7 @@ impl<'a> FusedSpan<'a> {
         let xs = _mm256_add_ps(_mm256_set1_ps((x - self.ox) as f32), unsafe {
             _mm256_loadu_ps(IOTA.as_ptr())
         });
-        (
-            xs,
-            _mm256_div_ps(_mm256_set1_ps(1.0), plane8(self.pl[0], xs)),
-        )
+        (xs, _mm256_div_ps(_mm256_set1_ps(1.0), self.plane(0, xs)))
     }
 
     /// Varying k of the colour (0..4) and s, t, q (4, 5, 6) at lanes `xs` (1/w `inv`): its
@@ -390,7 +401,7 @@ impl<'a> FusedSpan<'a> {
     ) -> std::arch::x86_64::__m256 {
         use std::arch::x86_64::*;
         // (K < 7: the indices are constants in range.)
-        let v = plane8(self.pl[K + 1], xs);
+        let v = self.plane(K + 1, xs);
         if self.div[K] {
             _mm256_mul_ps(v, inv)
         } else {
@@ -1102,11 +1113,23 @@ fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
 #[target_feature(enable = "avx2")]
 #[inline]
 fn plane8([a, dx, yt]: [f32; 3], xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+    plane8l(&[[a; LANES], [dx; LANES]], yt, xs)
+}
+
+/// [`plane8`] with the constant and x step `adx` on eight lanes each (`FusedSpan::pad`),
+/// the y term `yt`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn plane8l(
+    adx: &[[f32; LANES]; 2],
+    yt: f32,
+    xs: std::arch::x86_64::__m256,
+) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
-    _mm256_add_ps(
-        _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
-        _mm256_set1_ps(yt),
-    )
+    // SAFETY: each load reads the eight floats of one term.
+    let [a, dx] = adx.map(|v| unsafe { _mm256_loadu_ps(v.as_ptr()) });
+    _mm256_add_ps(_mm256_add_ps(a, _mm256_mul_ps(dx, xs)), _mm256_set1_ps(yt))
 }
 
 /// `lanes::varyings`' planes of row `fy` (constant, x step, y term `dy·fy`) of 1/w, the
