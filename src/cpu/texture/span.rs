@@ -122,7 +122,7 @@ enum View<'a> {
     Missing,
     /// Not [`dense_level`]: the group takes `texels_lanes`.
     Sparse,
-    /// A dense level: its texels, width and height.
+    /// A dense level with a texel: its texels, width and height.
     Dense(&'a [[f32; 4]], i32, i32),
 }
 
@@ -1019,9 +1019,12 @@ impl<'a> FusedSpan<'a> {
             (n, v) if n == level && !matches!(v, View::Unknown) => v,
             _ => {
                 let sampler: &'a Sampler = self.s;
+                // (An empty level is taken as Sparse: the route's kernels need a texel.)
                 let v = match sampler.obj.face_level(0, level) {
                     None => View::Missing,
-                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
+                    Some(v)
+                        if !v.texels.is_empty() && dense_level(&v.texels, v.width, v.height) =>
+                    {
                         View::Dense(&v.texels, v.width, v.height)
                     }
                     Some(_) => View::Sparse,
@@ -1038,10 +1041,16 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn dense(&mut self, level: i32) -> Result<(&'a [[f32; 4]], i32, i32), bool> {
+        // The cached level first: one compare of the number, one of the kind.
+        if let (n, View::Dense(dt, w, h)) = self.cache[(level & 1) as usize] {
+            if n == level {
+                return Ok((dt, w, h));
+            }
+        }
         match self.view(level) {
-            View::Dense(dt, w, h) if !dt.is_empty() => Ok((dt, w, h)),
+            View::Dense(dt, w, h) => Ok((dt, w, h)),
             View::Missing => Err(true),
-            View::Dense(..) | View::Sparse | View::Unknown => Err(false),
+            View::Sparse | View::Unknown => Err(false),
         }
     }
 
