@@ -2322,27 +2322,32 @@ fn linear_half<const RX: bool, const RY: bool, const LO: usize>(
     lane!(3);
 }
 
-/// [`ifloor4`] on eight lanes (AVX2).
+/// [`ifloor4`] on eight lanes (AVX2): `vroundps`' floor, then `cvttps2dq` (exact on the
+/// floor; 2^31 and beyond and below -2^31 give i32::MIN), flipped to i32::MAX where x ≥ 2^31,
+/// 0 for NaN — `ifloor`'s value in 6 instructions instead of `ifloor4`'s 12.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn ifloor8(v: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256i {
     use std::arch::x86_64::*;
-    let t = _mm256_cvttps_epi32(v);
+    let nan = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_UNORD_Q>(v, v));
+    _mm256_andnot_si256(nan, ifloor8_num(v))
+}
+
+/// [`ifloor8`] without its NaN test, for lanes that hold no NaN (a NaN lane gives i32::MIN):
+/// the LINEAR axes, which take a NaN u as 0 before the floor.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn ifloor8_num(v: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let t = _mm256_cvttps_epi32(_mm256_floor_ps(v));
+    // i32::MIN ^ -1 = i32::MAX where x ≥ 2^31.
     let big = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GE_OQ>(
         v,
         _mm256_set1_ps(2_147_483_648.0),
     ));
-    let t = _mm256_or_si256(
-        _mm256_andnot_si256(big, t),
-        _mm256_and_si256(big, _mm256_set1_epi32(i32::MAX)),
-    );
-    let nan = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_UNORD_Q>(v, v));
-    let t = _mm256_andnot_si256(nan, t);
-    // -1 where (t as f32) > x and t is not i32::MIN.
-    let gt = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_cvtepi32_ps(t), v));
-    let at_min = _mm256_cmpeq_epi32(t, _mm256_set1_epi32(i32::MIN));
-    _mm256_add_epi32(t, _mm256_andnot_si256(at_min, gt))
+    _mm256_xor_si256(t, big)
 }
 
 /// [`wrap4`] on eight lanes (AVX2).
@@ -2382,7 +2387,7 @@ fn linear_axis8<const REP: bool>(
         _mm256_set1_ps(0.5),
     );
     let u = _mm256_and_ps(u, _mm256_cmp_ps::<_CMP_ORD_Q>(u, u));
-    let i0 = ifloor8(u);
+    let i0 = ifloor8_num(u);
     // (u - i0).clamp(0, 1) in `f32::clamp`'s order (a -0 stays -0).
     let a = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i0));
     let a = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), a));
@@ -2814,7 +2819,7 @@ fn border_linear8<const MODE: u8>(
         _mm256_set1_ps(0.5),
     );
     let u = _mm256_and_ps(u, _mm256_cmp_ps::<_CMP_ORD_Q>(u, u));
-    let i0 = ifloor8(u);
+    let i0 = ifloor8_num(u);
     let a = _mm256_sub_ps(u, _mm256_cvtepi32_ps(i0));
     let a = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), a));
     let at_max = _mm256_cmpeq_epi32(i0, _mm256_set1_epi32(i32::MAX));

@@ -1145,8 +1145,23 @@ fn ifloor_lanes_is_ifloor() {
             _ => (next() % 2_000_000) as f32 * 1e-3 - 1000.0,
         });
         let got = ifloor_lanes(&x);
+        // `ifloor8` (AVX2: `vroundps`' floor, then the truncation) on the same lanes.
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: the CPU has AVX2 (tested first); `__m256`/`__m256i` have the layouts of
+        // `[f32; 8]`/`[i32; 8]`, every bit pattern valid.
+        let got8 = crate::cpu::lanes::has_avx2().then(|| unsafe {
+            std::mem::transmute::<std::arch::x86_64::__m256i, [i32; LANES]>(ifloor8(
+                std::mem::transmute::<[f32; LANES], std::arch::x86_64::__m256>(x),
+            ))
+        });
+        #[cfg(not(target_arch = "x86_64"))]
+        let got8: Option<[i32; LANES]> = None;
         for l in 0..LANES {
-            assert_eq!(got[l], ifloor(x[l]), "{} ({:#x})", x[l], x[l].to_bits());
+            let want = ifloor(x[l]);
+            assert_eq!(got[l], want, "{} ({:#x})", x[l], x[l].to_bits());
+            if let Some(g) = got8 {
+                assert_eq!(g[l], want, "ifloor8 {} ({:#x})", x[l], x[l].to_bits());
+            }
         }
     }
 }

@@ -48,6 +48,9 @@ pub struct FusedSpan<'a> {
     /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
     /// varyings and s, t, q.
     pl: [[f32; 3]; 8],
+    /// `pl`'s constants and x steps (the primitive's: the same for every row) on eight lanes
+    /// each, so that a group reads them as memory operands instead of broadcasting them.
+    pad: [[[f32; LANES]; 2]; 8],
     /// The primitive's planes (`pl` and `lp` of another row are taken from them again,
     /// [`FusedSpan::row`]) and the coordinates' first varying.
     planes: &'a [f32],
@@ -119,7 +122,7 @@ enum View<'a> {
     Missing,
     /// Not [`dense_level`]: the group takes `texels_lanes`.
     Sparse,
-    /// A dense level: its texels, width and height.
+    /// A dense level with a texel: its texels, width and height.
     Dense(&'a [[f32; 4]], i32, i32),
 }
 
@@ -176,6 +179,7 @@ impl<'a> FusedSpan<'a> {
         let vars = [0, 1, 2, 3, to, to + 1, to + 3];
         let c = s.env_color;
         let rj = to.checked_add(2)?;
+        let pl = row_planes(planes, to, fy)?;
         Some(FusedSpan {
             s,
             rep,
@@ -186,7 +190,8 @@ impl<'a> FusedSpan<'a> {
             rpl: r_plane(planes, rj, fy)?,
             rdiv: rj >= nflat,
             rgb: s.base == gl::RGB,
-            pl: row_planes(planes, to, fy)?,
+            pl,
+            pad: pl.map(|[a, dx, _]| [[a; LANES], [dx; LANES]]),
             planes,
             to,
             div: vars.map(|j| j >= nflat),
@@ -334,9 +339,8 @@ impl<'a> FusedSpan<'a> {
         dst: &mut [[u8; 4]],
     ) -> bool {
         use std::arch::x86_64::*;
-        let (dt, w, h) = match self.view(self.s.base_level) {
-            View::Dense(dt, w, h) if !dt.is_empty() => (dt, w, h),
-            _ => return false,
+        let Ok((dt, w, h)) = self.dense(self.s.base_level) else {
+            return false;
         };
         let (xs, inv) = self.group_x(x);
         let [ss, tt, rr] = self.coords(xs, inv);
@@ -361,6 +365,15 @@ impl<'a> FusedSpan<'a> {
         true
     }
 
+    /// Plane `k` of `pl` at lanes `xs` ([`plane8`]), its constant and x step from `pad`.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn plane(&self, k: usize, xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+        // (k < 8 at every call: the indices are constants in range.)
+        plane8l(&self.pad[k], self.pl[k][2], xs)
+    }
+
     /// `lanes::varyings`' x of the group from window x `x` (lane l at x + l) and its 1/w.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
@@ -373,10 +386,7 @@ impl<'a> FusedSpan<'a> {
         let xs = _mm256_add_ps(_mm256_set1_ps((x - self.ox) as f32), unsafe {
             _mm256_loadu_ps(IOTA.as_ptr())
         });
-        (
-            xs,
-            _mm256_div_ps(_mm256_set1_ps(1.0), plane8(self.pl[0], xs)),
-        )
+        (xs, _mm256_div_ps(_mm256_set1_ps(1.0), self.plane(0, xs)))
     }
 
     /// Varying k of the colour (0..4) and s, t, q (4, 5, 6) at lanes `xs` (1/w `inv`): its
@@ -391,7 +401,7 @@ impl<'a> FusedSpan<'a> {
     ) -> std::arch::x86_64::__m256 {
         use std::arch::x86_64::*;
         // (K < 7: the indices are constants in range.)
-        let v = plane8(self.pl[K + 1], xs);
+        let v = self.plane(K + 1, xs);
         if self.div[K] {
             _mm256_mul_ps(v, inv)
         } else {
@@ -729,12 +739,35 @@ impl<'a> FusedSpan<'a> {
                 (_mm256_cvtsi256_si32(fl), linear != 0, second, f)
             }
         };
-        let a = self.level(level, linear, ss, tt)?;
+        // One level's NEAREST or LINEAR as `pass_level` computes it: (0, 0, 0, 0) for a
+        // missing level, None for one that is not `dense_level`. NEAREST inline (a short
+        // kernel: the call, the prologue and the return through memory were a third of its
+        // cost), LINEAR out of line (`level_linear`). (A macro: a function stays out of line.)
+        macro_rules! level {
+            ($level:expr) => {
+                if linear {
+                    // SAFETY: the CPU has AVX2 (the caller's promise).
+                    unsafe { self.level_linear($level, ss, tt)? }
+                } else {
+                    match self.dense($level) {
+                        Ok((dt, w, h)) => match self.rep {
+                            [false, false] => nearest::<false, false>(dt, w, h, ss, tt),
+                            [false, true] => nearest::<false, true>(dt, w, h, ss, tt),
+                            [true, false] => nearest::<true, false>(dt, w, h, ss, tt),
+                            [true, true] => nearest::<true, true>(dt, w, h, ss, tt),
+                        },
+                        Err(true) => [_mm256_setzero_ps(); 4],
+                        Err(false) => return None,
+                    }
+                }
+            };
+        }
+        let a = level!(level);
         if second == 0 {
             return Some(a);
         }
         // f ≠ 0 only below `span`: level + 1 is at most `last`.
-        let b = self.level(level.saturating_add(1), linear, ss, tt)?;
+        let b = level!(level.saturating_add(1));
         // `blend_levels`: a·(1 - f) + b·f on the lanes of `second`, a on the others (every
         // lane of `m` blended: no select, the lanes outside `m` are unspecified).
         let one = _mm256_set1_ps(1.0);
@@ -876,15 +909,10 @@ impl<'a> FusedSpan<'a> {
         rr: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let view = self.view(self.s.base_level);
-        let (dt, w, h) = match view {
-            View::Dense(dt, w, h) => (dt, w, h),
-            View::Missing => return Some([_mm256_setzero_ps(); 4]),
-            View::Sparse | View::Unknown => return None,
+        let (dt, w, h) = match self.dense(self.s.base_level) {
+            Ok(d) => d,
+            Err(missing) => return missing.then(|| [_mm256_setzero_ps(); 4]),
         };
-        if dt.is_empty() {
-            return None;
-        }
         let d = match self.rep {
             [false, false] => nearest_depth::<false, false>(dt, w, h, ss, tt),
             [false, true] => nearest_depth::<false, true>(dt, w, h, ss, tt),
@@ -991,9 +1019,12 @@ impl<'a> FusedSpan<'a> {
             (n, v) if n == level && !matches!(v, View::Unknown) => v,
             _ => {
                 let sampler: &'a Sampler = self.s;
+                // (An empty level is taken as Sparse: the route's kernels need a texel.)
                 let v = match sampler.obj.face_level(0, level) {
                     None => View::Missing,
-                    Some(v) if dense_level(&v.texels, v.width, v.height) => {
+                    Some(v)
+                        if !v.texels.is_empty() && dense_level(&v.texels, v.width, v.height) =>
+                    {
                         View::Dense(&v.texels, v.width, v.height)
                     }
                     Some(_) => View::Sparse,
@@ -1004,38 +1035,51 @@ impl<'a> FusedSpan<'a> {
         }
     }
 
-    /// One level's NEAREST or LINEAR for the eight lanes (pixel-major pairs), as
-    /// `pass_level` computes it: a missing level gives (0, 0, 0, 0); a level that is not
-    /// [`dense_level`] gives None.
+    /// Level `level`'s texels and size where it is [`dense_level`] and not empty; else
+    /// whether it is missing (its texels (0, 0, 0, 0); otherwise the group takes
+    /// `texels_lanes`).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn dense(&mut self, level: i32) -> Result<(&'a [[f32; 4]], i32, i32), bool> {
+        // The cached level first: one compare of the number, one of the kind.
+        if let (n, View::Dense(dt, w, h)) = self.cache[(level & 1) as usize] {
+            if n == level {
+                return Ok((dt, w, h));
+            }
+        }
+        match self.view(level) {
+            View::Dense(dt, w, h) => Ok((dt, w, h)),
+            View::Missing => Err(true),
+            View::Sparse | View::Unknown => Err(false),
+        }
+    }
+
+    /// One level's LINEAR for the eight lanes (pixel-major pairs), as `pass_level` computes
+    /// it ([`bilinear`]): a missing level gives (0, 0, 0, 0); a level that is not
+    /// [`dense_level`] gives None. Out of line: inlined into [`FusedSpan::colors`] its
+    /// registers spill (twelfth session). (NEAREST is inline in [`FusedSpan::texels`].)
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    #[inline]
-    unsafe fn level(
+    #[inline(never)]
+    unsafe fn level_linear(
         &mut self,
         level: i32,
-        linear: bool,
         ss: std::arch::x86_64::__m256,
         tt: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let view = self.view(level);
-        let (dt, w, h) = match view {
-            View::Dense(dt, w, h) => (dt, w, h),
-            View::Missing => return Some([_mm256_setzero_ps(); 4]),
-            View::Sparse | View::Unknown => return None,
+        let (dt, w, h) = match self.dense(level) {
+            Ok(d) => d,
+            Err(missing) => return missing.then(|| [_mm256_setzero_ps(); 4]),
         };
-        if dt.is_empty() {
-            return None;
-        }
-        Some(match (linear, self.rep) {
-            (false, [false, false]) => nearest::<false, false>(dt, w, h, ss, tt),
-            (false, [false, true]) => nearest::<false, true>(dt, w, h, ss, tt),
-            (false, [true, false]) => nearest::<true, false>(dt, w, h, ss, tt),
-            (false, [true, true]) => nearest::<true, true>(dt, w, h, ss, tt),
-            (true, [false, false]) => bilinear::<false, false>(dt, w, h, ss, tt),
-            (true, [false, true]) => bilinear::<false, true>(dt, w, h, ss, tt),
-            (true, [true, false]) => bilinear::<true, false>(dt, w, h, ss, tt),
-            (true, [true, true]) => bilinear::<true, true>(dt, w, h, ss, tt),
+        Some(match self.rep {
+            [false, false] => bilinear::<false, false>(dt, w, h, ss, tt),
+            [false, true] => bilinear::<false, true>(dt, w, h, ss, tt),
+            [true, false] => bilinear::<true, false>(dt, w, h, ss, tt),
+            [true, true] => bilinear::<true, true>(dt, w, h, ss, tt),
         })
     }
 }
@@ -1078,11 +1122,23 @@ fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
 #[target_feature(enable = "avx2")]
 #[inline]
 fn plane8([a, dx, yt]: [f32; 3], xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+    plane8l(&[[a; LANES], [dx; LANES]], yt, xs)
+}
+
+/// [`plane8`] with the constant and x step `adx` on eight lanes each (`FusedSpan::pad`),
+/// the y term `yt`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn plane8l(
+    adx: &[[f32; LANES]; 2],
+    yt: f32,
+    xs: std::arch::x86_64::__m256,
+) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
-    _mm256_add_ps(
-        _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
-        _mm256_set1_ps(yt),
-    )
+    // SAFETY: each load reads the eight floats of one term.
+    let [a, dx] = adx.map(|v| unsafe { _mm256_loadu_ps(v.as_ptr()) });
+    _mm256_add_ps(_mm256_add_ps(a, _mm256_mul_ps(dx, xs)), _mm256_set1_ps(yt))
 }
 
 /// `lanes::varyings`' planes of row `fy` (constant, x step, y term `dy·fy`) of 1/w, the
@@ -1179,26 +1235,29 @@ fn load_pairs(dt: &[[f32; 4]], k: std::arch::x86_64::__m256i) -> [std::arch::x86
     }
     // SAFETY: every lane of `k` is at most `km` < 2^28, so 16·k fits a u32 and lies inside
     // `dt` (16 bytes a texel).
-    unsafe { load_at::<0>(dt, _mm256_slli_epi32::<4>(k)) }
+    unsafe { load_at::<0>(dt, _mm256_slli_epi32::<4>(k), 0) }
 }
 
-/// The texels at byte offsets `off` (and `D` texels further on) of `dt` as pixel-major pairs.
+/// The texels at byte offsets `off` (and `D` + `row` texels further on) of `dt` as
+/// pixel-major pairs.
 ///
 /// # Safety
-/// Every lane of `off` is 16·i with i + `D` < `dt.len()`.
+/// Every lane of `off` is 16·i with i + `D` + `row` < `dt.len()`.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 unsafe fn load_at<const D: usize>(
     dt: &[[f32; 4]],
     off: std::arch::x86_64::__m256i,
+    row: usize,
 ) -> [std::arch::x86_64::__m256; 4] {
     use std::arch::x86_64::*;
     // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
     let off = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(off) };
-    let p = dt.as_ptr().wrapping_add(D).cast::<u8>();
+    let p = dt.as_ptr().wrapping_add(D).wrapping_add(row).cast::<u8>();
     std::array::from_fn(|q| {
-        // SAFETY: texel i + D of `dt` (the caller's promise), 16 bytes, no alignment needed.
+        // SAFETY: texel i + D + row of `dt` (the caller's promise), 16 bytes, no alignment
+        // needed.
         unsafe {
             _mm256_loadu2_m128(
                 p.add(off[q + 4] as usize).cast::<f32>(),
@@ -1211,13 +1270,16 @@ unsafe fn load_at<const D: usize>(
 /// The four corners of [`bilinear`] (indices `$k00`, `$k10`, `$k01`, `$k11` of level texels
 /// `$dt`, each taken modulo `$dt.len()` as [`load_pairs`] takes them) as pixel-major pairs.
 /// Where every lane's `k10` is its `k00` + 1 and its `k11` its `k01` + 1 (no lane's row wraps,
-/// the common case), each row's two texels come from one address a lane; the same texels
+/// the common case), each row's two texels come from one address a lane; where moreover every
+/// lane's `k01` is its `k00` + `$w` (the level's width: no lane's column wraps either), the
+/// four from one address a lane (eight extractions instead of sixteen); the same texels
 /// either way. (A macro: as a function it stayed out of line, called from `level`'s four
 /// bilinear kernels.)
 #[cfg(target_arch = "x86_64")]
 macro_rules! load_corners {
-    ($dt:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr) => {{
+    ($dt:expr, $w:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr) => {{
         let dt: &[[f32; 4]] = $dt;
+        let w: i32 = $w;
         let (k00, k10, k01, k11) = ($k00, $k10, $k01, $k11);
         let km = dt.len().wrapping_sub(1);
         if dt.is_empty() || km >= 1 << 28 {
@@ -1236,17 +1298,31 @@ macro_rules! load_corners {
                 _mm256_cmpeq_epi32(k10, _mm256_add_epi32(k00, one)),
                 _mm256_cmpeq_epi32(k11, _mm256_add_epi32(k01, one)),
             );
+            let down = _mm256_cmpeq_epi32(k01, _mm256_add_epi32(k00, _mm256_set1_epi32(w)));
             let (o0, o1) = (_mm256_slli_epi32::<4>(k00), _mm256_slli_epi32::<4>(k01));
-            if _mm256_movemask_epi8(next) == -1 {
+            if _mm256_movemask_epi8(_mm256_and_si256(next, down)) == -1 {
+                // SAFETY: every lane has k00 + 1 = k10, k00 + w = k01 and k01 + 1 = k11, each
+                // at most km < 2^28 (w > 0: k01 > k00 as integers below 2^28): the texels
+                // k00, k00 + 1, k00 + w and k00 + w + 1 lie inside `dt` and 16·k fits a u32.
+                unsafe {
+                    let r = w as usize;
+                    [
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<1>(dt, o0, 0),
+                        load_at::<0>(dt, o0, r),
+                        load_at::<1>(dt, o0, r),
+                    ]
+                }
+            } else if _mm256_movemask_epi8(next) == -1 {
                 // SAFETY: every lane has k00 + 1 = k10 <= km and k01 + 1 = k11 <= km,
                 // km < 2^28: the texels k00, k00 + 1, k01 and k01 + 1 lie inside `dt` and 16·k
                 // fits a u32.
                 unsafe {
                     [
-                        load_at::<0>(dt, o0),
-                        load_at::<1>(dt, o0),
-                        load_at::<0>(dt, o1),
-                        load_at::<1>(dt, o1),
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<1>(dt, o0, 0),
+                        load_at::<0>(dt, o1, 0),
+                        load_at::<1>(dt, o1, 0),
                     ]
                 }
             } else {
@@ -1254,10 +1330,10 @@ macro_rules! load_corners {
                 // fits a u32.
                 unsafe {
                     [
-                        load_at::<0>(dt, o0),
-                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10)),
-                        load_at::<0>(dt, o1),
-                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11)),
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10), 0),
+                        load_at::<0>(dt, o1, 0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11), 0),
                     ]
                 }
             }
@@ -1346,6 +1422,7 @@ fn bilinear<const RX: bool, const RY: bool>(
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
     let [c00, c10, c01, c11] = load_corners!(
         dt,
+        w,
         _mm256_add_epi32(r0, x0),
         _mm256_add_epi32(r0, x1),
         _mm256_add_epi32(r1, x0),
@@ -1418,7 +1495,7 @@ fn border_bilinear<const MX: u8, const MY: u8>(
         _mm256_or_ps(inside(0, 1), inside(1, 1)),
     );
     if _mm256_movemask_ps(all_in) == 0xFF {
-        let c = load_corners!(dt, index(0, 0), index(1, 0), index(0, 1), index(1, 1));
+        let c = load_corners!(dt, w, index(0, 0), index(1, 0), index(0, 1), index(1, 1));
         return corner_sum(a, b, &c);
     }
     if _mm256_movemask_ps(any_in) == 0 {
