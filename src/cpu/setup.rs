@@ -306,6 +306,22 @@ fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; GROUPS] {
     })
 }
 
+/// The plane (value at the bounding box's corner, x slope, y slope) of a varying whose values
+/// over w at the three vertices are `f`, `l` the vertices' barycentric planes: for one varying
+/// (`f32`) or four, one per lane (`Vec4`: per lane the same multiplications and additions in
+/// the same order, so the same bits; `plane_lanes_match_scalar`).
+#[inline(always)]
+fn plane<T: Copy + std::ops::Mul<Output = T> + std::ops::Add<Output = T>>(
+    l: [[T; 3]; 3],
+    f: [T; 3],
+) -> [T; 3] {
+    [
+        f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
+        f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
+        f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+    ]
+}
+
 /// Floats k..k + 4 of `s` (0 past its end).
 #[inline(always)]
 pub(super) fn load4(s: &[f32], k: usize) -> Vec4 {
@@ -943,13 +959,6 @@ impl Worker {
             [lam[1][0] as f32, lam[1][1] as f32, lam[1][2] as f32],
             [lam[2][0] as f32, lam[2][1] as f32, lam[2][2] as f32],
         ];
-        let plane = |f: [f32; 3]| -> [f32; 3] {
-            [
-                f[0] * l32[0][0] + f[1] * l32[1][0] + f[2] * l32[2][0],
-                f[0] * l32[0][1] + f[1] * l32[1][1] + f[2] * l32[2][1],
-                f[0] * l32[0][2] + f[1] * l32[1][2] + f[2] * l32[2][2],
-            ]
-        };
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
@@ -961,22 +970,21 @@ impl Worker {
         self.pool.reserve(len);
         let out = &mut self.pool.spare_capacity_mut()[..len];
         let (head, planes) = out.split_at_mut(3);
-        for (d, s) in head.iter_mut().zip(plane(iw)) {
+        for (d, s) in head.iter_mut().zip(plane(l32, iw)) {
             d.write(s);
         }
         // Four varyings at a time, one per SIMD lane: per lane the same multiplications and
         // additions in the same order as `plane`, so the same bits. FLAT's (k < nflat, a
         // multiple of 4) keep vertex 0's value and slopes of 0.
-        let l = |r: usize, c: usize| Vec4::splat(l32[r][c]);
-        let lc = [0, 1, 2].map(|c| [l(0, c), l(1, c), l(2, c)]);
+        let l4 = l32.map(|r| r.map(Vec4::splat));
         for (gi, chunk) in planes.chunks_mut(12).enumerate() {
             let k = 4 * gi;
             let (p0, px, py) = if k < nflat {
                 (var4(0, k), Vec4::ZERO, Vec4::ZERO)
             } else {
                 let f = [var4(0, k) * iw[0], var4(1, k) * iw[1], var4(2, k) * iw[2]];
-                let p = |c: [Vec4; 3]| f[0] * c[0] + f[1] * c[1] + f[2] * c[2];
-                (p(lc[0]), p(lc[1]), p(lc[2]))
+                let [p0, px, py] = plane(l4, f);
+                (p0, px, py)
             };
             let a = [
                 p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
@@ -1270,8 +1278,37 @@ pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
 
 #[cfg(test)]
 mod tests {
-    use super::{cen, geom, geom_wins, rect_cen, Geom, Win, SNAP_LIMIT};
+    use super::{cen, geom, geom_wins, plane, rect_cen, Geom, Win, SNAP_LIMIT};
     use crate::cpu::testgen::Gen;
+    use glam::Vec4;
+
+    /// `plane` of four varyings at once (as `emit_tri` builds them) against `plane` of each
+    /// alone, bit for bit, on random planes and values (NaN and infinities among them).
+    #[test]
+    fn plane_lanes_match_scalar() {
+        let mut g = Gen(0x91a4_e5c3);
+        let val = |g: &mut Gen| match g.next() % 8 {
+            0 => [f32::INFINITY, -1e-40, 3e38][g.next() as usize % 3],
+            _ => g.float(),
+        };
+        // Every NaN one value (which NaN's payload an operation passes on is not compared).
+        let bits = |v: f32| if v.is_nan() { u32::MAX } else { v.to_bits() };
+        for _ in 0..20_000 {
+            let l: [[f32; 3]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut g)));
+            let f: [[f32; 4]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut g)));
+            let wide = plane(l.map(|r| r.map(Vec4::splat)), f.map(Vec4::from_array));
+            for i in 0..4 {
+                let one = plane(l, [f[0][i], f[1][i], f[2][i]]);
+                for c in 0..3 {
+                    assert_eq!(
+                        bits(wide[c].to_array()[i]),
+                        bits(one[c]),
+                        "lane {i}, coefficient {c}: l {l:?}, f {f:?}"
+                    );
+                }
+            }
+        }
+    }
 
     /// Every field of `g`.
     type Fields = (
