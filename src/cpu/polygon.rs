@@ -10,8 +10,8 @@
 use super::assembly::{Asm, RESET_STIPPLE};
 use super::clip::MAX_POLY;
 use super::setup::{
-    geom, offset, PrimKind, RPrim, SetupCtx, WVert, Win, Worker, COVER_KNOWN, F_BACK, F_FLAT,
-    F_PHONG, MAXV,
+    geom, load4, offset, PrimKind, RPrim, SetupCtx, WVert, Win, Worker, COVER_KNOWN, F_BACK,
+    F_FLAT, F_PHONG, MAXV,
 };
 use crate::gl;
 use std::mem::MaybeUninit;
@@ -271,8 +271,7 @@ impl Worker {
             [a.iw, b.iw, c.iw],
             flags,
             mat,
-            |j, k| v[j].v[k],
-            None,
+            |j, k| load4(&v[j].v, k),
             cover,
         );
     }

@@ -15,6 +15,8 @@
 //! else (clipping, PolygonMode LINE/POINT, PHONG_WIN, points and lines) takes the general path
 //! in `polygon.rs` (lines themselves in `line.rs`).
 
+use std::mem::MaybeUninit;
+
 use glam::Vec4;
 
 use super::assembly::Asm;
@@ -225,8 +227,9 @@ pub struct SetupCtx {
     pub tiles: usize,
     /// Unclipped triangles take `Worker::fast_tri`: FILL for both faces and no PHONG_WIN.
     fast: bool,
-    /// Where each varying comes from, front face then back face (for `fast_tri`).
-    gather: [[Gather; MAXV]; 2],
+    /// Where each group of four varyings comes from, front face then back face (for
+    /// `fast_tri`).
+    gather: [[Gather4; GROUPS]; 2],
 }
 
 /// Where one varying of a face comes from in a processed vertex.
@@ -238,8 +241,25 @@ struct Gather {
     colour: bool,
 }
 
-/// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN.
-fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
+/// Groups of four varyings (k..k + 4, k a multiple of 4) that `emit_tri` builds planes for.
+const GROUPS: usize = MAXV.div_ceil(4);
+
+/// Where the four varyings k..k + 4 of a face come from in a processed vertex.
+#[derive(Clone, Copy, Debug)]
+struct Gather4 {
+    /// Offset of each in the processed vertex; out of range (`u32::MAX`) for one that stays 0.
+    off: [u32; 4],
+    /// The group's varyings (those below `RLayout::n`) sit one after another from `off[0]`,
+    /// four floats inside the vertex: one load of four.
+    run: bool,
+    /// Colours (all four or none: the colours are groups of their own): taken from the
+    /// provoking vertex under FLAT.
+    colour: bool,
+}
+
+/// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN, in
+/// groups of four.
+fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; GROUPS] {
     let mut t = [Gather {
         off: u32::MAX,
         colour: false,
@@ -270,7 +290,47 @@ fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather; MAXV] {
     if let (Some(d), Some(s)) = (rl.fog, l.fog) {
         set(d, s, 1, false);
     }
-    t
+    std::array::from_fn(|g| {
+        let k = 4 * g;
+        let live = rl.n.min(MAXV).saturating_sub(k).min(4);
+        let lane = |i: usize| t.get(k + i).copied();
+        let off = std::array::from_fn(|i| lane(i).map_or(u32::MAX, |v| v.off));
+        let o = off[0] as usize;
+        let run = live > 0 && o + 4 <= l.stride && (0..live).all(|i| off[i] as usize == o + i);
+        let colour = lane(0).is_some_and(|v| v.colour);
+        debug_assert!(
+            (0..live).all(|i| lane(i).is_some_and(|v| v.colour == colour)),
+            "group {g} mixes colours and other varyings"
+        );
+        Gather4 { off, run, colour }
+    })
+}
+
+/// The plane (value at the bounding box's corner, x slope, y slope) of a varying whose values
+/// over w at the three vertices are `f`, `l` the vertices' barycentric planes: for one varying
+/// (`f32`) or four, one per lane (`Vec4`: per lane the same multiplications and additions in
+/// the same order, so the same bits; `plane_lanes_match_scalar`).
+#[inline(always)]
+fn plane<T: Copy + std::ops::Mul<Output = T> + std::ops::Add<Output = T>>(
+    l: [[T; 3]; 3],
+    f: [T; 3],
+) -> [T; 3] {
+    [
+        f[0] * l[0][0] + f[1] * l[1][0] + f[2] * l[2][0],
+        f[0] * l[0][1] + f[1] * l[1][1] + f[2] * l[2][1],
+        f[0] * l[0][2] + f[1] * l[1][2] + f[2] * l[2][2],
+    ]
+}
+
+/// Floats k..k + 4 of `s` (0 past its end).
+#[inline(always)]
+pub(super) fn load4(s: &[f32], k: usize) -> Vec4 {
+    match s.get(k..k + 4).and_then(|a| <[f32; 4]>::try_from(a).ok()) {
+        Some(a) => Vec4::from_array(a),
+        None => Vec4::from_array(std::array::from_fn(|i| {
+            s.get(k + i).copied().unwrap_or(0.0)
+        })),
+    }
 }
 
 impl SetupCtx {
@@ -811,60 +871,52 @@ impl Worker {
         let mat = mats.get(provoking as usize).copied().unwrap_or(0);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
-        let quad = if ctx.rl.n == 4 && !flat {
-            // The colour alone, smooth: its four floats straight from each vertex (what
-            // `vert(i)[o..o + 4]` is), one range check each instead of two.
-            let o = table[0].off as usize;
+        let (z, iw) = ([ws[0].z, ws[1].z, ws[2].z], [ws[0].iw, ws[1].iw, ws[2].iw]);
+        if ctx.rl.n == 4 && !flat {
+            // The colour alone, smooth (the common dense mesh): its four floats straight from
+            // each vertex (what `load4(vert(i), o)` is), one range check each instead of two.
+            let o = table[0].off[0] as usize;
             let c = |i: u32| {
-                let b = i as usize * s + o;
-                vout.get(b..b + 4)
+                let b = i as usize * s;
+                vout.get(b + o..b + o + 4)
                     .filter(|_| o + 4 <= s)
                     .and_then(|c| <[f32; 4]>::try_from(c).ok())
                     .map(Vec4::from_array)
             };
-            match (c(ids[0]), c(ids[1]), c(ids[2])) {
-                (Some(a), Some(b), Some(c)) => Some([a, b, c]),
-                _ => None,
+            if let (Some(a), Some(b), Some(c)) = (c(ids[0]), c(ids[1]), c(ids[2])) {
+                let q = [a, b, c];
+                self.emit_tri(ctx, &g, z, iw, flags, mat, |j, _| q[j], cover);
+                return;
             }
-        } else {
-            None
-        };
-        // The whole vertices only where `emit_tri` reads varyings through `var`: without
-        // `quad`, and the provoking vertex only under FLAT (the only case `var` reads it).
+        }
+        // The whole vertices, the provoking one only under FLAT (the only case `var4` reads it).
         let vert = |i: u32| {
             let i = i as usize;
             debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
             vout.get(i * s..(i + 1) * s).unwrap_or(&[])
         };
-        let (vs, prov) = match quad {
-            Some(_) => ([&[][..]; 3], &[][..]),
-            None => (
-                [vert(ids[0]), vert(ids[1]), vert(ids[2])],
-                if flat { vert(provoking) } else { &[][..] },
-            ),
+        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
+        let prov = if flat { vert(provoking) } else { &[][..] };
+        // Varyings k..k + 4 of vertex j: colours from the provoking vertex under FLAT
+        // (`emit_tri` reads them of vertex 0 only there); a run of four floats in one load,
+        // otherwise one float each.
+        let var4 = |j: usize, k: usize| {
+            let Some(t) = table.get(k / 4) else {
+                return Vec4::ZERO;
+            };
+            let src = if t.colour && flat { prov } else { vs[j] };
+            if t.run {
+                return load4(src, t.off[0] as usize);
+            }
+            Vec4::from_array(t.off.map(|o| src.get(o as usize).copied().unwrap_or(0.0)))
         };
-        self.emit_tri(
-            ctx,
-            &g,
-            [ws[0].z, ws[1].z, ws[2].z],
-            [ws[0].iw, ws[1].iw, ws[2].iw],
-            flags,
-            mat,
-            |j, k| {
-                let t = table[k];
-                let src = if t.colour && flat { prov } else { vs[j] };
-                src.get(t.off as usize).copied().unwrap_or(0.0)
-            },
-            quad,
-            cover,
-        );
+        self.emit_tri(ctx, &g, z, iw, flags, mat, var4, cover);
     }
 
     /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
-    /// `iw` their window z and 1/w, `var(j, k)` varying k of vertex j, or `quad` the
-    /// vertices' four varyings when there are exactly four and none is flat; `cover` from
-    /// `Geom::coverage`): barycentric planes, depth plane, one plane per varying, and the
-    /// primitive.
+    /// `iw` their window z and 1/w, `var4(j, k)` varyings k..k + 4 of vertex j, k a multiple
+    /// of 4, lanes past the last varying anything; `cover` from `Geom::coverage`): barycentric
+    /// planes, depth plane, one plane per varying, and the primitive.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     pub(super) fn emit_tri(
@@ -875,8 +927,7 @@ impl Worker {
         iw: [f32; 3],
         flags: u8,
         mat: u32,
-        var: impl Fn(usize, usize) -> f32,
-        quad: Option<[Vec4; 3]>,
+        var4: impl Fn(usize, usize) -> Vec4,
         cover: u8,
     ) {
         let (area, bbox) = (g.area, g.bbox);
@@ -908,46 +959,47 @@ impl Worker {
             [lam[1][0] as f32, lam[1][1] as f32, lam[1][2] as f32],
             [lam[2][0] as f32, lam[2][1] as f32, lam[2][2] as f32],
         ];
-        let plane = |f: [f32; 3]| -> [f32; 3] {
-            [
-                f[0] * l32[0][0] + f[1] * l32[1][0] + f[2] * l32[2][0],
-                f[0] * l32[0][1] + f[1] * l32[1][1] + f[2] * l32[2][1],
-                f[0] * l32[0][2] + f[1] * l32[1][2] + f[2] * l32[2][2],
-            ]
-        };
         let nflat = if flags & F_FLAT != 0 {
             ctx.rl.spec.map_or(4, |s| s + 4)
         } else {
             0
         };
-        let voff = self.pool.len() as u32;
-        let pw = plane(iw);
-        if let (Some(f), 0) = (quad, nflat) {
-            // Four smooth varyings, one per SIMD lane: per lane the same multiplications and
-            // additions in the same order as `plane`, so the same bits.
-            let f = [f[0] * iw[0], f[1] * iw[1], f[2] * iw[2]];
-            let p = |c: usize| {
-                f[0] * Vec4::splat(l32[0][c])
-                    + f[1] * Vec4::splat(l32[1][c])
-                    + f[2] * Vec4::splat(l32[2][c])
+        let n = ctx.rl.n.min(MAXV);
+        let voff = self.pool.len();
+        let len = 3 * (n + 1);
+        self.pool.reserve(len);
+        let out = &mut self.pool.spare_capacity_mut()[..len];
+        let (head, planes) = out.split_at_mut(3);
+        for (d, s) in head.iter_mut().zip(plane(l32, iw)) {
+            d.write(s);
+        }
+        // Four varyings at a time, one per SIMD lane: per lane the same multiplications and
+        // additions in the same order as `plane`, so the same bits. FLAT's (k < nflat, a
+        // multiple of 4) keep vertex 0's value and slopes of 0.
+        let l4 = l32.map(|r| r.map(Vec4::splat));
+        for (gi, chunk) in planes.chunks_mut(12).enumerate() {
+            let k = 4 * gi;
+            let (p0, px, py) = if k < nflat {
+                (var4(0, k), Vec4::ZERO, Vec4::ZERO)
+            } else {
+                let f = [var4(0, k) * iw[0], var4(1, k) * iw[1], var4(2, k) * iw[2]];
+                let [p0, px, py] = plane(l4, f);
+                (p0, px, py)
             };
-            let (p0, px, py) = (p(0), p(1), p(2));
-            self.pool.extend_from_slice(&[
-                pw[0], pw[1], pw[2], p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w,
-                px.w, py.w,
-            ]);
-        } else {
-            self.pool.extend_from_slice(&pw);
-            for k in 0..ctx.rl.n.min(MAXV) {
-                let f0 = var(0, k);
-                if k < nflat {
-                    self.pool.extend_from_slice(&[f0, 0.0, 0.0]);
-                } else {
-                    let f = [f0 * iw[0], var(1, k) * iw[1], var(2, k) * iw[2]];
-                    self.pool.extend_from_slice(&plane(f));
-                }
+            let a = [
+                p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
+            ];
+            // A whole group as twelve stores; the last varyings (fewer than four) one by one.
+            let w = |(d, s): (&mut MaybeUninit<f32>, f32)| _ = d.write(s);
+            match <&mut [_; 12]>::try_from(&mut *chunk) {
+                Ok(c) => c.iter_mut().zip(a).for_each(w),
+                Err(_) => chunk.iter_mut().zip(a).for_each(w),
             }
         }
+        // SAFETY: `reserve` made room for `len` more floats, and every one of them was written
+        // above (`head` and each chunk of `planes` whole).
+        unsafe { self.pool.set_len(voff + len) };
+        let voff = voff as u32;
         self.push(RPrim {
             kind: PrimKind::Tri,
             flags,
@@ -1226,8 +1278,37 @@ pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
 
 #[cfg(test)]
 mod tests {
-    use super::{cen, geom, geom_wins, rect_cen, Geom, Win, SNAP_LIMIT};
+    use super::{cen, geom, geom_wins, plane, rect_cen, Geom, Win, SNAP_LIMIT};
     use crate::cpu::testgen::Gen;
+    use glam::Vec4;
+
+    /// `plane` of four varyings at once (as `emit_tri` builds them) against `plane` of each
+    /// alone, bit for bit, on random planes and values (NaN and infinities among them).
+    #[test]
+    fn plane_lanes_match_scalar() {
+        let mut g = Gen(0x91a4_e5c3);
+        let val = |g: &mut Gen| match g.next() % 8 {
+            0 => [f32::INFINITY, -1e-40, 3e38][g.next() as usize % 3],
+            _ => g.float(),
+        };
+        // Every NaN one value (which NaN's payload an operation passes on is not compared).
+        let bits = |v: f32| if v.is_nan() { u32::MAX } else { v.to_bits() };
+        for _ in 0..20_000 {
+            let l: [[f32; 3]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut g)));
+            let f: [[f32; 4]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| val(&mut g)));
+            let wide = plane(l.map(|r| r.map(Vec4::splat)), f.map(Vec4::from_array));
+            for i in 0..4 {
+                let one = plane(l, [f[0][i], f[1][i], f[2][i]]);
+                for c in 0..3 {
+                    assert_eq!(
+                        bits(wide[c].to_array()[i]),
+                        bits(one[c]),
+                        "lane {i}, coefficient {c}: l {l:?}, f {f:?}"
+                    );
+                }
+            }
+        }
+    }
 
     /// Every field of `g`.
     type Fields = (

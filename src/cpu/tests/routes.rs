@@ -15,7 +15,8 @@ use super::lighting::Rng;
 
 /// Random strips, fans, triangles, quads and polygons (some crossing the view volume's planes,
 /// so that clipping runs, many a pixel or two wide, so that the 2x2 coverage runs) under random
-/// culling, facing, FLAT, polygon offset, scissor, lighting and texturing, set up by both
+/// culling, facing, FLAT, polygon offset, scissor, lighting, texturing on one to four units,
+/// the secondary colour and fog, set up by both
 /// routes: every primitive's fields, every float of the pool, every touched bin and the area
 /// are the same.
 #[test]
@@ -50,8 +51,18 @@ fn both_routes_set_up_the_same_primitives() {
         st.enables.lighting = case % 3 == 0;
         st.enables.lights[0] = true;
         st.light_model.two_side = case % 2 == 0;
-        st.enables.texture_2d[0] = case % 4 == 2;
-        st.enables.fog = case % 5 == 0;
+        // Many varyings: textures on several units (in groups of four, one, two or four
+        // units), the secondary colour (FLAT with it: eight flat varyings), the fog coordinate
+        // (a lone varying at the end).
+        for u in 0..4 {
+            st.enables.texture_2d[u] =
+                case % 4 == 2 || (case % 8 == 5 && u % 2 == 1) || (case % 8 == 7);
+        }
+        if case % 3 == 0 && case % 4 != 0 {
+            st.light_model.color_control = gl::SEPARATE_SPECULAR_COLOR;
+        }
+        st.enables.color_sum = case % 7 == 1;
+        st.enables.fog = case % 5 == 0 || case % 8 == 7;
         // Small cells (many triangles of a pixel or two) or large ones.
         let scale = if case % 2 == 0 { 0.02 } else { 0.6 };
         *st.projection.top_mut() = Mat4::perspective_rh_gl(1.2, 1.5, 0.5, 20.0);
