@@ -82,6 +82,8 @@ pub struct Sampler {
     env_color: Vec4,
     /// The COMBINE parameters.
     combine: Combine,
+    /// COMBINE's choices that depend only on the flush's state, for `combine8`.
+    comb_pick: targets::CombinePick,
     /// The sampling routine of this flush.
     route: Route,
     /// TEXTURE_COMPARE_FUNC when TEXTURE_COMPARE_MODE is COMPARE_R_TO_TEXTURE on a depth texture.
@@ -128,7 +130,7 @@ impl Sampler {
         );
         let (dense, lod_kernel, in_image) =
             targets::target_levels(obj, dims, cube, compare.is_some(), wrap);
-        Some(Sampler {
+        let mut s = Sampler {
             unit,
             crossbar,
             dense,
@@ -176,7 +178,10 @@ impl Sampler {
             compare,
             depth_mode: obj.depth_texture_mode,
             obj: Arc::clone(obj),
-        })
+            comb_pick: targets::CombinePick::default(),
+        };
+        s.comb_pick = targets::CombinePick::of(&s);
+        Some(s)
     }
 
     /// Does the result depend on λ? Not when no mipmaps are used and the minification and

@@ -374,6 +374,8 @@ fn combine_lanes_on_awkward_values_are_shade_texel_bit_for_bit() {
         let mut s = sampler_on(gl::TEXTURE_2D, obj, gl::COMBINE, combine);
         if depth {
             s.depth_mode = [gl::LUMINANCE, gl::INTENSITY, gl::ALPHA][round % 3];
+            // The choices `Sampler::new` made for the old mode.
+            s.comb_pick = super::CombinePick::of(&s);
         }
         let mut value = || -> f32 {
             match next() % 4 {

@@ -824,29 +824,23 @@ impl Sampler {
         let c = &self.combine;
         let zero = _mm256_setzero_ps();
         let (one, half) = (_mm256_set1_ps(1.0), _mm256_set1_ps(0.5));
-        let used = |s: u32| c.src_rgb.contains(&s) || c.src_alpha.contains(&s);
         // The sources by reference (copied by value, each read moved four registers through
         // the stack), an unused one as zeros.
         let zeros: C = [zero; 4];
         let tex_ch: C;
-        let tex = match used(gl::TEXTURE) {
-            true => {
+        let tex = match self.comb_pick.tex {
+            Some(pick) => {
                 let ch = load8(|l| t[l]);
-                // `combine_texel` of the channel numbers 2..=5: each result channel is 0, 1
-                // or the number of the texel channel it reads.
-                let pick = self.combine_texel([2.0, 3.0, 4.0, 5.0]).to_array();
-                tex_ch = pick.map(|k| match k as usize {
-                    1 => one,
-                    k @ 2..=5 => ch[k - 2],
-                    _ => zero,
-                });
+                // By `pick`'s numbers: 0, 1, then the texel's channels.
+                let regs = [zero, one, ch[0], ch[1], ch[2], ch[3]];
+                tex_ch = pick.map(|k| regs.get(usize::from(k)).copied().unwrap_or(zero));
                 &tex_ch
             }
-            false => &zeros,
+            None => &zeros,
         };
         let prev = load8(|l| cf[l].to_array());
         let prim_ch: C;
-        let prim = match used(gl::PRIMARY_COLOR) {
+        let prim = match self.comb_pick.prim {
             true => {
                 prim_ch = load8(|l| prim[l].to_array());
                 &prim_ch
@@ -854,20 +848,12 @@ impl Sampler {
             false => &zeros,
         };
         let konst: C = self.env_color.to_array().map(|x| _mm256_set1_ps(x));
-        let src = |s: u32| -> &C {
-            match s {
-                gl::CONSTANT => &konst,
-                gl::PRIMARY_COLOR => prim,
-                gl::PREVIOUS => &prev,
-                gl::TEXTURE => tex,
-                // A TEXTUREn source (the crossbar) never reaches the lanes; an unknown source
-                // reads zero, as in `combine`.
-                _ => &zeros,
-            }
-        };
+        // By `CombinePick::src`'s numbers.
+        let srcs: [&C; 5] = [&zeros, &konst, prim, &prev, tex];
+        let src = |s: u8| -> &C { srcs.get(usize::from(s)).copied().unwrap_or(&zeros) };
         let minus = |x: __m256| _mm256_sub_ps(one, x);
         let arg_rgb = |k: usize| -> Rgb {
-            let v = src(c.src_rgb[k]);
+            let v = src(self.comb_pick.src_rgb[k]);
             match c.operand_rgb[k] {
                 gl::ONE_MINUS_SRC_COLOR => [minus(v[0]), minus(v[1]), minus(v[2])],
                 gl::SRC_ALPHA => [v[3]; 3],
@@ -876,7 +862,7 @@ impl Sampler {
             }
         };
         let arg_a = |k: usize| -> __m256 {
-            let a = src(c.src_alpha[k])[3];
+            let a = src(self.comb_pick.src_alpha[k])[3];
             match c.operand_alpha[k] == gl::ONE_MINUS_SRC_ALPHA {
                 true => minus(a),
                 false => a,
@@ -954,6 +940,57 @@ impl Sampler {
         store8(&ch, 0xff, &mut o);
         for (c, o) in cf.iter_mut().zip(o) {
             *c = Vec4::from_array(o);
+        }
+    }
+}
+
+/// COMBINE's choices for [`Sampler::combine8`] that depend only on the flush's state, made
+/// once when the sampler is built (texture-targets: ≈40 instructions a call when `combine8`
+/// made them for every eight fragments).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CombinePick {
+    /// Where a source reads TEXTURE: each channel of `combine_texel` of the texel as 0, 1 or
+    /// 2 + the texel channel it reads (`combine_texel` of the channel numbers 2..=5).
+    tex: Option<[u8; 4]>,
+    /// Whether a source reads PRIMARY_COLOR.
+    prim: bool,
+    /// The sources of the RGB and alpha arguments as `combine8` numbers them: 0 zero, 1
+    /// CONSTANT, 2 PRIMARY_COLOR, 3 PREVIOUS, 4 TEXTURE.
+    src_rgb: [u8; 3],
+    src_alpha: [u8; 3],
+}
+
+impl CombinePick {
+    /// The choices of `s`'s COMBINE state.
+    pub fn of(s: &Sampler) -> Self {
+        let c = &s.combine;
+        let used = |src: u32| c.src_rgb.contains(&src) || c.src_alpha.contains(&src);
+        CombinePick {
+            tex: used(gl::TEXTURE).then(|| {
+                s.combine_texel([2.0, 3.0, 4.0, 5.0]).to_array().map(|k| {
+                    if (1.0..=5.0).contains(&k) {
+                        k as u8
+                    } else {
+                        0
+                    }
+                })
+            }),
+            prim: used(gl::PRIMARY_COLOR),
+            src_rgb: c.src_rgb.map(Self::source),
+            src_alpha: c.src_alpha.map(Self::source),
+        }
+    }
+
+    /// A source's number (`src_rgb`).
+    fn source(s: u32) -> u8 {
+        match s {
+            gl::CONSTANT => 1,
+            gl::PRIMARY_COLOR => 2,
+            gl::PREVIOUS => 3,
+            gl::TEXTURE => 4,
+            // A TEXTUREn source (the crossbar) never reaches the lanes; an unknown source
+            // reads zero, as in `combine`.
+            _ => 0,
         }
     }
 }
