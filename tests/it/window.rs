@@ -48,6 +48,10 @@ fn x_display() -> Option<(String, Option<Xvfb>)> {
     if let Some(d) = std::env::var("DISPLAY").ok().filter(|d| !d.is_empty()) {
         return Some((d, None));
     }
+    // -noreset: by default Xvfb resets itself when its last client disconnects, and a client
+    // that connects during the reset is dropped before its set-up is answered ("Failed to open
+    // connection to X server"): a test that runs `fixedgl view` twice on one server hit that
+    // window in a loaded CI run.
     let spawned = Command::new("Xvfb")
         .args([
             "-displayfd",
@@ -57,6 +61,7 @@ fn x_display() -> Option<(String, Option<Xvfb>)> {
             "1280x1024x24",
             "-nolisten",
             "tcp",
+            "-noreset",
         ])
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
