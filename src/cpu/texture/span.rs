@@ -1882,7 +1882,10 @@ mod tests {
             // SAFETY: the CPU has AVX2 (checked above); the registers have the layouts of the
             // arrays and every bit pattern is valid for both.
             let (la, lin, f) = unsafe {
-                let (la, lin, f) = select8(&s, std::mem::transmute::<[f32; LANES], _>(lam));
+                let (la, lin, f) = select8(
+                    &s,
+                    std::mem::transmute::<[f32; LANES], std::arch::x86_64::__m256>(lam),
+                );
                 (
                     std::mem::transmute::<std::arch::x86_64::__m256i, [i32; LANES]>(la),
                     lin,
