@@ -1842,14 +1842,7 @@ mod tests {
         let Some(s0) = Sampler::new(&state, 0) else {
             panic!("complete");
         };
-        let mins = [
-            gl::NEAREST,
-            gl::LINEAR,
-            gl::NEAREST_MIPMAP_NEAREST,
-            gl::LINEAR_MIPMAP_NEAREST,
-            gl::NEAREST_MIPMAP_LINEAR,
-            gl::LINEAR_MIPMAP_LINEAR,
-        ];
+        let mins = crate::cpu::testgen::MIN_FILTERS;
         let special = [
             f32::NAN,
             f32::INFINITY,
