@@ -716,7 +716,15 @@ impl<'a> FusedSpan<'a> {
             Route::Lod => {
                 let (lv, linear, f) = match self.quads_select(x) {
                     Some(q) => q,
-                    None => select8(s, self.lambda(x)),
+                    None => {
+                        let lam = std::mem::transmute::<__m256, [f32; LANES]>(self.lambda(x));
+                        let (la, lin, f) = s.select_lanes(&lam);
+                        (
+                            std::mem::transmute::<[i32; LANES], __m256i>(la),
+                            lin,
+                            std::mem::transmute::<[f32; LANES], __m256>(f),
+                        )
+                    }
                 };
                 // The first lane of `m`'s level on every lane (`mask_eq`'s compare), the lanes
                 // with a second level (`mask_ne_zero`: f != 0, a NaN included).
