@@ -3094,14 +3094,7 @@ mod tests {
             return;
         }
         let mut g = Gen(53);
-        let mins = [
-            gl::NEAREST,
-            gl::LINEAR,
-            gl::NEAREST_MIPMAP_NEAREST,
-            gl::LINEAR_MIPMAP_NEAREST,
-            gl::NEAREST_MIPMAP_LINEAR,
-            gl::LINEAR_MIPMAP_LINEAR,
-        ];
+        let mins = crate::cpu::testgen::MIN_FILTERS;
         let wraps = [gl::REPEAT, gl::CLAMP_TO_EDGE];
 
         let funcs = [

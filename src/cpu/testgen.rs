@@ -13,6 +13,17 @@ pub(crate) const COMPARE_FUNCS: [u32; 8] = [
     crate::gl::ALWAYS,
 ];
 
+/// The six minification filters (TEXTURE_MIN_FILTER), NEAREST and LINEAR then the mipmap
+/// filters in enum order.
+pub(crate) const MIN_FILTERS: [u32; 6] = [
+    crate::gl::NEAREST,
+    crate::gl::LINEAR,
+    crate::gl::NEAREST_MIPMAP_NEAREST,
+    crate::gl::LINEAR_MIPMAP_NEAREST,
+    crate::gl::NEAREST_MIPMAP_LINEAR,
+    crate::gl::LINEAR_MIPMAP_LINEAR,
+];
+
 pub(crate) struct Gen(pub u64);
 
 impl Gen {

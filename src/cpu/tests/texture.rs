@@ -632,14 +632,7 @@ fn texels_lanes_and_env_lanes_are_shade_bit_for_bit() {
         gl::CLAMP_TO_BORDER,
         gl::MIRRORED_REPEAT,
     ];
-    let mins = [
-        gl::NEAREST,
-        gl::LINEAR,
-        gl::NEAREST_MIPMAP_NEAREST,
-        gl::LINEAR_MIPMAP_NEAREST,
-        gl::NEAREST_MIPMAP_LINEAR,
-        gl::LINEAR_MIPMAP_LINEAR,
-    ];
+    let mins = crate::cpu::testgen::MIN_FILTERS;
     let sizes = [(1, 1), (4, 4), (8, 2), (5, 3), (16, 16), (7, 1), (64, 32)];
     let mut checked = 0;
     for round in 0..1500 {
@@ -885,14 +878,7 @@ fn level_selection_is_the_reference_selection() {
     // wrote it with `f32::ceil` / `floor`, for every minification filter, both switch points,
     // random LOD bounds (min > max and NaN among them), biases and λ (NaN, infinities, huge).
     let mut next = lcg(17u64);
-    let mins = [
-        gl::NEAREST,
-        gl::LINEAR,
-        gl::NEAREST_MIPMAP_NEAREST,
-        gl::LINEAR_MIPMAP_NEAREST,
-        gl::NEAREST_MIPMAP_LINEAR,
-        gl::LINEAR_MIPMAP_LINEAR,
-    ];
+    let mins = crate::cpu::testgen::MIN_FILTERS;
     let lv = |n: i32| level(n, n, gl::LUMINANCE, |_, _| [0.5, 0.0, 0.0, 0.0]);
     let pick = |next: &mut dyn FnMut() -> u64| match next() % 8 {
         0 => [f32::NAN, f32::INFINITY, -f32::INFINITY, 1e30, -1e30][(next() % 5) as usize],

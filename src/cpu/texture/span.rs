@@ -879,11 +879,13 @@ impl<'a> FusedSpan<'a> {
             _mm256_set1_epi32(start),
             _mm256_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14),
         );
-        let lam = std::mem::transmute::<__m256, [f32; LANES]>(self.lambda_quads(qi));
-        let (la, lin, f) = self.s.select_lanes(&lam);
+        let (la, lin, f) = select8(self.s, self.lambda_quads(qi));
         if let (Some(lv), Some(fv)) = (self.qlv.get_mut(k..k + 8), self.qf.get_mut(k..k + 8)) {
-            lv.copy_from_slice(&la);
-            fv.copy_from_slice(&f);
+            // SAFETY: each store writes the eight values of `lv` or `fv`.
+            unsafe {
+                _mm256_storeu_si256(lv.as_mut_ptr().cast::<__m256i>(), la);
+                _mm256_storeu_ps(fv.as_mut_ptr(), f);
+            }
             self.qlin = (self.qlin & !(0xFF << k)) | u64::from(lin) << k;
             self.qdone |= 1 << b;
         }
@@ -1082,6 +1084,78 @@ impl<'a> FusedSpan<'a> {
             [true, true] => bilinear::<true, true>(dt, w, h, ss, tt),
         })
     }
+}
+
+/// [`Sampler::select_lanes`] of sampler `s` for the eight λ `lambda` in AVX2 registers: the
+/// same steps lane by lane (bias, NaN as 0, the LOD bounds, the minification filter's arm,
+/// the magnification lanes), each lane exactly the scalar choice. `f32::min`/`max` as LLVM
+/// lowers them (`minps`/`maxps` with the bound first: the value itself on a tie, the value
+/// where the bound is NaN; the value is never NaN), the floors by `ifloor8_num` (its
+/// arguments are never NaN). Returns the lanes' levels, the lanes that filter LINEAR (bit l)
+/// and the second-level weights.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn select8(
+    s: &Sampler,
+    lambda: std::arch::x86_64::__m256,
+) -> (std::arch::x86_64::__m256i, u8, std::arch::x86_64::__m256) {
+    use std::arch::x86_64::*;
+    let zero = _mm256_setzero_ps();
+    let x = _mm256_add_ps(lambda, _mm256_set1_ps(s.bias));
+    let x = _mm256_andnot_ps(_mm256_cmp_ps::<_CMP_UNORD_Q>(x, x), x);
+    let lam = _mm256_max_ps(
+        _mm256_set1_ps(s.min_lod),
+        _mm256_min_ps(_mm256_set1_ps(s.max_lod), x),
+    );
+    let (base, last) = (s.base_level, s.last);
+    let span = (last - base) as f32;
+    let span_i = last.wrapping_sub(base);
+    let basev = _mm256_set1_epi32(base);
+    let (lv, f, min_lin) = match s.min {
+        gl::NEAREST_MIPMAP_NEAREST | gl::LINEAR_MIPMAP_NEAREST => {
+            let x = _mm256_max_ps(
+                zero,
+                _mm256_min_ps(
+                    _mm256_set1_ps(span + 2.0),
+                    _mm256_add_ps(lam, _mm256_set1_ps(0.5)),
+                ),
+            );
+            let tr = super::ifloor8_num(x);
+            // c = tr + 1 where tr < x (the mask is -1 there).
+            let short = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(_mm256_cvtepi32_ps(tr), x));
+            let c = _mm256_sub_epi32(tr, short);
+            let d = _mm256_min_epi32(
+                _mm256_sub_epi32(c, _mm256_set1_epi32(1)),
+                _mm256_set1_epi32(span_i),
+            );
+            let low = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LE_OQ>(lam, _mm256_set1_ps(0.5)));
+            let lv = _mm256_add_epi32(basev, _mm256_andnot_si256(low, d));
+            (lv, zero, super::lin(s.min) == gl::LINEAR)
+        }
+        gl::NEAREST_MIPMAP_LINEAR | gl::LINEAR_MIPMAP_LINEAR => {
+            let spanv = _mm256_set1_ps(span);
+            let x = _mm256_min_ps(spanv, _mm256_max_ps(zero, lam));
+            let d1 = super::ifloor8_num(x);
+            let top = _mm256_cmp_ps::<_CMP_GE_OQ>(lam, spanv);
+            let lv = _mm256_blendv_epi8(
+                _mm256_add_epi32(basev, d1),
+                _mm256_set1_epi32(last),
+                _mm256_castps_si256(top),
+            );
+            let f = _mm256_andnot_ps(top, _mm256_sub_ps(lam, _mm256_cvtepi32_ps(d1)));
+            (lv, f, super::lin(s.min) == gl::LINEAR)
+        }
+        m => (basev, zero, m != gl::NEAREST),
+    };
+    // The magnification lanes (λ <= c, false for NaN): the base level, no second level.
+    let mag = _mm256_cmp_ps::<_CMP_LE_OQ>(lam, _mm256_set1_ps(s.c));
+    let lv = _mm256_blendv_epi8(lv, basev, _mm256_castps_si256(mag));
+    let f = _mm256_andnot_ps(mag, f);
+    let magb = _mm256_movemask_ps(mag) as u8;
+    let all = |b: bool| if b { 0xffu8 } else { 0 };
+    let linear = (magb & all(s.mag != gl::NEAREST)) | (!magb & all(min_lin));
+    (lv, linear, f)
 }
 
 /// Is sampler `s` a depth texture's comparison the route covers: NEAREST on the base level
@@ -1748,5 +1822,82 @@ mod tests {
             }
         }
         assert!(checked > 10000, "{checked} groups from the quads");
+    }
+    /// [`select8`] against [`Sampler::select_lanes`] bit for bit on every lane: each MIN and
+    /// MAG filter, random λ (NaN, infinities, signed zeros, subnormals, random bits, values
+    /// about the levels), biases, LOD bounds (NaN and signed zeros among them), c, base and
+    /// last levels.
+    #[test]
+    fn select8_is_select_lanes_bit_for_bit() {
+        if !crate::cpu::lanes::has_avx2() {
+            return;
+        }
+        let mut obj = TexObject {
+            min_filter: gl::NEAREST,
+            ..TexObject::default()
+        };
+        obj.levels[0] = Some(Level {
+            depth: 1,
+            width: 4,
+            height: 4,
+            internal_format: gl::RGBA as i32,
+            base: gl::RGBA,
+            texels: vec![[0.5f32; 4]; 16].into(),
+        });
+        let mut state = State::new(4, 4);
+        state.textures.defaults[1] = Arc::new(obj);
+        state.enables.texture_2d[0] = true;
+        let Some(s0) = Sampler::new(&state, 0) else {
+            panic!("complete");
+        };
+        let mins = crate::cpu::testgen::MIN_FILTERS;
+        let special = [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            0.0,
+            -0.0,
+            1e-40,
+            -1e-40,
+            0.5,
+            1.0,
+            2.0,
+        ];
+        let mut g = Gen(23);
+        for round in 0..20_000 {
+            let mut s = s0.clone();
+            s.min = mins[(g.next() % 6) as usize];
+            s.mag = [gl::NEAREST, gl::LINEAR][(g.next() % 2) as usize];
+            s.bias = [0.0, -0.0, 0.5, -1.25, g.float()][(g.next() % 5) as usize];
+            s.min_lod = [-1000.0, 0.0, -0.0, 0.5, f32::NAN, g.float()][(g.next() % 6) as usize];
+            s.max_lod = [1000.0, 0.0, -0.0, 2.5, f32::NAN, g.float()][(g.next() % 6) as usize];
+            s.c = [0.0, 0.5][(g.next() % 2) as usize];
+            s.base_level = (g.next() % 4) as i32;
+            s.last = s.base_level + (g.next() % 9) as i32;
+            let lam: [f32; LANES] = std::array::from_fn(|_| match g.next() % 4 {
+                0 => special[(g.next() % special.len() as u64) as usize],
+                1 => f32::from_bits(g.next() as u32),
+                2 => (g.next() % 4000) as f32 / 256.0 - 4.0,
+                _ => g.float(),
+            });
+            // SAFETY: the CPU has AVX2 (checked above); the registers have the layouts of the
+            // arrays and every bit pattern is valid for both.
+            let (la, lin, f) = unsafe {
+                let (la, lin, f) = select8(
+                    &s,
+                    std::mem::transmute::<[f32; LANES], std::arch::x86_64::__m256>(lam),
+                );
+                (
+                    std::mem::transmute::<std::arch::x86_64::__m256i, [i32; LANES]>(la),
+                    lin,
+                    std::mem::transmute::<std::arch::x86_64::__m256, [f32; LANES]>(f),
+                )
+            };
+            let want = s.select_lanes(&lam);
+            assert!(
+                la == want.0 && lin == want.1 && f.map(f32::to_bits) == want.2.map(f32::to_bits),
+                "round {round} λ {lam:?}: {la:?} {lin:#x} {f:?}, {want:?}"
+            );
+        }
     }
 }
