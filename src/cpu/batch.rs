@@ -291,7 +291,9 @@ impl Batch {
     }
 
     /// Starts a span at vertex `serial`: the inputs other than position and normal changed.
-    #[inline(never)]
+    /// Inline: a mesh whose every vertex has its own texture coordinates (GLUT's teapot)
+    /// starts a span at nearly every vertex, and a call there cost its spills and arguments.
+    #[inline(always)]
     fn new_span(&mut self, c: &Current, serial: u64) {
         self.span = serial;
         self.span_in = *c;
