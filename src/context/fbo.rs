@@ -1325,7 +1325,11 @@ unsafe fn unorm8_row_avx2(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
     macro_rules! bytes {
         ($v:expr) => {{
             let v = $v;
-            let v = if rgb { _mm256_blend_ps::<0x88>(v, one) } else { v };
+            let v = if rgb {
+                _mm256_blend_ps::<0x88>(v, one)
+            } else {
+                v
+            };
             let v = _mm256_min_ps(_mm256_max_ps(v, zero), one);
             let t = _mm256_add_ps(_mm256_mul_ps(v, scale), bias);
             _mm256_and_si256(_mm256_castps_si256(t), low)
