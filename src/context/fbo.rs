@@ -1155,11 +1155,7 @@ impl Context {
                         |t: [f32; 4]| unorm8x4([t[0], t[1], t[2], if rgb { 1.0 } else { t[3] }]);
                     for y in 0..h as i32 {
                         match level_row(lv, y, zoffset, row.len()) {
-                            Some(src) => {
-                                for (c, &t) in row.iter_mut().zip(src) {
-                                    *c = px(t);
-                                }
-                            }
+                            Some(src) => unorm8_row(src, &mut row, rgb),
                             None => {
                                 for (x, c) in row.iter_mut().enumerate() {
                                     *c = px(lv.texel3(x as i32, y, zoffset));
@@ -1282,6 +1278,80 @@ fn unorm8x4(c: [f32; 4]) -> [u8; 4] {
     }
     #[cfg(not(target_arch = "x86_64"))]
     c.map(crate::cpu::framebuffer::unorm8)
+}
+
+/// `unorm8x4` of each texel of `src` into `dst` (as many as the shorter holds), alpha 1 for
+/// an RGB level (`rgb`): a colour attachment's row as `fbo_load` loads it. Eight texels an
+/// iteration with AVX2 where the CPU has it (the same operations on eight lanes of four
+/// components: `row_avx2`), else `unorm8x4` per texel; `unorm8_rows_are_unorm8x4` compares
+/// the two.
+fn unorm8_row(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
+    #[cfg(target_arch = "x86_64")]
+    if is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2.
+        unsafe { unorm8_row_avx2(src, dst, rgb) };
+        return;
+    }
+    unorm8_row_scalar(src, dst, rgb);
+}
+
+/// [`unorm8_row`] a texel at a time.
+fn unorm8_row_scalar(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
+    for (c, &t) in dst.iter_mut().zip(src) {
+        *c = unorm8x4([t[0], t[1], t[2], if rgb { 1.0 } else { t[3] }]);
+    }
+}
+
+/// [`unorm8_row`] with AVX2: two texels a register, four registers an iteration (`unorm8x4`'s
+/// `maxps`/`minps`/`mulps`/`addps` and low byte on each, no fused multiply-add), the 32 bytes
+/// packed and put back in texel order by one `vpermd`; the last texels (fewer than eight) by
+/// `unorm8x4`.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn unorm8_row_avx2(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
+    use std::arch::x86_64::*;
+    let n = src.len().min(dst.len());
+    let whole = n - n % 8;
+    let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+    let (scale, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+    let low = _mm256_set1_epi32(0xFF);
+    // After the packs, 32-bit element j holds texel [0, 2, 4, 6, 1, 3, 5, 7][j].
+    let order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+    // One register of two texels: alpha 1 for an RGB level (lanes 3 and 7 from `one`), then
+    // `unorm8x4`'s operations.
+    macro_rules! bytes {
+        ($v:expr) => {{
+            let v = $v;
+            let v = if rgb {
+                _mm256_blend_ps::<0x88>(v, one)
+            } else {
+                v
+            };
+            let v = _mm256_min_ps(_mm256_max_ps(v, zero), one);
+            let t = _mm256_add_ps(_mm256_mul_ps(v, scale), bias);
+            _mm256_and_si256(_mm256_castps_si256(t), low)
+        }};
+    }
+    let (sp, dp) = (src.as_ptr().cast::<f32>(), dst.as_mut_ptr().cast::<u8>());
+    for i in (0..whole).step_by(8) {
+        // SAFETY: texels i .. i + 8 lie in both slices (i + 8 <= whole <= n), 16 bytes of
+        // floats and 4 bytes a texel; the loads and the store are unaligned.
+        unsafe {
+            let a = bytes!(_mm256_loadu_ps(sp.add(4 * i)));
+            let b = bytes!(_mm256_loadu_ps(sp.add(4 * i + 8)));
+            let c = bytes!(_mm256_loadu_ps(sp.add(4 * i + 16)));
+            let d = bytes!(_mm256_loadu_ps(sp.add(4 * i + 24)));
+            let p = _mm256_packus_epi16(_mm256_packs_epi32(a, b), _mm256_packs_epi32(c, d));
+            let p = _mm256_permutevar8x32_epi32(p, order);
+            _mm256_storeu_si256(dp.add(4 * i).cast::<__m256i>(), p);
+        }
+    }
+    if let (Some(s), Some(d)) = (src.get(whole..n), dst.get_mut(whole..n)) {
+        unorm8_row_scalar(s, d, rgb);
+    }
 }
 
 /// The framebuffer's pixels into a renderbuffer's image `dst` (rows of `rw` pixels, pixel
@@ -1543,6 +1613,39 @@ mod tests {
         for w in vals.windows(4) {
             let c = [w[0], w[1], w[2], w[3]];
             assert_eq!(unorm8x4(c), c.map(unorm8), "{c:?}");
+        }
+    }
+
+    /// `unorm8_row` (AVX2 where the CPU has it) is `unorm8x4` per texel, alpha 1 for an RGB
+    /// level: awkward floats, every row length from 0 to 40 and misaligned starts.
+    #[test]
+    fn unorm8_rows_are_unorm8x4() {
+        let mut g = crate::cpu::testgen::Gen(99);
+        #[cfg(target_arch = "x86_64")]
+        if !is_x86_feature_detected!("avx2") {
+            eprintln!("no AVX2 on this CPU: the scalar row is compared with itself");
+        }
+        for round in 0..4000 {
+            let n = round % 41;
+            let skip = (g.next() % 3) as usize;
+            let src: Vec<[f32; 4]> = (0..n + skip)
+                .map(|_| {
+                    [(); 4].map(|_| match g.next() % 3 {
+                        0 => g.float(),
+                        _ => g.mostly_unit(),
+                    })
+                })
+                .collect();
+            let rgb = g.next() % 2 == 0;
+            let src = &src[skip..];
+            let mut got = vec![[7u8; 4]; n + 1];
+            unorm8_row(src, &mut got[..n], rgb);
+            let want: Vec<[u8; 4]> = src
+                .iter()
+                .map(|t| unorm8x4([t[0], t[1], t[2], if rgb { 1.0 } else { t[3] }]))
+                .collect();
+            assert_eq!(got[..n], want[..], "n {n}, rgb {rgb}");
+            assert_eq!(got[n], [7; 4], "written past the row");
         }
     }
 }

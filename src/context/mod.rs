@@ -335,15 +335,22 @@ impl Context {
 
     /// Executes one recorded call on this context, exactly as if its method had been called.
     ///
-    /// The calls an immediate-mode mesh is made of (Begin, End, Normal3f, Vertex3f: all but a
-    /// handful of a recorded surface) are dispatched first, by a four-arm match inlined into
-    /// replay loops; every other call goes through `execute_any`, which matches every variant
-    /// (so a new entry point cannot be forgotten there).
+    /// The calls an immediate-mode mesh is made of (Begin, End, Normal3f, Vertex3f and their
+    /// vector forms, TexCoord2f/2fv: all but a handful of a recorded surface or of a GLUT
+    /// mesh) are dispatched first, by a short match inlined into replay loops (compiled with
+    /// AVX2 there); every other call goes through `execute_any`, which matches every variant
+    /// (so a new entry point cannot be forgotten there). A vector form runs as its scalar form
+    /// when nothing records (the same conversion and the same state change; only what a
+    /// recording stores differs), so the vertex path is inlined once.
     #[inline(always)]
     pub fn execute(&mut self, call: &Call) {
         match *call {
             Call::Vertex3f(a, b, c) => self.vertex3f(a, b, c),
+            Call::Vertex3fv([a, b, c]) if !self.capturing => self.vertex3f(a, b, c),
             Call::Normal3f(a, b, c) => self.normal3f(a, b, c),
+            Call::Normal3fv([a, b, c]) if !self.capturing => self.normal3f(a, b, c),
+            Call::TexCoord2f(s, t) => self.tex_coord2f(s, t),
+            Call::TexCoord2fv([s, t]) if !self.capturing => self.tex_coord2f(s, t),
             Call::Begin(a) => self.begin(a),
             Call::End => self.end(),
             _ => self.execute_any(call),

@@ -400,3 +400,83 @@ fn both_replay_routes_draw_the_same_image() {
         assert!(base == image(wide), "{name}: the routes' images differ");
     }
 }
+
+/// `execute` runs Vertex3fv, Normal3fv and TexCoord2fv as their scalar forms when nothing
+/// records: the image and the current attributes are those of the calls run one by one
+/// through `execute_any` (every variant's own method), and a recording context still records
+/// the vector forms. render-to-texture's GLUT teapot and torus send all three, and a script of
+/// awkward values (NaN, -0, huge) checks the conversions bit for bit.
+#[test]
+fn vector_forms_run_as_their_calls() {
+    use crate::call::Call;
+    use crate::cpu::testgen::Gen;
+    let Some(scene) = crate::scenes::find("render-to-texture") else {
+        panic!("no scene render-to-texture");
+    };
+    let (w, h) = (97, 71);
+    let mut calls = match scene.record(w, h) {
+        Ok((_, calls)) => calls,
+        Err(e) => panic!("{e}"),
+    };
+    let is_vector = |c: &Call| {
+        matches!(
+            c,
+            Call::Vertex3fv(..) | Call::Normal3fv(..) | Call::TexCoord2fv(..)
+        )
+    };
+    assert!(calls.iter().filter(|c| is_vector(c)).count() > 1000);
+    // A few points with awkward attributes, drawn after the scene.
+    let mut g = Gen(16);
+    calls.push(Call::Begin(gl::POINTS));
+    for _ in 0..200 {
+        let v = [g.float(), g.float(), g.float()];
+        calls.push(match g.next() % 3 {
+            0 => Call::TexCoord2fv([v[0], v[1]]),
+            1 => Call::Normal3fv(v),
+            _ => Call::Vertex3fv([v[0] * 0.1, v[1] * 0.1, v[2] * 0.1]),
+        });
+    }
+    calls.push(Call::End);
+    let run = |one_by_one: bool| {
+        let mut c = match Context::with_config(w, h, scene.config) {
+            Ok(c) => c,
+            Err(e) => panic!("{e}"),
+        };
+        if one_by_one {
+            for call in &calls {
+                c.execute_any(call);
+            }
+        } else {
+            c.replay(&calls);
+        }
+        let cur = c.state.current;
+        let bits = |v: Vec4| v.to_array().map(f32::to_bits);
+        let attrs = (
+            bits(cur.tex_coords[0]),
+            cur.normal.to_array().map(f32::to_bits),
+        );
+        (c.to_image().into_raw(), attrs)
+    };
+    let (fast, slow) = (run(false), run(true));
+    assert!(fast.0.iter().any(|&b| b != fast.0[0]), "a blank image");
+    assert!(fast == slow, "execute and execute_any differ");
+    // Replayed into a recording context, the vector forms are recorded as themselves.
+    let mut c = match Context::with_config(w, h, scene.config) {
+        Ok(c) => c,
+        Err(e) => panic!("{e}"),
+    };
+    c.start_recording();
+    c.replay(&calls);
+    let again = c.stop_recording();
+    // (Compared as text: a NaN is not equal to itself.)
+    let vectors = |cs: &[Call]| {
+        format!(
+            "{:?}",
+            cs.iter().filter(|c| is_vector(c)).collect::<Vec<_>>()
+        )
+    };
+    assert!(
+        vectors(&again) == vectors(&calls),
+        "the recording lost the vector forms"
+    );
+}

@@ -74,40 +74,34 @@ fn set_of(pos: [u32; 4], normal: [u32; 3]) -> usize {
     (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 52) as usize & (SETS - 1)
 }
 
-/// Words in [`Others`].
-const OTHERS: usize = 28;
-
-/// The batched inputs of a vertex other than position and normal, as bits (colour, secondary
-/// colour, every unit's texture coordinates, fog coordinate, edge flag, material index): equal
-/// bits, identical inputs (NaNs with equal bits are equal, -0 and 0 differ). Every batched
-/// input other than position and normal must be in here, or vertices would be wrongly shared.
-#[derive(Clone, Copy, Debug)]
-struct Others([u32; OTHERS]);
-
-impl Others {
-    #[inline(always)]
-    fn of(c: &Current, mat: u32) -> Self {
-        let mut o = [0u32; OTHERS];
-        let [t0, t1, t2, t3] = c.tex_coords;
-        let vecs = [c.color, c.secondary_color, t0, t1, t2, t3];
-        for (dst, v) in o.chunks_exact_mut(4).zip(vecs) {
-            dst.copy_from_slice(&v.to_array().map(f32::to_bits));
+/// Whether the batched inputs of `a` other than position and normal (colours, every unit's
+/// texture coordinates, fog coordinate, edge flag) have the bits of `b`'s: equal bits,
+/// identical inputs (NaNs with equal bits are equal, -0 and 0 differ). Every batched input
+/// other than position, normal and material must be compared here, or vertices would be
+/// wrongly shared. Both sides are `Current`s, so the fields compared lie in the same order
+/// on both: a few vector loads and compares, without branches and without copying either.
+#[inline(always)]
+fn same_inputs(a: &Current, b: &Current) -> bool {
+    let bits = |v: &Vec4| v.to_array().map(f32::to_bits);
+    let [a0, a1, a2, a3] = &a.tex_coords;
+    let [b0, b1, b2, b3] = &b.tex_coords;
+    let pairs = [
+        (&a.color, &b.color),
+        (&a.secondary_color, &b.secondary_color),
+        (a0, b0),
+        (a1, b1),
+        (a2, b2),
+        (a3, b3),
+    ];
+    let mut d = a.fog_coord.to_bits() ^ b.fog_coord.to_bits();
+    d |= u32::from(a.edge_flag ^ b.edge_flag);
+    for (x, y) in pairs {
+        let (x, y) = (bits(x), bits(y));
+        for k in 0..4 {
+            d |= x[k] ^ y[k];
         }
-        o[24] = c.fog_coord.to_bits();
-        o[25] = u32::from(c.edge_flag);
-        o[26] = mat;
-        Others(o)
     }
-
-    /// Bitwise equality without branches (a few vector instructions).
-    #[inline(always)]
-    fn same(&self, other: &Self) -> bool {
-        self.0
-            .iter()
-            .zip(&other.0)
-            .fold(0, |acc, (a, b)| acc | (a ^ b))
-            == 0
-    }
+    d == 0
 }
 
 /// The inputs a span of vertices shares besides its edge flag and material (which stay per
@@ -125,7 +119,7 @@ pub struct Attribs {
 }
 
 impl Attribs {
-    /// Every input zero: what `Others` of all-zero bits stands for.
+    /// Every input zero: the batch's first span (`Batch::span_in` with material 0).
     const ZERO: Attribs = Attribs {
         color: Vec4::ZERO,
         color2: Vec4::ZERO,
@@ -154,8 +148,12 @@ pub struct Batch {
     serial0: u64,
     /// Serial number of the first vertex of the current span (see the module docs).
     span: u64,
-    /// The other inputs shared by every batched vertex from `span` on.
-    others: Others,
+    /// The inputs of the vertex that started the current span: its colours, texture
+    /// coordinates, fog coordinate and edge flag are those of every batched vertex from
+    /// `span` on (the last entry of `spans`; its position and normal are not used).
+    span_in: Current,
+    /// The material index of every batched vertex from `span` on.
+    span_mat: u32,
     /// Object-coordinate positions.
     pub pos: Vec<Vec4>,
     /// Current normal at each vertex.
@@ -163,11 +161,12 @@ pub struct Batch {
     /// Index into `spans` of each vertex's other inputs.
     pub span_of: Vec<u32>,
     /// The other inputs of each span (see the module docs); never empty, and its last entry is
-    /// the one `others` describes.
+    /// the current span's.
     pub spans: Vec<Attribs>,
     /// Edge flag.
     pub edge: Vec<bool>,
-    /// Index into `snapshots`; meaningful only when `snapshots` is not empty.
+    /// Index into `snapshots` of each vertex; filled only once `snapshots` is not empty (until
+    /// then every vertex uses the state's materials, and `mat` stays empty).
     pub mat: Vec<u32>,
     /// The primitives, in call order.
     pub prims: Vec<Prim>,
@@ -187,11 +186,19 @@ impl Default for Batch {
             cache: Box::new([Set([EMPTY; 2]); SETS]),
             serial0: 0,
             span: 0,
-            others: Others([0; OTHERS]),
+            span_in: Current {
+                color: Vec4::ZERO,
+                secondary_color: Vec4::ZERO,
+                tex_coords: [Vec4::ZERO; MAX_TEXTURE_UNITS],
+                fog_coord: 0.0,
+                edge_flag: false,
+                ..Current::default()
+            },
+            span_mat: 0,
             pos: Vec::new(),
             normal: Vec::new(),
             span_of: Vec::new(),
-            // The all-zero inputs, which `others` (all zero bits) describes.
+            // The all-zero inputs (`span_in`, edge flag false, and material 0).
             spans: vec![Attribs::ZERO],
             edge: Vec::new(),
             mat: Vec::new(),
@@ -230,9 +237,8 @@ impl Batch {
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
-        let others = Others::of(c, self.cur_mat);
-        if !others.same(&self.others) {
-            self.new_span(others, c, serial);
+        if !same_inputs(c, &self.span_in) || self.cur_mat != self.span_mat {
+            self.new_span(c, serial);
         }
         let pos = position.to_array().map(f32::to_bits);
         // The front end stores the normal's components one by one (`Normal3f`); loading two of
@@ -279,14 +285,19 @@ impl Batch {
         self.normal.push(c.normal);
         self.span_of.push(self.spans.len().saturating_sub(1) as u32);
         self.edge.push(c.edge_flag);
-        self.mat.push(self.cur_mat);
+        if !self.snapshots.is_empty() {
+            self.mat.push(self.cur_mat);
+        }
     }
 
     /// Starts a span at vertex `serial`: the inputs other than position and normal changed.
-    #[inline(never)]
-    fn new_span(&mut self, others: Others, c: &Current, serial: u64) {
-        self.others = others;
+    /// Inline: a mesh whose every vertex has its own texture coordinates (GLUT's teapot)
+    /// starts a span at nearly every vertex, and a call there cost its spills and arguments.
+    #[inline(always)]
+    fn new_span(&mut self, c: &Current, serial: u64) {
         self.span = serial;
+        self.span_in = *c;
+        self.span_mat = self.cur_mat;
         self.spans.push(Attribs::of(c));
     }
 
@@ -326,6 +337,8 @@ impl Batch {
         if self.snapshots.is_empty() {
             // Vertices so far (all with index 0) keep the materials current at Begin.
             self.snapshots.push(self.base.unwrap_or(*m));
+            self.mat.clear();
+            self.mat.resize(self.pos.len(), 0);
         }
         if self.snapshots.len() >= u32::MAX as usize {
             return;
@@ -346,7 +359,7 @@ impl Batch {
         self.pos.clear();
         self.normal.clear();
         self.span_of.clear();
-        // The current span carries over as span 0 (it is still what `others` describes).
+        // The current span carries over as span 0 (with `span_in` and `span_mat`).
         if let Some(cur) = self.spans.pop() {
             self.spans.clear();
             self.spans.push(cur);
@@ -377,6 +390,68 @@ mod tests {
         }
         b.end();
         b.idx.clone()
+    }
+
+    /// The inputs a span shares, as bits (the reference for `same_inputs`): 25 floats and
+    /// the edge flag.
+    fn span_bits(c: &Current) -> Vec<u32> {
+        let t = c.tex_coords;
+        let mut v: Vec<u32> = [c.color, c.secondary_color, t[0], t[1], t[2], t[3]]
+            .iter()
+            .flat_map(|x| x.to_array().map(f32::to_bits))
+            .collect();
+        v.push(c.fog_coord.to_bits());
+        v.push(u32::from(c.edge_flag));
+        v
+    }
+
+    #[test]
+    fn same_inputs_is_equal_bits_of_the_span_inputs() {
+        let mut g = crate::cpu::testgen::Gen(5);
+        let (mut same, mut differ) = (0, 0);
+        for _ in 0..20_000 {
+            // 25 floats, the edge flag, and a normal and index that must not count.
+            let mut f = [0f32; 30];
+            for x in &mut f {
+                *x = g.float();
+            }
+            let mut edge = g.next() % 2 == 0;
+            let make = |f: &[f32; 30], edge: bool| {
+                let v4 = |i: usize| Vec4::new(f[i], f[i + 1], f[i + 2], f[i + 3]);
+                Current {
+                    color: v4(0),
+                    secondary_color: v4(4),
+                    tex_coords: [v4(8), v4(12), v4(16), v4(20)],
+                    fog_coord: f[24],
+                    edge_flag: edge,
+                    normal: Vec3::new(f[25], f[26], f[27]),
+                    index: f[28],
+                }
+            };
+            let a = make(&f, edge);
+            assert!(same_inputs(&a, &a) == (span_bits(&a) == span_bits(&a)));
+            // One input changed (now and then to the same bits, or -0 for 0, NaN for NaN).
+            let k = (g.next() % 30) as usize;
+            if k == 29 {
+                edge ^= g.next() % 2 == 0;
+            } else {
+                f[k] = match g.next() % 4 {
+                    0 => f[k],
+                    1 => -f[k],
+                    _ => g.float(),
+                };
+            }
+            let b = make(&f, edge);
+            let want = span_bits(&a) == span_bits(&b);
+            assert_eq!(same_inputs(&a, &b), want, "input {k}");
+            assert_eq!(same_inputs(&b, &a), want, "input {k}");
+            if want {
+                same += 1;
+            } else {
+                differ += 1;
+            }
+        }
+        assert!(same > 1000 && differ > 1000, "{same} same, {differ} differ");
     }
 
     #[test]

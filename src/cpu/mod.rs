@@ -65,7 +65,7 @@ mod polygon;
 pub mod raster;
 pub mod setup;
 #[cfg(test)]
-mod testgen;
+pub(crate) mod testgen;
 pub mod texgen;
 pub mod texture;
 pub mod vertex;
