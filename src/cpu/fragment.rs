@@ -90,6 +90,35 @@ const ROW_QUAD_BLOCKS: usize = 5;
 /// Each unit's λ of a span row's quads (`Sampler::quad_lambda_row`), for `FragCtx::tri_span_in`.
 type RowQuads = [[[f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
 
+/// Which of its routes `FragCtx::tri_span_in` takes for a primitive's spans (`RowPlan`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum SpanRoute {
+    /// The smooth primary colour alone (no FLAT, secondary colour or PHONG_WIN).
+    Smooth,
+    /// The FLAT colour alone into one colour buffer written whole.
+    Flat,
+    /// Anything else (textured spans among them).
+    General,
+}
+
+/// `FragCtx::tri_span_in`'s choices for the spans of one primitive in one tile
+/// (`FragCtx::row_plan`).
+struct RowPlan<'s> {
+    /// ColorMask all false and no coverage count: the depth test writes all a span writes.
+    depth_only: bool,
+    /// The flat varyings that lead the layout (0 unless the primitive is FLAT).
+    nflat: usize,
+    route: SpanRoute,
+    /// One colour buffer written whole (no second buffer, ColorMask all true, no count).
+    whole: bool,
+    /// `FragCtx::tex_lanes_ok`.
+    on_lanes: bool,
+    /// The units whose sampler needs λ, bit u for unit u.
+    lod: u8,
+    /// The fused route's sampler and its coordinates' first varying, where the spans take it.
+    fused: Option<(&'s Sampler, usize)>,
+}
+
 /// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
 /// (`zrow`, `dz`), its first lane's x offset `fx0` and tile index `i0`, its lanes `m`, and
 /// whether the span writes colour.
@@ -443,7 +472,14 @@ impl FragCtx<'_> {
         let prim = c;
         for (t, lu) in self.tex.iter().zip(lam) {
             let Some((tx, o)) = *t else { break };
-            let tl = tx.texels_lanes([g(o), g(o + 1), g(o + 2), g(o + 3)], lu, m);
+            // The unit's four coordinate rows with one bounds check (where the layout holds
+            // them, always in `tri_span_in`), not four with their fallbacks (texture-targets:
+            // ≈16 instructions a unit and group).
+            let coords = match vs.get(o..).and_then(|v| v.first_chunk::<4>()) {
+                Some([s, t, r, q]) => [s, t, r, q],
+                None => [g(o), g(o + 1), g(o + 2), g(o + 3)],
+            };
+            let tl = tx.texels_lanes(coords, lu, m);
             tx.env_lanes_with(&mut c, &prim, &tl, m);
         }
         if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
@@ -704,8 +740,67 @@ impl FragCtx<'_> {
         // where the unit needs λ, and stays 0 where it does not, whatever the row.
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
+        let plan = self.row_plan(bufs, p, planes);
         for &row in rows {
-            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq);
+            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq, &plan);
+        }
+    }
+
+    /// What `tri_span_in` decides for each span of `p` in this tile, decided once for them
+    /// all: none of it depends on the row (texture-targets, callgrind: ≈40 instructions a
+    /// span that reaches the colour stage, the units' samplers asked again for each).
+    #[inline(always)]
+    fn row_plan<'s>(&'s self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> RowPlan<'s> {
+        let nv = self.rl.n;
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let phong = p.flags & F_PHONG != 0;
+        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        let route = if nv == 4 && nflat == 0 && !phong {
+            SpanRoute::Smooth
+        } else if nv == 4 && nflat == 4 && !phong && whole {
+            SpanRoute::Flat
+        } else {
+            SpanRoute::General
+        };
+        let on_lanes = self.tex_lanes_ok(p);
+        // The units that need λ, in unit order up to the first absent one (as the loops over
+        // `self.tex` that break there).
+        let mut lod = 0u8;
+        for (u, t) in self.tex.iter().enumerate() {
+            let Some((tx, _)) = *t else { break };
+            if tx.needs_lambda() {
+                lod |= 1 << u;
+            }
+        }
+        let mut fused = None;
+        #[cfg(target_arch = "x86_64")]
+        if let [Some((tx, to)), None, ..] = self.tex {
+            let nv = nv.min(MAXV);
+            if whole
+                && on_lanes
+                && super::texture::FusedSpan::covers(tx)
+                && !(self.color_sum && self.rl.spec.is_some())
+                && to.checked_add(4).is_some_and(|e| e <= nv)
+                && planes.len() >= 3 + 3 * nv
+                && super::lanes::has_avx2()
+            {
+                fused = Some((tx, to));
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = planes;
+        RowPlan {
+            depth_only: self.color_mask == [false; 4] && !self.count,
+            nflat,
+            route,
+            whole,
+            on_lanes,
+            lod,
+            fused,
         }
     }
 
@@ -725,6 +820,7 @@ impl FragCtx<'_> {
         vl: &mut [[f32; LANES]],
         lam: &mut [[f32; LANES]; MAX_TEXTURE_UNITS],
         lq: &mut RowQuads,
+        plan: &RowPlan<'s>,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -754,18 +850,13 @@ impl FragCtx<'_> {
         }
         // ColorMask all false (a depth-only pass, as a shadow map's first pass): the depth test
         // above wrote what this span writes; its colours would be computed to be thrown away.
-        if self.color_mask == [false; 4] && !self.count {
+        if plan.depth_only {
             return;
         }
         // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
-        let nv = self.rl.n;
-        let nflat = if p.flags & F_FLAT != 0 {
-            self.rl.spec.map_or(4, |s| s + 4)
-        } else {
-            0
-        };
+        let nflat = plan.nflat;
         // Fast path: smooth primary colour only (no FLAT, secondary colour or PHONG_WIN).
-        if nv == 4 && nflat == 0 && p.flags & F_PHONG == 0 {
+        if plan.route == SpanRoute::Smooth {
             if let Some(&[w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay]) =
                 planes.get(..15)
             {
@@ -801,13 +892,7 @@ impl FragCtx<'_> {
             return;
         }
         // FLAT colour alone, one colour buffer written whole: eight fragments at a time.
-        if nv == 4
-            && nflat == 4
-            && p.flags & F_PHONG == 0
-            && !self.count
-            && self.color_mask == [true; 4]
-            && bufs.color2.is_none()
-        {
+        if plan.route == SpanRoute::Flat {
             if let (Some(pl), Some(dst)) = (
                 planes
                     .get(3..15)
@@ -821,40 +906,30 @@ impl FragCtx<'_> {
         // The general path (textured spans among them), eight fragments at a time: their
         // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
         // colour, stored on lanes when one colour buffer is written whole.
-        let nv = nv.min(MAXV);
-        let on_lanes = self.tex_lanes_ok(p);
-        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        let (on_lanes, whole) = (plan.on_lanes, plan.whole);
         // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
-        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
-        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`), for the
+        // units of `plan.lod`.
+        let lod = plan.lod != 0;
         let qy = ((y & !1) - oy) as f32;
         // The common textured state (one 2D unit, MODULATE or REPLACE, no colour sum, one
         // colour buffer written whole) on AVX2: each group from the planes to the store in
         // registers, its λ included (`FusedSpan`).
         #[cfg(target_arch = "x86_64")]
-        if let [Some((tx, to)), None, ..] = self.tex {
-            if whole
-                && on_lanes
-                && super::texture::FusedSpan::covers(tx)
-                && !(self.color_sum && self.rl.spec.is_some())
-                && to.checked_add(4).is_some_and(|e| e <= nv)
-                && planes.len() >= 3 + 3 * nv
-                && super::lanes::has_avx2()
-            {
-                let span = FusedArgs {
-                    x0,
-                    n,
-                    base,
-                    mask,
-                    nflat,
-                    fy,
-                    ox,
-                    qy,
-                };
-                // SAFETY: the CPU has AVX2 (`has_avx2`).
-                if unsafe { fused_span(bufs, tx, to, planes, &span, slot) } {
-                    return;
-                }
+        if let Some((tx, to)) = plan.fused {
+            let span = FusedArgs {
+                x0,
+                n,
+                base,
+                mask,
+                nflat,
+                fy,
+                ox,
+                qy,
+            };
+            // SAFETY: the CPU has AVX2 (`has_avx2`, in `row_plan`).
+            if unsafe { fused_span(bufs, tx, to, planes, &span, slot) } {
+                return;
             }
         }
         #[cfg(not(target_arch = "x86_64"))]
@@ -870,9 +945,9 @@ impl FragCtx<'_> {
             let gb = (63 - mask.leading_zeros()) as i32 & !7;
             let nq = (((x0 + gb + 7) >> 1) - qa + 1) as usize;
             let blocks = nq.div_ceil(LANES).min(ROW_QUAD_BLOCKS);
-            for (lu, t) in lq.iter_mut().zip(&self.tex) {
+            for (u, (lu, t)) in lq.iter_mut().zip(&self.tex).enumerate() {
                 let Some((tx, to)) = *t else { break };
-                if tx.needs_lambda() {
+                if plan.lod & (1 << u) != 0 {
                     let out = lu.get_mut(..blocks).unwrap_or_default();
                     tx.quad_lambda_row::<AVX2>(planes, to, ox, qy, qa, out);
                 }
@@ -890,9 +965,8 @@ impl FragCtx<'_> {
             if lod {
                 // The group's first pixel's quad, 0..=28 quads from qa.
                 let d = (((x0 + g as i32) >> 1) - qa) as usize;
-                for ((lu, t), q) in lam.iter_mut().zip(&self.tex).zip(&*lq) {
-                    let Some((tx, _)) = *t else { break };
-                    if tx.needs_lambda() {
+                for (u, (lu, q)) in lam.iter_mut().zip(&*lq).enumerate() {
+                    if plan.lod & (1 << u) != 0 {
                         *lu = spread_on::<AVX2>(q, d, x0 + g as i32);
                     }
                 }
