@@ -90,6 +90,35 @@ const ROW_QUAD_BLOCKS: usize = 5;
 /// Each unit's λ of a span row's quads (`Sampler::quad_lambda_row`), for `FragCtx::tri_span_in`.
 type RowQuads = [[[f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
 
+/// Which of its routes `FragCtx::tri_span_in` takes for a primitive's spans (`RowPlan`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum SpanRoute {
+    /// The smooth primary colour alone (no FLAT, secondary colour or PHONG_WIN).
+    Smooth,
+    /// The FLAT colour alone into one colour buffer written whole.
+    Flat,
+    /// Anything else (textured spans among them).
+    General,
+}
+
+/// `FragCtx::tri_span_in`'s choices for the spans of one primitive in one tile
+/// (`FragCtx::row_plan`).
+struct RowPlan<'s> {
+    /// ColorMask all false and no coverage count: the depth test writes all a span writes.
+    depth_only: bool,
+    /// The flat varyings that lead the layout (0 unless the primitive is FLAT).
+    nflat: usize,
+    route: SpanRoute,
+    /// One colour buffer written whole (no second buffer, ColorMask all true, no count).
+    whole: bool,
+    /// `FragCtx::tex_lanes_ok`.
+    on_lanes: bool,
+    /// The units whose sampler needs λ, bit u for unit u.
+    lod: u8,
+    /// The fused route's sampler and its coordinates' first varying, where the spans take it.
+    fused: Option<(&'s Sampler, usize)>,
+}
+
 /// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
 /// (`zrow`, `dz`), its first lane's x offset `fx0` and tile index `i0`, its lanes `m`, and
 /// whether the span writes colour.
@@ -121,6 +150,161 @@ fn varyings_on<const AVX2: bool>(
         return;
     }
     super::lanes::varyings(planes, nflat, fx0, fy, out);
+}
+
+/// `texture::spread_quads` of a unit's row of quads `q` (`RowQuads`), on eight lanes a
+/// register where `AVX2` (`spread_quads_avx2`: the same floats, moved).
+#[inline(always)]
+fn spread_on<const AVX2: bool>(
+    q: &[[f32; LANES]; ROW_QUAD_BLOCKS],
+    d: usize,
+    x: i32,
+) -> [f32; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 {
+        // SAFETY: `AVX2` is true only where the CPU has AVX2 (`varyings_on`).
+        return unsafe { spread_quads_avx2(q, d, x) };
+    }
+    super::texture::spread_quads(q.as_flattened(), d, x)
+}
+
+/// `texture::spread_quads` on AVX2: lane l takes quad `d + (x % 2 + l) / 2` of `q`, one
+/// unaligned load of the eight quads from `d` and one `vpermps` of it (a lane-at-a-time
+/// gather of five floats and their selection cost ≈40 instructions a unit and group on
+/// texture-targets). Quads past `q`'s end read as 0 as there: for `d` past the load's reach
+/// (never in `tri_span_in`, where d <= 28), `spread_quads` itself.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn spread_quads_avx2(q: &[[f32; LANES]; ROW_QUAD_BLOCKS], d: usize, x: i32) -> [f32; LANES] {
+    use std::arch::x86_64::{_mm256_loadu_ps, _mm256_permutevar8x32_ps, _mm256_setr_epi32};
+    let flat = q.as_flattened();
+    let Some(w) = flat.get(d..d + LANES) else {
+        return super::texture::spread_quads(flat, d, x);
+    };
+    // SAFETY: the CPU has AVX2 (this function's contract); the load reads the eight floats of
+    // `w` (in bounds, no alignment needed); `__m256` has the layout of `[f32; 8]`.
+    unsafe {
+        let idx = if x & 1 == 0 {
+            _mm256_setr_epi32(0, 0, 1, 1, 2, 2, 3, 3)
+        } else {
+            _mm256_setr_epi32(0, 1, 1, 2, 2, 3, 3, 4)
+        };
+        let v = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.as_ptr()), idx);
+        std::mem::transmute::<std::arch::x86_64::__m256, [f32; LANES]>(v)
+    }
+}
+
+/// `lanes::to_pixels` of four whole rows on AVX2: the 4x8 transposition two pixels a
+/// register (in-lane unpacks and shuffles, then the halves put in order), where
+/// `to_pixels` takes four 4x4 transpositions of 128-bit halves and `tex_pixels` loaded each
+/// row through its own bounds check (≈24 instructions a group fewer on texture-targets).
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn to_pixels_avx2(rows: &[[f32; LANES]; 4]) -> [Vec4; LANES] {
+    use std::arch::x86_64::{
+        __m256, _mm256_loadu_ps, _mm256_permute2f128_ps, _mm256_shuffle_ps, _mm256_unpackhi_ps,
+        _mm256_unpacklo_ps,
+    };
+    let [r, g, b, a] = rows;
+    // SAFETY: the CPU has AVX2 (this function's contract); each load reads the eight floats
+    // of one row (in bounds, no alignment needed); `[__m256; 4]` and `[Vec4; 8]` are both 32
+    // floats in a row (`Vec4` has the layout of `[f32; 4]`), every bit pattern valid.
+    unsafe {
+        let (r, g) = (_mm256_loadu_ps(r.as_ptr()), _mm256_loadu_ps(g.as_ptr()));
+        let (b, a) = (_mm256_loadu_ps(b.as_ptr()), _mm256_loadu_ps(a.as_ptr()));
+        // r0 g0 r1 g1 | r4 g4 r5 g5, b0 a0 b1 a1 | b4 a4 b5 a5, and the same of lanes 2, 3, 6, 7.
+        let (lo_rg, lo_ba) = (_mm256_unpacklo_ps(r, g), _mm256_unpacklo_ps(b, a));
+        let (hi_rg, hi_ba) = (_mm256_unpackhi_ps(r, g), _mm256_unpackhi_ps(b, a));
+        // Pixels 0 | 4, 1 | 5, 2 | 6 and 3 | 7.
+        let p04 = _mm256_shuffle_ps::<0x44>(lo_rg, lo_ba);
+        let p15 = _mm256_shuffle_ps::<0xEE>(lo_rg, lo_ba);
+        let p26 = _mm256_shuffle_ps::<0x44>(hi_rg, hi_ba);
+        let p37 = _mm256_shuffle_ps::<0xEE>(hi_rg, hi_ba);
+        let out: [__m256; 4] = [
+            _mm256_permute2f128_ps::<0x20>(p04, p15),
+            _mm256_permute2f128_ps::<0x20>(p26, p37),
+            _mm256_permute2f128_ps::<0x31>(p04, p15),
+            _mm256_permute2f128_ps::<0x31>(p26, p37),
+        ];
+        std::mem::transmute::<[__m256; 4], [Vec4; LANES]>(out)
+    }
+}
+
+/// `lanes::store_pixels`, on eight lanes a register where `AVX2` (`store_pixels_avx2`: the
+/// same bytes).
+#[inline(always)]
+fn store_pixels_on<const AVX2: bool>(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
+    #[cfg(target_arch = "x86_64")]
+    if AVX2 {
+        // SAFETY: `AVX2` is true only where the CPU has AVX2 (`varyings_on`).
+        return unsafe { store_pixels_avx2(dst, m, c) };
+    }
+    super::lanes::store_pixels(dst, m, c);
+}
+
+/// `lanes::store_pixels` on AVX2: the same clamp, scale and bias of each channel (the same
+/// operations in the same order, two pixels a register where `store_pixels` takes one), the
+/// same saturating packs (within each 128-bit half, the pixels then put back in order by one
+/// `vpermd`) and one masked store of the lanes of `m` (≈66 instructions a group on
+/// texture-targets before). A row shorter than a group goes to `store_pixels` itself.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_ps, _mm256_and_si256, _mm256_castps_si256, _mm256_cmpeq_epi32,
+        _mm256_loadu_ps, _mm256_maskstore_epi32, _mm256_max_ps, _mm256_min_ps, _mm256_mul_ps,
+        _mm256_packs_epi32, _mm256_packus_epi16, _mm256_permutevar8x32_epi32, _mm256_set1_epi32,
+        _mm256_set1_ps, _mm256_setr_epi32, _mm256_setzero_ps,
+    };
+    let Some(px) = dst.get_mut(..LANES) else {
+        return super::lanes::store_pixels(dst, m, c);
+    };
+    let ch = c.as_ptr().cast::<f32>();
+    // SAFETY: the CPU has AVX2 (this function's contract); `Vec4` has the layout of
+    // `[f32; 4]`, so `ch` points at the 32 contiguous floats of `c`, read eight at offsets 0,
+    // 8, 16 and 24 (in bounds, no alignment needed); `px` holds eight
+    // `[u8; 4]`, 32 contiguous bytes, written by the masked store (in bounds); `__m256i` is
+    // plain bits.
+    unsafe {
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        let (k, b) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+        let low = _mm256_set1_epi32(0xFF);
+        // Pixels 2j and 2j + 1, each channel's byte in the low bits of its lane.
+        let conv = |j: usize| -> __m256i {
+            let v = _mm256_loadu_ps(ch.add(8 * j));
+            let c = _mm256_min_ps(_mm256_max_ps(v, zero), one);
+            _mm256_and_si256(
+                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), b)),
+                low,
+            )
+        };
+        // Halves [px0 px2 | px1 px3] and [px4 px6 | px5 px7], then bytes whose dwords are
+        // pixels 0 2 4 6 1 3 5 7 (every value is in 0..=255: the signed packs keep it).
+        let w01 = _mm256_packs_epi32(conv(0), conv(1));
+        let w23 = _mm256_packs_epi32(conv(2), conv(3));
+        let v = _mm256_permutevar8x32_epi32(
+            _mm256_packus_epi16(w01, w23),
+            _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7),
+        );
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        let on = _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+            bits,
+        );
+        _mm256_maskstore_epi32(px.as_mut_ptr().cast::<i32>(), on, v);
+    }
 }
 
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
@@ -387,9 +571,27 @@ impl FragCtx<'_> {
         m: u8,
         lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
     ) -> [Vec4; LANES] {
+        self.tex_pixels_on::<false>(vs, m, lam)
+    }
+
+    /// `tex_pixels`, its colour rows transposed on eight lanes a register where `AVX2`
+    /// (`to_pixels_avx2`: the same floats, moved), true only where the CPU has AVX2
+    /// (`tri_span_in`).
+    #[inline(always)]
+    fn tex_pixels_on<const AVX2: bool>(
+        &self,
+        vs: &[[f32; LANES]],
+        m: u8,
+        lam: &[[f32; LANES]; MAX_TEXTURE_UNITS],
+    ) -> [Vec4; LANES] {
         const ZERO: [f32; LANES] = [0.0; LANES];
         let g = |k: usize| vs.get(k).unwrap_or(&ZERO);
-        let mut c: [Vec4; LANES] = super::lanes::to_pixels([g(0), g(1), g(2), g(3)]);
+        let mut c: [Vec4; LANES] = match vs.first_chunk::<4>() {
+            // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
+            #[cfg(target_arch = "x86_64")]
+            Some(rows) if AVX2 => unsafe { to_pixels_avx2(rows) },
+            _ => super::lanes::to_pixels([g(0), g(1), g(2), g(3)]),
+        };
         // Each unit's texels, then its environment, in unit order (§3.8.15). A sampler with
         // `lanes_ok` is never a COMBINE with a TEXTUREn source, so no environment reads another
         // unit's texel and sampling unit k + 1 after unit k's environment gives the same texels.
@@ -397,7 +599,14 @@ impl FragCtx<'_> {
         let prim = c;
         for (t, lu) in self.tex.iter().zip(lam) {
             let Some((tx, o)) = *t else { break };
-            let tl = tx.texels_lanes([g(o), g(o + 1), g(o + 2), g(o + 3)], lu, m);
+            // The unit's four coordinate rows with one bounds check (where the layout holds
+            // them, always in `tri_span_in`), not four with their fallbacks (texture-targets:
+            // ≈16 instructions a unit and group).
+            let coords = match vs.get(o..).and_then(|v| v.first_chunk::<4>()) {
+                Some([s, t, r, q]) => [s, t, r, q],
+                None => [g(o), g(o + 1), g(o + 2), g(o + 3)],
+            };
+            let tl = tx.texels_lanes(coords, lu, m);
             tx.env_lanes_with(&mut c, &prim, &tl, m);
         }
         if let (true, Some(o)) = (self.color_sum, self.rl.spec) {
@@ -658,8 +867,67 @@ impl FragCtx<'_> {
         // where the unit needs λ, and stays 0 where it does not, whatever the row.
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
+        let plan = self.row_plan(bufs, p, planes);
         for &row in rows {
-            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq);
+            self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq, &plan);
+        }
+    }
+
+    /// What `tri_span_in` decides for each span of `p` in this tile, decided once for them
+    /// all: none of it depends on the row (texture-targets, callgrind: ≈40 instructions a
+    /// span that reaches the colour stage, the units' samplers asked again for each).
+    #[inline(always)]
+    fn row_plan<'s>(&'s self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> RowPlan<'s> {
+        let nv = self.rl.n;
+        let nflat = if p.flags & F_FLAT != 0 {
+            self.rl.spec.map_or(4, |s| s + 4)
+        } else {
+            0
+        };
+        let phong = p.flags & F_PHONG != 0;
+        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        let route = if nv == 4 && nflat == 0 && !phong {
+            SpanRoute::Smooth
+        } else if nv == 4 && nflat == 4 && !phong && whole {
+            SpanRoute::Flat
+        } else {
+            SpanRoute::General
+        };
+        let on_lanes = self.tex_lanes_ok(p);
+        // The units that need λ, in unit order up to the first absent one (as the loops over
+        // `self.tex` that break there).
+        let mut lod = 0u8;
+        for (u, t) in self.tex.iter().enumerate() {
+            let Some((tx, _)) = *t else { break };
+            if tx.needs_lambda() {
+                lod |= 1 << u;
+            }
+        }
+        let mut fused = None;
+        #[cfg(target_arch = "x86_64")]
+        if let [Some((tx, to)), None, ..] = self.tex {
+            let nv = nv.min(MAXV);
+            if whole
+                && on_lanes
+                && super::texture::FusedSpan::covers(tx)
+                && !(self.color_sum && self.rl.spec.is_some())
+                && to.checked_add(4).is_some_and(|e| e <= nv)
+                && planes.len() >= 3 + 3 * nv
+                && super::lanes::has_avx2()
+            {
+                fused = Some((tx, to));
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = planes;
+        RowPlan {
+            depth_only: self.color_mask == [false; 4] && !self.count,
+            nflat,
+            route,
+            whole,
+            on_lanes,
+            lod,
+            fused,
         }
     }
 
@@ -679,6 +947,7 @@ impl FragCtx<'_> {
         vl: &mut [[f32; LANES]],
         lam: &mut [[f32; LANES]; MAX_TEXTURE_UNITS],
         lq: &mut RowQuads,
+        plan: &RowPlan<'s>,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
@@ -708,18 +977,13 @@ impl FragCtx<'_> {
         }
         // ColorMask all false (a depth-only pass, as a shadow map's first pass): the depth test
         // above wrote what this span writes; its colours would be computed to be thrown away.
-        if self.color_mask == [false; 4] && !self.count {
+        if plan.depth_only {
             return;
         }
         // Pass 2: perspective-correct varyings (§3.5.1 eq. 3.9) and colour for survivors.
-        let nv = self.rl.n;
-        let nflat = if p.flags & F_FLAT != 0 {
-            self.rl.spec.map_or(4, |s| s + 4)
-        } else {
-            0
-        };
+        let nflat = plan.nflat;
         // Fast path: smooth primary colour only (no FLAT, secondary colour or PHONG_WIN).
-        if nv == 4 && nflat == 0 && p.flags & F_PHONG == 0 {
+        if plan.route == SpanRoute::Smooth {
             if let Some(&[w0, wx, wy, r0, rx, ry, g0, gx, gy, b0, bx, by, a0, ax, ay]) =
                 planes.get(..15)
             {
@@ -755,13 +1019,7 @@ impl FragCtx<'_> {
             return;
         }
         // FLAT colour alone, one colour buffer written whole: eight fragments at a time.
-        if nv == 4
-            && nflat == 4
-            && p.flags & F_PHONG == 0
-            && !self.count
-            && self.color_mask == [true; 4]
-            && bufs.color2.is_none()
-        {
+        if plan.route == SpanRoute::Flat {
             if let (Some(pl), Some(dst)) = (
                 planes
                     .get(3..15)
@@ -775,40 +1033,30 @@ impl FragCtx<'_> {
         // The general path (textured spans among them), eight fragments at a time: their
         // perspective-correct varyings (§3.5.1 eq. 3.9) on lanes, then each covered one's
         // colour, stored on lanes when one colour buffer is written whole.
-        let nv = nv.min(MAXV);
-        let on_lanes = self.tex_lanes_ok(p);
-        let whole = !self.count && self.color_mask == [true; 4] && bufs.color2.is_none();
+        let (on_lanes, whole) = (plan.on_lanes, plan.whole);
         // λ per 2x2 quad (§3.8.8), on lanes: lane l's is its pixel's quad's, at the quad's
-        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`).
-        let lod = self.tex.iter().flatten().any(|(t, _)| t.needs_lambda());
+        // lower-left pixel relative to the bounding-box corner (as `quad_lambda`), for the
+        // units of `plan.lod`.
+        let lod = plan.lod != 0;
         let qy = ((y & !1) - oy) as f32;
         // The common textured state (one 2D unit, MODULATE or REPLACE, no colour sum, one
         // colour buffer written whole) on AVX2: each group from the planes to the store in
         // registers, its λ included (`FusedSpan`).
         #[cfg(target_arch = "x86_64")]
-        if let [Some((tx, to)), None, ..] = self.tex {
-            if whole
-                && on_lanes
-                && super::texture::FusedSpan::covers(tx)
-                && !(self.color_sum && self.rl.spec.is_some())
-                && to.checked_add(4).is_some_and(|e| e <= nv)
-                && planes.len() >= 3 + 3 * nv
-                && super::lanes::has_avx2()
-            {
-                let span = FusedArgs {
-                    x0,
-                    n,
-                    base,
-                    mask,
-                    nflat,
-                    fy,
-                    ox,
-                    qy,
-                };
-                // SAFETY: the CPU has AVX2 (`has_avx2`).
-                if unsafe { fused_span(bufs, tx, to, planes, &span, slot) } {
-                    return;
-                }
+        if let Some((tx, to)) = plan.fused {
+            let span = FusedArgs {
+                x0,
+                n,
+                base,
+                mask,
+                nflat,
+                fy,
+                ox,
+                qy,
+            };
+            // SAFETY: the CPU has AVX2 (`has_avx2`, in `row_plan`).
+            if unsafe { fused_span(bufs, tx, to, planes, &span, slot) } {
+                return;
             }
         }
         #[cfg(not(target_arch = "x86_64"))]
@@ -824,9 +1072,9 @@ impl FragCtx<'_> {
             let gb = (63 - mask.leading_zeros()) as i32 & !7;
             let nq = (((x0 + gb + 7) >> 1) - qa + 1) as usize;
             let blocks = nq.div_ceil(LANES).min(ROW_QUAD_BLOCKS);
-            for (lu, t) in lq.iter_mut().zip(&self.tex) {
+            for (u, (lu, t)) in lq.iter_mut().zip(&self.tex).enumerate() {
                 let Some((tx, to)) = *t else { break };
-                if tx.needs_lambda() {
+                if plan.lod & (1 << u) != 0 {
                     let out = lu.get_mut(..blocks).unwrap_or_default();
                     tx.quad_lambda_row::<AVX2>(planes, to, ox, qy, qa, out);
                 }
@@ -844,18 +1092,17 @@ impl FragCtx<'_> {
             if lod {
                 // The group's first pixel's quad, 0..=28 quads from qa.
                 let d = (((x0 + g as i32) >> 1) - qa) as usize;
-                for ((lu, t), q) in lam.iter_mut().zip(&self.tex).zip(&*lq) {
-                    let Some((tx, _)) = *t else { break };
-                    if tx.needs_lambda() {
-                        *lu = super::texture::spread_quads(q.as_flattened(), d, x0 + g as i32);
+                for (u, (lu, q)) in lam.iter_mut().zip(&*lq).enumerate() {
+                    if plan.lod & (1 << u) != 0 {
+                        *lu = spread_on::<AVX2>(q, d, x0 + g as i32);
                     }
                 }
             }
             if whole && on_lanes {
                 // Pixel-major colours straight to RGBA8 (no transposition back).
-                let px = self.tex_pixels(vs, m as u8, lam);
+                let px = self.tex_pixels_on::<AVX2>(vs, m as u8, lam);
                 if let Some(dst) = bufs.color.get_mut(base + g..) {
-                    super::lanes::store_pixels(dst, m as u8, &px);
+                    store_pixels_on::<AVX2>(dst, m as u8, &px);
                 }
                 g += LANES;
                 continue;
@@ -3599,5 +3846,71 @@ mod tests {
             taken > 1500 && flat > 800 && taken < 2900,
             "taken {taken} flat {flat}"
         );
+    }
+
+    #[test]
+    fn spread_on_lanes_is_spread_quads_bit_for_bit() {
+        let mut g = Gen(43);
+        for _ in 0..5000 {
+            let q: [[f32; LANES]; ROW_QUAD_BLOCKS] =
+                std::array::from_fn(|_| std::array::from_fn(|_| g.float()));
+            let d = (g.next() % 40) as usize;
+            let x = (g.next() % 4096) as i32 - 1024;
+            let want = crate::cpu::texture::spread_quads(q.as_flattened(), d, x).map(f32::to_bits);
+            for avx2 in [false, true] {
+                let got = match avx2 {
+                    #[cfg(target_arch = "x86_64")]
+                    true if crate::cpu::lanes::has_avx2() => spread_on::<true>(&q, d, x),
+                    true => continue,
+                    false => spread_on::<false>(&q, d, x),
+                };
+                assert_eq!(got.map(f32::to_bits), want, "d {d} x {x} avx2 {avx2}");
+            }
+        }
+    }
+
+    #[test]
+    fn store_pixels_on_lanes_is_store_pixels_byte_for_byte() {
+        let mut g = Gen(47);
+        for _ in 0..3000 {
+            let c: [Vec4; LANES] =
+                std::array::from_fn(|_| Vec4::new(g.float(), g.float(), g.float(), g.float()));
+            let n = 1 + (g.next() % 12) as usize;
+            let m = g.next() as u8;
+            let row0: Vec<[u8; 4]> = (0..n).map(|_| (g.next() as u32).to_le_bytes()).collect();
+            let mut want = row0.clone();
+            crate::cpu::lanes::store_pixels(&mut want, m, &c);
+            for avx2 in [false, true] {
+                let mut got = row0.clone();
+                match avx2 {
+                    #[cfg(target_arch = "x86_64")]
+                    true if crate::cpu::lanes::has_avx2() => {
+                        store_pixels_on::<true>(&mut got, m, &c)
+                    }
+                    true => continue,
+                    false => store_pixels_on::<false>(&mut got, m, &c),
+                }
+                assert_eq!(got, want, "m {m:#x} n {n} avx2 {avx2} {c:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn to_pixels_on_lanes_is_to_pixels_bit_for_bit() {
+        #[cfg(target_arch = "x86_64")]
+        if crate::cpu::lanes::has_avx2() {
+            let mut g = Gen(53);
+            for _ in 0..2000 {
+                let c: [[f32; LANES]; 4] =
+                    std::array::from_fn(|_| std::array::from_fn(|_| g.float()));
+                let want = crate::cpu::lanes::to_pixels([&c[0], &c[1], &c[2], &c[3]]);
+                // SAFETY: the CPU has AVX2 (`has_avx2`).
+                let got = unsafe { to_pixels_avx2(&c) };
+                assert_eq!(
+                    got.map(|v| v.to_array().map(f32::to_bits)),
+                    want.map(|v| v.to_array().map(f32::to_bits))
+                );
+            }
+        }
     }
 }
