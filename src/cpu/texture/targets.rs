@@ -97,6 +97,14 @@ impl Sampler {
         // ≈28 instructions a group more in one build).
         let inv = inv_q_lanes(q);
         let (ss, tt, rr) = (mul_lanes(s, &inv), mul_lanes(t, &inv), mul_lanes(r, &inv));
+        // The AVX2 route called from here (through `targets_lanes`' check, its call and
+        // arguments cost ≈25 instructions a group more).
+        #[cfg(target_arch = "x86_64")]
+        if avx2() {
+            // SAFETY: AVX2 is present (checked just above).
+            unsafe { self.targets_lanes8(&ss, &tt, &rr, lambda, m, &mut out) };
+            return out;
+        }
         self.targets_lanes(&ss, &tt, &rr, lambda, m, &mut out);
         out
     }
@@ -106,7 +114,7 @@ impl Sampler {
     /// trilinear kernel stores all eight lanes, those outside `m` zero) for the lanes of `m`
     /// (the others are left zero). A cube map picks each lane's face and face
     /// coordinates as `texel` does; then the flush's route (NEAREST, LINEAR, or λ's choice per
-    /// lane) on each lane's face. On AVX2, [`Sampler::targets_lanes8`].
+    /// lane) on each lane's face. Without AVX2 (with it, [`Sampler::targets_lanes8`]).
     #[inline]
     pub(super) fn targets_lanes(
         &self,
@@ -117,11 +125,6 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        #[cfg(target_arch = "x86_64")]
-        if avx2() {
-            // SAFETY: AVX2 is present (checked just above).
-            return unsafe { self.targets_lanes8(s, t, r, lambda, m, out) };
-        }
         let mut face = [0i32; LANES];
         let (mut fs, mut ft) = ([0.0f32; LANES], [0.0f32; LANES]);
         let (s, t) = match self.cube {
