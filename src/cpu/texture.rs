@@ -1354,6 +1354,65 @@ fn cube_project(face: usize, [x, y, z]: [f32; 3]) -> (f32, f32) {
     (sc * inv + 0.5, tc * inv + 0.5)
 }
 
+/// [`cube_face`] then [`cube_project`] of eight directions (the lanes of `x`, `y`, `z`) at
+/// once (AVX2): the faces, s and t of each lane, the scalar values bit for bit. The same
+/// compares (`>=` and `>` ordered: false with a NaN, as in Rust), so the same face; the
+/// negations and magnitudes as sign-bit flips and clears (what `-x` and `abs` do); the same
+/// division, product and sum (`vdivps`, `vmulps`, `vaddps`, no fused multiply-add), the lanes
+/// where |ma| is not above 0 taking 0 for 1/(2|ma|) as the scalar `inv`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+#[allow(clippy::type_complexity)]
+fn cube8(
+    x: std::arch::x86_64::__m256,
+    y: std::arch::x86_64::__m256,
+    z: std::arch::x86_64::__m256,
+) -> (
+    std::arch::x86_64::__m256i,
+    std::arch::x86_64::__m256,
+    std::arch::x86_64::__m256,
+) {
+    use std::arch::x86_64::*;
+    let sign = _mm256_set1_ps(-0.0);
+    let abs = |v: __m256| _mm256_andnot_ps(sign, v);
+    let neg = |v: __m256| _mm256_xor_ps(sign, v);
+    let ge = |a: __m256, b: __m256| _mm256_cmp_ps::<_CMP_GE_OQ>(a, b);
+    let zero = _mm256_setzero_ps();
+    let (ax, ay, az) = (abs(x), abs(y), abs(z));
+    // `cube_face`'s major axis: X where ax >= ay and ax >= az, else Y where ay >= az, else Z.
+    let ox = _mm256_and_ps(ge(ax, ay), ge(ax, az));
+    let oy = _mm256_andnot_ps(ox, ge(ay, az));
+    let (px, py, pz) = (ge(x, zero), ge(y, zero), ge(z, zero));
+    // The face: 4 (Z), 2 (Y) or 0 (X), plus 1 on the negative side (the masks are -1).
+    let pos = _mm256_blendv_ps(_mm256_blendv_ps(pz, py, oy), px, ox);
+    let icast = |v: __m256| _mm256_castps_si256(v);
+    let face = _mm256_add_epi32(
+        _mm256_add_epi32(_mm256_set1_epi32(5), icast(pos)),
+        _mm256_add_epi32(
+            _mm256_slli_epi32::<2>(icast(ox)),
+            _mm256_slli_epi32::<1>(icast(oy)),
+        ),
+    );
+    // `cube_project`'s sc, tc and |ma| per face: X ∓z, -y, ax; Y x, ±z, ay; Z ±x, -y, az.
+    let sx = _mm256_blendv_ps(z, neg(z), px);
+    let sz = _mm256_blendv_ps(neg(x), x, pz);
+    let sc = _mm256_blendv_ps(_mm256_blendv_ps(sz, x, oy), sx, ox);
+    let ty = _mm256_blendv_ps(neg(z), z, py);
+    let tc = _mm256_blendv_ps(neg(y), ty, oy);
+    let m = _mm256_blendv_ps(_mm256_blendv_ps(az, ay, oy), ax, ox);
+    let inv = _mm256_and_ps(
+        _mm256_cmp_ps::<_CMP_GT_OQ>(m, zero),
+        _mm256_div_ps(_mm256_set1_ps(0.5), m),
+    );
+    let half = _mm256_set1_ps(0.5);
+    (
+        face,
+        _mm256_add_ps(_mm256_mul_ps(sc, inv), half),
+        _mm256_add_ps(_mm256_mul_ps(tc, inv), half),
+    )
+}
+
 /// The depth comparison of §3.8.14 (TEXTURE_COMPARE_MODE COMPARE_R_TO_TEXTURE): `r` clamped
 /// to [0, 1] against the texel's depth `t[0]` under `func`; 1 where it passes, else 0.
 #[inline(always)]

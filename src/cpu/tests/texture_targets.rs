@@ -844,3 +844,55 @@ fn lod_dense_kernel_is_the_scalar_texel_bit_for_bit() {
         assert!(taken.iter().all(|&n| n > 3000), "{taken:?}");
     }
 }
+
+/// [`cube8`](crate::cpu::texture::cube8) (the AVX2 cube route's faces) against `cube_face`
+/// and `cube_project` lane by lane, bit for bit: awkward directions (NaN, infinities,
+/// subnormals, signed zeros, huge) and the faces' edges and corners (ties of |x|, |y|, |z| in
+/// every order and sign).
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn cube8_is_cube_face_and_project_bit_for_bit() {
+    use crate::cpu::texture::{cube8, cube_face, cube_project};
+    use std::arch::x86_64::{__m256, __m256i};
+    if !crate::cpu::lanes::has_avx2() {
+        return;
+    }
+    let mut next = lcg(41);
+    let ties = [1.0f32, -1.0, 0.0, -0.0, 0.5, -0.5, f32::NAN, f32::INFINITY];
+    let mut faces = [0usize; 6];
+    for round in 0..20_000 {
+        let p: [[f32; LANES]; 3] = std::array::from_fn(|_| {
+            std::array::from_fn(|_| match round % 3 {
+                0 => coord(&mut next),
+                _ => ties[(next() % ties.len() as u64) as usize],
+            })
+        });
+        // SAFETY: AVX2 is present (checked above); `__m256`/`__m256i` have the layout of
+        // `[f32; 8]`/`[i32; 8]`, every bit pattern valid for both.
+        let (f, s, t) = unsafe {
+            let v = |x: [f32; LANES]| std::mem::transmute::<[f32; LANES], __m256>(x);
+            let (f, s, t) = cube8(v(p[0]), v(p[1]), v(p[2]));
+            (
+                std::mem::transmute::<__m256i, [i32; LANES]>(f),
+                std::mem::transmute::<__m256, [f32; LANES]>(s),
+                std::mem::transmute::<__m256, [f32; LANES]>(t),
+            )
+        };
+        for l in 0..LANES {
+            let d = [p[0][l], p[1][l], p[2][l]];
+            let (face, _) = cube_face(d);
+            let (ws, wt) = cube_project(face, d);
+            assert!(
+                f[l] == face as i32
+                    && s[l].to_bits() == ws.to_bits()
+                    && t[l].to_bits() == wt.to_bits(),
+                "round {round} lane {l} {d:?}: ({}, {}, {}) vs ({face}, {ws}, {wt})",
+                f[l],
+                s[l],
+                t[l]
+            );
+            faces[face] += 1;
+        }
+    }
+    assert!(faces.iter().all(|&n| n > 5000), "{faces:?}");
+}

@@ -1139,7 +1139,7 @@ impl<'a> FusedSpan<'a> {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-fn select8(
+pub(super) fn select8(
     s: &Sampler,
     lambda: std::arch::x86_64::__m256,
 ) -> (std::arch::x86_64::__m256i, u8, std::arch::x86_64::__m256) {

@@ -10,7 +10,7 @@
 use glam::Vec4;
 
 #[cfg(target_arch = "x86_64")]
-use super::{avx2, lanes8, linear_axis8, store8};
+use super::{avx2, cube8, lanes8, linear_axis8, span::select8, store8};
 use super::{
     cube_face, cube_project, dense_kernel, depth_compare, fast_log2_lane, inv_q_lanes, kernel_kind,
     lambda_point, mask_eq, mask_ne_zero, mul_lanes, wrap_linear_lanes, wrap_nearest_lanes, Axis,
@@ -97,15 +97,24 @@ impl Sampler {
         // ≈28 instructions a group more in one build).
         let inv = inv_q_lanes(q);
         let (ss, tt, rr) = (mul_lanes(s, &inv), mul_lanes(t, &inv), mul_lanes(r, &inv));
+        // The AVX2 route called from here (through `targets_lanes`' check, its call and
+        // arguments cost ≈25 instructions a group more).
+        #[cfg(target_arch = "x86_64")]
+        if avx2() {
+            // SAFETY: AVX2 is present (checked just above).
+            unsafe { self.targets_lanes8(&ss, &tt, &rr, lambda, m, &mut out) };
+            return out;
+        }
         self.targets_lanes(&ss, &tt, &rr, lambda, m, &mut out);
         out
     }
 
     /// `texels_lanes` for a 1D or 3D texture or a cube map, from the lanes' coordinates
-    /// already divided by q (`s`, `t`, `r`) and λ before bias, into `out` for the lanes of `m`
-    /// (the others are left as they are). A cube map picks each lane's face and face
+    /// already divided by q (`s`, `t`, `r`) and λ before bias, into `out` (zeroed: the AVX2
+    /// trilinear kernel stores all eight lanes, those outside `m` zero) for the lanes of `m`
+    /// (the others are left zero). A cube map picks each lane's face and face
     /// coordinates as `texel` does; then the flush's route (NEAREST, LINEAR, or λ's choice per
-    /// lane) on each lane's face.
+    /// lane) on each lane's face. Without AVX2 (with it, [`Sampler::targets_lanes8`]).
     #[inline]
     pub(super) fn targets_lanes(
         &self,
@@ -134,22 +143,24 @@ impl Sampler {
                 (&fs, &ft)
             }
         };
-        let base = || [self.base_level; LANES];
-        match self.route {
-            Route::Nearest => self.pass_targets(false, &face, &base(), s, t, r, m, out),
-            Route::Linear => self.pass_targets(true, &face, &base(), s, t, r, m, out),
-            Route::Lod => self.lod_targets(&face, s, t, r, lambda, m, out),
-        }
+        let sel = match self.route {
+            Route::Lod => Some(self.select_lanes(lambda)),
+            _ => None,
+        };
+        self.targets_route(&face, s, t, r, sel, m, out);
     }
 
-    /// `sample_face` for the lanes of `m`, lane l on face `face[l]`: each lane's level(s),
-    /// filter and weight from `select`, a pass per filter over the lanes using it, then the
-    /// second level of the lanes that blend two and the blend (`sample_face`'s expression).
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn lod_targets(
+    /// [`Sampler::targets_lanes`] on AVX2 registers: a cube map's faces and face coordinates
+    /// for the eight lanes at once ([`cube8`]: `cube_face` and `cube_project` bit for bit;
+    /// per lane they cost ≈30 instructions a lane on texture-targets), λ's level choice by
+    /// [`select8`] (`select_lanes` bit for bit, without its lane loops through memory).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn targets_lanes8(
         &self,
-        face: &[i32; LANES],
         s: &[f32; LANES],
         t: &[f32; LANES],
         r: &[f32; LANES],
@@ -157,15 +168,82 @@ impl Sampler {
         m: u8,
         out: &mut TexelLanes,
     ) {
-        // Each lane's level, filter and weight: `select` on lanes, as the 2D path takes them.
-        let (la, linear, f) = self.select_lanes(lambda);
+        use std::arch::x86_64::{__m256, __m256i};
+        let ints = |v: __m256i| {
+            // SAFETY: `__m256i` has the layout of `[i32; 8]`, every bit pattern valid for both.
+            unsafe { std::mem::transmute::<__m256i, [i32; LANES]>(v) }
+        };
+        let floats = |v: __m256| {
+            // SAFETY: `__m256` has the layout of `[f32; 8]`.
+            unsafe { std::mem::transmute::<__m256, [f32; LANES]>(v) }
+        };
+        let mut face = [0i32; LANES];
+        let (fs, ft);
+        let (s, t) = match self.cube {
+            false => (s, t),
+            true => {
+                let (f, a, b) = cube8(lanes8(s), lanes8(t), lanes8(r));
+                (face, fs, ft) = (ints(f), floats(a), floats(b));
+                (&fs, &ft)
+            }
+        };
+        let sel = match self.route {
+            Route::Lod => {
+                let (lv, linear, f) = select8(self, lanes8(lambda));
+                Some((ints(lv), linear, floats(f)))
+            }
+            _ => None,
+        };
+        self.targets_route(&face, s, t, r, sel, m, out);
+    }
+
+    /// The flush's route for the lanes of `m` on faces `face` with face coordinates `s`, `t`
+    /// (and `r`): NEAREST or LINEAR on the base level, or (`sel`, `select_lanes`' levels,
+    /// LINEAR lanes and weights) λ's choice per lane ([`Sampler::lod_targets`]).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn targets_route(
+        &self,
+        face: &[i32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        sel: Option<([i32; LANES], u8, [f32; LANES])>,
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
+        let base = [self.base_level; LANES];
+        match sel {
+            Some((la, linear, f)) => self.lod_targets(face, &la, linear, &f, s, t, r, m, out),
+            None => self.pass_targets(self.route == Route::Linear, face, &base, s, t, r, m, out),
+        }
+    }
+
+    /// `sample_face` for the lanes of `m`, lane l on face `face[l]`: each lane's level(s),
+    /// filter and weight from `select` (`la`, `linear`, `f`: `select_lanes`), a pass per
+    /// filter over the lanes using it, then the second level of the lanes that blend two and
+    /// the blend (`sample_face`'s expression).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn lod_targets(
+        &self,
+        face: &[i32; LANES],
+        la: &[i32; LANES],
+        linear: u8,
+        f: &[f32; LANES],
+        s: &[f32; LANES],
+        t: &[f32; LANES],
+        r: &[f32; LANES],
+        m: u8,
+        out: &mut TexelLanes,
+    ) {
         let mut lb = [self.base_level; LANES];
-        let (linear, second) = (linear & m, mask_ne_zero(&f) & m);
-        if linear == m && self.lod_dense(&la, s, t, r, &f, second, m, out) {
+        let (linear, second) = (linear & m, mask_ne_zero(f) & m);
+        if linear == m && self.lod_dense(la, s, t, r, f, second, m, out) {
             return;
         }
-        self.pass_targets(false, face, &la, s, t, r, m & !linear, out);
-        self.pass_targets(true, face, &la, s, t, r, linear, out);
+        self.pass_targets(false, face, la, s, t, r, m & !linear, out);
+        self.pass_targets(true, face, la, s, t, r, linear, out);
         if second == 0 {
             return;
         }
@@ -927,20 +1005,17 @@ impl Sampler {
             _mm256_mul_ps(alpha, as_),
         ];
         // The lanes of `m` (an all-ones lane) take the clamped result, the others keep `cf`.
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let sel = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-            bits,
-        ));
+        let sel = mask8(m);
         let ch = [0, 1, 2, 3].map(|k| {
             let x = _mm256_min_ps(_mm256_max_ps(out[k], zero), one);
             _mm256_blendv_ps(prev[k], x, sel)
         });
-        let mut o = [[0.0f32; 4]; LANES];
-        store8(&ch, 0xff, &mut o);
-        for (c, o) in cf.iter_mut().zip(o) {
-            *c = Vec4::from_array(o);
-        }
+        // SAFETY: `Vec4` is four f32 in memory order (16 bytes, aligned to 16), so
+        // `[Vec4; 8]` has the size of `[[f32; 4]; 8]` and at least its alignment, and every
+        // bit pattern is valid for both: the registers go straight into `cf` (through an array
+        // and a copy per lane, ≈16 instructions a call more).
+        let cf = unsafe { &mut *std::ptr::from_mut(cf).cast::<TexelLanes>() };
+        store8(&ch, 0xff, cf);
     }
 }
 
@@ -1029,6 +1104,19 @@ fn load8(at: impl Fn(usize) -> [f32; 4]) -> [std::arch::x86_64::__m256; 4] {
         _mm256_shuffle_ps::<0x44>(t2, t3),
         _mm256_shuffle_ps::<0xEE>(t2, t3),
     ]
+}
+
+/// The lanes of `m` as an AVX2 mask: lane l all ones where bit l of `m` is set, else zero.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn mask8(m: u8) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+        bits,
+    ))
 }
 
 /// Can the AVX2 kernel [`dense_targets8`] take a one-image LINEAR pass of a 1D or 3D
@@ -1337,18 +1425,23 @@ unsafe fn dense_targets_lod8(
         let fv = lanes8(f);
         let nf = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
         // The lanes of `second` (bit l of the mask to all ones in lane l).
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let sel = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
-            bits,
-        ));
+        let sel = mask8(second);
         for (c, cb) in ch.iter_mut().zip(cb) {
             // `sample_face`'s a·(1 - f) + b·f.
             let mix = _mm256_add_ps(_mm256_mul_ps(*c, nf), _mm256_mul_ps(cb, fv));
             *c = _mm256_blendv_ps(*c, mix, sel);
         }
     }
-    store8(&ch, m, out);
+    // `out` comes zeroed (`targets_texels`) and nothing else has written it: the lanes
+    // outside `m` cleared and all eight stored (`store8`'s lane-by-lane stores of a partial
+    // mask cost ≈20 instructions more).
+    if m != 0xff {
+        let keep = mask8(m);
+        for c in &mut ch {
+            *c = _mm256_and_ps(*c, keep);
+        }
+    }
+    store8(&ch, 0xff, out);
     true
 }
 
