@@ -1049,33 +1049,42 @@ impl Worker {
         // varyings (fewer than four, never flat) one by one.
         let l4 = l32.map(|r| r.map(Vec4::splat));
         let iw4 = iw.map(Vec4::splat);
-        let (fl, dv) = planes.split_at_mut(12 * (nflat / 4).min(n / 4));
-        for (gi, chunk) in fl.chunks_exact_mut(12).enumerate() {
-            if let Ok(c) = <&mut [_; 12]>::try_from(chunk) {
-                store_group(c, [flat4(4 * gi), Vec4::ZERO, Vec4::ZERO]);
-            }
+        // (Walked by `split_first_chunk_mut`: `chunks_mut(12)` and the counts of the groups
+        // cost divisions by 12 and 3 a triangle, ≈8 instructions a colour-only triangle.)
+        let mut rest = planes;
+        let mut k = 0;
+        // (The `else` arms below never run, so no float is left unwritten: `nflat`, a multiple
+        // of 4, is at most `n` (4 with the colour, 8 with the secondary colour after it), and
+        // the divided loop checks the length first.)
+        while k < nflat {
+            let Some((c, r)) = std::mem::take(&mut rest).split_first_chunk_mut::<12>() else {
+                break;
+            };
+            store_group(c, [flat4(k), Vec4::ZERO, Vec4::ZERO]);
+            (rest, k) = (r, k + 4);
         }
-        let k0 = fl.len() / 3;
-        for (gi, chunk) in dv.chunks_mut(12).enumerate() {
-            let k = k0 + 4 * gi;
+        while !rest.is_empty() {
             let f = [
                 var4(0, k) * iw4[0],
                 var4(1, k) * iw4[1],
                 var4(2, k) * iw4[2],
             ];
             let pl = plane(l4, f);
-            match <&mut [_; 12]>::try_from(&mut *chunk) {
-                Ok(c) => store_group(c, pl),
-                Err(_) => {
-                    let [p0, px, py] = pl;
-                    let a = [
-                        p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
-                    ];
-                    for (d, s) in chunk.iter_mut().zip(a) {
-                        d.write(s);
-                    }
+            if rest.len() < 12 {
+                let [p0, px, py] = pl;
+                let a = [
+                    p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
+                ];
+                for (d, s) in rest.iter_mut().zip(a) {
+                    d.write(s);
                 }
+                break;
             }
+            let Some((c, r)) = std::mem::take(&mut rest).split_first_chunk_mut::<12>() else {
+                break;
+            };
+            store_group(c, pl);
+            (rest, k) = (r, k + 4);
         }
         // SAFETY: `reserve` made room for `len` more floats, and every one of them was written
         // above (`head`, and each chunk of `planes` whole).
