@@ -1011,8 +1011,10 @@ fn varyings_sse(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
 /// `varyings` with eight lanes a register (AVX2): the same `addps`, `mulps` and `divps` of
 /// each lane as `varyings_sse` (lane x `fx0 as f32 + l`, `(a + dx·x) + yt`, 1/w by a divide,
 /// the product by it), each varying one 256-bit plane and one store instead of two halves
-/// (≈23 → ≈12 instructions a varying a group). Where `planes` lacks a plane it is
-/// `varyings`' route.
+/// (≈23 → ≈12 instructions a varying a group). The planes are read through a pointer, the
+/// divided varyings two a turn (the zip of `chunks_exact(3)` over the pool and `iter_mut` over
+/// the rows cost a division by 3 a call and four instructions of loop a varying). Where
+/// `planes` lacks a plane it is `varyings`' route.
 ///
 /// # Safety
 /// The CPU must have AVX2 (`has_avx2`).
@@ -1030,11 +1032,15 @@ pub(super) unsafe fn varyings_avx2(
         _mm256_add_ps, _mm256_div_ps, _mm256_mul_ps, _mm256_set1_ps, _mm256_setr_ps,
         _mm256_storeu_ps,
     };
-    let Some(pl @ [w0, wx, wy, ..]) = planes.get(..3 + 3 * out.len()) else {
+    let n = out.len();
+    let Some(pl @ [w0, wx, wy, ..]) = planes.get(..3 + 3 * n) else {
         return varyings(planes, nflat, fx0, fy, out);
     };
-    // SAFETY: the CPU has AVX2 (this function's contract); each store writes the eight f32 of
-    // one `[f32; 8]` (in bounds, no alignment needed).
+    let nf = nflat.min(n);
+    // SAFETY: the CPU has AVX2 (this function's contract). `pl` holds 3 + 3n floats, so the
+    // plane of row j < n, floats 3 + 3j..6 + 3j, is inside it (`p(j)` reads it for j < n
+    // only); each store writes the eight f32 of row j < n of `out` (in bounds, no alignment
+    // needed).
     unsafe {
         let xs = _mm256_add_ps(
             _mm256_set1_ps(fx0 as f32),
@@ -1047,20 +1053,24 @@ pub(super) unsafe fn varyings_avx2(
             )
         };
         let inv = _mm256_div_ps(_mm256_set1_ps(1.0), plane(*w0, *wx, *wy * fy));
+        let (src, dst) = (pl.as_ptr().add(3), out.as_mut_ptr().cast::<f32>());
+        let p = |j: usize| {
+            let q = src.add(3 * j);
+            plane(*q, *q.add(1), *q.add(2) * fy)
+        };
         // The flat varyings first, then those divided (no test of j in the loops).
-        let (flat, div) = out.split_at_mut(nflat.min(out.len()));
-        let rest = pl.get(3..).unwrap_or_default();
-        let k = 3 * flat.len();
-        let (pf, pd) = (
-            rest.get(..k).unwrap_or_default(),
-            rest.get(k..).unwrap_or_default(),
-        );
-        for (o, p) in flat.iter_mut().zip(pf.chunks_exact(3)) {
-            _mm256_storeu_ps(o.as_mut_ptr(), plane(p[0], p[1], p[2] * fy));
+        let mut j = 0;
+        while j < nf {
+            _mm256_storeu_ps(dst.add(LANES * j), p(j));
+            j += 1;
         }
-        for (o, p) in div.iter_mut().zip(pd.chunks_exact(3)) {
-            let v = _mm256_mul_ps(plane(p[0], p[1], p[2] * fy), inv);
-            _mm256_storeu_ps(o.as_mut_ptr(), v);
+        while j + 2 <= n {
+            _mm256_storeu_ps(dst.add(LANES * j), _mm256_mul_ps(p(j), inv));
+            _mm256_storeu_ps(dst.add(LANES * (j + 1)), _mm256_mul_ps(p(j + 1), inv));
+            j += 2;
+        }
+        if j < n {
+            _mm256_storeu_ps(dst.add(LANES * j), _mm256_mul_ps(p(j), inv));
         }
     }
 }

@@ -271,6 +271,7 @@ impl Worker {
             [a.iw, b.iw, c.iw],
             flags,
             mat,
+            |k| load4(&v[0].v, k),
             |j, k| load4(&v[j].v, k),
             cover,
         );

@@ -333,6 +333,53 @@ pub(super) fn load4(s: &[f32], k: usize) -> Vec4 {
     }
 }
 
+/// Floats k..k + 4 of `s`, without a range check.
+///
+/// # Safety
+/// `k + 4 <= s.len()`.
+#[inline(always)]
+unsafe fn load4_unchecked(s: &[f32], k: usize) -> Vec4 {
+    debug_assert!(k + 4 <= s.len(), "load4_unchecked at {k} of {}", s.len());
+    // SAFETY: floats k..k + 4 are inside `s` (the contract); an unaligned read of four f32.
+    Vec4::from_array(unsafe { s.as_ptr().add(k).cast::<[f32; 4]>().read_unaligned() })
+}
+
+/// Four varyings' planes (`[value, x slope, y slope]`, one varying a lane) stored as the pool
+/// holds them, varying by varying: `a.x, b.x, c.x, a.y, b.y, ...`. On x86-64 by nine SSE
+/// shuffles and three stores of four (the array of twelve lanes was fourteen shuffles, a
+/// blend and five stores).
+#[inline(always)]
+fn store_group(d: &mut [MaybeUninit<f32>; 12], [a, b, c]: [Vec4; 3]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{
+            __m128, _mm_shuffle_ps, _mm_storeu_ps, _mm_unpackhi_ps, _mm_unpacklo_ps,
+        };
+        // SAFETY: SSE is part of the x86-64 baseline; the three stores write floats 0..4,
+        // 4..8 and 8..12 of the twelve of `d` (no alignment needed).
+        unsafe {
+            let (a, b, c) = (__m128::from(a), __m128::from(b), __m128::from(c));
+            let ab_lo = _mm_unpacklo_ps(a, b); // a0 b0 a1 b1
+            let ab_hi = _mm_unpackhi_ps(a, b); // a2 b2 a3 b3
+            let c0a1 = _mm_shuffle_ps::<0x50>(c, a); // c0 c0 a1 a1
+            let b1c1 = _mm_shuffle_ps::<0x55>(b, c); // b1 b1 c1 c1
+            let c2a3 = _mm_shuffle_ps::<0xAA>(c, ab_hi); // c2 c2 a3 a3
+            let b3c3 = _mm_shuffle_ps::<0xFF>(ab_hi, c); // b3 b3 c3 c3
+            let p = d.as_mut_ptr().cast::<f32>();
+            _mm_storeu_ps(p, _mm_shuffle_ps::<0x84>(ab_lo, c0a1)); // a0 b0 c0 a1
+            _mm_storeu_ps(p.add(4), _mm_shuffle_ps::<0x48>(b1c1, ab_hi)); // b1 c1 a2 b2
+            _mm_storeu_ps(p.add(8), _mm_shuffle_ps::<0x88>(c2a3, b3c3)); // c2 a3 b3 c3
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let v = [a.x, b.x, c.x, a.y, b.y, c.y, a.z, b.z, c.z, a.w, b.w, c.w];
+        for (d, s) in d.iter_mut().zip(v) {
+            d.write(s);
+        }
+    }
+}
+
 impl SetupCtx {
     /// LineWidth.
     pub(super) fn line_width(&self) -> f32 {
@@ -885,11 +932,11 @@ impl Worker {
             };
             if let (Some(a), Some(b), Some(c)) = (c(ids[0]), c(ids[1]), c(ids[2])) {
                 let q = [a, b, c];
-                self.emit_tri(ctx, &g, z, iw, flags, mat, |j, _| q[j], cover);
+                self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
                 return;
             }
         }
-        // The whole vertices, the provoking one only under FLAT (the only case `var4` reads it).
+        // The whole vertices, the provoking one only under FLAT (the only case `flat4` reads it).
         let vert = |i: u32| {
             let i = i as usize;
             debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
@@ -897,25 +944,46 @@ impl Worker {
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
         let prov = if flat { vert(provoking) } else { &[][..] };
-        // Varyings k..k + 4 of vertex j: colours from the provoking vertex under FLAT
-        // (`emit_tri` reads them of vertex 0 only there); a run of four floats in one load,
-        // otherwise one float each.
-        let var4 = |j: usize, k: usize| {
-            let Some(t) = table.get(k / 4) else {
-                return Vec4::ZERO;
-            };
-            let src = if t.colour && flat { prov } else { vs[j] };
+        // Every vertex whole (always, the vertex stage processed them): a run's four floats
+        // load without a range check.
+        let whole = vs.iter().all(|v| v.len() == s);
+        // Varyings k..k + 4 of vertex j: colours from the provoking vertex under FLAT; a run
+        // of four floats in one load, otherwise one float each.
+        let get4 = |src: &[f32], t: &Gather4| {
             if t.run {
                 return load4(src, t.off[0] as usize);
             }
             Vec4::from_array(t.off.map(|o| src.get(o as usize).copied().unwrap_or(0.0)))
         };
-        self.emit_tri(ctx, &g, z, iw, flags, mat, var4, cover);
+        let flat4 = |k: usize| {
+            let Some(t) = table.get(k / 4) else {
+                return Vec4::ZERO;
+            };
+            get4(if t.colour && flat { prov } else { vs[0] }, t)
+        };
+        // `emit_tri` asks `var4` for the groups it divides by w only (k >= its `nflat`), never
+        // the colours under FLAT (those are its flat groups): always vertex j's own floats.
+        let var4 = |j: usize, k: usize| {
+            let Some(t) = table.get(k / 4) else {
+                return Vec4::ZERO;
+            };
+            debug_assert!(!(t.colour && flat), "a FLAT colour group divided");
+            let src = vs[j];
+            if t.run && whole {
+                // SAFETY: `whole`: `src` holds the vertex's `s` = `layout.stride` floats;
+                // `run`: `off[0] + 4 <= stride` (`gather_table`, of this layout).
+                return unsafe { load4_unchecked(src, t.off[0] as usize) };
+            }
+            get4(src, t)
+        };
+        self.emit_tri(ctx, &g, z, iw, flags, mat, flat4, var4, cover);
     }
 
     /// Emits the triangle placed by `g` (vertices in `g.v`'s counter-clockwise order, `z` and
     /// `iw` their window z and 1/w, `var4(j, k)` varyings k..k + 4 of vertex j, k a multiple
-    /// of 4, lanes past the last varying anything; `cover` from `Geom::coverage`): barycentric
+    /// of 4, lanes past the last varying anything, asked for the varyings divided by w only;
+    /// `flat4(k)` the same of the flat varyings under `F_FLAT` (the colours, k below 4 or 8),
+    /// the value the whole triangle takes; `cover` from `Geom::coverage`): barycentric
     /// planes, depth plane, one plane per varying, and the primitive.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -927,6 +995,7 @@ impl Worker {
         iw: [f32; 3],
         flags: u8,
         mat: u32,
+        flat4: impl Fn(usize) -> Vec4,
         var4: impl Fn(usize, usize) -> Vec4,
         cover: u8,
     ) {
@@ -975,29 +1044,50 @@ impl Worker {
         }
         // Four varyings at a time, one per SIMD lane: per lane the same multiplications and
         // additions in the same order as `plane`, so the same bits. FLAT's (k < nflat, a
-        // multiple of 4) keep vertex 0's value and slopes of 0.
+        // multiple of 4, whole groups) keep vertex 0's value and slopes of 0; then the whole
+        // groups divided, each stored as three vectors (`store_group`); then the last
+        // varyings (fewer than four, never flat) one by one.
         let l4 = l32.map(|r| r.map(Vec4::splat));
-        for (gi, chunk) in planes.chunks_mut(12).enumerate() {
-            let k = 4 * gi;
-            let (p0, px, py) = if k < nflat {
-                (var4(0, k), Vec4::ZERO, Vec4::ZERO)
-            } else {
-                let f = [var4(0, k) * iw[0], var4(1, k) * iw[1], var4(2, k) * iw[2]];
-                let [p0, px, py] = plane(l4, f);
-                (p0, px, py)
+        let iw4 = iw.map(Vec4::splat);
+        // (Walked by `split_first_chunk_mut`: `chunks_mut(12)` and the counts of the groups
+        // cost divisions by 12 and 3 a triangle, ≈8 instructions a colour-only triangle.)
+        let mut rest = planes;
+        let mut k = 0;
+        // (The `else` arms below never run, so no float is left unwritten: `nflat`, a multiple
+        // of 4, is at most `n` (4 with the colour, 8 with the secondary colour after it), and
+        // the divided loop checks the length first.)
+        while k < nflat {
+            let Some((c, r)) = std::mem::take(&mut rest).split_first_chunk_mut::<12>() else {
+                break;
             };
-            let a = [
-                p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
+            store_group(c, [flat4(k), Vec4::ZERO, Vec4::ZERO]);
+            (rest, k) = (r, k + 4);
+        }
+        while !rest.is_empty() {
+            let f = [
+                var4(0, k) * iw4[0],
+                var4(1, k) * iw4[1],
+                var4(2, k) * iw4[2],
             ];
-            // A whole group as twelve stores; the last varyings (fewer than four) one by one.
-            let w = |(d, s): (&mut MaybeUninit<f32>, f32)| _ = d.write(s);
-            match <&mut [_; 12]>::try_from(&mut *chunk) {
-                Ok(c) => c.iter_mut().zip(a).for_each(w),
-                Err(_) => chunk.iter_mut().zip(a).for_each(w),
+            let pl = plane(l4, f);
+            if rest.len() < 12 {
+                let [p0, px, py] = pl;
+                let a = [
+                    p0.x, px.x, py.x, p0.y, px.y, py.y, p0.z, px.z, py.z, p0.w, px.w, py.w,
+                ];
+                for (d, s) in rest.iter_mut().zip(a) {
+                    d.write(s);
+                }
+                break;
             }
+            let Some((c, r)) = std::mem::take(&mut rest).split_first_chunk_mut::<12>() else {
+                break;
+            };
+            store_group(c, pl);
+            (rest, k) = (r, k + 4);
         }
         // SAFETY: `reserve` made room for `len` more floats, and every one of them was written
-        // above (`head` and each chunk of `planes` whole).
+        // above (`head`, and each chunk of `planes` whole).
         unsafe { self.pool.set_len(voff + len) };
         let voff = voff as u32;
         self.push(RPrim {
@@ -1278,9 +1368,42 @@ pub fn tile_range(bbox: &[i32; 4]) -> [usize; 4] {
 
 #[cfg(test)]
 mod tests {
-    use super::{cen, geom, geom_wins, plane, rect_cen, Geom, Win, SNAP_LIMIT};
+    use super::{
+        cen, geom, geom_wins, load4, load4_unchecked, plane, rect_cen, store_group, Geom, Win,
+        SNAP_LIMIT,
+    };
     use crate::cpu::testgen::Gen;
     use glam::Vec4;
+
+    /// `store_group` against the twelve floats written lane by lane (`emit_tri`'s last group),
+    /// bit for bit (NaN payloads included: no arithmetic), and `load4_unchecked` against
+    /// `load4` inside a slice.
+    #[test]
+    fn store_group_interleaves_the_planes() {
+        let mut g = Gen(0x5eed_0716);
+        for _ in 0..2000 {
+            let v: [Vec4; 3] = std::array::from_fn(|_| {
+                Vec4::from_array(std::array::from_fn(|_| f32::from_bits(g.next() as u32)))
+            });
+            let mut got = [std::mem::MaybeUninit::new(0.0f32); 12];
+            store_group(&mut got, v);
+            let [a, b, c] = v;
+            let want = [a.x, b.x, c.x, a.y, b.y, c.y, a.z, b.z, c.z, a.w, b.w, c.w];
+            for (i, (d, w)) in got.iter().zip(want).enumerate() {
+                // SAFETY: every float was initialised (`new(0.0)`) before `store_group`.
+                let d = unsafe { d.assume_init() };
+                assert_eq!(d.to_bits(), w.to_bits(), "float {i} of {v:?}");
+            }
+            let s: Vec<f32> = (0..12).map(|_| g.float()).collect();
+            let k = g.next() as usize % 9;
+            // SAFETY: k + 4 <= 12 = s.len().
+            let u = unsafe { load4_unchecked(&s, k) };
+            assert_eq!(
+                u.to_array().map(f32::to_bits),
+                load4(&s, k).to_array().map(f32::to_bits)
+            );
+        }
+    }
 
     /// `plane` of four varyings at once (as `emit_tri` builds them) against `plane` of each
     /// alone, bit for bit, on random planes and values (NaN and infinities among them).
