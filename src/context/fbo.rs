@@ -1315,9 +1315,7 @@ unsafe fn unorm8_row_avx2(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
     use std::arch::x86_64::*;
     let n = src.len().min(dst.len());
     let whole = n - n % 8;
-    let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-    let (scale, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-    let low = _mm256_set1_epi32(0xFF);
+    let one = _mm256_set1_ps(1.0);
     // After the packs, 32-bit element j holds texel [0, 2, 4, 6, 1, 3, 5, 7][j].
     let order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
     // One register of two texels: alpha 1 for an RGB level (lanes 3 and 7 from `one`), then
@@ -1330,9 +1328,7 @@ unsafe fn unorm8_row_avx2(src: &[[f32; 4]], dst: &mut [[u8; 4]], rgb: bool) {
             } else {
                 v
             };
-            let v = _mm256_min_ps(_mm256_max_ps(v, zero), one);
-            let t = _mm256_add_ps(_mm256_mul_ps(v, scale), bias);
-            _mm256_and_si256(_mm256_castps_si256(t), low)
+            crate::cpu::lanes::unorm8_bits8(v)
         }};
     }
     let (sp, dp) = (src.as_ptr().cast::<f32>(), dst.as_mut_ptr().cast::<u8>());

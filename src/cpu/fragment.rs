@@ -262,11 +262,10 @@ fn store_pixels_on<const AVX2: bool>(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANE
 #[target_feature(enable = "avx2")]
 #[inline]
 unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
+    use super::lanes::{lane_mask8, unorm8_bits8};
     use std::arch::x86_64::{
-        __m256i, _mm256_add_ps, _mm256_and_si256, _mm256_castps_si256, _mm256_cmpeq_epi32,
-        _mm256_loadu_ps, _mm256_maskstore_epi32, _mm256_max_ps, _mm256_min_ps, _mm256_mul_ps,
-        _mm256_packs_epi32, _mm256_packus_epi16, _mm256_permutevar8x32_epi32, _mm256_set1_epi32,
-        _mm256_set1_ps, _mm256_setr_epi32, _mm256_setzero_ps,
+        __m256i, _mm256_loadu_ps, _mm256_maskstore_epi32, _mm256_packs_epi32, _mm256_packus_epi16,
+        _mm256_permutevar8x32_epi32, _mm256_setr_epi32,
     };
     let Some(px) = dst.get_mut(..LANES) else {
         return super::lanes::store_pixels(dst, m, c);
@@ -278,18 +277,8 @@ unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
     // `[u8; 4]`, 32 contiguous bytes, written by the masked store (in bounds); `__m256i` is
     // plain bits.
     unsafe {
-        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-        let (k, b) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-        let low = _mm256_set1_epi32(0xFF);
         // Pixels 2j and 2j + 1, each channel's byte in the low bits of its lane.
-        let conv = |j: usize| -> __m256i {
-            let v = _mm256_loadu_ps(ch.add(8 * j));
-            let c = _mm256_min_ps(_mm256_max_ps(v, zero), one);
-            _mm256_and_si256(
-                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), b)),
-                low,
-            )
-        };
+        let conv = |j: usize| -> __m256i { unorm8_bits8(_mm256_loadu_ps(ch.add(8 * j))) };
         // Halves [px0 px2 | px1 px3] and [px4 px6 | px5 px7], then bytes whose dwords are
         // pixels 0 2 4 6 1 3 5 7 (every value is in 0..=255: the signed packs keep it).
         let w01 = _mm256_packs_epi32(conv(0), conv(1));
@@ -298,12 +287,7 @@ unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
             _mm256_packus_epi16(w01, w23),
             _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7),
         );
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let on = _mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-            bits,
-        );
-        _mm256_maskstore_epi32(px.as_mut_ptr().cast::<i32>(), on, v);
+        _mm256_maskstore_epi32(px.as_mut_ptr().cast::<i32>(), lane_mask8(m), v);
     }
 }
 

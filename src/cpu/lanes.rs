@@ -14,6 +14,46 @@ use super::framebuffer::DEPTH_MAX;
 /// Pixels a kernel handles at once.
 pub const LANES: usize = 8;
 
+/// The lanes of coverage bits `m` as a 256-bit select mask: 32-bit lane l all ones when bit
+/// l is set. Only inlined into functions compiled for AVX2 (the caller's contract).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) unsafe fn lane_mask8(m: u8) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::{
+        _mm256_and_si256, _mm256_cmpeq_epi32, _mm256_set1_epi32, _mm256_setr_epi32,
+    };
+    // SAFETY: the caller runs on a CPU with AVX2.
+    unsafe {
+        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
+            bits,
+        )
+    }
+}
+
+/// `unorm8_lanes`' conversion of eight floats: each clamped to [0, 1] (`maxps` with 0, then
+/// `minps` with 1), then c · (255/256) + 32768, whose low byte is `framebuffer::unorm8` of
+/// c, left in the low bits of its 32-bit lane (the rest zero). Only inlined into functions
+/// compiled for AVX2 (the caller's contract).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) unsafe fn unorm8_bits8(c: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::{
+        _mm256_add_ps, _mm256_and_si256, _mm256_castps_si256, _mm256_max_ps, _mm256_min_ps,
+        _mm256_mul_ps, _mm256_set1_epi32, _mm256_set1_ps, _mm256_setzero_ps,
+    };
+    // SAFETY: the caller runs on a CPU with AVX2.
+    unsafe {
+        let c = _mm256_min_ps(_mm256_max_ps(c, _mm256_setzero_ps()), _mm256_set1_ps(1.0));
+        let t = _mm256_add_ps(
+            _mm256_mul_ps(c, _mm256_set1_ps(255.0 / 256.0)),
+            _mm256_set1_ps(32768.0),
+        );
+        _mm256_and_si256(_mm256_castps_si256(t), _mm256_set1_epi32(0xFF))
+    }
+}
+
 /// `x`, `x` + 1, ... as floats, one a lane: the same values as `(x + l) as f32`, since every
 /// integer involved is far below 2^24 (window offsets are at most 16384) and so exact.
 #[inline(always)]
@@ -771,10 +811,9 @@ unsafe fn smooth_group_avx2(
     dx: &[f32; LANES],
 ) {
     use std::arch::x86_64::{
-        __m256, __m256i, _mm256_add_ps, _mm256_and_si256, _mm256_andnot_si256, _mm256_castps_si256,
-        _mm256_cmpeq_epi32, _mm256_div_ps, _mm256_loadu_si256, _mm256_max_ps, _mm256_min_ps,
-        _mm256_mul_ps, _mm256_or_si256, _mm256_set1_epi32, _mm256_set1_ps, _mm256_setr_epi32,
-        _mm256_setr_ps, _mm256_setzero_ps, _mm256_slli_epi32, _mm256_storeu_si256,
+        __m256, __m256i, _mm256_add_ps, _mm256_and_si256, _mm256_andnot_si256, _mm256_div_ps,
+        _mm256_loadu_si256, _mm256_mul_ps, _mm256_or_si256, _mm256_set1_ps, _mm256_setr_ps,
+        _mm256_slli_epi32, _mm256_storeu_si256,
     };
     let Some(px) = px.get_mut(..LANES) else {
         return;
@@ -782,31 +821,18 @@ unsafe fn smooth_group_avx2(
     let [_, w0, r0, g0, b0, a0, ..] = *o;
     let [_, wx, rx, gx, bx, ax, ..] = *dx;
     let iota = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
-    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-    let (k, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-    let low = _mm256_set1_epi32(0xFF);
+    let one = _mm256_set1_ps(1.0);
     // `o + d·x` on every lane.
     macro_rules! lin {
         ($o:expr, $d:expr, $x:expr) => {
             _mm256_add_ps(_mm256_set1_ps($o), _mm256_mul_ps(_mm256_set1_ps($d), $x))
         };
     }
-    // `unorm8_lanes`' conversion: the byte in the low bits of each 32-bit lane.
-    macro_rules! conv {
-        ($c:expr) => {{
-            let c = _mm256_min_ps(_mm256_max_ps($c, zero), one);
-            _mm256_and_si256(
-                _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), bias)),
-                low,
-            )
-        }};
-    }
     let fx: __m256 = _mm256_add_ps(_mm256_set1_ps(fxc as f32), iota);
     let inv = _mm256_div_ps(one, lin!(w0, wx, fx));
     macro_rules! ch {
         ($o:expr, $d:expr) => {
-            conv!(_mm256_mul_ps(lin!($o, $d, fx), inv))
+            unorm8_bits8(_mm256_mul_ps(lin!($o, $d, fx), inv))
         };
     }
     let v = _mm256_or_si256(
@@ -816,10 +842,7 @@ unsafe fn smooth_group_avx2(
             _mm256_slli_epi32::<24>(ch!(a0, ax)),
         ),
     );
-    let sel = _mm256_cmpeq_epi32(
-        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-        bits,
-    );
+    let sel = lane_mask8(m);
     let p = px.as_mut_ptr().cast::<__m256i>();
     // SAFETY: `px` holds eight `[u8; 4]`, 32 contiguous bytes (no alignment needed).
     unsafe {

@@ -947,14 +947,14 @@ pub(super) mod avx2 {
     use std::arch::x86_64::{
         __m256, __m256i, _mm256_add_epi16, _mm256_add_pd, _mm256_add_ps, _mm256_adds_epu8,
         _mm256_and_si256, _mm256_andnot_ps, _mm256_andnot_si256, _mm256_castps256_ps128,
-        _mm256_castps_si256, _mm256_castsi256_ps, _mm256_cmp_ps, _mm256_cmpeq_epi32,
-        _mm256_cmpgt_epi32, _mm256_cvtps_pd, _mm256_cvttpd_epi32, _mm256_extractf128_ps,
-        _mm256_loadu_ps, _mm256_loadu_si256, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd,
-        _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_mullo_epi16,
-        _mm256_or_si256, _mm256_packus_epi16, _mm256_set1_epi16, _mm256_set1_epi32, _mm256_set1_pd,
-        _mm256_set1_ps, _mm256_set_m128i, _mm256_setr_epi32, _mm256_setr_ps, _mm256_setzero_pd,
-        _mm256_setzero_ps, _mm256_setzero_si256, _mm256_shufflehi_epi16, _mm256_shufflelo_epi16,
-        _mm256_slli_epi32, _mm256_srli_epi16, _mm256_storeu_si256, _mm256_sub_epi16, _mm256_sub_ps,
+        _mm256_castsi256_ps, _mm256_cmp_ps, _mm256_cmpeq_epi32, _mm256_cmpgt_epi32,
+        _mm256_cvtps_pd, _mm256_cvttpd_epi32, _mm256_extractf128_ps, _mm256_loadu_ps,
+        _mm256_loadu_si256, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd, _mm256_min_ps,
+        _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_mullo_epi16, _mm256_or_si256,
+        _mm256_packus_epi16, _mm256_set1_epi16, _mm256_set1_epi32, _mm256_set1_pd, _mm256_set1_ps,
+        _mm256_set_m128i, _mm256_setr_ps, _mm256_setzero_pd, _mm256_setzero_ps,
+        _mm256_setzero_si256, _mm256_shufflehi_epi16, _mm256_shufflelo_epi16, _mm256_slli_epi32,
+        _mm256_srli_epi16, _mm256_storeu_si256, _mm256_sub_epi16, _mm256_sub_ps,
         _mm256_unpackhi_epi8, _mm256_unpacklo_epi8, _mm256_xor_ps, _mm256_xor_si256, _CMP_UNORD_Q,
     };
 
@@ -975,11 +975,8 @@ pub(super) mod avx2 {
     /// The lane-select mask of coverage bits `m` (lane l all ones when bit l is set).
     #[inline(always)]
     unsafe fn lanes_of(m: u8) -> __m256i {
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        _mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-            bits,
-        )
+        // SAFETY: inlined into this module's AVX2 kernels only.
+        unsafe { crate::cpu::lanes::lane_mask8(m) }
     }
 
     /// `super::clamp01`: `maxps` with 0, then `minps` with 1.
@@ -1131,17 +1128,10 @@ pub(super) mod avx2 {
     /// `super::pack4` of all eight lanes: each pixel as an RGBA8 word, red in the low byte.
     #[inline(always)]
     unsafe fn pack8(rgb: &[F; 3], a: &F) -> __m256i {
-        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-        let (k, b) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-        let low = _mm256_set1_epi32(0xFF);
         macro_rules! conv {
-            ($c:expr) => {{
-                let c = _mm256_min_ps(_mm256_max_ps(ld($c), zero), one);
-                _mm256_and_si256(
-                    _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c, k), b)),
-                    low,
-                )
-            }};
+            ($c:expr) => {
+                crate::cpu::lanes::unorm8_bits8(ld($c))
+            };
         }
         _mm256_or_si256(
             _mm256_or_si256(conv!(&rgb[0]), _mm256_slli_epi32::<8>(conv!(&rgb[1]))),

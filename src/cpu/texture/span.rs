@@ -515,11 +515,7 @@ unsafe fn store_group(c: [std::arch::x86_64::__m256; 4], m: u8, dst: &mut [[u8; 
         _mm256_packs_epi32(px[0], px[1]),
         _mm256_packs_epi32(px[2], px[3]),
     );
-    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    let on = _mm256_cmpeq_epi32(
-        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-        bits,
-    );
+    let on = crate::cpu::lanes::lane_mask8(m);
     if let Some(d) = dst.get_mut(..LANES) {
         let p = d.as_mut_ptr().cast::<__m256i>();
         // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
@@ -825,11 +821,7 @@ impl<'a> FusedSpan<'a> {
                 mix(k, _mm256_permutevar8x32_ps(f, pair_index(k)))
             }));
         }
-        let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-        let on = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(i32::from(second)), bits),
-            bits,
-        ));
+        let on = _mm256_castsi256_ps(crate::cpu::lanes::lane_mask8(second));
         Some(std::array::from_fn(|k| {
             let idx = pair_index(k);
             let (fk, onk) = (

@@ -1111,12 +1111,8 @@ fn load8(at: impl Fn(usize) -> [f32; 4]) -> [std::arch::x86_64::__m256; 4] {
 #[target_feature(enable = "avx2")]
 #[inline]
 fn mask8(m: u8) -> std::arch::x86_64::__m256 {
-    use std::arch::x86_64::*;
-    let bits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-        _mm256_and_si256(_mm256_set1_epi32(i32::from(m)), bits),
-        bits,
-    ))
+    // SAFETY: see `lane_mask8`: only inlined into this module's AVX2 kernels.
+    unsafe { std::arch::x86_64::_mm256_castsi256_ps(crate::cpu::lanes::lane_mask8(m)) }
 }
 
 /// Can the AVX2 kernel [`dense_targets8`] take a one-image LINEAR pass of a 1D or 3D
