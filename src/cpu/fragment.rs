@@ -117,6 +117,8 @@ struct RowPlan<'s> {
     lod: u8,
     /// The fused route's sampler and its coordinates' first varying, where the spans take it.
     fused: Option<(&'s Sampler, usize)>,
+    /// The spans' colours go through `FragCtx::packed_rows` (AVX2 only).
+    packed: bool,
 }
 
 /// A textured group's place for `FragCtx::tex_group_rest`: its stencil side, the depth row
@@ -262,11 +264,8 @@ fn store_pixels_on<const AVX2: bool>(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANE
 #[target_feature(enable = "avx2")]
 #[inline]
 unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
-    use super::lanes::{lane_mask8, unorm8_bits8};
-    use std::arch::x86_64::{
-        __m256i, _mm256_loadu_ps, _mm256_maskstore_epi32, _mm256_packs_epi32, _mm256_packus_epi16,
-        _mm256_permutevar8x32_epi32, _mm256_setr_epi32,
-    };
+    use super::lanes::lane_mask8;
+    use std::arch::x86_64::_mm256_maskstore_epi32;
     let Some(px) = dst.get_mut(..LANES) else {
         return super::lanes::store_pixels(dst, m, c);
     };
@@ -277,18 +276,68 @@ unsafe fn store_pixels_avx2(dst: &mut [[u8; 4]], m: u8, c: &[Vec4; LANES]) {
     // `[u8; 4]`, 32 contiguous bytes, written by the masked store (in bounds); `__m256i` is
     // plain bits.
     unsafe {
+        let v = pixels8_reg(ch);
+        _mm256_maskstore_epi32(px.as_mut_ptr().cast::<i32>(), lane_mask8(m), v);
+    }
+}
+
+/// The RGBA8 pixels of eight colours `c` as `store_pixels_avx2` converts them (the same
+/// bytes), pixel l in `out[l]`: for a packed group (`FragCtx::packed_group`), whose pixels
+/// are stored one by one.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn pixels8_avx2(c: &[Vec4; LANES]) -> [[u8; 4]; LANES] {
+    // SAFETY: the CPU has AVX2 (this function's contract); `c` is 32 contiguous floats
+    // (`Vec4` has the layout of `[f32; 4]`); `__m256i` and `[[u8; 4]; 8]` are both 32 bytes,
+    // every bit pattern valid.
+    unsafe {
+        let v = pixels8_reg(c.as_ptr().cast::<f32>());
+        std::mem::transmute::<std::arch::x86_64::__m256i, [[u8; 4]; LANES]>(v)
+    }
+}
+
+/// The conversion of `store_pixels_avx2` and `pixels8_avx2`: the 32 floats at `ch` (eight
+/// pixels' r, g, b, a) to eight RGBA8 pixels in lane order.
+///
+/// # Safety
+/// The CPU must have AVX2, and `ch` must point at 32 readable floats.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn pixels8_reg(ch: *const f32) -> std::arch::x86_64::__m256i {
+    use super::lanes::unorm8_bits8;
+    use std::arch::x86_64::{
+        __m256i, _mm256_loadu_ps, _mm256_packs_epi32, _mm256_packus_epi16,
+        _mm256_permutevar8x32_epi32, _mm256_setr_epi32,
+    };
+    // SAFETY: the CPU has AVX2 (this function's contract); the loads read eight floats at
+    // offsets 0, 8, 16 and 24 of the 32 at `ch` (the caller's promise, no alignment needed).
+    unsafe {
         // Pixels 2j and 2j + 1, each channel's byte in the low bits of its lane.
         let conv = |j: usize| -> __m256i { unorm8_bits8(_mm256_loadu_ps(ch.add(8 * j))) };
         // Halves [px0 px2 | px1 px3] and [px4 px6 | px5 px7], then bytes whose dwords are
         // pixels 0 2 4 6 1 3 5 7 (every value is in 0..=255: the signed packs keep it).
         let w01 = _mm256_packs_epi32(conv(0), conv(1));
         let w23 = _mm256_packs_epi32(conv(2), conv(3));
-        let v = _mm256_permutevar8x32_epi32(
+        _mm256_permutevar8x32_epi32(
             _mm256_packus_epi16(w01, w23),
             _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7),
-        );
-        _mm256_maskstore_epi32(px.as_mut_ptr().cast::<i32>(), lane_mask8(m), v);
+        )
     }
+}
+
+/// A packed group's fragments (`FragCtx::packed_rows`): window x and y and tile index of
+/// lanes `0..n`.
+#[derive(Default)]
+struct Packed {
+    x: [i32; LANES],
+    y: [i32; LANES],
+    at: [usize; LANES],
+    n: usize,
 }
 
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
@@ -852,8 +901,134 @@ impl FragCtx<'_> {
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         let plan = self.row_plan(bufs, p, planes);
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 && plan.packed {
+            // SAFETY: `AVX2` is true only where the CPU has AVX2 and POPCNT (`tri_rows_avx2`).
+            unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan) };
+            return;
+        }
         for &row in rows {
             self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq, &plan);
+        }
+    }
+
+    /// The spans `rows` of `p` by the packed route (`RowPlan::packed`): each span's depth test
+    /// as `tri_span_in`'s, then the fragments that pass, from all the spans, eight to a group
+    /// in the order the spans give them (a primitive's pixels are distinct, so the order of
+    /// their colour writes does not matter), each group's varyings and λ per lane at its own
+    /// pixel, its colours by `tex_pixels_on` and each lane's pixel stored at its place. On
+    /// texture-targets' small triangles a span row fills about half a group (callgrind: 4.2
+    /// fragments a group on the four-unit sphere, 2.6 on the height field), and a group's
+    /// texturing costs the same whatever its fragments. Each fragment's colour is the general
+    /// path's, bit for bit: the same operations on each lane (`varyings_xy_avx2`,
+    /// `quad_lambda_xy8`, the same `tex_pixels_on` and conversion).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline]
+    unsafe fn packed_rows(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+        vl: &mut [[f32; LANES]],
+        plan: &RowPlan<'_>,
+    ) {
+        // The λ planes of each unit that needs λ, looked up once.
+        let mut lpl = [None; MAX_TEXTURE_UNITS];
+        for (u, (l, t)) in lpl.iter_mut().zip(&self.tex).enumerate() {
+            let Some((tx, to)) = *t else { break };
+            if plan.lod & (1 << u) != 0 {
+                *l = tx.lambda_planes_of(planes, to);
+            }
+        }
+        let mut g = Packed::default();
+        for &row in rows {
+            let Some((mut mask, base)) = self.span_coverage::<true>(bufs, p, row) else {
+                continue;
+            };
+            let [y, x0, _] = row;
+            while mask != 0 {
+                let k = mask.trailing_zeros();
+                mask &= mask - 1;
+                let l = g.n;
+                if let (Some(x), Some(yy), Some(at)) =
+                    (g.x.get_mut(l), g.y.get_mut(l), g.at.get_mut(l))
+                {
+                    *x = x0 + k as i32;
+                    *yy = y;
+                    *at = base + k as usize;
+                }
+                g.n += 1;
+                if g.n == LANES {
+                    // SAFETY: the CPU has AVX2 (this function's contract).
+                    unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+                    g.n = 0;
+                }
+            }
+        }
+        if g.n > 0 {
+            // SAFETY: as above.
+            unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+        }
+    }
+
+    /// Whether the spans of `p` take the packed route (`packed_rows`), for the tests.
+    #[cfg(test)]
+    pub(crate) fn packs(&self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> bool {
+        self.row_plan(bufs, p, planes).packed
+    }
+
+    /// One group of `packed_rows`: the first `g.n` lanes of `g`.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn packed_group(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        g: &Packed,
+        vl: &mut [[f32; LANES]],
+        lpl: &[Option<[[f32; 3]; 4]>; MAX_TEXTURE_UNITS],
+        plan: &RowPlan<'_>,
+    ) {
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let n = g.n.min(LANES);
+        let m = (u16::MAX >> (16 - n)) as u8;
+        // Lanes past `n` repeat lane 0's pixel (a fragment of the primitive), never stored.
+        let lane = |l: usize| if l < n { l } else { 0 };
+        let fx: [f32; LANES] = std::array::from_fn(|l| (g.x[lane(l)] - ox) as f32);
+        let fy: [f32; LANES] = std::array::from_fn(|l| (g.y[lane(l)] - oy) as f32);
+        // SAFETY: the CPU has AVX2 (this function's contract).
+        unsafe { super::lanes::varyings_xy_avx2(planes, plan.nflat, &fx, &fy, vl) };
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        if plan.lod != 0 {
+            // Each lane's quad: its lower-left pixel relative to the planes' origin.
+            let qx: [f32; LANES] = std::array::from_fn(|l| ((g.x[lane(l)] & !1) - ox) as f32);
+            let qy: [f32; LANES] = std::array::from_fn(|l| ((g.y[lane(l)] & !1) - oy) as f32);
+            for ((lu, pl), t) in lam.iter_mut().zip(lpl).zip(&self.tex) {
+                let (Some(pl), Some((tx, _))) = (pl, t) else {
+                    continue;
+                };
+                // SAFETY: as above.
+                *lu = unsafe { tx.quad_lambda_xy8(pl, &qx, &qy) };
+            }
+        }
+        let px = self.tex_pixels_on::<true>(vl, m, &lam);
+        // SAFETY: as above.
+        let v = unsafe { pixels8_avx2(&px) };
+        for (l, &at) in g.at.iter().enumerate().take(n) {
+            if let (Some(dst), Some(&c)) = (bufs.color.get_mut(at), v.get(l)) {
+                *dst = c;
+            }
         }
     }
 
@@ -904,15 +1079,74 @@ impl FragCtx<'_> {
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = planes;
+        let depth_only = self.color_mask == [false; 4] && !self.count;
+        // The general path's textured spans of one colour buffer written whole, where every
+        // unit that needs λ has planes for `quad_lambda_xy8` (no cube map) and the pool holds
+        // every varying.
+        #[cfg(target_arch = "x86_64")]
+        let packed = route == SpanRoute::General
+            && whole
+            && on_lanes
+            && fused.is_none()
+            && !depth_only
+            && self.tex.first().is_some_and(Option::is_some)
+            && planes.len() >= 3 + 3 * nv
+            && nv <= MAXV
+            && self.tex.iter().enumerate().all(|(u, t)| {
+                lod & (1 << u) == 0
+                    || t.is_some_and(|(tx, to)| tx.lambda_planes_of(planes, to).is_some())
+            })
+            && super::lanes::has_avx2();
+        #[cfg(not(target_arch = "x86_64"))]
+        let packed = false;
         RowPlan {
-            depth_only: self.color_mask == [false; 4] && !self.count,
+            depth_only,
             nflat,
             route,
             whole,
             on_lanes,
             lod,
             fused,
+            packed,
         }
+    }
+
+    /// Pass 1 of a span `[y, x0, x1]` of `p`: the depth test over it into a coverage mask
+    /// (n <= TILE = 64 bits), the comparison chosen once per span, a polygon stipple (§3.5.6)
+    /// removing fragments first; the fragments that pass counted for an occlusion query. None
+    /// when none passes, else the mask (bit k for x0 + k) and the span's first tile index.
+    #[inline(always)]
+    fn span_coverage<const AVX2: bool>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        [y, x0, x1]: [i32; 3],
+    ) -> Option<(u64, usize)> {
+        let (ox, oy) = (p.bbox[0], p.bbox[1]);
+        let fy = (y - oy) as f32;
+        let zrow = p.z[0] + p.z[2] * fy;
+        let row = ((y - bufs.y) as usize) * TILE;
+        let base = row + (x0 - bufs.x) as usize;
+        let n = (x1 - x0 + 1) as usize;
+        let (fx0, dz) = (x0 - ox, p.z[1]);
+        let all = u64::MAX >> (64 - n.clamp(1, 64));
+        let mask = match self.stipple {
+            Some(rows) if p.flags & F_LINE == 0 => {
+                let live = all & stipple_mask(&rows, x0, y);
+                if live == 0 {
+                    return None;
+                }
+                self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, live)
+            }
+            _ => self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, all),
+        };
+        if mask == 0 {
+            return None;
+        }
+        if self.samples {
+            bufs.samples += u64::from(mask.count_ones());
+        }
+        Some((mask, base))
     }
 
     /// One row of `tri_rows_in` (`AVX2`: true only in `tri_rows_avx2`, where the CPU has
@@ -935,30 +1169,10 @@ impl FragCtx<'_> {
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let fy = (y - oy) as f32;
-        let zrow = p.z[0] + p.z[2] * fy;
-        let row = ((y - bufs.y) as usize) * TILE;
-        let base = row + (x0 - bufs.x) as usize;
         let n = (x1 - x0 + 1) as usize;
-        // Pass 1: depth test over the span into a coverage mask (n <= TILE = 64 bits), the
-        // comparison chosen once per span; a polygon stipple (§3.5.6) removes fragments first.
-        let (fx0, dz) = (x0 - ox, p.z[1]);
-        let all = u64::MAX >> (64 - n.clamp(1, 64));
-        let mut mask = match self.stipple {
-            Some(rows) if p.flags & F_LINE == 0 => {
-                let live = all & stipple_mask(&rows, x0, y);
-                if live == 0 {
-                    return;
-                }
-                self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, live)
-            }
-            _ => self.depth_mask_span::<AVX2>(bufs, base, n, zrow, dz, fx0, all),
-        };
-        if mask == 0 {
+        let Some((mut mask, base)) = self.span_coverage::<AVX2>(bufs, p, [y, x0, x1]) else {
             return;
-        }
-        if self.samples {
-            bufs.samples += u64::from(mask.count_ones());
-        }
+        };
         // ColorMask all false (a depth-only pass, as a shadow map's first pass): the depth test
         // above wrote what this span writes; its colours would be computed to be thrown away.
         if plan.depth_only {
@@ -3026,14 +3240,7 @@ mod tests {
                 *s = Sampler::new(&state, u);
                 assert!(s.is_some(), "unit {u} complete");
             }
-            let mut rl = RLayout {
-                n: 4,
-                ..Default::default()
-            };
-            for t in rl.tex.iter_mut().take(units) {
-                *t = Some(rl.n);
-                rl.n += 4;
-            }
+            let rl = crate::cpu::testgen::tex_layout(units);
             let tex = tex_units(&samplers, &rl);
             let f = FragCtx {
                 depth_test: g.next() % 4 != 0,

@@ -1032,12 +1032,10 @@ fn varyings_sse(planes: &[f32], nflat: usize, fx0: i32, fy: f32, out: &mut [[f32
 }
 
 /// `varyings` with eight lanes a register (AVX2): the same `addps`, `mulps` and `divps` of
-/// each lane as `varyings_sse` (lane x `fx0 as f32 + l`, `(a + dx·x) + yt`, 1/w by a divide,
+/// each lane as `varyings_sse` (lane x `fx0 as f32 + l`, `(a + dx·x) + dy·y`, 1/w by a divide,
 /// the product by it), each varying one 256-bit plane and one store instead of two halves
-/// (≈23 → ≈12 instructions a varying a group). The planes are read through a pointer, the
-/// divided varyings two a turn (the zip of `chunks_exact(3)` over the pool and `iter_mut` over
-/// the rows cost a division by 3 a call and four instructions of loop a varying). Where
-/// `planes` lacks a plane it is `varyings`' route.
+/// (≈23 → ≈12 instructions a varying a group). Where `planes` lacks a plane it is
+/// `varyings`' route.
 ///
 /// # Safety
 /// The CPU must have AVX2 (`has_avx2`).
@@ -1051,35 +1049,79 @@ pub(super) unsafe fn varyings_avx2(
     fy: f32,
     out: &mut [[f32; LANES]],
 ) {
+    use std::arch::x86_64::{_mm256_add_ps, _mm256_set1_ps, _mm256_setr_ps};
+    if planes.len() < 3 + 3 * out.len() {
+        return varyings(planes, nflat, fx0, fy, out);
+    }
+    let xs = _mm256_add_ps(
+        _mm256_set1_ps(fx0 as f32),
+        _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
+    );
+    varyings8(planes, nflat, xs, _mm256_set1_ps(fy), out);
+}
+
+/// The varyings of eight fragments of one primitive anywhere in it, lane l's at (`fx[l]`,
+/// `fy[l]`) relative to the planes' origin (a packed group of `FragCtx::packed_rows`): lane
+/// l of each row the bits `varyings` gives the fragment in its own row (the same operations
+/// on each lane: the product ∂y·y, which `varyings` takes once for its row, is the same
+/// product). `planes` must hold `3 + 3·out.len()` floats (else nothing is written).
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+pub(super) unsafe fn varyings_xy_avx2(
+    planes: &[f32],
+    nflat: usize,
+    fx: &[f32; LANES],
+    fy: &[f32; LANES],
+    out: &mut [[f32; LANES]],
+) {
+    use std::arch::x86_64::_mm256_loadu_ps;
+    // SAFETY: each load reads the eight floats of a `[f32; 8]` (no alignment needed).
+    let (xs, ys) = unsafe { (_mm256_loadu_ps(fx.as_ptr()), _mm256_loadu_ps(fy.as_ptr())) };
+    varyings8(planes, nflat, xs, ys, out);
+}
+
+/// The kernel of `varyings_avx2` and `varyings_xy_avx2`: 1/w and the varyings at x `xs` and
+/// y `ys` per lane, `(a + dx·x) + dy·y` each, the divided ones times w. The planes are read
+/// through a pointer, the divided varyings two a turn (the zip of `chunks_exact(3)` over the
+/// pool and `iter_mut` over the rows cost a division by 3 a call and four instructions of loop
+/// a varying). Nothing is written unless `planes` holds `3 + 3·out.len()` floats.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn varyings8(
+    planes: &[f32],
+    nflat: usize,
+    xs: std::arch::x86_64::__m256,
+    ys: std::arch::x86_64::__m256,
+    out: &mut [[f32; LANES]],
+) {
     use std::arch::x86_64::{
-        _mm256_add_ps, _mm256_div_ps, _mm256_mul_ps, _mm256_set1_ps, _mm256_setr_ps,
-        _mm256_storeu_ps,
+        _mm256_add_ps, _mm256_div_ps, _mm256_mul_ps, _mm256_set1_ps, _mm256_storeu_ps,
     };
     let n = out.len();
     let Some(pl @ [w0, wx, wy, ..]) = planes.get(..3 + 3 * n) else {
-        return varyings(planes, nflat, fx0, fy, out);
+        return;
     };
     let nf = nflat.min(n);
-    // SAFETY: the CPU has AVX2 (this function's contract). `pl` holds 3 + 3n floats, so the
-    // plane of row j < n, floats 3 + 3j..6 + 3j, is inside it (`p(j)` reads it for j < n
-    // only); each store writes the eight f32 of row j < n of `out` (in bounds, no alignment
-    // needed).
+    // SAFETY: `pl` holds 3 + 3n floats, so the plane of row j < n, floats 3 + 3j..6 + 3j, is
+    // inside it (`p(j)` reads it for j < n only); each store writes the eight f32 of row
+    // j < n of `out` (in bounds, no alignment needed).
     unsafe {
-        let xs = _mm256_add_ps(
-            _mm256_set1_ps(fx0 as f32),
-            _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
-        );
-        let plane = |a: f32, dx: f32, yt: f32| {
+        let plane = |a: f32, dx: f32, dy: f32| {
             _mm256_add_ps(
                 _mm256_add_ps(_mm256_set1_ps(a), _mm256_mul_ps(_mm256_set1_ps(dx), xs)),
-                _mm256_set1_ps(yt),
+                _mm256_mul_ps(_mm256_set1_ps(dy), ys),
             )
         };
-        let inv = _mm256_div_ps(_mm256_set1_ps(1.0), plane(*w0, *wx, *wy * fy));
+        let inv = _mm256_div_ps(_mm256_set1_ps(1.0), plane(*w0, *wx, *wy));
         let (src, dst) = (pl.as_ptr().add(3), out.as_mut_ptr().cast::<f32>());
         let p = |j: usize| {
             let q = src.add(3 * j);
-            plane(*q, *q.add(1), *q.add(2) * fy)
+            plane(*q, *q.add(1), *q.add(2))
         };
         // The flat varyings first, then those divided (no test of j in the loops).
         let mut j = 0;

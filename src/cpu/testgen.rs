@@ -24,6 +24,20 @@ pub(crate) const MIN_FILTERS: [u32; 6] = [
     crate::gl::LINEAR_MIPMAP_LINEAR,
 ];
 
+/// The varying layout of a flush whose first `units` units carry coordinates: the colour, then
+/// each unit's s, t, r and q.
+pub(crate) fn tex_layout(units: usize) -> crate::cpu::setup::RLayout {
+    let mut rl = crate::cpu::setup::RLayout {
+        n: 4,
+        ..Default::default()
+    };
+    for t in rl.tex.iter_mut().take(units) {
+        *t = Some(rl.n);
+        rl.n += 4;
+    }
+    rl
+}
+
 pub(crate) struct Gen(pub u64);
 
 impl Gen {

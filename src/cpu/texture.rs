@@ -293,7 +293,7 @@ impl Sampler {
             #[cfg(target_arch = "x86_64")]
             if let Some(pl) = &pl {
                 // SAFETY: `AVX2` is true only where the CPU has AVX2 (above).
-                *o = unsafe { quad_lambda8(pl, &quad_xs8(xa), qy, self.size, self.dims) };
+                *o = unsafe { quad_lambda8(pl, &quad_xs8(xa), &[qy; LANES], self.size, self.dims) };
                 continue;
             }
             let qx = std::array::from_fn(|j| xa.wrapping_add(2 * j as i32) as f32);
@@ -327,7 +327,35 @@ impl Sampler {
             return self.cube_lambda_lanes(planes, to, qx, qy);
         }
         let pl = lambda_planes_at(planes, to);
-        quad_lambda8(&pl, &qx, qy, self.size, self.dims)
+        quad_lambda8(&pl, &qx, &[qy; LANES], self.size, self.dims)
+    }
+
+    /// The s, t, r and q planes [`Sampler::quad_lambda_xy8`] reads for the coordinates at
+    /// varying `to` of `planes`, looked up once for a primitive; None for a cube map, whose λ
+    /// projects on the face of each quad (`cube_lambda_lanes`).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn lambda_planes_of(&self, planes: &[f32], to: usize) -> Option<[[f32; 3]; 4]> {
+        (!self.cube).then(|| lambda_planes_at(planes, to))
+    }
+
+    /// λ of eight 2x2 quads of one primitive, lane l's lower-left pixel at (`qx[l]`, `qy[l]`)
+    /// relative to the planes' origin, from its planes `pl` ([`Sampler::lambda_planes_of`]):
+    /// the kernel of [`Sampler::quad_lambda_row`], each lane with its own row, so each lane
+    /// the bits `quad_lambda_row` gives its quad.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    pub unsafe fn quad_lambda_xy8(
+        &self,
+        pl: &[[f32; 3]; 4],
+        qx: &[f32; LANES],
+        qy: &[f32; LANES],
+    ) -> [f32; LANES] {
+        quad_lambda8(pl, qx, qy, self.size, self.dims)
     }
 
     /// [`Sampler::quad_lambda_lanes`] without AVX2: plain lane loops (SSE2 on x86-64).
@@ -1590,17 +1618,18 @@ fn quad_xs8(xa: i32) -> [f32; LANES] {
 }
 
 /// [`Sampler::quad_lambda_on`] without a cube map on eight AVX registers: `lambda_point`'s
-/// three points (planes `pl` = s, t, r, q, each (a, ∂x, ∂y), at (`qx[l]`, `qy`),
-/// (`qx[l]` + 1, `qy`) and (`qx[l]`, `qy` + 1)), the two squared lengths, their larger and
-/// `0.5·fast_log2`: each lane the same operations in the same order as the SSE2 lane loops
-/// (no FMA), so the same bits but a NaN's payload (every NaN becomes `fast_log2`'s NaN).
+/// three points (planes `pl` = s, t, r, q, each (a, ∂x, ∂y), at (`qx[l]`, `qy[l]`),
+/// (`qx[l]` + 1, `qy[l]`) and (`qx[l]`, `qy[l]` + 1)), the two squared lengths, their larger
+/// and `0.5·fast_log2`: each lane the same operations in the same order as the SSE2 lane
+/// loops (no FMA; ∂y·y a product per lane, the one `quad_lambda_on` takes once for its row),
+/// so the same bits but a NaN's payload (every NaN becomes `fast_log2`'s NaN).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn quad_lambda8(
     pl: &[[f32; 3]; 4],
     qx: &[f32; LANES],
-    qy: f32,
+    qy: &[f32; LANES],
     size: [f32; 3],
     dims: usize,
 ) -> [f32; LANES] {
@@ -1608,12 +1637,13 @@ fn quad_lambda8(
     let [ps, pt, pr, pq] = pl;
     let x0 = lanes8(qx);
     let x1 = _mm256_add_ps(x0, _mm256_set1_ps(1.0));
+    let y0 = lanes8(qy);
     let zero = _mm256_setzero_ps();
     // `lambda_point`: (a + dx·x) + dy·y per plane, the division by q (0 where q is 0;
     // `!=` is true for a NaN), then each component times its size.
-    let point = |x: __m256, y: f32| -> [__m256; 3] {
+    let point = |x: __m256, y: __m256| -> [__m256; 3] {
         let ev = |p: &[f32; 3]| {
-            let yt = _mm256_set1_ps(p[2] * y);
+            let yt = _mm256_mul_ps(_mm256_set1_ps(p[2]), y);
             _mm256_add_ps(
                 _mm256_add_ps(_mm256_set1_ps(p[0]), _mm256_mul_ps(_mm256_set1_ps(p[1]), x)),
                 yt,
@@ -1632,9 +1662,9 @@ fn quad_lambda8(
         let w = if dims == 3 { scaled(pr, size[2]) } else { zero };
         [u, v, w]
     };
-    let p0 = point(x0, qy);
-    let px = point(x1, qy);
-    let py = point(x0, qy + 1.0);
+    let p0 = point(x0, y0);
+    let px = point(x1, y0);
+    let py = point(x0, _mm256_add_ps(y0, _mm256_set1_ps(1.0)));
     let len2 = |p: &[__m256; 3]| {
         let (a, b, c) = (
             _mm256_sub_ps(p[0], p0[0]),

@@ -896,3 +896,185 @@ fn cube8_is_cube_face_and_project_bit_for_bit() {
     }
     assert!(faces.iter().all(|&n| n > 5000), "{faces:?}");
 }
+
+/// The packed route of the general path (`FragCtx::packed_rows`: a primitive's fragments that
+/// pass the depth test, eight to a group across its rows, each lane's varyings and λ at its
+/// own pixel) against the row route (the SSE2 routes, which never pack: each span's groups
+/// from its first pixel) byte for byte: colours, depths and the occlusion count, for one to
+/// four units of any target (1D, 2D, 3D, cube map; a cube map that needs λ is not packed),
+/// any filter, environment or COMBINE, small triangles of a few rows in random tiles, random
+/// depth tests and stipples, and now and then a NaN, infinite or zero plane term.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn packed_groups_are_the_row_route_byte_for_byte() {
+    use crate::cpu::fragment::{crossbar, tex_units, FragCtx, TileBufs};
+    use crate::cpu::framebuffer::{DEPTH_MAX, TILE};
+    use crate::cpu::setup::{PrimKind, RPrim};
+    use crate::state::MAX_TEXTURE_UNITS;
+    if !crate::cpu::lanes::has_avx2() {
+        eprintln!("packed_groups_are_the_row_route_byte_for_byte: no AVX2 here, no packed route");
+        return;
+    }
+    let mut next = lcg(89);
+    let targets = [
+        gl::TEXTURE_1D,
+        gl::TEXTURE_2D,
+        gl::TEXTURE_3D,
+        gl::TEXTURE_CUBE_MAP,
+    ];
+    let envs = [
+        gl::MODULATE,
+        gl::REPLACE,
+        gl::DECAL,
+        gl::ADD,
+        gl::BLEND,
+        gl::COMBINE,
+    ];
+    let sources = [gl::CONSTANT, gl::PRIMARY_COLOR, gl::PREVIOUS, gl::TEXTURE];
+    let (mut packed, mut frags) = (0, 0usize);
+    for round in 0..1500 {
+        let units = 1 + round % MAX_TEXTURE_UNITS;
+        let mut state = State::new(4, 4);
+        for u in 0..units {
+            let target = targets[(next() % 4) as usize];
+            let k = match target {
+                gl::TEXTURE_1D => {
+                    state.enables.texture_1d[u] = true;
+                    0
+                }
+                gl::TEXTURE_2D => {
+                    state.enables.texture_2d[u] = true;
+                    1
+                }
+                gl::TEXTURE_3D => {
+                    state.enables.texture_3d[u] = true;
+                    2
+                }
+                _ => {
+                    state.enables.texture_cube_map[u] = true;
+                    3
+                }
+            };
+            // Units of one target share its (default) object.
+            state.textures.defaults[k] = Arc::new(random_object(target, false, &mut next));
+            let unit = &mut state.textures.units[u];
+            unit.env_mode = envs[(next() % envs.len() as u64) as usize];
+            unit.env_color = Vec4::new(1.0, 0.0, 0.5, 0.25);
+            unit.combine = random_combine(round, &sources, &mut next);
+        }
+        let samplers: Vec<Sampler> = (0..units)
+            .map(|u| Sampler::new(&state, u).expect("complete texture"))
+            .collect();
+        let mut slots: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+        for (slot, s) in slots.iter_mut().zip(samplers) {
+            *slot = Some(s);
+        }
+        let rl = crate::cpu::testgen::tex_layout(units);
+        let tex = tex_units(&slots, &rl);
+        let f = FragCtx {
+            depth_test: next() % 4 != 0,
+            depth_func: crate::cpu::testgen::COMPARE_FUNCS[(next() % 8) as usize],
+            depth_mask: next() % 2 == 0,
+            color_mask: [true; 4],
+            color_sum: false,
+            rl,
+            lighting: None,
+            mats: &[],
+            count: false,
+            samples: next() % 2 == 0,
+            stipple: (next() % 6 == 0).then(|| std::array::from_fn(|_| next() as u32)),
+            ops: None,
+            tex,
+            crossbar: crossbar(&tex),
+        };
+        let (tx, ty) = (64 * (next() % 4) as i32, 64 * (next() % 4) as i32);
+        let bbox = [
+            tx + (next() % 40) as i32 - 20,
+            ty + (next() % 40) as i32 - 20,
+        ];
+        let p = RPrim {
+            kind: PrimKind::Tri,
+            flags: 0,
+            bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+            mat: 0,
+            voff: 0,
+            xy: [0; 6],
+            owns: 0,
+            cover: 0,
+            z: [
+                (next() % 1000) as f32 * 1e-3,
+                (next() % 100) as f32 * 1e-3 - 0.05,
+                1e-3,
+            ],
+        };
+        // 1/w, the colour (around [0, 1]) and coordinates spanning a few repeats, with
+        // derivatives large and small so that λ crosses the levels.
+        let unit = |n: &mut dyn FnMut() -> u64| (n() % 1_000_000) as f32 * 1.5e-6 - 0.25;
+        let mut planes = vec![0.5 + (next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+        for j in 0..rl.n {
+            let d = if j < 4 {
+                1e-2
+            } else {
+                [1e-3, 3e-2, 0.3][(next() % 3) as usize]
+            };
+            let (a, b, c) = (unit(&mut next), unit(&mut next), unit(&mut next));
+            planes.extend([a, b * d, c * d]);
+        }
+        if next() % 10 == 0 {
+            let k = 3 + 3 * 4 + (next() % (3 * 4 * units as u64)) as usize;
+            if let Some(v) = planes.get_mut(k) {
+                *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(next() % 4) as usize];
+            }
+        }
+        // A small triangle's rows: consecutive, a few pixels each, drifting, in the tile.
+        let y0 = ty + (next() % TILE as u64) as i32;
+        let nrows = 1 + (next() % 12) as i32;
+        let mut x = tx + (next() % TILE as u64) as i32;
+        let mut rows = Vec::new();
+        for y in y0..(y0 + nrows).min(ty + TILE as i32) {
+            x = (x + (next() % 5) as i32 - 2).clamp(tx, tx + TILE as i32 - 1);
+            let x1 = (x + (next() % 14) as i32).min(tx + TILE as i32 - 1);
+            rows.push([y, x, x1]);
+        }
+        let color: Vec<[u8; 4]> = (0..TILE * TILE)
+            .map(|_| (next() as u32).to_le_bytes())
+            .collect();
+        let depth: Vec<u32> = (0..TILE * TILE)
+            .map(|_| (next() % 5) as u32 * (DEPTH_MAX / 4))
+            .collect();
+        let run = |avx2: bool| {
+            let (mut c, mut d, mut s) = (color.clone(), depth.clone(), vec![0u8; TILE * TILE]);
+            let mut bufs = TileBufs {
+                color: &mut c,
+                color2: None,
+                depth: &mut d,
+                stencil: &mut s,
+                x: tx,
+                y: ty,
+                samples: 0,
+            };
+            crate::cpu::lanes::NO_AVX2.with(|x| x.set(!avx2));
+            let packs = f.packs(&bufs, &p, &planes);
+            f.tri_rows(&mut bufs, &p, &planes, &rows, &mut None);
+            crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+            let samples = bufs.samples;
+            (packs, c, d, samples)
+        };
+        let (packs, c, d, samples) = run(true);
+        let (never, c2, d2, samples2) = run(false);
+        assert!(!never, "the SSE2 route packs");
+        assert!(
+            c == c2 && d == d2 && samples == samples2,
+            "round {round}: packed and row routes differ ({units} units, rows {rows:?})"
+        );
+        if packs {
+            packed += 1;
+            frags += rows
+                .iter()
+                .map(|r| (r[2] - r[1] + 1) as usize)
+                .sum::<usize>();
+        }
+    }
+    assert!(packed > 600, "{packed} rounds packed");
+    assert!(frags > 10_000, "{frags} fragments in packed rounds");
+}
