@@ -14,6 +14,7 @@ use super::framebuffer::TILE;
 use super::setup::{PrimKind, RPrim, COVER_KNOWN, F_AALINE, F_AAPOINT};
 
 /// Rasterises `p` into the tile `bufs` (whose rectangle is `TILE` x `TILE` at bufs.x, bufs.y).
+#[inline(never)]
 pub fn prim(ctx: &FragCtx, bufs: &mut TileBufs, p: &RPrim, pool: &[f32]) {
     let t = TILE as i32;
     let x0 = p.bbox[0].max(bufs.x);
