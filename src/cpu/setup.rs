@@ -601,6 +601,17 @@ pub(super) fn snap(x: f64) -> i32 {
     (t + 0.5f64.copysign(t)) as i32
 }
 
+/// Whether `vout` holds every vertex that `wins` has a record of, whole (`layout.stride` floats
+/// each): decided once a run, so that `Worker::fast_tri` reads a triangle's vertices, whose
+/// records `Worker::one` has found, without a range check. Always so: the vertex stage
+/// processes every vertex it writes a record for.
+#[inline(always)]
+fn whole(ctx: &SetupCtx, vout: &[f32], wins: &[Win]) -> bool {
+    wins.len()
+        .checked_mul(ctx.layout.stride)
+        .is_some_and(|n| n <= vout.len())
+}
+
 /// A vertex in window coordinates with its varyings.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct WVert {
@@ -706,6 +717,7 @@ impl Worker {
         prims: &[Prim],
     ) {
         self.start(ctx);
+        let whole = whole(ctx, vout, wins);
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
         while !rest.is_empty() {
@@ -719,7 +731,7 @@ impl Worker {
                 .unwrap_or(rest.len());
             let (now, after) = rest.split_at(strips);
             for p in now {
-                self.strip(ctx, vout, wins, &b.mat, &b.idx, p);
+                self.strip(ctx, vout, wins, &b.mat, &b.idx, p, whole);
             }
             let others = after
                 .iter()
@@ -729,7 +741,7 @@ impl Worker {
             if !now.is_empty() {
                 super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
                 for p in &asm {
-                    self.one(ctx, vout, wins, &b.mat, p);
+                    self.one(ctx, vout, wins, &b.mat, p, whole);
                 }
             }
             rest = after;
@@ -740,8 +752,9 @@ impl Worker {
     /// Assembles and sets up the triangle strip `p` (§2.6.1): triangle i is given vertices
     /// (i, i + 1, i + 2), its first two swapped when i is odd, provoking vertex i + 2, every
     /// edge a boundary edge, as `assembly::assemble` makes it; `idx` maps given vertices to
-    /// unique ones.
+    /// unique ones; `whole` as [`Worker::one`] takes it.
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn strip(
         &mut self,
         ctx: &SetupCtx,
@@ -750,6 +763,7 @@ impl Worker {
         mats: &[u32],
         idx: &[u32],
         p: &Prim,
+        whole: bool,
     ) {
         let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
         let f = p.first;
@@ -762,7 +776,7 @@ impl Worker {
                 v: if i % 2 == 0 { [u, v, w] } else { [v, u, w] },
                 provoking: w,
             };
-            self.one(ctx, vout, wins, mats, &t);
+            self.one(ctx, vout, wins, mats, &t, whole);
         }
     }
 
@@ -815,8 +829,9 @@ impl Worker {
     #[inline(always)]
     fn run_body(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
         self.start(ctx);
+        let whole = whole(ctx, vout, wins);
         for p in asm {
-            self.one(ctx, vout, wins, mats, p);
+            self.one(ctx, vout, wins, mats, p, whole);
         }
     }
 
@@ -855,9 +870,19 @@ impl Worker {
     }
 
     /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
-    /// out of line in `general`.
+    /// out of line in `general`. `whole` (the run's [`whole`]): `vout` holds every vertex of
+    /// `wins` whole, so that `fast_tri` reads the vertices whose records it has without a range
+    /// check.
     #[inline(always)]
-    fn one(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
+    fn one(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        p: &Asm,
+        whole: bool,
+    ) {
         if p.n == 3 {
             let w = |i: u32| wins.get(i as usize);
             let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
@@ -866,8 +891,9 @@ impl Worker {
             if wa.code & wb.code & wc.code != 0 {
                 return;
             }
-            if ctx.fast && wa.code | wb.code | wc.code == 0 {
-                self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking);
+            if ctx.fast && whole && wa.code | wb.code | wc.code == 0 {
+                // SAFETY: `whole`, and `p.v` are indices of `wins` (their records were read).
+                unsafe { self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking) };
                 return;
             }
         }
@@ -878,8 +904,11 @@ impl Worker {
     /// vertex stage's output: facing, culling and the coverage reject use only the window
     /// records `w` of vertices `ids`; varyings are read from `vout` only for a triangle that may
     /// cover a pixel centre. Produces exactly what `polygon::<3>` and `tri` produce.
+    ///
+    /// # Safety
+    /// `vout` holds `(ids[j] + 1) * ctx.layout.stride` floats at least, for each j.
     #[inline(always)]
-    fn fast_tri(
+    unsafe fn fast_tri(
         &mut self,
         ctx: &SetupCtx,
         vout: &[f32],
@@ -919,34 +948,33 @@ impl Worker {
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let (z, iw) = ([ws[0].z, ws[1].z, ws[2].z], [ws[0].iw, ws[1].iw, ws[2].iw]);
-        if ctx.rl.n == 4 && !flat {
-            // The colour alone, smooth (the common dense mesh): its four floats straight from
-            // each vertex (what `load4(vert(i), o)` is), one range check each instead of two.
-            let o = table[0].off[0] as usize;
-            let c = |i: u32| {
-                let b = i as usize * s;
-                vout.get(b + o..b + o + 4)
-                    .filter(|_| o + 4 <= s)
-                    .and_then(|c| <[f32; 4]>::try_from(c).ok())
-                    .map(Vec4::from_array)
-            };
-            if let (Some(a), Some(b), Some(c)) = (c(ids[0]), c(ids[1]), c(ids[2])) {
-                let q = [a, b, c];
-                self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
-                return;
-            }
-        }
-        // The whole vertices, the provoking one only under FLAT (the only case `flat4` reads it).
+        // The three vertices whole, without a range check (the caller's contract).
         let vert = |i: u32| {
             let i = i as usize;
             debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
-            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+            // SAFETY: floats i·s..(i + 1)·s are inside `vout` (the contract of `fast_tri`).
+            unsafe { vout.get_unchecked(i * s..(i + 1) * s) }
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
-        let prov = if flat { vert(provoking) } else { &[][..] };
-        // Every vertex whole (always, the vertex stage processed them): a run's four floats
-        // load without a range check.
-        let whole = vs.iter().all(|v| v.len() == s);
+        if ctx.rl.n == 4 && !flat && table[0].run {
+            // The colour alone, smooth (the common dense mesh): its four floats straight from
+            // each vertex (what `load4(vert(i), o)` is).
+            let o = table[0].off[0] as usize;
+            // SAFETY: each of `vs` holds `s` = `layout.stride` floats, and `run`: `o + 4 <=
+            // stride` (`gather_table`, of this layout).
+            let q = vs.map(|v| unsafe { load4_unchecked(v, o) });
+            let a = q[0];
+            self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
+            return;
+        }
+        // The provoking vertex only under FLAT (the only case `flat4` reads it), with a range
+        // check (not one of `ids` to the type system).
+        let prov = if flat {
+            let i = provoking as usize;
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        } else {
+            &[][..]
+        };
         // Varyings k..k + 4 of vertex j: colours from the provoking vertex under FLAT; a run
         // of four floats in one load, otherwise one float each.
         let get4 = |src: &[f32], t: &Gather4| {
@@ -969,8 +997,8 @@ impl Worker {
             };
             debug_assert!(!(t.colour && flat), "a FLAT colour group divided");
             let src = vs[j];
-            if t.run && whole {
-                // SAFETY: `whole`: `src` holds the vertex's `s` = `layout.stride` floats;
+            if t.run {
+                // SAFETY: `src` holds the vertex's `s` = `layout.stride` floats (`vert`);
                 // `run`: `off[0] + 4 <= stride` (`gather_table`, of this layout).
                 return unsafe { load4_unchecked(src, t.off[0] as usize) };
             }
