@@ -19,7 +19,7 @@ use std::mem::MaybeUninit;
 
 use glam::Vec4;
 
-use super::assembly::Asm;
+use super::assembly::{Asm, ALL_EDGES, QUAD_STRIP_EDGES};
 use super::batch::{Batch, Prim};
 use super::clip::Clipper;
 use super::framebuffer::TILE;
@@ -720,23 +720,22 @@ impl Worker {
         let whole = whole(ctx, vout, wins);
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
+        // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
+        // as they are assembled (`direct`), without the round trip through `asm`. Runs of
+        // other primitives go through `assemble`.
+        let direct = |p: &Prim| {
+            matches!(
+                p.mode,
+                gl::TRIANGLE_STRIP | gl::QUAD_STRIP | gl::TRIANGLE_FAN
+            )
+        };
         while !rest.is_empty() {
-            // Triangle strips (a dense mesh's usual primitive) are set up as they are
-            // assembled, without the round trip through `asm`: the triangles, in the order
-            // and with the vertices, provoking vertex and edge flags `assembly::assemble`
-            // gives them. Runs of other primitives go through `assemble`.
-            let strips = rest
-                .iter()
-                .position(|p| p.mode != gl::TRIANGLE_STRIP)
-                .unwrap_or(rest.len());
-            let (now, after) = rest.split_at(strips);
+            let n = rest.iter().position(|p| !direct(p)).unwrap_or(rest.len());
+            let (now, after) = rest.split_at(n);
             for p in now {
-                self.strip(ctx, vout, wins, &b.mat, &b.idx, p, whole);
+                self.direct(ctx, vout, wins, &b.mat, &b.idx, p, whole);
             }
-            let others = after
-                .iter()
-                .position(|p| p.mode == gl::TRIANGLE_STRIP)
-                .unwrap_or(after.len());
+            let others = after.iter().position(direct).unwrap_or(after.len());
             let (now, after) = after.split_at(others);
             if !now.is_empty() {
                 super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
@@ -749,13 +748,17 @@ impl Worker {
         self.asm = asm;
     }
 
-    /// Assembles and sets up the triangle strip `p` (§2.6.1): triangle i is given vertices
-    /// (i, i + 1, i + 2), its first two swapped when i is odd, provoking vertex i + 2, every
-    /// edge a boundary edge, as `assembly::assemble` makes it; `idx` maps given vertices to
-    /// unique ones; `whole` as [`Worker::one`] takes it.
+    /// Assembles and sets up the triangle strip, quad strip or fan `p` (§2.6.1) as
+    /// `assembly::assemble` makes their triangles, in its order, with its vertices, provoking
+    /// vertex and edge flags: strip triangle i (i + 2 its provoking vertex) is given vertices
+    /// (i, i + 1, i + 2), its first two swapped when i is odd; quad i of a quad strip is
+    /// (2i + 2, 2i, 2i + 3) and (2i, 2i + 1, 2i + 3), provoking vertex 2i + 3; fan triangle i
+    /// is (0, i + 1, i + 2), provoking vertex i + 2. `idx` maps given vertices to unique ones;
+    /// each is mapped and its record found once, as it enters (a triangle at a time through
+    /// `assemble`, three lookups each); `whole` as [`Worker::one`] takes it.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn strip(
+    fn direct(
         &mut self,
         ctx: &SetupCtx,
         vout: &[f32],
@@ -765,18 +768,49 @@ impl Worker {
         p: &Prim,
         whole: bool,
     ) {
-        let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
-        let f = p.first;
-        for i in 0..p.count.saturating_sub(2) {
-            let a = f + i;
-            let (u, v, w) = (map(a), map(a + 1), map(a + 2));
-            let t = Asm {
-                n: 3,
-                edges: 7,
-                v: if i % 2 == 0 { [u, v, w] } else { [v, u, w] },
-                provoking: w,
-            };
-            self.one(ctx, vout, wins, mats, &t, whole);
+        let vert = |i: u32| {
+            let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
+            (u, wins.get(u as usize))
+        };
+        let (f, n) = (p.first, p.count);
+        // (Each `one_tri` below: every vertex is `vert`'s, its record `wins.get` of its index
+        // in the `wins` that `whole` was decided for.)
+        match p.mode {
+            gl::TRIANGLE_STRIP if n >= 3 => {
+                let (mut a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n - 2 {
+                    let c = vert(f + i + 2);
+                    let v = if i % 2 == 0 { [a, b, c] } else { [b, a, c] };
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, vout, wins, mats, v, c.0, ALL_EDGES, whole) };
+                    (a, b) = (b, c);
+                }
+            }
+            gl::QUAD_STRIP if n >= 4 => {
+                let [e0, e1] = QUAD_STRIP_EDGES;
+                let (mut a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n / 2 - 1 {
+                    let q = f + 2 * i;
+                    let (c, d) = (vert(q + 2), vert(q + 3));
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, vout, wins, mats, [c, a, d], d.0, e0, whole) };
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, vout, wins, mats, [a, b, d], d.0, e1, whole) };
+                    (a, b) = (c, d);
+                }
+            }
+            gl::TRIANGLE_FAN if n >= 3 => {
+                let (a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n - 2 {
+                    let c = vert(f + i + 2);
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe {
+                        self.one_tri(ctx, vout, wins, mats, [a, b, c], c.0, ALL_EDGES, whole)
+                    };
+                    b = c;
+                }
+            }
+            _ => {}
         }
     }
 
@@ -869,10 +903,9 @@ impl Worker {
         self.area = 0;
     }
 
-    /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
-    /// out of line in `general`. `whole` (the run's [`whole`]): `vout` holds every vertex of
-    /// `wins` whole, so that `fast_tri` reads the vertices whose records it has without a range
-    /// check.
+    /// Sets up one assembled primitive `p`: the triangle by `one_tri`, everything else out of
+    /// line in `general`. `whole` (the run's [`whole`]): `vout` holds every vertex of `wins`
+    /// whole, so that `fast_tri` reads the vertices whose records it has without a range check.
     #[inline(always)]
     fn one(
         &mut self,
@@ -884,20 +917,55 @@ impl Worker {
         whole: bool,
     ) {
         if p.n == 3 {
-            let w = |i: u32| wins.get(i as usize);
-            let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
-                return;
-            };
-            if wa.code & wb.code & wc.code != 0 {
-                return;
-            }
-            if ctx.fast && whole && wa.code | wb.code | wc.code == 0 {
-                // SAFETY: `whole`, and `p.v` are indices of `wins` (their records were read).
-                unsafe { self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking) };
-                return;
-            }
+            let v = p.v.map(|i| (i, wins.get(i as usize)));
+            // SAFETY: each record is `wins.get` of its index, in the `wins` that `whole` was
+            // decided for.
+            unsafe { self.one_tri(ctx, vout, wins, mats, v, p.provoking, p.edges, whole) };
+            return;
         }
         self.general(ctx, vout, wins, mats, p);
+    }
+
+    /// Sets up the assembled triangle of vertices `v` (each its index and its record, `None`
+    /// past the end of `wins`), provoking vertex `provoking` and edge flags `edges`: dropped
+    /// when a record is missing or all three vertices are outside one clip plane, set up by
+    /// `fast_tri` when it can be, else by `general`. `whole` as [`Worker::one`] takes it.
+    ///
+    /// # Safety
+    /// Each record of `v` is `wins.get` of its index, and `whole` was decided for `wins`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn one_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        v: [(u32, Option<&Win>); 3],
+        provoking: u32,
+        edges: u8,
+        whole: bool,
+    ) {
+        let [(a, Some(wa)), (b, Some(wb)), (c, Some(wc))] = v else {
+            return;
+        };
+        if wa.code & wb.code & wc.code != 0 {
+            return;
+        }
+        let ids = [a, b, c];
+        if ctx.fast && whole && wa.code | wb.code | wc.code == 0 {
+            // SAFETY: `whole`, and `ids` are indices of its `wins` (the contract; their records
+            // were found).
+            unsafe { self.fast_tri(ctx, vout, mats, [wa, wb, wc], ids, provoking) };
+            return;
+        }
+        let p = Asm {
+            n: 3,
+            edges,
+            v: ids,
+            provoking,
+        };
+        self.general(ctx, vout, wins, mats, &p);
     }
 
     /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
