@@ -1095,6 +1095,13 @@ impl Worker {
         var4: impl Fn(usize, usize) -> Vec4,
         cover: u8,
     ) {
+        // Room for the planes first, before any float is computed: the call that may grow the
+        // pool clobbers every vector register, and the barycentric planes, live across it,
+        // went through the stack (≈25 instructions a triangle).
+        let n = ctx.rl.n.min(MAXV);
+        let voff = self.pool.len();
+        let len = 3 * (n + 1);
+        self.pool.reserve(len);
         let (area, bbox) = (g.area, g.bbox);
         let v = g.v;
         let mut lam = [[0f64; 3]; 3];
@@ -1129,10 +1136,6 @@ impl Worker {
         } else {
             0
         };
-        let n = ctx.rl.n.min(MAXV);
-        let voff = self.pool.len();
-        let len = 3 * (n + 1);
-        self.pool.reserve(len);
         let out = &mut self.pool.spare_capacity_mut()[..len];
         let (head, planes) = out.split_at_mut(3);
         for (d, s) in head.iter_mut().zip(plane(l32, iw)) {
