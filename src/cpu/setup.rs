@@ -229,7 +229,7 @@ pub struct SetupCtx {
     fast: bool,
     /// Where each group of four varyings comes from, front face then back face (for
     /// `fast_tri`).
-    gather: [[Gather4; GROUPS]; 2],
+    gather: [[Gather4; TABLE]; 2],
 }
 
 /// Where one varying of a face comes from in a processed vertex.
@@ -243,6 +243,12 @@ struct Gather {
 
 /// Groups of four varyings (k..k + 4, k a multiple of 4) that `emit_tri` builds planes for.
 const GROUPS: usize = MAXV.div_ceil(4);
+
+/// Entries of a `gather_table`: `GROUPS` rounded up to a power of two, the groups past
+/// `GROUPS` varyings that stay 0, so that `fast_tri` finds group k / 4 at `(k / 4) % TABLE`
+/// without a range check (an `and`; a check and its zero fallback were five instructions a
+/// group).
+const TABLE: usize = GROUPS.next_power_of_two();
 
 /// Where the four varyings k..k + 4 of a face come from in a processed vertex.
 #[derive(Clone, Copy, Debug)]
@@ -259,7 +265,7 @@ struct Gather4 {
 
 /// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN, in
 /// groups of four.
-fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; GROUPS] {
+fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; TABLE] {
     let mut t = [Gather {
         off: u32::MAX,
         colour: false,
@@ -1051,18 +1057,20 @@ impl Worker {
             }
             Vec4::from_array(t.off.map(|o| src.get(o as usize).copied().unwrap_or(0.0)))
         };
+        // Group k / 4 (`emit_tri` asks for k below `rl.n`, at most `MAXV`, so the modulo is
+        // k / 4 itself).
+        let group = |k: usize| {
+            debug_assert!(k < MAXV, "varying {k} past MAXV");
+            &table[(k / 4) % TABLE]
+        };
         let flat4 = |k: usize| {
-            let Some(t) = table.get(k / 4) else {
-                return Vec4::ZERO;
-            };
+            let t = group(k);
             get4(if t.colour && flat { prov } else { vs[0] }, t)
         };
         // `emit_tri` asks `var4` for the groups it divides by w only (k >= its `nflat`), never
         // the colours under FLAT (those are its flat groups): always vertex j's own floats.
         let var4 = |j: usize, k: usize| {
-            let Some(t) = table.get(k / 4) else {
-                return Vec4::ZERO;
-            };
+            let t = group(k);
             debug_assert!(!(t.colour && flat), "a FLAT colour group divided");
             let src = vs[j];
             if t.run {
