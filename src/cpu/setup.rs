@@ -607,15 +607,36 @@ pub(super) fn snap(x: f64) -> i32 {
     (t + 0.5f64.copysign(t)) as i32
 }
 
-/// Whether `vout` holds every vertex that `wins` has a record of, whole (`layout.stride` floats
-/// each): decided once a run, so that `Worker::fast_tri` reads a triangle's vertices, whose
-/// records `Worker::one` has found, without a range check. Always so: the vertex stage
-/// processes every vertex it writes a record for.
-#[inline(always)]
-fn whole(ctx: &SetupCtx, vout: &[f32], wins: &[Win]) -> bool {
-    wins.len()
-        .checked_mul(ctx.layout.stride)
-        .is_some_and(|n| n <= vout.len())
+/// The processed vertices a run of set-up reads (`vout`, their window records `wins`, their
+/// material indices `mats`), and whether `vout` holds every vertex that `wins` has a record
+/// of, whole (`layout.stride` floats each): decided once a run (`Src::new`), so that
+/// `Worker::fast_tri` reads a triangle's vertices, whose records `Worker::one_tri` has found,
+/// without a range check. Always so: the vertex stage processes every vertex it writes a
+/// record for.
+#[derive(Clone, Copy)]
+struct Src<'a> {
+    vout: &'a [f32],
+    wins: &'a [Win],
+    mats: &'a [u32],
+    /// `vout` holds every vertex of `wins` whole.
+    whole: bool,
+}
+
+impl<'a> Src<'a> {
+    /// The run's vertices under `ctx` (its `layout.stride`).
+    #[inline(always)]
+    fn new(ctx: &SetupCtx, vout: &'a [f32], wins: &'a [Win], mats: &'a [u32]) -> Self {
+        let whole = wins
+            .len()
+            .checked_mul(ctx.layout.stride)
+            .is_some_and(|n| n <= vout.len());
+        Src {
+            vout,
+            wins,
+            mats,
+            whole,
+        }
+    }
 }
 
 /// A vertex in window coordinates with its varyings.
@@ -723,7 +744,7 @@ impl Worker {
         prims: &[Prim],
     ) {
         self.start(ctx);
-        let whole = whole(ctx, vout, wins);
+        let src = Src::new(ctx, vout, wins, &b.mat);
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
         // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
@@ -739,14 +760,14 @@ impl Worker {
             let n = rest.iter().position(|p| !direct(p)).unwrap_or(rest.len());
             let (now, after) = rest.split_at(n);
             for p in now {
-                self.direct(ctx, vout, wins, &b.mat, &b.idx, p, whole);
+                self.direct(ctx, src, &b.idx, p);
             }
             let others = after.iter().position(direct).unwrap_or(after.len());
             let (now, after) = after.split_at(others);
             if !now.is_empty() {
                 super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
                 for p in &asm {
-                    self.one(ctx, vout, wins, &b.mat, p, whole);
+                    self.one(ctx, src, p);
                 }
             }
             rest = after;
@@ -761,26 +782,16 @@ impl Worker {
     /// (2i + 2, 2i, 2i + 3) and (2i, 2i + 1, 2i + 3), provoking vertex 2i + 3; fan triangle i
     /// is (0, i + 1, i + 2), provoking vertex i + 2. `idx` maps given vertices to unique ones;
     /// each is mapped and its record found once, as it enters (a triangle at a time through
-    /// `assemble`, three lookups each); `whole` as [`Worker::one`] takes it.
+    /// `assemble`, three lookups each).
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn direct(
-        &mut self,
-        ctx: &SetupCtx,
-        vout: &[f32],
-        wins: &[Win],
-        mats: &[u32],
-        idx: &[u32],
-        p: &Prim,
-        whole: bool,
-    ) {
+    fn direct(&mut self, ctx: &SetupCtx, src: Src, idx: &[u32], p: &Prim) {
         let vert = |i: u32| {
             let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
-            (u, wins.get(u as usize))
+            (u, src.wins.get(u as usize))
         };
         let (f, n) = (p.first, p.count);
-        // (Each `one_tri` below: every vertex is `vert`'s, its record `wins.get` of its index
-        // in the `wins` that `whole` was decided for.)
+        // (Each `one_tri` below: every vertex is `vert`'s, its record `src.wins.get` of its
+        // index.)
         match p.mode {
             gl::TRIANGLE_STRIP if n >= 3 => {
                 let (mut a, mut b) = (vert(f), vert(f + 1));
@@ -788,7 +799,7 @@ impl Worker {
                     let c = vert(f + i + 2);
                     let v = if i % 2 == 0 { [a, b, c] } else { [b, a, c] };
                     // SAFETY: `vert`'s vertices (see above).
-                    unsafe { self.one_tri(ctx, vout, wins, mats, v, c.0, ALL_EDGES, whole) };
+                    unsafe { self.one_tri(ctx, src, v, c.0, ALL_EDGES) };
                     (a, b) = (b, c);
                 }
             }
@@ -799,9 +810,9 @@ impl Worker {
                     let q = f + 2 * i;
                     let (c, d) = (vert(q + 2), vert(q + 3));
                     // SAFETY: `vert`'s vertices (see above).
-                    unsafe { self.one_tri(ctx, vout, wins, mats, [c, a, d], d.0, e0, whole) };
+                    unsafe { self.one_tri(ctx, src, [c, a, d], d.0, e0) };
                     // SAFETY: `vert`'s vertices (see above).
-                    unsafe { self.one_tri(ctx, vout, wins, mats, [a, b, d], d.0, e1, whole) };
+                    unsafe { self.one_tri(ctx, src, [a, b, d], d.0, e1) };
                     (a, b) = (c, d);
                 }
             }
@@ -810,9 +821,7 @@ impl Worker {
                 for i in 0..n - 2 {
                     let c = vert(f + i + 2);
                     // SAFETY: `vert`'s vertices (see above).
-                    unsafe {
-                        self.one_tri(ctx, vout, wins, mats, [a, b, c], c.0, ALL_EDGES, whole)
-                    };
+                    unsafe { self.one_tri(ctx, src, [a, b, c], c.0, ALL_EDGES) };
                     b = c;
                 }
             }
@@ -869,9 +878,9 @@ impl Worker {
     #[inline(always)]
     fn run_body(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
         self.start(ctx);
-        let whole = whole(ctx, vout, wins);
+        let src = Src::new(ctx, vout, wins, mats);
         for p in asm {
-            self.one(ctx, vout, wins, mats, p, whole);
+            self.one(ctx, src, p);
         }
     }
 
@@ -909,48 +918,34 @@ impl Worker {
         self.area = 0;
     }
 
-    /// Sets up one assembled primitive `p`: the triangle by `one_tri`, everything else out of
-    /// line in `general`. `whole` (the run's [`whole`]): `vout` holds every vertex of `wins`
-    /// whole, so that `fast_tri` reads the vertices whose records it has without a range check.
+    /// Sets up one assembled primitive `p` of the run's vertices `src`: the triangle by
+    /// `one_tri`, everything else out of line in `general`.
     #[inline(always)]
-    fn one(
-        &mut self,
-        ctx: &SetupCtx,
-        vout: &[f32],
-        wins: &[Win],
-        mats: &[u32],
-        p: &Asm,
-        whole: bool,
-    ) {
+    fn one(&mut self, ctx: &SetupCtx, src: Src, p: &Asm) {
         if p.n == 3 {
-            let v = p.v.map(|i| (i, wins.get(i as usize)));
-            // SAFETY: each record is `wins.get` of its index, in the `wins` that `whole` was
-            // decided for.
-            unsafe { self.one_tri(ctx, vout, wins, mats, v, p.provoking, p.edges, whole) };
+            let v = p.v.map(|i| (i, src.wins.get(i as usize)));
+            // SAFETY: each record is `src.wins.get` of its index.
+            unsafe { self.one_tri(ctx, src, v, p.provoking, p.edges) };
             return;
         }
-        self.general(ctx, vout, wins, mats, p);
+        self.general(ctx, src.vout, src.wins, src.mats, p);
     }
 
-    /// Sets up the assembled triangle of vertices `v` (each its index and its record, `None`
-    /// past the end of `wins`), provoking vertex `provoking` and edge flags `edges`: dropped
-    /// when a record is missing or all three vertices are outside one clip plane, set up by
-    /// `fast_tri` when it can be, else by `general`. `whole` as [`Worker::one`] takes it.
+    /// Sets up the assembled triangle of vertices `v` of `src` (each its index and its record,
+    /// `None` past the end of `src.wins`), provoking vertex `provoking` and edge flags `edges`:
+    /// dropped when a record is missing or all three vertices are outside one clip plane, set
+    /// up by `fast_tri` when it can be, else by `general`.
     ///
     /// # Safety
-    /// Each record of `v` is `wins.get` of its index, and `whole` was decided for `wins`.
+    /// Each record of `v` is `src.wins.get` of its index.
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
     unsafe fn one_tri(
         &mut self,
         ctx: &SetupCtx,
-        vout: &[f32],
-        wins: &[Win],
-        mats: &[u32],
+        src: Src,
         v: [(u32, Option<&Win>); 3],
         provoking: u32,
         edges: u8,
-        whole: bool,
     ) {
         let [(a, Some(wa)), (b, Some(wb)), (c, Some(wc))] = v else {
             return;
@@ -959,10 +954,10 @@ impl Worker {
             return;
         }
         let ids = [a, b, c];
-        if ctx.fast && whole && wa.code | wb.code | wc.code == 0 {
-            // SAFETY: `whole`, and `ids` are indices of its `wins` (the contract; their records
-            // were found).
-            unsafe { self.fast_tri(ctx, vout, mats, [wa, wb, wc], ids, provoking) };
+        if ctx.fast && src.whole && wa.code | wb.code | wc.code == 0 {
+            // SAFETY: `src.whole`: `src.vout` holds every vertex of `src.wins` whole, and `ids`
+            // are indices of `src.wins` (the contract; their records were found).
+            unsafe { self.fast_tri(ctx, src.vout, src.mats, [wa, wb, wc], ids, provoking) };
             return;
         }
         let p = Asm {
@@ -971,7 +966,7 @@ impl Worker {
             v: ids,
             provoking,
         };
-        self.general(ctx, vout, wins, mats, &p);
+        self.general(ctx, src.vout, src.wins, src.mats, &p);
     }
 
     /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
