@@ -16,6 +16,22 @@ use crate::gl;
 /// triangle of TRIANGLES, the first of each quad and polygon.
 pub const RESET_STIPPLE: u8 = 8;
 
+/// `Asm::edges` of a triangle whose edges from its first, second and third vertex are boundary
+/// edges (`a`, `b`, `c`).
+const fn edge_bits(a: bool, b: bool, c: bool) -> u8 {
+    a as u8 | (b as u8) << 1 | (c as u8) << 2
+}
+
+/// `Asm::edges` of a strip's or a fan's triangles: every edge a boundary edge.
+pub(super) const ALL_EDGES: u8 = edge_bits(true, true, true);
+
+/// `Asm::edges` of the two triangles of a quad strip's quad (see `assemble`), which
+/// `Worker::assemble_and_run` also sets up without `assemble`.
+pub(super) const QUAD_STRIP_EDGES: [u8; 2] = [
+    edge_bits(true, false, true) | RESET_STIPPLE,
+    edge_bits(true, true, false),
+];
+
 /// One assembled primitive, indices into the processed vertex array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Asm {
@@ -58,7 +74,7 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
         v: [a, b, c],
         provoking: p,
     };
-    let flags = |a: bool, b: bool, c: bool| u8::from(a) | u8::from(b) << 1 | u8::from(c) << 2;
+    let flags = edge_bits;
     for p in prims {
         let (f, n) = (p.first, p.count);
         match p.mode {
@@ -86,13 +102,14 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
                 let a = f + i;
                 // Odd triangles swap their first two vertices to keep the strip's orientation.
                 if i % 2 == 0 {
-                    tri(a, a + 1, a + 2, a + 2, 7)
+                    tri(a, a + 1, a + 2, a + 2, ALL_EDGES)
                 } else {
-                    tri(a + 1, a, a + 2, a + 2, 7)
+                    tri(a + 1, a, a + 2, a + 2, ALL_EDGES)
                 }
             })),
             gl::TRIANGLE_FAN => out.extend(
-                (0..n.saturating_sub(2)).map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, 7)),
+                (0..n.saturating_sub(2))
+                    .map(|i| tri(f, f + i + 1, f + i + 2, f + i + 2, ALL_EDGES)),
             ),
             gl::QUADS => {
                 // GL leaves the diagonal open (§2.6.1); fixedgl takes llvmpipe's. With `flat`
@@ -119,9 +136,9 @@ pub fn assemble(prims: &[Prim], idx: &[u32], edge: &[bool], split_last: bool, ou
                     // Quad i: vertices 2i, 2i+1, 2i+3, 2i+2 (0-based), provoking 2i+3; split
                     // along 2i–2i+3 like Mesa: (2i+2, 2i, 2i+3) and (2i, 2i+1, 2i+3).
                     let a = f + 2 * i;
-                    let e = flags(true, false, true) | RESET_STIPPLE;
-                    out.push(tri(a + 2, a, a + 3, a + 3, e));
-                    out.push(tri(a, a + 1, a + 3, a + 3, flags(true, true, false)));
+                    let [e0, e1] = QUAD_STRIP_EDGES;
+                    out.push(tri(a + 2, a, a + 3, a + 3, e0));
+                    out.push(tri(a, a + 1, a + 3, a + 3, e1));
                 }
             }
             gl::POLYGON => {

@@ -19,7 +19,7 @@ use std::mem::MaybeUninit;
 
 use glam::Vec4;
 
-use super::assembly::Asm;
+use super::assembly::{Asm, ALL_EDGES, QUAD_STRIP_EDGES};
 use super::batch::{Batch, Prim};
 use super::clip::Clipper;
 use super::framebuffer::TILE;
@@ -229,7 +229,7 @@ pub struct SetupCtx {
     fast: bool,
     /// Where each group of four varyings comes from, front face then back face (for
     /// `fast_tri`).
-    gather: [[Gather4; GROUPS]; 2],
+    gather: [[Gather4; TABLE]; 2],
 }
 
 /// Where one varying of a face comes from in a processed vertex.
@@ -243,6 +243,12 @@ struct Gather {
 
 /// Groups of four varyings (k..k + 4, k a multiple of 4) that `emit_tri` builds planes for.
 const GROUPS: usize = MAXV.div_ceil(4);
+
+/// Entries of a `gather_table`: `GROUPS` rounded up to a power of two, the groups past
+/// `GROUPS` varyings that stay 0, so that `fast_tri` finds group k / 4 at `(k / 4) % TABLE`
+/// without a range check (an `and`; a check and its zero fallback were five instructions a
+/// group).
+const TABLE: usize = GROUPS.next_power_of_two();
 
 /// Where the four varyings k..k + 4 of a face come from in a processed vertex.
 #[derive(Clone, Copy, Debug)]
@@ -259,7 +265,7 @@ struct Gather4 {
 
 /// The varyings of a face as `Worker::varyings` fills them, for layouts without PHONG_WIN, in
 /// groups of four.
-fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; GROUPS] {
+fn gather_table(l: &Layout, rl: &RLayout, back: bool) -> [Gather4; TABLE] {
     let mut t = [Gather {
         off: u32::MAX,
         colour: false,
@@ -601,6 +607,38 @@ pub(super) fn snap(x: f64) -> i32 {
     (t + 0.5f64.copysign(t)) as i32
 }
 
+/// The processed vertices a run of set-up reads (`vout`, their window records `wins`, their
+/// material indices `mats`), and whether `vout` holds every vertex that `wins` has a record
+/// of, whole (`layout.stride` floats each): decided once a run (`Src::new`), so that
+/// `Worker::fast_tri` reads a triangle's vertices, whose records `Worker::one_tri` has found,
+/// without a range check. Always so: the vertex stage processes every vertex it writes a
+/// record for.
+#[derive(Clone, Copy)]
+struct Src<'a> {
+    vout: &'a [f32],
+    wins: &'a [Win],
+    mats: &'a [u32],
+    /// `vout` holds every vertex of `wins` whole.
+    whole: bool,
+}
+
+impl<'a> Src<'a> {
+    /// The run's vertices under `ctx` (its `layout.stride`).
+    #[inline(always)]
+    fn new(ctx: &SetupCtx, vout: &'a [f32], wins: &'a [Win], mats: &'a [u32]) -> Self {
+        let whole = wins
+            .len()
+            .checked_mul(ctx.layout.stride)
+            .is_some_and(|n| n <= vout.len());
+        Src {
+            vout,
+            wins,
+            mats,
+            whole,
+        }
+    }
+}
+
 /// A vertex in window coordinates with its varyings.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct WVert {
@@ -706,30 +744,30 @@ impl Worker {
         prims: &[Prim],
     ) {
         self.start(ctx);
+        let src = Src::new(ctx, vout, wins, &b.mat);
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
+        // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
+        // as they are assembled (`direct`), without the round trip through `asm`. Runs of
+        // other primitives go through `assemble`.
+        let direct = |p: &Prim| {
+            matches!(
+                p.mode,
+                gl::TRIANGLE_STRIP | gl::QUAD_STRIP | gl::TRIANGLE_FAN
+            )
+        };
         while !rest.is_empty() {
-            // Triangle strips (a dense mesh's usual primitive) are set up as they are
-            // assembled, without the round trip through `asm`: the triangles, in the order
-            // and with the vertices, provoking vertex and edge flags `assembly::assemble`
-            // gives them. Runs of other primitives go through `assemble`.
-            let strips = rest
-                .iter()
-                .position(|p| p.mode != gl::TRIANGLE_STRIP)
-                .unwrap_or(rest.len());
-            let (now, after) = rest.split_at(strips);
+            let n = rest.iter().position(|p| !direct(p)).unwrap_or(rest.len());
+            let (now, after) = rest.split_at(n);
             for p in now {
-                self.strip(ctx, vout, wins, &b.mat, &b.idx, p);
+                self.direct(ctx, src, &b.idx, p);
             }
-            let others = after
-                .iter()
-                .position(|p| p.mode == gl::TRIANGLE_STRIP)
-                .unwrap_or(after.len());
+            let others = after.iter().position(direct).unwrap_or(after.len());
             let (now, after) = after.split_at(others);
             if !now.is_empty() {
                 super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
                 for p in &asm {
-                    self.one(ctx, vout, wins, &b.mat, p);
+                    self.one(ctx, src, p);
                 }
             }
             rest = after;
@@ -737,32 +775,57 @@ impl Worker {
         self.asm = asm;
     }
 
-    /// Assembles and sets up the triangle strip `p` (§2.6.1): triangle i is given vertices
-    /// (i, i + 1, i + 2), its first two swapped when i is odd, provoking vertex i + 2, every
-    /// edge a boundary edge, as `assembly::assemble` makes it; `idx` maps given vertices to
-    /// unique ones.
+    /// Assembles and sets up the triangle strip, quad strip or fan `p` (§2.6.1) as
+    /// `assembly::assemble` makes their triangles, in its order, with its vertices, provoking
+    /// vertex and edge flags: strip triangle i (i + 2 its provoking vertex) is given vertices
+    /// (i, i + 1, i + 2), its first two swapped when i is odd; quad i of a quad strip is
+    /// (2i + 2, 2i, 2i + 3) and (2i, 2i + 1, 2i + 3), provoking vertex 2i + 3; fan triangle i
+    /// is (0, i + 1, i + 2), provoking vertex i + 2. `idx` maps given vertices to unique ones;
+    /// each is mapped and its record found once, as it enters (a triangle at a time through
+    /// `assemble`, three lookups each).
     #[inline(always)]
-    fn strip(
-        &mut self,
-        ctx: &SetupCtx,
-        vout: &[f32],
-        wins: &[Win],
-        mats: &[u32],
-        idx: &[u32],
-        p: &Prim,
-    ) {
-        let map = |i: u32| idx.get(i as usize).copied().unwrap_or(u32::MAX);
-        let f = p.first;
-        for i in 0..p.count.saturating_sub(2) {
-            let a = f + i;
-            let (u, v, w) = (map(a), map(a + 1), map(a + 2));
-            let t = Asm {
-                n: 3,
-                edges: 7,
-                v: if i % 2 == 0 { [u, v, w] } else { [v, u, w] },
-                provoking: w,
-            };
-            self.one(ctx, vout, wins, mats, &t);
+    fn direct(&mut self, ctx: &SetupCtx, src: Src, idx: &[u32], p: &Prim) {
+        let vert = |i: u32| {
+            let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
+            (u, src.wins.get(u as usize))
+        };
+        let (f, n) = (p.first, p.count);
+        // (Each `one_tri` below: every vertex is `vert`'s, its record `src.wins.get` of its
+        // index.)
+        match p.mode {
+            gl::TRIANGLE_STRIP if n >= 3 => {
+                let (mut a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n - 2 {
+                    let c = vert(f + i + 2);
+                    let v = if i % 2 == 0 { [a, b, c] } else { [b, a, c] };
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, src, v, c.0, ALL_EDGES) };
+                    (a, b) = (b, c);
+                }
+            }
+            gl::QUAD_STRIP if n >= 4 => {
+                let [e0, e1] = QUAD_STRIP_EDGES;
+                let (mut a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n / 2 - 1 {
+                    let q = f + 2 * i;
+                    let (c, d) = (vert(q + 2), vert(q + 3));
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, src, [c, a, d], d.0, e0) };
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, src, [a, b, d], d.0, e1) };
+                    (a, b) = (c, d);
+                }
+            }
+            gl::TRIANGLE_FAN if n >= 3 => {
+                let (a, mut b) = (vert(f), vert(f + 1));
+                for i in 0..n - 2 {
+                    let c = vert(f + i + 2);
+                    // SAFETY: `vert`'s vertices (see above).
+                    unsafe { self.one_tri(ctx, src, [a, b, c], c.0, ALL_EDGES) };
+                    b = c;
+                }
+            }
+            _ => {}
         }
     }
 
@@ -815,8 +878,9 @@ impl Worker {
     #[inline(always)]
     fn run_body(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
         self.start(ctx);
+        let src = Src::new(ctx, vout, wins, mats);
         for p in asm {
-            self.one(ctx, vout, wins, mats, p);
+            self.one(ctx, src, p);
         }
     }
 
@@ -854,32 +918,66 @@ impl Worker {
         self.area = 0;
     }
 
-    /// Sets up one assembled primitive `p`: the common unclipped triangle here, everything else
-    /// out of line in `general`.
+    /// Sets up one assembled primitive `p` of the run's vertices `src`: the triangle by
+    /// `one_tri`, everything else out of line in `general`.
     #[inline(always)]
-    fn one(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], p: &Asm) {
+    fn one(&mut self, ctx: &SetupCtx, src: Src, p: &Asm) {
         if p.n == 3 {
-            let w = |i: u32| wins.get(i as usize);
-            let (Some(wa), Some(wb), Some(wc)) = (w(p.v[0]), w(p.v[1]), w(p.v[2])) else {
-                return;
-            };
-            if wa.code & wb.code & wc.code != 0 {
-                return;
-            }
-            if ctx.fast && wa.code | wb.code | wc.code == 0 {
-                self.fast_tri(ctx, vout, mats, [wa, wb, wc], p.v, p.provoking);
-                return;
-            }
+            let v = p.v.map(|i| (i, src.wins.get(i as usize)));
+            // SAFETY: each record is `src.wins.get` of its index.
+            unsafe { self.one_tri(ctx, src, v, p.provoking, p.edges) };
+            return;
         }
-        self.general(ctx, vout, wins, mats, p);
+        self.general(ctx, src.vout, src.wins, src.mats, p);
+    }
+
+    /// Sets up the assembled triangle of vertices `v` of `src` (each its index and its record,
+    /// `None` past the end of `src.wins`), provoking vertex `provoking` and edge flags `edges`:
+    /// dropped when a record is missing or all three vertices are outside one clip plane, set
+    /// up by `fast_tri` when it can be, else by `general`.
+    ///
+    /// # Safety
+    /// Each record of `v` is `src.wins.get` of its index.
+    #[inline(always)]
+    unsafe fn one_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        v: [(u32, Option<&Win>); 3],
+        provoking: u32,
+        edges: u8,
+    ) {
+        let [(a, Some(wa)), (b, Some(wb)), (c, Some(wc))] = v else {
+            return;
+        };
+        if wa.code & wb.code & wc.code != 0 {
+            return;
+        }
+        let ids = [a, b, c];
+        if ctx.fast && src.whole && wa.code | wb.code | wc.code == 0 {
+            // SAFETY: `src.whole`: `src.vout` holds every vertex of `src.wins` whole, and `ids`
+            // are indices of `src.wins` (the contract; their records were found).
+            unsafe { self.fast_tri(ctx, src.vout, src.mats, [wa, wb, wc], ids, provoking) };
+            return;
+        }
+        let p = Asm {
+            n: 3,
+            edges,
+            v: ids,
+            provoking,
+        };
+        self.general(ctx, src.vout, src.wins, src.mats, &p);
     }
 
     /// The common triangle (no clipping, FILL for both faces, no PHONG_WIN) straight from the
     /// vertex stage's output: facing, culling and the coverage reject use only the window
     /// records `w` of vertices `ids`; varyings are read from `vout` only for a triangle that may
     /// cover a pixel centre. Produces exactly what `polygon::<3>` and `tri` produce.
+    ///
+    /// # Safety
+    /// `vout` holds `(ids[j] + 1) * ctx.layout.stride` floats at least, for each j.
     #[inline(always)]
-    fn fast_tri(
+    unsafe fn fast_tri(
         &mut self,
         ctx: &SetupCtx,
         vout: &[f32],
@@ -919,34 +1017,33 @@ impl Worker {
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
         let (z, iw) = ([ws[0].z, ws[1].z, ws[2].z], [ws[0].iw, ws[1].iw, ws[2].iw]);
-        if ctx.rl.n == 4 && !flat {
-            // The colour alone, smooth (the common dense mesh): its four floats straight from
-            // each vertex (what `load4(vert(i), o)` is), one range check each instead of two.
-            let o = table[0].off[0] as usize;
-            let c = |i: u32| {
-                let b = i as usize * s;
-                vout.get(b + o..b + o + 4)
-                    .filter(|_| o + 4 <= s)
-                    .and_then(|c| <[f32; 4]>::try_from(c).ok())
-                    .map(Vec4::from_array)
-            };
-            if let (Some(a), Some(b), Some(c)) = (c(ids[0]), c(ids[1]), c(ids[2])) {
-                let q = [a, b, c];
-                self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
-                return;
-            }
-        }
-        // The whole vertices, the provoking one only under FLAT (the only case `flat4` reads it).
+        // The three vertices whole, without a range check (the caller's contract).
         let vert = |i: u32| {
             let i = i as usize;
             debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
-            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+            // SAFETY: floats i·s..(i + 1)·s are inside `vout` (the contract of `fast_tri`).
+            unsafe { vout.get_unchecked(i * s..(i + 1) * s) }
         };
         let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
-        let prov = if flat { vert(provoking) } else { &[][..] };
-        // Every vertex whole (always, the vertex stage processed them): a run's four floats
-        // load without a range check.
-        let whole = vs.iter().all(|v| v.len() == s);
+        if ctx.rl.n == 4 && !flat && table[0].run {
+            // The colour alone, smooth (the common dense mesh): its four floats straight from
+            // each vertex (what `load4(vert(i), o)` is).
+            let o = table[0].off[0] as usize;
+            // SAFETY: each of `vs` holds `s` = `layout.stride` floats, and `run`: `o + 4 <=
+            // stride` (`gather_table`, of this layout).
+            let q = vs.map(|v| unsafe { load4_unchecked(v, o) });
+            let a = q[0];
+            self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
+            return;
+        }
+        // The provoking vertex only under FLAT (the only case `flat4` reads it), with a range
+        // check (not one of `ids` to the type system).
+        let prov = if flat {
+            let i = provoking as usize;
+            vout.get(i * s..(i + 1) * s).unwrap_or(&[])
+        } else {
+            &[][..]
+        };
         // Varyings k..k + 4 of vertex j: colours from the provoking vertex under FLAT; a run
         // of four floats in one load, otherwise one float each.
         let get4 = |src: &[f32], t: &Gather4| {
@@ -955,22 +1052,24 @@ impl Worker {
             }
             Vec4::from_array(t.off.map(|o| src.get(o as usize).copied().unwrap_or(0.0)))
         };
+        // Group k / 4 (`emit_tri` asks for k below `rl.n`, at most `MAXV`, so the modulo is
+        // k / 4 itself).
+        let group = |k: usize| {
+            debug_assert!(k < MAXV, "varying {k} past MAXV");
+            &table[(k / 4) % TABLE]
+        };
         let flat4 = |k: usize| {
-            let Some(t) = table.get(k / 4) else {
-                return Vec4::ZERO;
-            };
+            let t = group(k);
             get4(if t.colour && flat { prov } else { vs[0] }, t)
         };
         // `emit_tri` asks `var4` for the groups it divides by w only (k >= its `nflat`), never
         // the colours under FLAT (those are its flat groups): always vertex j's own floats.
         let var4 = |j: usize, k: usize| {
-            let Some(t) = table.get(k / 4) else {
-                return Vec4::ZERO;
-            };
+            let t = group(k);
             debug_assert!(!(t.colour && flat), "a FLAT colour group divided");
             let src = vs[j];
-            if t.run && whole {
-                // SAFETY: `whole`: `src` holds the vertex's `s` = `layout.stride` floats;
+            if t.run {
+                // SAFETY: `src` holds the vertex's `s` = `layout.stride` floats (`vert`);
                 // `run`: `off[0] + 4 <= stride` (`gather_table`, of this layout).
                 return unsafe { load4_unchecked(src, t.off[0] as usize) };
             }
@@ -999,6 +1098,13 @@ impl Worker {
         var4: impl Fn(usize, usize) -> Vec4,
         cover: u8,
     ) {
+        // Room for the planes first, before any float is computed: the call that may grow the
+        // pool clobbers every vector register, and the barycentric planes, live across it,
+        // went through the stack (≈25 instructions a triangle).
+        let n = ctx.rl.n.min(MAXV);
+        let voff = self.pool.len();
+        let len = 3 * (n + 1);
+        self.pool.reserve(len);
         let (area, bbox) = (g.area, g.bbox);
         let v = g.v;
         let mut lam = [[0f64; 3]; 3];
@@ -1033,10 +1139,6 @@ impl Worker {
         } else {
             0
         };
-        let n = ctx.rl.n.min(MAXV);
-        let voff = self.pool.len();
-        let len = 3 * (n + 1);
-        self.pool.reserve(len);
         let out = &mut self.pool.spare_capacity_mut()[..len];
         let (head, planes) = out.split_at_mut(3);
         for (d, s) in head.iter_mut().zip(plane(l32, iw)) {

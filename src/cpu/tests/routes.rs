@@ -15,10 +15,10 @@ use super::lighting::Rng;
 
 /// Random strips, fans, triangles, quads and polygons (some crossing the view volume's planes,
 /// so that clipping runs, many a pixel or two wide, so that the 2x2 coverage runs) under random
-/// culling, facing, FLAT, polygon offset, scissor, lighting, texturing on one to four units,
-/// the secondary colour and fog, set up by both
-/// routes: every primitive's fields, every float of the pool, every touched bin and the area
-/// are the same.
+/// culling, facing, FLAT, polygon offset, PolygonMode LINE and POINT (the edge flags), scissor,
+/// lighting, texturing on one to four units, the secondary colour and fog, set up by both
+/// routes and from the triangles `assemble` makes: every primitive's fields, every float of the
+/// pool, every touched bin and the area are the same.
 #[test]
 fn both_routes_set_up_the_same_primitives() {
     let wide = Route::best();
@@ -44,6 +44,11 @@ fn both_routes_set_up_the_same_primitives() {
         st.front_face = [gl::CCW, gl::CW][(case / 2) % 2];
         st.shade_model = if case % 5 == 2 { gl::FLAT } else { gl::SMOOTH };
         st.enables.polygon_offset_fill = case % 6 == 3;
+        st.polygon_mode = match case % 11 {
+            3 => [gl::LINE, gl::FILL],
+            7 => [gl::POINT, gl::LINE],
+            _ => [gl::FILL; 2],
+        };
         st.polygon_offset_factor = rng.range(-2.0, 2.0);
         st.polygon_offset_units = rng.range(-2.0, 2.0);
         st.enables.scissor_test = case % 7 == 4;
