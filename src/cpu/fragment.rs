@@ -330,6 +330,25 @@ unsafe fn pixels8_reg(ch: *const f32) -> std::arch::x86_64::__m256i {
     }
 }
 
+/// Do spans `rows` fill less than three quarters of their row groups (`tri_span_in`'s groups
+/// of eight pixels from each span's first), so that a primitive in the fused route's state
+/// packs them (`FragCtx::packed_rows`)? Its row groups cost about as much as packed ones
+/// (callgrind, 3 frames, the fused route's scenes packed at fills below 55%, 65%, 75%, 85%
+/// and 101%: 75% the least on each, textured-cube's mipmapped spans, 7.55 fragments a row
+/// group, 28% more when all packed: the packed group chooses its lanes' levels on its own).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+fn short_spans(rows: &[[i32; 3]]) -> bool {
+    let (mut n, mut g) = (0i64, 0i64);
+    for &[_, x0, x1] in rows {
+        let k = i64::from(x1) - i64::from(x0) + 1;
+        n += k;
+        g += (k + 7) >> 3;
+    }
+    // n / 8g < 3/4.
+    n < 6 * g
+}
+
 /// A packed group's fragments (`FragCtx::packed_rows`): window x and y and tile index of
 /// lanes `0..n`.
 #[derive(Default)]
@@ -338,6 +357,18 @@ struct Packed {
     y: [i32; LANES],
     at: [usize; LANES],
     n: usize,
+}
+
+impl Packed {
+    /// Stores pixel l of `v` at lane l's tile index, for the group's `n` lanes.
+    #[inline(always)]
+    fn scatter(&self, bufs: &mut TileBufs, v: &[[u8; 4]; LANES]) {
+        for (l, &at) in self.at.iter().enumerate().take(self.n.min(LANES)) {
+            if let (Some(dst), Some(&c)) = (bufs.color.get_mut(at), v.get(l)) {
+                *dst = c;
+            }
+        }
+    }
 }
 
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
@@ -360,14 +391,7 @@ unsafe fn fused_span<'s>(
     a: &FusedArgs,
     slot: &mut FusedSlot<'s>,
 ) -> bool {
-    // The primitive's route from an earlier span, moved to this row (the levels looked up
-    // stay, as `fused_tex_rows`), else set up here and kept for the primitive's next spans.
-    if let Some(fs) = slot.as_mut() {
-        fs.row(a.fy, a.qy);
-    } else {
-        *slot = super::texture::FusedSpan::new(tx, to, planes, a.nflat, a.fy, a.ox, a.qy);
-    }
-    let Some(fs) = slot.as_mut() else {
+    let Some(fs) = fused_at(slot, tx, to, planes, a.nflat, a.fy, a.ox, a.qy) else {
         return false;
     };
     if let Some(dst) = bufs.color.get_mut(a.base..) {
@@ -375,6 +399,31 @@ unsafe fn fused_span<'s>(
         unsafe { fs.span(a.x0, a.n, a.mask, dst) };
     }
     true
+}
+
+/// The primitive's fused route in `slot` at row `fy` and quad row `qy` (relative to the
+/// planes' origin, whose window x is `ox`): the route of an earlier span moved to this row
+/// (the levels looked up stay, as `fused_tex_rows`), else set up here and kept for the
+/// primitive's next spans; None when the sampler's state is not the route's.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn fused_at<'s, 'a>(
+    slot: &'a mut FusedSlot<'s>,
+    tx: &'s Sampler,
+    to: usize,
+    planes: &'s [f32],
+    nflat: usize,
+    fy: f32,
+    ox: i32,
+    qy: f32,
+) -> Option<&'a mut super::texture::FusedSpan<'s>> {
+    if let Some(fs) = slot.as_mut() {
+        fs.row(fy, qy);
+    } else {
+        *slot = super::texture::FusedSpan::new(tx, to, planes, nflat, fy, ox, qy);
+    }
+    slot.as_mut()
 }
 
 /// The fused route ([`FusedSpan`]) of one primitive's spans in one tile, set up by its first
@@ -900,11 +949,11 @@ impl FragCtx<'_> {
         // where the unit needs λ, and stays 0 where it does not, whatever the row.
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
-        let plan = self.row_plan(bufs, p, planes);
+        let plan = self.row_plan(bufs, p, planes, rows);
         #[cfg(target_arch = "x86_64")]
         if AVX2 && plan.packed {
             // SAFETY: `AVX2` is true only where the CPU has AVX2 and POPCNT (`tri_rows_avx2`).
-            unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan) };
+            unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan, slot) };
             return;
         }
         for &row in rows {
@@ -928,14 +977,16 @@ impl FragCtx<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     #[inline]
-    unsafe fn packed_rows(
-        &self,
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn packed_rows<'s>(
+        &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
-        planes: &[f32],
+        planes: &'s [f32],
         rows: &[[i32; 3]],
         vl: &mut [[f32; LANES]],
-        plan: &RowPlan<'_>,
+        plan: &RowPlan<'s>,
+        slot: &mut FusedSlot<'s>,
     ) {
         // The λ planes of each unit that needs λ, looked up once.
         let mut lpl = [None; MAX_TEXTURE_UNITS];
@@ -945,6 +996,11 @@ impl FragCtx<'_> {
                 *l = tx.lambda_planes_of(planes, to);
             }
         }
+        // The fused route's state: its route at y 1 (`FusedSpan::packed_group`).
+        let mut fused = match plan.fused {
+            Some((tx, to)) => fused_at(slot, tx, to, planes, plan.nflat, 1.0, p.bbox[0], 1.0),
+            None => None,
+        };
         let mut g = Packed::default();
         for &row in rows {
             let Some((mut mask, base)) = self.span_coverage::<true>(bufs, p, row) else {
@@ -965,21 +1021,74 @@ impl FragCtx<'_> {
                 g.n += 1;
                 if g.n == LANES {
                     // SAFETY: the CPU has AVX2 (this function's contract).
-                    unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+                    unsafe { self.packed_flush(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
                     g.n = 0;
                 }
             }
         }
         if g.n > 0 {
             // SAFETY: as above.
-            unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+            unsafe { self.packed_flush(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
         }
     }
 
-    /// Whether the spans of `p` take the packed route (`packed_rows`), for the tests.
+    /// One group of `packed_rows`: by the fused route `fused` where the primitive takes it
+    /// (`FusedSpan::packed_group`), else by `packed_group`.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn packed_flush(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        g: &Packed,
+        vl: &mut [[f32; LANES]],
+        lpl: &[Option<[[f32; 3]; 4]>; MAX_TEXTURE_UNITS],
+        plan: &RowPlan<'_>,
+        fused: &mut Option<&mut super::texture::FusedSpan<'_>>,
+    ) {
+        match fused {
+            Some(fs) => {
+                let m = (u16::MAX >> (16 - g.n.min(LANES))) as u8;
+                // SAFETY: the CPU has AVX2 (this function's contract).
+                let v = unsafe { fs.packed_group(&g.x, &g.y, p.bbox[1], m) };
+                g.scatter(bufs, &v);
+            }
+            // SAFETY: as above.
+            None => unsafe { self.packed_group(bufs, p, planes, g, vl, lpl, plan) },
+        }
+    }
+
+    /// Whether the spans of `p` take the packed route (`packed_rows`), for the tests (`rows`
+    /// as `tri_rows` takes them).
     #[cfg(test)]
-    pub(crate) fn packs(&self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> bool {
-        self.row_plan(bufs, p, planes).packed
+    pub(crate) fn packs(
+        &self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) -> bool {
+        self.row_plan(bufs, p, planes, rows).packed
+    }
+
+    /// Whether the spans `rows` of `p` take the fused route's packed groups
+    /// (`FusedSpan::packed_group`), for the tests.
+    #[cfg(test)]
+    pub(crate) fn packs_fused(
+        &self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) -> bool {
+        let plan = self.row_plan(bufs, p, planes, rows);
+        plan.packed && plan.fused.is_some()
     }
 
     /// One group of `packed_rows`: the first `g.n` lanes of `g`.
@@ -1025,18 +1134,20 @@ impl FragCtx<'_> {
         let px = self.tex_pixels_on::<true>(vl, m, &lam);
         // SAFETY: as above.
         let v = unsafe { pixels8_avx2(&px) };
-        for (l, &at) in g.at.iter().enumerate().take(n) {
-            if let (Some(dst), Some(&c)) = (bufs.color.get_mut(at), v.get(l)) {
-                *dst = c;
-            }
-        }
+        g.scatter(bufs, &v);
     }
 
     /// What `tri_span_in` decides for each span of `p` in this tile, decided once for them
     /// all: none of it depends on the row (texture-targets, callgrind: ≈40 instructions a
     /// span that reaches the colour stage, the units' samplers asked again for each).
     #[inline(always)]
-    fn row_plan<'s>(&'s self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> RowPlan<'s> {
+    fn row_plan<'s>(
+        &'s self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) -> RowPlan<'s> {
         let nv = self.rl.n;
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
@@ -1082,23 +1193,30 @@ impl FragCtx<'_> {
         let depth_only = self.color_mask == [false; 4] && !self.count;
         // The general path's textured spans of one colour buffer written whole, where every
         // unit that needs λ has planes for `quad_lambda_xy8` (no cube map) and the pool holds
-        // every varying.
+        // every varying; the fused route's spans where they are short (`short_spans`: its
+        // row groups cost less than a packed group where full).
         #[cfg(target_arch = "x86_64")]
-        let packed = route == SpanRoute::General
-            && whole
-            && on_lanes
-            && fused.is_none()
-            && !depth_only
-            && self.tex.first().is_some_and(Option::is_some)
-            && planes.len() >= 3 + 3 * nv
-            && nv <= MAXV
-            && self.tex.iter().enumerate().all(|(u, t)| {
-                lod & (1 << u) == 0
-                    || t.is_some_and(|(tx, to)| tx.lambda_planes_of(planes, to).is_some())
-            })
-            && super::lanes::has_avx2();
+        let packed = if fused.is_some() {
+            !depth_only && short_spans(rows)
+        } else {
+            route == SpanRoute::General
+                && whole
+                && on_lanes
+                && !depth_only
+                && self.tex.first().is_some_and(Option::is_some)
+                && planes.len() >= 3 + 3 * nv
+                && nv <= MAXV
+                && self.tex.iter().enumerate().all(|(u, t)| {
+                    lod & (1 << u) == 0
+                        || t.is_some_and(|(tx, to)| tx.lambda_planes_of(planes, to).is_some())
+                })
+                && super::lanes::has_avx2()
+        };
         #[cfg(not(target_arch = "x86_64"))]
-        let packed = false;
+        let packed = {
+            let _ = rows;
+            false
+        };
         RowPlan {
             depth_only,
             nflat,
@@ -3510,6 +3628,217 @@ mod tests {
             1 => Vec4::ZERO,
             _ => Vec4::from_array(std::array::from_fn(|_| g.mostly_unit())),
         };
+    }
+
+    /// The fused route's packed groups (`FusedSpan::packed_group` through `packed_rows`)
+    /// against the SSE2 row route, byte for byte (colour, depth, the occlusion count): one 2D
+    /// unit in the states `FusedSpan` covers — MODULATE or REPLACE on RGBA or RGB under
+    /// REPEAT or CLAMP_TO_EDGE with every MIN filter (λ of each lane's own quad, levels
+    /// that are not dense among them), LINEAR with a border texel (`border_state`), a depth
+    /// texture's comparison under BLEND — the varyings all smooth, the colour flat, or all
+    /// flat (`FusedSpan`'s three `DIV` patterns), the rows of small triangles (short spans,
+    /// packed) and now and then wide ones (the row route). Each state is asserted to have
+    /// packed in many rounds.
+    #[test]
+    fn fused_packed_groups_are_the_row_route_byte_for_byte() {
+        use crate::cpu::texture::{FusedSpan, Sampler};
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        if !crate::cpu::lanes::has_avx2() {
+            eprintln!("fused_packed_groups_are_the_row_route_byte_for_byte: no AVX2 here");
+            return;
+        }
+        let mut g = Gen(97);
+        let mins = crate::cpu::testgen::MIN_FILTERS;
+        // Rounds packed by the fused route, per state (colour, border, shadow), and the
+        // fragments they drew.
+        let (mut packed, mut frags) = ([0usize; 3], 0usize);
+        for round in 0..1500 {
+            let kind = round % 3;
+            let (shadow, bordered) = (kind == 2, kind == 1);
+            let mut obj = TexObject {
+                min_filter: g.pick(&mins),
+                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+                wrap_s: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+                wrap_t: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+                ..TexObject::default()
+            };
+            if shadow {
+                obj.min_filter = gl::NEAREST;
+                obj.mag_filter = gl::NEAREST;
+                obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+                obj.compare_func = g.pick(&FUNCS);
+                obj.depth_texture_mode = gl::LUMINANCE;
+            }
+            if bordered {
+                border_state(&mut g, &mut obj);
+            }
+            // Dense levels mostly, 6x6 (not dense) now and then; RGBA or RGB.
+            let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+            let rgb = g.next() % 3 == 0;
+            let mut k = 0;
+            while w >= 1 {
+                let texels = (0..w * w)
+                    .map(|_| {
+                        let t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
+                        match (shadow, rgb) {
+                            (true, _) => [t[0], 0.0, 0.0, 1.0],
+                            (false, true) => [t[0], t[1], t[2], 1.0],
+                            (false, false) => t,
+                        }
+                    })
+                    .collect::<Vec<_>>();
+                let base = match (shadow, rgb) {
+                    (true, _) => gl::DEPTH_COMPONENT,
+                    (false, true) => gl::RGB,
+                    (false, false) => gl::RGBA,
+                };
+                obj.levels[k] = Some(Level {
+                    depth: 1,
+                    width: w,
+                    height: w,
+                    internal_format: base as i32,
+                    base,
+                    texels: texels.into(),
+                });
+                k += 1;
+                w /= 2;
+            }
+            let mut state = State::new(4, 4);
+            state.textures.defaults[1] = Arc::new(obj);
+            state.enables.texture_2d[0] = true;
+            let unit = &mut state.textures.units[0];
+            unit.env_mode = if shadow {
+                gl::BLEND
+            } else {
+                g.pick(&[gl::MODULATE, gl::REPLACE])
+            };
+            unit.env_color = Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
+            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
+            samplers[0] = Sampler::new(&state, 0);
+            // The coordinates after the colour, or after a secondary colour, or before it
+            // (a FLAT primitive's flat varyings then cover them: every varying flat).
+            let mut rl = RLayout {
+                n: 8,
+                ..Default::default()
+            };
+            match g.next() % 3 {
+                0 => rl.tex[0] = Some(4),
+                1 => (rl.n, rl.spec, rl.tex[0]) = (12, Some(4), Some(8)),
+                _ => (rl.n, rl.spec, rl.tex[0]) = (12, Some(8), Some(4)),
+            }
+            let tex = tex_units(&samplers, &rl);
+            let Some((tx, _)) = tex[0] else {
+                panic!("unit 0 complete");
+            };
+            assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
+            let f = FragCtx {
+                depth_test: g.next() % 4 != 0,
+                depth_func: g.pick(&FUNCS),
+                depth_mask: g.next() % 2 == 0,
+                color_mask: [true; 4],
+                color_sum: false,
+                rl,
+                lighting: None,
+                mats: &[],
+                count: false,
+                samples: g.next() % 2 == 0,
+                stipple: (g.next() % 6 == 0).then(|| std::array::from_fn(|_| g.next() as u32)),
+                ops: None,
+                tex,
+                crossbar: crossbar(&tex),
+            };
+            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+            let bbox = [
+                tx + (g.next() % 40) as i32 - 20,
+                ty + (g.next() % 40) as i32 - 20,
+            ];
+            let p = RPrim {
+                kind: PrimKind::Tri,
+                flags: if g.next() % 4 == 0 { F_FLAT } else { 0 },
+                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
+                mat: 0,
+                voff: 0,
+                xy: [0; 6],
+                owns: 0,
+                cover: 0,
+                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
+            };
+            // 1/w, the colours (around [0, 1]) and coordinates spanning a few repeats, with
+            // derivatives large and small so that λ crosses the levels; now and then a
+            // coordinate term NaN, infinite or zero.
+            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+            for j in 0..rl.n {
+                let d = if Some(j / 4 * 4) == rl.tex[0] {
+                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+                } else {
+                    1e-2
+                };
+                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+            }
+            if g.next() % 8 == 0 {
+                let k = 3 + 3 * rl.tex[0].unwrap_or(4) + (g.next() % 12) as usize;
+                if let Some(v) = planes.get_mut(k) {
+                    *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
+                }
+            }
+            // A small triangle's rows (consecutive, a few pixels each, drifting), one round
+            // in eight a wide one's.
+            let wide = g.next() % 8 == 0;
+            let y0 = ty + (g.next() % TILE as u64) as i32;
+            let nrows = 1 + (g.next() % 12) as i32;
+            let mut x = tx + (g.next() % TILE as u64) as i32;
+            let mut rows = Vec::new();
+            for y in y0..(y0 + nrows).min(ty + TILE as i32) {
+                x = (x + (g.next() % 5) as i32 - 2).clamp(tx, tx + TILE as i32 - 1);
+                let len = if wide { 40 } else { 14 };
+                let x1 = (x + (g.next() % len) as i32).min(tx + TILE as i32 - 1);
+                rows.push([y, x, x1]);
+            }
+            let color: Vec<[u8; 4]> = (0..TILE * TILE)
+                .map(|_| (g.next() as u32).to_le_bytes())
+                .collect();
+            let depth: Vec<u32> = (0..TILE * TILE)
+                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+                .collect();
+            let run = |avx2: bool| {
+                let (mut c, mut d, mut s) = (color.clone(), depth.clone(), vec![0u8; TILE * TILE]);
+                let mut bufs = TileBufs {
+                    color: &mut c,
+                    color2: None,
+                    depth: &mut d,
+                    stencil: &mut s,
+                    x: tx,
+                    y: ty,
+                    samples: 0,
+                };
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(!avx2));
+                let packs = f.packs_fused(&bufs, &p, &planes, &rows);
+                f.tri_rows(&mut bufs, &p, &planes, &rows, &mut None);
+                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
+                let samples = bufs.samples;
+                (packs, c, d, samples)
+            };
+            let (packs, c, d, samples) = run(true);
+            let (never, c2, d2, samples2) = run(false);
+            assert!(!never, "the SSE2 route packs");
+            assert!(
+                c == c2 && d == d2 && samples == samples2,
+                "round {round}: fused packed and row routes differ (rows {rows:?})"
+            );
+            if packs {
+                packed[kind] += 1;
+                frags += rows
+                    .iter()
+                    .map(|r| (r[2] - r[1] + 1) as usize)
+                    .sum::<usize>();
+            }
+        }
+        assert!(
+            packed.iter().all(|&n| n > 300) && frags > 20_000,
+            "{packed:?} rounds packed, {frags} fragments"
+        );
     }
 
     /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against

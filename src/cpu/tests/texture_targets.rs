@@ -1054,7 +1054,7 @@ fn packed_groups_are_the_row_route_byte_for_byte() {
                 samples: 0,
             };
             crate::cpu::lanes::NO_AVX2.with(|x| x.set(!avx2));
-            let packs = f.packs(&bufs, &p, &planes);
+            let packs = f.packs(&bufs, &p, &planes, &rows);
             f.tri_rows(&mut bufs, &p, &planes, &rows, &mut None);
             crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
             let samples = bufs.samples;
