@@ -1021,51 +1021,20 @@ impl FragCtx<'_> {
                 g.n += 1;
                 if g.n == LANES {
                     // SAFETY: the CPU has AVX2 (this function's contract).
-                    unsafe { self.packed_flush(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
+                    unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
                     g.n = 0;
                 }
             }
         }
         if g.n > 0 {
             // SAFETY: as above.
-            unsafe { self.packed_flush(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
+            unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
         }
     }
 
-    /// One group of `packed_rows`: by the fused route `fused` where the primitive takes it
-    /// (`FusedSpan::packed_group`), else by `packed_group`.
-    ///
-    /// # Safety
-    /// The CPU must have AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt")]
-    #[inline]
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn packed_flush(
-        &self,
-        bufs: &mut TileBufs,
-        p: &RPrim,
-        planes: &[f32],
-        g: &Packed,
-        vl: &mut [[f32; LANES]],
-        lpl: &[Option<[[f32; 3]; 4]>; MAX_TEXTURE_UNITS],
-        plan: &RowPlan<'_>,
-        fused: &mut Option<&mut super::texture::FusedSpan<'_>>,
-    ) {
-        match fused {
-            Some(fs) => {
-                let m = (u16::MAX >> (16 - g.n.min(LANES))) as u8;
-                // SAFETY: the CPU has AVX2 (this function's contract).
-                let v = unsafe { fs.packed_group(&g.x, &g.y, p.bbox[1], m) };
-                g.scatter(bufs, &v);
-            }
-            // SAFETY: as above.
-            None => unsafe { self.packed_group(bufs, p, planes, g, vl, lpl, plan) },
-        }
-    }
-
-    /// Whether the spans of `p` take the packed route (`packed_rows`), for the tests (`rows`
-    /// as `tri_rows` takes them).
+    /// Whether the spans `rows` of `p` (as `tri_rows` takes them) take the packed route
+    /// (`packed_rows`), and whether by the fused route's groups (`FusedSpan::packed_group`),
+    /// for the tests.
     #[cfg(test)]
     pub(crate) fn packs(
         &self,
@@ -1073,25 +1042,13 @@ impl FragCtx<'_> {
         p: &RPrim,
         planes: &[f32],
         rows: &[[i32; 3]],
-    ) -> bool {
-        self.row_plan(bufs, p, planes, rows).packed
-    }
-
-    /// Whether the spans `rows` of `p` take the fused route's packed groups
-    /// (`FusedSpan::packed_group`), for the tests.
-    #[cfg(test)]
-    pub(crate) fn packs_fused(
-        &self,
-        bufs: &TileBufs,
-        p: &RPrim,
-        planes: &[f32],
-        rows: &[[i32; 3]],
-    ) -> bool {
+    ) -> (bool, bool) {
         let plan = self.row_plan(bufs, p, planes, rows);
-        plan.packed && plan.fused.is_some()
+        (plan.packed, plan.packed && plan.fused.is_some())
     }
 
-    /// One group of `packed_rows`: the first `g.n` lanes of `g`.
+    /// One group of `packed_rows`: the first `g.n` lanes of `g`, by the fused route `fused`
+    /// where the primitive takes it (`FusedSpan::packed_group`).
     ///
     /// # Safety
     /// The CPU must have AVX2.
@@ -1108,10 +1065,16 @@ impl FragCtx<'_> {
         vl: &mut [[f32; LANES]],
         lpl: &[Option<[[f32; 3]; 4]>; MAX_TEXTURE_UNITS],
         plan: &RowPlan<'_>,
+        fused: &mut Option<&mut super::texture::FusedSpan<'_>>,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let n = g.n.min(LANES);
         let m = (u16::MAX >> (16 - n)) as u8;
+        if let Some(fs) = fused {
+            // SAFETY: the CPU has AVX2 (this function's contract).
+            let v = unsafe { fs.packed_group(&g.x, &g.y, oy, m) };
+            return g.scatter(bufs, &v);
+        }
         // Lanes past `n` repeat lane 0's pixel (a fragment of the primitive), never stored.
         let lane = |l: usize| if l < n { l } else { 0 };
         let fx: [f32; LANES] = std::array::from_fn(|l| (g.x[lane(l)] - ox) as f32);
@@ -3379,40 +3342,8 @@ mod tests {
                 tex,
                 crossbar: crossbar(&tex),
             };
-            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
-            let bbox = [
-                tx + (g.next() % 40) as i32 - 20,
-                ty + (g.next() % 40) as i32 - 20,
-            ];
-            let p = RPrim {
-                kind: PrimKind::Tri,
-                flags: [0, F_LINE][(g.next() % 2) as usize],
-                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
-                mat: 0,
-                voff: 0,
-                xy: [0; 6],
-                owns: 0,
-                cover: 0,
-                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
-            };
-            // 1/w, the colour (around [0, 1]) and coordinates spanning a few repeats, with
-            // derivatives large and small so that λ crosses the levels.
-            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
-            for j in 0..rl.n {
-                let d = if j < 4 {
-                    1e-2
-                } else {
-                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
-                };
-                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
-            }
-            // Now and then a coordinate plane term that is NaN, infinite or zero (q = 0).
-            if g.next() % 8 == 0 {
-                let k = 3 + 3 * 4 + (g.next() % 12) as usize;
-                if let Some(v) = planes.get_mut(k) {
-                    *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
-                }
-            }
+            let ((tx, ty), p) = tile_tri(&mut g, &[0, F_LINE]);
+            let planes = tex_planes(&mut g, rl.n);
             let color: Vec<[u8; 4]> = (0..TILE * TILE)
                 .map(|_| (g.next() as u32).to_le_bytes())
                 .collect();
@@ -3606,6 +3537,43 @@ mod tests {
         );
     }
 
+    /// A tile at a random place of a 256x256 window and a triangle whose bounding box's
+    /// corner lies within 20 pixels of the tile's, with flags one of `flags` and a depth
+    /// plane drawn from `g`.
+    fn tile_tri(g: &mut Gen, flags: &[u8]) -> ((i32, i32), RPrim) {
+        let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+        let bbox = [
+            tx + (g.next() % 40) as i32 - 20,
+            ty + (g.next() % 40) as i32 - 20,
+        ];
+        let flags = flags[(g.next() % flags.len() as u64) as usize];
+        let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+        ((tx, ty), box_tri(flags, bbox, z))
+    }
+
+    /// A textured primitive's planes of `n` varyings: 1/w, the colour (around [0, 1]) and
+    /// the rest (coordinates) spanning a few repeats, with derivatives large and small so
+    /// that λ crosses the levels; now and then a coordinate plane term that is NaN, infinite
+    /// or zero (q = 0).
+    fn tex_planes(g: &mut Gen, n: usize) -> Vec<f32> {
+        let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+        for j in 0..n {
+            let d = if j < 4 {
+                1e-2
+            } else {
+                [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+            };
+            planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+        }
+        if g.next() % 8 == 0 {
+            let k = 3 + 3 * 4 + (g.next() % 12) as usize;
+            if let Some(v) = planes.get_mut(k) {
+                *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
+            }
+        }
+        planes
+    }
+
     /// A texture object's state with a border texel the fused route covers: LINEAR on both
     /// filters (no mipmaps read), CLAMP_TO_BORDER or CLAMP on s or t (both now and then), the
     /// other axis any wrap the border kernels take, a border colour of ones, zeros or random
@@ -3641,82 +3609,19 @@ mod tests {
     /// packed in many rounds.
     #[test]
     fn fused_packed_groups_are_the_row_route_byte_for_byte() {
-        use crate::cpu::texture::{FusedSpan, Sampler};
-        use crate::state::State;
-        use crate::texture::{Level, TexObject};
-        use std::sync::Arc;
+        use crate::cpu::testgen::{tri_rows_agree, tri_rows_in_tile};
+        use crate::cpu::texture::FusedSpan;
+        let mut g = Gen(97);
         if !crate::cpu::lanes::has_avx2() {
-            eprintln!("fused_packed_groups_are_the_row_route_byte_for_byte: no AVX2 here");
             return;
         }
-        let mut g = Gen(97);
-        let mins = crate::cpu::testgen::MIN_FILTERS;
         // Rounds packed by the fused route, per state (colour, border, shadow), and the
         // fragments they drew.
         let (mut packed, mut frags) = ([0usize; 3], 0usize);
         for round in 0..1500 {
             let kind = round % 3;
             let (shadow, bordered) = (kind == 2, kind == 1);
-            let mut obj = TexObject {
-                min_filter: g.pick(&mins),
-                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
-                wrap_s: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
-                wrap_t: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
-                ..TexObject::default()
-            };
-            if shadow {
-                obj.min_filter = gl::NEAREST;
-                obj.mag_filter = gl::NEAREST;
-                obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
-                obj.compare_func = g.pick(&FUNCS);
-                obj.depth_texture_mode = gl::LUMINANCE;
-            }
-            if bordered {
-                border_state(&mut g, &mut obj);
-            }
-            // Dense levels mostly, 6x6 (not dense) now and then; RGBA or RGB.
-            let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
-            let rgb = g.next() % 3 == 0;
-            let mut k = 0;
-            while w >= 1 {
-                let texels = (0..w * w)
-                    .map(|_| {
-                        let t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
-                        match (shadow, rgb) {
-                            (true, _) => [t[0], 0.0, 0.0, 1.0],
-                            (false, true) => [t[0], t[1], t[2], 1.0],
-                            (false, false) => t,
-                        }
-                    })
-                    .collect::<Vec<_>>();
-                let base = match (shadow, rgb) {
-                    (true, _) => gl::DEPTH_COMPONENT,
-                    (false, true) => gl::RGB,
-                    (false, false) => gl::RGBA,
-                };
-                obj.levels[k] = Some(Level {
-                    depth: 1,
-                    width: w,
-                    height: w,
-                    internal_format: base as i32,
-                    base,
-                    texels: texels.into(),
-                });
-                k += 1;
-                w /= 2;
-            }
-            let mut state = State::new(4, 4);
-            state.textures.defaults[1] = Arc::new(obj);
-            state.enables.texture_2d[0] = true;
-            let unit = &mut state.textures.units[0];
-            unit.env_mode = if shadow {
-                gl::BLEND
-            } else {
-                g.pick(&[gl::MODULATE, gl::REPLACE])
-            };
-            unit.env_color = Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
-            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
-            samplers[0] = Sampler::new(&state, 0);
+            let samplers = fused_unit(&mut g, shadow, bordered);
             // The coordinates after the colour, or after a secondary colour, or before it
             // (a FLAT primitive's flat varyings then cover them: every varying flat).
             let mut rl = RLayout {
@@ -3733,112 +3638,100 @@ mod tests {
                 panic!("unit 0 complete");
             };
             assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
-            let f = FragCtx {
-                depth_test: g.next() % 4 != 0,
-                depth_func: g.pick(&FUNCS),
-                depth_mask: g.next() % 2 == 0,
-                color_mask: [true; 4],
-                color_sum: false,
-                rl,
-                lighting: None,
-                mats: &[],
-                count: false,
-                samples: g.next() % 2 == 0,
-                stipple: (g.next() % 6 == 0).then(|| std::array::from_fn(|_| g.next() as u32)),
-                ops: None,
-                tex,
-                crossbar: crossbar(&tex),
-            };
-            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
-            let bbox = [
-                tx + (g.next() % 40) as i32 - 20,
-                ty + (g.next() % 40) as i32 - 20,
-            ];
-            let p = RPrim {
-                kind: PrimKind::Tri,
-                flags: if g.next() % 4 == 0 { F_FLAT } else { 0 },
-                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
-                mat: 0,
-                voff: 0,
-                xy: [0; 6],
-                owns: 0,
-                cover: 0,
-                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
-            };
-            // 1/w, the colours (around [0, 1]) and coordinates spanning a few repeats, with
-            // derivatives large and small so that λ crosses the levels; now and then a
-            // coordinate term NaN, infinite or zero.
-            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
-            for j in 0..rl.n {
-                let d = if Some(j / 4 * 4) == rl.tex[0] {
-                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
-                } else {
-                    1e-2
-                };
-                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
-            }
-            if g.next() % 8 == 0 {
-                let k = 3 + 3 * rl.tex[0].unwrap_or(4) + (g.next() % 12) as usize;
-                if let Some(v) = planes.get_mut(k) {
-                    *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
-                }
-            }
+            let f = crate::cpu::testgen::tex_ctx(rl, tex, &mut || g.next());
+            let ((tx, ty), p) = tile_tri(&mut g, &[F_FLAT, 0, 0, 0]);
+            let planes = tex_planes(&mut g, rl.n);
             // A small triangle's rows (consecutive, a few pixels each, drifting), one round
             // in eight a wide one's.
-            let wide = g.next() % 8 == 0;
-            let y0 = ty + (g.next() % TILE as u64) as i32;
-            let nrows = 1 + (g.next() % 12) as i32;
-            let mut x = tx + (g.next() % TILE as u64) as i32;
-            let mut rows = Vec::new();
-            for y in y0..(y0 + nrows).min(ty + TILE as i32) {
-                x = (x + (g.next() % 5) as i32 - 2).clamp(tx, tx + TILE as i32 - 1);
-                let len = if wide { 40 } else { 14 };
-                let x1 = (x + (g.next() % len) as i32).min(tx + TILE as i32 - 1);
-                rows.push([y, x, x1]);
-            }
-            let color: Vec<[u8; 4]> = (0..TILE * TILE)
-                .map(|_| (g.next() as u32).to_le_bytes())
-                .collect();
-            let depth: Vec<u32> = (0..TILE * TILE)
-                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
-                .collect();
-            let run = |avx2: bool| {
-                let (mut c, mut d, mut s) = (color.clone(), depth.clone(), vec![0u8; TILE * TILE]);
-                let mut bufs = TileBufs {
-                    color: &mut c,
-                    color2: None,
-                    depth: &mut d,
-                    stencil: &mut s,
-                    x: tx,
-                    y: ty,
-                    samples: 0,
-                };
-                crate::cpu::lanes::NO_AVX2.with(|x| x.set(!avx2));
-                let packs = f.packs_fused(&bufs, &p, &planes, &rows);
-                f.tri_rows(&mut bufs, &p, &planes, &rows, &mut None);
-                crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
-                let samples = bufs.samples;
-                (packs, c, d, samples)
-            };
-            let (packs, c, d, samples) = run(true);
-            let (never, c2, d2, samples2) = run(false);
-            assert!(!never, "the SSE2 route packs");
-            assert!(
-                c == c2 && d == d2 && samples == samples2,
-                "round {round}: fused packed and row routes differ (rows {rows:?})"
-            );
+            let len = if g.next() % 8 == 0 { 40 } else { 14 };
+            let rows = tri_rows_in_tile(&mut || g.next(), tx, ty, len);
+            let (_, packs, n) = tri_rows_agree(&f, &p, &planes, &rows, (tx, ty), &mut || g.next());
             if packs {
                 packed[kind] += 1;
-                frags += rows
-                    .iter()
-                    .map(|r| (r[2] - r[1] + 1) as usize)
-                    .sum::<usize>();
+                frags += n;
             }
         }
         assert!(
             packed.iter().all(|&n| n > 300) && frags > 20_000,
             "{packed:?} rounds packed, {frags} fragments"
         );
+    }
+
+    /// The sampler of a unit 0 the fused route covers (`FusedSpan::covers`), drawn from `g`:
+    /// a depth texture's comparison (NEAREST, LUMINANCE, env BLEND: shadow-map's state)
+    /// where `shadow`, LINEAR with a border texel where `bordered` (`border_state`), else
+    /// REPEAT or CLAMP_TO_EDGE under any MIN filter, MODULATE or REPLACE; dense levels
+    /// mostly (8x8, 4x4, 32x32 and 6x6 ones), RGBA or RGB.
+    fn fused_unit(
+        g: &mut Gen,
+        shadow: bool,
+        bordered: bool,
+    ) -> [Option<crate::cpu::texture::Sampler>; MAX_TEXTURE_UNITS] {
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        let mut obj = TexObject {
+            min_filter: g.pick(&crate::cpu::testgen::MIN_FILTERS),
+            mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+            wrap_s: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+            wrap_t: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+            ..TexObject::default()
+        };
+        if shadow {
+            obj.min_filter = gl::NEAREST;
+            obj.mag_filter = gl::NEAREST;
+            obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+            obj.compare_func = g.pick(&FUNCS);
+            obj.depth_texture_mode = gl::LUMINANCE;
+        }
+        if bordered {
+            border_state(g, &mut obj);
+        }
+        let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+        let rgb = g.next() % 3 == 0;
+        let mut k = 0;
+        while w >= 1 {
+            let texels = (0..w * w)
+                .map(|_| {
+                    let mut t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
+                    if rgb {
+                        t[3] = 1.0;
+                    }
+                    if shadow {
+                        t = [t[0], 0.0, 0.0, 1.0];
+                    }
+                    t
+                })
+                .collect::<Vec<_>>();
+            let (fmt, base) = match (shadow, rgb) {
+                (true, _) => (gl::DEPTH_COMPONENT, gl::DEPTH_COMPONENT),
+                (false, true) => (gl::RGB, gl::RGB),
+                (false, false) => (gl::RGBA, gl::RGBA),
+            };
+            obj.levels[k] = Some(Level {
+                depth: 1,
+                width: w,
+                height: w,
+                internal_format: fmt as i32,
+                base,
+                texels: texels.into(),
+            });
+            k += 1;
+            w /= 2;
+        }
+        let mut state = State::new(4, 4);
+        state.textures.defaults[1] = Arc::new(obj);
+        state.enables.texture_2d[0] = true;
+        state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
+        if shadow {
+            state.textures.units[0].env_mode = gl::BLEND;
+            state.textures.units[0].env_color =
+                Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
+        }
+        let mut samplers: [Option<crate::cpu::texture::Sampler>; MAX_TEXTURE_UNITS] =
+            Default::default();
+        samplers[0] = crate::cpu::texture::Sampler::new(&state, 0);
+        samplers
     }
 
     /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against
@@ -3853,93 +3746,17 @@ mod tests {
     #[test]
     fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
         use crate::cpu::oplanes::clamp01;
-        use crate::cpu::texture::{FusedSpan, Sampler};
-        use crate::state::State;
-        use crate::texture::{Level, TexObject};
-        use std::sync::Arc;
+        use crate::cpu::texture::FusedSpan;
         if !crate::cpu::lanes::has_avx2() {
             return;
         }
         let mut g = Gen(53);
-        let mins = crate::cpu::testgen::MIN_FILTERS;
-        let wraps = [gl::REPEAT, gl::CLAMP_TO_EDGE];
-
-        let funcs = [
-            gl::NEVER,
-            gl::LESS,
-            gl::EQUAL,
-            gl::LEQUAL,
-            gl::GREATER,
-            gl::NOTEQUAL,
-            gl::GEQUAL,
-            gl::ALWAYS,
-        ];
         for round in 0..2000 {
             // One round in three a depth texture's comparison (NEAREST, LUMINANCE, env
             // BLEND), the shadow-map state.
             let shadow = round % 3 == 2;
             let bordered = !shadow && round % 4 == 1;
-            let mut obj = TexObject {
-                min_filter: g.pick(&mins),
-                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
-                wrap_s: g.pick(&wraps),
-                wrap_t: g.pick(&wraps),
-                ..TexObject::default()
-            };
-            if shadow {
-                obj.min_filter = gl::NEAREST;
-                obj.mag_filter = gl::NEAREST;
-                obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
-                obj.compare_func = g.pick(&funcs);
-                obj.depth_texture_mode = gl::LUMINANCE;
-            }
-            if bordered {
-                border_state(&mut g, &mut obj);
-            }
-            let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
-            let rgb = g.next() % 3 == 0;
-            let mut k = 0;
-            while w >= 1 {
-                let texels = (0..w * w)
-                    .map(|_| {
-                        let mut t: [f32; 4] =
-                            std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
-                        if rgb {
-                            t[3] = 1.0;
-                        }
-                        if shadow {
-                            t = [t[0], 0.0, 0.0, 1.0];
-                        }
-                        t
-                    })
-                    .collect::<Vec<_>>();
-                let (fmt, base) = match (shadow, rgb) {
-                    (true, _) => (gl::DEPTH_COMPONENT, gl::DEPTH_COMPONENT),
-                    (false, true) => (gl::RGB, gl::RGB),
-                    (false, false) => (gl::RGBA, gl::RGBA),
-                };
-                obj.levels[k] = Some(Level {
-                    depth: 1,
-                    width: w,
-                    height: w,
-                    internal_format: fmt as i32,
-                    base,
-                    texels: texels.into(),
-                });
-                k += 1;
-                w /= 2;
-            }
-            let mut state = State::new(4, 4);
-            state.textures.defaults[1] = Arc::new(obj);
-            state.enables.texture_2d[0] = true;
-            state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
-            if shadow {
-                state.textures.units[0].env_mode = gl::BLEND;
-                state.textures.units[0].env_color =
-                    Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
-            }
-            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
-            samplers[0] = Sampler::new(&state, 0);
+            let samplers = fused_unit(&mut g, shadow, bordered);
             let mut rl = RLayout {
                 n: 8,
                 ..Default::default()
@@ -3950,21 +3767,13 @@ mod tests {
                 panic!("unit 0 complete");
             };
             assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
+            // No depth test, occlusion count or stipple (`tex_ctx` with them off).
             let f = FragCtx {
                 depth_test: false,
                 depth_func: gl::LESS,
-                depth_mask: false,
-                color_mask: [true; 4],
-                color_sum: false,
-                rl,
-                lighting: None,
-                mats: &[],
-                count: false,
                 samples: false,
                 stipple: None,
-                ops: None,
-                tex,
-                crossbar: crossbar(&tex),
+                ..crate::cpu::testgen::tex_ctx(rl, tex, &mut || 1)
             };
             let flat = g.next() % 4 == 0;
             let bbox = [(g.next() % 300) as i32 - 50, (g.next() % 300) as i32 - 50];
@@ -4324,15 +4133,7 @@ mod tests {
                 .collect();
             let draw = |by_rows: bool| {
                 let (mut c, mut d, mut s) = (color.clone(), depth.clone(), stencil.clone());
-                let mut bufs = TileBufs {
-                    color: &mut c,
-                    color2: None,
-                    depth: &mut d,
-                    stencil: &mut s,
-                    x: tx,
-                    y: ty,
-                    samples: 0,
-                };
+                let mut bufs = crate::cpu::testgen::tile_bufs(&mut c, &mut d, &mut s, (tx, ty));
                 let fill = f.const_fill(&bufs, &p, &planes);
                 match fill {
                     Some(fill) if by_rows => f.const_rows(&mut bufs, &p, &planes, fill, &rows),
