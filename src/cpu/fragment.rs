@@ -330,6 +330,25 @@ unsafe fn pixels8_reg(ch: *const f32) -> std::arch::x86_64::__m256i {
     }
 }
 
+/// Do spans `rows` fill less than three quarters of their row groups (`tri_span_in`'s groups
+/// of eight pixels from each span's first), so that a primitive in the fused route's state
+/// packs them (`FragCtx::packed_rows`)? Its row groups cost about as much as packed ones
+/// (callgrind, 3 frames, the fused route's scenes packed at fills below 55%, 65%, 75%, 85%
+/// and 101%: 75% the least on each, textured-cube's mipmapped spans, 7.55 fragments a row
+/// group, 28% more when all packed: the packed group chooses its lanes' levels on its own).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+fn short_spans(rows: &[[i32; 3]]) -> bool {
+    let (mut n, mut g) = (0i64, 0i64);
+    for &[_, x0, x1] in rows {
+        let k = i64::from(x1) - i64::from(x0) + 1;
+        n += k;
+        g += (k + 7) >> 3;
+    }
+    // n / 8g < 3/4.
+    n < 6 * g
+}
+
 /// A packed group's fragments (`FragCtx::packed_rows`): window x and y and tile index of
 /// lanes `0..n`.
 #[derive(Default)]
@@ -338,6 +357,18 @@ struct Packed {
     y: [i32; LANES],
     at: [usize; LANES],
     n: usize,
+}
+
+impl Packed {
+    /// Stores pixel l of `v` at lane l's tile index, for the group's `n` lanes.
+    #[inline(always)]
+    fn scatter(&self, bufs: &mut TileBufs, v: &[[u8; 4]; LANES]) {
+        for (l, &at) in self.at.iter().enumerate().take(self.n.min(LANES)) {
+            if let (Some(dst), Some(&c)) = (bufs.color.get_mut(at), v.get(l)) {
+                *dst = c;
+            }
+        }
+    }
 }
 
 /// `tri_span`'s general path for a span in the fused route's state ([`FusedSpan`], sampler
@@ -360,14 +391,7 @@ unsafe fn fused_span<'s>(
     a: &FusedArgs,
     slot: &mut FusedSlot<'s>,
 ) -> bool {
-    // The primitive's route from an earlier span, moved to this row (the levels looked up
-    // stay, as `fused_tex_rows`), else set up here and kept for the primitive's next spans.
-    if let Some(fs) = slot.as_mut() {
-        fs.row(a.fy, a.qy);
-    } else {
-        *slot = super::texture::FusedSpan::new(tx, to, planes, a.nflat, a.fy, a.ox, a.qy);
-    }
-    let Some(fs) = slot.as_mut() else {
+    let Some(fs) = fused_at(slot, tx, to, planes, a.nflat, a.fy, a.ox, a.qy) else {
         return false;
     };
     if let Some(dst) = bufs.color.get_mut(a.base..) {
@@ -375,6 +399,31 @@ unsafe fn fused_span<'s>(
         unsafe { fs.span(a.x0, a.n, a.mask, dst) };
     }
     true
+}
+
+/// The primitive's fused route in `slot` at row `fy` and quad row `qy` (relative to the
+/// planes' origin, whose window x is `ox`): the route of an earlier span moved to this row
+/// (the levels looked up stay, as `fused_tex_rows`), else set up here and kept for the
+/// primitive's next spans; None when the sampler's state is not the route's.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn fused_at<'s, 'a>(
+    slot: &'a mut FusedSlot<'s>,
+    tx: &'s Sampler,
+    to: usize,
+    planes: &'s [f32],
+    nflat: usize,
+    fy: f32,
+    ox: i32,
+    qy: f32,
+) -> Option<&'a mut super::texture::FusedSpan<'s>> {
+    if let Some(fs) = slot.as_mut() {
+        fs.row(fy, qy);
+    } else {
+        *slot = super::texture::FusedSpan::new(tx, to, planes, nflat, fy, ox, qy);
+    }
+    slot.as_mut()
 }
 
 /// The fused route ([`FusedSpan`]) of one primitive's spans in one tile, set up by its first
@@ -900,11 +949,11 @@ impl FragCtx<'_> {
         // where the unit needs λ, and stays 0 where it does not, whatever the row.
         let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
         let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
-        let plan = self.row_plan(bufs, p, planes);
+        let plan = self.row_plan(bufs, p, planes, rows);
         #[cfg(target_arch = "x86_64")]
         if AVX2 && plan.packed {
             // SAFETY: `AVX2` is true only where the CPU has AVX2 and POPCNT (`tri_rows_avx2`).
-            unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan) };
+            unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan, slot) };
             return;
         }
         for &row in rows {
@@ -928,14 +977,16 @@ impl FragCtx<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     #[inline]
-    unsafe fn packed_rows(
-        &self,
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn packed_rows<'s>(
+        &'s self,
         bufs: &mut TileBufs,
         p: &RPrim,
-        planes: &[f32],
+        planes: &'s [f32],
         rows: &[[i32; 3]],
         vl: &mut [[f32; LANES]],
-        plan: &RowPlan<'_>,
+        plan: &RowPlan<'s>,
+        slot: &mut FusedSlot<'s>,
     ) {
         // The λ planes of each unit that needs λ, looked up once.
         let mut lpl = [None; MAX_TEXTURE_UNITS];
@@ -945,6 +996,11 @@ impl FragCtx<'_> {
                 *l = tx.lambda_planes_of(planes, to);
             }
         }
+        // The fused route's state: its route at y 1 (`FusedSpan::packed_group`).
+        let mut fused = match plan.fused {
+            Some((tx, to)) => fused_at(slot, tx, to, planes, plan.nflat, 1.0, p.bbox[0], 1.0),
+            None => None,
+        };
         let mut g = Packed::default();
         for &row in rows {
             let Some((mut mask, base)) = self.span_coverage::<true>(bufs, p, row) else {
@@ -965,24 +1021,34 @@ impl FragCtx<'_> {
                 g.n += 1;
                 if g.n == LANES {
                     // SAFETY: the CPU has AVX2 (this function's contract).
-                    unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+                    unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
                     g.n = 0;
                 }
             }
         }
         if g.n > 0 {
             // SAFETY: as above.
-            unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan) };
+            unsafe { self.packed_group(bufs, p, planes, &g, vl, &lpl, plan, &mut fused) };
         }
     }
 
-    /// Whether the spans of `p` take the packed route (`packed_rows`), for the tests.
+    /// Whether the spans `rows` of `p` (as `tri_rows` takes them) take the packed route
+    /// (`packed_rows`), and whether by the fused route's groups (`FusedSpan::packed_group`),
+    /// for the tests.
     #[cfg(test)]
-    pub(crate) fn packs(&self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> bool {
-        self.row_plan(bufs, p, planes).packed
+    pub(crate) fn packs(
+        &self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) -> (bool, bool) {
+        let plan = self.row_plan(bufs, p, planes, rows);
+        (plan.packed, plan.packed && plan.fused.is_some())
     }
 
-    /// One group of `packed_rows`: the first `g.n` lanes of `g`.
+    /// One group of `packed_rows`: the first `g.n` lanes of `g`, by the fused route `fused`
+    /// where the primitive takes it (`FusedSpan::packed_group`).
     ///
     /// # Safety
     /// The CPU must have AVX2.
@@ -999,10 +1065,16 @@ impl FragCtx<'_> {
         vl: &mut [[f32; LANES]],
         lpl: &[Option<[[f32; 3]; 4]>; MAX_TEXTURE_UNITS],
         plan: &RowPlan<'_>,
+        fused: &mut Option<&mut super::texture::FusedSpan<'_>>,
     ) {
         let (ox, oy) = (p.bbox[0], p.bbox[1]);
         let n = g.n.min(LANES);
         let m = (u16::MAX >> (16 - n)) as u8;
+        if let Some(fs) = fused {
+            // SAFETY: the CPU has AVX2 (this function's contract).
+            let v = unsafe { fs.packed_group(&g.x, &g.y, oy, m) };
+            return g.scatter(bufs, &v);
+        }
         // Lanes past `n` repeat lane 0's pixel (a fragment of the primitive), never stored.
         let lane = |l: usize| if l < n { l } else { 0 };
         let fx: [f32; LANES] = std::array::from_fn(|l| (g.x[lane(l)] - ox) as f32);
@@ -1025,18 +1097,20 @@ impl FragCtx<'_> {
         let px = self.tex_pixels_on::<true>(vl, m, &lam);
         // SAFETY: as above.
         let v = unsafe { pixels8_avx2(&px) };
-        for (l, &at) in g.at.iter().enumerate().take(n) {
-            if let (Some(dst), Some(&c)) = (bufs.color.get_mut(at), v.get(l)) {
-                *dst = c;
-            }
-        }
+        g.scatter(bufs, &v);
     }
 
     /// What `tri_span_in` decides for each span of `p` in this tile, decided once for them
     /// all: none of it depends on the row (texture-targets, callgrind: ≈40 instructions a
     /// span that reaches the colour stage, the units' samplers asked again for each).
     #[inline(always)]
-    fn row_plan<'s>(&'s self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> RowPlan<'s> {
+    fn row_plan<'s>(
+        &'s self,
+        bufs: &TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+        rows: &[[i32; 3]],
+    ) -> RowPlan<'s> {
         let nv = self.rl.n;
         let nflat = if p.flags & F_FLAT != 0 {
             self.rl.spec.map_or(4, |s| s + 4)
@@ -1082,23 +1156,30 @@ impl FragCtx<'_> {
         let depth_only = self.color_mask == [false; 4] && !self.count;
         // The general path's textured spans of one colour buffer written whole, where every
         // unit that needs λ has planes for `quad_lambda_xy8` (no cube map) and the pool holds
-        // every varying.
+        // every varying; the fused route's spans where they are short (`short_spans`: its
+        // row groups cost less than a packed group where full).
         #[cfg(target_arch = "x86_64")]
-        let packed = route == SpanRoute::General
-            && whole
-            && on_lanes
-            && fused.is_none()
-            && !depth_only
-            && self.tex.first().is_some_and(Option::is_some)
-            && planes.len() >= 3 + 3 * nv
-            && nv <= MAXV
-            && self.tex.iter().enumerate().all(|(u, t)| {
-                lod & (1 << u) == 0
-                    || t.is_some_and(|(tx, to)| tx.lambda_planes_of(planes, to).is_some())
-            })
-            && super::lanes::has_avx2();
+        let packed = if fused.is_some() {
+            !depth_only && short_spans(rows)
+        } else {
+            route == SpanRoute::General
+                && whole
+                && on_lanes
+                && !depth_only
+                && self.tex.first().is_some_and(Option::is_some)
+                && planes.len() >= 3 + 3 * nv
+                && nv <= MAXV
+                && self.tex.iter().enumerate().all(|(u, t)| {
+                    lod & (1 << u) == 0
+                        || t.is_some_and(|(tx, to)| tx.lambda_planes_of(planes, to).is_some())
+                })
+                && super::lanes::has_avx2()
+        };
         #[cfg(not(target_arch = "x86_64"))]
-        let packed = false;
+        let packed = {
+            let _ = rows;
+            false
+        };
         RowPlan {
             depth_only,
             nflat,
@@ -3261,40 +3342,8 @@ mod tests {
                 tex,
                 crossbar: crossbar(&tex),
             };
-            let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
-            let bbox = [
-                tx + (g.next() % 40) as i32 - 20,
-                ty + (g.next() % 40) as i32 - 20,
-            ];
-            let p = RPrim {
-                kind: PrimKind::Tri,
-                flags: [0, F_LINE][(g.next() % 2) as usize],
-                bbox: [bbox[0], bbox[1], bbox[0] + 100, bbox[1] + 100],
-                mat: 0,
-                voff: 0,
-                xy: [0; 6],
-                owns: 0,
-                cover: 0,
-                z: [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3],
-            };
-            // 1/w, the colour (around [0, 1]) and coordinates spanning a few repeats, with
-            // derivatives large and small so that λ crosses the levels.
-            let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
-            for j in 0..rl.n {
-                let d = if j < 4 {
-                    1e-2
-                } else {
-                    [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
-                };
-                planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
-            }
-            // Now and then a coordinate plane term that is NaN, infinite or zero (q = 0).
-            if g.next() % 8 == 0 {
-                let k = 3 + 3 * 4 + (g.next() % 12) as usize;
-                if let Some(v) = planes.get_mut(k) {
-                    *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
-                }
-            }
+            let ((tx, ty), p) = tile_tri(&mut g, &[0, F_LINE]);
+            let planes = tex_planes(&mut g, rl.n);
             let color: Vec<[u8; 4]> = (0..TILE * TILE)
                 .map(|_| (g.next() as u32).to_le_bytes())
                 .collect();
@@ -3488,6 +3537,43 @@ mod tests {
         );
     }
 
+    /// A tile at a random place of a 256x256 window and a triangle whose bounding box's
+    /// corner lies within 20 pixels of the tile's, with flags one of `flags` and a depth
+    /// plane drawn from `g`.
+    fn tile_tri(g: &mut Gen, flags: &[u8]) -> ((i32, i32), RPrim) {
+        let (tx, ty) = (64 * (g.next() % 4) as i32, 64 * (g.next() % 4) as i32);
+        let bbox = [
+            tx + (g.next() % 40) as i32 - 20,
+            ty + (g.next() % 40) as i32 - 20,
+        ];
+        let flags = flags[(g.next() % flags.len() as u64) as usize];
+        let z = [g.mostly_unit(), (g.next() % 100) as f32 * 1e-3 - 0.05, 1e-3];
+        ((tx, ty), box_tri(flags, bbox, z))
+    }
+
+    /// A textured primitive's planes of `n` varyings: 1/w, the colour (around [0, 1]) and
+    /// the rest (coordinates) spanning a few repeats, with derivatives large and small so
+    /// that λ crosses the levels; now and then a coordinate plane term that is NaN, infinite
+    /// or zero (q = 0).
+    fn tex_planes(g: &mut Gen, n: usize) -> Vec<f32> {
+        let mut planes = vec![0.5 + (g.next() % 100) as f32 * 0.01, 1e-3, -2e-3];
+        for j in 0..n {
+            let d = if j < 4 {
+                1e-2
+            } else {
+                [1e-3, 3e-2, 0.3][(g.next() % 3) as usize]
+            };
+            planes.extend([g.mostly_unit(), g.mostly_unit() * d, g.mostly_unit() * d]);
+        }
+        if g.next() % 8 == 0 {
+            let k = 3 + 3 * 4 + (g.next() % 12) as usize;
+            if let Some(v) = planes.get_mut(k) {
+                *v = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0][(g.next() % 4) as usize];
+            }
+        }
+        planes
+    }
+
     /// A texture object's state with a border texel the fused route covers: LINEAR on both
     /// filters (no mipmaps read), CLAMP_TO_BORDER or CLAMP on s or t (both now and then), the
     /// other axis any wrap the border kernels take, a border colour of ones, zeros or random
@@ -3512,6 +3598,142 @@ mod tests {
         };
     }
 
+    /// The fused route's packed groups (`FusedSpan::packed_group` through `packed_rows`)
+    /// against the SSE2 row route, byte for byte (colour, depth, the occlusion count): one 2D
+    /// unit in the states `FusedSpan` covers — MODULATE or REPLACE on RGBA or RGB under
+    /// REPEAT or CLAMP_TO_EDGE with every MIN filter (λ of each lane's own quad, levels
+    /// that are not dense among them), LINEAR with a border texel (`border_state`), a depth
+    /// texture's comparison under BLEND — the varyings all smooth, the colour flat, or all
+    /// flat (`FusedSpan`'s three `DIV` patterns), the rows of small triangles (short spans,
+    /// packed) and now and then wide ones (the row route). Each state is asserted to have
+    /// packed in many rounds.
+    #[test]
+    fn fused_packed_groups_are_the_row_route_byte_for_byte() {
+        use crate::cpu::testgen::{tri_rows_agree, tri_rows_in_tile};
+        use crate::cpu::texture::FusedSpan;
+        let mut g = Gen(97);
+        if !crate::cpu::lanes::has_avx2() {
+            return;
+        }
+        // Rounds packed by the fused route, per state (colour, border, shadow), and the
+        // fragments they drew.
+        let (mut packed, mut frags) = ([0usize; 3], 0usize);
+        for round in 0..1500 {
+            let kind = round % 3;
+            let (shadow, bordered) = (kind == 2, kind == 1);
+            let samplers = fused_unit(&mut g, shadow, bordered);
+            // The coordinates after the colour, or after a secondary colour, or before it
+            // (a FLAT primitive's flat varyings then cover them: every varying flat).
+            let mut rl = RLayout {
+                n: 8,
+                ..Default::default()
+            };
+            match g.next() % 3 {
+                0 => rl.tex[0] = Some(4),
+                1 => (rl.n, rl.spec, rl.tex[0]) = (12, Some(4), Some(8)),
+                _ => (rl.n, rl.spec, rl.tex[0]) = (12, Some(8), Some(4)),
+            }
+            let tex = tex_units(&samplers, &rl);
+            let Some((tx, _)) = tex[0] else {
+                panic!("unit 0 complete");
+            };
+            assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
+            let f = crate::cpu::testgen::tex_ctx(rl, tex, &mut || g.next());
+            let ((tx, ty), p) = tile_tri(&mut g, &[F_FLAT, 0, 0, 0]);
+            let planes = tex_planes(&mut g, rl.n);
+            // A small triangle's rows (consecutive, a few pixels each, drifting), one round
+            // in eight a wide one's.
+            let len = if g.next() % 8 == 0 { 40 } else { 14 };
+            let rows = tri_rows_in_tile(&mut || g.next(), tx, ty, len);
+            let (_, packs, n) = tri_rows_agree(&f, &p, &planes, &rows, (tx, ty), &mut || g.next());
+            if packs {
+                packed[kind] += 1;
+                frags += n;
+            }
+        }
+        assert!(
+            packed.iter().all(|&n| n > 300) && frags > 20_000,
+            "{packed:?} rounds packed, {frags} fragments"
+        );
+    }
+
+    /// The sampler of a unit 0 the fused route covers (`FusedSpan::covers`), drawn from `g`:
+    /// a depth texture's comparison (NEAREST, LUMINANCE, env BLEND: shadow-map's state)
+    /// where `shadow`, LINEAR with a border texel where `bordered` (`border_state`), else
+    /// REPEAT or CLAMP_TO_EDGE under any MIN filter, MODULATE or REPLACE; dense levels
+    /// mostly (8x8, 4x4, 32x32 and 6x6 ones), RGBA or RGB.
+    fn fused_unit(
+        g: &mut Gen,
+        shadow: bool,
+        bordered: bool,
+    ) -> [Option<crate::cpu::texture::Sampler>; MAX_TEXTURE_UNITS] {
+        use crate::state::State;
+        use crate::texture::{Level, TexObject};
+        use std::sync::Arc;
+        let mut obj = TexObject {
+            min_filter: g.pick(&crate::cpu::testgen::MIN_FILTERS),
+            mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
+            wrap_s: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+            wrap_t: g.pick(&[gl::REPEAT, gl::CLAMP_TO_EDGE]),
+            ..TexObject::default()
+        };
+        if shadow {
+            obj.min_filter = gl::NEAREST;
+            obj.mag_filter = gl::NEAREST;
+            obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
+            obj.compare_func = g.pick(&FUNCS);
+            obj.depth_texture_mode = gl::LUMINANCE;
+        }
+        if bordered {
+            border_state(g, &mut obj);
+        }
+        let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+        let rgb = g.next() % 3 == 0;
+        let mut k = 0;
+        while w >= 1 {
+            let texels = (0..w * w)
+                .map(|_| {
+                    let mut t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
+                    if rgb {
+                        t[3] = 1.0;
+                    }
+                    if shadow {
+                        t = [t[0], 0.0, 0.0, 1.0];
+                    }
+                    t
+                })
+                .collect::<Vec<_>>();
+            let (fmt, base) = match (shadow, rgb) {
+                (true, _) => (gl::DEPTH_COMPONENT, gl::DEPTH_COMPONENT),
+                (false, true) => (gl::RGB, gl::RGB),
+                (false, false) => (gl::RGBA, gl::RGBA),
+            };
+            obj.levels[k] = Some(Level {
+                depth: 1,
+                width: w,
+                height: w,
+                internal_format: fmt as i32,
+                base,
+                texels: texels.into(),
+            });
+            k += 1;
+            w /= 2;
+        }
+        let mut state = State::new(4, 4);
+        state.textures.defaults[1] = Arc::new(obj);
+        state.enables.texture_2d[0] = true;
+        state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
+        if shadow {
+            state.textures.units[0].env_mode = gl::BLEND;
+            state.textures.units[0].env_color =
+                Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
+        }
+        let mut samplers: [Option<crate::cpu::texture::Sampler>; MAX_TEXTURE_UNITS] =
+            Default::default();
+        samplers[0] = crate::cpu::texture::Sampler::new(&state, 0);
+        samplers
+    }
+
     /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against
     /// `oplanes::clamp01` of `color_lanes` (what `tex_span_in` computes for them, λ from each
     /// pixel's `quad_lambda`), bit for bit on the lanes of the mask: random states the fused
@@ -3524,93 +3746,17 @@ mod tests {
     #[test]
     fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
         use crate::cpu::oplanes::clamp01;
-        use crate::cpu::texture::{FusedSpan, Sampler};
-        use crate::state::State;
-        use crate::texture::{Level, TexObject};
-        use std::sync::Arc;
+        use crate::cpu::texture::FusedSpan;
         if !crate::cpu::lanes::has_avx2() {
             return;
         }
         let mut g = Gen(53);
-        let mins = crate::cpu::testgen::MIN_FILTERS;
-        let wraps = [gl::REPEAT, gl::CLAMP_TO_EDGE];
-
-        let funcs = [
-            gl::NEVER,
-            gl::LESS,
-            gl::EQUAL,
-            gl::LEQUAL,
-            gl::GREATER,
-            gl::NOTEQUAL,
-            gl::GEQUAL,
-            gl::ALWAYS,
-        ];
         for round in 0..2000 {
             // One round in three a depth texture's comparison (NEAREST, LUMINANCE, env
             // BLEND), the shadow-map state.
             let shadow = round % 3 == 2;
             let bordered = !shadow && round % 4 == 1;
-            let mut obj = TexObject {
-                min_filter: g.pick(&mins),
-                mag_filter: g.pick(&[gl::NEAREST, gl::LINEAR]),
-                wrap_s: g.pick(&wraps),
-                wrap_t: g.pick(&wraps),
-                ..TexObject::default()
-            };
-            if shadow {
-                obj.min_filter = gl::NEAREST;
-                obj.mag_filter = gl::NEAREST;
-                obj.compare_mode = gl::COMPARE_R_TO_TEXTURE;
-                obj.compare_func = g.pick(&funcs);
-                obj.depth_texture_mode = gl::LUMINANCE;
-            }
-            if bordered {
-                border_state(&mut g, &mut obj);
-            }
-            let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
-            let rgb = g.next() % 3 == 0;
-            let mut k = 0;
-            while w >= 1 {
-                let texels = (0..w * w)
-                    .map(|_| {
-                        let mut t: [f32; 4] =
-                            std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
-                        if rgb {
-                            t[3] = 1.0;
-                        }
-                        if shadow {
-                            t = [t[0], 0.0, 0.0, 1.0];
-                        }
-                        t
-                    })
-                    .collect::<Vec<_>>();
-                let (fmt, base) = match (shadow, rgb) {
-                    (true, _) => (gl::DEPTH_COMPONENT, gl::DEPTH_COMPONENT),
-                    (false, true) => (gl::RGB, gl::RGB),
-                    (false, false) => (gl::RGBA, gl::RGBA),
-                };
-                obj.levels[k] = Some(Level {
-                    depth: 1,
-                    width: w,
-                    height: w,
-                    internal_format: fmt as i32,
-                    base,
-                    texels: texels.into(),
-                });
-                k += 1;
-                w /= 2;
-            }
-            let mut state = State::new(4, 4);
-            state.textures.defaults[1] = Arc::new(obj);
-            state.enables.texture_2d[0] = true;
-            state.textures.units[0].env_mode = g.pick(&[gl::MODULATE, gl::REPLACE]);
-            if shadow {
-                state.textures.units[0].env_mode = gl::BLEND;
-                state.textures.units[0].env_color =
-                    Vec4::from_array(std::array::from_fn(|_| g.mostly_unit()));
-            }
-            let mut samplers: [Option<Sampler>; MAX_TEXTURE_UNITS] = Default::default();
-            samplers[0] = Sampler::new(&state, 0);
+            let samplers = fused_unit(&mut g, shadow, bordered);
             let mut rl = RLayout {
                 n: 8,
                 ..Default::default()
@@ -3621,21 +3767,13 @@ mod tests {
                 panic!("unit 0 complete");
             };
             assert!(FusedSpan::covers(tx) && tx.lanes_ok(), "round {round}");
+            // No depth test, occlusion count or stipple (`tex_ctx` with them off).
             let f = FragCtx {
                 depth_test: false,
                 depth_func: gl::LESS,
-                depth_mask: false,
-                color_mask: [true; 4],
-                color_sum: false,
-                rl,
-                lighting: None,
-                mats: &[],
-                count: false,
                 samples: false,
                 stipple: None,
-                ops: None,
-                tex,
-                crossbar: crossbar(&tex),
+                ..crate::cpu::testgen::tex_ctx(rl, tex, &mut || 1)
             };
             let flat = g.next() % 4 == 0;
             let bbox = [(g.next() % 300) as i32 - 50, (g.next() % 300) as i32 - 50];
@@ -3995,15 +4133,7 @@ mod tests {
                 .collect();
             let draw = |by_rows: bool| {
                 let (mut c, mut d, mut s) = (color.clone(), depth.clone(), stencil.clone());
-                let mut bufs = TileBufs {
-                    color: &mut c,
-                    color2: None,
-                    depth: &mut d,
-                    stencil: &mut s,
-                    x: tx,
-                    y: ty,
-                    samples: 0,
-                };
+                let mut bufs = crate::cpu::testgen::tile_bufs(&mut c, &mut d, &mut s, (tx, ty));
                 let fill = f.const_fill(&bufs, &p, &planes);
                 match fill {
                     Some(fill) if by_rows => f.const_rows(&mut bufs, &p, &planes, fill, &rows),

@@ -907,8 +907,7 @@ fn cube8_is_cube_face_and_project_bit_for_bit() {
 #[cfg(target_arch = "x86_64")]
 #[test]
 fn packed_groups_are_the_row_route_byte_for_byte() {
-    use crate::cpu::fragment::{crossbar, tex_units, FragCtx, TileBufs};
-    use crate::cpu::framebuffer::{DEPTH_MAX, TILE};
+    use crate::cpu::fragment::tex_units;
     use crate::cpu::setup::{PrimKind, RPrim};
     use crate::state::MAX_TEXTURE_UNITS;
     if !crate::cpu::lanes::has_avx2() {
@@ -971,22 +970,7 @@ fn packed_groups_are_the_row_route_byte_for_byte() {
         }
         let rl = crate::cpu::testgen::tex_layout(units);
         let tex = tex_units(&slots, &rl);
-        let f = FragCtx {
-            depth_test: next() % 4 != 0,
-            depth_func: crate::cpu::testgen::COMPARE_FUNCS[(next() % 8) as usize],
-            depth_mask: next() % 2 == 0,
-            color_mask: [true; 4],
-            color_sum: false,
-            rl,
-            lighting: None,
-            mats: &[],
-            count: false,
-            samples: next() % 2 == 0,
-            stipple: (next() % 6 == 0).then(|| std::array::from_fn(|_| next() as u32)),
-            ops: None,
-            tex,
-            crossbar: crossbar(&tex),
-        };
+        let f = crate::cpu::testgen::tex_ctx(rl, tex, &mut next);
         let (tx, ty) = (64 * (next() % 4) as i32, 64 * (next() % 4) as i32);
         let bbox = [
             tx + (next() % 40) as i32 - 20,
@@ -1027,52 +1011,12 @@ fn packed_groups_are_the_row_route_byte_for_byte() {
             }
         }
         // A small triangle's rows: consecutive, a few pixels each, drifting, in the tile.
-        let y0 = ty + (next() % TILE as u64) as i32;
-        let nrows = 1 + (next() % 12) as i32;
-        let mut x = tx + (next() % TILE as u64) as i32;
-        let mut rows = Vec::new();
-        for y in y0..(y0 + nrows).min(ty + TILE as i32) {
-            x = (x + (next() % 5) as i32 - 2).clamp(tx, tx + TILE as i32 - 1);
-            let x1 = (x + (next() % 14) as i32).min(tx + TILE as i32 - 1);
-            rows.push([y, x, x1]);
-        }
-        let color: Vec<[u8; 4]> = (0..TILE * TILE)
-            .map(|_| (next() as u32).to_le_bytes())
-            .collect();
-        let depth: Vec<u32> = (0..TILE * TILE)
-            .map(|_| (next() % 5) as u32 * (DEPTH_MAX / 4))
-            .collect();
-        let run = |avx2: bool| {
-            let (mut c, mut d, mut s) = (color.clone(), depth.clone(), vec![0u8; TILE * TILE]);
-            let mut bufs = TileBufs {
-                color: &mut c,
-                color2: None,
-                depth: &mut d,
-                stencil: &mut s,
-                x: tx,
-                y: ty,
-                samples: 0,
-            };
-            crate::cpu::lanes::NO_AVX2.with(|x| x.set(!avx2));
-            let packs = f.packs(&bufs, &p, &planes);
-            f.tri_rows(&mut bufs, &p, &planes, &rows, &mut None);
-            crate::cpu::lanes::NO_AVX2.with(|x| x.set(false));
-            let samples = bufs.samples;
-            (packs, c, d, samples)
-        };
-        let (packs, c, d, samples) = run(true);
-        let (never, c2, d2, samples2) = run(false);
-        assert!(!never, "the SSE2 route packs");
-        assert!(
-            c == c2 && d == d2 && samples == samples2,
-            "round {round}: packed and row routes differ ({units} units, rows {rows:?})"
-        );
+        let rows = crate::cpu::testgen::tri_rows_in_tile(&mut next, tx, ty, 14);
+        let (packs, _, n) =
+            crate::cpu::testgen::tri_rows_agree(&f, &p, &planes, &rows, (tx, ty), &mut next);
         if packs {
             packed += 1;
-            frags += rows
-                .iter()
-                .map(|r| (r[2] - r[1] + 1) as usize)
-                .sum::<usize>();
+            frags += n;
         }
     }
     assert!(packed > 600, "{packed} rounds packed");

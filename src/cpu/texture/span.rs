@@ -137,6 +137,24 @@ enum View<'a> {
     Dense(&'a [[f32; 4]], i32, i32),
 }
 
+/// Where a group's eight lanes lie, as [`FusedSpan`]'s kernels read them (their `PACK`):
+/// false, a row's pixels from window x `x` (lane l at x + l; the row's y terms in `pl`,
+/// `rpl` and `lp`); true, a packed group's ([`FusedSpan::packed_group`]: lane l at its own
+/// pixel, the route set up at y 1 so that those y terms are the planes' ∂y).
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Lanes {
+    /// The row group's first window x (unused when packed).
+    x: i32,
+    /// Each lane's x relative to the planes' origin.
+    xs: std::arch::x86_64::__m256,
+    /// Packed only: each lane's y relative to the origin, its quad's lower-left window x
+    /// (even) and that quad's y relative to the origin.
+    ys: std::arch::x86_64::__m256,
+    qi: std::arch::x86_64::__m256i,
+    qy: std::arch::x86_64::__m256,
+}
+
 impl<'a> FusedSpan<'a> {
     /// Does the route cover sampler `s`'s state (the checks of [`FusedSpan::new`] on the
     /// sampler alone, cheap enough for the caller to make before the call)?
@@ -305,6 +323,71 @@ impl<'a> FusedSpan<'a> {
         }
     }
 
+    /// A packed group (`FragCtx::packed_rows`): lane l the fragment at window x `x[l]` and y
+    /// `y[l]` of the primitive whose planes' origin is at window (`ox`, `oy`), lanes `m`;
+    /// their RGBA8 pixels in lane order (lanes outside `m` unspecified), each the bytes
+    /// [`FusedSpan::group`] stores for it in its row: each lane the row route's operations
+    /// with ∂y·y a product per lane instead of one a row (`varyings_xy_avx2`'s planes),
+    /// λ at its own quad (`quad_lambda_xy8`'s) and its level chosen by [`select8`]. The route
+    /// must have been set up (`new`, or moved by `row`) at y 1 and quad row 1, so that the
+    /// planes' y terms it keeps are their ∂y.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    pub unsafe fn packed_group(
+        &mut self,
+        x: &[i32; LANES],
+        y: &[i32; LANES],
+        oy: i32,
+        m: u8,
+    ) -> [[u8; 4]; LANES] {
+        use std::arch::x86_64::*;
+        // SAFETY: each load reads the eight values of `x` or `y` (no alignment needed).
+        let (xi, yi) = unsafe {
+            (
+                _mm256_loadu_si256(x.as_ptr().cast::<__m256i>()),
+                _mm256_loadu_si256(y.as_ptr().cast::<__m256i>()),
+            )
+        };
+        // `as f32` of each lane's x - ox, y - oy, and its quad's (x & !1) - ox, (y & !1) - oy.
+        let (ox, oy) = (_mm256_set1_epi32(self.ox), _mm256_set1_epi32(oy));
+        let even = _mm256_set1_epi32(!1);
+        let yq = _mm256_and_si256(yi, even);
+        let at = Lanes {
+            x: 0,
+            xs: _mm256_cvtepi32_ps(_mm256_sub_epi32(xi, ox)),
+            ys: _mm256_cvtepi32_ps(_mm256_sub_epi32(yi, oy)),
+            qi: _mm256_and_si256(xi, even),
+            qy: _mm256_cvtepi32_ps(_mm256_sub_epi32(yq, oy)),
+        };
+        let v = 'v: {
+            if let Some(func) = self.depth {
+                let d = match u8::from(self.rep[0]) | u8::from(self.rep[1]) << 1 {
+                    0 => self.depth_packed::<false, false>(func, &at),
+                    1 => self.depth_packed::<true, false>(func, &at),
+                    2 => self.depth_packed::<false, true>(func, &at),
+                    _ => self.depth_packed::<true, true>(func, &at),
+                };
+                if let Some(v) = d {
+                    break 'v v;
+                }
+            }
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            pack_group(unsafe {
+                match (self.depth.is_some(), self.divs) {
+                    (false, DIV_COORDS) => self.colors_at::<DIV_COORDS, true>(at, m),
+                    (false, DIV_ALL) => self.colors_at::<DIV_ALL, true>(at, m),
+                    _ => self.colors_at::<DIV_ANY, true>(at, m),
+                }
+            })
+        };
+        // SAFETY: `__m256i` and `[[u8; 4]; 8]` are both 32 bytes, every bit pattern valid.
+        unsafe { std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v) }
+    }
+
     /// [`FusedSpan::span`]'s loop, the depth state `DEPTH` (`depth.is_some()`): `group`,
     /// else `group`'s colour route without its depth test, and without the seven tests of
     /// the varyings' division by w where `DIV` is not `DIV_ANY` (`divs`; ≈14 instructions a
@@ -363,12 +446,43 @@ impl<'a> FusedSpan<'a> {
         m: u8,
         dst: &mut [[u8; 4]],
     ) -> bool {
-        use std::arch::x86_64::*;
-        let Ok((dt, w, h)) = self.dense(self.s.base_level) else {
+        let Some(c) = self.depth_colors::<RX, RY, false>(func, &self.at_row(x)) else {
             return false;
         };
-        let (xs, inv) = self.group_x(x);
-        let [ss, tt, rr] = self.coords(xs, inv);
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe { store_group(c, m, dst) };
+        true
+    }
+
+    /// [`FusedSpan::depth_group`] of a packed group (lanes `at`): its eight pixels, None
+    /// where the base level is missing or not dense.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    fn depth_packed<const RX: bool, const RY: bool>(
+        &mut self,
+        func: u32,
+        at: &Lanes,
+    ) -> Option<std::arch::x86_64::__m256i> {
+        Some(pack_group(self.depth_colors::<RX, RY, true>(func, at)?))
+    }
+
+    /// The colours (pixel-major pairs, clamped) of [`FusedSpan::depth_group`] at lanes `at`
+    /// (`PACK` as [`Lanes`]); None where the base level is missing or not dense.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn depth_colors<const RX: bool, const RY: bool, const PACK: bool>(
+        &mut self,
+        func: u32,
+        at: &Lanes,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        let Ok((dt, w, h)) = self.dense(self.s.base_level) else {
+            return None;
+        };
+        let inv = self.inv::<PACK>(at);
+        let [ss, tt, rr] = self.coords::<PACK>(at, inv);
         let l = compare8(func, nearest_depth::<RX, RY>(dt, w, h, ss, tt), rr);
         // `env_of`'s BLEND of LUMINANCE: cf·(1 - L) + cc·L on r, g, b, the fragment's alpha;
         // then `Vec4::clamp` (`maxps` with 0, then `minps` with 1).
@@ -379,55 +493,73 @@ impl<'a> FusedSpan<'a> {
             _mm256_add_ps(_mm256_mul_ps(cf, nl), _mm256_mul_ps(_mm256_set1_ps(cc), l))
         };
         let c = [
-            env(self.vary::<0, DIV_ANY>(xs, inv), cr),
-            env(self.vary::<1, DIV_ANY>(xs, inv), cg),
-            env(self.vary::<2, DIV_ANY>(xs, inv), cb),
-            self.vary::<3, DIV_ANY>(xs, inv),
+            env(self.vary::<0, DIV_ANY, PACK>(at, inv), cr),
+            env(self.vary::<1, DIV_ANY, PACK>(at, inv), cg),
+            env(self.vary::<2, DIV_ANY, PACK>(at, inv), cb),
+            self.vary::<3, DIV_ANY, PACK>(at, inv),
         ]
         .map(|c| _mm256_min_ps(_mm256_max_ps(c, zero), one));
-        // SAFETY: the CPU has AVX2 (the caller's promise).
-        unsafe { store_group(pairs(&c), m, dst) };
-        true
+        Some(pairs(&c))
     }
 
-    /// Plane `k` of `pl` at lanes `xs` ([`plane8`]), its constant and x step from `pad`.
+    /// Plane `k` of `pl` at lanes `at` (`PACK` as [`Lanes`]): [`plane8l`] of the row, or
+    /// [`plane8xy`] of each lane's x and y; its constant and x step from `pad`.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn plane(&self, k: usize, xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
+    fn plane<const PACK: bool>(&self, k: usize, at: &Lanes) -> std::arch::x86_64::__m256 {
         // (k < 8 at every call: the indices are constants in range.)
-        plane8l(&self.pad[k], self.pl[k][2], xs)
+        if PACK {
+            plane8xy(&self.pad[k], self.pl[k][2], at)
+        } else {
+            plane8l(&self.pad[k], self.pl[k][2], at.xs)
+        }
     }
 
-    /// `lanes::varyings`' x of the group from window x `x` (lane l at x + l) and its 1/w.
+    /// The row group from window x `x`: lane l at x + l (`lanes::varyings`' x, fx0 as f32 + l).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn group_x(&self, x: i32) -> (std::arch::x86_64::__m256, std::arch::x86_64::__m256) {
+    fn at_row(&self, x: i32) -> Lanes {
         use std::arch::x86_64::*;
         const IOTA: [f32; LANES] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
-        // x = fx0 as f32 + l.
         // SAFETY: the load reads the eight floats of `IOTA`.
         let xs = _mm256_add_ps(_mm256_set1_ps((x - self.ox) as f32), unsafe {
             _mm256_loadu_ps(IOTA.as_ptr())
         });
-        (xs, _mm256_div_ps(_mm256_set1_ps(1.0), self.plane(0, xs)))
+        let zero = _mm256_setzero_ps();
+        Lanes {
+            x,
+            xs,
+            ys: zero,
+            qi: _mm256_setzero_si256(),
+            qy: zero,
+        }
     }
 
-    /// Varying k of the colour (0..4) and s, t, q (4, 5, 6) at lanes `xs` (1/w `inv`): its
+    /// 1/w at lanes `at` (`lanes::varyings`' `divps`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn inv<const PACK: bool>(&self, at: &Lanes) -> std::arch::x86_64::__m256 {
+        use std::arch::x86_64::*;
+        _mm256_div_ps(_mm256_set1_ps(1.0), self.plane::<PACK>(0, at))
+    }
+
+    /// Varying k of the colour (0..4) and s, t, q (4, 5, 6) at lanes `at` (1/w `inv`): its
     /// plane, times 1/w where smooth (`lanes::varyings`): `div[K]`, or `DIV`'s pattern (the
     /// caller passes `divs`, or `DIV_ANY`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn vary<const K: usize, const DIV: u8>(
+    fn vary<const K: usize, const DIV: u8, const PACK: bool>(
         &self,
-        xs: std::arch::x86_64::__m256,
+        at: &Lanes,
         inv: std::arch::x86_64::__m256,
     ) -> std::arch::x86_64::__m256 {
         use std::arch::x86_64::*;
         // (K < 7: the indices are constants in range.)
-        let v = self.plane(K + 1, xs);
+        let v = self.plane::<PACK>(K + 1, at);
         let div = match DIV {
             DIV_ALL => true,
             DIV_COORDS => K >= 4,
@@ -447,20 +579,20 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn coords(
+    fn coords<const PACK: bool>(
         &self,
-        xs: std::arch::x86_64::__m256,
+        at: &Lanes,
         inv: std::arch::x86_64::__m256,
     ) -> [std::arch::x86_64::__m256; 3] {
         use std::arch::x86_64::*;
         let (s, t, q) = (
-            self.vary::<4, DIV_ANY>(xs, inv),
-            self.vary::<5, DIV_ANY>(xs, inv),
-            self.vary::<6, DIV_ANY>(xs, inv),
+            self.vary::<4, DIV_ANY, PACK>(at, inv),
+            self.vary::<5, DIV_ANY, PACK>(at, inv),
+            self.vary::<6, DIV_ANY, PACK>(at, inv),
         );
         let rq = _mm256_div_ps(_mm256_set1_ps(1.0), q);
         let qi = _mm256_and_ps(rq, _mm256_cmp_ps::<_CMP_NEQ_UQ>(q, _mm256_setzero_ps()));
-        let r = self.r(xs, inv);
+        let r = self.r::<PACK>(at, inv);
         [
             _mm256_mul_ps(s, qi),
             _mm256_mul_ps(t, qi),
@@ -473,16 +605,22 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn r(
+    fn r<const PACK: bool>(
         &self,
-        xs: std::arch::x86_64::__m256,
+        at: &Lanes,
         inv: std::arch::x86_64::__m256,
     ) -> std::arch::x86_64::__m256 {
         use std::arch::x86_64::*;
         if self.depth.is_none() {
             return _mm256_setzero_ps();
         }
-        let v = plane8(self.rpl, xs);
+        let [a, dx, yt] = self.rpl;
+        let adx = [[a; LANES], [dx; LANES]];
+        let v = if PACK {
+            plane8xy(&adx, yt, at)
+        } else {
+            plane8l(&adx, yt, at.xs)
+        };
         if self.rdiv {
             _mm256_mul_ps(v, inv)
         } else {
@@ -501,20 +639,7 @@ impl<'a> FusedSpan<'a> {
 #[inline]
 unsafe fn store_group(c: [std::arch::x86_64::__m256; 4], m: u8, dst: &mut [[u8; 4]]) {
     use std::arch::x86_64::*;
-    let (k255, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
-    let low = _mm256_set1_epi32(0xFF);
-    let px: [__m256i; 4] = std::array::from_fn(|k| {
-        // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
-        _mm256_and_si256(
-            _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c[k], k255), bias)),
-            low,
-        )
-    });
-    // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
-    let v = _mm256_packus_epi16(
-        _mm256_packs_epi32(px[0], px[1]),
-        _mm256_packs_epi32(px[2], px[3]),
-    );
+    let v = pack_group(c);
     let on = crate::cpu::lanes::lane_mask8(m);
     if let Some(d) = dst.get_mut(..LANES) {
         let p = d.as_mut_ptr().cast::<__m256i>();
@@ -526,12 +651,36 @@ unsafe fn store_group(c: [std::arch::x86_64::__m256; 4], m: u8, dst: &mut [[u8; 
         }
         return;
     }
-    let px = std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v);
+    // SAFETY: `__m256i` and `[[u8; 4]; 8]` are both 32 bytes, every bit pattern valid.
+    let px = unsafe { std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v) };
     for (l, (d, c)) in dst.iter_mut().zip(px).enumerate() {
         if m & (1 << l) != 0 {
             *d = c;
         }
     }
+}
+
+/// The conversion of [`store_group`]: colours `c` (pixel-major pairs, clamped) as
+/// `store_pixels` converts them, the eight RGBA8 pixels in lane order.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn pack_group(c: [std::arch::x86_64::__m256; 4]) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    let (k255, bias) = (_mm256_set1_ps(255.0 / 256.0), _mm256_set1_ps(32768.0));
+    let low = _mm256_set1_epi32(0xFF);
+    let px: [__m256i; 4] = std::array::from_fn(|k| {
+        // `store_pixels`' conversion (its clamp leaves a clamped value as it is).
+        _mm256_and_si256(
+            _mm256_castps_si256(_mm256_add_ps(_mm256_mul_ps(c[k], k255), bias)),
+            low,
+        )
+    });
+    // Pairs (q, q + 4): the packs give pixels 0..3 in the low half and 4..7 in the high.
+    _mm256_packus_epi16(
+        _mm256_packs_epi32(px[0], px[1]),
+        _mm256_packs_epi32(px[2], px[3]),
+    )
 }
 
 impl<'a> FusedSpan<'a> {
@@ -547,15 +696,33 @@ impl<'a> FusedSpan<'a> {
     #[target_feature(enable = "avx2")]
     #[inline]
     unsafe fn colors<const DIV: u8>(&mut self, x: i32, m: u8) -> [std::arch::x86_64::__m256; 4] {
+        // SAFETY: the CPU has AVX2 (the caller's promise).
+        unsafe { self.colors_at::<DIV, false>(self.at_row(x), m) }
+    }
+
+    /// [`FusedSpan::colors`] of lanes `at` (`PACK` as [`Lanes`]; each instance has one
+    /// caller, which inlines it).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    unsafe fn colors_at<const DIV: u8, const PACK: bool>(
+        &mut self,
+        at: Lanes,
+        m: u8,
+    ) -> [std::arch::x86_64::__m256; 4] {
         use std::arch::x86_64::*;
         // `lanes::varyings`: x = fx0 as f32 + l, each plane (a + dx·x) + dy·fy, 1/w by
-        // `divps`, the smooth varyings times it.
-        let (xs, inv) = self.group_x(x);
+        // `divps`, the smooth varyings times it (packed: `varyings_xy_avx2`'s, the same).
+        let at = &at;
+        let inv = self.inv::<PACK>(at);
         let one = _mm256_set1_ps(1.0);
         let (s, t, q) = (
-            self.vary::<4, DIV>(xs, inv),
-            self.vary::<5, DIV>(xs, inv),
-            self.vary::<6, DIV>(xs, inv),
+            self.vary::<4, DIV, PACK>(at, inv),
+            self.vary::<5, DIV, PACK>(at, inv),
+            self.vary::<6, DIV, PACK>(at, inv),
         );
         // `texels_lanes`: inv = 1/q where q ≠ 0 (a NaN q included), else 0; s·inv, t·inv.
         let rq = _mm256_div_ps(one, q);
@@ -563,13 +730,13 @@ impl<'a> FusedSpan<'a> {
         let (ss, tt) = (_mm256_mul_ps(s, qi), _mm256_mul_ps(t, qi));
         // r (varying `to + 2`) and r/q, read by the depth comparison only (as in
         // `texels_lanes`).
-        let r = self.r(xs, inv);
+        let r = self.r::<PACK>(at, inv);
         let rr = _mm256_mul_ps(r, qi);
         let tex = if self.depth.is_some() || self.border.is_some() {
             // SAFETY: the CPU has AVX2 (the caller's promise).
             unsafe { self.other_texels(ss, tt, rr) }
         } else {
-            self.texels::<DIV>(x, ss, tt, m)
+            self.texels::<DIV, PACK>(at, ss, tt, m)
         };
         let tex = match tex {
             Some(p) => p,
@@ -579,13 +746,13 @@ impl<'a> FusedSpan<'a> {
                 // stored to the stack in every group for this rare case.)
                 let a = |v: __m256| std::mem::transmute::<__m256, [f32; LANES]>(v);
                 let (sa, ta, qa) = (
-                    a(self.vary::<4, DIV>(xs, inv)),
-                    a(self.vary::<5, DIV>(xs, inv)),
-                    a(self.vary::<6, DIV>(xs, inv)),
+                    a(self.vary::<4, DIV, PACK>(at, inv)),
+                    a(self.vary::<5, DIV, PACK>(at, inv)),
+                    a(self.vary::<6, DIV, PACK>(at, inv)),
                 );
                 let ra = a(r);
                 let lam = if self.s.route == Route::Lod {
-                    a(self.lambda(x))
+                    a(self.lambda_at::<PACK>(at))
                 } else {
                     [0.0; LANES]
                 };
@@ -599,10 +766,10 @@ impl<'a> FusedSpan<'a> {
         // The colour's varyings after the texels (the same values: nothing they read changes),
         // so that they are not kept across the `level` calls.
         let col = [
-            self.vary::<0, DIV>(xs, inv),
-            self.vary::<1, DIV>(xs, inv),
-            self.vary::<2, DIV>(xs, inv),
-            self.vary::<3, DIV>(xs, inv),
+            self.vary::<0, DIV, PACK>(at, inv),
+            self.vary::<1, DIV, PACK>(at, inv),
+            self.vary::<2, DIV, PACK>(at, inv),
+            self.vary::<3, DIV, PACK>(at, inv),
         ];
         let cf = pairs(&col);
         let zero = _mm256_setzero_ps();
@@ -679,15 +846,34 @@ impl<'a> FusedSpan<'a> {
             _mm256_add_epi32(_mm256_set1_epi32(x), iota),
             _mm256_set1_epi32(!1),
         );
-        self.lambda_quads(qi)
+        self.lambda_quads::<false>(qi, _mm256_setzero_ps())
     }
 
-    /// λ before bias of the quads at window x `qi` (lane l's quad's lower-left pixel, even):
-    /// what `quad_lambda_lanes` gives for the quad at `qi[l] - ox`.
+    /// λ before bias of lanes `at` (`PACK` as [`Lanes`]): [`FusedSpan::lambda`] of the row
+    /// group, or each packed lane's quad's (`quad_lambda_xy8`'s value).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    fn lambda_quads(&self, qi: std::arch::x86_64::__m256i) -> std::arch::x86_64::__m256 {
+    fn lambda_at<const PACK: bool>(&self, at: &Lanes) -> std::arch::x86_64::__m256 {
+        if PACK {
+            self.lambda_quads::<true>(at.qi, at.qy)
+        } else {
+            self.lambda(at.x)
+        }
+    }
+
+    /// λ before bias of the quads at window x `qi` (lane l's quad's lower-left pixel, even):
+    /// what `quad_lambda_lanes` gives for the quad at `qi[l] - ox`; `PACK`, each lane's quad
+    /// at its own y `qy[l]` relative to the origin (`lp`'s y terms then the planes' ∂y), what
+    /// `quad_lambda_xy8` gives (∂y·y a product per lane, the one `lp` holds for its row).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn lambda_quads<const PACK: bool>(
+        &self,
+        qi: std::arch::x86_64::__m256i,
+        qy: std::arch::x86_64::__m256,
+    ) -> std::arch::x86_64::__m256 {
         use std::arch::x86_64::*;
         let qx = _mm256_cvtepi32_ps(_mm256_sub_epi32(qi, _mm256_set1_epi32(self.ox)));
         let one = _mm256_set1_ps(1.0);
@@ -696,14 +882,20 @@ impl<'a> FusedSpan<'a> {
         let size = [self.s.size[0], self.s.size[1]];
         // `lambda_point` (dims 2): each plane (a + dx·x) + yt, 1/q where q ≠ 0 else 0,
         // then (c·inv)·size for s and t; r's component is 0.
+        let qy1 = _mm256_add_ps(qy, one);
         let point = |xv: __m256, row: usize| {
             let ev = |p: [f32; 4]| {
+                let yt = if PACK {
+                    _mm256_mul_ps(_mm256_set1_ps(p[2]), if row == 0 { qy } else { qy1 })
+                } else {
+                    _mm256_set1_ps(p[2 + row])
+                };
                 _mm256_add_ps(
                     _mm256_add_ps(
                         _mm256_set1_ps(p[0]),
                         _mm256_mul_ps(_mm256_set1_ps(p[1]), xv),
                     ),
-                    _mm256_set1_ps(p[2 + row]),
+                    yt,
                 )
             };
             let q = ev(pq);
@@ -739,9 +931,9 @@ impl<'a> FusedSpan<'a> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    unsafe fn texels<const DIV: u8>(
+    unsafe fn texels<const DIV: u8, const PACK: bool>(
         &mut self,
-        x: i32,
+        at: &Lanes,
         ss: std::arch::x86_64::__m256,
         tt: std::arch::x86_64::__m256,
         m: u8,
@@ -752,7 +944,13 @@ impl<'a> FusedSpan<'a> {
         let (level, linear, second, f) = match s.route {
             Route::Nearest => (s.base_level, false, 0, zero),
             Route::Linear => (s.base_level, true, 0, zero),
+            // A packed group's quads lie on several rows: `select8` of its lanes' λ.
+            Route::Lod if PACK => {
+                let (lv, linear, f) = select8(s, self.lambda_at::<true>(at));
+                one_level(lv, linear, f, m)?
+            }
             Route::Lod => {
+                let x = at.x;
                 let (lv, linear, f) = match self.quads_select::<DIV>(x) {
                     Some(q) => q,
                     None => {
@@ -765,17 +963,7 @@ impl<'a> FusedSpan<'a> {
                         )
                     }
                 };
-                // The first lane of `m`'s level on every lane (`mask_eq`'s compare), the lanes
-                // with a second level (`mask_ne_zero`: f != 0, a NaN included).
-                let t = (m.trailing_zeros() as i32).min(LANES as i32 - 1);
-                let fl = _mm256_permutevar8x32_epi32(lv, _mm256_set1_epi32(t));
-                let same = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(lv, fl)));
-                let second = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_NEQ_UQ>(f, zero)) as u8 & m;
-                let linear = linear & m;
-                if same as u8 & m != m || (linear != 0 && linear != m) {
-                    return None;
-                }
-                (_mm256_cvtsi256_si32(fl), linear != 0, second, f)
+                one_level(lv, linear, f, m)?
             }
         };
         // One level's NEAREST or LINEAR as `pass_level` computes it: (0, 0, 0, 0) for a
@@ -914,7 +1102,7 @@ impl<'a> FusedSpan<'a> {
             _mm256_set1_epi32(start),
             _mm256_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14),
         );
-        let (la, lin, f) = select8(self.s, self.lambda_quads(qi));
+        let (la, lin, f) = select8(self.s, self.lambda_quads::<false>(qi, _mm256_setzero_ps()));
         if let (Some(lv), Some(fv)) = (self.qlv.get_mut(k..k + 8), self.qf.get_mut(k..k + 8)) {
             // SAFETY: each store writes the eight values of `lv` or `fv`.
             unsafe {
@@ -1121,6 +1309,32 @@ impl<'a> FusedSpan<'a> {
     }
 }
 
+/// The LOD route's one level for a group of lanes `m` from [`Sampler::select_lanes`]' choice
+/// (levels `lv`, LINEAR lanes `linear`, second-level weights `f`): the first lane of `m`'s
+/// level, whether it filters LINEAR, the lanes of `m` with a second level (`mask_ne_zero`:
+/// f != 0, a NaN included) and `f`; None when the lanes of `m` fall on different levels or
+/// filters (`mask_eq`'s compare).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn one_level(
+    lv: std::arch::x86_64::__m256i,
+    linear: u8,
+    f: std::arch::x86_64::__m256,
+    m: u8,
+) -> Option<(i32, bool, u8, std::arch::x86_64::__m256)> {
+    use std::arch::x86_64::*;
+    let t = (m.trailing_zeros() as i32).min(LANES as i32 - 1);
+    let fl = _mm256_permutevar8x32_epi32(lv, _mm256_set1_epi32(t));
+    let same = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(lv, fl)));
+    let second = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_NEQ_UQ>(f, _mm256_setzero_ps())) as u8 & m;
+    let linear = linear & m;
+    if same as u8 & m != m || (linear != 0 && linear != m) {
+        return None;
+    }
+    Some((_mm256_cvtsi256_si32(fl), linear != 0, second, f))
+}
+
 /// [`Sampler::select_lanes`] of sampler `s` for the eight λ `lambda` in AVX2 registers: the
 /// same steps lane by lane (bias, NaN as 0, the LOD bounds, the minification filter's arm,
 /// the magnification lanes), each lane exactly the scalar choice. `f32::min`/`max` as LLVM
@@ -1226,12 +1440,20 @@ fn r_plane(planes: &[f32], j: usize, fy: f32) -> Option<[f32; 3]> {
     Some([p[0], p[1], p[2] * fy])
 }
 
-/// A plane `[a, dx, yt]` at lanes `xs`: (a + dx·x) + yt (`lanes::varyings`' order).
+/// A plane at a packed group's lanes `at` (each lane's x and y): (a + dx·x) + dy·y, the
+/// constant and x step `adx` on eight lanes each, ∂y `dy` (`lanes::varyings_xy_avx2`'s
+/// operations in its order, so each lane the bits [`plane8l`] gives in its own row).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-fn plane8([a, dx, yt]: [f32; 3], xs: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
-    plane8l(&[[a; LANES], [dx; LANES]], yt, xs)
+fn plane8xy(adx: &[[f32; LANES]; 2], dy: f32, at: &Lanes) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    // SAFETY: each load reads the eight floats of one term.
+    let [a, dx] = adx.map(|v| unsafe { _mm256_loadu_ps(v.as_ptr()) });
+    _mm256_add_ps(
+        _mm256_add_ps(a, _mm256_mul_ps(dx, at.xs)),
+        _mm256_mul_ps(_mm256_set1_ps(dy), at.ys),
+    )
 }
 
 /// [`plane8`] with the constant and x step `adx` on eight lanes each (`FusedSpan::pad`),
