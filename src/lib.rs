@@ -48,6 +48,7 @@ pub mod window;
 pub use arrays::Pointer;
 pub use call::Call;
 pub use context::{Context, ShareGroup};
+pub use cpu::start_pool;
 pub use error::Error;
 pub use state::ContextConfig;
 pub use texture::{checkerboard, texture_from_image};

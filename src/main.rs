@@ -517,12 +517,11 @@ struct BenchRow {
 }
 
 /// `--threads N`: the CPU backend's pool gets N threads (before the first Context, which would
-/// start it with one thread per core).
+/// start it with one thread per core), pinned one to a CPU as the default pool's are when N is
+/// the process's CPU count.
 fn cpu_threads(threads: Option<u32>) -> Result<(), CliError> {
     if let Some(n) = threads {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n as usize)
-            .build_global()
+        fixedgl::start_pool(Some(n as usize))
             .map_err(|e| CliError::Usage(format!("--threads {n}: {e}")))?;
     }
     Ok(())

@@ -62,6 +62,7 @@ mod line;
 pub mod oplanes;
 pub mod pixels;
 mod polygon;
+mod pool;
 pub mod raster;
 pub mod setup;
 #[cfg(test)]
@@ -72,6 +73,9 @@ pub mod vertex;
 
 #[cfg(test)]
 mod tests;
+
+pub use pool::start_pool;
+pub(crate) use pool::start_threads;
 
 use glam::Vec4;
 use rayon::prelude::*;
@@ -340,21 +344,6 @@ impl Plan {
     }
 }
 
-/// Starts rayon's global pool, which every draw uses, if it is not running yet; `Err` with the
-/// system's message when its threads cannot be created (rayon reports that only by panicking,
-/// on this first use, and never retries: every later use would panic too).
-pub(crate) fn start_threads() -> Result<(), String> {
-    std::panic::catch_unwind(rayon::current_num_threads)
-        .map(|_| ())
-        .map_err(|payload| {
-            payload
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
-                .unwrap_or_else(|| "rayon's thread pool did not start".to_string())
-        })
-}
-
 impl Renderer {
     /// A renderer with a cleared `width` x `height` framebuffer (sizes validated by the caller).
     /// Aborts if the framebuffer cannot be allocated, as `vec!` does; see [`Renderer::try_new`].
@@ -505,7 +494,9 @@ impl Renderer {
     /// run into `self.verts`, or is `None` when the job is to run the vertex stage first (split
     /// across the pool). The caller goes on with an empty batch.
     fn draw_in_background(&mut self, state: &State, plan: Option<Plan>) {
-        self.wait();
+        self.wait_for_pool();
+        // The calling thread goes on beside the pool: the scheduler spreads the three.
+        pool::pin_workers(false);
         let (mut next, next_verts) = self.spare.take().unwrap_or_default();
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
@@ -566,7 +557,16 @@ impl Renderer {
     /// draw is resumed here, on the caller's thread (`std::panic::resume_unwind`): the frame is
     /// then wrong, and the caller must learn it, exactly as when a draw in place panics. The
     /// framebuffer (drawn up to the panic) is kept, never replaced by a cleared one.
+    ///
+    /// The caller is about to wait for the pool or use it for a job of its own: the pool's
+    /// threads are pinned (see `pool`).
     fn wait(&mut self) {
+        self.wait_for_pool();
+        pool::pin_workers(true);
+    }
+
+    /// `wait`, leaving the pool's threads as they are: for a background draw.
+    fn wait_for_pool(&mut self) {
         let Some(rx) = self.pending.take() else {
             return;
         };
@@ -601,7 +601,7 @@ impl Renderer {
     /// The core, taken out (for a background draw). Only one draw holds it at a time: every
     /// path that takes it waits first.
     fn take_core(&mut self) -> Box<Core> {
-        self.wait();
+        self.wait_for_pool();
         match self.core.take() {
             Some(core) => core,
             None => Self::lost(),
