@@ -495,8 +495,8 @@ impl Renderer {
     /// across the pool). The caller goes on with an empty batch.
     fn draw_in_background(&mut self, state: &State, plan: Option<Plan>) {
         self.wait_for_pool();
-        // The calling thread goes on beside the pool: the scheduler spreads the three.
-        pool::pin_workers(false);
+        // The calling thread goes on beside the pool: it keeps its CPU, the pool the others.
+        pool::workers_beside_caller();
         let (mut next, next_verts) = self.spare.take().unwrap_or_default();
         next.clear();
         let batch = std::mem::replace(&mut self.batch, next);
@@ -562,7 +562,7 @@ impl Renderer {
     /// threads are pinned (see `pool`).
     fn wait(&mut self) {
         self.wait_for_pool();
-        pool::pin_workers(true);
+        pool::pin_workers();
     }
 
     /// `wait`, leaving the pool's threads as they are: for a background draw.

@@ -12,27 +12,45 @@
 //! shows the two workers taking turns on CPU 0 while CPU 1 idles (llvmpipe's two rasteriser
 //! threads do the same in its slow frames). Pinned, the pool's halves run side by side.
 //!
-//! Why only while the caller waits: a background draw (see [`super::Renderer`]) keeps the
-//! calling thread busy with the front end beside the pool, three busy threads on two CPUs.
-//! Pinned, the calling thread shares one CPU half and half with a pool thread while the other
-//! pool thread may idle; free, the scheduler spreads the three (gauss-smooth-400 went from
-//! 18.2 to 19.7 ms a frame with the pool pinned throughout). So the pool's threads are let go
-//! when a background draw starts ([`pin_workers`]`(false)`) and pinned again when the caller
-//! next waits for the pool (`pin_workers(true)`); each switch is two `sched_setaffinity`
-//! calls, and it happens only when the mode changes.
+//! Beside a background draw (see [`super::Renderer`]) the calling thread's front end is the
+//! frame's critical path, busy beside the pool: three busy threads on two CPUs. Pinned, the
+//! calling thread shares its CPU half and half with a pool thread (gauss-smooth-400 went from
+//! 18.2 to 19.7 ms a frame with the pool pinned throughout); left to the scheduler, a pool
+//! thread still takes its turns on the caller's CPU (`perf sched`: ~15% of it) while the other
+//! CPU idles between jobs. So when a background draw starts, the pool's threads are kept off
+//! the CPU the caller is on ([`workers_beside_caller`]): the caller has a CPU to itself and the
+//! pool the others, where rayon's work stealing shares the jobs out (gauss-smooth-400 19.4 →
+//! 17.6 ms). The next wait for the pool pins them again ([`pin_workers`]). Each switch is one
+//! `sched_setaffinity` call per pool thread, made only when the mode (or the caller's CPU at a
+//! hand-off) changes.
 //!
 //! Pinning is skipped where it cannot mean one thread per CPU: a pool of another size than the
 //! process's CPU set, a global pool something else started first, systems other than Linux,
 //! or `FIXEDGL_PIN_THREADS=0` in the environment.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-/// The global pool's threads that pin themselves, with their CPUs (thread id, CPU).
-static WORKERS: Mutex<Vec<(i32, usize)>> = Mutex::new(Vec::new());
+/// The global pool's threads that pin themselves.
+struct Workers {
+    /// Each thread's id and its own CPU.
+    threads: Vec<(i32, usize)>,
+    /// The CPUs of the process the pool was started on.
+    cpus: Vec<usize>,
+}
 
-/// Whether the global pool's threads are pinned now (they pin themselves as they start).
-static PINNED: AtomicBool = AtomicBool::new(true);
+/// The global pool's [`Workers`].
+static WORKERS: Mutex<Workers> = Mutex::new(Workers {
+    threads: Vec::new(),
+    cpus: Vec::new(),
+});
+
+/// Where the global pool's threads may run now: [`PINNED`] (each on its CPU, as they start),
+/// or every CPU of the process but the one given.
+static MODE: AtomicUsize = AtomicUsize::new(PINNED);
+
+/// [`MODE`]: each pool thread on its own CPU.
+const PINNED: usize = usize::MAX;
 
 /// Starts rayon's global pool, which every draw uses, if it is not running yet; `Err` with the
 /// system's message when its threads cannot be created (rayon reports that only by panicking,
@@ -62,7 +80,11 @@ pub(crate) fn start_threads() -> Result<(), String> {
 /// program that wants another thread count than the default: call it before the first
 /// [`Context`](crate::Context).
 pub fn start_pool(threads: Option<usize>) -> Result<(), rayon::ThreadPoolBuildError> {
-    builder(threads, pin_cpus(), true).build_global()
+    let cpus = pin_cpus();
+    if let Ok(mut workers) = WORKERS.lock() {
+        workers.cpus.clone_from(&cpus);
+    }
+    builder(threads, cpus, true).build_global()
 }
 
 /// A pool builder for `threads` threads that pin themselves one to each of `cpus` when there
@@ -80,9 +102,9 @@ fn builder(threads: Option<usize>, cpus: Vec<usize>, global: bool) -> rayon::Thr
                 return;
             }
             if let Some(&cpu) = cpus.get(index) {
-                if pin(0, Some(cpu)) && global {
+                if pin(0, &[cpu]) && global {
                     let mut workers = WORKERS.lock().unwrap_or_else(|e| e.into_inner());
-                    workers.push((thread_id(), cpu));
+                    workers.threads.push((thread_id(), cpu));
                 }
             }
         });
@@ -90,16 +112,39 @@ fn builder(threads: Option<usize>, cpus: Vec<usize>, global: bool) -> rayon::Thr
     builder
 }
 
-/// Pins the global pool's threads each to its CPU (`true`) or lets them run on any CPU of the
-/// process (`false`); nothing when they already are, or when the pool does not pin.
-pub(crate) fn pin_workers(pinned: bool) {
-    if PINNED.load(Ordering::Relaxed) == pinned {
+/// Pins the global pool's threads each to its CPU (see the module docs): for a caller about to
+/// wait for the pool or to run a parallel job. Nothing when they already are, or when the pool
+/// does not pin.
+pub(crate) fn pin_workers() {
+    set_mode(PINNED);
+}
+
+/// Keeps the global pool's threads off the CPU the calling thread is running on, on every
+/// other CPU of the process (see the module docs): for a background draw, beside which the
+/// caller goes on. Nothing when the pool does not pin.
+pub(crate) fn workers_beside_caller() {
+    match current_cpu() {
+        Some(cpu) => set_mode(cpu),
+        None => pin_workers(),
+    }
+}
+
+/// Puts the global pool's threads where `mode` (see [`MODE`]) says, if they are not there.
+fn set_mode(mode: usize) {
+    if MODE.load(Ordering::Relaxed) == mode {
         return;
     }
     let workers = WORKERS.lock().unwrap_or_else(|e| e.into_inner());
-    PINNED.store(pinned, Ordering::Relaxed);
-    for &(tid, cpu) in workers.iter() {
-        pin(tid, pinned.then_some(cpu));
+    MODE.store(mode, Ordering::Relaxed);
+    let Workers { threads, cpus } = &*workers;
+    let others: Vec<usize> = cpus.iter().copied().filter(|&c| c != mode).collect();
+    for &(tid, cpu) in threads {
+        match mode {
+            PINNED => pin(tid, &[cpu]),
+            // A process of one CPU: that one.
+            _ if others.is_empty() => pin(tid, cpus),
+            _ => pin(tid, &others),
+        };
     }
 }
 
@@ -137,24 +182,26 @@ fn affinity(tid: i32) -> Vec<usize> {
         .collect()
 }
 
-/// Restricts thread `tid` (0: the calling thread) to `cpu`, or with `None` lets it run on
-/// every CPU of the process; whether the system accepted it (a refusal leaves the thread
-/// where the scheduler puts it).
+/// Restricts thread `tid` (0: the calling thread) to `cpus`; whether the system accepted it
+/// (a refusal leaves the thread where it was allowed to run).
 #[cfg(target_os = "linux")]
-fn pin(tid: i32, cpu: Option<usize>) -> bool {
-    let cpus = match cpu {
-        Some(cpu) => vec![cpu],
-        None => allowed_cpus(),
-    };
+fn pin(tid: i32, cpus: &[usize]) -> bool {
     // SAFETY: as in `affinity`; CPU_SET writes bit `cpu`, kept below the set's size.
     unsafe {
         let mut set: libc::cpu_set_t = std::mem::zeroed();
         let max = 8 * std::mem::size_of::<libc::cpu_set_t>();
-        for cpu in cpus.into_iter().filter(|&c| c < max) {
+        for &cpu in cpus.iter().filter(|&&c| c < max) {
             libc::CPU_SET(cpu, &mut set);
         }
         libc::sched_setaffinity(tid, std::mem::size_of::<libc::cpu_set_t>(), &set) == 0
     }
+}
+
+/// The CPU the calling thread is running on (it may move the next instant).
+#[cfg(target_os = "linux")]
+fn current_cpu() -> Option<usize> {
+    // SAFETY: sched_getcpu has no preconditions (a vDSO call).
+    usize::try_from(unsafe { libc::sched_getcpu() }).ok()
 }
 
 /// The calling thread's id, as `sched_setaffinity` takes it.
@@ -170,8 +217,13 @@ fn allowed_cpus() -> Vec<usize> {
 }
 
 #[cfg(not(target_os = "linux"))]
-fn pin(_tid: i32, _cpu: Option<usize>) -> bool {
+fn pin(_tid: i32, _cpus: &[usize]) -> bool {
     false
+}
+
+#[cfg(not(target_os = "linux"))]
+fn current_cpu() -> Option<usize> {
+    None
 }
 
 #[cfg(not(target_os = "linux"))]
