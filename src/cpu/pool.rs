@@ -24,6 +24,9 @@
 //! `sched_setaffinity` call per pool thread, made only when the mode (or the caller's CPU at a
 //! hand-off) changes.
 //!
+//! The pool is shared by every context of the process: with several contexts drawing on
+//! several threads at once, the last switch wins. Only the speed depends on it, never a pixel.
+//!
 //! Pinning is skipped where it cannot mean one thread per CPU: a pool of another size than the
 //! process's CPU set, a global pool something else started first, systems other than Linux,
 //! or `FIXEDGL_PIN_THREADS=0` in the environment.
@@ -81,10 +84,10 @@ pub(crate) fn start_threads() -> Result<(), String> {
 /// [`Context`](crate::Context).
 pub fn start_pool(threads: Option<usize>) -> Result<(), rayon::ThreadPoolBuildError> {
     let cpus = pin_cpus();
-    if let Ok(mut workers) = WORKERS.lock() {
-        workers.cpus.clone_from(&cpus);
-    }
-    builder(threads, cpus, true).build_global()
+    builder(threads, cpus.clone(), true).build_global()?;
+    // Read by `set_mode` only, once a draw has the pool: after this.
+    WORKERS.lock().unwrap_or_else(|e| e.into_inner()).cpus = cpus;
+    Ok(())
 }
 
 /// A pool builder for `threads` threads that pin themselves one to each of `cpus` when there
