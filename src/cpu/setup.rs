@@ -756,19 +756,19 @@ impl Worker {
                 gl::TRIANGLE_STRIP | gl::QUAD_STRIP | gl::TRIANGLE_FAN
             )
         };
-        while !rest.is_empty() {
-            let n = rest.iter().position(|p| !direct(p)).unwrap_or(rest.len());
-            let (now, after) = rest.split_at(n);
-            for p in now {
+        // (One pass: each primitive is looked at once, a run of others measured where it
+        // starts; a scan for the run of direct ones first was 13 instructions a strip.)
+        while let Some(p) = rest.first() {
+            if direct(p) {
                 self.direct(ctx, src, &b.idx, p);
+                rest = &rest[1..];
+                continue;
             }
-            let others = after.iter().position(direct).unwrap_or(after.len());
-            let (now, after) = after.split_at(others);
-            if !now.is_empty() {
-                super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
-                for p in &asm {
-                    self.one(ctx, src, p);
-                }
+            let others = rest.iter().position(direct).unwrap_or(rest.len());
+            let (now, after) = rest.split_at(others);
+            super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+            for p in &asm {
+                self.one(ctx, src, p);
             }
             rest = after;
         }
@@ -794,6 +794,15 @@ impl Worker {
         // index.)
         match p.mode {
             gl::TRIANGLE_STRIP if n >= 3 => {
+                // Every record in range (so always: the vertex stage writes one for every
+                // vertex of the batch): checked once for the strip, by `strip`.
+                let ix = idx.get(f as usize..f as usize + n as usize);
+                if let Some(ix) = ix.filter(|ix| ix.iter().all(|&u| (u as usize) < src.wins.len()))
+                {
+                    // SAFETY: each of `ix` is below `src.wins.len()` (just checked).
+                    unsafe { self.strip(ctx, src, ix) };
+                    return;
+                }
                 let (mut a, mut b) = (vert(f), vert(f + 1));
                 for i in 0..n - 2 {
                     let c = vert(f + i + 2);
@@ -826,6 +835,32 @@ impl Worker {
                 }
             }
             _ => {}
+        }
+    }
+
+    /// Sets up the triangle strip of vertices `ix` as `direct` does, its records read without
+    /// a range check: triangle i is window i of three, its first two swapped when i is odd, so
+    /// that the loop keeps only its place in `ix` (the per-triangle `Option`s and the two
+    /// vertices carried from step to step, through the stack, were ≈40 instructions a
+    /// triangle on a dense mesh). One call site: two (a step of two triangles) doubled the
+    /// inlined set-up and pushed its helpers out of line.
+    ///
+    /// # Safety
+    /// Each of `ix` is below `src.wins.len()`.
+    #[inline(always)]
+    unsafe fn strip(&mut self, ctx: &SetupCtx, src: Src, ix: &[u32]) {
+        let w = |u: u32| {
+            debug_assert!((u as usize) < src.wins.len(), "vertex {u} has no record");
+            // SAFETY: `u` is one of `ix`, each below `src.wins.len()` (the contract).
+            (u, unsafe { src.wins.get_unchecked(u as usize) })
+        };
+        for (i, t) in ix.windows(3).enumerate() {
+            let &[x, y, z] = t else {
+                continue;
+            };
+            let (a, b) = if i % 2 == 0 { (x, y) } else { (y, x) };
+            // SAFETY: `w`'s records are `src.wins`'s of their indices.
+            unsafe { self.found_tri(ctx, src, [w(a), w(b), w(z)], z, ALL_EDGES) };
         }
     }
 
@@ -950,6 +985,24 @@ impl Worker {
         let [(a, Some(wa)), (b, Some(wb)), (c, Some(wc))] = v else {
             return;
         };
+        // SAFETY: each record is `src.wins.get` of its index (the contract).
+        unsafe { self.found_tri(ctx, src, [(a, wa), (b, wb), (c, wc)], provoking, edges) };
+    }
+
+    /// [`Worker::one_tri`] of a triangle whose three records `v` were found.
+    ///
+    /// # Safety
+    /// Each record of `v` is `src.wins[i]` of its index i.
+    #[inline(always)]
+    unsafe fn found_tri(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        v: [(u32, &Win); 3],
+        provoking: u32,
+        edges: u8,
+    ) {
+        let [(a, wa), (b, wb), (c, wc)] = v;
         if wa.code & wb.code & wc.code != 0 {
             return;
         }
