@@ -620,12 +620,15 @@ struct Src<'a> {
     mats: &'a [u32],
     /// `vout` holds every vertex of `wins` whole.
     whole: bool,
+    /// Set up inside `Worker::assemble_avx2` or `Worker::run_avx2` (so on a CPU with AVX2):
+    /// `fast_tri` may use AVX2 kernels. A constant in each build once inlined.
+    wide: bool,
 }
 
 impl<'a> Src<'a> {
-    /// The run's vertices under `ctx` (its `layout.stride`).
+    /// The run's vertices under `ctx` (its `layout.stride`), set up with AVX2 when `wide`.
     #[inline(always)]
-    fn new(ctx: &SetupCtx, vout: &'a [f32], wins: &'a [Win], mats: &'a [u32]) -> Self {
+    fn new(ctx: &SetupCtx, vout: &'a [f32], wins: &'a [Win], mats: &'a [u32], wide: bool) -> Self {
         let whole = wins
             .len()
             .checked_mul(ctx.layout.stride)
@@ -635,6 +638,7 @@ impl<'a> Src<'a> {
             wins,
             mats,
             whole,
+            wide,
         }
     }
 }
@@ -713,7 +717,7 @@ impl Worker {
             return;
         }
         let _ = route;
-        self.assemble_body(ctx, vout, wins, b, prims);
+        self.assemble_body(ctx, vout, wins, b, prims, false);
     }
 
     /// [`Worker::assemble_body`] compiled with AVX2.
@@ -730,10 +734,10 @@ impl Worker {
         b: &Batch,
         prims: &[Prim],
     ) {
-        self.assemble_body(ctx, vout, wins, b, prims);
+        self.assemble_body(ctx, vout, wins, b, prims, true);
     }
 
-    /// Assembles `prims` of batch `b` (§2.6) and sets them up.
+    /// Assembles `prims` of batch `b` (§2.6) and sets them up (`wide`: see `Src::wide`).
     #[inline(always)]
     fn assemble_body(
         &mut self,
@@ -742,9 +746,10 @@ impl Worker {
         wins: &[Win],
         b: &Batch,
         prims: &[Prim],
+        wide: bool,
     ) {
         self.start(ctx);
-        let src = Src::new(ctx, vout, wins, &b.mat);
+        let src = Src::new(ctx, vout, wins, &b.mat, wide);
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
         // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
@@ -889,7 +894,7 @@ impl Worker {
             return;
         }
         let _ = route;
-        self.run_body(ctx, vout, wins, mats, asm);
+        self.run_body(ctx, vout, wins, mats, asm, false);
     }
 
     /// [`Worker::run_body`] compiled with AVX2.
@@ -906,14 +911,22 @@ impl Worker {
         mats: &[u32],
         asm: &[Asm],
     ) {
-        self.run_body(ctx, vout, wins, mats, asm);
+        self.run_body(ctx, vout, wins, mats, asm, true);
     }
 
-    /// Sets up `asm`.
+    /// Sets up `asm` (`wide`: see `Src::wide`).
     #[inline(always)]
-    fn run_body(&mut self, ctx: &SetupCtx, vout: &[f32], wins: &[Win], mats: &[u32], asm: &[Asm]) {
+    fn run_body(
+        &mut self,
+        ctx: &SetupCtx,
+        vout: &[f32],
+        wins: &[Win],
+        mats: &[u32],
+        asm: &[Asm],
+        wide: bool,
+    ) {
         self.start(ctx);
-        let src = Src::new(ctx, vout, wins, mats);
+        let src = Src::new(ctx, vout, wins, mats, wide);
         for p in asm {
             self.one(ctx, src, p);
         }
@@ -1010,7 +1023,7 @@ impl Worker {
         if ctx.fast && src.whole && wa.code | wb.code | wc.code == 0 {
             // SAFETY: `src.whole`: `src.vout` holds every vertex of `src.wins` whole, and `ids`
             // are indices of `src.wins` (the contract; their records were found).
-            unsafe { self.fast_tri(ctx, src.vout, src.mats, [wa, wb, wc], ids, provoking) };
+            unsafe { self.fast_tri(ctx, src, [wa, wb, wc], ids, provoking) };
             return;
         }
         let p = Asm {
@@ -1027,30 +1040,55 @@ impl Worker {
     /// records `w` of vertices `ids`; varyings are read from `vout` only for a triangle that may
     /// cover a pixel centre. Produces exactly what `polygon::<3>` and `tri` produce.
     ///
+    /// With AVX2 (`src.wide`) a box of at most 2x2 pixels is placed and its coverage found
+    /// in vector lanes (`geom_small_avx2`).
+    ///
     /// # Safety
-    /// `vout` holds `(ids[j] + 1) * ctx.layout.stride` floats at least, for each j.
+    /// `src.vout` holds `(ids[j] + 1) * ctx.layout.stride` floats at least, for each j.
     #[inline(always)]
     unsafe fn fast_tri(
         &mut self,
         ctx: &SetupCtx,
-        vout: &[f32],
-        mats: &[u32],
+        src: Src,
         w: [&Win; 3],
         ids: [u32; 3],
         provoking: u32,
     ) {
-        let Some(g) = geom_wins(&ctx.rect_cen, w) else {
+        let (vout, mats) = (src.vout, src.mats);
+        let Some(bbox) = wins_bbox(&ctx.rect_cen, w) else {
             return;
         };
-        // §3.5.1 eq. 3.6: `swapped` means a negative signed area (clockwise).
-        let front = g.swapped != ctx.ccw_front;
+        let p = [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]];
+        let area = doubled_area(p);
+        if area == 0 {
+            return;
+        }
+        // §3.5.1 eq. 3.6: a negative signed area (clockwise) is `Geom::swapped`.
+        let front = (area < 0) != ctx.ccw_front;
         match ctx.cull {
             Some(gl::FRONT) if front => return,
             Some(gl::BACK) if !front => return,
             Some(gl::FRONT_AND_BACK) => return,
             _ => {}
         }
-        let cover = g.coverage();
+        #[cfg(target_arch = "x86_64")]
+        let small = if src.wide {
+            // SAFETY: `src.wide`: this runs inside `assemble_avx2` or `run_avx2`, which
+            // `Route::Avx2` chooses only where the CPU has AVX2.
+            unsafe { geom_small_avx2(bbox, p, area) }
+        } else {
+            None
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let small: Option<(Geom, u8)> = None;
+        let (g, cover) = match small {
+            Some(s) => s,
+            None => {
+                let g = geom_placed(bbox, p, area);
+                let cover = g.coverage();
+                (g, cover)
+            }
+        };
         if cover == COVER_KNOWN {
             return;
         }
@@ -1446,8 +1484,18 @@ pub(super) fn geom(rect: &[i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
 /// minimum of a monotone function's values is its value at the minimum, so these are `geom`'s
 /// bounds exactly), cut to `rect` by one `max` per bound; the same `Geom`
 /// (`geom_wins_is_geom` compares them).
-#[inline(always)]
+#[cfg(test)]
 pub(super) fn geom_wins(rect_cen: &[i32; 4], w: [&Win; 3]) -> Option<Geom> {
+    let bbox = wins_bbox(rect_cen, w)?;
+    geom_in(
+        bbox,
+        [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
+    )
+}
+
+/// The bounding box of `geom_wins`, `None` when empty.
+#[inline(always)]
+fn wins_bbox(rect_cen: &[i32; 4], w: [&Win; 3]) -> Option<[i32; 4]> {
     let c: [i32; 4] = std::array::from_fn(|i| {
         w[0].cen[i]
             .min(w[1].cen[i])
@@ -1461,23 +1509,116 @@ pub(super) fn geom_wins(rect_cen: &[i32; 4], w: [&Win; 3]) -> Option<Geom> {
         return None;
     }
     // Not empty, so x1 >= x0 and y1 >= y0 > i32::MIN: the negations fit.
-    let bbox = [c[0], c[1], c[2].wrapping_neg(), c[3].wrapping_neg()];
-    geom_in(
+    Some([c[0], c[1], c[2].wrapping_neg(), c[3].wrapping_neg()])
+}
+
+/// Twice the signed area of triangle `p` (snapped), positive counter-clockwise: `geom_in`'s.
+#[inline(always)]
+fn doubled_area(p: [[i64; 2]; 3]) -> i64 {
+    let [a, b, c] = p;
+    (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+}
+
+/// `geom_placed(bbox, p, area)` and its `coverage()` for a triangle whose box `bbox` (from
+/// `wins_bbox`, not empty) is at most 2x2 pixels, `None` for a larger box: the three edges'
+/// deltas, edge functions, tie rule and the four centres' sums of `inside_scalar` in the
+/// lanes of AVX2 registers of i64 (lane k edge k; lane 3 an edge of nothing, left out of the
+/// masks). Each product's factors fit i32 (vertices below `COORD_LIMIT`, and the box corner's
+/// centre lies between them), so `_mm256_mul_epi32` makes it exactly: the same integers, so
+/// the same `Geom` and cover (`geom_small_is_geom` compares). The scalar edges, the tie rule's
+/// branches and the coverage's own sums were ≈140 instructions a triangle.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option<(Geom, u8)> {
+    use std::arch::x86_64::{
+        _mm256_add_epi64, _mm256_and_si256, _mm256_castsi256_pd, _mm256_cmpeq_epi64,
+        _mm256_cmpgt_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_or_si256,
+        _mm256_permute4x64_epi64, _mm256_set1_epi64x, _mm256_set_epi64x, _mm256_setzero_si256,
+        _mm256_slli_epi64, _mm256_storeu_si256, _mm256_sub_epi64,
+    };
+    let [x0, y0, x1, y1] = bbox;
+    if x1 - x0 > 1 || y1 - y0 > 1 {
+        return None;
+    }
+    let (swapped, v) = ccw(p, area);
+    let (mut dx, mut dy, mut e) = ([0i64; 4], [0i64; 4], [0i64; 4]);
+    // SAFETY: the CPU has AVX2 (this function's contract); the stores write the four i64 of
+    // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
+    let (inside, owns) = unsafe {
+        // Lane k: vertex k, and vertex k + 1 by a permutation (lane 3 zeros).
+        let x = _mm256_set_epi64x(0, v[2][0], v[1][0], v[0][0]);
+        let y = _mm256_set_epi64x(0, v[2][1], v[1][1], v[0][1]);
+        let ex = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(x), x);
+        let ey = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(y), y);
+        let px = _mm256_set1_epi64x(i64::from(x0) * 256 + 128);
+        let py = _mm256_set1_epi64x(i64::from(y0) * 256 + 128);
+        // dx·(py − y) − dy·(px − x), each factor within ±2^31.
+        let ee = _mm256_sub_epi64(
+            _mm256_mul_epi32(ex, _mm256_sub_epi64(py, y)),
+            _mm256_mul_epi32(ey, _mm256_sub_epi64(px, x)),
+        );
+        _mm256_storeu_si256(dx.as_mut_ptr().cast(), ex);
+        _mm256_storeu_si256(dy.as_mut_ptr().cast(), ey);
+        _mm256_storeu_si256(e.as_mut_ptr().cast(), ee);
+        // The tie rule, all ones where the edge owns the centres on it; the bias is 1 where
+        // it does not: e − 1 − owns.
+        let zero = _mm256_setzero_si256();
+        let owns = _mm256_or_si256(
+            _mm256_cmpgt_epi64(zero, ey),
+            _mm256_and_si256(_mm256_cmpeq_epi64(ey, zero), _mm256_cmpgt_epi64(ex, zero)),
+        );
+        let c0 = _mm256_sub_epi64(_mm256_sub_epi64(ee, owns), _mm256_set1_epi64x(1));
+        // Centres 1, 2, 3 as `inside_scalar` steps to them: + (−dy·256), + dx·256, both.
+        let (sx, sy) = (_mm256_slli_epi64::<8>(ey), _mm256_slli_epi64::<8>(ex));
+        let c1 = _mm256_sub_epi64(c0, sx);
+        let c2 = _mm256_add_epi64(c0, sy);
+        let c3 = _mm256_add_epi64(c1, sy);
+        // A centre is inside when none of the three edges is negative there.
+        let n0 = _mm256_movemask_pd(_mm256_castsi256_pd(c0)) & 0b111;
+        let n1 = _mm256_movemask_pd(_mm256_castsi256_pd(c1)) & 0b111;
+        let n2 = _mm256_movemask_pd(_mm256_castsi256_pd(c2)) & 0b111;
+        let n3 = _mm256_movemask_pd(_mm256_castsi256_pd(c3)) & 0b111;
+        let inside = u8::from(n0 == 0)
+            | u8::from(n1 == 0) << 1
+            | u8::from(n2 == 0) << 2
+            | u8::from(n3 == 0) << 3;
+        (
+            inside,
+            _mm256_movemask_pd(_mm256_castsi256_pd(owns)) as u8 & 0b111,
+        )
+    };
+    let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
+    let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
+    let g = Geom {
+        v,
+        swapped,
+        area: area.abs(),
         bbox,
-        [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]],
-    )
+        owns,
+        d: [[dx[0], dy[0]], [dx[1], dy[1]], [dx[2], dy[2]]],
+        e: [e[0], e[1], e[2]],
+    };
+    Some((g, COVER_KNOWN | (inside & cols & rows)))
 }
 
 /// The rest of `geom` once the bounding box `bbox` (not empty, inside the rectangle) is known.
 #[inline(always)]
 fn geom_in(bbox: [i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
-    let [a, b, c] = p;
-    let area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    let area = doubled_area(p);
     if area == 0 {
         return None;
     }
-    let swapped = area < 0;
-    let v = if swapped { [a, c, b] } else { [a, b, c] };
+    Some(geom_placed(bbox, p, area))
+}
+
+/// `geom_in` of a triangle whose doubled signed area `area` (`doubled_area`) is not 0.
+#[inline(always)]
+fn geom_placed(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Geom {
+    let (swapped, v) = ccw(p, area);
     let (px, py) = (
         i64::from(bbox[0]) * 256 + 128,
         i64::from(bbox[1]) * 256 + 128,
@@ -1494,7 +1635,7 @@ fn geom_in(bbox: [i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
         d[k] = [dx, dy];
         e[k] = dx * (py - p[1]) - dy * (px - p[0]);
     }
-    Some(Geom {
+    Geom {
         v,
         swapped,
         area: area.abs(),
@@ -1502,7 +1643,16 @@ fn geom_in(bbox: [i32; 4], p: [[i64; 2]; 3]) -> Option<Geom> {
         owns,
         d,
         e,
-    })
+    }
+}
+
+/// Whether triangle `p` of doubled signed area `area` is clockwise, and its vertices
+/// counter-clockwise (the second and third swapped when it is).
+#[inline(always)]
+fn ccw(p: [[i64; 2]; 3], area: i64) -> (bool, [[i64; 2]; 3]) {
+    let [a, b, c] = p;
+    let swapped = area < 0;
+    (swapped, if swapped { [a, c, b] } else { [a, b, c] })
 }
 
 /// Polygon offset (§3.5.5): factor · max slope + units · r. GL leaves r to the implementation
@@ -1527,6 +1677,8 @@ mod tests {
         cen, geom, geom_wins, load4, load4_unchecked, plane, rect_cen, store_group, Geom, Win,
         SNAP_LIMIT,
     };
+    #[cfg(target_arch = "x86_64")]
+    use super::{doubled_area, geom_placed, geom_small_avx2, wins_bbox, COVER_KNOWN};
     use crate::cpu::testgen::Gen;
     use glam::Vec4;
 
@@ -1720,6 +1872,82 @@ mod tests {
             n += 1;
         }
         assert!(n > 100_000, "too few triangles: {n}");
+    }
+
+    /// `geom_small_avx2` against `geom_placed` and `Geom::coverage` on random triangles a few
+    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
+    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
+    /// and the box cut by the rectangle: the same `Geom`, field for field, and the same cover
+    /// for every box of at most 2x2 pixels, and `None` exactly for the larger ones.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn geom_small_is_geom() {
+        if !is_x86_feature_detected!("avx2") {
+            eprintln!("no AVX2 on this CPU: geom_small_avx2 not compared");
+            return;
+        }
+        let mut g = Gen(0x5eed_2c2c);
+        let lim = SNAP_LIMIT as i64;
+        let (mut small, mut covered, mut large) = (0, 0, 0);
+        for case in 0..200_000 {
+            let rect = match case % 4 {
+                0 => [0, 0, 799, 799],
+                1 => [i32::MIN, i32::MIN, i32::MAX, i32::MAX],
+                _ => {
+                    let mut r = || (g.next() % 40) as i32 - 8;
+                    [r(), r(), r(), r()]
+                }
+            };
+            let (cx, cy) = (
+                (g.next() % 3000) as i64 - 800,
+                (g.next() % 3000) as i64 - 800,
+            );
+            let coord = |g: &mut Gen, c: i64| -> i64 {
+                match g.next() % 16 {
+                    0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
+                    1 => [lim, -lim][(g.next() % 2) as usize],
+                    2..=5 => (c & !127) + (g.next() % 5) as i64 * 128 - 256,
+                    _ => c + (g.next() % 800) as i64 - 400,
+                }
+            };
+            let p: [[i64; 2]; 3] = std::array::from_fn(|_| [coord(&mut g, cx), coord(&mut g, cy)]);
+            let w = p.map(|[x, y]| Win {
+                fx: x,
+                fy: y,
+                cen: cen(x as i32, y as i32),
+                ..Win::default()
+            });
+            let Some(bbox) = wins_bbox(&rect_cen(rect), [&w[0], &w[1], &w[2]]) else {
+                continue;
+            };
+            let area = doubled_area(p);
+            if area == 0 {
+                continue;
+            }
+            let want = geom_placed(bbox, p, area);
+            let want_cover = want.coverage();
+            // SAFETY: the CPU has AVX2 (detected above).
+            match unsafe { geom_small_avx2(bbox, p, area) } {
+                None => {
+                    assert_eq!(want_cover, 0, "case {case}: {p:?} in {rect:?}");
+                    large += 1;
+                }
+                Some((got, cover)) => {
+                    assert_eq!(
+                        fields(Some(got)),
+                        fields(Some(want)),
+                        "case {case}: {p:?} in {rect:?}"
+                    );
+                    assert_eq!(cover, want_cover, "case {case}: {p:?} in {rect:?}");
+                    small += 1;
+                    covered += usize::from(cover != COVER_KNOWN);
+                }
+            }
+        }
+        assert!(
+            small > 20_000 && covered > 5_000 && large > 5_000,
+            "too few of a kind: {small} small, {covered} covering, {large} large"
+        );
     }
 
     #[test]
