@@ -643,6 +643,22 @@ impl<'a> Src<'a> {
     }
 }
 
+/// The span `[lo, hi)` of `idx` from the first of `prims` to the end of the last (a run of
+/// set-up's primitives, which come in order), when each of its indices is below `n` (the
+/// vertices with a record), else an empty span: found by one maximum over the span (a few
+/// vector instructions for eight indices) where each strip checked its own (four
+/// instructions a vertex).
+fn checked_span(idx: &[u32], prims: &[Prim], n: usize) -> [usize; 2] {
+    let (Some(a), Some(z)) = (prims.first(), prims.last()) else {
+        return [0, 0];
+    };
+    let (lo, hi) = (a.first as usize, z.first as usize + z.count as usize);
+    match idx.get(lo..hi) {
+        Some(ix) if (ix.iter().fold(0, |m, &u| m.max(u)) as usize) < n => [lo, hi],
+        _ => [0, 0],
+    }
+}
+
 /// A vertex in window coordinates with its varyings.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct WVert {
@@ -750,6 +766,7 @@ impl Worker {
     ) {
         self.start(ctx);
         let src = Src::new(ctx, vout, wins, &b.mat, wide);
+        let known = checked_span(&b.idx, prims, wins.len());
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
         // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
@@ -765,7 +782,7 @@ impl Worker {
         // starts; a scan for the run of direct ones first was 13 instructions a strip.)
         while let Some(p) = rest.first() {
             if direct(p) {
-                self.direct(ctx, src, &b.idx, p);
+                self.direct(ctx, src, &b.idx, known, p);
                 rest = &rest[1..];
                 continue;
             }
@@ -787,9 +804,10 @@ impl Worker {
     /// (2i + 2, 2i, 2i + 3) and (2i, 2i + 1, 2i + 3), provoking vertex 2i + 3; fan triangle i
     /// is (0, i + 1, i + 2), provoking vertex i + 2. `idx` maps given vertices to unique ones;
     /// each is mapped and its record found once, as it enters (a triangle at a time through
-    /// `assemble`, three lookups each).
+    /// `assemble`, three lookups each). `known`: a span of `idx` whose indices all have
+    /// records (`checked_span`).
     #[inline(always)]
-    fn direct(&mut self, ctx: &SetupCtx, src: Src, idx: &[u32], p: &Prim) {
+    fn direct(&mut self, ctx: &SetupCtx, src: Src, idx: &[u32], known: [usize; 2], p: &Prim) {
         let vert = |i: u32| {
             let u = idx.get(i as usize).copied().unwrap_or(u32::MAX);
             (u, src.wins.get(u as usize))
@@ -800,13 +818,16 @@ impl Worker {
         match p.mode {
             gl::TRIANGLE_STRIP if n >= 3 => {
                 // Every record in range (so always: the vertex stage writes one for every
-                // vertex of the batch): checked once for the strip, by `strip`.
-                let ix = idx.get(f as usize..f as usize + n as usize);
-                if let Some(ix) = ix.filter(|ix| ix.iter().all(|&u| (u as usize) < src.wins.len()))
-                {
-                    // SAFETY: each of `ix` is below `src.wins.len()` (just checked).
-                    unsafe { self.strip(ctx, src, ix) };
-                    return;
+                // vertex of the batch), by `strip`: known for the run, else checked here.
+                let (lo, hi) = (f as usize, f as usize + n as usize);
+                if let Some(ix) = idx.get(lo..hi) {
+                    let inside = known[0] <= lo && hi <= known[1];
+                    if inside || ix.iter().all(|&u| (u as usize) < src.wins.len()) {
+                        // SAFETY: each of `ix` is below `src.wins.len()`: inside `known`
+                        // (`checked_span`), or just checked.
+                        unsafe { self.strip(ctx, src, ix) };
+                        return;
+                    }
                 }
                 let (mut a, mut b) = (vert(f), vert(f + 1));
                 for i in 0..n - 2 {
