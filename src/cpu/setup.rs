@@ -915,7 +915,7 @@ impl Worker {
             return;
         }
         let _ = route;
-        self.run_body(ctx, vout, wins, mats, asm, false);
+        self.run_body(ctx, Src::new(ctx, vout, wins, mats, false), asm);
     }
 
     /// [`Worker::run_body`] compiled with AVX2.
@@ -932,22 +932,13 @@ impl Worker {
         mats: &[u32],
         asm: &[Asm],
     ) {
-        self.run_body(ctx, vout, wins, mats, asm, true);
+        self.run_body(ctx, Src::new(ctx, vout, wins, mats, true), asm);
     }
 
-    /// Sets up `asm` (`wide`: see `Src::wide`).
+    /// Sets up `asm` of the vertices `src`.
     #[inline(always)]
-    fn run_body(
-        &mut self,
-        ctx: &SetupCtx,
-        vout: &[f32],
-        wins: &[Win],
-        mats: &[u32],
-        asm: &[Asm],
-        wide: bool,
-    ) {
+    fn run_body(&mut self, ctx: &SetupCtx, src: Src, asm: &[Asm]) {
         self.start(ctx);
-        let src = Src::new(ctx, vout, wins, mats, wide);
         for p in asm {
             self.one(ctx, src, p);
         }
