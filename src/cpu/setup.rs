@@ -1540,11 +1540,13 @@ fn doubled_area(p: [[i64; 2]; 3]) -> i64 {
 /// the same `Geom` and cover (`geom_small_is_geom` compares). The scalar edges, the tie rule's
 /// branches and the coverage's own sums were ≈140 instructions a triangle.
 ///
+/// Inlined (always: as a function of its own it returned the `Geom` through memory, ≈160
+/// instructions a call) into `fast_tri` only where that is compiled for AVX2.
+///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
+#[inline(always)]
 unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option<(Geom, u8)> {
     use std::arch::x86_64::{
         _mm256_add_epi64, _mm256_and_si256, _mm256_castsi256_pd, _mm256_cmpeq_epi64,
@@ -1558,7 +1560,8 @@ unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option
     }
     let (swapped, v) = ccw(p, area);
     let (mut dx, mut dy, mut e) = ([0i64; 4], [0i64; 4], [0i64; 4]);
-    // SAFETY: the CPU has AVX2 (this function's contract); the stores write the four i64 of
+    // SAFETY: the CPU has AVX2, and the caller is compiled for it (this function's contract);
+    // the stores write the four i64 of
     // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
     let (inside, owns) = unsafe {
         // Lane k: vertex k, and vertex k + 1 by a permutation (lane 3 zeros).
