@@ -892,7 +892,7 @@ unsafe fn tiny_pixels<const F: u32, T>(
     while rest != 0 {
         let k = rest.trailing_zeros() as usize;
         rest &= rest - 1;
-        let i = at + (k >> 1) * TILE + (k & 1);
+        let i = at + [0, 1, TILE, TILE + 1][k & 3];
         let Some(d) = depth.get_mut(i) else {
             continue;
         };

@@ -82,10 +82,14 @@ unsafe fn tiny_avx2<const F: u32>(
         let [x0, y0, x1, y1] = p.bbox;
         let inside = (((x0 - tx) | (x1 - tx) | (y0 - ty) | (y1 - ty)) as u32) < TILE as u32;
         let tiny = p.cover & COVER_KNOWN != 0 && inside && p.kind == PrimKind::Tri;
-        let data = pool.get(p.voff as usize..).unwrap_or(&[]);
-        // SAFETY: the CPU has AVX2 and POPCNT (this function's contract).
-        if tiny && unsafe { ctx.tiny::<F>(bufs, p, data) } {
-            continue;
+        // The fifteen floats of a smooth or FLAT triangle without texturing (`FragCtx::tiny`
+        // reads no more).
+        let off = p.voff as usize;
+        if let Some(pl) = pool.get(off..off.wrapping_add(15)).filter(|_| tiny) {
+            // SAFETY: the CPU has AVX2 and POPCNT (this function's contract).
+            if unsafe { ctx.tiny::<F>(bufs, p, pl) } {
+                continue;
+            }
         }
         prim(ctx, bufs, p, pool);
     }
