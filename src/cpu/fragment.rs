@@ -1462,7 +1462,7 @@ impl FragCtx<'_> {
     /// the tile, its floats `planes`, the depth test `F` (LESS or LEQUAL, `tiny_depth`): when
     /// `smooth_planes` accepts it, what `smooth_rows` draws for its spans, and when it is a
     /// FLAT one `const_fill` gives one colour, what `const_rows` draws; each covered pixel
-    /// computed alone (`lanes::tiny_smooth_avx2`, `lanes::tiny_flat_avx2`) instead of in an
+    /// computed alone (`lanes::tiny_avx2`) instead of in an
     /// eight-lane group; the occlusion count. False, nothing drawn, for any other primitive.
     ///
     /// # Safety
@@ -1476,23 +1476,23 @@ impl FragCtx<'_> {
         p: &RPrim,
         planes: &[f32],
     ) -> bool {
-        use super::lanes::{tiny_flat_avx2, tiny_smooth_avx2};
+        use super::lanes::{tiny_avx2, TinyFill};
         // Setup sets no covered bit outside the box (`RPrim::cover`).
         let (cover, [x0, y0, ..]) = (p.cover, p.bbox);
         let at = ((y0 - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
-        let (z, d) = (&p.z, &mut *bufs.depth);
-        // SAFETY (both): the CPU has AVX2 (this function's contract).
-        let pass = if p.flags & NOT_SMOOTH == 0 {
+        let fill = if p.flags & NOT_SMOOTH == 0 {
             // `smooth_planes`' test of the primitive (its state is `tiny_depth`'s).
             let Some(pl) = planes.get(..15).and_then(|p| p.try_into().ok()) else {
                 return false;
             };
-            unsafe { tiny_smooth_avx2::<F>(bufs.color, d, at, cover, z, pl) }
+            TinyFill::Smooth(pl)
         } else if let Some(ConstFill::Flat(px)) = self.const_fill(bufs, p, planes) {
-            unsafe { tiny_flat_avx2::<F>(bufs.color, bufs.depth, at, cover, z, px) }
+            TinyFill::Flat(px)
         } else {
             return false;
         };
+        // SAFETY: the CPU has AVX2 (this function's contract).
+        let pass = unsafe { tiny_avx2::<F>(bufs.color, bufs.depth, at, cover, &p.z, fill) };
         if self.samples {
             bufs.samples += u64::from(pass.count_ones());
         }
@@ -4186,13 +4186,7 @@ mod tests {
                 // A step: not one colour (`const_fill` says None).
                 planes[4 + 3 * (g.next() % 4) as usize] = 1e-3;
             }
-            let color: Vec<[u8; 4]> = (0..TILE * TILE)
-                .map(|_| (g.next() as u32).to_le_bytes())
-                .collect();
-            let depth: Vec<u32> = (0..TILE * TILE)
-                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
-                .collect();
-            let stencil = vec![0u8; TILE * TILE];
+            let (color, depth, stencil) = crate::cpu::testgen::tile_contents(&mut g);
             let rows: Vec<[i32; 3]> = (0..1 + g.next() % 20)
                 .map(|_| {
                     let y = ty + (g.next() % TILE as u64) as i32;

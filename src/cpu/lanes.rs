@@ -917,27 +917,42 @@ unsafe fn tiny_pixels<const F: u32, T>(
 const TINY_FX: [f32; 4] = [0.0, 1.0, 0.0, 1.0];
 const TINY_FY: [f32; 4] = [0.0, 0.0, 1.0, 1.0];
 
-/// `smooth_depth_span_avx2` of a triangle's covered pixels (`tiny_pixels`: `cover`, `at`,
-/// `F`), its depth plane `z` and smooth planes `pl` (1/w, r, g, b, a: `SmoothPlanes8::new`'s).
-/// The lanes are the planes instead of the pixels: red, green, blue, alpha, depth, 1/w
-/// (`SmoothPlanes8`'s in another order, the colours in the low half so that a pixel's four
-/// are one 128-bit register), each pixel one `base + ystep·fy` (`SmoothPlanes8::row`) and one
-/// `+ dx·fx` (`smooth_group_avx2`'s `lin!`) for all six, then one `divss` for its 1/w and
-/// `unorm8_bits8`'s clamp, scale and bias on its four colours: each lane's operations in the
-/// group route's order (`vmulps`, `vaddps`, no FMA), so the same bits.
+/// What `tiny_avx2` stores for a triangle's surviving pixels.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum TinyFill<'a> {
+    /// The smooth colour of its planes (1/w, r, g, b, a: `SmoothPlanes8::new`'s `pl`), as
+    /// `smooth_depth_span_avx2` computes it.
+    Smooth(&'a [f32; 15]),
+    /// One colour (a FLAT triangle's, `flat_px`), as `FragCtx::const_rows` stores it.
+    Flat([u8; 4]),
+}
+
+/// The depth test and colour `fill` of a triangle's covered pixels (`tiny_pixels`: `cover`,
+/// `at`, `F`), its depth plane `z`.
+///
+/// `Smooth`: `smooth_depth_span_avx2` of each pixel, the lanes the planes instead of the
+/// pixels — red, green, blue, alpha, depth, 1/w (`SmoothPlanes8`'s in another order, the
+/// colours in the low half so that a pixel's four are one 128-bit register) — each pixel one
+/// `base + ystep·fy` (`SmoothPlanes8::row`) and one `+ dx·fx` (`smooth_group_avx2`'s `lin!`)
+/// for all six, then one `divss` for its 1/w and `unorm8_bits8`'s clamp, scale and bias on its
+/// four colours: each lane's operations in the group route's order (`vmulps`, `vaddps`, no
+/// FMA), so the same bits.
+///
+/// `Flat`: each pixel's depth `(z[0] + z[2]·fy) + z[1]·fx` (`const_rows_on`'s `zrow`, then
+/// `depth_test`'s lane), the colour stored as it is.
 ///
 /// # Safety
 /// The CPU must have AVX2 (`has_avx2`).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-pub(super) unsafe fn tiny_smooth_avx2<const F: u32>(
+pub(super) unsafe fn tiny_avx2<const F: u32>(
     color: &mut [[u8; 4]],
     depth: &mut [u32],
     at: usize,
     cover: u8,
     z: &[f32; 3],
-    pl: &[f32; 15],
+    fill: TinyFill,
 ) -> u8 {
     use std::arch::x86_64::{
         __m256, _mm256_add_ps, _mm256_blend_ps, _mm256_castps256_ps128, _mm256_extractf128_ps,
@@ -945,6 +960,22 @@ pub(super) unsafe fn tiny_smooth_avx2<const F: u32>(
         _mm256_setr_epi32, _mm_add_ps, _mm_broadcastss_ps, _mm_castps_si128, _mm_cvtsi128_si32,
         _mm_div_ss, _mm_max_ps, _mm_min_ps, _mm_movehdup_ps, _mm_mul_ps, _mm_set1_ps, _mm_set_ss,
         _mm_setr_epi8, _mm_setzero_ps, _mm_shuffle_epi8,
+    };
+    let pl = match fill {
+        TinyFill::Smooth(pl) => pl,
+        TinyFill::Flat(px) => {
+            let depth_at = |k: usize| {
+                let zrow = z[0] + z[2] * TINY_FY[k & 3];
+                (_mm_set_ss(zrow + z[1] * TINY_FX[k & 3]), ())
+            };
+            let store = |i: usize, ()| {
+                if let Some(c) = color.get_mut(i) {
+                    *c = px;
+                }
+            };
+            // SAFETY: the CPU has AVX2 (this function's contract).
+            return unsafe { tiny_pixels::<F, ()>(depth, at, cover, depth_at, store) };
+        }
     };
     // SAFETY: the CPU has AVX2 (this function's contract); `pl` holds fifteen f32, so the
     // loads of eight at offsets 0 and 7 are in bounds (no alignment needed); the rest is
@@ -997,37 +1028,6 @@ pub(super) unsafe fn tiny_smooth_avx2<const F: u32>(
         };
         tiny_pixels::<F, __m256>(depth, at, cover, planes, store)
     }
-}
-
-/// `const_rows`' depth test and FLAT colour `px` of a triangle's covered pixels
-/// (`tiny_pixels`: `cover`, `at`, `F`), its depth plane `z`: each pixel's depth
-/// `(z[0] + z[2]·fy) + z[1]·fx` (`const_rows_on`'s `zrow`, then `depth_test`'s lane).
-///
-/// # Safety
-/// The CPU must have AVX2 (`has_avx2`).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-pub(super) unsafe fn tiny_flat_avx2<const F: u32>(
-    color: &mut [[u8; 4]],
-    depth: &mut [u32],
-    at: usize,
-    cover: u8,
-    z: &[f32; 3],
-    px: [u8; 4],
-) -> u8 {
-    use std::arch::x86_64::_mm_set_ss;
-    let depth_at = |k: usize| {
-        let zrow = z[0] + z[2] * TINY_FY[k & 3];
-        (_mm_set_ss(zrow + z[1] * TINY_FX[k & 3]), ())
-    };
-    let store = |i: usize, ()| {
-        if let Some(c) = color.get_mut(i) {
-            *c = px;
-        }
-    };
-    // SAFETY: the CPU has AVX2 (this function's contract).
-    unsafe { tiny_pixels::<F, ()>(depth, at, cover, depth_at, store) }
 }
 
 /// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'

@@ -44,9 +44,10 @@ fn rest(ctx: &FragCtx, bufs: &mut TileBufs, prims: &[RPrim], bin: &[u32], pool: 
     #[cfg(target_arch = "x86_64")]
     {
         use crate::gl::{LEQUAL, LESS};
-        // SAFETY: `tiny_depth` is not 0 only where the CPU has AVX2 and POPCNT.
         match ctx.tiny_depth(bufs) {
+            // SAFETY: `tiny_depth` is not 0 only where the CPU has AVX2 and POPCNT.
             LESS => return unsafe { tiny_avx2::<LESS>(ctx, bufs, prims, bin, pool) },
+            // SAFETY: as above.
             LEQUAL => return unsafe { tiny_avx2::<LEQUAL>(ctx, bufs, prims, bin, pool) },
             _ => {}
         }
@@ -481,7 +482,7 @@ mod tests {
     #[test]
     fn tiny_triangles_are_prim_byte_for_byte() {
         use super::super::fragment::TileBufs;
-        use super::super::framebuffer::{DEPTH_MAX, TILE};
+        use super::super::framebuffer::TILE;
         use super::super::setup::{PrimKind, RLayout, RPrim, F_FLAT};
         use super::{prim, prims};
         use crate::cpu::testgen::{tex_ctx, tile_bufs, Gen};
@@ -584,13 +585,7 @@ mod tests {
                 });
             }
             let bin: Vec<u32> = (0..list.len() as u32).collect();
-            let color: Vec<[u8; 4]> = (0..TILE * TILE)
-                .map(|_| (g.next() as u32).to_le_bytes())
-                .collect();
-            let depth: Vec<u32> = (0..TILE * TILE)
-                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
-                .collect();
-            let stencil = vec![0u8; TILE * TILE];
+            let (color, depth, stencil) = crate::cpu::testgen::tile_contents(&mut g);
             let draw = |binned: bool| {
                 let (mut c, mut d, mut s) = (color.clone(), depth.clone(), stencil.clone());
                 let mut bufs: TileBufs = tile_bufs(&mut c, &mut d, &mut s, (tx, ty));
