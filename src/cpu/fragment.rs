@@ -1435,6 +1435,7 @@ impl FragCtx<'_> {
     /// primitives; `smooth_planes` tests it in its own order, the primitive's flags early):
     /// no per-fragment operation beyond the depth test, no texturing or secondary colour, no
     /// coverage count, one colour buffer written whole.
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn smooth_state(&self, bufs: &TileBufs) -> bool {
         self.ops.is_none()
@@ -1455,6 +1456,8 @@ impl FragCtx<'_> {
         if super::lanes::has_avx2() && self.stipple.is_none() && self.smooth_state(bufs) {
             return self.depth_fast();
         }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = bufs;
         0
     }
 

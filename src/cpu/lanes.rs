@@ -914,10 +914,13 @@ unsafe fn tiny_pixels<const F: u32, T>(
 }
 
 /// A covered bit's column and row (`fx`, `fy`: `tiny_pixels`).
+#[cfg(target_arch = "x86_64")]
 const TINY_FX: [f32; 4] = [0.0, 1.0, 0.0, 1.0];
+#[cfg(target_arch = "x86_64")]
 const TINY_FY: [f32; 4] = [0.0, 0.0, 1.0, 1.0];
 
 /// What `tiny_avx2` stores for a triangle's surviving pixels.
+#[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy, Debug)]
 pub(super) enum TinyFill<'a> {
     /// The smooth colour of its planes (1/w, r, g, b, a: `SmoothPlanes8::new`'s `pl`), as
