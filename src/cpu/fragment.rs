@@ -27,6 +27,9 @@ use crate::state::{Material, BACK, FRONT, MAX_TEXTURE_UNITS};
 const LESS: u32 = gl::LESS;
 const LEQUAL: u32 = gl::LEQUAL;
 
+/// The primitive flags that keep a primitive off `FragCtx::smooth_rows` (`smooth_planes`).
+const NOT_SMOOTH: u8 = F_AAPOINT | F_AALINE | F_FLAT | F_PHONG;
+
 /// The fragment-stage state of one flush.
 #[derive(Clone, Debug)]
 pub struct FragCtx<'a> {
@@ -1414,11 +1417,10 @@ impl FragCtx<'_> {
         p: &RPrim,
         planes: &'p [f32],
     ) -> Option<&'p [f32; 15]> {
-        let other = F_AAPOINT | F_AALINE | F_FLAT | F_PHONG;
         let stippled = self.stipple.is_some() && p.flags & F_LINE == 0;
         if self.ops.is_some()
             || self.rl.n != 4
-            || p.flags & other != 0
+            || p.flags & NOT_SMOOTH != 0
             || stippled
             || self.count
             || self.color_mask != [true; 4]
@@ -1427,6 +1429,77 @@ impl FragCtx<'_> {
             return None;
         }
         planes.get(..15).and_then(|p| p.try_into().ok())
+    }
+
+    /// What `smooth_planes` asks of the flush's state and the tile (the same for all its
+    /// primitives; `smooth_planes` tests it in its own order, the primitive's flags early):
+    /// no per-fragment operation beyond the depth test, no texturing or secondary colour, no
+    /// coverage count, one colour buffer written whole.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn smooth_state(&self, bufs: &TileBufs) -> bool {
+        self.ops.is_none()
+            && self.rl.n == 4
+            && !self.count
+            && self.color_mask == [true; 4]
+            && bufs.color2.is_none()
+    }
+
+    /// The depth test of `tiny_smooth`, decided once for a bin of primitives
+    /// (`raster::prims`): LESS or LEQUAL where the CPU has AVX2, the state lets every smooth
+    /// triangle take `smooth_rows` (`smooth_state`, and no polygon stipple, so that only each
+    /// primitive's flags are left to check) and the depth test is one `depth_fast` compiles
+    /// in; else 0 (every primitive through `raster::prim`).
+    #[inline(always)]
+    pub fn tiny_depth(&self, bufs: &TileBufs) -> u32 {
+        #[cfg(target_arch = "x86_64")]
+        if super::lanes::has_avx2() && self.stipple.is_none() && self.smooth_state(bufs) {
+            return self.depth_fast();
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = bufs;
+        0
+    }
+
+    /// A triangle whose covered pixels setup found (`RPrim::cover`), its bounding box inside
+    /// the tile, its floats `planes`, the depth test `F` (LESS or LEQUAL, `tiny_depth`): when
+    /// `smooth_planes` accepts it, what `smooth_rows` draws for its spans, and when it is a
+    /// FLAT one `const_fill` gives one colour, what `const_rows` draws; each covered pixel
+    /// computed alone (`lanes::tiny_avx2`) instead of in an
+    /// eight-lane group; the occlusion count. False, nothing drawn, for any other primitive.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline]
+    pub unsafe fn tiny<const F: u32>(
+        &self,
+        bufs: &mut TileBufs,
+        p: &RPrim,
+        planes: &[f32],
+    ) -> bool {
+        use super::lanes::{tiny_avx2, TinyFill};
+        // Setup sets no covered bit outside the box (`RPrim::cover`).
+        let (cover, [x0, y0, ..]) = (p.cover, p.bbox);
+        let at = ((y0 - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+        let fill = if p.flags & NOT_SMOOTH == 0 {
+            // `smooth_planes`' test of the primitive (its state is `tiny_depth`'s).
+            let Some(pl) = planes.get(..15).and_then(|p| p.try_into().ok()) else {
+                return false;
+            };
+            TinyFill::Smooth(pl)
+        } else if let Some(ConstFill::Flat(px)) = self.const_fill(bufs, p, planes) {
+            TinyFill::Flat(px)
+        } else {
+            return false;
+        };
+        // SAFETY: the CPU has AVX2 (this function's contract).
+        let pass = unsafe { tiny_avx2::<F>(bufs.color, bufs.depth, at, cover, &p.z, fill) };
+        if self.samples {
+            bufs.samples += u64::from(pass.count_ones());
+        }
+        true
     }
 
     /// Spans of a primitive `smooth_planes` accepted (its planes `pl`), `rows` holding each
@@ -4116,13 +4189,7 @@ mod tests {
                 // A step: not one colour (`const_fill` says None).
                 planes[4 + 3 * (g.next() % 4) as usize] = 1e-3;
             }
-            let color: Vec<[u8; 4]> = (0..TILE * TILE)
-                .map(|_| (g.next() as u32).to_le_bytes())
-                .collect();
-            let depth: Vec<u32> = (0..TILE * TILE)
-                .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
-                .collect();
-            let stencil = vec![0u8; TILE * TILE];
+            let (color, depth, stencil) = crate::cpu::testgen::tile_contents(&mut g);
             let rows: Vec<[i32; 3]> = (0..1 + g.next() % 20)
                 .map(|_| {
                     let y = ty + (g.next() % TILE as u64) as i32;

@@ -852,6 +852,187 @@ unsafe fn smooth_group_avx2(
     }
 }
 
+/// The covered pixels of a triangle whose covered pixels setup found (`RPrim::cover`, a
+/// bounding box of at most 2x2 pixels inside the tile), each through the depth test alone:
+/// bit `2·row + column` of `cover` is the pixel at tile index `at + row·TILE + column` (row
+/// and column relative to the bounding box's corner, the planes' origin, so its `fy` and `fx`
+/// are 0 or 1, which `(y − oy) as f32` and `(fxc as f32) + l` are exactly). `z(k)` gives
+/// pixel k's depth in the low lane and what its colour needs; the depth is converted as
+/// `oplanes::avx2::depth_test` converts a lane (`maxsd`, `minsd` with `maxpd`'s and
+/// `minpd`'s operand order, so NaN clamps alike; scale, bias, truncation) and tested with
+/// `F` (LEQUAL, or else LESS; the depth mask true); a survivor's depth is stored and
+/// `hit(index, what z gave)` stores its colour. Returns the bits of `cover` that passed.
+///
+/// Design decision: an eight-lane group spent on a dense mesh's triangle (one or two
+/// fragments) computed eight of everything and loaded, selected and stored eight pixels of
+/// each buffer; here each covered pixel is computed alone, with each value's operations those
+/// of its lane in the group route in the same order, so the same bits.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn tiny_pixels<const F: u32, T>(
+    depth: &mut [u32],
+    at: usize,
+    cover: u8,
+    mut z: impl FnMut(usize) -> (std::arch::x86_64::__m128, T),
+    mut hit: impl FnMut(usize, T),
+) -> u8 {
+    use super::framebuffer::TILE;
+    use std::arch::x86_64::{
+        _mm_add_sd, _mm_cvtss_sd, _mm_cvttsd_si32, _mm_max_sd, _mm_min_sd, _mm_mul_sd, _mm_set_sd,
+        _mm_setzero_pd,
+    };
+    let (zero, one) = (_mm_setzero_pd(), _mm_set_sd(1.0));
+    let (kd, hd) = (_mm_set_sd(f64::from(DEPTH_MAX)), _mm_set_sd(0.5));
+    let mut pass = 0u8;
+    let mut rest = cover & 15;
+    while rest != 0 {
+        let k = rest.trailing_zeros() as usize;
+        rest &= rest - 1;
+        let i = at + [0, 1, TILE, TILE + 1][k & 3];
+        let Some(d) = depth.get_mut(i) else {
+            continue;
+        };
+        let (zk, then) = z(k);
+        // `depth4!`: clamp, scale, bias, truncate.
+        let zc = _mm_min_sd(_mm_max_sd(_mm_cvtss_sd(zero, zk), zero), one);
+        let dz = _mm_cvttsd_si32(_mm_add_sd(_mm_mul_sd(zc, kd), hd)) as u32;
+        let ok = match F {
+            crate::gl::LEQUAL => dz <= *d,
+            _ => dz < *d,
+        };
+        if ok {
+            *d = dz;
+            pass |= 1 << k;
+            hit(i, then);
+        }
+    }
+    pass
+}
+
+/// A covered bit's column and row (`fx`, `fy`: `tiny_pixels`).
+#[cfg(target_arch = "x86_64")]
+const TINY_FX: [f32; 4] = [0.0, 1.0, 0.0, 1.0];
+#[cfg(target_arch = "x86_64")]
+const TINY_FY: [f32; 4] = [0.0, 0.0, 1.0, 1.0];
+
+/// What `tiny_avx2` stores for a triangle's surviving pixels.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy, Debug)]
+pub(super) enum TinyFill<'a> {
+    /// The smooth colour of its planes (1/w, r, g, b, a: `SmoothPlanes8::new`'s `pl`), as
+    /// `smooth_depth_span_avx2` computes it.
+    Smooth(&'a [f32; 15]),
+    /// One colour (a FLAT triangle's, `flat_px`), as `FragCtx::const_rows` stores it.
+    Flat([u8; 4]),
+}
+
+/// The depth test and colour `fill` of a triangle's covered pixels (`tiny_pixels`: `cover`,
+/// `at`, `F`), its depth plane `z`.
+///
+/// `Smooth`: `smooth_depth_span_avx2` of each pixel, the lanes the planes instead of the
+/// pixels — red, green, blue, alpha, depth, 1/w (`SmoothPlanes8`'s in another order, the
+/// colours in the low half so that a pixel's four are one 128-bit register) — each pixel one
+/// `base + ystep·fy` (`SmoothPlanes8::row`) and one `+ dx·fx` (`smooth_group_avx2`'s `lin!`)
+/// for all six, then one `divss` for its 1/w and `unorm8_bits8`'s clamp, scale and bias on its
+/// four colours: each lane's operations in the group route's order (`vmulps`, `vaddps`, no
+/// FMA), so the same bits.
+///
+/// `Flat`: each pixel's depth `(z[0] + z[2]·fy) + z[1]·fx` (`const_rows_on`'s `zrow`, then
+/// `depth_test`'s lane), the colour stored as it is.
+///
+/// # Safety
+/// The CPU must have AVX2 (`has_avx2`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+pub(super) unsafe fn tiny_avx2<const F: u32>(
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+    at: usize,
+    cover: u8,
+    z: &[f32; 3],
+    fill: TinyFill,
+) -> u8 {
+    use std::arch::x86_64::{
+        __m256, _mm256_add_ps, _mm256_blend_ps, _mm256_castps256_ps128, _mm256_extractf128_ps,
+        _mm256_loadu_ps, _mm256_mul_ps, _mm256_permutevar8x32_ps, _mm256_set1_ps,
+        _mm256_setr_epi32, _mm_add_ps, _mm_broadcastss_ps, _mm_castps_si128, _mm_cvtsi128_si32,
+        _mm_div_ss, _mm_max_ps, _mm_min_ps, _mm_movehdup_ps, _mm_mul_ps, _mm_set1_ps, _mm_set_ss,
+        _mm_setr_epi8, _mm_setzero_ps, _mm_shuffle_epi8,
+    };
+    let pl = match fill {
+        TinyFill::Smooth(pl) => pl,
+        TinyFill::Flat(px) => {
+            let depth_at = |k: usize| {
+                let zrow = z[0] + z[2] * TINY_FY[k & 3];
+                (_mm_set_ss(zrow + z[1] * TINY_FX[k & 3]), ())
+            };
+            let store = |i: usize, ()| {
+                if let Some(c) = color.get_mut(i) {
+                    *c = px;
+                }
+            };
+            // SAFETY: the CPU has AVX2 (this function's contract).
+            return unsafe { tiny_pixels::<F, ()>(depth, at, cover, depth_at, store) };
+        }
+    };
+    // SAFETY: the CPU has AVX2 (this function's contract); `pl` holds fifteen f32, so the
+    // loads of eight at offsets 0 and 7 are in bounds (no alignment needed); the rest is
+    // register arithmetic, and the buffers are reached through `get_mut`.
+    unsafe {
+        // pl[0..8] and pl[7..15]: lane c < 4 of plane term k (0 the constant, 1 the x step, 2
+        // the y step) is pl[3 + 3c + k], lane 4 z[k], lane 5 pl[k] (1/w); lanes 6 and 7
+        // unused.
+        let (a, b) = (
+            _mm256_loadu_ps(pl.as_ptr()),
+            _mm256_loadu_ps(pl.as_ptr().add(7)),
+        );
+        macro_rules! term {
+            ($k:literal, $a0:literal, $a1:literal, $a5:literal, $b1:literal, $b2:literal,
+             $b3:literal, $m:literal) => {{
+                let ia = _mm256_setr_epi32($a0, $a1, 0, 0, 0, $a5, 0, 0);
+                let ib = _mm256_setr_epi32(0, $b1, $b2, $b3, 0, 0, 0, 0);
+                let v = _mm256_blend_ps::<$m>(
+                    _mm256_permutevar8x32_ps(a, ia),
+                    _mm256_permutevar8x32_ps(b, ib),
+                );
+                _mm256_blend_ps::<0x10>(v, _mm256_set1_ps(z[$k]))
+            }};
+        }
+        // Constants pl[3, 6 | 9, 12 | 0]; x steps pl[4, 7 | 10, 13 | 1]; y steps
+        // pl[5 | 8, 11, 14 | 2] (lanes from `a` | from `b` | lane 5).
+        let base = term!(0, 3, 6, 0, 0, 2, 5, 0b1100);
+        let dx = term!(1, 4, 7, 1, 0, 3, 6, 0b1100);
+        let ystep = term!(2, 5, 0, 2, 1, 4, 7, 0b1110);
+        let bytes = _mm_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+        let planes = |k: usize| {
+            let o = _mm256_add_ps(base, _mm256_mul_ps(ystep, _mm256_set1_ps(TINY_FY[k & 3])));
+            let v = _mm256_add_ps(o, _mm256_mul_ps(dx, _mm256_set1_ps(TINY_FX[k & 3])));
+            (_mm256_extractf128_ps::<1>(v), v)
+        };
+        let store = |i: usize, v: __m256| {
+            let Some(c) = color.get_mut(i) else {
+                return;
+            };
+            let w = _mm_movehdup_ps(_mm256_extractf128_ps::<1>(v));
+            let inv = _mm_div_ss(_mm_set_ss(1.0), w);
+            let rgba = _mm_mul_ps(_mm256_castps256_ps128(v), _mm_broadcastss_ps(inv));
+            let rgba = _mm_min_ps(_mm_max_ps(rgba, _mm_setzero_ps()), _mm_set1_ps(1.0));
+            let t = _mm_add_ps(
+                _mm_mul_ps(rgba, _mm_set1_ps(255.0 / 256.0)),
+                _mm_set1_ps(32768.0),
+            );
+            let px = _mm_cvtsi128_si32(_mm_shuffle_epi8(_mm_castps_si128(t), bytes));
+            *c = (px as u32).to_le_bytes();
+        };
+        tiny_pixels::<F, __m256>(depth, at, cover, planes, store)
+    }
+}
+
 /// `1.0 / d` on every lane, correctly rounded (SSE2 `divps` on x86-64): for other modules'
 /// lane kernels (texture λ).
 #[inline(always)]

@@ -1229,11 +1229,8 @@ fn rasterise(fb: &mut Framebuffer, parts: &[Piece], queries: usize, targets: Tar
             };
             let before = bufs.samples;
             for w in workers {
-                for &pi in w.bins.get(t).map_or(&[][..], |b| &b[..]) {
-                    if let Some(p) = w.prims.get(pi as usize) {
-                        raster::prim(fctx, &mut bufs, p, &w.pool);
-                    }
-                }
+                let bin = w.bins.get(t).map_or(&[][..], |b| &b[..]);
+                raster::prims(fctx, &mut bufs, &w.prims, bin, &w.pool);
             }
             if let Some(sum) = slot.and_then(|s| sums.get_mut(s)) {
                 *sum = sum.wrapping_add(bufs.samples.wrapping_sub(before));

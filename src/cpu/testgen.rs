@@ -132,6 +132,19 @@ pub(crate) fn tri_rows_on(
     (packs, c, d, samples)
 }
 
+/// A tile's buffers' contents drawn from `g`: colours of any bytes, depths on the quarters
+/// of the depth range (so that depth planes meet them exactly: the ties), stencil zero.
+pub(crate) fn tile_contents(g: &mut Gen) -> (Vec<[u8; 4]>, Vec<u32>, Vec<u8>) {
+    use crate::cpu::framebuffer::{DEPTH_MAX, TILE};
+    let color = (0..TILE * TILE)
+        .map(|_| (g.next() as u32).to_le_bytes())
+        .collect();
+    let depth = (0..TILE * TILE)
+        .map(|_| (g.next() % 5) as u32 * (DEPTH_MAX / 4))
+        .collect();
+    (color, depth, vec![0u8; TILE * TILE])
+}
+
 /// The tile at window (`tx`, `ty`) with colours `color` (one buffer), depths `depth` and
 /// stencil values `stencil`, no samples counted yet.
 pub(crate) fn tile_bufs<'a>(
