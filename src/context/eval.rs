@@ -626,7 +626,7 @@ impl Context {
             cur.inputs_mut().tex_coords[0] = at(TEXTURE_COORD_1 + t);
         }
         let p = at(pos);
-        self.renderer.vertex(p, &cur);
+        self.renderer.vertex_computed(p, &cur);
     }
 
     /// EvalCoord2's body (Mesa's `vbo_exec_do_EvalCoord2f`).
@@ -695,7 +695,7 @@ impl Context {
         } else {
             at(pos)
         };
-        self.renderer.vertex(p, &cur);
+        self.renderer.vertex_computed(p, &cur);
     }
 }
 

@@ -207,9 +207,33 @@ impl Batch {
 
     /// Appends a vertex with the current attributes to the open primitive (the caller has
     /// opened one: `Context::vertex` draws nothing outside Begin/End). The primitive's count
-    /// is taken at `end`.
+    /// is taken at `end`. For `c` in memory, such as the state's current values: the front end
+    /// stores the normal's components one by one (`Normal3f`), and loading two of them as one
+    /// wider word would stall store forwarding for ~15 cycles, so each is read on its own (a
+    /// volatile load keeps the compiler from merging them; `black_box` did too, but through a
+    /// store and a reload of each), and the hash mixes 32-bit words.
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
+        let n = &c.normal;
+        let normal = [&n.x, &n.y, &n.z].map(|v| {
+            // SAFETY: `v` is a reference to an f32, readable as the u32 of its size and
+            // alignment.
+            unsafe { std::ptr::read_volatile(std::ptr::from_ref(v).cast::<u32>()) }
+        });
+        self.vertex_with(position, normal, c);
+    }
+
+    /// [`Batch::vertex`] for values the caller has just computed, such as an evaluator's
+    /// vertex: the normal is read as the compiler likes (a volatile load would make it keep
+    /// the whole `Current` in memory, about 35 instructions more a vertex there).
+    #[inline(always)]
+    pub fn vertex_computed(&mut self, position: Vec4, c: &Current) {
+        self.vertex_with(position, c.normal.to_array().map(f32::to_bits), c);
+    }
+
+    /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
+    #[inline(always)]
+    fn vertex_with(&mut self, position: Vec4, normal: [u32; 3], c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
         // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
@@ -218,12 +242,6 @@ impl Batch {
             self.new_span(c, serial);
         }
         let pos = position.to_array().map(f32::to_bits);
-        // The front end stores the normal's components one by one (`Normal3f`); loading two of
-        // them as one wider word would stall store forwarding for ~15 cycles, so each is read
-        // on its own (`black_box` keeps the compiler from merging the loads), and the hash
-        // mixes 32-bit words.
-        let n = &c.normal;
-        let normal = [n.x, n.y, n.z].map(|v| std::hint::black_box(v).to_bits());
         let set = set_of(pos, normal);
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
         if let (Some(Set(ways)), Ok(serial)) = (self.cache.get_mut(set), u32::try_from(serial)) {
