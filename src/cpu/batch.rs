@@ -483,7 +483,9 @@ mod tests {
     fn every_writer_of_the_span_inputs_starts_a_span() {
         let v = Vec4::new(0.5, 0.25, 0.125, 1.0);
         // Inside Begin/End: the vertex after the write is a new one, with the new value.
-        let inside: [(&str, fn(&mut crate::Context), fn(&Attribs, bool) -> bool); 7] = [
+        type Write = fn(&mut crate::Context);
+        type Check = fn(&Attribs, bool) -> bool;
+        let inside: [(&str, Write, Check); 7] = [
             (
                 "Color",
                 |c| c.color4f(0.5, 0.25, 0.125, 1.0),
