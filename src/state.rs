@@ -281,31 +281,167 @@ impl Default for Enables {
 }
 
 /// The current vertex attributes (GL 2.1 table 6.5).
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Design decision: the inputs a batched vertex shares with its span (`Inputs`: colours,
+/// texture coordinates, fog coordinate, edge flag; cpu/batch.rs) are read through `Deref` and
+/// written only through [`Current::inputs_mut`], which gives the value a fresh stamp, never
+/// given before in the process. A copy keeps both the inputs and the stamp, so two `Current`s
+/// with the same stamp have the same inputs, whatever copied or restored them (PopAttrib, a
+/// display list's or an array draw's restore, an evaluator's own copy): the batch then knows a
+/// vertex's inputs are its span's with one compare instead of 25 floats. The compiler enforces
+/// the rule: the fields are private, so a writer that forgets the stamp does not build.
+#[derive(Clone, Copy, Debug)]
 pub struct Current {
-    pub color: Vec4,
-    pub secondary_color: Vec4,
+    inputs: Inputs,
+    /// See the type's docs; 0 for the initial values (`Default`), which are all the same.
+    stamp: u64,
     pub normal: Vec3,
-    pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
-    pub fog_coord: f32,
-    pub edge_flag: bool,
     /// CURRENT_INDEX: the current colour index (§2.7, initially 1), held and pushed in
     /// colour-index mode's place; an RGBA context draws nothing with it.
     pub index: f32,
 }
 
+/// The current values a vertex's span shares (see [`Current`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Inputs {
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+    pub tex_coords: [Vec4; MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
+    pub edge_flag: bool,
+}
+
 impl Default for Current {
     fn default() -> Self {
         Self {
-            color: Vec4::ONE,
-            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            inputs: Inputs {
+                color: Vec4::ONE,
+                secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+                tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
+                fog_coord: 0.0,
+                edge_flag: true,
+            },
+            stamp: 0,
             normal: Vec3::new(0.0, 0.0, 1.0),
-            tex_coords: [Vec4::new(0.0, 0.0, 0.0, 1.0); MAX_TEXTURE_UNITS],
-            fog_coord: 0.0,
-            edge_flag: true,
             index: 1.0,
         }
     }
+}
+
+impl std::ops::Deref for Current {
+    type Target = Inputs;
+
+    #[inline(always)]
+    fn deref(&self) -> &Inputs {
+        &self.inputs
+    }
+}
+
+/// Equal values, whatever their stamps.
+impl PartialEq for Current {
+    fn eq(&self, other: &Self) -> bool {
+        self.inputs == other.inputs && self.normal == other.normal && self.index == other.index
+    }
+}
+
+impl Current {
+    /// Values with `inputs`, `normal` and `index` (a fresh stamp).
+    pub fn new(inputs: Inputs, normal: Vec3, index: f32) -> Self {
+        Current {
+            inputs,
+            stamp: fresh_stamp(),
+            normal,
+            index,
+        }
+    }
+
+    /// The inputs, to write: the value takes a fresh stamp (see the type's docs).
+    #[inline(always)]
+    pub fn inputs_mut(&mut self) -> &mut Inputs {
+        self.stamp = fresh_stamp();
+        &mut self.inputs
+    }
+
+    /// Whether `other`'s inputs have the bits of `self`'s ([`Inputs::same_bits`]): at once
+    /// when the stamps are the same (see the type's docs); otherwise compared, and when the
+    /// bits are the same, `self` takes `other`'s stamp, so that the next compare with it (or
+    /// its copies) is at once.
+    #[inline(always)]
+    pub fn same_inputs_as(&mut self, other: &Current) -> bool {
+        if self.stamp == other.stamp {
+            return true;
+        }
+        let same = self.inputs.same_bits(&other.inputs);
+        if same {
+            self.stamp = other.stamp;
+        }
+        same
+    }
+}
+
+impl Inputs {
+    /// Whether every input of `self` has the bits of `other`'s: equal bits, identical inputs
+    /// (NaNs with equal bits are equal, -0 and 0 differ), what a batched vertex may share
+    /// (cpu/batch.rs), and what two values of one stamp have. Every field is named here (a
+    /// new one does not build until it is compared), and both sides lie in the same order:
+    /// a few vector loads and compares, without branches and without copying either.
+    #[inline(always)]
+    pub fn same_bits(&self, other: &Inputs) -> bool {
+        let Inputs {
+            color,
+            secondary_color,
+            tex_coords: [t0, t1, t2, t3],
+            fog_coord,
+            edge_flag,
+        } = self;
+        let [u0, u1, u2, u3] = &other.tex_coords;
+        let bits = |v: &Vec4| v.to_array().map(f32::to_bits);
+        let pairs = [
+            (color, &other.color),
+            (secondary_color, &other.secondary_color),
+            (t0, u0),
+            (t1, u1),
+            (t2, u2),
+            (t3, u3),
+        ];
+        let mut d = fog_coord.to_bits() ^ other.fog_coord.to_bits();
+        d |= u32::from(*edge_flag ^ other.edge_flag);
+        for (x, y) in pairs {
+            let (x, y) = (bits(x), bits(y));
+            for k in 0..4 {
+                d |= x[k] ^ y[k];
+            }
+        }
+        d == 0
+    }
+}
+
+/// Stamps a thread hands out before it takes another block of them.
+const STAMP_BLOCK: u64 = 1 << 32;
+
+/// A stamp never given before (see [`Current`]): the next of the calling thread's block of
+/// `STAMP_BLOCK`, blocks being taken from one process-wide counter (so threads never hand out
+/// the same stamp, and a context may move between threads). A plain thread-local increment
+/// almost always: an atomic operation per stamp would cost tens of cycles on every `Color` or
+/// `TexCoord` call.
+#[inline(always)]
+fn fresh_stamp() -> u64 {
+    use std::cell::Cell;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    // Block 0 holds stamp 0, the initial values', so it is never handed out.
+    static BLOCKS: AtomicU64 = AtomicU64::new(1);
+    thread_local! {
+        static NEXT: Cell<u64> = const { Cell::new(0) };
+    }
+    NEXT.with(|next| {
+        let mut s = next.get();
+        if s % STAMP_BLOCK == 0 {
+            // The thread's first stamp, or its block used up.
+            s = BLOCKS.fetch_add(1, Ordering::Relaxed) * STAMP_BLOCK;
+        }
+        next.set(s + 1);
+        s
+    })
 }
 
 /// `Hint` targets (GL 2.1 table 6.37); each `DONT_CARE`, `FASTEST` or `NICEST`.

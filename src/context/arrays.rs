@@ -634,20 +634,22 @@ impl Context {
             let Some(v) = s.fetch(i) else { continue };
             let c = &mut self.state.current;
             match s.attr {
-                Attr::EdgeFlag => c.edge_flag = v[0] != 0.0,
+                Attr::EdgeFlag => c.inputs_mut().edge_flag = v[0] != 0.0,
                 Attr::TexCoord(u) => {
-                    if let Some(t) = c.tex_coords.get_mut(u) {
+                    if let Some(t) = c.inputs_mut().tex_coords.get_mut(u) {
                         *t = Vec4::from_array(v);
                     }
                 }
                 Attr::Color => {
-                    c.color = Vec4::from_array(v);
+                    c.inputs_mut().color = Vec4::from_array(v);
                     if self.state.enables.color_material {
                         self.track_color_material();
                     }
                 }
-                Attr::SecondaryColor => c.secondary_color = Vec3::new(v[0], v[1], v[2]).extend(1.0),
-                Attr::FogCoord => c.fog_coord = v[0],
+                Attr::SecondaryColor => {
+                    c.inputs_mut().secondary_color = Vec3::new(v[0], v[1], v[2]).extend(1.0)
+                }
+                Attr::FogCoord => c.inputs_mut().fog_coord = v[0],
                 Attr::Normal => c.normal = Vec3::new(v[0], v[1], v[2]),
                 Attr::Vertex => self.vertex(Vec4::from_array(v)),
                 Attr::Index => {}

@@ -617,16 +617,16 @@ impl Context {
             Vec4::from(out)
         };
         if e.map1[COLOR_4] {
-            cur.color = at(COLOR_4);
+            cur.inputs_mut().color = at(COLOR_4);
         }
         if e.map1[NORMAL] {
             cur.normal = at(NORMAL).truncate();
         }
         if let Some(t) = (0..4).rev().find(|&t| e.map1[TEXTURE_COORD_1 + t]) {
-            cur.tex_coords[0] = at(TEXTURE_COORD_1 + t);
+            cur.inputs_mut().tex_coords[0] = at(TEXTURE_COORD_1 + t);
         }
         let p = at(pos);
-        self.renderer.vertex(p, &cur);
+        self.renderer.vertex_computed(p, &cur);
     }
 
     /// EvalCoord2's body (Mesa's `vbo_exec_do_EvalCoord2f`).
@@ -658,13 +658,13 @@ impl Context {
         };
         let mut cur = self.state.current;
         if e.map2[COLOR_4] {
-            cur.color = at(COLOR_4);
+            cur.inputs_mut().color = at(COLOR_4);
         }
         if e.map2[NORMAL] {
             cur.normal = at(NORMAL).truncate();
         }
         if let Some(t) = (0..4).rev().find(|&t| e.map2[TEXTURE_COORD_1 + t]) {
-            cur.tex_coords[0] = at(TEXTURE_COORD_1 + t);
+            cur.inputs_mut().tex_coords[0] = at(TEXTURE_COORD_1 + t);
         }
         let p = if e.auto_normal {
             let m = &maps[pos];
@@ -695,7 +695,7 @@ impl Context {
         } else {
             at(pos)
         };
-        self.renderer.vertex(p, &cur);
+        self.renderer.vertex_computed(p, &cur);
     }
 }
 

@@ -480,3 +480,34 @@ fn vector_forms_run_as_their_calls() {
         "the recording lost the vector forms"
     );
 }
+
+/// Begin's inlined path (the window's framebuffer, no share group) and its checked path
+/// (`begin_checked`) open the same primitives and raise the same errors.
+#[test]
+fn begin_checks_every_case_its_inlined_path_leaves_out() {
+    let mut c = ctx();
+    // The usual Begin: one primitive, no error.
+    c.begin(gl::TRIANGLES);
+    assert!(c.inside_begin_end());
+    // Begin inside Begin/End.
+    c.begin(gl::POINTS);
+    c.end();
+    assert_eq!(c.get_error(), gl::INVALID_OPERATION);
+    // A mode past POLYGON.
+    c.begin(gl::POLYGON + 1);
+    assert!(!c.inside_begin_end());
+    assert_eq!(c.get_error(), gl::INVALID_ENUM);
+    // An incomplete framebuffer object bound (no attachment): refused, no primitive.
+    let mut fb = [0];
+    c.gen_framebuffers(1, &mut fb);
+    c.bind_framebuffer(gl::FRAMEBUFFER, fb[0]);
+    c.begin(gl::TRIANGLES);
+    assert!(!c.inside_begin_end());
+    assert_eq!(c.get_error(), gl::INVALID_FRAMEBUFFER_OPERATION);
+    // The window's again: the inlined path.
+    c.bind_framebuffer(gl::FRAMEBUFFER, 0);
+    c.begin(gl::TRIANGLES);
+    assert!(c.inside_begin_end());
+    c.end();
+    assert_eq!(c.get_error(), gl::NO_ERROR);
+}

@@ -21,7 +21,7 @@ impl Context {
         if unit >= MAX_TEXTURE_UNITS {
             return self.error(gl::INVALID_ENUM);
         }
-        if let Some(slot) = self.state.current.tex_coords.get_mut(unit) {
+        if let Some(slot) = self.state.current.inputs_mut().tex_coords.get_mut(unit) {
             *slot = t;
         }
     }

@@ -179,7 +179,7 @@ impl Context {
     /// it (GL 2.1 §2.14.3). The renderer colours its vertices from `current`, so no flush.
     #[inline]
     fn set_color(&mut self, c: Vec4) {
-        self.state.current.color = c;
+        self.state.current.inputs_mut().color = c;
         if self.state.enables.color_material {
             self.track_color_material();
         }
@@ -188,18 +188,18 @@ impl Context {
     #[inline]
     fn set_secondary_color(&mut self, c: Vec3) {
         // GL 2.1 §2.7: SecondaryColor3 leaves alpha at 1.
-        self.state.current.secondary_color = c.extend(1.0);
+        self.state.current.inputs_mut().secondary_color = c.extend(1.0);
     }
 
     /// `TexCoord*` sets texture unit 0's coordinates (GL 2.1 §2.7; MultiTexCoord sets the others).
     #[inline]
     fn set_tex_coord(&mut self, t: Vec4) {
-        self.state.current.tex_coords[0] = t;
+        self.state.current.inputs_mut().tex_coords[0] = t;
     }
 
     #[inline]
     fn set_fog_coord(&mut self, f: f32) {
-        self.state.current.fog_coord = f;
+        self.state.current.inputs_mut().fog_coord = f;
     }
 
     /// `Index*` sets CURRENT_INDEX (GL 2.1 §2.7): the value as it is, unnormalised, as Mesa
@@ -316,14 +316,14 @@ impl Context {
     #[inline]
     pub fn edge_flag(&mut self, flag: bool) {
         record!(self, Call::EdgeFlag(flag));
-        self.state.current.edge_flag = flag;
+        self.state.current.inputs_mut().edge_flag = flag;
     }
 
     /// `glEdgeFlagv`.
     #[inline]
     pub fn edge_flagv(&mut self, flag: &[bool; 1]) {
         record!(self, Call::EdgeFlagv(*flag));
-        self.state.current.edge_flag = flag1(*flag);
+        self.state.current.inputs_mut().edge_flag = flag1(*flag);
     }
 }
 

@@ -11,7 +11,8 @@
 //! random set for every vertex is the front end's costliest, so the table is kept small), and a
 //! candidate is confirmed against the batch's own position and normal arrays, whose recent
 //! entries are warm; the other inputs (colours, texture coordinates, fog coordinate, edge flag,
-//! material), which rarely change inside a mesh, are compared only with the previous vertex's:
+//! material), which rarely change inside a mesh, are compared only with the previous vertex's
+//! (and then only their stamps, unless one of them was written since: see `state::Current`):
 //! a run of vertices with the same such inputs forms a span, and a hit counts only inside the
 //! current span. The span is also the unit of storage: its colours, texture coordinates and fog
 //! coordinate are stored once (`spans`), and a unique vertex stores its position, normal, edge
@@ -23,7 +24,7 @@
 
 use glam::{Vec3, Vec4};
 
-use crate::state::{Current, Material, MAX_TEXTURE_UNITS};
+use crate::state::{Current, Inputs, Material, MAX_TEXTURE_UNITS};
 
 /// One Begin/End pair: `count` entries of `Batch::idx` from `first`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,36 +75,6 @@ fn set_of(pos: [u32; 4], normal: [u32; 3]) -> usize {
     (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 52) as usize & (SETS - 1)
 }
 
-/// Whether the batched inputs of `a` other than position and normal (colours, every unit's
-/// texture coordinates, fog coordinate, edge flag) have the bits of `b`'s: equal bits,
-/// identical inputs (NaNs with equal bits are equal, -0 and 0 differ). Every batched input
-/// other than position, normal and material must be compared here, or vertices would be
-/// wrongly shared. Both sides are `Current`s, so the fields compared lie in the same order
-/// on both: a few vector loads and compares, without branches and without copying either.
-#[inline(always)]
-fn same_inputs(a: &Current, b: &Current) -> bool {
-    let bits = |v: &Vec4| v.to_array().map(f32::to_bits);
-    let [a0, a1, a2, a3] = &a.tex_coords;
-    let [b0, b1, b2, b3] = &b.tex_coords;
-    let pairs = [
-        (&a.color, &b.color),
-        (&a.secondary_color, &b.secondary_color),
-        (a0, b0),
-        (a1, b1),
-        (a2, b2),
-        (a3, b3),
-    ];
-    let mut d = a.fog_coord.to_bits() ^ b.fog_coord.to_bits();
-    d |= u32::from(a.edge_flag ^ b.edge_flag);
-    for (x, y) in pairs {
-        let (x, y) = (bits(x), bits(y));
-        for k in 0..4 {
-            d |= x[k] ^ y[k];
-        }
-    }
-    d == 0
-}
-
 /// The inputs a span of vertices shares besides its edge flag and material (which stay per
 /// vertex for assembly and setup).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,7 +121,8 @@ pub struct Batch {
     span: u64,
     /// The inputs of the vertex that started the current span: its colours, texture
     /// coordinates, fog coordinate and edge flag are those of every batched vertex from
-    /// `span` on (the last entry of `spans`; its position and normal are not used).
+    /// `span` on (the last entry of `spans`; its position and normal are not used), and its
+    /// stamp that of the latest such vertex (`Current::same_inputs_as`).
     span_in: Current,
     /// The material index of every batched vertex from `span` on.
     span_mat: u32,
@@ -186,14 +158,17 @@ impl Default for Batch {
             cache: Box::new([Set([EMPTY; 2]); SETS]),
             serial0: 0,
             span: 0,
-            span_in: Current {
-                color: Vec4::ZERO,
-                secondary_color: Vec4::ZERO,
-                tex_coords: [Vec4::ZERO; MAX_TEXTURE_UNITS],
-                fog_coord: 0.0,
-                edge_flag: false,
-                ..Current::default()
-            },
+            span_in: Current::new(
+                Inputs {
+                    color: Vec4::ZERO,
+                    secondary_color: Vec4::ZERO,
+                    tex_coords: [Vec4::ZERO; MAX_TEXTURE_UNITS],
+                    fog_coord: 0.0,
+                    edge_flag: false,
+                },
+                Vec3::ZERO,
+                0.0,
+            ),
             span_mat: 0,
             pos: Vec::new(),
             normal: Vec::new(),
@@ -232,21 +207,41 @@ impl Batch {
 
     /// Appends a vertex with the current attributes to the open primitive (the caller has
     /// opened one: `Context::vertex` draws nothing outside Begin/End). The primitive's count
-    /// is taken at `end`.
+    /// is taken at `end`. For `c` in memory, such as the state's current values: the front end
+    /// stores the normal's components one by one (`Normal3f`), and loading two of them as one
+    /// wider word would stall store forwarding for ~15 cycles, so each is read on its own (a
+    /// volatile load keeps the compiler from merging them; `black_box` did too, but through a
+    /// store and a reload of each), and the hash mixes 32-bit words.
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
+        let n = &c.normal;
+        let normal = [&n.x, &n.y, &n.z].map(|v| {
+            // SAFETY: `v` is a reference to an f32, readable as the u32 of its size and
+            // alignment.
+            unsafe { std::ptr::read_volatile(std::ptr::from_ref(v).cast::<u32>()) }
+        });
+        self.vertex_with(position, normal, c);
+    }
+
+    /// [`Batch::vertex`] for values the caller has just computed, such as an evaluator's
+    /// vertex: the normal is read as the compiler likes (a volatile load would make it keep
+    /// the whole `Current` in memory, about 35 instructions more a vertex there).
+    #[inline(always)]
+    pub fn vertex_computed(&mut self, position: Vec4, c: &Current) {
+        self.vertex_with(position, c.normal.to_array().map(f32::to_bits), c);
+    }
+
+    /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
+    #[inline(always)]
+    fn vertex_with(&mut self, position: Vec4, normal: [u32; 3], c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
-        if !same_inputs(c, &self.span_in) || self.cur_mat != self.span_mat {
+        // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
+        // instead of 25 floats and the edge flag.
+        if !self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat {
             self.new_span(c, serial);
         }
         let pos = position.to_array().map(f32::to_bits);
-        // The front end stores the normal's components one by one (`Normal3f`); loading two of
-        // them as one wider word would stall store forwarding for ~15 cycles, so each is read
-        // on its own (`black_box` keeps the compiler from merging the loads), and the hash
-        // mixes 32-bit words.
-        let n = &c.normal;
-        let normal = [n.x, n.y, n.z].map(|v| std::hint::black_box(v).to_bits());
         let set = set_of(pos, normal);
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
         if let (Some(Set(ways)), Ok(serial)) = (self.cache.get_mut(set), u32::try_from(serial)) {
@@ -385,14 +380,14 @@ mod tests {
         b.begin(gl::TRIANGLES);
         let mut c = Current::default();
         for &(x, red) in vertices {
-            c.color.x = red;
+            c.inputs_mut().color.x = red;
             b.vertex(Vec4::new(x, 0.0, 0.0, 1.0), &c);
         }
         b.end();
         b.idx.clone()
     }
 
-    /// The inputs a span shares, as bits (the reference for `same_inputs`): 25 floats and
+    /// The inputs a span shares, as bits (the reference for `Inputs::same_bits`): 25 floats and
     /// the edge flag.
     fn span_bits(c: &Current) -> Vec<u32> {
         let t = c.tex_coords;
@@ -406,7 +401,7 @@ mod tests {
     }
 
     #[test]
-    fn same_inputs_is_equal_bits_of_the_span_inputs() {
+    fn same_bits_is_equal_bits_of_the_span_inputs() {
         let mut g = crate::cpu::testgen::Gen(5);
         let (mut same, mut differ) = (0, 0);
         for _ in 0..20_000 {
@@ -418,18 +413,20 @@ mod tests {
             let mut edge = g.next() % 2 == 0;
             let make = |f: &[f32; 30], edge: bool| {
                 let v4 = |i: usize| Vec4::new(f[i], f[i + 1], f[i + 2], f[i + 3]);
-                Current {
-                    color: v4(0),
-                    secondary_color: v4(4),
-                    tex_coords: [v4(8), v4(12), v4(16), v4(20)],
-                    fog_coord: f[24],
-                    edge_flag: edge,
-                    normal: Vec3::new(f[25], f[26], f[27]),
-                    index: f[28],
-                }
+                Current::new(
+                    Inputs {
+                        color: v4(0),
+                        secondary_color: v4(4),
+                        tex_coords: [v4(8), v4(12), v4(16), v4(20)],
+                        fog_coord: f[24],
+                        edge_flag: edge,
+                    },
+                    Vec3::new(f[25], f[26], f[27]),
+                    f[28],
+                )
             };
             let a = make(&f, edge);
-            assert!(same_inputs(&a, &a) == (span_bits(&a) == span_bits(&a)));
+            assert!(a.same_bits(&a) == (span_bits(&a) == span_bits(&a)));
             // One input changed (now and then to the same bits, or -0 for 0, NaN for NaN).
             let k = (g.next() % 30) as usize;
             if k == 29 {
@@ -443,8 +440,8 @@ mod tests {
             }
             let b = make(&f, edge);
             let want = span_bits(&a) == span_bits(&b);
-            assert_eq!(same_inputs(&a, &b), want, "input {k}");
-            assert_eq!(same_inputs(&b, &a), want, "input {k}");
+            assert_eq!(a.same_bits(&b), want, "input {k}");
+            assert_eq!(b.same_bits(&a), want, "input {k}");
             if want {
                 same += 1;
             } else {
@@ -452,6 +449,131 @@ mod tests {
             }
         }
         assert!(same > 1000 && differ > 1000, "{same} same, {differ} differ");
+    }
+
+    /// The indices of the vertices at the origin given before and after `write` (inside one
+    /// POINTS pair, unless `write` ends it), and the attributes and edge flag of the last
+    /// unique vertex batched.
+    fn around(write: impl FnOnce(&mut crate::Context)) -> (Vec<u32>, Attribs, bool) {
+        let mut c = crate::Context::new(4, 4).unwrap_or_else(|e| panic!("{e}"));
+        // A colour array alone, for ArrayElement (set up outside the pair, with no effect on
+        // the other writers).
+        let v = [0.5f32, 0.25, 0.125, 1.0];
+        c.color_pointer(4, gl::FLOAT, 0, &v);
+        c.enable_client_state(gl::COLOR_ARRAY);
+        c.begin(gl::POINTS);
+        c.vertex3f(0.0, 0.0, 0.0);
+        write(&mut c);
+        if !c.inside_begin_end() {
+            c.begin(gl::POINTS);
+        }
+        c.vertex3f(0.0, 0.0, 0.0);
+        c.end();
+        let b = &c.renderer.batch;
+        let last = b.len() - 1;
+        let (attribs, edge) = (b.attribs(last).copied(), b.edge.get(last).copied());
+        (
+            b.idx.clone(),
+            attribs.expect("a span"),
+            edge.expect("an edge flag"),
+        )
+    }
+
+    #[test]
+    fn every_writer_of_the_span_inputs_starts_a_span() {
+        let v = Vec4::new(0.5, 0.25, 0.125, 1.0);
+        // Inside Begin/End: the vertex after the write is a new one, with the new value.
+        type Write = fn(&mut crate::Context);
+        type Check = fn(&Attribs, bool) -> bool;
+        let inside: [(&str, Write, Check); 7] = [
+            (
+                "Color",
+                |c| c.color4f(0.5, 0.25, 0.125, 1.0),
+                |a, _| a.color == Vec4::new(0.5, 0.25, 0.125, 1.0),
+            ),
+            (
+                "SecondaryColor",
+                |c| c.secondary_color3f(0.5, 0.25, 0.125),
+                |a, _| a.color2 == Vec4::new(0.5, 0.25, 0.125, 1.0),
+            ),
+            (
+                "TexCoord",
+                |c| c.tex_coord2f(0.5, 0.25),
+                |a, _| a.tex[0] == Vec4::new(0.5, 0.25, 0.0, 1.0),
+            ),
+            (
+                "MultiTexCoord",
+                |c| c.multi_tex_coord2f(gl::TEXTURE2, 0.5, 0.25),
+                |a, _| a.tex[2] == Vec4::new(0.5, 0.25, 0.0, 1.0),
+            ),
+            ("FogCoord", |c| c.fog_coordf(0.5), |a, _| a.fog == 0.5),
+            ("EdgeFlag", |c| c.edge_flag(false), |_, e| !e),
+            (
+                "ArrayElement",
+                |c| c.array_element(0),
+                |a, _| a.color == Vec4::new(0.5, 0.25, 0.125, 1.0),
+            ),
+        ];
+        for (name, write, check) in inside {
+            let (idx, a, e) = around(write);
+            assert_eq!(idx, [0, 1], "{name}");
+            assert!(check(&a, e), "{name}: {a:?} {e}");
+        }
+        // An evaluator's vertex at the origin with its own colour.
+        let (idx, a, _) = around(|c| {
+            c.end();
+            c.map1f(gl::MAP1_VERTEX_3, 0.0, 1.0, 3, 1, &[0.0; 3]);
+            c.map1f(gl::MAP1_COLOR_4, 0.0, 1.0, 4, 1, &v.to_array());
+            c.enable(gl::MAP1_VERTEX_3);
+            c.enable(gl::MAP1_COLOR_4);
+            c.begin(gl::POINTS);
+            c.eval_coord1f(0.5);
+        });
+        // (Map1 and Enable flush: the evaluator's vertex is the new batch's 0, and the last, 1,
+        // has the current colour again.)
+        assert_eq!(idx, [0, 1], "EvalCoord");
+        assert_eq!(a.color, Vec4::ONE, "EvalCoord");
+        // PopAttrib (a flush between): the restored colour, whose stamp is older than the
+        // span's.
+        let (_, a, _) = around(|c| {
+            c.end();
+            c.color4f(0.5, 0.25, 0.125, 1.0);
+            c.push_attrib(gl::CURRENT_BIT);
+            c.color4f(0.0, 1.0, 0.0, 1.0);
+            c.begin(gl::POINTS);
+            c.vertex3f(1.0, 0.0, 0.0);
+            c.end();
+            c.pop_attrib();
+        });
+        assert_eq!(a.color, v, "PopAttrib");
+        // A write of the value already there: the vertex is shared, as when only the inputs
+        // were compared.
+        let (idx, ..) = around(|c| c.color4f(1.0, 1.0, 1.0, 1.0));
+        assert_eq!(idx, [0, 0]);
+    }
+
+    #[test]
+    fn values_written_on_two_threads_never_share_a_stamp() {
+        // Each thread's first write: a scheme counting per thread from the same start would
+        // give both the same stamp, and the batch would take the second's inputs for the
+        // first's.
+        let write = |red: f32| {
+            std::thread::spawn(move || {
+                let mut c = Current::default();
+                c.inputs_mut().color.x = red;
+                c
+            })
+            .join()
+            .unwrap_or_else(|_| panic!("thread"))
+        };
+        let (mut a, b) = (write(0.25), write(0.5));
+        assert!(!a.same_inputs_as(&b));
+        // The same inputs with another stamp: the same, and from then on at once.
+        let mut c = b;
+        c.inputs_mut().color.x = 0.5;
+        assert!(c.same_inputs_as(&b));
+        let d = a;
+        assert!(a.same_inputs_as(&d));
     }
 
     #[test]
@@ -485,18 +607,19 @@ mod tests {
         let mut b = Batch::default();
         b.begin(gl::POINTS);
         // Every input zero: the batch's initial span, whose values must be the zeros too.
-        let mut c = Current {
+        let mut c = Current::default();
+        *c.inputs_mut() = Inputs {
             color: Vec4::ZERO,
             secondary_color: Vec4::ZERO,
             tex_coords: [Vec4::ZERO; crate::state::MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
             edge_flag: false,
-            ..Default::default()
         };
         b.vertex(Vec4::new(0.0, 0.0, 0.0, 1.0), &c);
-        c.tex_coords[0] = Vec4::new(0.25, 0.5, 0.0, 1.0);
+        c.inputs_mut().tex_coords[0] = Vec4::new(0.25, 0.5, 0.0, 1.0);
         b.vertex(Vec4::new(1.0, 0.0, 0.0, 1.0), &c);
-        c.color = Vec4::new(0.5, 0.0, 0.0, 1.0);
-        c.fog_coord = 2.0;
+        c.inputs_mut().color = Vec4::new(0.5, 0.0, 0.0, 1.0);
+        c.inputs_mut().fog_coord = 2.0;
         b.vertex(Vec4::new(2.0, 0.0, 0.0, 1.0), &c);
         b.vertex(Vec4::new(3.0, 0.0, 0.0, 1.0), &c);
         b.end();
@@ -547,7 +670,7 @@ mod tests {
         // b2 evicts 0 (the older): b1 is still found, 0 is stored again (an exact copy).
         b.begin(gl::TRIANGLES);
         let mut cur = Current::default();
-        cur.color.x = 1.0;
+        cur.inputs_mut().color.x = 1.0;
         for x in [b2, b1, 0.0] {
             b.vertex(Vec4::new(x, 0.0, 0.0, 1.0), &cur);
         }

@@ -436,6 +436,12 @@ impl Renderer {
         self.batch.vertex(position, current);
     }
 
+    /// A vertex with attributes the caller computed ([`Batch::vertex_computed`]).
+    #[inline]
+    pub fn vertex_computed(&mut self, position: Vec4, current: &Current) {
+        self.batch.vertex_computed(position, current);
+    }
+
     /// `End`.
     pub fn end(&mut self) {
         self.batch.end();

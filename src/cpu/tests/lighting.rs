@@ -721,8 +721,8 @@ fn both_routes_process_the_same_bits() {
                 pick(&mut rng, -1.0, 1.0),
             );
             let mut c = cur(rng.vec3(0.0, 1.0).extend(rng.next()), nrm);
-            c.tex_coords[0] = rng.vec3(-1.0, 1.0).extend(1.0);
-            c.fog_coord = rng.range(0.0, 5.0);
+            c.inputs_mut().tex_coords[0] = rng.vec3(-1.0, 1.0).extend(1.0);
+            c.inputs_mut().fog_coord = rng.range(0.0, 5.0);
             b.vertex(p, &c);
         }
         b.end();
@@ -810,10 +810,8 @@ fn a_lit_batch_split_across_the_pool_is_the_whole_batch_bit_for_bit() {
             m[FRONT].diffuse = Vec4::new(0.1, 0.8, 0.3, 1.0);
             b.materials_changed(&m);
         }
-        let c = Current {
-            normal: rng.vec3(-1.0, 1.0),
-            ..Current::default()
-        };
+        let mut c = Current::default();
+        c.normal = rng.vec3(-1.0, 1.0);
         b.vertex(rng.vec3(-2.0, 2.0).extend(1.0), &c);
     }
     b.end();

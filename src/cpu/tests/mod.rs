@@ -23,11 +23,10 @@ pub(super) fn setup(w: u32, h: u32) -> (Renderer, State) {
 
 /// Current attributes with colour `c` and normal `n`.
 pub(super) fn cur(c: Vec4, n: Vec3) -> Current {
-    Current {
-        color: c,
-        normal: n,
-        ..Current::default()
-    }
+    let mut k = Current::default();
+    k.inputs_mut().color = c;
+    k.normal = n;
+    k
 }
 
 /// Draws one Begin/End of `mode` with vertices `(x, y, z, colour)`, normal (0, 0, 1), and flushes.

@@ -315,7 +315,7 @@ fn polygon_mode_line_and_point() {
     r.begin(gl::TRIANGLES);
     for (i, p) in tri.iter().enumerate() {
         let mut c = cur(WHITE, Vec3::Z);
-        c.edge_flag = i != 1;
+        c.inputs_mut().edge_flag = i != 1;
         r.vertex(Vec4::new(p[0], p[1], 0.0, 1.0), &c);
     }
     r.end();

@@ -86,13 +86,12 @@ fn both_routes_set_up_the_same_primitives() {
                     rng.range(-1.0, 2.9) * if rng.next() < 0.1 { 2.0 } else { 1.0 },
                     1.0,
                 );
-                let c = Current {
-                    color: Vec4::new(rng.next(), rng.next(), rng.next(), rng.next()),
-                    normal: Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0),
-                    tex_coords: [Vec4::new(rng.next(), rng.next(), 0.0, 1.0); 4],
-                    edge_flag: rng.next() < 0.8,
-                    ..Current::default()
-                };
+                // (The random values drawn in the order they always were.)
+                let mut c = Current::default();
+                c.inputs_mut().color = Vec4::new(rng.next(), rng.next(), rng.next(), rng.next());
+                c.normal = Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0);
+                c.inputs_mut().tex_coords = [Vec4::new(rng.next(), rng.next(), 0.0, 1.0); 4];
+                c.inputs_mut().edge_flag = rng.next() < 0.8;
                 b.vertex(p, &c);
             }
             b.end();
