@@ -290,7 +290,7 @@ impl Default for Enables {
 /// display list's or an array draw's restore, an evaluator's own copy): the batch then knows a
 /// vertex's inputs are its span's with one compare instead of 25 floats. The compiler enforces
 /// the rule: the fields are private, so a writer that forgets the stamp does not build.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct Current {
     inputs: Inputs,
     /// See the type's docs; 0 for the initial values (`Default`), which are all the same.
@@ -334,6 +334,30 @@ impl std::ops::Deref for Current {
     #[inline(always)]
     fn deref(&self) -> &Inputs {
         &self.inputs
+    }
+}
+
+/// The values, without the stamp (as `PartialEq` compares them): two equal values print alike
+/// whatever wrote them, NaNs included, which is how state comparisons (the soak test's) tell
+/// equal states from different ones.
+impl std::fmt::Debug for Current {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let Inputs {
+            color,
+            secondary_color,
+            tex_coords,
+            fog_coord,
+            edge_flag,
+        } = &self.inputs;
+        f.debug_struct("Current")
+            .field("color", color)
+            .field("secondary_color", secondary_color)
+            .field("normal", &self.normal)
+            .field("tex_coords", tex_coords)
+            .field("fog_coord", fog_coord)
+            .field("edge_flag", edge_flag)
+            .field("index", &self.index)
+            .finish()
     }
 }
 
@@ -1015,5 +1039,31 @@ impl Default for Stipple {
             line_repeat: 1,
             polygon: [u32::MAX; 32],
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two values of the inputs written apart (so with different stamps) are equal and print
+    /// alike, NaNs included: the stamp is not part of the value.
+    #[test]
+    fn the_stamp_is_not_part_of_the_value() {
+        let (mut a, mut b) = (Current::default(), Current::default());
+        a.inputs_mut().color = Vec4::new(f32::NAN, 0.5, 0.25, 1.0);
+        b.inputs_mut().color = Vec4::new(f32::NAN, 0.5, 0.25, 1.0);
+        assert_ne!(a.stamp, b.stamp);
+        assert_eq!(format!("{a:?}"), format!("{b:?}"));
+        a.inputs_mut().fog_coord = 1.0;
+        b.inputs_mut().fog_coord = 1.0;
+        a.normal = Vec3::X;
+        b.normal = Vec3::X;
+        a.inputs_mut().color = Vec4::ONE;
+        b.inputs_mut().color = Vec4::ONE;
+        assert_eq!(a, b);
+        b.inputs_mut().edge_flag = false;
+        assert_ne!(a, b);
+        assert_ne!(format!("{a:?}"), format!("{b:?}"));
     }
 }
