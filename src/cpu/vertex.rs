@@ -710,7 +710,7 @@ impl Lit<'_> {
             unsafe { self.run_avx2(first, out, wins) };
             return;
         }
-        self.body(first, out, wins);
+        self.body::<false>(first, out, wins);
     }
 
     /// [`Lit::body`] compiled with AVX2: its lane loops on eight `f32` lanes a vector.
@@ -720,16 +720,18 @@ impl Lit<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     unsafe fn run_avx2(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
-        self.body(first, out, wins);
+        self.body::<true>(first, out, wins);
     }
 
     /// Processes the vertices from `first` into `out` and `wins`, one block of [`LANES`] at a
     /// time in a single pass: transforms on a structure of arrays, window coordinates and clip
-    /// codes from the clip positions in hand, the other attributes, then lighting.
+    /// codes from the clip positions in hand, the other attributes, then lighting. `AVX2`: the
+    /// body is compiled inside `run_avx2` (so on a CPU with AVX2), where a whole lit block's
+    /// outputs are written through `lanes::put_clip_col_avx2`.
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn body(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+    fn body<const AVX2: bool>(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
@@ -782,13 +784,21 @@ impl Lit<'_> {
             let (Some(q0), Some(m0)) = (pos.first(), nin.first()) else {
                 return;
             };
-            if cnt < LANES {
-                p = Lanes4::splat(*q0);
-                nr = Lanes3::splat(*m0);
-            }
-            for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
-                (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
-                (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
+            // A whole block on AVX2: transposed in registers (`lanes::load_block_avx2`).
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `AVX2` is true only in `run_avx2`, which runs where the CPU has AVX2.
+            let loaded = AVX2 && unsafe { lanes::load_block_avx2(pos, nin, &mut p, &mut nr) };
+            #[cfg(not(target_arch = "x86_64"))]
+            let loaded = false;
+            if !loaded {
+                if cnt < LANES {
+                    p = Lanes4::splat(*q0);
+                    nr = Lanes3::splat(*m0);
+                }
+                for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
+                    (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
+                    (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
+                }
             }
             let eye = p.transform(&tf.mv);
             let clip = eye.transform(&tf.proj);
@@ -868,15 +878,31 @@ impl Lit<'_> {
             }
             // The clip (and eye) position, and the lit colours (`extras` wrote the unlit ones).
             let lit_on = self.lighting.is_some();
-            for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
-                put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
-                if let Some(o_eye) = l.eye {
-                    put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
-                }
-                if lit_on {
-                    lit.put(k, o, l.col, l.spec);
-                    if let Some(cb) = l.col_b {
-                        lit_b.put(k, o, cb, l.spec_b);
+            // A whole lit block on AVX2: the clip positions and primary colours (the first
+            // eight floats of each vertex) transposed in registers, the rest below.
+            #[cfg(target_arch = "x86_64")]
+            let wrote = AVX2
+                && lit_on
+                && cnt == LANES
+                && l.col == 4
+                // SAFETY: `AVX2` is true only in `run_avx2`, which runs where the CPU has AVX2.
+                && unsafe { lanes::put_clip_col_avx2(os, l.stride, &clip, &lit.c, &lit.a) };
+            #[cfg(not(target_arch = "x86_64"))]
+            let wrote = false;
+            let rest = l.eye.is_some() || l.spec.is_some() || l.col_b.is_some();
+            if !wrote || rest {
+                for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
+                    if !wrote {
+                        put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
+                    }
+                    if let Some(o_eye) = l.eye {
+                        put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
+                    }
+                    if lit_on {
+                        lit.put(k, o, (!wrote).then_some(l.col), l.spec);
+                        if let Some(cb) = l.col_b {
+                            lit_b.put(k, o, Some(cb), l.spec_b);
+                        }
                     }
                 }
             }
