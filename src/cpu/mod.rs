@@ -1105,14 +1105,22 @@ fn setup_by_primitives(
         }
         return;
     }
-    // Cut points: the first primitive starting at or after each k·count/nw vertices.
+    // Cut points: the first primitive starting at or after each k·count/nw vertices. The
+    // threshold is computed when k moves on, not for each primitive (a multiplication and a
+    // division for each of a dense mesh's 160k strips), and the walk stops at the last cut.
     let first = prims.first().map_or(0, |p| p.first as usize);
     let mut cuts = [0usize; 33];
     let mut k = 1;
+    // (`nw` is not 0 here: none would return above; `max` keeps the division safe regardless.)
+    let mut at = count / nw.max(1);
     for (i, p) in prims.iter().enumerate() {
-        while k < nw && p.first as usize - first >= k * count / nw {
+        if k >= nw {
+            break;
+        }
+        while k < nw && p.first as usize - first >= at {
             cuts[k] = i;
             k += 1;
+            at = k * count / nw;
         }
     }
     for c in cuts.iter_mut().take(nw + 1).skip(k) {
