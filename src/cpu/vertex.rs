@@ -446,33 +446,25 @@ impl Lighting {
                 }
             }
             powf_lanes(&ndh, shininess, need, &mut pw);
-            // Branch-free so that it vectorises: every term is computed, then selected.
-            let sep = self.separate;
-            for i in 0..N {
-                let lit = ndl[i] > 0.0;
-                let d = pw[i];
-                let sx = d * ls.x * scm.x[i];
-                let sy = d * ls.y * scm.y[i];
-                let sz = d * ls.z * scm.z[i];
-                // term = a (+ (N·L)·d (+ s unless separate)) where N·L > 0.
-                let ax = la.x * acm.x[i];
-                let ay = la.y * acm.y[i];
-                let az = la.z * acm.z[i];
-                let (lx, ly, lz) = if sep {
-                    (ad.x[i], ad.y[i], ad.z[i])
-                } else {
-                    (ad.x[i] + sx, ad.y[i] + sy, ad.z[i] + sz)
-                };
-                let (tx, ty, tz) = if lit { (lx, ly, lz) } else { (ax, ay, az) };
-                let k = kf[i];
-                let on = on[i];
-                c.x[i] = if on { c.x[i] + k * tx } else { c.x[i] };
-                c.y[i] = if on { c.y[i] + k * ty } else { c.y[i] };
-                c.z[i] = if on { c.z[i] + k * tz } else { c.z[i] };
-                let add = on && lit && sep;
-                s.x[i] = if add { s.x[i] + k * sx } else { s.x[i] };
-                s.y[i] = if add { s.y[i] + k * sy } else { s.y[i] };
-                s.z[i] = if add { s.z[i] + k * sz } else { s.z[i] };
+            // Branch-free so that it vectorises: every term is computed, then selected; the
+            // loop compiled for the light's case (`accumulate`).
+            let plain = l.spot_cos.is_none() && (!l.positional || l.no_att);
+            let t = Terms {
+                ndl: &ndl,
+                pw: &pw,
+                ad: &ad,
+                acm: &acm,
+                scm: &scm,
+                la,
+                ls,
+                kf: &kf,
+                on: &on,
+            };
+            match (self.separate, plain) {
+                (false, true) => t.accumulate::<false, true>(&mut c, &mut s),
+                (false, false) => t.accumulate::<false, false>(&mut c, &mut s),
+                (true, true) => t.accumulate::<true, true>(&mut c, &mut s),
+                (true, false) => t.accumulate::<true, false>(&mut c, &mut s),
             }
         }
         // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
@@ -481,9 +473,81 @@ impl Lighting {
             out.c.y[i] = clamp01(c.y[i]);
             out.c.z[i] = clamp01(c.z[i]);
             out.a[i] = clamp01(alpha[i]);
-            out.s.x[i] = clamp01(s.x[i]);
-            out.s.y[i] = clamp01(s.y[i]);
-            out.s.z[i] = clamp01(s.z[i]);
+        }
+        if self.separate {
+            for i in 0..N {
+                out.s.x[i] = clamp01(s.x[i]);
+                out.s.y[i] = clamp01(s.y[i]);
+                out.s.z[i] = clamp01(s.z[i]);
+            }
+        } else {
+            // Without SEPARATE_SPECULAR_COLOR the secondary sum stays +0, which the clamp keeps.
+            out.s = s;
+        }
+    }
+}
+
+/// One light's terms across `N` points, for [`Terms::accumulate`]: N·L, the specular powers
+/// (0 where `powf` was skipped), the ambient and diffuse parts a + (N·L)·d, the ambient and
+/// specular material colours, the light's ambient and specular colours, the attenuation and
+/// spot factor, and whether the light reaches each point (inside its spot cone).
+struct Terms<'a, const N: usize> {
+    ndl: &'a [f32; N],
+    pw: &'a [f32; N],
+    ad: &'a Lanes3<N>,
+    acm: &'a Lanes3<N>,
+    scm: &'a Lanes3<N>,
+    la: Vec3A,
+    ls: Vec3A,
+    kf: &'a [f32; N],
+    on: &'a [bool; N],
+}
+
+impl<const N: usize> Terms<'_, N> {
+    /// Adds the light's term to the primary sums `c` (and its specular part to the secondary
+    /// sums `s` under SEPARATE_SPECULAR_COLOR, `SEP`). `PLAIN`: a light without attenuation or
+    /// spot, whose factor is 1 and which reaches every point, adds its term as it is: 1·t is t
+    /// bit for bit (t is the result of arithmetic, so a NaN there is quiet and kept), and the
+    /// selection by `on` keeps the sum. Without `SEP` the secondary sums are left alone (they
+    /// stay zero), where they took a product, a sum and a selection a component.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    fn accumulate<const SEP: bool, const PLAIN: bool>(&self, c: &mut Lanes3<N>, s: &mut Lanes3<N>) {
+        let (la, ls, acm, scm, ad) = (self.la, self.ls, self.acm, self.scm, self.ad);
+        for i in 0..N {
+            let lit = self.ndl[i] > 0.0;
+            let d = self.pw[i];
+            let sx = d * ls.x * scm.x[i];
+            let sy = d * ls.y * scm.y[i];
+            let sz = d * ls.z * scm.z[i];
+            // term = a (+ (N·L)·d (+ s unless separate)) where N·L > 0.
+            let ax = la.x * acm.x[i];
+            let ay = la.y * acm.y[i];
+            let az = la.z * acm.z[i];
+            let (lx, ly, lz) = if SEP {
+                (ad.x[i], ad.y[i], ad.z[i])
+            } else {
+                (ad.x[i] + sx, ad.y[i] + sy, ad.z[i] + sz)
+            };
+            let (tx, ty, tz) = if lit { (lx, ly, lz) } else { (ax, ay, az) };
+            let k = self.kf[i];
+            let on = self.on[i];
+            if PLAIN {
+                c.x[i] += tx;
+                c.y[i] += ty;
+                c.z[i] += tz;
+            } else {
+                c.x[i] = if on { c.x[i] + k * tx } else { c.x[i] };
+                c.y[i] = if on { c.y[i] + k * ty } else { c.y[i] };
+                c.z[i] = if on { c.z[i] + k * tz } else { c.z[i] };
+            }
+            if SEP {
+                let add = on && lit;
+                s.x[i] = if add { s.x[i] + k * sx } else { s.x[i] };
+                s.y[i] = if add { s.y[i] + k * sy } else { s.y[i] };
+                s.z[i] = if add { s.z[i] + k * sz } else { s.z[i] };
+            }
         }
     }
 }
