@@ -886,19 +886,24 @@ impl Core {
         // with the batch.
         let prims = &batch.prims;
         let mut start = 0;
-        while start < prims.len() {
-            let mut end = start;
-            let mut count = 0usize;
-            while let Some(p) = prims.get(end) {
-                if end > start && count + p.count as usize > PIECE {
+        while let Some((first, more)) = prims.get(start..).and_then(|r| r.split_first()) {
+            // The piece: its first primitive whatever its size, then those that keep it within
+            // PIECE vertices, its largest primitive found on the way (one walk over a dense
+            // mesh's 160k strips, without a range check or a second pass for the largest).
+            let mut count = first.count as usize;
+            let mut largest = count;
+            let mut end = start + 1;
+            for p in more {
+                let n = p.count as usize;
+                if count + n > PIECE {
                     break;
                 }
-                count += p.count as usize;
+                count += n;
+                largest = largest.max(n);
                 end += 1;
             }
             debug_assert!(end <= prims.len(), "piece past the primitive list");
             let piece = prims.get(start..end).unwrap_or(&[]);
-            let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if nw == 1 || largest <= count / nw {
                 let workers = self.scene.take(fi, nw);
                 setup_by_primitives(workers, &ctx, &v, piece, count);
