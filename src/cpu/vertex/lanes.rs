@@ -424,46 +424,54 @@ mod tests {
     use super::*;
     use crate::cpu::testgen::Gen;
 
+    /// Runs `test` with a generator seeded `seed` where the CPU has AVX2, which the kernels
+    /// compared here need (else a note).
+    #[cfg(target_arch = "x86_64")]
+    fn on_avx2(seed: u64, test: impl FnOnce(&mut Gen)) {
+        if is_x86_feature_detected!("avx2") {
+            test(&mut Gen(seed));
+        } else {
+            eprintln!("no AVX2 on this CPU: nothing to compare");
+        }
+    }
+
     /// `load_block_avx2` fills the structures of arrays as the stage's lane-by-lane copy does,
     /// bit for bit, from any of a longer batch's blocks, and loads nothing from fewer than
     /// `LANES` vertices.
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn block_load_transposition_is_the_copy() {
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: nothing to compare");
-            return;
-        }
-        let mut g = Gen(0x0b10_c4ed);
-        let bits = |v: &[f32]| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>();
-        for _ in 0..50 {
-            let len = LANES + (g.next() % 20) as usize;
-            let pos: Vec<Vec4> = (0..len)
-                .map(|_| Vec4::new(g.float(), g.float(), g.float(), g.float()))
-                .collect();
-            let nrm: Vec<Vec3> = (0..len)
-                .map(|_| Vec3::new(g.float(), g.float(), g.float()))
-                .collect();
-            let at = (g.next() as usize) % (len - LANES + 1);
-            let (ps, ns) = (&pos[at..], &nrm[at..]);
-            let (mut p, mut n) = (Lanes4::<LANES>::default(), Lanes3::splat(Vec3::ZERO));
-            // SAFETY: the CPU has AVX2 (checked above).
-            assert!(unsafe { load_block_avx2(ps, ns, &mut p, &mut n) });
-            for k in 0..LANES {
-                let (q, m) = (ps[k], ns[k]);
-                assert_eq!(
-                    bits(&[p.x[k], p.y[k], p.z[k], p.w[k], n.x[k], n.y[k], n.z[k]]),
-                    bits(&[q.x, q.y, q.z, q.w, m.x, m.y, m.z]),
-                    "vertex {k} of the block at {at}"
-                );
-            }
-            let (mut p2, mut n2) = (Lanes4::<LANES>::default(), Lanes3::splat(Vec3::ZERO));
-            // SAFETY: as above.
-            let short = unsafe { load_block_avx2(&ps[..LANES - 1], ns, &mut p2, &mut n2) }
+        on_avx2(0x0b10_c4ed, |g| {
+            let bits = |v: &[f32]| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>();
+            for _ in 0..50 {
+                let len = LANES + (g.next() % 20) as usize;
+                let pos: Vec<Vec4> = (0..len)
+                    .map(|_| Vec4::new(g.float(), g.float(), g.float(), g.float()))
+                    .collect();
+                let nrm: Vec<Vec3> = (0..len)
+                    .map(|_| Vec3::new(g.float(), g.float(), g.float()))
+                    .collect();
+                let at = (g.next() as usize) % (len - LANES + 1);
+                let (ps, ns) = (&pos[at..], &nrm[at..]);
+                let (mut p, mut n) = (Lanes4::<LANES>::default(), Lanes3::splat(Vec3::ZERO));
+                // SAFETY: the CPU has AVX2 (`on_avx2` runs this only there).
+                assert!(unsafe { load_block_avx2(ps, ns, &mut p, &mut n) });
+                for k in 0..LANES {
+                    let (q, m) = (ps[k], ns[k]);
+                    assert_eq!(
+                        bits(&[p.x[k], p.y[k], p.z[k], p.w[k], n.x[k], n.y[k], n.z[k]]),
+                        bits(&[q.x, q.y, q.z, q.w, m.x, m.y, m.z]),
+                        "vertex {k} of the block at {at}"
+                    );
+                }
+                let (mut p2, mut n2) = (Lanes4::<LANES>::default(), Lanes3::splat(Vec3::ZERO));
                 // SAFETY: as above.
-                || unsafe { load_block_avx2(ps, &ns[..LANES - 1], &mut p2, &mut n2) };
-            assert!(!short && p2.x.iter().chain(&n2.z).all(|&v| v == 0.0));
-        }
+                let short = unsafe { load_block_avx2(&ps[..LANES - 1], ns, &mut p2, &mut n2) }
+                    // SAFETY: as above.
+                    || unsafe { load_block_avx2(ps, &ns[..LANES - 1], &mut p2, &mut n2) };
+                assert!(!short && p2.x.iter().chain(&n2.z).all(|&v| v == 0.0));
+            }
+        });
     }
 
     /// `put_clip_col_avx2` writes each vertex's first eight floats as `put_arr` and
@@ -473,44 +481,41 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn clip_col_transposition_is_put_arr() {
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: nothing to compare");
-            return;
-        }
-        let mut g = Gen(0x5eed_0b10);
-        for stride in [8, 9, 12, 16, 20, 27] {
-            for _ in 0..20 {
-                let mut clip = Lanes4::<LANES>::default();
-                let mut sh = Shaded::<LANES>::default();
-                for k in 0..LANES {
-                    (clip.x[k], clip.y[k], clip.z[k], clip.w[k]) =
-                        (g.float(), g.float(), g.float(), g.float());
-                    sh.c.set(k, Vec3::new(g.float(), g.float(), g.float()));
-                    sh.a[k] = g.float();
+        on_avx2(0x5eed_0b10, |g| {
+            for stride in [8, 9, 12, 16, 20, 27] {
+                for _ in 0..20 {
+                    let mut clip = Lanes4::<LANES>::default();
+                    let mut sh = Shaded::<LANES>::default();
+                    for k in 0..LANES {
+                        (clip.x[k], clip.y[k], clip.z[k], clip.w[k]) =
+                            (g.float(), g.float(), g.float(), g.float());
+                        sh.c.set(k, Vec3::new(g.float(), g.float(), g.float()));
+                        sh.a[k] = g.float();
+                    }
+                    let fill: Vec<f32> = (0..LANES * stride + 5).map(|_| g.float()).collect();
+                    let mut want = fill.clone();
+                    for (k, o) in want.chunks_exact_mut(stride).enumerate().take(LANES) {
+                        put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
+                        sh.put(k, o, Some(4), None);
+                    }
+                    let mut got = fill.clone();
+                    // SAFETY: the CPU has AVX2 (`on_avx2` runs this only there).
+                    let ok = unsafe { put_clip_col_avx2(&mut got, stride, &clip, &sh.c, &sh.a) };
+                    assert!(ok, "stride {stride}: the block fits");
+                    let bits = |v: &[f32]| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&got), bits(&want), "stride {stride}");
+                    // Too short by one float, or a stride below the eight floats written.
+                    let n = (LANES - 1) * stride + 7;
+                    let mut short = fill.get(..n).unwrap_or_default().to_vec();
+                    // SAFETY: as above.
+                    let ok = unsafe { put_clip_col_avx2(&mut short, stride, &clip, &sh.c, &sh.a) };
+                    assert!(!ok && bits(&short) == bits(&fill[..n]), "stride {stride}");
+                    let mut narrow = fill.clone();
+                    // SAFETY: as above.
+                    let ok = unsafe { put_clip_col_avx2(&mut narrow, 7, &clip, &sh.c, &sh.a) };
+                    assert!(!ok && bits(&narrow) == bits(&fill));
                 }
-                let fill: Vec<f32> = (0..LANES * stride + 5).map(|_| g.float()).collect();
-                let mut want = fill.clone();
-                for (k, o) in want.chunks_exact_mut(stride).enumerate().take(LANES) {
-                    put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
-                    sh.put(k, o, Some(4), None);
-                }
-                let mut got = fill.clone();
-                // SAFETY: the CPU has AVX2 (checked above).
-                let ok = unsafe { put_clip_col_avx2(&mut got, stride, &clip, &sh.c, &sh.a) };
-                assert!(ok, "stride {stride}: the block fits");
-                let bits = |v: &[f32]| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>();
-                assert_eq!(bits(&got), bits(&want), "stride {stride}");
-                // Too short by one float, or a stride below the eight floats written.
-                let n = (LANES - 1) * stride + 7;
-                let mut short = fill.get(..n).unwrap_or_default().to_vec();
-                // SAFETY: as above.
-                let ok = unsafe { put_clip_col_avx2(&mut short, stride, &clip, &sh.c, &sh.a) };
-                assert!(!ok && bits(&short) == bits(&fill[..n]), "stride {stride}");
-                let mut narrow = fill.clone();
-                // SAFETY: as above.
-                let ok = unsafe { put_clip_col_avx2(&mut narrow, 7, &clip, &sh.c, &sh.a) };
-                assert!(!ok && bits(&narrow) == bits(&fill));
             }
-        }
+        });
     }
 }
