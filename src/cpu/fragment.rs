@@ -513,6 +513,23 @@ pub struct TileBufs<'a> {
     pub samples: u64,
 }
 
+/// A tile's buffers as `FragCtx::tiny` writes them, borrowed from its `TileBufs` for a run of
+/// triangles (`raster::prims`): colour and depth, the tile's corner, the occlusion count, and
+/// whether the tile has a second colour buffer.
+#[cfg(target_arch = "x86_64")]
+pub struct TinyOut<'b> {
+    /// RGBA8, `TILE * TILE`.
+    pub color: &'b mut [[u8; 4]],
+    /// Depth, `TILE * TILE`.
+    pub depth: &'b mut [u32],
+    /// The tile's corner (`TileBufs::x`, `TileBufs::y`).
+    pub tile: (i32, i32),
+    /// `TileBufs::samples`.
+    pub samples: &'b mut u64,
+    /// `TileBufs::color2` is present.
+    pub color2: bool,
+}
+
 impl FragCtx<'_> {
     /// The depth test (§4.1.6): does `d` pass against the stored `stored`?
     #[inline(always)]
@@ -1467,37 +1484,33 @@ impl FragCtx<'_> {
     /// FLAT one `const_fill` gives one colour, what `const_rows` draws; each covered pixel
     /// computed alone (`lanes::tiny_avx2`) instead of in an
     /// eight-lane group; the occlusion count. False, nothing drawn, for any other primitive.
+    /// The tile's buffers come borrowed for a run of such triangles (`TinyOut`).
     ///
     /// # Safety
     /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     #[inline]
-    pub unsafe fn tiny<const F: u32>(
-        &self,
-        bufs: &mut TileBufs,
-        p: &RPrim,
-        planes: &[f32],
-    ) -> bool {
+    pub unsafe fn tiny<const F: u32>(&self, out: &mut TinyOut, p: &RPrim, planes: &[f32]) -> bool {
         use super::lanes::{tiny_avx2, TinyFill};
         // Setup sets no covered bit outside the box (`RPrim::cover`).
         let (cover, [x0, y0, ..]) = (p.cover, p.bbox);
-        let at = ((y0 - bufs.y) as usize) * TILE + (x0 - bufs.x) as usize;
+        let at = ((y0 - out.tile.1) as usize) * TILE + (x0 - out.tile.0) as usize;
         let fill = if p.flags & NOT_SMOOTH == 0 {
             // `smooth_planes`' test of the primitive (its state is `tiny_depth`'s).
             let Some(pl) = planes.get(..15).and_then(|p| p.try_into().ok()) else {
                 return false;
             };
             TinyFill::Smooth(pl)
-        } else if let Some(ConstFill::Flat(px)) = self.const_fill(bufs, p, planes) {
+        } else if let Some(ConstFill::Flat(px)) = self.const_fill_of(out.color2, p, planes) {
             TinyFill::Flat(px)
         } else {
             return false;
         };
         // SAFETY: the CPU has AVX2 (this function's contract).
-        let pass = unsafe { tiny_avx2::<F>(bufs.color, bufs.depth, at, cover, &p.z, fill) };
+        let pass = unsafe { tiny_avx2::<F>(out.color, out.depth, at, cover, &p.z, fill) };
         if self.samples {
-            bufs.samples += u64::from(pass.count_ones());
+            *out.samples += u64::from(pass.count_ones());
         }
         true
     }
@@ -1631,6 +1644,12 @@ impl FragCtx<'_> {
     /// None for any other primitive. Decided once per primitive and tile (`raster::tri`).
     #[inline(always)]
     pub fn const_fill(&self, bufs: &TileBufs, p: &RPrim, planes: &[f32]) -> Option<ConstFill> {
+        self.const_fill_of(bufs.color2.is_some(), p, planes)
+    }
+
+    /// `const_fill` where the tile has a second colour buffer when `color2`.
+    #[inline(always)]
+    fn const_fill_of(&self, color2: bool, p: &RPrim, planes: &[f32]) -> Option<ConstFill> {
         let stippled = self.stipple.is_some() && p.flags & F_LINE == 0;
         if self.ops.is_some() || p.flags & (F_AAPOINT | F_AALINE) != 0 || stippled || self.count {
             return None;
@@ -1647,7 +1666,7 @@ impl FragCtx<'_> {
             || nflat != 4
             || p.flags & F_PHONG != 0
             || self.color_mask != [true; 4]
-            || bufs.color2.is_some()
+            || color2
         {
             return None;
         }

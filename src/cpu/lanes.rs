@@ -880,7 +880,6 @@ unsafe fn tiny_pixels<const F: u32, T>(
     mut z: impl FnMut(usize) -> (std::arch::x86_64::__m128, T),
     mut hit: impl FnMut(usize, T),
 ) -> u8 {
-    use super::framebuffer::TILE;
     use std::arch::x86_64::{
         _mm_add_sd, _mm_cvtss_sd, _mm_cvttsd_si32, _mm_max_sd, _mm_min_sd, _mm_mul_sd, _mm_set_sd,
         _mm_setzero_pd,
@@ -892,7 +891,7 @@ unsafe fn tiny_pixels<const F: u32, T>(
     while rest != 0 {
         let k = rest.trailing_zeros() as usize;
         rest &= rest - 1;
-        let i = at + [0, 1, TILE, TILE + 1][k & 3];
+        let i = at + TINY_AT[k & 3];
         let Some(d) = depth.get_mut(i) else {
             continue;
         };
@@ -912,6 +911,12 @@ unsafe fn tiny_pixels<const F: u32, T>(
     }
     pass
 }
+
+/// A covered bit's offset from the box's corner in the tile (`tiny_pixels`). A static, read
+/// from memory: the same table written inside the loop was stored to the stack from a
+/// register for every pixel before its one element was read back.
+#[cfg(target_arch = "x86_64")]
+static TINY_AT: [usize; 4] = [0, 1, super::framebuffer::TILE, super::framebuffer::TILE + 1];
 
 /// A covered bit's column and row (`fx`, `fy`: `tiny_pixels`).
 #[cfg(target_arch = "x86_64")]

@@ -886,19 +886,24 @@ impl Core {
         // with the batch.
         let prims = &batch.prims;
         let mut start = 0;
-        while start < prims.len() {
-            let mut end = start;
-            let mut count = 0usize;
-            while let Some(p) = prims.get(end) {
-                if end > start && count + p.count as usize > PIECE {
+        while let Some((first, more)) = prims.get(start..).and_then(|r| r.split_first()) {
+            // The piece: its first primitive whatever its size, then those that keep it within
+            // PIECE vertices, its largest primitive found on the way (one walk over a dense
+            // mesh's 160k strips, without a range check or a second pass for the largest).
+            let mut count = first.count as usize;
+            let mut largest = count;
+            let mut end = start + 1;
+            for p in more {
+                let n = p.count as usize;
+                if count + n > PIECE {
                     break;
                 }
-                count += p.count as usize;
+                count += n;
+                largest = largest.max(n);
                 end += 1;
             }
             debug_assert!(end <= prims.len(), "piece past the primitive list");
             let piece = prims.get(start..end).unwrap_or(&[]);
-            let largest = piece.iter().map(|p| p.count as usize).max().unwrap_or(0);
             if nw == 1 || largest <= count / nw {
                 let workers = self.scene.take(fi, nw);
                 setup_by_primitives(workers, &ctx, &v, piece, count);
@@ -1105,14 +1110,22 @@ fn setup_by_primitives(
         }
         return;
     }
-    // Cut points: the first primitive starting at or after each k·count/nw vertices.
+    // Cut points: the first primitive starting at or after each k·count/nw vertices. The
+    // threshold is computed when k moves on, not for each primitive (a multiplication and a
+    // division for each of a dense mesh's 160k strips), and the walk stops at the last cut.
     let first = prims.first().map_or(0, |p| p.first as usize);
     let mut cuts = [0usize; 33];
     let mut k = 1;
+    // (`nw` is not 0 here: none would return above; `max` keeps the division safe regardless.)
+    let mut at = count / nw.max(1);
     for (i, p) in prims.iter().enumerate() {
-        while k < nw && p.first as usize - first >= k * count / nw {
+        if k >= nw {
+            break;
+        }
+        while k < nw && p.first as usize - first >= at {
             cuts[k] = i;
             k += 1;
+            at = k * count / nw;
         }
     }
     for c in cuts.iter_mut().take(nw + 1).skip(k) {

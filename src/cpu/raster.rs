@@ -9,6 +9,8 @@
 //! Lines arrive as parallelograms made of two triangles (see `line`); points are `round(size)`
 //! squares.
 
+#[cfg(target_arch = "x86_64")]
+use super::fragment::TinyOut;
 use super::fragment::{FragCtx, TileBufs};
 use super::framebuffer::TILE;
 use super::setup::{PrimKind, RPrim, COVER_KNOWN, F_AALINE, F_AAPOINT};
@@ -74,25 +76,56 @@ unsafe fn tiny_avx2<const F: u32>(
     pool: &[f32],
 ) {
     let (tx, ty) = (bufs.x, bufs.y);
-    for &pi in bin {
-        let Some(p) = prims.get(pi as usize) else {
-            continue;
+    let mut rest = bin;
+    while !rest.is_empty() {
+        // A run of the primitives `FragCtx::tiny` takes, the tile's buffers borrowed once for
+        // the run: a `prim` call (after the run) may change what `bufs` holds, so while it sat
+        // in the same loop every triangle reloaded the buffers' addresses and lengths.
+        let TileBufs {
+            color,
+            color2,
+            depth,
+            samples,
+            ..
+        } = &mut *bufs;
+        let mut out = TinyOut {
+            color,
+            depth,
+            tile: (tx, ty),
+            samples,
+            color2: color2.is_some(),
         };
-        // The box inside the tile: each of its offsets from the tile's corner in 0..TILE
-        // (a negative one is a large u32).
-        let [x0, y0, x1, y1] = p.bbox;
-        let inside = (((x0 - tx) | (x1 - tx) | (y0 - ty) | (y1 - ty)) as u32) < TILE as u32;
-        let tiny = p.cover & COVER_KNOWN != 0 && inside && p.kind == PrimKind::Tri;
-        // The fifteen floats of a smooth or FLAT triangle without texturing (`FragCtx::tiny`
-        // reads no more).
-        let off = p.voff as usize;
-        if let Some(pl) = pool.get(off..off.wrapping_add(15)).filter(|_| tiny) {
-            // SAFETY: the CPU has AVX2 and POPCNT (this function's contract).
-            if unsafe { ctx.tiny::<F>(bufs, p, pl) } {
+        let mut taken = 0;
+        for &pi in rest {
+            let Some(p) = prims.get(pi as usize) else {
+                taken += 1;
                 continue;
+            };
+            // The box inside the tile: each of its offsets from the tile's corner in 0..TILE
+            // (a negative one is a large u32).
+            let [x0, y0, x1, y1] = p.bbox;
+            let inside = (((x0 - tx) | (x1 - tx) | (y0 - ty) | (y1 - ty)) as u32) < TILE as u32;
+            let tiny = p.cover & COVER_KNOWN != 0 && inside && p.kind == PrimKind::Tri;
+            // The fifteen floats of a smooth or FLAT triangle without texturing
+            // (`FragCtx::tiny` reads no more).
+            let off = p.voff as usize;
+            let Some(pl) = pool.get(off..off.wrapping_add(15)).filter(|_| tiny) else {
+                break;
+            };
+            // SAFETY: the CPU has AVX2 and POPCNT (this function's contract).
+            if !unsafe { ctx.tiny::<F>(&mut out, p, pl) } {
+                break;
             }
+            taken += 1;
         }
-        prim(ctx, bufs, p, pool);
+        // The primitive that ended the run, if any, through `prim`.
+        rest = rest.get(taken..).unwrap_or_default();
+        if let Some((&pi, tail)) = rest.split_first() {
+            if let Some(p) = prims.get(pi as usize) {
+                prim(ctx, bufs, p, pool);
+            }
+            rest = tail;
+        }
     }
 }
 

@@ -446,33 +446,25 @@ impl Lighting {
                 }
             }
             powf_lanes(&ndh, shininess, need, &mut pw);
-            // Branch-free so that it vectorises: every term is computed, then selected.
-            let sep = self.separate;
-            for i in 0..N {
-                let lit = ndl[i] > 0.0;
-                let d = pw[i];
-                let sx = d * ls.x * scm.x[i];
-                let sy = d * ls.y * scm.y[i];
-                let sz = d * ls.z * scm.z[i];
-                // term = a (+ (N·L)·d (+ s unless separate)) where N·L > 0.
-                let ax = la.x * acm.x[i];
-                let ay = la.y * acm.y[i];
-                let az = la.z * acm.z[i];
-                let (lx, ly, lz) = if sep {
-                    (ad.x[i], ad.y[i], ad.z[i])
-                } else {
-                    (ad.x[i] + sx, ad.y[i] + sy, ad.z[i] + sz)
-                };
-                let (tx, ty, tz) = if lit { (lx, ly, lz) } else { (ax, ay, az) };
-                let k = kf[i];
-                let on = on[i];
-                c.x[i] = if on { c.x[i] + k * tx } else { c.x[i] };
-                c.y[i] = if on { c.y[i] + k * ty } else { c.y[i] };
-                c.z[i] = if on { c.z[i] + k * tz } else { c.z[i] };
-                let add = on && lit && sep;
-                s.x[i] = if add { s.x[i] + k * sx } else { s.x[i] };
-                s.y[i] = if add { s.y[i] + k * sy } else { s.y[i] };
-                s.z[i] = if add { s.z[i] + k * sz } else { s.z[i] };
+            // Branch-free so that it vectorises: every term is computed, then selected; the
+            // loop compiled for the light's case (`accumulate`).
+            let plain = l.spot_cos.is_none() && (!l.positional || l.no_att);
+            let t = Terms {
+                ndl: &ndl,
+                pw: &pw,
+                ad: &ad,
+                acm: &acm,
+                scm: &scm,
+                la,
+                ls,
+                kf: &kf,
+                on: &on,
+            };
+            match (self.separate, plain) {
+                (false, true) => t.accumulate::<false, true>(&mut c, &mut s),
+                (false, false) => t.accumulate::<false, false>(&mut c, &mut s),
+                (true, true) => t.accumulate::<true, true>(&mut c, &mut s),
+                (true, false) => t.accumulate::<true, false>(&mut c, &mut s),
             }
         }
         // Colours are clamped after lighting (§2.14.6); alpha is the diffuse alpha.
@@ -481,9 +473,81 @@ impl Lighting {
             out.c.y[i] = clamp01(c.y[i]);
             out.c.z[i] = clamp01(c.z[i]);
             out.a[i] = clamp01(alpha[i]);
-            out.s.x[i] = clamp01(s.x[i]);
-            out.s.y[i] = clamp01(s.y[i]);
-            out.s.z[i] = clamp01(s.z[i]);
+        }
+        if self.separate {
+            for i in 0..N {
+                out.s.x[i] = clamp01(s.x[i]);
+                out.s.y[i] = clamp01(s.y[i]);
+                out.s.z[i] = clamp01(s.z[i]);
+            }
+        } else {
+            // Without SEPARATE_SPECULAR_COLOR the secondary sum stays +0, which the clamp keeps.
+            out.s = s;
+        }
+    }
+}
+
+/// One light's terms across `N` points, for [`Terms::accumulate`]: N·L, the specular powers
+/// (0 where `powf` was skipped), the ambient and diffuse parts a + (N·L)·d, the ambient and
+/// specular material colours, the light's ambient and specular colours, the attenuation and
+/// spot factor, and whether the light reaches each point (inside its spot cone).
+struct Terms<'a, const N: usize> {
+    ndl: &'a [f32; N],
+    pw: &'a [f32; N],
+    ad: &'a Lanes3<N>,
+    acm: &'a Lanes3<N>,
+    scm: &'a Lanes3<N>,
+    la: Vec3A,
+    ls: Vec3A,
+    kf: &'a [f32; N],
+    on: &'a [bool; N],
+}
+
+impl<const N: usize> Terms<'_, N> {
+    /// Adds the light's term to the primary sums `c` (and its specular part to the secondary
+    /// sums `s` under SEPARATE_SPECULAR_COLOR, `SEP`). `PLAIN`: a light without attenuation or
+    /// spot, whose factor is 1 and which reaches every point, adds its term as it is: 1·t is t
+    /// bit for bit (t is the result of arithmetic, so a NaN there is quiet and kept), and the
+    /// selection by `on` keeps the sum. Without `SEP` the secondary sums are left alone (they
+    /// stay zero), where they took a product, a sum and a selection a component.
+    // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    fn accumulate<const SEP: bool, const PLAIN: bool>(&self, c: &mut Lanes3<N>, s: &mut Lanes3<N>) {
+        let (la, ls, acm, scm, ad) = (self.la, self.ls, self.acm, self.scm, self.ad);
+        for i in 0..N {
+            let lit = self.ndl[i] > 0.0;
+            let d = self.pw[i];
+            let sx = d * ls.x * scm.x[i];
+            let sy = d * ls.y * scm.y[i];
+            let sz = d * ls.z * scm.z[i];
+            // term = a (+ (N·L)·d (+ s unless separate)) where N·L > 0.
+            let ax = la.x * acm.x[i];
+            let ay = la.y * acm.y[i];
+            let az = la.z * acm.z[i];
+            let (lx, ly, lz) = if SEP {
+                (ad.x[i], ad.y[i], ad.z[i])
+            } else {
+                (ad.x[i] + sx, ad.y[i] + sy, ad.z[i] + sz)
+            };
+            let (tx, ty, tz) = if lit { (lx, ly, lz) } else { (ax, ay, az) };
+            let k = self.kf[i];
+            let on = self.on[i];
+            if PLAIN {
+                c.x[i] += tx;
+                c.y[i] += ty;
+                c.z[i] += tz;
+            } else {
+                c.x[i] = if on { c.x[i] + k * tx } else { c.x[i] };
+                c.y[i] = if on { c.y[i] + k * ty } else { c.y[i] };
+                c.z[i] = if on { c.z[i] + k * tz } else { c.z[i] };
+            }
+            if SEP {
+                let add = on && lit;
+                s.x[i] = if add { s.x[i] + k * sx } else { s.x[i] };
+                s.y[i] = if add { s.y[i] + k * sy } else { s.y[i] };
+                s.z[i] = if add { s.z[i] + k * sz } else { s.z[i] };
+            }
         }
     }
 }
@@ -710,7 +774,7 @@ impl Lit<'_> {
             unsafe { self.run_avx2(first, out, wins) };
             return;
         }
-        self.body(first, out, wins);
+        self.body::<false>(first, out, wins);
     }
 
     /// [`Lit::body`] compiled with AVX2: its lane loops on eight `f32` lanes a vector.
@@ -720,16 +784,18 @@ impl Lit<'_> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     unsafe fn run_avx2(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
-        self.body(first, out, wins);
+        self.body::<true>(first, out, wins);
     }
 
     /// Processes the vertices from `first` into `out` and `wins`, one block of [`LANES`] at a
     /// time in a single pass: transforms on a structure of arrays, window coordinates and clip
-    /// codes from the clip positions in hand, the other attributes, then lighting.
+    /// codes from the clip positions in hand, the other attributes, then lighting. `AVX2`: the
+    /// body is compiled inside `run_avx2` (so on a CPU with AVX2), where a whole lit block's
+    /// outputs are written through `lanes::put_clip_col_avx2`.
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn body(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
+    fn body<const AVX2: bool>(&self, first: usize, out: &mut [f32], wins: &mut [Win]) {
         let l = self.layout;
         let b = self.batch;
         let state = self.state;
@@ -782,13 +848,21 @@ impl Lit<'_> {
             let (Some(q0), Some(m0)) = (pos.first(), nin.first()) else {
                 return;
             };
-            if cnt < LANES {
-                p = Lanes4::splat(*q0);
-                nr = Lanes3::splat(*m0);
-            }
-            for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
-                (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
-                (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
+            // A whole block on AVX2: transposed in registers (`lanes::load_block_avx2`).
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `AVX2` is true only in `run_avx2`, which runs where the CPU has AVX2.
+            let loaded = AVX2 && unsafe { lanes::load_block_avx2(pos, nin, &mut p, &mut nr) };
+            #[cfg(not(target_arch = "x86_64"))]
+            let loaded = false;
+            if !loaded {
+                if cnt < LANES {
+                    p = Lanes4::splat(*q0);
+                    nr = Lanes3::splat(*m0);
+                }
+                for (k, (q, m)) in pos.iter().zip(nin).enumerate().take(LANES) {
+                    (p.x[k], p.y[k], p.z[k], p.w[k]) = (q.x, q.y, q.z, q.w);
+                    (nr.x[k], nr.y[k], nr.z[k]) = (m.x, m.y, m.z);
+                }
             }
             let eye = p.transform(&tf.mv);
             let clip = eye.transform(&tf.proj);
@@ -868,15 +942,31 @@ impl Lit<'_> {
             }
             // The clip (and eye) position, and the lit colours (`extras` wrote the unlit ones).
             let lit_on = self.lighting.is_some();
-            for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
-                put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
-                if let Some(o_eye) = l.eye {
-                    put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
-                }
-                if lit_on {
-                    lit.put(k, o, l.col, l.spec);
-                    if let Some(cb) = l.col_b {
-                        lit_b.put(k, o, cb, l.spec_b);
+            // A whole lit block on AVX2: the clip positions and primary colours (the first
+            // eight floats of each vertex) transposed in registers, the rest below.
+            #[cfg(target_arch = "x86_64")]
+            let wrote = AVX2
+                && lit_on
+                && cnt == LANES
+                && l.col == 4
+                // SAFETY: `AVX2` is true only in `run_avx2`, which runs where the CPU has AVX2.
+                && unsafe { lanes::put_clip_col_avx2(os, l.stride, &clip, &lit.c, &lit.a) };
+            #[cfg(not(target_arch = "x86_64"))]
+            let wrote = false;
+            let rest = l.eye.is_some() || l.spec.is_some() || l.col_b.is_some();
+            if !wrote || rest {
+                for (k, o) in os.chunks_exact_mut(l.stride).enumerate().take(LANES) {
+                    if !wrote {
+                        put_arr(o, 0, [clip.x[k], clip.y[k], clip.z[k], clip.w[k]]);
+                    }
+                    if let Some(o_eye) = l.eye {
+                        put_arr(o, o_eye, [eye.x[k], eye.y[k], eye.z[k], eye.w[k]]);
+                    }
+                    if lit_on {
+                        lit.put(k, o, (!wrote).then_some(l.col), l.spec);
+                        if let Some(cb) = l.col_b {
+                            lit_b.put(k, o, Some(cb), l.spec_b);
+                        }
                     }
                 }
             }
