@@ -441,14 +441,14 @@ impl Context {
         }
     }
 
-    /// Executes the Normal3f and Vertex3f calls at the start of `calls`, inside a Begin/End pair with nothing recording, and the End after them if
-    /// there is one; returns the calls after those. The same state changes and the same batch
-    /// as `execute` on each (nothing records, the pair is open, and neither call changes
-    /// anything else either reads), with what a call per vertex paid once for the run: the
-    /// dispatch of the whole `Call` match, the recording and Begin tests, the batch's span
-    /// test (`Batch::check_span`, before the first vertex), and the store and reload of each
-    /// normal (its bits stay in registers, and the state's normal is written when the run
-    /// ends).
+    /// Executes the Normal3f and Vertex3f calls at the start of `calls`, inside a Begin/End
+    /// pair with nothing recording, and the End after them if there is one; returns the calls
+    /// after those. The same state changes and the same batch as `execute` on each (nothing
+    /// records, the pair is open, and neither call changes anything else either reads), with
+    /// what a call per vertex paid once for the run: the dispatch of the whole `Call` match,
+    /// the recording and Begin tests, the batch's span test (`Batch::check_span`, at the
+    /// run's first vertex), and the store and reload of each normal (its bits stay in
+    /// registers, and the state's normal is written when the run ends).
     #[inline(always)]
     fn mesh_run<'a>(&mut self, calls: &'a [Call]) -> &'a [Call] {
         debug_assert!(!self.capturing && self.begin_mode.is_some());
