@@ -64,15 +64,98 @@ const EMPTY: Slot = u32::MAX;
 #[repr(align(8))]
 struct Set([Slot; 2]);
 
-/// The cache set of a position and normal (their bits), mixing 32-bit words.
+/// The bits of a normal as a vertex's cache key holds them: x and y as one 64-bit word, z.
+#[derive(Clone, Copy, Debug)]
+pub struct NormalBits {
+    n01: u64,
+    n2: u32,
+}
+
+/// Two 32-bit words as one 64-bit word, `lo` in the low half.
 #[inline(always)]
-fn set_of(pos: [u32; 4], normal: [u32; 3]) -> usize {
-    let [p0, p1, p2, p3] = pos;
-    let [n0, n1, n2] = normal;
-    let hp = p0 ^ p1.rotate_left(11) ^ p2.rotate_left(22) ^ p3.rotate_left(5);
-    let hn = n0 ^ n1.rotate_left(13) ^ n2.rotate_left(26);
-    let h = u64::from(hp) ^ u64::from(hn).rotate_left(29);
-    (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 52) as usize & (SETS - 1)
+fn word(lo: u32, hi: u32) -> u64 {
+    u64::from(lo) | u64::from(hi) << 32
+}
+
+impl NormalBits {
+    /// The bits of `n`.
+    #[inline(always)]
+    pub fn of(n: Vec3) -> NormalBits {
+        NormalBits::new(n.to_array().map(f32::to_bits))
+    }
+
+    /// The normal.
+    #[inline(always)]
+    pub fn vec3(self) -> Vec3 {
+        let [x, y, z] = [self.n01 as u32, (self.n01 >> 32) as u32, self.n2].map(f32::from_bits);
+        Vec3::new(x, y, z)
+    }
+
+    /// The bits of the normal with components `n`.
+    #[inline(always)]
+    pub fn new(n: [u32; 3]) -> NormalBits {
+        NormalBits {
+            n01: word(n[0], n[1]),
+            n2: n[2],
+        }
+    }
+}
+
+/// A vertex's cache key: the bits of its position and normal as 64-bit words (x and y, z and
+/// w, the normal's), the form both the hash mixes and a hit compares, so that the words are
+/// built once (mixing the seven 32-bit words one by one, with a rotation each, cost about 35
+/// instructions a vertex, most of them moving words between registers and the stack), and a
+/// replay loop builds the normal's once per Normal call.
+#[derive(Clone, Copy, Debug)]
+pub struct Key {
+    xy: u64,
+    zw: u64,
+    normal: NormalBits,
+}
+
+impl Key {
+    /// The key of the position with bits `pos` and the normal `normal`.
+    #[inline(always)]
+    pub fn new(pos: [u32; 4], normal: NormalBits) -> Key {
+        Key {
+            xy: word(pos[0], pos[1]),
+            zw: word(pos[2], pos[3]),
+            normal,
+        }
+    }
+
+    /// The key of a batched vertex.
+    #[inline(always)]
+    fn of(pos: &Vec4, normal: &Vec3) -> Key {
+        Key::new(pos.to_array().map(f32::to_bits), NormalBits::of(*normal))
+    }
+
+    /// The position (a vertex batched on a miss).
+    #[inline(always)]
+    fn position(self) -> Vec4 {
+        let half = |w: u64| [w as u32, (w >> 32) as u32].map(f32::from_bits);
+        let ([x, y], [z, w]) = (half(self.xy), half(self.zw));
+        Vec4::new(x, y, z, w)
+    }
+
+    /// Whether every bit is the same: the words compared without a branch between them.
+    #[inline(always)]
+    fn same(self, other: Key) -> bool {
+        let (n, m) = (self.normal, other.normal);
+        ((self.xy ^ other.xy) | (self.zw ^ other.zw) | (n.n01 ^ m.n01)) | u64::from(n.n2 ^ m.n2)
+            == 0
+    }
+
+    /// The cache set: two 64-bit products, of the position's words and of the normal's (one
+    /// word of each rotated, so that equal words such as a unit sphere's position and normal
+    /// do not cancel), whose top bits depend on every bit.
+    #[inline(always)]
+    fn set(self) -> usize {
+        let n = self.normal;
+        let p = (self.xy ^ self.zw.rotate_left(21)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        let n = (n.n01 ^ u64::from(n.n2).rotate_left(43)).wrapping_mul(0xC2B2_AE3D_27D4_EB4F);
+        ((p ^ n) >> 52) as usize & (SETS - 1)
+    }
 }
 
 /// The inputs a span of vertices shares besides its edge flag and material (which stay per
@@ -234,30 +317,56 @@ impl Batch {
     /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
     #[inline(always)]
     fn vertex_with(&mut self, position: Vec4, normal: [u32; 3], c: &Current) {
-        let i = self.pos.len();
-        let serial = self.serial0 + i as u64;
+        let key = Key::new(
+            position.to_array().map(f32::to_bits),
+            NormalBits::new(normal),
+        );
+        self.vertex_key(key, c);
+    }
+
+    /// [`Batch::vertex`] with the bits of the position and of `c`'s normal, `key` (for a
+    /// replay loop, which holds the normal of the last Normal call in registers).
+    #[inline(always)]
+    pub fn vertex_key(&mut self, key: Key, c: &Current) {
+        self.check_span(c);
+        self.vertex_in_span(key, c);
+    }
+
+    /// Starts a span at the next vertex if `c`'s inputs other than position and normal are
+    /// not the current span's. [`Batch::vertex_key`]'s first step: once it ran, it changes
+    /// nothing until those inputs or the material change, so that a replay loop runs it once
+    /// for a run of Normal and Vertex calls.
+    #[inline(always)]
+    pub fn check_span(&mut self, c: &Current) {
         // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
         // instead of 25 floats and the edge flag.
         if !self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat {
-            self.new_span(c, serial);
+            self.new_span(c, self.serial0 + self.pos.len() as u64);
         }
-        let pos = position.to_array().map(f32::to_bits);
-        let set = set_of(pos, normal);
+    }
+
+    /// [`Batch::vertex_key`] once `check_span(c)` ran (and nothing changed since).
+    #[inline(always)]
+    pub fn vertex_in_span(&mut self, key: Key, c: &Current) {
+        let i = self.pos.len();
+        let serial = self.serial0 + i as u64;
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
-        if let (Some(Set(ways)), Ok(serial)) = (self.cache.get_mut(set), u32::try_from(serial)) {
-            // A hit: a vertex of this span (same other inputs) with the same position and normal
+        if let (Some(Set(ways)), Ok(serial)) =
+            (self.cache.get_mut(key.set()), u32::try_from(serial))
+        {
+            // A hit: a vertex of this span (same other inputs, serial in `span..serial`: one
+            // compare, as the serials wrap below `span`) with the same position and normal
             // bits. A serial of this span is at least `serial0`, so its index is in the arrays.
             let (span, serial0) = (self.span, self.serial0);
+            let live = u64::from(serial) - span;
             let (positions, normals) = (&self.pos, &self.normal);
             let hit = |s: Slot| {
-                u64::from(s) >= span && s < serial && {
+                u64::from(s).wrapping_sub(span) < live && {
                     let k = (u64::from(s) - serial0) as usize;
-                    positions
-                        .get(k)
-                        .is_some_and(|p| p.to_array().map(f32::to_bits) == pos)
-                        && normals
-                            .get(k)
-                            .is_some_and(|m| m.to_array().map(f32::to_bits) == normal)
+                    match (positions.get(k), normals.get(k)) {
+                        (Some(p), Some(n)) => Key::of(p, n).same(key),
+                        _ => false,
+                    }
                 }
             };
             let [newer, older] = *ways;
@@ -276,8 +385,8 @@ impl Batch {
             ways[0] = serial;
         }
         self.idx.push(i as u32);
-        self.pos.push(position);
-        self.normal.push(c.normal);
+        self.pos.push(key.position());
+        self.normal.push(key.normal.vec3());
         self.span_of.push(self.spans.len().saturating_sub(1) as u32);
         self.edge.push(c.edge_flag);
         if !self.snapshots.is_empty() {
@@ -373,6 +482,7 @@ impl Batch {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::call::Call;
     use crate::gl;
 
     /// Indices given to `vertices` (position, colour red) in one triangle list.
@@ -646,10 +756,7 @@ mod tests {
     /// Positions (x, 0, 0, 1) with the default normal, from x = 1 on, that fall in the same
     /// cache set as x = 0.
     fn colliding(n: usize) -> Vec<f32> {
-        let key = |x: f32| {
-            let pos = Vec4::new(x, 0.0, 0.0, 1.0).to_array().map(f32::to_bits);
-            set_of(pos, [0.0f32, 0.0, 1.0].map(f32::to_bits))
-        };
+        let key = |x: f32| Key::of(&Vec4::new(x, 0.0, 0.0, 1.0), &Vec3::new(0.0, 0.0, 1.0)).set();
         (1..1_000_000)
             .map(|x| x as f32)
             .filter(|&x| key(x) == key(0.0))
@@ -695,6 +802,133 @@ mod tests {
             [0, 1, 2]
         );
         assert_eq!(b.pos[2], Vec4::new(6.0, 0.0, 0.0, 1.0));
+    }
+
+    /// A random immediate-mode stream: pairs of Normal3f and Vertex3f (scalar and vector
+    /// forms) over a few positions and normals (so that the cache hits), with now and then a
+    /// colour, a material or an edge flag inside the pair, an invalid Begin or End, and a
+    /// Vertex2f.
+    fn mesh_stream(g: &mut crate::cpu::testgen::Gen, n: usize) -> Vec<Call> {
+        let mut calls = Vec::new();
+        // A few positions and normals, with -0, a NaN and random floats among their components.
+        let mut coord = || match g.next() % 16 {
+            0 => -0.0,
+            1 => f32::from_bits(0x7FC0_0001),
+            2 => g.float(),
+            k => k as f32 * 0.25,
+        };
+        let pool: Vec<[f32; 3]> = (0..4).map(|_| [coord(), coord(), coord()]).collect();
+        while calls.len() < n {
+            let mode = match g.next() % 8 {
+                0 => gl::TRIANGLES,
+                1 => gl::POINTS,
+                2 => 0x4242,
+                _ => gl::TRIANGLE_STRIP,
+            };
+            calls.push(Call::Begin(mode));
+            for _ in 0..g.next() % 9 {
+                let v = pool[(g.next() % 4) as usize];
+                let call = match g.next() % 24 {
+                    0 => Call::Color3f(v[0], v[1], v[2]),
+                    1 => Call::Materialf(gl::FRONT_AND_BACK, gl::SHININESS, v[0]),
+                    2 => Call::EdgeFlag(g.next() % 2 == 0),
+                    3 => Call::Vertex2f(v[0], v[1]),
+                    4 => Call::Normal3fv(v),
+                    5 => Call::Vertex3fv(v),
+                    6 => Call::Begin(gl::LINES),
+                    7..=14 => Call::Normal3f(v[0], v[1], v[2]),
+                    _ => Call::Vertex3f(v[0], v[1], v[2]),
+                };
+                calls.push(call);
+            }
+            if g.next() % 16 != 0 {
+                calls.push(Call::End);
+            }
+        }
+        calls
+    }
+
+    /// Everything a batch holds, with its floats as bits.
+    fn contents(b: &Batch) -> String {
+        let bits4 = |v: &Vec4| v.to_array().map(f32::to_bits);
+        let bits3 = |v: &Vec3| v.to_array().map(f32::to_bits);
+        let pos: Vec<_> = b.pos.iter().map(bits4).collect();
+        let normal: Vec<_> = b.normal.iter().map(bits3).collect();
+        let spans: Vec<_> = b
+            .spans
+            .iter()
+            .map(|a| {
+                (
+                    bits4(&a.color),
+                    bits4(&a.color2),
+                    a.tex.map(|t| bits4(&t)),
+                    a.fog.to_bits(),
+                )
+            })
+            .collect();
+        format!(
+            "{:?} {pos:?} {normal:?} {:?} {spans:?} {:?} {:?} {:?} {:?} {} {} {:?}",
+            b.idx,
+            b.span_of,
+            b.edge,
+            b.mat,
+            b.prims,
+            b.snapshots.len(),
+            b.span,
+            b.serial0,
+            b.cache.iter().map(|s| s.0).collect::<Vec<_>>()
+        )
+    }
+
+    #[test]
+    fn a_replayed_mesh_batches_as_its_calls_one_by_one() {
+        let mut g = crate::cpu::testgen::Gen(11);
+        let (mut hits, mut misses) = (0, 0);
+        for _ in 0..200 {
+            let calls = mesh_stream(&mut g, 60);
+            let mut fast = crate::Context::new(4, 4).unwrap_or_else(|e| panic!("{e}"));
+            let mut slow = crate::Context::new(4, 4).unwrap_or_else(|e| panic!("{e}"));
+            fast.replay(&calls);
+            for call in &calls {
+                slow.execute(call);
+            }
+            let (f, s) = (&fast.renderer.batch, &slow.renderer.batch);
+            assert_eq!(contents(f), contents(s), "{calls:?}");
+            let normal = |c: &crate::Context| c.state.current.normal.to_array().map(f32::to_bits);
+            assert_eq!(normal(&fast), normal(&slow));
+            assert_eq!(fast.begin_mode, slow.begin_mode);
+            assert_eq!(fast.pending_error(), slow.pending_error());
+            hits += f.idx.len() - f.pos.len();
+            misses += f.pos.len();
+        }
+        assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
+    }
+
+    #[test]
+    fn the_key_holds_the_bits_it_was_made_of() {
+        let mut g = crate::cpu::testgen::Gen(3);
+        for _ in 0..10_000 {
+            let p = [
+                g.next() as u32,
+                g.next() as u32,
+                g.next() as u32,
+                g.next() as u32,
+            ];
+            let n = [g.next() as u32, g.next() as u32, g.next() as u32];
+            let k = Key::new(p, NormalBits::new(n));
+            assert_eq!(k.position().to_array().map(f32::to_bits), p);
+            assert_eq!(k.normal.vec3().to_array().map(f32::to_bits), n);
+            assert!(k.same(Key::of(&k.position(), &k.normal.vec3())));
+            // One bit changed anywhere: another key.
+            let bit = (g.next() % 224) as usize;
+            let (mut p2, mut n2) = (p, n);
+            if bit < 128 {
+                p2[bit / 32] ^= 1 << (bit % 32);
+            } else {
+                n2[(bit - 128) / 32] ^= 1 << (bit % 32);
+            }
+            assert!(!k.same(Key::new(p2, NormalBits::new(n2))), "bit {bit}");
+        }
     }
 
     #[test]
