@@ -37,7 +37,6 @@ mod tests;
 mod vertex;
 
 use crate::call::Call;
-use crate::cpu::batch::{Key, NormalBits};
 use crate::cpu::Renderer;
 use crate::gl;
 use crate::state::{ContextConfig, State, MAX_VIEWPORT_DIM};
@@ -422,68 +421,11 @@ impl Context {
         self.replay_body(calls);
     }
 
-    /// The replay loop. A Begin taking `begin`'s usual path, with nothing recording, starts a
-    /// run of the calls that follow it while they are Normal3f and Vertex3f (or their vector
-    /// forms): an immediate-mode mesh's vertices (`mesh_run`).
     #[inline(always)]
     fn replay_body(&mut self, calls: &[Call]) {
-        let mut rest = calls;
-        while let Some((call, tail)) = rest.split_first() {
-            rest = tail;
-            if let Call::Begin(mode) = *call {
-                if !self.capturing && self.begin_is_usual(mode) {
-                    self.open_primitive(mode);
-                    rest = self.mesh_run(rest);
-                    continue;
-                }
-            }
+        for call in calls {
             self.execute(call);
         }
-    }
-
-    /// Executes the Normal3f and Vertex3f calls at the start of `calls`, inside a Begin/End
-    /// pair with nothing recording, and the End after them if there is one; returns the calls
-    /// after those. The same state changes and the same batch as `execute` on each (nothing
-    /// records, the pair is open, and neither call changes anything else either reads), with
-    /// what a call per vertex paid once for the run: the dispatch of the whole `Call` match,
-    /// the recording and Begin tests, the batch's span test (`Batch::check_span`, at the
-    /// run's first vertex), and the store and reload of each normal (its bits stay in
-    /// registers, and the state's normal is written when the run ends).
-    #[inline(always)]
-    fn mesh_run<'a>(&mut self, calls: &'a [Call]) -> &'a [Call] {
-        debug_assert!(!self.capturing && self.begin_mode.is_some());
-        let mut normal = NormalBits::of(self.state.current.normal);
-        let mut spanned = false;
-        let mut rest = calls;
-        let mut end = false;
-        // Three cases, compared in turn: with the vector forms too, the match took a jump
-        // table for every call. A vector form ends the run (`replay_body` executes the rest of
-        // the pair call by call).
-        while let Some((call, tail)) = rest.split_first() {
-            match *call {
-                Call::Vertex3f(x, y, z) => {
-                    if !spanned {
-                        self.renderer.check_span(&self.state.current);
-                        spanned = true;
-                    }
-                    let key = Key::new([x, y, z, 1.0].map(f32::to_bits), normal);
-                    self.renderer.vertex_in_span(key, &self.state.current);
-                }
-                Call::Normal3f(a, b, c) => normal = NormalBits::new([a, b, c].map(f32::to_bits)),
-                Call::End => {
-                    end = true;
-                    rest = tail;
-                    break;
-                }
-                _ => break,
-            }
-            rest = tail;
-        }
-        self.state.current.normal = normal.vec3();
-        if end {
-            self.end();
-        }
-        rest
     }
 
     /// A recorded `GenTextures(n)`: the names land in a buffer of room for `n` (at most

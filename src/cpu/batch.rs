@@ -66,7 +66,7 @@ struct Set([Slot; 2]);
 
 /// The bits of a normal as a vertex's cache key holds them: x and y as one 64-bit word, z.
 #[derive(Clone, Copy, Debug)]
-pub struct NormalBits {
+struct NormalBits {
     n01: u64,
     n2: u32,
 }
@@ -80,20 +80,20 @@ fn word(lo: u32, hi: u32) -> u64 {
 impl NormalBits {
     /// The bits of `n`.
     #[inline(always)]
-    pub fn of(n: Vec3) -> NormalBits {
+    fn of(n: Vec3) -> NormalBits {
         NormalBits::new(n.to_array().map(f32::to_bits))
     }
 
     /// The normal.
     #[inline(always)]
-    pub fn vec3(self) -> Vec3 {
+    fn vec3(self) -> Vec3 {
         let [x, y, z] = [self.n01 as u32, (self.n01 >> 32) as u32, self.n2].map(f32::from_bits);
         Vec3::new(x, y, z)
     }
 
     /// The bits of the normal with components `n`.
     #[inline(always)]
-    pub fn new(n: [u32; 3]) -> NormalBits {
+    fn new(n: [u32; 3]) -> NormalBits {
         NormalBits {
             n01: word(n[0], n[1]),
             n2: n[2],
@@ -104,10 +104,9 @@ impl NormalBits {
 /// A vertex's cache key: the bits of its position and normal as 64-bit words (x and y, z and
 /// w, the normal's), the form both the hash mixes and a hit compares, so that the words are
 /// built once (mixing the seven 32-bit words one by one, with a rotation each, cost about 35
-/// instructions a vertex, most of them moving words between registers and the stack), and a
-/// replay loop builds the normal's once per Normal call.
+/// instructions a vertex, most of them moving words between registers and the stack).
 #[derive(Clone, Copy, Debug)]
-pub struct Key {
+struct Key {
     xy: u64,
     zw: u64,
     normal: NormalBits,
@@ -116,7 +115,7 @@ pub struct Key {
 impl Key {
     /// The key of the position with bits `pos` and the normal `normal`.
     #[inline(always)]
-    pub fn new(pos: [u32; 4], normal: NormalBits) -> Key {
+    fn new(pos: [u32; 4], normal: NormalBits) -> Key {
         Key {
             xy: word(pos[0], pos[1]),
             zw: word(pos[2], pos[3]),
@@ -321,23 +320,14 @@ impl Batch {
             position.to_array().map(f32::to_bits),
             NormalBits::new(normal),
         );
-        self.vertex_key(key, c);
-    }
-
-    /// [`Batch::vertex`] with the bits of the position and of `c`'s normal, `key` (for a
-    /// replay loop, which holds the normal of the last Normal call in registers).
-    #[inline(always)]
-    pub fn vertex_key(&mut self, key: Key, c: &Current) {
         self.check_span(c);
         self.vertex_in_span(key, c);
     }
 
     /// Starts a span at the next vertex if `c`'s inputs other than position and normal are
-    /// not the current span's. [`Batch::vertex_key`]'s first step: once it ran, it changes
-    /// nothing until those inputs or the material change, so that a replay loop runs it once
-    /// for a run of Normal and Vertex calls.
+    /// not the current span's: [`Batch::vertex_with`]'s first step.
     #[inline(always)]
-    pub fn check_span(&mut self, c: &Current) {
+    fn check_span(&mut self, c: &Current) {
         // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
         // instead of 25 floats and the edge flag.
         if !self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat {
@@ -345,9 +335,10 @@ impl Batch {
         }
     }
 
-    /// [`Batch::vertex_key`] once `check_span(c)` ran (and nothing changed since).
+    /// [`Batch::vertex_with`] once `check_span(c)` ran: the vertex with bits `key` looked up
+    /// in the cache, batched on a miss.
     #[inline(always)]
-    pub fn vertex_in_span(&mut self, key: Key, c: &Current) {
+    fn vertex_in_span(&mut self, key: Key, c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
@@ -482,7 +473,6 @@ impl Batch {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::call::Call;
     use crate::gl;
 
     /// Indices given to `vertices` (position, colour red) in one triangle list.
@@ -802,106 +792,6 @@ mod tests {
             [0, 1, 2]
         );
         assert_eq!(b.pos[2], Vec4::new(6.0, 0.0, 0.0, 1.0));
-    }
-
-    /// A random immediate-mode stream: pairs of Normal3f and Vertex3f (scalar and vector
-    /// forms) over a few positions and normals (so that the cache hits), with now and then a
-    /// colour, a material or an edge flag inside the pair, an invalid Begin or End, and a
-    /// Vertex2f.
-    fn mesh_stream(g: &mut crate::cpu::testgen::Gen, n: usize) -> Vec<Call> {
-        let mut calls = Vec::new();
-        // A few positions and normals, with -0, a NaN and random floats among their components.
-        let mut coord = || match g.next() % 16 {
-            0 => -0.0,
-            1 => f32::from_bits(0x7FC0_0001),
-            2 => g.float(),
-            k => k as f32 * 0.25,
-        };
-        let pool: Vec<[f32; 3]> = (0..4).map(|_| [coord(), coord(), coord()]).collect();
-        while calls.len() < n {
-            let mode = match g.next() % 8 {
-                0 => gl::TRIANGLES,
-                1 => gl::POINTS,
-                2 => 0x4242,
-                _ => gl::TRIANGLE_STRIP,
-            };
-            calls.push(Call::Begin(mode));
-            for _ in 0..g.next() % 9 {
-                let v = pool[(g.next() % 4) as usize];
-                let call = match g.next() % 24 {
-                    0 => Call::Color3f(v[0], v[1], v[2]),
-                    1 => Call::Materialf(gl::FRONT_AND_BACK, gl::SHININESS, v[0]),
-                    2 => Call::EdgeFlag(g.next() % 2 == 0),
-                    3 => Call::Vertex2f(v[0], v[1]),
-                    4 => Call::Normal3fv(v),
-                    5 => Call::Vertex3fv(v),
-                    6 => Call::Begin(gl::LINES),
-                    7..=14 => Call::Normal3f(v[0], v[1], v[2]),
-                    _ => Call::Vertex3f(v[0], v[1], v[2]),
-                };
-                calls.push(call);
-            }
-            if g.next() % 16 != 0 {
-                calls.push(Call::End);
-            }
-        }
-        calls
-    }
-
-    /// Everything a batch holds, with its floats as bits.
-    fn contents(b: &Batch) -> String {
-        let bits4 = |v: &Vec4| v.to_array().map(f32::to_bits);
-        let bits3 = |v: &Vec3| v.to_array().map(f32::to_bits);
-        let pos: Vec<_> = b.pos.iter().map(bits4).collect();
-        let normal: Vec<_> = b.normal.iter().map(bits3).collect();
-        let spans: Vec<_> = b
-            .spans
-            .iter()
-            .map(|a| {
-                (
-                    bits4(&a.color),
-                    bits4(&a.color2),
-                    a.tex.map(|t| bits4(&t)),
-                    a.fog.to_bits(),
-                )
-            })
-            .collect();
-        format!(
-            "{:?} {pos:?} {normal:?} {:?} {spans:?} {:?} {:?} {:?} {:?} {} {} {:?}",
-            b.idx,
-            b.span_of,
-            b.edge,
-            b.mat,
-            b.prims,
-            b.snapshots.len(),
-            b.span,
-            b.serial0,
-            b.cache.iter().map(|s| s.0).collect::<Vec<_>>()
-        )
-    }
-
-    #[test]
-    fn a_replayed_mesh_batches_as_its_calls_one_by_one() {
-        let mut g = crate::cpu::testgen::Gen(11);
-        let (mut hits, mut misses) = (0, 0);
-        for _ in 0..200 {
-            let calls = mesh_stream(&mut g, 60);
-            let mut fast = crate::Context::new(4, 4).unwrap_or_else(|e| panic!("{e}"));
-            let mut slow = crate::Context::new(4, 4).unwrap_or_else(|e| panic!("{e}"));
-            fast.replay(&calls);
-            for call in &calls {
-                slow.execute(call);
-            }
-            let (f, s) = (&fast.renderer.batch, &slow.renderer.batch);
-            assert_eq!(contents(f), contents(s), "{calls:?}");
-            let normal = |c: &crate::Context| c.state.current.normal.to_array().map(f32::to_bits);
-            assert_eq!(normal(&fast), normal(&slow));
-            assert_eq!(fast.begin_mode, slow.begin_mode);
-            assert_eq!(fast.pending_error(), slow.pending_error());
-            hits += f.idx.len() - f.pos.len();
-            misses += f.pos.len();
-        }
-        assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
     }
 
     #[test]

@@ -436,20 +436,6 @@ impl Renderer {
         self.batch.vertex(position, current);
     }
 
-    /// [`Batch::check_span`]: a replay loop's, before a run of vertices.
-    #[inline(always)]
-    pub fn check_span(&mut self, current: &Current) {
-        self.batch.check_span(current);
-    }
-
-    /// A vertex with the current attributes, given the bits of its position and of the current
-    /// normal, once `check_span` ran (a replay loop's, whose normal is held in registers:
-    /// [`Batch::vertex_in_span`]).
-    #[inline(always)]
-    pub fn vertex_in_span(&mut self, key: batch::Key, current: &Current) {
-        self.batch.vertex_in_span(key, current);
-    }
-
     /// A vertex with attributes the caller computed ([`Batch::vertex_computed`]).
     #[inline]
     pub fn vertex_computed(&mut self, position: Vec4, current: &Current) {
