@@ -2212,6 +2212,17 @@ mod tests {
         assert!(n > 100_000, "too few triangles: {n}");
     }
 
+    /// Whether the CPU has AVX2, which the test of kernel `what` needs (said on stderr when
+    /// not).
+    #[cfg(target_arch = "x86_64")]
+    fn has_avx2(what: &str) -> bool {
+        let has = is_x86_feature_detected!("avx2");
+        if !has {
+            eprintln!("no AVX2 on this CPU: {what} not compared");
+        }
+        has
+    }
+
     /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
     /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
     /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
@@ -2259,8 +2270,7 @@ mod tests {
     #[test]
     fn i64_lanes_are_as_f64() {
         use std::arch::x86_64::{_mm256_loadu_si256, _mm256_storeu_pd};
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: i64_lanes_f64 not compared");
+        if !has_avx2("i64_lanes_f64") {
             return;
         }
         let mut g = Gen(0x5eed_1164);
@@ -2293,8 +2303,7 @@ mod tests {
         use super::{SetupCtx, Worker, F_BACK};
         use crate::cpu::vertex::Layout;
         use crate::state::State;
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: emit_colour_avx2 not compared");
+        if !has_avx2("emit_colour_avx2") {
             return;
         }
         let mut g = Gen(0x5eed_c010);
@@ -2338,20 +2347,10 @@ mod tests {
         }
         assert!(n > 10_000, "only {n} triangles compared");
         assert_eq!(a.prims.len(), b.prims.len());
+        // (`Debug` writes every field, each float as the shortest decimal that reads back as
+        // it, and every NaN as `NaN`.)
         for (i, (x, y)) in a.prims.iter().zip(&b.prims).enumerate() {
-            let f = |p: &super::RPrim| {
-                (
-                    p.flags,
-                    p.bbox,
-                    p.mat,
-                    p.voff,
-                    p.xy,
-                    p.owns,
-                    p.cover,
-                    p.z.map(nan_bits),
-                )
-            };
-            assert_eq!(f(x), f(y), "primitive {i}");
+            assert_eq!(format!("{x:?}"), format!("{y:?}"), "primitive {i}");
         }
         assert_eq!(a.pool.len(), b.pool.len());
         for (i, (&x, &y)) in a.pool.iter().zip(&b.pool).enumerate() {
@@ -2369,8 +2368,7 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn geom_small_is_geom() {
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: geom_small_avx2 not compared");
+        if !has_avx2("geom_small_avx2") {
             return;
         }
         let mut g = Gen(0x5eed_2c2c);
