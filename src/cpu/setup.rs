@@ -1092,9 +1092,36 @@ impl Worker {
             None
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let small: Option<(Geom, u8)> = None;
+        let small: Option<(Geom, u8, ())> = None;
+        let back = !front;
+        let s = ctx.layout.stride;
         let (g, cover) = match small {
-            Some(s) => s,
+            Some((g, cover, l)) => {
+                // (The cover tested and a colour-only triangle emitted here, before the join
+                // with the other route, so that its edges leave their lanes only for the other
+                // layouts; and nothing it needs computed before the test, where it cost every
+                // triangle with a box ≈14 instructions.)
+                if cover == COVER_KNOWN {
+                    return;
+                }
+                #[cfg(target_arch = "x86_64")]
+                if ctx.rl.n == 4 && !ctx.flat && ctx.gather[usize::from(back)][0].run {
+                    let o = ctx.gather[usize::from(back)][0].off[0] as usize;
+                    // SAFETY: the caller's contract (`fast_tri`'s).
+                    let (z, iw, vs) = unsafe { ccw_verts(g.swapped, w, ids, vout, s) };
+                    // SAFETY: `run`: `o + 4 <= stride` (see `colour4`).
+                    let q = unsafe { colour4(vs, o) };
+                    let flags = if back { F_BACK } else { 0 };
+                    let mat = mats.get(provoking as usize).copied().unwrap_or(0);
+                    // SAFETY: `l` comes from `geom_small_avx2`, called under `src.wide`
+                    // only (see above): the CPU has AVX2 and this code is compiled for it.
+                    unsafe { self.emit_colour_avx2(ctx, &g, &l, z, iw, flags, mat, q, cover) };
+                    return;
+                }
+                #[cfg(not(target_arch = "x86_64"))]
+                let _ = l;
+                (g, cover)
+            }
             None => {
                 let g = geom_placed(bbox, p, area);
                 let cover = g.coverage();
@@ -1104,37 +1131,19 @@ impl Worker {
         if cover == COVER_KNOWN {
             return;
         }
-        let back = !front;
         let mut flags = if back { F_BACK } else { 0 };
         if ctx.flat {
             flags |= F_FLAT;
         }
-        // The vertices in `g.v`'s counter-clockwise order.
-        let (ids, ws) = if g.swapped {
-            ([ids[0], ids[2], ids[1]], [w[0], w[2], w[1]])
-        } else {
-            (ids, w)
-        };
-        let s = ctx.layout.stride;
         let mat = mats.get(provoking as usize).copied().unwrap_or(0);
         let table = &ctx.gather[usize::from(back)];
         let flat = ctx.flat;
-        let (z, iw) = ([ws[0].z, ws[1].z, ws[2].z], [ws[0].iw, ws[1].iw, ws[2].iw]);
-        // The three vertices whole, without a range check (the caller's contract).
-        let vert = |i: u32| {
-            let i = i as usize;
-            debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
-            // SAFETY: floats i·s..(i + 1)·s are inside `vout` (the contract of `fast_tri`).
-            unsafe { vout.get_unchecked(i * s..(i + 1) * s) }
-        };
-        let vs = [vert(ids[0]), vert(ids[1]), vert(ids[2])];
+        // SAFETY: the caller's contract (`fast_tri`'s).
+        let (z, iw, vs) = unsafe { ccw_verts(g.swapped, w, ids, vout, s) };
         if ctx.rl.n == 4 && !flat && table[0].run {
-            // The colour alone, smooth (the common dense mesh): its four floats straight from
-            // each vertex (what `load4(vert(i), o)` is).
-            let o = table[0].off[0] as usize;
-            // SAFETY: each of `vs` holds `s` = `layout.stride` floats, and `run`: `o + 4 <=
-            // stride` (`gather_table`, of this layout).
-            let q = vs.map(|v| unsafe { load4_unchecked(v, o) });
+            // The colour alone, smooth (the common dense mesh).
+            // SAFETY: `run`: `o + 4 <= stride` (see `colour4`).
+            let q = unsafe { colour4(vs, table[0].off[0] as usize) };
             let a = q[0];
             self.emit_tri(ctx, &g, z, iw, flags, mat, |_| a, |j, _| q[j], cover);
             return;
@@ -1208,8 +1217,7 @@ impl Worker {
         let voff = self.pool.len();
         let len = 3 * (n + 1);
         self.pool.reserve(len);
-        let (area, bbox) = (g.area, g.bbox);
-        let v = g.v;
+        let area = g.area;
         let mut lam = [[0f64; 3]; 3];
         let inv = 1.0 / area as f64;
         for k in 0..3 {
@@ -1298,25 +1306,178 @@ impl Worker {
         // SAFETY: `reserve` made room for `len` more floats, and every one of them was written
         // above (`head`, and each chunk of `planes` whole).
         unsafe { self.pool.set_len(voff + len) };
-        let voff = voff as u32;
+        let v = g.v;
+        let xy = [
+            v[0][0] as i32,
+            v[0][1] as i32,
+            v[1][0] as i32,
+            v[1][1] as i32,
+            v[2][0] as i32,
+            v[2][1] as i32,
+        ];
+        self.push_tri(g, xy, flags, mat, voff, cover, zp);
+    }
+
+    /// Pushes the triangle placed by `g` (`xy` its vertices as `RPrim::xy`) whose floats start
+    /// at `voff` in the pool (see `emit_tri`), `zp` its depth plane.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn push_tri(
+        &mut self,
+        g: &Geom,
+        xy: [i32; 6],
+        flags: u8,
+        mat: u32,
+        voff: usize,
+        cover: u8,
+        zp: [f32; 3],
+    ) {
         self.push(RPrim {
             kind: PrimKind::Tri,
             flags,
-            bbox,
+            bbox: g.bbox,
             mat,
-            voff,
-            xy: [
-                v[0][0] as i32,
-                v[0][1] as i32,
-                v[1][0] as i32,
-                v[1][1] as i32,
-                v[2][0] as i32,
-                v[2][1] as i32,
-            ],
+            voff: voff as u32,
+            xy,
             owns: g.owns,
             cover,
             z: zp,
         });
+    }
+
+    /// `emit_tri` of a smooth triangle whose only varyings are the colour (`q[j]` vertex j's
+    /// four floats, `g.v`'s order), placed by `geom_small_avx2` (`l` its edges, lane k edge
+    /// k): the same floats, computed in lanes. The barycentric planes are built with lane j
+    /// the plane's term j (value, x slope, y slope) from the edges' lanes converted at once
+    /// (`i64_lanes_f64`, `small_lanes_f64`) and transposed, so the depth and 1/w planes take
+    /// three multiplications and two additions of vectors; `emit_tri` stored the edges out
+    /// of their lanes and converted and multiplied nine scalars (≈60 instructions). Each
+    /// value takes `emit_tri`'s operations in its order: `(dx·256) as f64 · inv` is `dx as
+    /// f64 · (256·inv)` (both products exact before one rounding; `256·inv` exact), and
+    /// `-dy·256` is negated as an integer, so a zero stays +0.0
+    /// (`colour_lanes_are_emit_tri`).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn emit_colour_avx2(
+        &mut self,
+        ctx: &SetupCtx,
+        g: &Geom,
+        l: &EdgeLanes,
+        z: [f64; 3],
+        iw: [f32; 3],
+        flags: u8,
+        mat: u32,
+        q: [Vec4; 3],
+        cover: u8,
+    ) {
+        use std::arch::x86_64::{
+            _mm256_add_pd, _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_cvtpd_ps,
+            _mm256_extractf128_ps, _mm256_loadu_pd, _mm256_mul_pd, _mm256_permute2f128_pd,
+            _mm256_set1_pd, _mm256_set_m128, _mm256_setr_epi32, _mm256_setzero_si256,
+            _mm256_storeu_pd, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_unpackhi_pd,
+            _mm256_unpacklo_pd, _mm_cvtss_f32, _mm_extract_ps, _mm_storeu_ps,
+        };
+        const LEN: usize = 15;
+        debug_assert!(ctx.rl.n == 4 && flags & F_FLAT == 0, "not a smooth colour");
+        // Room first, as in `emit_tri` (one float more: see the stores below).
+        let voff = self.pool.len();
+        self.pool.reserve(LEN + 1);
+        let l_xy = l.xy;
+        let inv = 1.0 / g.area as f64;
+        // SAFETY: the CPU has AVX2 (the contract); register arithmetic and one store of four
+        // f64 to `zd`.
+        let (zp, lam) = unsafe {
+            let zero = _mm256_setzero_si256();
+            let scaled = _mm256_set1_pd(inv * 256.0);
+            // Lane k: edge k's terms of the barycentric plane of the vertex opposite it.
+            let v0 = _mm256_mul_pd(i64_lanes_f64(l.e), _mm256_set1_pd(inv));
+            let v1 = _mm256_mul_pd(small_lanes_f64(_mm256_sub_epi64(zero, l.dy)), scaled);
+            let v2 = _mm256_mul_pd(small_lanes_f64(l.dx), scaled);
+            // Transposed: `k[k]` lane j is term j of edge k (lane 3 a copy of lane 2).
+            let (t0, t1) = (_mm256_unpacklo_pd(v0, v1), _mm256_unpackhi_pd(v0, v1));
+            let (t2, t3) = (_mm256_unpacklo_pd(v2, v2), _mm256_unpackhi_pd(v2, v2));
+            let k0 = _mm256_permute2f128_pd::<0x20>(t0, t2);
+            let k1 = _mm256_permute2f128_pd::<0x20>(t1, t3);
+            let k2 = _mm256_permute2f128_pd::<0x31>(t0, t2);
+            // `emit_tri`'s lam[(k + 2) % 3] is edge k's.
+            let lam = [k1, k2, k0];
+            let zp = _mm256_add_pd(
+                _mm256_add_pd(
+                    _mm256_mul_pd(_mm256_set1_pd(z[0]), lam[0]),
+                    _mm256_mul_pd(_mm256_set1_pd(z[1]), lam[1]),
+                ),
+                _mm256_mul_pd(_mm256_set1_pd(z[2]), lam[2]),
+            );
+            let zp = if ctx.offset_on[0] {
+                let mut zd = [0.0f64; 4];
+                _mm256_storeu_pd(zd.as_mut_ptr(), zp);
+                zd[0] += offset(ctx, zd[1], zd[2]);
+                _mm256_loadu_pd(zd.as_ptr())
+            } else {
+                zp
+            };
+            let z32 = _mm256_cvtpd_ps(zp);
+            let zp = [
+                _mm_cvtss_f32(z32),
+                f32::from_bits(_mm_extract_ps::<1>(z32) as u32),
+                f32::from_bits(_mm_extract_ps::<2>(z32) as u32),
+            ];
+            (
+                zp,
+                [
+                    Vec4::from(_mm256_cvtpd_ps(lam[0])),
+                    Vec4::from(_mm256_cvtpd_ps(lam[1])),
+                    Vec4::from(_mm256_cvtpd_ps(lam[2])),
+                ],
+            )
+        };
+        // 1/w's plane, as `emit_tri`'s `plane`: lane j term j.
+        let iw4 = [Vec4::splat(iw[0]), Vec4::splat(iw[1]), Vec4::splat(iw[2])];
+        let head = iw4[0] * lam[0] + iw4[1] * lam[1] + iw4[2] * lam[2];
+        let f = [q[0] * iw4[0], q[1] * iw4[1], q[2] * iw4[2]];
+        let spare = self.pool.spare_capacity_mut();
+        debug_assert!(spare.len() > LEN, "pool not reserved");
+        // SAFETY: the CPU has AVX2 (the contract). `reserve(LEN + 1)` above left room for
+        // `LEN + 1` floats after the pool's: the stores of four floats write floats 0..4,
+        // 3..7, 6..10, 9..13 and 12..16 of that room, in that order, each overwriting the
+        // previous one's fourth (float 15 is left past the end). The rest is register
+        // arithmetic.
+        let xy = unsafe {
+            // The colour's planes, varying by varying as the pool holds them (`store_group`'s
+            // order): lane j of half h is term j of colour 2·i + h, from varying 2·i + h of
+            // each vertex's `f` against the three terms of its barycentric plane, with
+            // `plane`'s operations in its order.
+            // (No closures: they are compiled without AVX2, so its intrinsics are not
+            // inlined into them, and they went out of line, ≈180 instructions a triangle.)
+            let l = [
+                _mm256_set_m128(lam[0].into(), lam[0].into()),
+                _mm256_set_m128(lam[1].into(), lam[1].into()),
+                _mm256_set_m128(lam[2].into(), lam[2].into()),
+            ];
+            let f = [
+                _mm256_castps128_ps256(f[0].into()),
+                _mm256_castps128_ps256(f[1].into()),
+                _mm256_castps128_ps256(f[2].into()),
+            ];
+            let c01 = colour_pair(f, l, _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1));
+            let c23 = colour_pair(f, l, _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3));
+            let p = spare.as_mut_ptr().cast::<f32>();
+            _mm_storeu_ps(p, head.into());
+            _mm_storeu_ps(p.add(3), _mm256_castps256_ps128(c01));
+            _mm_storeu_ps(p.add(6), _mm256_extractf128_ps::<1>(c01));
+            _mm_storeu_ps(p.add(9), _mm256_castps256_ps128(c23));
+            _mm_storeu_ps(p.add(12), _mm256_extractf128_ps::<1>(c23));
+            let mut xy = [0i32; 8];
+            _mm256_storeu_si256(xy.as_mut_ptr().cast(), l_xy);
+            [xy[0], xy[1], xy[2], xy[3], xy[4], xy[5]]
+        };
+        // SAFETY: `reserve` made room, and the first `LEN` floats were written above.
+        unsafe { self.pool.set_len(voff + LEN) };
+        self.push_tri(g, xy, flags, mat, voff, cover, zp);
     }
 
     /// Appends `p` and bins it into every tile its bounding box overlaps.
@@ -1369,6 +1530,56 @@ impl Worker {
             }
         }
         self.prims.push(p);
+    }
+}
+
+/// `Worker::fast_tri`'s vertices `ids` (records `w`) in `Geom::v`'s counter-clockwise order
+/// (the second and third exchanged when `swapped`): their window z, 1/w and floats in `vout`
+/// (`s` each), without a range check.
+///
+/// # Safety
+/// `vout` holds `(ids[j] + 1) * s` floats at least, for each j.
+#[inline(always)]
+unsafe fn ccw_verts<'a>(
+    swapped: bool,
+    w: [&Win; 3],
+    ids: [u32; 3],
+    vout: &'a [f32],
+    s: usize,
+) -> ([f64; 3], [f32; 3], [&'a [f32]; 3]) {
+    let (ids, ws) = if swapped {
+        ([ids[0], ids[2], ids[1]], [w[0], w[2], w[1]])
+    } else {
+        (ids, w)
+    };
+    let vert = |i: u32| {
+        let i = i as usize;
+        debug_assert!((i + 1) * s <= vout.len(), "vertex {i} not processed");
+        // SAFETY: floats i·s..(i + 1)·s are inside `vout` (the contract).
+        unsafe { vout.get_unchecked(i * s..(i + 1) * s) }
+    };
+    (
+        [ws[0].z, ws[1].z, ws[2].z],
+        [ws[0].iw, ws[1].iw, ws[2].iw],
+        [vert(ids[0]), vert(ids[1]), vert(ids[2])],
+    )
+}
+
+/// The four floats from `o` of each of `vs` (a colour-only layout's colour: what `load4(v, o)`
+/// is), without a range check.
+///
+/// # Safety
+/// Each of `vs` holds `o + 4` floats at least (the layout's `stride`, when its gather table's
+/// group 0 is a `run`: `gather_table`).
+#[inline(always)]
+unsafe fn colour4(vs: [&[f32]; 3], o: usize) -> [Vec4; 3] {
+    // SAFETY: floats o..o + 4 are inside each of `vs` (the contract).
+    unsafe {
+        [
+            load4_unchecked(vs[0], o),
+            load4_unchecked(vs[1], o),
+            load4_unchecked(vs[2], o),
+        ]
     }
 }
 
@@ -1551,12 +1762,17 @@ fn doubled_area(p: [[i64; 2]; 3]) -> i64 {
 /// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option<(Geom, u8)> {
+unsafe fn geom_small_avx2(
+    bbox: [i32; 4],
+    p: [[i64; 2]; 3],
+    area: i64,
+) -> Option<(Geom, u8, EdgeLanes)> {
     use std::arch::x86_64::{
-        _mm256_add_epi64, _mm256_and_si256, _mm256_castsi256_pd, _mm256_cmpeq_epi64,
-        _mm256_cmpgt_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_or_si256,
-        _mm256_permute4x64_epi64, _mm256_set1_epi64x, _mm256_set_epi64x, _mm256_setzero_si256,
-        _mm256_slli_epi64, _mm256_storeu_si256, _mm256_sub_epi64,
+        _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_castsi256_pd,
+        _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_movemask_pd, _mm256_mul_epi32,
+        _mm256_or_si256, _mm256_permute2x128_si256, _mm256_permute4x64_epi64, _mm256_set1_epi64x,
+        _mm256_set_epi64x, _mm256_setzero_si256, _mm256_slli_epi64, _mm256_storeu_si256,
+        _mm256_sub_epi64, _mm256_unpackhi_epi64, _mm256_unpacklo_epi64,
     };
     let [x0, y0, x1, y1] = bbox;
     if x1 - x0 > 1 || y1 - y0 > 1 {
@@ -1567,7 +1783,7 @@ unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option
     // SAFETY: the CPU has AVX2, and the caller is compiled for it (this function's contract);
     // the stores write the four i64 of
     // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
-    let (inside, owns) = unsafe {
+    let (inside, owns, lanes) = unsafe {
         // Lane k: vertex k, and vertex k + 1 by a permutation (lane 3 zeros).
         let x = _mm256_set_epi64x(0, v[2][0], v[1][0], v[0][0]);
         let y = _mm256_set_epi64x(0, v[2][1], v[1][1], v[0][1]);
@@ -1590,24 +1806,33 @@ unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option
             _mm256_cmpgt_epi64(zero, ey),
             _mm256_and_si256(_mm256_cmpeq_epi64(ey, zero), _mm256_cmpgt_epi64(ex, zero)),
         );
-        let c0 = _mm256_sub_epi64(_mm256_sub_epi64(ee, owns), _mm256_set1_epi64x(1));
+        // (Lane 3, an edge of nothing, gets 0 − 0 − 0: never negative, so it takes no mask.)
+        let c0 = _mm256_sub_epi64(_mm256_sub_epi64(ee, owns), _mm256_set_epi64x(0, 1, 1, 1));
         // Centres 1, 2, 3 as `inside_scalar` steps to them: + (−dy·256), + dx·256, both.
         let (sx, sy) = (_mm256_slli_epi64::<8>(ey), _mm256_slli_epi64::<8>(ex));
         let c1 = _mm256_sub_epi64(c0, sx);
         let c2 = _mm256_add_epi64(c0, sy);
         let c3 = _mm256_add_epi64(c1, sy);
-        // A centre is inside when none of the three edges is negative there.
-        let n0 = _mm256_movemask_pd(_mm256_castsi256_pd(c0)) & 0b111;
-        let n1 = _mm256_movemask_pd(_mm256_castsi256_pd(c1)) & 0b111;
-        let n2 = _mm256_movemask_pd(_mm256_castsi256_pd(c2)) & 0b111;
-        let n3 = _mm256_movemask_pd(_mm256_castsi256_pd(c3)) & 0b111;
-        let inside = u8::from(n0 == 0)
-            | u8::from(n1 == 0) << 1
-            | u8::from(n2 == 0) << 2
-            | u8::from(n3 == 0) << 3;
+        // A centre is inside when none of the edges is negative there: the four centres'
+        // lanes OR-ed together by two unpacks and a swap of halves, lane c then centre c's
+        // (one `movmskpd` where four, with their tests and shifts, were ≈18 instructions).
+        let p01 = _mm256_or_si256(_mm256_unpacklo_epi64(c0, c1), _mm256_unpackhi_epi64(c0, c1));
+        let p23 = _mm256_or_si256(_mm256_unpacklo_epi64(c2, c3), _mm256_unpackhi_epi64(c2, c3));
+        let all = _mm256_or_si256(
+            _mm256_permute2x128_si256::<0x20>(p01, p23),
+            _mm256_permute2x128_si256::<0x31>(p01, p23),
+        );
+        let inside = !_mm256_movemask_pd(_mm256_castsi256_pd(all)) as u8 & 0b1111;
         (
             inside,
             _mm256_movemask_pd(_mm256_castsi256_pd(owns)) as u8 & 0b111,
+            EdgeLanes {
+                dx: ex,
+                dy: ey,
+                e: ee,
+                // x in the low dwords, y in the high ones: `RPrim::xy` (each `as i32`).
+                xy: _mm256_blend_epi32::<0b1010_1010>(x, _mm256_slli_epi64::<32>(y)),
+            },
         )
     };
     let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
@@ -1621,7 +1846,101 @@ unsafe fn geom_small_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> Option
         d: [[dx[0], dy[0]], [dx[1], dy[1]], [dx[2], dy[2]]],
         e: [e[0], e[1], e[2]],
     };
-    Some((g, COVER_KNOWN | (inside & cols & rows)))
+    Some((g, COVER_KNOWN | (inside & cols & rows), lanes))
+}
+
+/// `geom_small_avx2`'s edges as it leaves them in AVX2 registers: lane k holds edge k's
+/// `Geom::d` (dx, dy) and `Geom::e` (lane 3: 0), for `Worker::emit_colour_avx2`, which
+/// builds the barycentric planes from them in lanes without storing them first.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct EdgeLanes {
+    dx: std::arch::x86_64::__m256i,
+    dy: std::arch::x86_64::__m256i,
+    e: std::arch::x86_64::__m256i,
+    /// The vertices counter-clockwise as i32 (`Geom::v` as `RPrim::xy` holds it), then 0, 0.
+    xy: std::arch::x86_64::__m256i,
+}
+
+/// Two colour varyings' planes, one a half (lane j term j, as the pool holds them): `idx`
+/// picks the varying of each half from `f[m]` (vertex m's four, over w, in the low half),
+/// multiplied by `l[m]` (vertex m's barycentric plane in both halves), the three products
+/// added in `plane`'s order.
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn colour_pair(
+    f: [std::arch::x86_64::__m256; 3],
+    l: [std::arch::x86_64::__m256; 3],
+    idx: std::arch::x86_64::__m256i,
+) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::{_mm256_add_ps, _mm256_mul_ps, _mm256_permutevar8x32_ps};
+    // SAFETY: register arithmetic (the CPU has AVX2: the contract).
+    unsafe {
+        let t0 = _mm256_mul_ps(_mm256_permutevar8x32_ps(f[0], idx), l[0]);
+        let t1 = _mm256_mul_ps(_mm256_permutevar8x32_ps(f[1], idx), l[1]);
+        let t2 = _mm256_mul_ps(_mm256_permutevar8x32_ps(f[2], idx), l[2]);
+        _mm256_add_ps(_mm256_add_ps(t0, t1), t2)
+    }
+}
+
+/// The i64 lanes of `v` as f64, each rounded once to nearest as `as f64` rounds it (so the
+/// same bits): the top 16 bits' multiple of 2^48 and the low 48 bits are each exact in a
+/// double (added to and subtracted from constants whose spacing is 2^48 and 1), and their sum
+/// is rounded once. AVX2 has no conversion of i64 (`vcvtqq2pd` is AVX-512).
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn i64_lanes_f64(v: std::arch::x86_64::__m256i) -> std::arch::x86_64::__m256d {
+    use std::arch::x86_64::{
+        _mm256_add_epi64, _mm256_add_pd, _mm256_blend_epi16, _mm256_castpd_si256,
+        _mm256_castsi256_pd, _mm256_set1_pd, _mm256_setzero_si256, _mm256_srai_epi32,
+        _mm256_sub_pd,
+    };
+    // 3·2^67, whose spacing is 2^16: adding n·2^32 to its bits adds n·2^48; and 2^52, whose
+    // spacing is 1.
+    let (big, unit) = ((3u128 << 67) as f64, (1u64 << 52) as f64);
+    // SAFETY: register arithmetic (the CPU has AVX2: the contract).
+    unsafe {
+        // The top 16 bits, sign-extended, in the high dword (the low dword zeroed).
+        let hi = _mm256_blend_epi16::<0x33>(_mm256_srai_epi32::<16>(v), _mm256_setzero_si256());
+        let hi = _mm256_castsi256_pd(_mm256_add_epi64(
+            hi,
+            _mm256_castpd_si256(_mm256_set1_pd(big)),
+        ));
+        // The low 48 bits under 2^52's exponent.
+        let lo = _mm256_castsi256_pd(_mm256_blend_epi16::<0x88>(
+            v,
+            _mm256_castpd_si256(_mm256_set1_pd(unit)),
+        ));
+        _mm256_add_pd(_mm256_sub_pd(hi, _mm256_set1_pd(big + unit)), lo)
+    }
+}
+
+/// The i64 lanes of `v`, each within ±2^51, as f64 (exactly): added to the bits of 1.5·2^52,
+/// whose spacing is 1, then that subtracted.
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn small_lanes_f64(v: std::arch::x86_64::__m256i) -> std::arch::x86_64::__m256d {
+    use std::arch::x86_64::{
+        _mm256_add_epi64, _mm256_castpd_si256, _mm256_castsi256_pd, _mm256_set1_pd, _mm256_sub_pd,
+    };
+    let magic = (3u64 << 51) as f64;
+    // SAFETY: register arithmetic (the CPU has AVX2: the contract).
+    unsafe {
+        let m = _mm256_set1_pd(magic);
+        _mm256_sub_pd(
+            _mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(m))),
+            m,
+        )
+    }
 }
 
 /// The rest of `geom` once the bounding box `bbox` (not empty, inside the rectangle) is known.
@@ -1893,6 +2212,154 @@ mod tests {
         assert!(n > 100_000, "too few triangles: {n}");
     }
 
+    /// Whether the CPU has AVX2, which the test of kernel `what` needs (said on stderr when
+    /// not).
+    #[cfg(target_arch = "x86_64")]
+    fn has_avx2(what: &str) -> bool {
+        let has = is_x86_feature_detected!("avx2");
+        if !has {
+            eprintln!("no AVX2 on this CPU: {what} not compared");
+        }
+        has
+    }
+
+    /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
+    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
+    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
+    /// and the box cut by the rectangle: `(rect, p, bbox, area)`, `None` when its box is empty
+    /// or its area 0.
+    #[cfg(target_arch = "x86_64")]
+    #[allow(clippy::type_complexity)]
+    fn small_case(g: &mut Gen, case: usize) -> Option<([i32; 4], [[i64; 2]; 3], [i32; 4], i64)> {
+        let lim = SNAP_LIMIT as i64;
+        let rect = match case % 4 {
+            0 => [0, 0, 799, 799],
+            1 => [i32::MIN, i32::MIN, i32::MAX, i32::MAX],
+            _ => {
+                let mut r = || (g.next() % 40) as i32 - 8;
+                [r(), r(), r(), r()]
+            }
+        };
+        let (cx, cy) = (
+            (g.next() % 3000) as i64 - 800,
+            (g.next() % 3000) as i64 - 800,
+        );
+        let coord = |g: &mut Gen, c: i64| -> i64 {
+            match g.next() % 16 {
+                0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
+                1 => [lim, -lim][(g.next() % 2) as usize],
+                2..=5 => (c & !127) + (g.next() % 5) as i64 * 128 - 256,
+                _ => c + (g.next() % 800) as i64 - 400,
+            }
+        };
+        let p: [[i64; 2]; 3] = std::array::from_fn(|_| [coord(g, cx), coord(g, cy)]);
+        let w = p.map(|[x, y]| Win {
+            fx: x,
+            fy: y,
+            cen: cen(x as i32, y as i32),
+            ..Win::default()
+        });
+        let bbox = wins_bbox(&rect_cen(rect), [&w[0], &w[1], &w[2]])?;
+        let area = doubled_area(p);
+        (area != 0).then_some((rect, p, bbox, area))
+    }
+
+    /// `i64_lanes_f64` against `as f64` on random i64 of every magnitude (and the extremes),
+    /// bit for bit.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn i64_lanes_are_as_f64() {
+        use std::arch::x86_64::{_mm256_loadu_si256, _mm256_storeu_pd};
+        if !has_avx2("i64_lanes_f64") {
+            return;
+        }
+        let mut g = Gen(0x5eed_1164);
+        for case in 0..100_000 {
+            let v: [i64; 4] = std::array::from_fn(|i| match (case + i) % 5 {
+                0 => [i64::MIN, i64::MAX, 0, -1, 1 << 53, (1 << 53) + 1][(g.next() % 6) as usize],
+                1 => (g.next() as i64) - (1 << 52),
+                _ => ((g.next() << 11) ^ g.next()) as i64 >> (g.next() % 64),
+            });
+            let mut got = [0.0f64; 4];
+            // SAFETY: the CPU has AVX2 (detected above); the load reads the four i64 of `v`
+            // and the store writes the four f64 of `got`.
+            unsafe {
+                let f = super::i64_lanes_f64(_mm256_loadu_si256(v.as_ptr().cast()));
+                _mm256_storeu_pd(got.as_mut_ptr(), f);
+            }
+            for i in 0..4 {
+                assert_eq!(got[i].to_bits(), (v[i] as f64).to_bits(), "{}", v[i]);
+            }
+        }
+    }
+
+    /// `Worker::emit_colour_avx2` against `Worker::emit_tri` on the triangles of
+    /// `small_case` that `geom_small_avx2` places (edges far past 2^51 among them), with
+    /// random z, 1/w and colours (NaN, ±0, huge), facing, polygon offset on and off: the same
+    /// primitive and the same fifteen floats, bit for bit.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn colour_lanes_are_emit_tri() {
+        use super::{SetupCtx, Worker, F_BACK};
+        use crate::cpu::vertex::Layout;
+        use crate::state::State;
+        if !has_avx2("emit_colour_avx2") {
+            return;
+        }
+        let mut g = Gen(0x5eed_c010);
+        let ctxs = [false, true].map(|on| {
+            let mut st = State::new(800, 800);
+            st.enables.polygon_offset_fill = on;
+            st.polygon_offset_factor = 1.5;
+            st.polygon_offset_units = -2.0;
+            SetupCtx::new(&st, Layout::for_state(&st), [0, 0, 799, 799], (13, 13))
+        });
+        assert!(ctxs.iter().all(|c| c.rl.n == 4 && !c.flat()));
+        let (mut a, mut b) = (Worker::default(), Worker::default());
+        for w in [&mut a, &mut b] {
+            w.start(&ctxs[0]);
+        }
+        // Every NaN counted as one value: which operand's NaN a product keeps is the
+        // compiler's choice (`lighting::nan_bits`).
+        let nan_bits = |v: f32| if v.is_nan() { u32::MAX } else { v.to_bits() };
+        let mut n = 0;
+        for case in 0..100_000 {
+            let Some((_, p, bbox, area)) = small_case(&mut g, case) else {
+                continue;
+            };
+            // SAFETY: the CPU has AVX2 (detected above).
+            let Some((geo, cover, l)) = (unsafe { geom_small_avx2(bbox, p, area) }) else {
+                continue;
+            };
+            let ctx = &ctxs[case % 2];
+            let z = std::array::from_fn(|_| match g.next() % 8 {
+                0 => f64::from(g.float()),
+                _ => (g.next() % 1_000_000) as f64 * 1e-6,
+            });
+            let iw = std::array::from_fn(|_| g.float());
+            let q = std::array::from_fn(|_| Vec4::new(g.float(), g.float(), g.float(), g.float()));
+            let flags = if g.next() % 2 == 0 { F_BACK } else { 0 };
+            let mat = (g.next() % 7) as u32;
+            a.emit_tri(ctx, &geo, z, iw, flags, mat, |_| q[0], |j, _| q[j], cover);
+            // SAFETY: the CPU has AVX2 (detected above); `l` is `geom_small_avx2`'s.
+            unsafe { b.emit_colour_avx2(ctx, &geo, &l, z, iw, flags, mat, q, cover) };
+            n += 1;
+        }
+        assert!(n > 10_000, "only {n} triangles compared");
+        assert_eq!(a.prims.len(), b.prims.len());
+        // (`Debug` writes every field, each float as the shortest decimal that reads back as
+        // it, and every NaN as `NaN`.)
+        for (i, (x, y)) in a.prims.iter().zip(&b.prims).enumerate() {
+            assert_eq!(format!("{x:?}"), format!("{y:?}"), "primitive {i}");
+        }
+        assert_eq!(a.pool.len(), b.pool.len());
+        for (i, (&x, &y)) in a.pool.iter().zip(&b.pool).enumerate() {
+            assert_eq!(nan_bits(x), nan_bits(y), "pool float {i}: {x} against {y}");
+        }
+        assert_eq!(a.area, b.area);
+        assert_eq!(a.touched, b.touched);
+    }
+
     /// `geom_small_avx2` against `geom_placed` and `Geom::coverage` on random triangles a few
     /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
     /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
@@ -1901,48 +2368,15 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn geom_small_is_geom() {
-        if !is_x86_feature_detected!("avx2") {
-            eprintln!("no AVX2 on this CPU: geom_small_avx2 not compared");
+        if !has_avx2("geom_small_avx2") {
             return;
         }
         let mut g = Gen(0x5eed_2c2c);
-        let lim = SNAP_LIMIT as i64;
         let (mut small, mut covered, mut large) = (0, 0, 0);
         for case in 0..200_000 {
-            let rect = match case % 4 {
-                0 => [0, 0, 799, 799],
-                1 => [i32::MIN, i32::MIN, i32::MAX, i32::MAX],
-                _ => {
-                    let mut r = || (g.next() % 40) as i32 - 8;
-                    [r(), r(), r(), r()]
-                }
-            };
-            let (cx, cy) = (
-                (g.next() % 3000) as i64 - 800,
-                (g.next() % 3000) as i64 - 800,
-            );
-            let coord = |g: &mut Gen, c: i64| -> i64 {
-                match g.next() % 16 {
-                    0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
-                    1 => [lim, -lim][(g.next() % 2) as usize],
-                    2..=5 => (c & !127) + (g.next() % 5) as i64 * 128 - 256,
-                    _ => c + (g.next() % 800) as i64 - 400,
-                }
-            };
-            let p: [[i64; 2]; 3] = std::array::from_fn(|_| [coord(&mut g, cx), coord(&mut g, cy)]);
-            let w = p.map(|[x, y]| Win {
-                fx: x,
-                fy: y,
-                cen: cen(x as i32, y as i32),
-                ..Win::default()
-            });
-            let Some(bbox) = wins_bbox(&rect_cen(rect), [&w[0], &w[1], &w[2]]) else {
+            let Some((rect, p, bbox, area)) = small_case(&mut g, case) else {
                 continue;
             };
-            let area = doubled_area(p);
-            if area == 0 {
-                continue;
-            }
             let want = geom_placed(bbox, p, area);
             let want_cover = want.coverage();
             // SAFETY: the CPU has AVX2 (detected above).
@@ -1951,7 +2385,7 @@ mod tests {
                     assert_eq!(want_cover, 0, "case {case}: {p:?} in {rect:?}");
                     large += 1;
                 }
-                Some((got, cover)) => {
+                Some((got, cover, _)) => {
                     assert_eq!(
                         fields(Some(got)),
                         fields(Some(want)),
