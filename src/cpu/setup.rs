@@ -1092,7 +1092,7 @@ impl Worker {
         let small = if src.wide {
             // SAFETY: `src.wide`: this runs inside `assemble_avx2` or `run_avx2`, which
             // `Route::Avx2` chooses only where the CPU has AVX2.
-            unsafe { geom_small_avx2(bbox, p, area) }
+            unsafe { geom_small_lanes_avx2(bbox, p, area) }
         } else {
             None
         };
@@ -1101,7 +1101,7 @@ impl Worker {
         let back = !front;
         let s = ctx.layout.stride;
         let (g, cover) = match small {
-            Some((g, cover, l)) => {
+            Some((mut g, cover, l)) => {
                 // (The cover tested and a colour-only triangle emitted here, before the join
                 // with the other route, so that its edges leave their lanes only for the other
                 // layouts; and nothing it needs computed before the test, where it cost every
@@ -1125,6 +1125,9 @@ impl Worker {
                 }
                 #[cfg(not(target_arch = "x86_64"))]
                 let _ = l;
+                // `Geom::v` counter-clockwise for the other layouts only (see
+                // `geom_small_lanes_avx2`).
+                g.v = ccw(p, area).1;
                 (g, cover)
             }
             None => {
@@ -1758,16 +1761,38 @@ fn doubled_area(p: [[i64; 2]; 3]) -> i64 {
 /// masks). Each product's factors fit i32 (vertices below `COORD_LIMIT`, and the box corner's
 /// centre lies between them), so `_mm256_mul_epi32` makes it exactly: the same integers, so
 /// the same `Geom` and cover (`geom_small_is_geom` compares). The scalar edges, the tie rule's
-/// branches and the coverage's own sums were ≈140 instructions a triangle.
+/// branches and the coverage's own sums were ≈140 instructions a triangle. (`fast_tri` calls
+/// `geom_small_lanes_avx2`, and completes `Geom::v` itself.)
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
+#[cfg(all(test, target_arch = "x86_64"))]
+unsafe fn geom_small_avx2(
+    bbox: [i32; 4],
+    p: [[i64; 2]; 3],
+    area: i64,
+) -> Option<(Geom, u8, EdgeLanes)> {
+    // SAFETY: this function's contract.
+    let small = unsafe { geom_small_lanes_avx2(bbox, p, area) };
+    small.map(|(mut g, cover, l)| {
+        g.v = ccw(p, area).1;
+        (g, cover, l)
+    })
+}
+
+/// [`geom_small_avx2`] but for `Geom::v`, left as given (`p`): `fast_tri` puts it in
+/// counter-clockwise order (`ccw`) only on the route that reads it, after the colour-only
+/// triangle (which reads `EdgeLanes::xy` instead) has been emitted. Built here, `ccw`'s
+/// selects were ≈10 instructions on every triangle with a box of at most 2x2.
 ///
 /// Inlined (always: as a function of its own it returned the `Geom` through memory, ≈160
 /// instructions a call) into `fast_tri` only where that is compiled for AVX2.
 ///
 /// # Safety
-/// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
+/// As for `geom_small_avx2`.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn geom_small_avx2(
+unsafe fn geom_small_lanes_avx2(
     bbox: [i32; 4],
     p: [[i64; 2]; 3],
     area: i64,
@@ -1783,15 +1808,25 @@ unsafe fn geom_small_avx2(
     if x1 - x0 > 1 || y1 - y0 > 1 {
         return None;
     }
-    let (swapped, v) = ccw(p, area);
+    let swapped = area < 0;
     let (mut dx, mut dy, mut e) = ([0i64; 4], [0i64; 4], [0i64; 4]);
     // SAFETY: the CPU has AVX2, and the caller is compiled for it (this function's contract);
     // the stores write the four i64 of
     // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
     let (inside, owns, lanes) = unsafe {
-        // Lane k: vertex k, and vertex k + 1 by a permutation (lane 3 zeros).
-        let x = _mm256_set_epi64x(0, v[2][0], v[1][0], v[0][0]);
-        let y = _mm256_set_epi64x(0, v[2][1], v[1][1], v[0][1]);
+        // Lane k: vertex k (counter-clockwise), and vertex k + 1 by a permutation (lane 3
+        // zeros): the lanes are built from `p`, a clockwise triangle's second and third
+        // vertices then exchanged in them (`ccw` in lanes).
+        let x = _mm256_set_epi64x(0, p[2][0], p[1][0], p[0][0]);
+        let y = _mm256_set_epi64x(0, p[2][1], p[1][1], p[0][1]);
+        let (x, y) = if swapped {
+            (
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(x),
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(y),
+            )
+        } else {
+            (x, y)
+        };
         let ex = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(x), x);
         let ey = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(y), y);
         let px = _mm256_set1_epi64x(i64::from(x0) * 256 + 128);
@@ -1843,7 +1878,7 @@ unsafe fn geom_small_avx2(
     let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
     let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
     let g = Geom {
-        v,
+        v: p,
         swapped,
         area: area.abs(),
         bbox,
