@@ -599,12 +599,17 @@ impl SetupCtx {
 /// Window coordinate `x` snapped to 1/256 pixel. Rounds half away from zero with a cast
 /// (f64::round is a libm call on baseline x86-64). The clamp to ±2^29 (±2M pixels) keeps every
 /// edge-function product inside i64; only a viewport placed millions of pixels away could reach it.
-/// The clamped value plus one half is below 2^31 in magnitude (NaN gives 0), so the cast is to
-/// i32, which vectorises where a cast to i64 does not.
+/// The clamped value plus one half is below 2^31 in magnitude, so the cast is to i32, which
+/// vectorises where a cast to i64 does not. A NaN gives 0 (what `as i32` gives it): it is
+/// replaced by 0.0 before the cast, so that the cast is a plain truncation (`cvttpd2dq` in
+/// lanes) rather than `as`'s saturating one, whose NaN and range fix-ups were ≈7 instructions a
+/// coordinate in the vertex stage's `win_block` (`snap_is_the_saturating_cast` checks it).
 #[inline(always)]
 pub(super) fn snap(x: f64) -> i32 {
     let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
-    (t + 0.5f64.copysign(t)) as i32
+    let t = if t.is_nan() { 0.0 } else { t };
+    // SAFETY: `t` is finite and |t| <= 2^29, so `t ± 0.5` truncates to a value inside i32.
+    unsafe { (t + 0.5f64.copysign(t)).to_int_unchecked::<i32>() }
 }
 
 /// The processed vertices a run of set-up reads (`vout`, their window records `wins`, their
@@ -1087,7 +1092,7 @@ impl Worker {
         let small = if src.wide {
             // SAFETY: `src.wide`: this runs inside `assemble_avx2` or `run_avx2`, which
             // `Route::Avx2` chooses only where the CPU has AVX2.
-            unsafe { geom_small_avx2(bbox, p, area) }
+            unsafe { geom_small_lanes_avx2(bbox, p, area) }
         } else {
             None
         };
@@ -1096,7 +1101,7 @@ impl Worker {
         let back = !front;
         let s = ctx.layout.stride;
         let (g, cover) = match small {
-            Some((g, cover, l)) => {
+            Some((mut g, cover, l)) => {
                 // (The cover tested and a colour-only triangle emitted here, before the join
                 // with the other route, so that its edges leave their lanes only for the other
                 // layouts; and nothing it needs computed before the test, where it cost every
@@ -1120,6 +1125,9 @@ impl Worker {
                 }
                 #[cfg(not(target_arch = "x86_64"))]
                 let _ = l;
+                // `Geom::v` counter-clockwise for the other layouts only (see
+                // `geom_small_lanes_avx2`).
+                g.v = ccw(p, area).1;
                 (g, cover)
             }
             None => {
@@ -1753,16 +1761,38 @@ fn doubled_area(p: [[i64; 2]; 3]) -> i64 {
 /// masks). Each product's factors fit i32 (vertices below `COORD_LIMIT`, and the box corner's
 /// centre lies between them), so `_mm256_mul_epi32` makes it exactly: the same integers, so
 /// the same `Geom` and cover (`geom_small_is_geom` compares). The scalar edges, the tie rule's
-/// branches and the coverage's own sums were ≈140 instructions a triangle.
+/// branches and the coverage's own sums were ≈140 instructions a triangle. (`fast_tri` calls
+/// `geom_small_lanes_avx2`, and completes `Geom::v` itself.)
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
+#[cfg(all(test, target_arch = "x86_64"))]
+unsafe fn geom_small_avx2(
+    bbox: [i32; 4],
+    p: [[i64; 2]; 3],
+    area: i64,
+) -> Option<(Geom, u8, EdgeLanes)> {
+    // SAFETY: this function's contract.
+    let small = unsafe { geom_small_lanes_avx2(bbox, p, area) };
+    small.map(|(mut g, cover, l)| {
+        g.v = ccw(p, area).1;
+        (g, cover, l)
+    })
+}
+
+/// [`geom_small_avx2`] but for `Geom::v`, left as given (`p`): `fast_tri` puts it in
+/// counter-clockwise order (`ccw`) only on the route that reads it, after the colour-only
+/// triangle (which reads `EdgeLanes::xy` instead) has been emitted. Built here, `ccw`'s
+/// selects were ≈10 instructions on every triangle with a box of at most 2x2.
 ///
 /// Inlined (always: as a function of its own it returned the `Geom` through memory, ≈160
 /// instructions a call) into `fast_tri` only where that is compiled for AVX2.
 ///
 /// # Safety
-/// The CPU must have AVX2, and the caller be compiled for it (`Src::wide`).
+/// As for `geom_small_avx2`.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn geom_small_avx2(
+unsafe fn geom_small_lanes_avx2(
     bbox: [i32; 4],
     p: [[i64; 2]; 3],
     area: i64,
@@ -1778,15 +1808,25 @@ unsafe fn geom_small_avx2(
     if x1 - x0 > 1 || y1 - y0 > 1 {
         return None;
     }
-    let (swapped, v) = ccw(p, area);
+    let swapped = area < 0;
     let (mut dx, mut dy, mut e) = ([0i64; 4], [0i64; 4], [0i64; 4]);
     // SAFETY: the CPU has AVX2, and the caller is compiled for it (this function's contract);
     // the stores write the four i64 of
     // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
     let (inside, owns, lanes) = unsafe {
-        // Lane k: vertex k, and vertex k + 1 by a permutation (lane 3 zeros).
-        let x = _mm256_set_epi64x(0, v[2][0], v[1][0], v[0][0]);
-        let y = _mm256_set_epi64x(0, v[2][1], v[1][1], v[0][1]);
+        // Lane k: vertex k (counter-clockwise), and vertex k + 1 by a permutation (lane 3
+        // zeros): the lanes are built from `p`, a clockwise triangle's second and third
+        // vertices then exchanged in them (`ccw` in lanes).
+        let x = _mm256_set_epi64x(0, p[2][0], p[1][0], p[0][0]);
+        let y = _mm256_set_epi64x(0, p[2][1], p[1][1], p[0][1]);
+        let (x, y) = if swapped {
+            (
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(x),
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(y),
+            )
+        } else {
+            (x, y)
+        };
         let ex = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(x), x);
         let ey = _mm256_sub_epi64(_mm256_permute4x64_epi64::<0b11_00_10_01>(y), y);
         let px = _mm256_set1_epi64x(i64::from(x0) * 256 + 128);
@@ -1838,7 +1878,7 @@ unsafe fn geom_small_avx2(
     let cols = if x1 > x0 { 0b1111 } else { 0b0101 };
     let rows = if y1 > y0 { 0b1111 } else { 0b0011 };
     let g = Geom {
-        v,
+        v: p,
         swapped,
         area: area.abs(),
         bbox,
@@ -2019,6 +2059,84 @@ mod tests {
     use super::{doubled_area, geom_placed, geom_small_avx2, wins_bbox, COVER_KNOWN};
     use crate::cpu::testgen::Gen;
     use glam::Vec4;
+
+    /// `snap` (a plain truncating cast after NaN is replaced by 0.0) against the saturating
+    /// `as i32` it stands in for, bit for bit: NaNs of both signs and several payloads, ±0,
+    /// infinities, subnormals, values at and around the clamp, every tie of ±(k + 1/2)/256,
+    /// random bit patterns of every magnitude and random window coordinates; each value both
+    /// alone and in the lanes of a 16-wide loop compiled with AVX2 (`win_block`'s shape, which
+    /// is where the compiler turns the cast into `cvttpd2dq`).
+    #[test]
+    fn snap_is_the_saturating_cast() {
+        use super::snap;
+        fn reference(x: f64) -> i32 {
+            let t = (x * 256.0).clamp(-SNAP_LIMIT, SNAP_LIMIT);
+            (t + 0.5f64.copysign(t)) as i32
+        }
+        let lim = SNAP_LIMIT / 256.0;
+        let mut xs = vec![
+            0.0,
+            -0.0,
+            f64::NAN,
+            -f64::NAN,
+            f64::from_bits(0x7ff0_0000_0000_0001),
+            f64::from_bits(0xfff8_dead_beef_0001),
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            f64::from_bits(1),
+            -f64::from_bits(1),
+            lim,
+            -lim,
+            1e300,
+            -1e300,
+            2f64.powi(31),
+            -(2f64.powi(31)),
+        ];
+        for d in [-2.0, -1.0, -0.5, 0.5, 1.0, 2.0] {
+            xs.push(lim + d / 256.0);
+            xs.push(-lim + d / 256.0);
+            xs.push(f64::from_bits((lim + d).to_bits() - 1));
+        }
+        for k in -600i32..600 {
+            let tie = (f64::from(k) + 0.5) / 256.0;
+            xs.extend([
+                tie,
+                f64::from_bits(tie.to_bits() + 1),
+                f64::from_bits(tie.to_bits() - 1),
+            ]);
+            xs.push(f64::from(k) * 1024.0 + 0.5 / 256.0);
+        }
+        let mut g = Gen(0x5a4b_2026);
+        for _ in 0..200_000 {
+            xs.push(f64::from_bits(g.next()));
+            xs.push((g.next() as i64 as f64) / 2f64.powi(g.next() as i32 & 63));
+            xs.push(f64::from(g.float()) * 2000.0);
+        }
+        for &x in &xs {
+            assert_eq!(snap(x), reference(x), "{x:e} ({:#x})", x.to_bits());
+        }
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            #[target_feature(enable = "avx2")]
+            fn lanes(x: &[f64; 16]) -> [i32; 16] {
+                let mut r = [0; 16];
+                for i in 0..16 {
+                    r[i] = snap(x[i]);
+                }
+                r
+            }
+            for ch in xs.chunks_exact(16) {
+                let x: [f64; 16] = ch.try_into().expect("16 values");
+                // SAFETY: the CPU has AVX2 (tested above).
+                let got = unsafe { lanes(&x) };
+                assert_eq!(got, x.map(reference), "{x:?}");
+            }
+        }
+    }
 
     /// `store_group` against the twelve floats written lane by lane (`emit_tri`'s last group),
     /// bit for bit (NaN payloads included: no arithmetic), and `load4_unchecked` against
