@@ -347,17 +347,25 @@ impl Batch {
         {
             // A hit: a vertex of this span (same other inputs, serial in `span..serial`: one
             // compare, as the serials wrap below `span`) with the same position and normal
-            // bits. A serial of this span is at least `serial0`, so its index is in the arrays.
+            // bits. A serial of this span is at least `serial0`, so its index is in the arrays;
+            // the position's index is tested all the same (against the length already in a
+            // register), and the normal, at the same index of an array of the same length, is
+            // read without a test (a length load and a compare a probe, and the register the
+            // length held, which the compare spilled).
             let (span, serial0) = (self.span, self.serial0);
             let live = u64::from(serial) - span;
             let (positions, normals) = (&self.pos, &self.normal);
+            debug_assert_eq!(normals.len(), positions.len());
             let hit = |s: Slot| {
                 u64::from(s).wrapping_sub(span) < live && {
                     let k = (u64::from(s) - serial0) as usize;
-                    match (positions.get(k), normals.get(k)) {
-                        (Some(p), Some(n)) => Key::of(p, n).same(key),
-                        _ => false,
-                    }
+                    positions.get(k).is_some_and(|p| {
+                        // SAFETY: `k < pos.len()`, and `normal` has the same length: every
+                        // vertex is pushed to both (`vertex_in_span`), both are cleared together
+                        // (`clear`), and nothing else changes their lengths.
+                        let n = unsafe { normals.get_unchecked(k) };
+                        Key::of(p, n).same(key)
+                    })
                 }
             };
             let [newer, older] = *ways;
@@ -819,6 +827,73 @@ mod tests {
             }
             assert!(!k.same(Key::new(p2, NormalBits::new(n2))), "bit {bit}");
         }
+    }
+
+    /// Random vertex streams over a few positions, normals (-0 and NaNs among them) and
+    /// colours, with batches cleared between and the serials passing `SERIAL_RESET`: every
+    /// vertex given reads back from the batch with its own bits, and a shared vertex is one of
+    /// the current span (the hit test reads the arrays without testing their lengths, so a
+    /// wrong index there would read another vertex, or past the arrays).
+    #[test]
+    fn every_vertex_reads_back_its_own_inputs() {
+        let mut g = crate::cpu::testgen::Gen(11);
+        let mut b = Batch::default();
+        let values = [0.0, -0.0, 1.0, 0.5, f32::NAN, -f32::NAN, 2.0];
+        let mut shared = 0;
+        for round in 0..400 {
+            if round % 50 == 49 {
+                // The serials start again after this batch.
+                b.serial0 = SERIAL_RESET - (g.next() % 64);
+            }
+            let mut c = Current::default();
+            let mut given = Vec::new();
+            let mut span_start = b.len();
+            for _ in 0..(g.next() % 8) {
+                b.begin(gl::TRIANGLES);
+                for _ in 0..(g.next() % 40) {
+                    let pick = |g: &mut crate::cpu::testgen::Gen| {
+                        values[(g.next() % values.len() as u64) as usize]
+                    };
+                    if g.next() % 16 == 0 {
+                        let red = pick(&mut g);
+                        if red.to_bits() != c.color.x.to_bits() {
+                            // A new span starts at the next vertex.
+                            span_start = usize::MAX;
+                        }
+                        c.inputs_mut().color.x = red;
+                    }
+                    // A few positions and normals, each from a few values: vertices repeat.
+                    let mut seeded = crate::cpu::testgen::Gen(g.next() % 12);
+                    let p = Vec4::new(pick(&mut seeded), pick(&mut seeded), pick(&mut g), 1.0);
+                    c.normal = Vec3::new(pick(&mut seeded), pick(&mut seeded), pick(&mut seeded));
+                    let before = b.len();
+                    b.vertex(p, &c);
+                    if span_start == usize::MAX && b.len() > before {
+                        span_start = before;
+                    }
+                    let k = b.idx.last().copied().unwrap_or(u32::MAX) as usize;
+                    if k < before {
+                        shared += 1;
+                        assert!(k >= span_start.min(before), "{k} before span {span_start}");
+                    }
+                    given.push((p, c.normal, c.color.x));
+                }
+                b.end();
+            }
+            let bits4 = |v: Vec4| v.to_array().map(f32::to_bits);
+            let bits3 = |v: Vec3| v.to_array().map(f32::to_bits);
+            assert_eq!(b.idx.len(), given.len());
+            assert_eq!(b.normal.len(), b.len());
+            for (&k, &(p, n, red)) in b.idx.iter().zip(&given) {
+                let k = k as usize;
+                assert_eq!(bits4(b.pos[k]), bits4(p));
+                assert_eq!(bits3(b.normal[k]), bits3(n));
+                let a = b.attribs(k).map(|a| a.color.x.to_bits());
+                assert_eq!(a, Some(red.to_bits()));
+            }
+            b.clear();
+        }
+        assert!(shared > 1000, "{shared} shared");
     }
 
     #[test]
