@@ -965,10 +965,6 @@ impl FragCtx<'_> {
         // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
         let vl: &mut [[f32; LANES]] =
             unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
-        // λ per unit and lane: a unit's entry is written for each group before it is read
-        // where the unit needs λ, and stays 0 where it does not, whatever the row.
-        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
-        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         let plan = self.row_plan(bufs, p, planes, rows);
         #[cfg(target_arch = "x86_64")]
         if AVX2 && plan.packed {
@@ -976,6 +972,12 @@ impl FragCtx<'_> {
             unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan, slot) };
             return;
         }
+        // λ per unit and lane: a unit's entry is written for each group before it is read
+        // where the unit needs λ, and stays 0 where it does not, whatever the row. (Zeroed
+        // after the packed route's return, which reads neither: 768 bytes a call set and
+        // copied for nothing on texture-targets' small triangles, ≈45 instructions.)
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         for &row in rows {
             self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq, &plan);
         }
