@@ -1240,9 +1240,9 @@ impl<'a> FusedSpan<'a> {
         tt: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let (dt, w, h) = match self.view(self.s.base_level) {
-            View::Dense(DenseLevel { dt, w, h, .. }) if dt.len() <= 1 << 28 => (dt, w, h),
-            View::Missing => return Some([_mm256_setzero_ps(); 4]),
+        let (dt, w, h) = match self.dense(self.s.base_level) {
+            Ok(lv) if lv.dt.len() <= 1 << 28 => (lv.dt, lv.w, lv.h),
+            Err(true) => return Some([_mm256_setzero_ps(); 4]),
             _ => return None,
         };
         if dt.is_empty() {
