@@ -3782,10 +3782,17 @@ mod tests {
             border_state(g, &mut obj);
         }
         let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+        // Twice as high or half as high now and then: a kernel that takes the level's width
+        // for its height (or the reverse) fails.
+        let mut h = match g.next() % 3 {
+            0 => w,
+            1 => 2 * w,
+            _ => (w / 2).max(1),
+        };
         let rgb = g.next() % 3 == 0;
         let mut k = 0;
-        while w >= 1 {
-            let texels = (0..w * w)
+        loop {
+            let texels = (0..w * h)
                 .map(|_| {
                     let mut t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
                     if rgb {
@@ -3805,13 +3812,16 @@ mod tests {
             obj.levels[k] = Some(Level {
                 depth: 1,
                 width: w,
-                height: w,
+                height: h,
                 internal_format: fmt as i32,
                 base,
                 texels: texels.into(),
             });
             k += 1;
-            w /= 2;
+            if w == 1 && h == 1 {
+                break;
+            }
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
         }
         let mut state = State::new(4, 4);
         state.textures.defaults[1] = Arc::new(obj);
