@@ -965,10 +965,6 @@ impl FragCtx<'_> {
         // `MaybeUninit<[f32; LANES]>` has the layout of `[f32; LANES]`.
         let vl: &mut [[f32; LANES]] =
             unsafe { &mut *(std::ptr::from_mut(vl_used) as *mut [[f32; LANES]]) };
-        // λ per unit and lane: a unit's entry is written for each group before it is read
-        // where the unit needs λ, and stays 0 where it does not, whatever the row.
-        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
-        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         let plan = self.row_plan(bufs, p, planes, rows);
         #[cfg(target_arch = "x86_64")]
         if AVX2 && plan.packed {
@@ -976,6 +972,12 @@ impl FragCtx<'_> {
             unsafe { self.packed_rows(bufs, p, planes, rows, vl, &plan, slot) };
             return;
         }
+        // λ per unit and lane: a unit's entry is written for each group before it is read
+        // where the unit needs λ, and stays 0 where it does not, whatever the row. (Zeroed
+        // after the packed route's return, which reads neither: 768 bytes a call set and
+        // copied for nothing on texture-targets' small triangles, ≈45 instructions.)
+        let mut lam = [[0.0f32; LANES]; MAX_TEXTURE_UNITS];
+        let mut lq = [[[0.0f32; LANES]; ROW_QUAD_BLOCKS]; MAX_TEXTURE_UNITS];
         for &row in rows {
             self.tri_span_in::<AVX2>(bufs, p, planes, row, slot, vl, &mut lam, &mut lq, &plan);
         }
@@ -3780,10 +3782,17 @@ mod tests {
             border_state(g, &mut obj);
         }
         let mut w = [8, 8, 4, 6, 32][(g.next() % 5) as usize];
+        // Twice as high or half as high now and then: a kernel that takes the level's width
+        // for its height (or the reverse) fails.
+        let mut h = match g.next() % 3 {
+            0 => w,
+            1 => 2 * w,
+            _ => (w / 2).max(1),
+        };
         let rgb = g.next() % 3 == 0;
         let mut k = 0;
-        while w >= 1 {
-            let texels = (0..w * w)
+        loop {
+            let texels = (0..w * h)
                 .map(|_| {
                     let mut t: [f32; 4] = std::array::from_fn(|_| (g.next() % 256) as f32 / 255.0);
                     if rgb {
@@ -3803,13 +3812,16 @@ mod tests {
             obj.levels[k] = Some(Level {
                 depth: 1,
                 width: w,
-                height: w,
+                height: h,
                 internal_format: fmt as i32,
                 base,
                 texels: texels.into(),
             });
             k += 1;
-            w /= 2;
+            if w == 1 && h == 1 {
+                break;
+            }
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
         }
         let mut state = State::new(4, 4);
         state.textures.defaults[1] = Arc::new(obj);

@@ -2466,20 +2466,28 @@ fn wrap8<const REP: bool>(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
-fn linear_axis8<const REP: bool>(
-    c: std::arch::x86_64::__m256,
-    n: i32,
-) -> (
+fn linear_axis8<const REP: bool>(c: std::arch::x86_64::__m256, n: i32) -> Axis8 {
+    linear_axis8_of::<REP>(c, n as f32, n - 1)
+}
+
+/// A LINEAR axis on eight lanes ([`linear_axis8`]): the lower and upper texel indices,
+/// wrapped, and the weight α of the upper one.
+#[cfg(target_arch = "x86_64")]
+type Axis8 = (
     std::arch::x86_64::__m256i,
     std::arch::x86_64::__m256i,
     std::arch::x86_64::__m256,
-) {
+);
+
+/// [`linear_axis8`] of an axis of `n` texels given as `n as f32` `nf` and `n - 1` `nm1` (a
+/// kernel that keeps them for its level: `span::DenseLevel`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn linear_axis8_of<const REP: bool>(c: std::arch::x86_64::__m256, nf: f32, nm1: i32) -> Axis8 {
     use std::arch::x86_64::*;
     // u = s·n - 1/2, a NaN u taken as 0.
-    let u = _mm256_sub_ps(
-        _mm256_mul_ps(c, _mm256_set1_ps(n as f32)),
-        _mm256_set1_ps(0.5),
-    );
+    let u = _mm256_sub_ps(_mm256_mul_ps(c, _mm256_set1_ps(nf)), _mm256_set1_ps(0.5));
     let u = _mm256_and_ps(u, _mm256_cmp_ps::<_CMP_ORD_Q>(u, u));
     let i0 = ifloor8_num(u);
     // (u - i0).clamp(0, 1) in `f32::clamp`'s order (a -0 stays -0).
@@ -2488,7 +2496,7 @@ fn linear_axis8<const REP: bool>(
     // i0.saturating_add(1): i0 + 1, less 1 where i0 was i32::MAX.
     let at_max = _mm256_cmpeq_epi32(i0, _mm256_set1_epi32(i32::MAX));
     let i1 = _mm256_add_epi32(_mm256_add_epi32(i0, _mm256_set1_epi32(1)), at_max);
-    let nm1 = _mm256_set1_epi32(n - 1);
+    let nm1 = _mm256_set1_epi32(nm1);
     (wrap8::<REP>(i0, nm1), wrap8::<REP>(i1, nm1), a)
 }
 

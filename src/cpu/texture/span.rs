@@ -18,7 +18,7 @@
 #[cfg(target_arch = "x86_64")]
 use super::{border_linear8, AX_BORDER, AX_CLAMP, AX_EDGE, AX_REPEAT};
 #[cfg(target_arch = "x86_64")]
-use super::{compare8, dense_level, ifloor8, linear_axis8, wrap8, Route};
+use super::{compare8, dense_level, ifloor8, linear_axis8_of, wrap8, Route};
 use super::{Sampler, LANES};
 use crate::gl;
 
@@ -45,13 +45,15 @@ pub struct FusedSpan<'a> {
     rdiv: bool,
     /// An RGB texture (the fragment's alpha passes).
     rgb: bool,
-    /// The row's planes (constant, x step, y term `dy·fy`) of 1/w, the colour's four
-    /// varyings and s, t, q.
-    pl: [[f32; 3]; 8],
-    /// `pl`'s constants and x steps (the primitive's: the same for every row) on eight lanes
-    /// each, so that a group reads them as memory operands instead of broadcasting them.
+    /// The row's y terms `dy·fy` of the planes of 1/w, the colour's four varyings and s, t,
+    /// q, and those planes' `dy` (a row moves only the y terms: [`FusedSpan::row`] takes
+    /// eight products instead of the eight planes again, ≈45 instructions a row).
+    yt: [f32; 8],
+    dy: [f32; 8],
+    /// Those planes' constants and x steps (the primitive's: the same for every row) on eight
+    /// lanes each, so that a group reads them as memory operands instead of broadcasting them.
     pad: [[[f32; LANES]; 2]; 8],
-    /// The primitive's planes (`pl` and `lp` of another row are taken from them again,
+    /// The primitive's planes (`rpl` and `lp` of another row are taken from them again,
     /// [`FusedSpan::row`]) and the coordinates' first varying.
     planes: &'a [f32],
     to: usize,
@@ -133,8 +135,43 @@ enum View<'a> {
     Missing,
     /// Not [`dense_level`]: the group takes `texels_lanes`.
     Sparse,
-    /// A dense level with a texel: its texels, width and height.
-    Dense(&'a [[f32; 4]], i32, i32),
+    /// A dense level with a texel.
+    Dense(DenseLevel<'a>),
+}
+
+/// A [`dense_level`] with a texel as the route's kernels read it: its texels, width and
+/// height (each at least 1, w·h texels, powers of two), and the constants the kernels derive
+/// from the sizes, taken once when the level is looked up ([`FusedSpan::view`]) instead of in
+/// each group: the sizes as f32 (the axes' `n as f32`), less one (the wraps' masks) and the
+/// row shift (j·w as j << log2 w). (Converted and broadcast in each group they were ≈15
+/// instructions of a LINEAR group's ≈220 on textured-cube.)
+#[derive(Clone, Copy, Debug)]
+struct DenseLevel<'a> {
+    dt: &'a [[f32; 4]],
+    w: i32,
+    h: i32,
+    wf: f32,
+    hf: f32,
+    wm1: i32,
+    hm1: i32,
+    sh: i32,
+}
+
+impl<'a> DenseLevel<'a> {
+    /// The level of texels `dt`, `w` x `h`, which [`dense_level`] accepts (w, h ≥ 1).
+    fn new(dt: &'a [[f32; 4]], w: i32, h: i32) -> DenseLevel<'a> {
+        let (w, h) = (w.max(1), h.max(1));
+        DenseLevel {
+            dt,
+            w,
+            h,
+            wf: w as f32,
+            hf: h as f32,
+            wm1: w - 1,
+            hm1: h - 1,
+            sh: w.trailing_zeros() as i32,
+        }
+    }
 }
 
 /// Where a group's eight lanes lie, as [`FusedSpan`]'s kernels read them (their `PACK`):
@@ -208,7 +245,8 @@ impl<'a> FusedSpan<'a> {
         let div = [0, 1, 2, 3, to, to + 1, to + 3].map(|j| j >= nflat);
         let c = s.env_color;
         let rj = to.checked_add(2)?;
-        let pl = row_planes(planes, to, fy)?;
+        let pl = row_planes(planes, to)?;
+        let dy = pl.map(|[_, _, dy]| dy);
         Some(FusedSpan {
             s,
             rep,
@@ -219,7 +257,8 @@ impl<'a> FusedSpan<'a> {
             rpl: r_plane(planes, rj, fy)?,
             rdiv: rj >= nflat,
             rgb: s.base == gl::RGB,
-            pl,
+            yt: dy.map(|dy| dy * fy),
+            dy,
             pad: pl.map(|[a, dx, _]| [[a; LANES], [dx; LANES]]),
             planes,
             to,
@@ -255,10 +294,8 @@ impl<'a> FusedSpan<'a> {
     /// x and `qy` alone).
     #[inline]
     pub fn row(&mut self, fy: f32, qy: f32) {
-        // (`new` found the planes present.)
-        if let Some(pl) = row_planes(self.planes, self.to, fy) {
-            self.pl = pl;
-        }
+        // (The planes' constants and x steps are the primitive's: `pad`, kept.)
+        self.yt = self.dy.map(|dy| dy * fy);
         if self.depth.is_some() {
             if let Some(rp) = r_plane(self.planes, self.to + 2, fy) {
                 self.rpl = rp;
@@ -478,12 +515,12 @@ impl<'a> FusedSpan<'a> {
         at: &Lanes,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let Ok((dt, w, h)) = self.dense(self.s.base_level) else {
+        let Ok(&lv) = self.dense(self.s.base_level) else {
             return None;
         };
         let inv = self.inv::<PACK>(at);
         let [ss, tt, rr] = self.coords::<PACK>(at, inv);
-        let l = compare8(func, nearest_depth::<RX, RY>(dt, w, h, ss, tt), rr);
+        let l = compare8(func, nearest_depth::<RX, RY>(&lv, ss, tt), rr);
         // `env_of`'s BLEND of LUMINANCE: cf·(1 - L) + cc·L on r, g, b, the fragment's alpha;
         // then `Vec4::clamp` (`maxps` with 0, then `minps` with 1).
         let (one, zero) = (_mm256_set1_ps(1.0), _mm256_setzero_ps());
@@ -510,9 +547,9 @@ impl<'a> FusedSpan<'a> {
     fn plane<const PACK: bool>(&self, k: usize, at: &Lanes) -> std::arch::x86_64::__m256 {
         // (k < 8 at every call: the indices are constants in range.)
         if PACK {
-            plane8xy(&self.pad[k], self.pl[k][2], at)
+            plane8xy(&self.pad[k], self.yt[k], at)
         } else {
-            plane8l(&self.pad[k], self.pl[k][2], at.xs)
+            plane8l(&self.pad[k], self.yt[k], at.xs)
         }
     }
 
@@ -640,9 +677,16 @@ impl<'a> FusedSpan<'a> {
 unsafe fn store_group(c: [std::arch::x86_64::__m256; 4], m: u8, dst: &mut [[u8; 4]]) {
     use std::arch::x86_64::*;
     let v = pack_group(c);
-    let on = crate::cpu::lanes::lane_mask8(m);
     if let Some(d) = dst.get_mut(..LANES) {
         let p = d.as_mut_ptr().cast::<__m256i>();
+        // A whole group (most of a large triangle's) is stored as it is: no mask, no load
+        // and blend of the pixels it replaces (≈6 instructions a group on textured-cube).
+        if m == u8::MAX {
+            // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed).
+            unsafe { _mm256_storeu_si256(p, v) };
+            return;
+        }
+        let on = crate::cpu::lanes::lane_mask8(m);
         // SAFETY: `d` is eight `[u8; 4]`, 32 contiguous bytes (no alignment needed); the
         // tile belongs to this thread, so the unwritten pixels stored back are unchanged.
         unsafe {
@@ -976,12 +1020,13 @@ impl<'a> FusedSpan<'a> {
                     // SAFETY: the CPU has AVX2 (the caller's promise).
                     unsafe { self.level_linear($level, ss, tt)? }
                 } else {
+                    let rep = self.rep;
                     match self.dense($level) {
-                        Ok((dt, w, h)) => match self.rep {
-                            [false, false] => nearest::<false, false>(dt, w, h, ss, tt),
-                            [false, true] => nearest::<false, true>(dt, w, h, ss, tt),
-                            [true, false] => nearest::<true, false>(dt, w, h, ss, tt),
-                            [true, true] => nearest::<true, true>(dt, w, h, ss, tt),
+                        Ok(lv) => match rep {
+                            [false, false] => nearest::<false, false>(lv, ss, tt),
+                            [false, true] => nearest::<false, true>(lv, ss, tt),
+                            [true, false] => nearest::<true, false>(lv, ss, tt),
+                            [true, true] => nearest::<true, true>(lv, ss, tt),
                         },
                         Err(true) => [_mm256_setzero_ps(); 4],
                         Err(false) => return None,
@@ -1134,15 +1179,16 @@ impl<'a> FusedSpan<'a> {
         rr: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let (dt, w, h) = match self.dense(self.s.base_level) {
+        let rep = self.rep;
+        let lv = match self.dense(self.s.base_level) {
             Ok(d) => d,
             Err(missing) => return missing.then(|| [_mm256_setzero_ps(); 4]),
         };
-        let d = match self.rep {
-            [false, false] => nearest_depth::<false, false>(dt, w, h, ss, tt),
-            [false, true] => nearest_depth::<false, true>(dt, w, h, ss, tt),
-            [true, false] => nearest_depth::<true, false>(dt, w, h, ss, tt),
-            [true, true] => nearest_depth::<true, true>(dt, w, h, ss, tt),
+        let d = match rep {
+            [false, false] => nearest_depth::<false, false>(lv, ss, tt),
+            [false, true] => nearest_depth::<false, true>(lv, ss, tt),
+            [true, false] => nearest_depth::<true, false>(lv, ss, tt),
+            [true, true] => nearest_depth::<true, true>(lv, ss, tt),
         };
         // L in every channel of each lane's pair.
         let l = compare8(func, d, rr);
@@ -1196,9 +1242,9 @@ impl<'a> FusedSpan<'a> {
         tt: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let (dt, w, h) = match self.view(self.s.base_level) {
-            View::Dense(dt, w, h) if dt.len() <= 1 << 28 => (dt, w, h),
-            View::Missing => return Some([_mm256_setzero_ps(); 4]),
+        let (dt, w, h) = match self.dense(self.s.base_level) {
+            Ok(lv) if lv.dt.len() <= 1 << 28 => (lv.dt, lv.w, lv.h),
+            Err(true) => return Some([_mm256_setzero_ps(); 4]),
             _ => return None,
         };
         if dt.is_empty() {
@@ -1250,7 +1296,7 @@ impl<'a> FusedSpan<'a> {
                     Some(v)
                         if !v.texels.is_empty() && dense_level(&v.texels, v.width, v.height) =>
                     {
-                        View::Dense(&v.texels, v.width, v.height)
+                        View::Dense(DenseLevel::new(&v.texels, v.width, v.height))
                     }
                     Some(_) => View::Sparse,
                 };
@@ -1265,17 +1311,21 @@ impl<'a> FusedSpan<'a> {
     /// `texels_lanes`).
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    fn dense(&mut self, level: i32) -> Result<(&'a [[f32; 4]], i32, i32), bool> {
-        // The cached level first: one compare of the number, one of the kind.
-        if let (n, View::Dense(dt, w, h)) = self.cache[(level & 1) as usize] {
-            if n == level {
-                return Ok((dt, w, h));
+    fn dense(&mut self, level: i32) -> Result<&DenseLevel<'a>, bool> {
+        // The cached level first: one compare of the number, one of the kind. (The level
+        // lent from its slot, not copied: the kernels read its constants where they lie.)
+        let slot = (level & 1) as usize;
+        if !matches!(self.cache[slot], (n, View::Dense(_)) if n == level) {
+            match self.view(level) {
+                View::Dense(_) => {}
+                View::Missing => return Err(true),
+                View::Sparse | View::Unknown => return Err(false),
             }
         }
-        match self.view(level) {
-            View::Dense(dt, w, h) => Ok((dt, w, h)),
-            View::Missing => Err(true),
-            View::Sparse | View::Unknown => Err(false),
+        // (`view` cached the level in its slot.)
+        match &self.cache[slot] {
+            (_, View::Dense(lv)) => Ok(lv),
+            _ => Err(false),
         }
     }
 
@@ -1296,15 +1346,16 @@ impl<'a> FusedSpan<'a> {
         tt: std::arch::x86_64::__m256,
     ) -> Option<[std::arch::x86_64::__m256; 4]> {
         use std::arch::x86_64::*;
-        let (dt, w, h) = match self.dense(level) {
+        let rep = self.rep;
+        let lv = match self.dense(level) {
             Ok(d) => d,
             Err(missing) => return missing.then(|| [_mm256_setzero_ps(); 4]),
         };
-        Some(match self.rep {
-            [false, false] => bilinear::<false, false>(dt, w, h, ss, tt),
-            [false, true] => bilinear::<false, true>(dt, w, h, ss, tt),
-            [true, false] => bilinear::<true, false>(dt, w, h, ss, tt),
-            [true, true] => bilinear::<true, true>(dt, w, h, ss, tt),
+        Some(match rep {
+            [false, false] => bilinear::<false, false>(lv, ss, tt),
+            [false, true] => bilinear::<false, true>(lv, ss, tt),
+            [true, false] => bilinear::<true, false>(lv, ss, tt),
+            [true, true] => bilinear::<true, true>(lv, ss, tt),
         })
     }
 }
@@ -1472,17 +1523,17 @@ fn plane8l(
     _mm256_add_ps(_mm256_add_ps(a, _mm256_mul_ps(dx, xs)), _mm256_set1_ps(yt))
 }
 
-/// `lanes::varyings`' planes of row `fy` (constant, x step, y term `dy·fy`) of 1/w, the
-/// colour's four varyings and s, t, q (varyings `to`, `to + 1`, `to + 3`); None when
-/// `planes` does not hold them.
+/// `lanes::varyings`' planes (constant, x step, y step `dy`) of 1/w, the colour's four
+/// varyings and s, t, q (varyings `to`, `to + 1`, `to + 3`); None when `planes` does not hold
+/// them.
 #[inline(always)]
-fn row_planes(planes: &[f32], to: usize, fy: f32) -> Option<[[f32; 3]; 8]> {
+fn row_planes(planes: &[f32], to: usize) -> Option<[[f32; 3]; 8]> {
     // (a, dx, dy) of 1/w and the colour's four varyings (floats 0..15), then of s, t, r, q
     // (varying `to` at float 3 + 3·to): two bounds checks, not one a plane.
     let c = <&[f32; 15]>::try_from(planes.get(..15)?).ok()?;
     let k = to.checked_mul(3)?.checked_add(3)?;
     let t = <&[f32; 12]>::try_from(planes.get(k..k.checked_add(12)?)?).ok()?;
-    let p = |a: f32, dx: f32, dy: f32| [a, dx, dy * fy];
+    let p = |a: f32, dx: f32, dy: f32| [a, dx, dy];
     Some([
         p(c[0], c[1], c[2]),
         p(c[3], c[4], c[5]),
@@ -1680,34 +1731,29 @@ macro_rules! load_corners {
 #[target_feature(enable = "avx2")]
 #[inline]
 fn nearest<const RX: bool, const RY: bool>(
-    dt: &[[f32; 4]],
-    w: i32,
-    h: i32,
+    lv: &DenseLevel,
     s: std::arch::x86_64::__m256,
     t: std::arch::x86_64::__m256,
 ) -> [std::arch::x86_64::__m256; 4] {
-    load_pairs(dt, nearest_index::<RX, RY>(w, h, s, t))
+    load_pairs(lv.dt, nearest_index::<RX, RY>(lv, s, t))
 }
 
-/// `dense_nearest8`'s indices j·w + i on a `w` x `h` level (the same wraps, floors; not yet
+/// `dense_nearest8`'s indices j·w + i on level `lv` (the same wraps, floors; not yet
 /// masked).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 fn nearest_index<const RX: bool, const RY: bool>(
-    w: i32,
-    h: i32,
+    lv: &DenseLevel,
     s: std::arch::x86_64::__m256,
     t: std::arch::x86_64::__m256,
 ) -> std::arch::x86_64::__m256i {
     use std::arch::x86_64::*;
-    let (w, h) = (w.max(1), h.max(1));
-    let i = ifloor8(_mm256_mul_ps(s, _mm256_set1_ps(w as f32)));
-    let j = ifloor8(_mm256_mul_ps(t, _mm256_set1_ps(h as f32)));
-    let i = wrap8::<RX>(i, _mm256_set1_epi32(w - 1));
-    let j = wrap8::<RY>(j, _mm256_set1_epi32(h - 1));
-    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
-    _mm256_add_epi32(_mm256_sll_epi32(j, sh), i)
+    let i = ifloor8(_mm256_mul_ps(s, _mm256_set1_ps(lv.wf)));
+    let j = ifloor8(_mm256_mul_ps(t, _mm256_set1_ps(lv.hf)));
+    let i = wrap8::<RX>(i, _mm256_set1_epi32(lv.wm1));
+    let j = wrap8::<RY>(j, _mm256_set1_epi32(lv.hm1));
+    _mm256_add_epi32(_mm256_sll_epi32(j, _mm_cvtsi32_si128(lv.sh)), i)
 }
 
 /// Channel 0 (the depth) of [`nearest`]'s texels, one lane each: the same indices, each
@@ -1716,17 +1762,16 @@ fn nearest_index<const RX: bool, const RY: bool>(
 #[target_feature(enable = "avx2")]
 #[inline]
 fn nearest_depth<const RX: bool, const RY: bool>(
-    dt: &[[f32; 4]],
-    w: i32,
-    h: i32,
+    lv: &DenseLevel,
     s: std::arch::x86_64::__m256,
     t: std::arch::x86_64::__m256,
 ) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
+    let dt = lv.dt;
     let Some(km) = dt.len().checked_sub(1) else {
         return _mm256_setzero_ps();
     };
-    let k = nearest_index::<RX, RY>(w, h, s, t);
+    let k = nearest_index::<RX, RY>(lv, s, t);
     // SAFETY: `__m256i` has the layout of `[u32; 8]`; every bit pattern is valid.
     let k = unsafe { std::mem::transmute::<__m256i, [u32; LANES]>(k) };
     // (The bounds check folds: k & km < dt.len().)
@@ -1742,21 +1787,18 @@ fn nearest_depth<const RX: bool, const RY: bool>(
 #[target_feature(enable = "avx2")]
 #[inline]
 fn bilinear<const RX: bool, const RY: bool>(
-    dt: &[[f32; 4]],
-    w: i32,
-    h: i32,
+    lv: &DenseLevel,
     s: std::arch::x86_64::__m256,
     t: std::arch::x86_64::__m256,
 ) -> [std::arch::x86_64::__m256; 4] {
     use std::arch::x86_64::*;
-    let (w, h) = (w.max(1), h.max(1));
-    let (x0, x1, a) = linear_axis8::<RX>(s, w);
-    let (y0, y1, b) = linear_axis8::<RY>(t, h);
-    let sh = _mm_cvtsi32_si128(w.trailing_zeros() as i32);
+    let (x0, x1, a) = linear_axis8_of::<RX>(s, lv.wf, lv.wm1);
+    let (y0, y1, b) = linear_axis8_of::<RY>(t, lv.hf, lv.hm1);
+    let sh = _mm_cvtsi32_si128(lv.sh);
     let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
     load_corners!(
-        dt,
-        w,
+        lv.dt,
+        lv.w,
         _mm256_add_epi32(r0, x0),
         _mm256_add_epi32(r0, x1),
         _mm256_add_epi32(r1, x0),
