@@ -77,6 +77,23 @@ fn word(lo: u32, hi: u32) -> u64 {
     u64::from(lo) | u64::from(hi) << 32
 }
 
+/// The 64-bit word read from memory holding two 32-bit words as `word(first, second)`: itself
+/// on a little-endian machine, its halves swapped on a big-endian one.
+#[inline(always)]
+fn lo_first(w: u64) -> u64 {
+    if cfg!(target_endian = "little") {
+        w
+    } else {
+        w.rotate_left(32)
+    }
+}
+
+// `Batch::vertex` reads the current normal's x and y as one aligned 64-bit word: the normal
+// lies at an offset of `Current` that is a multiple of 8, in a type aligned to 8 or more.
+const _: () = assert!(
+    std::mem::offset_of!(Current, normal) % 8 == 0 && std::mem::align_of::<Current>() % 8 == 0
+);
+
 impl NormalBits {
     /// The bits of `n`.
     #[inline(always)]
@@ -119,6 +136,21 @@ impl Key {
         Key {
             xy: word(pos[0], pos[1]),
             zw: word(pos[2], pos[3]),
+            normal,
+        }
+    }
+
+    /// The key of `position` with the normal `normal`: the position's bits as two 64-bit
+    /// words taken whole from its vector register (built from its four 32-bit words, each
+    /// extracted, shifted and combined, they cost four instructions a vertex more).
+    #[inline(always)]
+    fn at(position: Vec4, normal: NormalBits) -> Key {
+        // SAFETY: four f32s and two u64s are both 16 bytes of plain data, every bit pattern
+        // valid in either.
+        let [a, b] = unsafe { std::mem::transmute::<[f32; 4], [u64; 2]>(position.to_array()) };
+        Key {
+            xy: lo_first(a),
+            zw: lo_first(b),
             normal,
         }
     }
@@ -290,18 +322,24 @@ impl Batch {
     /// Appends a vertex with the current attributes to the open primitive (the caller has
     /// opened one: `Context::vertex` draws nothing outside Begin/End). The primitive's count
     /// is taken at `end`. For `c` in memory, such as the state's current values: the front end
-    /// stores the normal's components one by one (`Normal3f`), and loading two of them as one
-    /// wider word would stall store forwarding for ~15 cycles, so each is read on its own (a
-    /// volatile load keeps the compiler from merging them; `black_box` did too, but through a
-    /// store and a reload of each), and the hash mixes 32-bit words.
+    /// stores the normal as its x and y in one 64-bit word and its z (`Normal3f`), and loading
+    /// them as one wider word would stall store forwarding for ~15 cycles, so they are read in
+    /// the same two pieces (volatile loads keep the compiler from merging or splitting them;
+    /// `black_box` did too, but through a store and a reload), which are also the key's words
+    /// (read as three 32-bit words, they were spilled and put together again: about eight
+    /// instructions a vertex).
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
         let n = &c.normal;
-        let normal = [&n.x, &n.y, &n.z].map(|v| {
-            // SAFETY: `v` is a reference to an f32, readable as the u32 of its size and
-            // alignment.
-            unsafe { std::ptr::read_volatile(std::ptr::from_ref(v).cast::<u32>()) }
-        });
+        // SAFETY: `n` is an f32's reference, its address a multiple of 8 (the assertion on
+        // `Current`'s layout above), so the u64 of its x and y is readable there; `n.z` is
+        // readable as the u32 of its size and alignment.
+        let normal = unsafe {
+            NormalBits {
+                n01: lo_first(std::ptr::read_volatile(std::ptr::from_ref(n).cast::<u64>())),
+                n2: std::ptr::read_volatile(std::ptr::from_ref(&n.z).cast::<u32>()),
+            }
+        };
         self.vertex_with(position, normal, c);
     }
 
@@ -310,16 +348,13 @@ impl Batch {
     /// the whole `Current` in memory, about 35 instructions more a vertex there).
     #[inline(always)]
     pub fn vertex_computed(&mut self, position: Vec4, c: &Current) {
-        self.vertex_with(position, c.normal.to_array().map(f32::to_bits), c);
+        self.vertex_with(position, NormalBits::of(c.normal), c);
     }
 
     /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
     #[inline(always)]
-    fn vertex_with(&mut self, position: Vec4, normal: [u32; 3], c: &Current) {
-        let key = Key::new(
-            position.to_array().map(f32::to_bits),
-            NormalBits::new(normal),
-        );
+    fn vertex_with(&mut self, position: Vec4, normal: NormalBits, c: &Current) {
+        let key = Key::at(position, normal);
         self.check_span(c);
         self.vertex_in_span(key, c);
     }
@@ -817,6 +852,9 @@ mod tests {
             assert_eq!(k.position().to_array().map(f32::to_bits), p);
             assert_eq!(k.normal.vec3().to_array().map(f32::to_bits), n);
             assert!(k.same(Key::of(&k.position(), &k.normal.vec3())));
+            // The position's words taken whole from its vector: the same key.
+            let at = Key::at(k.position(), k.normal);
+            assert_eq!((at.xy, at.zw), (k.xy, k.zw));
             // One bit changed anywhere: another key.
             let bit = (g.next() % 224) as usize;
             let (mut p2, mut n2) = (p, n);
