@@ -77,6 +77,14 @@ fn word(lo: u32, hi: u32) -> u64 {
     u64::from(lo) | u64::from(hi) << 32
 }
 
+/// The bits of `v` as one 128-bit word (a compare of two is one vector compare).
+#[inline(always)]
+fn bits128(v: Vec4) -> u128 {
+    // SAFETY: four f32s and a u128 are both 16 bytes of plain data, every bit pattern valid in
+    // either.
+    unsafe { std::mem::transmute::<[f32; 4], u128>(v.to_array()) }
+}
+
 /// The 64-bit word read from memory holding two 32-bit words as `word(first, second)`: itself
 /// on a little-endian machine, its halves swapped on a big-endian one.
 #[inline(always)]
@@ -119,9 +127,10 @@ impl NormalBits {
 }
 
 /// A vertex's cache key: the bits of its position and normal as 64-bit words (x and y, z and
-/// w, the normal's), the form both the hash mixes and a hit compares, so that the words are
-/// built once (mixing the seven 32-bit words one by one, with a rotation each, cost about 35
-/// instructions a vertex, most of them moving words between registers and the stack).
+/// w, the normal's), the form the hash mixes, so that the words are built once (mixing the
+/// seven 32-bit words one by one, with a rotation each, cost about 35 instructions a vertex,
+/// most of them moving words between registers and the stack). A hit compares the normal's
+/// words, and the position as one vector (`Batch::vertex_in_span`).
 #[derive(Clone, Copy, Debug)]
 struct Key {
     xy: u64,
@@ -131,6 +140,7 @@ struct Key {
 
 impl Key {
     /// The key of the position with bits `pos` and the normal `normal`.
+    #[cfg(test)]
     #[inline(always)]
     fn new(pos: [u32; 4], normal: NormalBits) -> Key {
         Key {
@@ -156,12 +166,14 @@ impl Key {
     }
 
     /// The key of a batched vertex.
+    #[cfg(test)]
     #[inline(always)]
     fn of(pos: &Vec4, normal: &Vec3) -> Key {
         Key::new(pos.to_array().map(f32::to_bits), NormalBits::of(*normal))
     }
 
-    /// The position (a vertex batched on a miss).
+    /// The position.
+    #[cfg(test)]
     #[inline(always)]
     fn position(self) -> Vec4 {
         let half = |w: u64| [w as u32, (w >> 32) as u32].map(f32::from_bits);
@@ -170,6 +182,7 @@ impl Key {
     }
 
     /// Whether every bit is the same: the words compared without a branch between them.
+    #[cfg(test)]
     #[inline(always)]
     fn same(self, other: Key) -> bool {
         let (n, m) = (self.normal, other.normal);
@@ -356,7 +369,7 @@ impl Batch {
     fn vertex_with(&mut self, position: Vec4, normal: NormalBits, c: &Current) {
         let key = Key::at(position, normal);
         self.check_span(c);
-        self.vertex_in_span(key, c);
+        self.vertex_in_span(key, position, c);
     }
 
     /// Starts a span at the next vertex if `c`'s inputs other than position and normal are
@@ -370,10 +383,10 @@ impl Batch {
         }
     }
 
-    /// [`Batch::vertex_with`] once `check_span(c)` ran: the vertex with bits `key` looked up
-    /// in the cache, batched on a miss.
+    /// [`Batch::vertex_with`] once `check_span(c)` ran: the vertex with bits `key` (of
+    /// `position` and the normal) looked up in the cache, batched on a miss.
     #[inline(always)]
-    fn vertex_in_span(&mut self, key: Key, c: &Current) {
+    fn vertex_in_span(&mut self, key: Key, position: Vec4, c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
         // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
@@ -386,7 +399,10 @@ impl Batch {
             // the position's index is tested all the same (against the length already in a
             // register), and the normal, at the same index of an array of the same length, is
             // read without a test (a length load and a compare a probe, and the register the
-            // length held, which the compare spilled).
+            // length held, which the compare spilled). The position is compared as one
+            // 128-bit word with the vector it came in (one vector compare; as the key's two
+            // words, those held two more registers through the probe, and the compare spilled
+            // about ten values around its loads).
             let (span, serial0) = (self.span, self.serial0);
             let live = u64::from(serial) - span;
             let (positions, normals) = (&self.pos, &self.normal);
@@ -398,8 +414,10 @@ impl Batch {
                         // SAFETY: `k < pos.len()`, and `normal` has the same length: every
                         // vertex is pushed to both (`vertex_in_span`), both are cleared together
                         // (`clear`), and nothing else changes their lengths.
-                        let n = unsafe { normals.get_unchecked(k) };
-                        Key::of(p, n).same(key)
+                        let n = NormalBits::of(*unsafe { normals.get_unchecked(k) });
+                        let (m, d) = (key.normal, |a: u64, b: u64| a ^ b);
+                        (bits128(*p) == bits128(position))
+                            & (d(n.n01, m.n01) | d(n.n2.into(), m.n2.into()) == 0)
                     })
                 }
             };
@@ -419,7 +437,7 @@ impl Batch {
             ways[0] = serial;
         }
         self.idx.push(i as u32);
-        self.pos.push(key.position());
+        self.pos.push(position);
         self.normal.push(key.normal.vec3());
         self.span_of.push(self.spans.len().saturating_sub(1) as u32);
         self.edge.push(c.edge_flag);
