@@ -77,6 +77,31 @@ fn word(lo: u32, hi: u32) -> u64 {
     u64::from(lo) | u64::from(hi) << 32
 }
 
+/// Writes `x` at index `i` of `v`, whose length is `i`, and takes it in.
+///
+/// # Safety
+/// `v.len() == i` and `i < v.capacity()`.
+#[inline(always)]
+unsafe fn put<T>(v: &mut Vec<T>, i: usize, x: T) {
+    debug_assert!(v.len() == i && i < v.capacity());
+    // SAFETY: the caller's: slot `i` is allocated and past the length, so writing it drops
+    // nothing, and once written the first `i + 1` elements are initialised.
+    unsafe {
+        v.as_mut_ptr().add(i).write(x);
+        v.set_len(i + 1);
+    }
+}
+
+/// Whether the batched position `p` and normal `n` have the bits of `position` and `normal`:
+/// the positions as one 128-bit word each (one vector compare), the normals' words without a
+/// branch between them.
+#[inline(always)]
+fn same_vertex(p: &Vec4, n: &Vec3, position: Vec4, normal: NormalBits) -> bool {
+    let (n, d) = (NormalBits::of(*n), |a: u64, b: u64| a ^ b);
+    (bits128(*p) == bits128(position))
+        & (d(n.n01, normal.n01) | d(n.n2.into(), normal.n2.into()) == 0)
+}
+
 /// The bits of `v` as one 128-bit word (a compare of two is one vector compare).
 #[inline(always)]
 fn bits128(v: Vec4) -> u128 {
@@ -251,7 +276,9 @@ pub struct Batch {
     /// `span` on (the last entry of `spans`; its position and normal are not used), and its
     /// stamp that of the latest such vertex (`Current::same_inputs_as`).
     span_in: Current,
-    /// The material index of every batched vertex from `span` on.
+    /// The material index of every batched vertex from `span` on. Whenever `cur_mat` is
+    /// another, `span_in`'s stamp is forgotten (`Current::forget_stamp`), so that
+    /// `check_span`'s one compare of stamps also stands for the material's.
     span_mat: u32,
     /// Object-coordinate positions.
     pub pos: Vec<Vec4>,
@@ -264,6 +291,13 @@ pub struct Batch {
     pub spans: Vec<Attribs>,
     /// Edge flag.
     pub edge: Vec<bool>,
+    /// A length up to which `pos`, `normal`, `span_of` and `edge` all have room: the least of
+    /// their capacities when a push last grew one (0 at first). Nothing changes those arrays
+    /// but `vertex_in_span` (a push, or a write within `room`) and `clear` (which keeps their
+    /// memory), so a capacity never falls below it; a unique vertex is then written to the
+    /// four without testing each one's capacity and length (about fifteen instructions a
+    /// stored vertex).
+    room: usize,
     /// Index into `snapshots` of each vertex; filled only once `snapshots` is not empty (until
     /// then every vertex uses the state's materials, and `mat` stays empty).
     pub mat: Vec<u32>,
@@ -303,6 +337,7 @@ impl Default for Batch {
             // The all-zero inputs (`span_in`, edge flag false, and material 0).
             spans: vec![Attribs::ZERO],
             edge: Vec::new(),
+            room: 0,
             mat: Vec::new(),
             prims: Vec::new(),
             snapshots: Vec::new(),
@@ -376,9 +411,12 @@ impl Batch {
     /// not the current span's: [`Batch::vertex_with`]'s first step.
     #[inline(always)]
     fn check_span(&mut self, c: &Current) {
-        // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
-        // instead of 25 floats and the edge flag.
-        if !self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat {
+        // The same stamp is the same inputs (`Current`'s docs) and the same material (the
+        // stamp is forgotten when `cur_mat` leaves `span_mat`): the common case, one compare
+        // instead of 25 floats, the edge flag and the material's index.
+        if !self.span_in.same_stamp_as(c)
+            && (!self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat)
+        {
             self.new_span(c, self.serial0 + self.pos.len() as u64);
         }
     }
@@ -414,10 +452,8 @@ impl Batch {
                         // SAFETY: `k < pos.len()`, and `normal` has the same length: every
                         // vertex is pushed to both (`vertex_in_span`), both are cleared together
                         // (`clear`), and nothing else changes their lengths.
-                        let n = NormalBits::of(*unsafe { normals.get_unchecked(k) });
-                        let (m, d) = (key.normal, |a: u64, b: u64| a ^ b);
-                        (bits128(*p) == bits128(position))
-                            & (d(n.n01, m.n01) | d(n.n2.into(), m.n2.into()) == 0)
+                        let n = unsafe { normals.get_unchecked(k) };
+                        same_vertex(p, n, position, key.normal)
                     })
                 }
             };
@@ -437,10 +473,34 @@ impl Batch {
             ways[0] = serial;
         }
         self.idx.push(i as u32);
-        self.pos.push(position);
-        self.normal.push(key.normal.vec3());
-        self.span_of.push(self.spans.len().saturating_sub(1) as u32);
-        self.edge.push(c.edge_flag);
+        let (normal, span) = (key.normal.vec3(), self.spans.len().saturating_sub(1) as u32);
+        debug_assert!([self.normal.len(), self.span_of.len(), self.edge.len()] == [i; 3]);
+        if i < self.room {
+            // SAFETY: `i` is the length of `pos`, `normal`, `span_of` and `edge` (pushed
+            // together only here, cleared together only in `clear`), and below `room`, which is
+            // at most each one's capacity (`room`'s docs): the slot at `i` of each is allocated,
+            // and written before the length takes it in.
+            unsafe {
+                put(&mut self.pos, i, position);
+                put(&mut self.normal, i, normal);
+                put(&mut self.span_of, i, span);
+                put(&mut self.edge, i, c.edge_flag);
+            }
+        } else {
+            self.pos.push(position);
+            self.normal.push(normal);
+            self.span_of.push(span);
+            self.edge.push(c.edge_flag);
+            self.room = [
+                self.pos.capacity(),
+                self.normal.capacity(),
+                self.span_of.capacity(),
+                self.edge.capacity(),
+            ]
+            .into_iter()
+            .min()
+            .unwrap_or(0);
+        }
         if !self.snapshots.is_empty() {
             self.mat.push(self.cur_mat);
         }
@@ -501,6 +561,8 @@ impl Batch {
         }
         self.snapshots.push(*m);
         self.cur_mat = (self.snapshots.len() - 1) as u32;
+        // A new index, not the span's: the next vertex compares its span's inputs and material.
+        self.span_in.forget_stamp();
     }
 
     /// Empties the batch, keeping capacity (the front end flushes only outside Begin/End).
@@ -528,6 +590,9 @@ impl Batch {
         }
         self.snapshots.clear();
         self.cur_mat = 0;
+        if self.span_mat != self.cur_mat {
+            self.span_in.forget_stamp();
+        }
     }
 }
 
@@ -873,6 +938,10 @@ mod tests {
             // The position's words taken whole from its vector: the same key.
             let at = Key::at(k.position(), k.normal);
             assert_eq!((at.xy, at.zw), (k.xy, k.zw));
+            let same = |k: Key, l: Key| {
+                same_vertex(&k.position(), &k.normal.vec3(), l.position(), l.normal)
+            };
+            assert!(same(k, k));
             // One bit changed anywhere: another key.
             let bit = (g.next() % 224) as usize;
             let (mut p2, mut n2) = (p, n);
@@ -881,7 +950,10 @@ mod tests {
             } else {
                 n2[(bit - 128) / 32] ^= 1 << (bit % 32);
             }
-            assert!(!k.same(Key::new(p2, NormalBits::new(n2))), "bit {bit}");
+            let other = Key::new(p2, NormalBits::new(n2));
+            assert!(!k.same(other), "bit {bit}");
+            // The hit test's compare: the key's, bit for bit.
+            assert!(!same(k, other) && !same(other, k), "bit {bit}");
         }
     }
 
@@ -950,6 +1022,119 @@ mod tests {
             b.clear();
         }
         assert!(shared > 1000, "{shared} shared");
+    }
+
+    /// Random streams of vertices over a few positions and normals, with colour, edge flag
+    /// and in-pair `Material` changes, batches cleared between them: the batch written
+    /// within `room` (its arrays starting from capacities of their own, so that `room` is
+    /// every one's in turn, and grown as they fill) is bit for bit the batch written by pushes
+    /// alone (`room` held at 0); and every vertex given reads back with its own position,
+    /// normal, colour, edge flag and material, so a vertex is never shared across a material
+    /// change (which `check_span` sees only through the forgotten stamp).
+    #[test]
+    fn a_batch_written_within_its_room_is_the_batch_pushed() {
+        let mut g = crate::cpu::testgen::Gen(29);
+        let (mut fast, mut slow) = (Batch::default(), Batch::default());
+        let values = [0.0, -0.0, 1.0, 0.5, f32::NAN];
+        let mut m = [Material::default(); 2];
+        let mut mat = m[0].diffuse.x.to_bits();
+        let (mut shared, mut written) = (0, 0);
+        for round in 0..300 {
+            if round % 3 == 0 {
+                // Capacities of their own (0 to 40) for the four arrays.
+                let mut cap = || (g.next() % 41) as usize;
+                fast.pos = Vec::with_capacity(cap());
+                fast.normal = Vec::with_capacity(cap());
+                fast.span_of = Vec::with_capacity(cap());
+                fast.edge = Vec::with_capacity(cap());
+                fast.room = 0;
+            }
+            let mut c = Current::default();
+            // Per vertex given: position, normal, colour, edge flag and material bits.
+            let mut given = Vec::new();
+            for _ in 0..(g.next() % 6) {
+                fast.begin(gl::TRIANGLE_STRIP);
+                slow.begin(gl::TRIANGLE_STRIP);
+                fast.note_materials(&m);
+                slow.note_materials(&m);
+                for _ in 0..(g.next() % 60) {
+                    let change = g.next() % 32;
+                    let mut pick = || values[(g.next() % values.len() as u64) as usize];
+                    match change {
+                        0 => c.inputs_mut().color.y = pick(),
+                        1 => c.inputs_mut().edge_flag ^= true,
+                        2 => {
+                            m[0].diffuse.x = pick();
+                            fast.materials_changed(&m);
+                            slow.materials_changed(&m);
+                            mat = m[0].diffuse.x.to_bits();
+                        }
+                        _ => {}
+                    }
+                    let mut seeded = crate::cpu::testgen::Gen(g.next() % 10);
+                    let mut pick = || values[(seeded.next() % values.len() as u64) as usize];
+                    let p = Vec4::new(pick(), pick(), pick(), 1.0);
+                    c.normal = Vec3::new(pick(), pick(), pick());
+                    let (before, room) = (fast.len(), fast.room);
+                    fast.vertex(p, &c);
+                    slow.room = 0;
+                    slow.vertex(p, &c);
+                    written += usize::from(fast.len() > before && before < room);
+                    given.push((p, c.normal, c.color.y, c.edge_flag, mat));
+                }
+                fast.end();
+                slow.end();
+            }
+            let bits4 = |v: &Vec4| v.to_array().map(f32::to_bits);
+            let bits3 = |v: &Vec3| v.to_array().map(f32::to_bits);
+            assert_eq!(fast.idx, slow.idx);
+            assert_eq!(fast.prims, slow.prims);
+            assert_eq!(fast.span_of, slow.span_of);
+            assert_eq!(fast.edge, slow.edge);
+            assert_eq!(fast.mat, slow.mat);
+            let (fp, sp) = (fast.pos.iter(), slow.pos.iter());
+            assert!(fp.map(bits4).eq(sp.map(bits4)));
+            let (fn_, sn) = (fast.normal.iter(), slow.normal.iter());
+            assert!(fn_.map(bits3).eq(sn.map(bits3)));
+            let spans = |b: &Batch| b.spans.iter().map(|a| bits4(&a.color)).collect::<Vec<_>>();
+            assert_eq!(spans(&fast), spans(&slow));
+            let caps = [
+                fast.pos.capacity(),
+                fast.normal.capacity(),
+                fast.span_of.capacity(),
+                fast.edge.capacity(),
+            ];
+            assert!(
+                caps.iter().all(|&c| fast.room <= c),
+                "{} {caps:?}",
+                fast.room
+            );
+            assert_eq!(fast.idx.len(), given.len());
+            for (&k, &(p, n, green, edge, mat)) in fast.idx.iter().zip(&given) {
+                let k = k as usize;
+                shared += usize::from(fast.idx.iter().filter(|&&i| i as usize == k).count() > 1);
+                assert_eq!(bits4(&fast.pos[k]), bits4(&p));
+                assert_eq!(bits3(&fast.normal[k]), bits3(&n));
+                let a = fast.attribs(k).map(|a| a.color.y.to_bits());
+                assert_eq!(a, Some(green.to_bits()));
+                assert_eq!(fast.edge[k], edge);
+                // The vertex's material: the snapshot it indexes, once the batch has any
+                // (until then every vertex has the materials current at Begin, unchanged).
+                if !fast.snapshots.is_empty() {
+                    let snapshot = fast
+                        .mat
+                        .get(k)
+                        .and_then(|&i| fast.snapshots.get(i as usize));
+                    assert_eq!(snapshot.map(|s| s[0].diffuse.x.to_bits()), Some(mat), "{k}");
+                }
+            }
+            fast.clear();
+            slow.clear();
+        }
+        assert!(
+            shared > 1000 && written > 1000,
+            "{shared} shared, {written} written"
+        );
     }
 
     #[test]
