@@ -427,10 +427,8 @@ impl Batch {
     fn vertex_in_span(&mut self, key: Key, position: Vec4, c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
-        // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
-        if let (Some(Set(ways)), Ok(serial)) =
-            (self.cache.get_mut(key.set()), u32::try_from(serial))
         {
+            let Set(ways) = &mut self.cache[key.set()];
             // A hit: a vertex of this span (same other inputs, serial in `span..serial`: one
             // compare, as the serials wrap below `span`) with the same position and normal
             // bits. A serial of this span is at least `serial0`, so its index is in the arrays;
@@ -442,7 +440,7 @@ impl Batch {
             // words, those held two more registers through the probe, and the compare spilled
             // about ten values around its loads).
             let (span, serial0) = (self.span, self.serial0);
-            let live = u64::from(serial) - span;
+            let live = serial - span;
             let (positions, normals) = (&self.pos, &self.normal);
             debug_assert_eq!(normals.len(), positions.len());
             let hit = |s: Slot| {
@@ -469,8 +467,13 @@ impl Batch {
                 self.idx.push((u64::from(s) - serial0) as u32);
                 return;
             }
-            ways[1] = ways[0];
-            ways[0] = serial;
+            // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is not cached: a slot holds a
+            // `u32`. (One cached before is still found, its serial being in the span: tested
+            // only here, the test is paid by a stored vertex, not by every one.)
+            if let Ok(serial) = u32::try_from(serial) {
+                ways[1] = ways[0];
+                ways[0] = serial;
+            }
         }
         self.idx.push(i as u32);
         let (normal, span) = (key.normal.vec3(), self.spans.len().saturating_sub(1) as u32);
@@ -529,7 +532,10 @@ impl Batch {
     pub fn end(&mut self) {
         let given = self.idx.len() as u32;
         if let Some(p) = self.prims.last_mut() {
-            p.count = given.saturating_sub(p.first);
+            // `first` was the length of `idx` at `begin`, which only grows until `clear`
+            // empties both.
+            debug_assert!(p.first <= given);
+            p.count = given.wrapping_sub(p.first);
             if p.count == 0 {
                 self.prims.pop();
             }
