@@ -378,6 +378,9 @@ impl Batch {
     /// instructions a vertex).
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
+        // The span first: the normal's words are loaded after it, where the hash takes them
+        // (loaded before, they were held on the stack across it).
+        self.check_span(c);
         let n = &c.normal;
         // SAFETY: `n` is an f32's reference, its address a multiple of 8 (the assertion on
         // `Current`'s layout above), so the u64 of its x and y is readable there; `n.z` is
@@ -388,7 +391,7 @@ impl Batch {
                 n2: std::ptr::read_volatile(std::ptr::from_ref(&n.z).cast::<u32>()),
             }
         };
-        self.vertex_with(position, normal, c);
+        self.vertex_in_span(Key::at(position, normal), position, c);
     }
 
     /// [`Batch::vertex`] for values the caller has just computed, such as an evaluator's
@@ -396,19 +399,12 @@ impl Batch {
     /// the whole `Current` in memory, about 35 instructions more a vertex there).
     #[inline(always)]
     pub fn vertex_computed(&mut self, position: Vec4, c: &Current) {
-        self.vertex_with(position, NormalBits::of(c.normal), c);
-    }
-
-    /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
-    #[inline(always)]
-    fn vertex_with(&mut self, position: Vec4, normal: NormalBits, c: &Current) {
-        let key = Key::at(position, normal);
         self.check_span(c);
-        self.vertex_in_span(key, position, c);
+        self.vertex_in_span(Key::at(position, NormalBits::of(c.normal)), position, c);
     }
 
     /// Starts a span at the next vertex if `c`'s inputs other than position and normal are
-    /// not the current span's: [`Batch::vertex_with`]'s first step.
+    /// not the current span's: [`Batch::vertex`]'s first step.
     #[inline(always)]
     fn check_span(&mut self, c: &Current) {
         // The same stamp is the same inputs (`Current`'s docs) and the same material (the
@@ -421,7 +417,7 @@ impl Batch {
         }
     }
 
-    /// [`Batch::vertex_with`] once `check_span(c)` ran: the vertex with bits `key` (of
+    /// [`Batch::vertex`] once `check_span(c)` ran: the vertex with bits `key` (of
     /// `position` and the normal) looked up in the cache, batched on a miss.
     #[inline(always)]
     fn vertex_in_span(&mut self, key: Key, position: Vec4, c: &Current) {
