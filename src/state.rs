@@ -386,6 +386,22 @@ impl Current {
         &mut self.inputs
     }
 
+    /// Whether `other` has `self`'s stamp, so the same inputs (see the type's docs); false
+    /// after [`Current::forget_stamp`], whatever the inputs.
+    #[inline(always)]
+    pub fn same_stamp_as(&self, other: &Current) -> bool {
+        self.stamp == other.stamp
+    }
+
+    /// Gives `self` a stamp no value has (`NO_STAMP`): the inputs are the same, but the next
+    /// compare ([`Current::same_inputs_as`]) compares them. The vertex batch's way to look at
+    /// its span again at the next vertex when something outside the inputs changed (a
+    /// `Material` call inside Begin/End, cpu/batch.rs).
+    #[inline]
+    pub fn forget_stamp(&mut self) {
+        self.stamp = NO_STAMP;
+    }
+
     /// Whether `other`'s inputs have the bits of `self`'s ([`Inputs::same_bits`]): at once
     /// when the stamps are the same (see the type's docs); otherwise compared, and when the
     /// bits are the same, `self` takes `other`'s stamp, so that the next compare with it (or
@@ -439,6 +455,10 @@ impl Inputs {
         d == 0
     }
 }
+
+/// A stamp no value has: `fresh_stamp` hands out none of block 0, whose only stamp in use is
+/// 0, the initial values' (`Current::forget_stamp`).
+const NO_STAMP: u64 = 1;
 
 /// Stamps a thread hands out before it takes another block of them.
 const STAMP_BLOCK: u64 = 1 << 32;

@@ -77,6 +77,56 @@ fn word(lo: u32, hi: u32) -> u64 {
     u64::from(lo) | u64::from(hi) << 32
 }
 
+/// Writes `x` at index `i` of `v`, whose length is `i`, and takes it in.
+///
+/// # Safety
+/// `v.len() == i` and `i < v.capacity()`.
+#[inline(always)]
+unsafe fn put<T>(v: &mut Vec<T>, i: usize, x: T) {
+    debug_assert!(v.len() == i && i < v.capacity());
+    // SAFETY: the caller's: slot `i` is allocated and past the length, so writing it drops
+    // nothing, and once written the first `i + 1` elements are initialised.
+    unsafe {
+        v.as_mut_ptr().add(i).write(x);
+        v.set_len(i + 1);
+    }
+}
+
+/// Whether the batched position `p` and normal `n` have the bits of `position` and `normal`:
+/// the positions as one 128-bit word each (one vector compare), the normals' words without a
+/// branch between them.
+#[inline(always)]
+fn same_vertex(p: &Vec4, n: &Vec3, position: Vec4, normal: NormalBits) -> bool {
+    let (n, d) = (NormalBits::of(*n), |a: u64, b: u64| a ^ b);
+    (bits128(*p) == bits128(position))
+        & (d(n.n01, normal.n01) | d(n.n2.into(), normal.n2.into()) == 0)
+}
+
+/// The bits of `v` as one 128-bit word (a compare of two is one vector compare).
+#[inline(always)]
+fn bits128(v: Vec4) -> u128 {
+    // SAFETY: four f32s and a u128 are both 16 bytes of plain data, every bit pattern valid in
+    // either.
+    unsafe { std::mem::transmute::<[f32; 4], u128>(v.to_array()) }
+}
+
+/// The 64-bit word read from memory holding two 32-bit words as `word(first, second)`: itself
+/// on a little-endian machine, its halves swapped on a big-endian one.
+#[inline(always)]
+fn lo_first(w: u64) -> u64 {
+    if cfg!(target_endian = "little") {
+        w
+    } else {
+        w.rotate_left(32)
+    }
+}
+
+// `Batch::vertex` reads the current normal's x and y as one aligned 64-bit word: the normal
+// lies at an offset of `Current` that is a multiple of 8, in a type aligned to 8 or more.
+const _: () = assert!(
+    std::mem::offset_of!(Current, normal) % 8 == 0 && std::mem::align_of::<Current>() % 8 == 0
+);
+
 impl NormalBits {
     /// The bits of `n`.
     #[inline(always)]
@@ -102,9 +152,10 @@ impl NormalBits {
 }
 
 /// A vertex's cache key: the bits of its position and normal as 64-bit words (x and y, z and
-/// w, the normal's), the form both the hash mixes and a hit compares, so that the words are
-/// built once (mixing the seven 32-bit words one by one, with a rotation each, cost about 35
-/// instructions a vertex, most of them moving words between registers and the stack).
+/// w, the normal's), the form the hash mixes, so that the words are built once (mixing the
+/// seven 32-bit words one by one, with a rotation each, cost about 35 instructions a vertex,
+/// most of them moving words between registers and the stack). A hit compares the normal's
+/// words, and the position as one vector (`Batch::vertex_in_span`).
 #[derive(Clone, Copy, Debug)]
 struct Key {
     xy: u64,
@@ -114,6 +165,7 @@ struct Key {
 
 impl Key {
     /// The key of the position with bits `pos` and the normal `normal`.
+    #[cfg(test)]
     #[inline(always)]
     fn new(pos: [u32; 4], normal: NormalBits) -> Key {
         Key {
@@ -123,13 +175,30 @@ impl Key {
         }
     }
 
+    /// The key of `position` with the normal `normal`: the position's bits as two 64-bit
+    /// words taken whole from its vector register (built from its four 32-bit words, each
+    /// extracted, shifted and combined, they cost four instructions a vertex more).
+    #[inline(always)]
+    fn at(position: Vec4, normal: NormalBits) -> Key {
+        // SAFETY: four f32s and two u64s are both 16 bytes of plain data, every bit pattern
+        // valid in either.
+        let [a, b] = unsafe { std::mem::transmute::<[f32; 4], [u64; 2]>(position.to_array()) };
+        Key {
+            xy: lo_first(a),
+            zw: lo_first(b),
+            normal,
+        }
+    }
+
     /// The key of a batched vertex.
+    #[cfg(test)]
     #[inline(always)]
     fn of(pos: &Vec4, normal: &Vec3) -> Key {
         Key::new(pos.to_array().map(f32::to_bits), NormalBits::of(*normal))
     }
 
-    /// The position (a vertex batched on a miss).
+    /// The position.
+    #[cfg(test)]
     #[inline(always)]
     fn position(self) -> Vec4 {
         let half = |w: u64| [w as u32, (w >> 32) as u32].map(f32::from_bits);
@@ -138,6 +207,7 @@ impl Key {
     }
 
     /// Whether every bit is the same: the words compared without a branch between them.
+    #[cfg(test)]
     #[inline(always)]
     fn same(self, other: Key) -> bool {
         let (n, m) = (self.normal, other.normal);
@@ -206,7 +276,9 @@ pub struct Batch {
     /// `span` on (the last entry of `spans`; its position and normal are not used), and its
     /// stamp that of the latest such vertex (`Current::same_inputs_as`).
     span_in: Current,
-    /// The material index of every batched vertex from `span` on.
+    /// The material index of every batched vertex from `span` on. Whenever `cur_mat` is
+    /// another, `span_in`'s stamp is forgotten (`Current::forget_stamp`), so that
+    /// `check_span`'s one compare of stamps also stands for the material's.
     span_mat: u32,
     /// Object-coordinate positions.
     pub pos: Vec<Vec4>,
@@ -219,6 +291,13 @@ pub struct Batch {
     pub spans: Vec<Attribs>,
     /// Edge flag.
     pub edge: Vec<bool>,
+    /// A length up to which `pos`, `normal`, `span_of` and `edge` all have room: the least of
+    /// their capacities when a push last grew one (0 at first). Nothing changes those arrays
+    /// but `vertex_in_span` (a push, or a write within `room`) and `clear` (which keeps their
+    /// memory), so a capacity never falls below it; a unique vertex is then written to the
+    /// four without testing each one's capacity and length (about fifteen instructions a
+    /// stored vertex).
+    room: usize,
     /// Index into `snapshots` of each vertex; filled only once `snapshots` is not empty (until
     /// then every vertex uses the state's materials, and `mat` stays empty).
     pub mat: Vec<u32>,
@@ -258,6 +337,7 @@ impl Default for Batch {
             // The all-zero inputs (`span_in`, edge flag false, and material 0).
             spans: vec![Attribs::ZERO],
             edge: Vec::new(),
+            room: 0,
             mat: Vec::new(),
             prims: Vec::new(),
             snapshots: Vec::new(),
@@ -290,19 +370,28 @@ impl Batch {
     /// Appends a vertex with the current attributes to the open primitive (the caller has
     /// opened one: `Context::vertex` draws nothing outside Begin/End). The primitive's count
     /// is taken at `end`. For `c` in memory, such as the state's current values: the front end
-    /// stores the normal's components one by one (`Normal3f`), and loading two of them as one
-    /// wider word would stall store forwarding for ~15 cycles, so each is read on its own (a
-    /// volatile load keeps the compiler from merging them; `black_box` did too, but through a
-    /// store and a reload of each), and the hash mixes 32-bit words.
+    /// stores the normal as its x and y in one 64-bit word and its z (`Normal3f`), and loading
+    /// them as one wider word would stall store forwarding for ~15 cycles, so they are read in
+    /// the same two pieces (volatile loads keep the compiler from merging or splitting them;
+    /// `black_box` did too, but through a store and a reload), which are also the key's words
+    /// (read as three 32-bit words, they were spilled and put together again: about eight
+    /// instructions a vertex).
     #[inline(always)]
     pub fn vertex(&mut self, position: Vec4, c: &Current) {
+        // The span first: the normal's words are loaded after it, where the hash takes them
+        // (loaded before, they were held on the stack across it).
+        self.check_span(c);
         let n = &c.normal;
-        let normal = [&n.x, &n.y, &n.z].map(|v| {
-            // SAFETY: `v` is a reference to an f32, readable as the u32 of its size and
-            // alignment.
-            unsafe { std::ptr::read_volatile(std::ptr::from_ref(v).cast::<u32>()) }
-        });
-        self.vertex_with(position, normal, c);
+        // SAFETY: `n` is an f32's reference, its address a multiple of 8 (the assertion on
+        // `Current`'s layout above), so the u64 of its x and y is readable there; `n.z` is
+        // readable as the u32 of its size and alignment.
+        let normal = unsafe {
+            NormalBits {
+                n01: lo_first(std::ptr::read_volatile(std::ptr::from_ref(n).cast::<u64>())),
+                n2: std::ptr::read_volatile(std::ptr::from_ref(&n.z).cast::<u32>()),
+            }
+        };
+        self.vertex_in_span(Key::at(position, normal), position, c);
     }
 
     /// [`Batch::vertex`] for values the caller has just computed, such as an evaluator's
@@ -310,62 +399,60 @@ impl Batch {
     /// the whole `Current` in memory, about 35 instructions more a vertex there).
     #[inline(always)]
     pub fn vertex_computed(&mut self, position: Vec4, c: &Current) {
-        self.vertex_with(position, c.normal.to_array().map(f32::to_bits), c);
-    }
-
-    /// [`Batch::vertex`] with the bits of `c`'s normal, `normal`.
-    #[inline(always)]
-    fn vertex_with(&mut self, position: Vec4, normal: [u32; 3], c: &Current) {
-        let key = Key::new(
-            position.to_array().map(f32::to_bits),
-            NormalBits::new(normal),
-        );
         self.check_span(c);
-        self.vertex_in_span(key, c);
+        self.vertex_in_span(Key::at(position, NormalBits::of(c.normal)), position, c);
     }
 
     /// Starts a span at the next vertex if `c`'s inputs other than position and normal are
-    /// not the current span's: [`Batch::vertex_with`]'s first step.
+    /// not the current span's: [`Batch::vertex`]'s first step.
     #[inline(always)]
     fn check_span(&mut self, c: &Current) {
-        // The same stamp is the same inputs (`Current`'s docs): the common case, one compare
-        // instead of 25 floats and the edge flag.
-        if !self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat {
+        // The same stamp is the same inputs (`Current`'s docs) and the same material (the
+        // stamp is forgotten when `cur_mat` leaves `span_mat`): the common case, one compare
+        // instead of 25 floats, the edge flag and the material's index.
+        if !self.span_in.same_stamp_as(c)
+            && (!self.span_in.same_inputs_as(c) || self.cur_mat != self.span_mat)
+        {
             self.new_span(c, self.serial0 + self.pos.len() as u64);
         }
     }
 
-    /// [`Batch::vertex_with`] once `check_span(c)` ran: the vertex with bits `key` looked up
-    /// in the cache, batched on a miss.
+    /// [`Batch::vertex`] once `check_span(c)` ran: the vertex with bits `key` (of
+    /// `position` and the normal) looked up in the cache, batched on a miss.
     #[inline(always)]
-    fn vertex_in_span(&mut self, key: Key, c: &Current) {
+    fn vertex_in_span(&mut self, key: Key, position: Vec4, c: &Current) {
         let i = self.pos.len();
         let serial = self.serial0 + i as u64;
-        // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is simply not cached.
-        if let (Some(Set(ways)), Ok(serial)) =
-            (self.cache.get_mut(key.set()), u32::try_from(serial))
         {
+            let Set(ways) = &mut self.cache[key.set()];
             // A hit: a vertex of this span (same other inputs, serial in `span..serial`: one
             // compare, as the serials wrap below `span`) with the same position and normal
-            // bits. A serial of this span is at least `serial0`, so its index is in the arrays;
-            // the position's index is tested all the same (against the length already in a
-            // register), and the normal, at the same index of an array of the same length, is
-            // read without a test (a length load and a compare a probe, and the register the
-            // length held, which the compare spilled).
+            // bits. A serial of this span is at least `serial0` (`span` is `serial0` plus the
+            // length at `new_span`, or `serial0` at `clear`), so its index is below the arrays'
+            // length, and both are read without a test (two instructions a probe, and the
+            // registers the compare then spilled less: 7.9M of gauss-smooth-400's whole
+            // process; tested, they were 1.39% of it in the twentieth session, but other scenes
+            // rose by up to 0.10% then, and they do not now). The position is compared as one
+            // 128-bit word with the vector it came in (one vector compare; as the key's two
+            // words, those held two more registers through the probe, and the compare spilled
+            // about ten values around its loads).
             let (span, serial0) = (self.span, self.serial0);
-            let live = u64::from(serial) - span;
+            debug_assert!(serial0 <= span && span <= serial);
+            let live = serial - span;
             let (positions, normals) = (&self.pos, &self.normal);
             debug_assert_eq!(normals.len(), positions.len());
             let hit = |s: Slot| {
                 u64::from(s).wrapping_sub(span) < live && {
                     let k = (u64::from(s) - serial0) as usize;
-                    positions.get(k).is_some_and(|p| {
-                        // SAFETY: `k < pos.len()`, and `normal` has the same length: every
-                        // vertex is pushed to both (`vertex_in_span`), both are cleared together
-                        // (`clear`), and nothing else changes their lengths.
-                        let n = unsafe { normals.get_unchecked(k) };
-                        Key::of(p, n).same(key)
-                    })
+                    debug_assert!(k < positions.len());
+                    // SAFETY: `span` is set only to `serial0 + pos.len()` (`new_span`) or to
+                    // `serial0` (`clear`, the one place `serial0` and the length change but
+                    // for the pushes, which only grow it), so `serial0 <= span <= serial`, and
+                    // the test above puts `s` in `span..serial`: `k < pos.len()`. `normal`
+                    // has the same length (every vertex is written to both, both are cleared
+                    // together, nothing else changes their lengths).
+                    let (p, n) = unsafe { (positions.get_unchecked(k), normals.get_unchecked(k)) };
+                    same_vertex(p, n, position, key.normal)
                 }
             };
             let [newer, older] = *ways;
@@ -380,14 +467,43 @@ impl Batch {
                 self.idx.push((u64::from(s) - serial0) as u32);
                 return;
             }
-            ways[1] = ways[0];
-            ways[0] = serial;
+            // Past `u32::MAX` (see `SERIAL_RESET`) a vertex is not cached: a slot holds a
+            // `u32`. (One cached before is still found, its serial being in the span: tested
+            // only here, the test is paid by a stored vertex, not by every one.)
+            if let Ok(serial) = u32::try_from(serial) {
+                ways[1] = ways[0];
+                ways[0] = serial;
+            }
         }
         self.idx.push(i as u32);
-        self.pos.push(key.position());
-        self.normal.push(key.normal.vec3());
-        self.span_of.push(self.spans.len().saturating_sub(1) as u32);
-        self.edge.push(c.edge_flag);
+        let (normal, span) = (key.normal.vec3(), self.spans.len().saturating_sub(1) as u32);
+        debug_assert!([self.normal.len(), self.span_of.len(), self.edge.len()] == [i; 3]);
+        if i < self.room {
+            // SAFETY: `i` is the length of `pos`, `normal`, `span_of` and `edge` (pushed
+            // together only here, cleared together only in `clear`), and below `room`, which is
+            // at most each one's capacity (`room`'s docs): the slot at `i` of each is allocated,
+            // and written before the length takes it in.
+            unsafe {
+                put(&mut self.pos, i, position);
+                put(&mut self.normal, i, normal);
+                put(&mut self.span_of, i, span);
+                put(&mut self.edge, i, c.edge_flag);
+            }
+        } else {
+            self.pos.push(position);
+            self.normal.push(normal);
+            self.span_of.push(span);
+            self.edge.push(c.edge_flag);
+            self.room = [
+                self.pos.capacity(),
+                self.normal.capacity(),
+                self.span_of.capacity(),
+                self.edge.capacity(),
+            ]
+            .into_iter()
+            .min()
+            .unwrap_or(0);
+        }
         if !self.snapshots.is_empty() {
             self.mat.push(self.cur_mat);
         }
@@ -416,7 +532,10 @@ impl Batch {
     pub fn end(&mut self) {
         let given = self.idx.len() as u32;
         if let Some(p) = self.prims.last_mut() {
-            p.count = given.saturating_sub(p.first);
+            // `first` was the length of `idx` at `begin`, which only grows until `clear`
+            // empties both.
+            debug_assert!(p.first <= given);
+            p.count = given.wrapping_sub(p.first);
             if p.count == 0 {
                 self.prims.pop();
             }
@@ -448,6 +567,8 @@ impl Batch {
         }
         self.snapshots.push(*m);
         self.cur_mat = (self.snapshots.len() - 1) as u32;
+        // A new index, not the span's: the next vertex compares its span's inputs and material.
+        self.span_in.forget_stamp();
     }
 
     /// Empties the batch, keeping capacity (the front end flushes only outside Begin/End).
@@ -475,6 +596,9 @@ impl Batch {
         }
         self.snapshots.clear();
         self.cur_mat = 0;
+        if self.span_mat != self.cur_mat {
+            self.span_in.forget_stamp();
+        }
     }
 }
 
@@ -817,6 +941,13 @@ mod tests {
             assert_eq!(k.position().to_array().map(f32::to_bits), p);
             assert_eq!(k.normal.vec3().to_array().map(f32::to_bits), n);
             assert!(k.same(Key::of(&k.position(), &k.normal.vec3())));
+            // The position's words taken whole from its vector: the same key.
+            let at = Key::at(k.position(), k.normal);
+            assert_eq!((at.xy, at.zw), (k.xy, k.zw));
+            let same = |k: Key, l: Key| {
+                same_vertex(&k.position(), &k.normal.vec3(), l.position(), l.normal)
+            };
+            assert!(same(k, k));
             // One bit changed anywhere: another key.
             let bit = (g.next() % 224) as usize;
             let (mut p2, mut n2) = (p, n);
@@ -825,7 +956,10 @@ mod tests {
             } else {
                 n2[(bit - 128) / 32] ^= 1 << (bit % 32);
             }
-            assert!(!k.same(Key::new(p2, NormalBits::new(n2))), "bit {bit}");
+            let other = Key::new(p2, NormalBits::new(n2));
+            assert!(!k.same(other), "bit {bit}");
+            // The hit test's compare: the key's, bit for bit.
+            assert!(!same(k, other) && !same(other, k), "bit {bit}");
         }
     }
 
@@ -842,8 +976,10 @@ mod tests {
         let mut shared = 0;
         for round in 0..400 {
             if round % 50 == 49 {
-                // The serials start again after this batch.
+                // The serials start again after this batch (the span starting with it, as
+                // `clear` leaves it: the hit test relies on `serial0 <= span`).
                 b.serial0 = SERIAL_RESET - (g.next() % 64);
+                b.span = b.serial0;
             }
             let mut c = Current::default();
             let mut given = Vec::new();
@@ -894,6 +1030,119 @@ mod tests {
             b.clear();
         }
         assert!(shared > 1000, "{shared} shared");
+    }
+
+    /// Random streams of vertices over a few positions and normals, with colour, edge flag
+    /// and in-pair `Material` changes, batches cleared between them: the batch written
+    /// within `room` (its arrays starting from capacities of their own, so that `room` is
+    /// every one's in turn, and grown as they fill) is bit for bit the batch written by pushes
+    /// alone (`room` held at 0); and every vertex given reads back with its own position,
+    /// normal, colour, edge flag and material, so a vertex is never shared across a material
+    /// change (which `check_span` sees only through the forgotten stamp).
+    #[test]
+    fn a_batch_written_within_its_room_is_the_batch_pushed() {
+        let mut g = crate::cpu::testgen::Gen(29);
+        let (mut fast, mut slow) = (Batch::default(), Batch::default());
+        let values = [0.0, -0.0, 1.0, 0.5, f32::NAN];
+        let mut m = [Material::default(); 2];
+        let mut mat = m[0].diffuse.x.to_bits();
+        let (mut shared, mut written) = (0, 0);
+        for round in 0..300 {
+            if round % 3 == 0 {
+                // Capacities of their own (0 to 40) for the four arrays.
+                let mut cap = || (g.next() % 41) as usize;
+                fast.pos = Vec::with_capacity(cap());
+                fast.normal = Vec::with_capacity(cap());
+                fast.span_of = Vec::with_capacity(cap());
+                fast.edge = Vec::with_capacity(cap());
+                fast.room = 0;
+            }
+            let mut c = Current::default();
+            // Per vertex given: position, normal, colour, edge flag and material bits.
+            let mut given = Vec::new();
+            for _ in 0..(g.next() % 6) {
+                fast.begin(gl::TRIANGLE_STRIP);
+                slow.begin(gl::TRIANGLE_STRIP);
+                fast.note_materials(&m);
+                slow.note_materials(&m);
+                for _ in 0..(g.next() % 60) {
+                    let change = g.next() % 32;
+                    let mut pick = || values[(g.next() % values.len() as u64) as usize];
+                    match change {
+                        0 => c.inputs_mut().color.y = pick(),
+                        1 => c.inputs_mut().edge_flag ^= true,
+                        2 => {
+                            m[0].diffuse.x = pick();
+                            fast.materials_changed(&m);
+                            slow.materials_changed(&m);
+                            mat = m[0].diffuse.x.to_bits();
+                        }
+                        _ => {}
+                    }
+                    let mut seeded = crate::cpu::testgen::Gen(g.next() % 10);
+                    let mut pick = || values[(seeded.next() % values.len() as u64) as usize];
+                    let p = Vec4::new(pick(), pick(), pick(), 1.0);
+                    c.normal = Vec3::new(pick(), pick(), pick());
+                    let (before, room) = (fast.len(), fast.room);
+                    fast.vertex(p, &c);
+                    slow.room = 0;
+                    slow.vertex(p, &c);
+                    written += usize::from(fast.len() > before && before < room);
+                    given.push((p, c.normal, c.color.y, c.edge_flag, mat));
+                }
+                fast.end();
+                slow.end();
+            }
+            let bits4 = |v: &Vec4| v.to_array().map(f32::to_bits);
+            let bits3 = |v: &Vec3| v.to_array().map(f32::to_bits);
+            assert_eq!(fast.idx, slow.idx);
+            assert_eq!(fast.prims, slow.prims);
+            assert_eq!(fast.span_of, slow.span_of);
+            assert_eq!(fast.edge, slow.edge);
+            assert_eq!(fast.mat, slow.mat);
+            let (fp, sp) = (fast.pos.iter(), slow.pos.iter());
+            assert!(fp.map(bits4).eq(sp.map(bits4)));
+            let (fn_, sn) = (fast.normal.iter(), slow.normal.iter());
+            assert!(fn_.map(bits3).eq(sn.map(bits3)));
+            let spans = |b: &Batch| b.spans.iter().map(|a| bits4(&a.color)).collect::<Vec<_>>();
+            assert_eq!(spans(&fast), spans(&slow));
+            let caps = [
+                fast.pos.capacity(),
+                fast.normal.capacity(),
+                fast.span_of.capacity(),
+                fast.edge.capacity(),
+            ];
+            assert!(
+                caps.iter().all(|&c| fast.room <= c),
+                "{} {caps:?}",
+                fast.room
+            );
+            assert_eq!(fast.idx.len(), given.len());
+            for (&k, &(p, n, green, edge, mat)) in fast.idx.iter().zip(&given) {
+                let k = k as usize;
+                shared += usize::from(fast.idx.iter().filter(|&&i| i as usize == k).count() > 1);
+                assert_eq!(bits4(&fast.pos[k]), bits4(&p));
+                assert_eq!(bits3(&fast.normal[k]), bits3(&n));
+                let a = fast.attribs(k).map(|a| a.color.y.to_bits());
+                assert_eq!(a, Some(green.to_bits()));
+                assert_eq!(fast.edge[k], edge);
+                // The vertex's material: the snapshot it indexes, once the batch has any
+                // (until then every vertex has the materials current at Begin, unchanged).
+                if !fast.snapshots.is_empty() {
+                    let snapshot = fast
+                        .mat
+                        .get(k)
+                        .and_then(|&i| fast.snapshots.get(i as usize));
+                    assert_eq!(snapshot.map(|s| s[0].diffuse.x.to_bits()), Some(mat), "{k}");
+                }
+            }
+            fast.clear();
+            slow.clear();
+        }
+        assert!(
+            shared > 1000 && written > 1000,
+            "{shared} shared, {written} written"
+        );
     }
 
     #[test]
