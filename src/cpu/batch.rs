@@ -281,16 +281,16 @@ pub struct Batch {
     /// `check_span`'s one compare of stamps also stands for the material's.
     span_mat: u32,
     /// Object-coordinate positions.
-    pub pos: Vec<Vec4>,
+    pos: Vec<Vec4>,
     /// Current normal at each vertex.
-    pub normal: Vec<Vec3>,
+    normal: Vec<Vec3>,
     /// Index into `spans` of each vertex's other inputs.
-    pub span_of: Vec<u32>,
+    span_of: Vec<u32>,
     /// The other inputs of each span (see the module docs); never empty, and its last entry is
     /// the current span's.
     pub spans: Vec<Attribs>,
     /// Edge flag.
-    pub edge: Vec<bool>,
+    edge: Vec<bool>,
     /// A length up to which `pos`, `normal`, `span_of` and `edge` all have room: the least of
     /// their capacities when a push last grew one (0 at first). Nothing changes those arrays
     /// but `vertex_in_span` (a push, or a write within `room`) and `clear` (which keeps their
@@ -348,6 +348,24 @@ impl Default for Batch {
 }
 
 impl Batch {
+    /// Object-coordinate positions of the batched vertices. The per-vertex arrays (`pos`,
+    /// `normal`, `span_of`, `edge`) are private to this module and read through accessors:
+    /// `vertex_in_span`'s unchecked reads and writes rely on their lengths and capacities
+    /// (`room`) changing only here.
+    pub fn pos(&self) -> &[Vec4] {
+        &self.pos
+    }
+
+    /// Current normal at each batched vertex.
+    pub fn normal(&self) -> &[Vec3] {
+        &self.normal
+    }
+
+    /// Edge flag of each batched vertex.
+    pub fn edge(&self) -> &[bool] {
+        &self.edge
+    }
+
     /// Number of unique batched vertices.
     pub fn len(&self) -> usize {
         self.pos.len()

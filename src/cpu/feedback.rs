@@ -314,7 +314,7 @@ impl Sink {
         };
         let mut verts: Vec<FVert> = vout
             .chunks_exact(layout.stride.max(1))
-            .zip(&batch.edge)
+            .zip(batch.edge())
             .map(|(v, &edge)| FVert {
                 clip: get(v, Some(0)),
                 col: get(v, Some(layout.col)),

@@ -915,7 +915,7 @@ impl Core {
                 assembly::assemble(
                     piece,
                     &batch.idx,
-                    &batch.edge,
+                    batch.edge(),
                     ctx.quads_split_last,
                     &mut asm,
                 );

@@ -793,7 +793,7 @@ impl Worker {
             }
             let others = rest.iter().position(direct).unwrap_or(rest.len());
             let (now, after) = rest.split_at(others);
-            super::assembly::assemble(now, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+            super::assembly::assemble(now, &b.idx, b.edge(), ctx.quads_split_last, &mut asm);
             for p in &asm {
                 self.one(ctx, src, p);
             }

@@ -838,9 +838,10 @@ impl Lit<'_> {
             let base = first + blk * LANES;
             // `os` holds as many vertices as `ws`.
             let cnt = ws.len();
-            let (Some(pos), Some(nin)) =
-                (b.pos.get(base..base + cnt), b.normal.get(base..base + cnt))
-            else {
+            let (Some(pos), Some(nin)) = (
+                b.pos().get(base..base + cnt),
+                b.normal().get(base..base + cnt),
+            ) else {
                 return;
             };
             // Lanes past `cnt` (in a batch's last block) repeat its first vertex; their results

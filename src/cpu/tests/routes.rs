@@ -119,7 +119,7 @@ fn both_routes_set_up_the_same_primitives() {
         // The same triangles assembled first and set up by `run` (the route a flush takes
         // when one primitive dominates): the same primitives again, by both routes.
         let mut asm = Vec::new();
-        crate::cpu::assembly::assemble(&b.prims, &b.idx, &b.edge, ctx.quads_split_last, &mut asm);
+        crate::cpu::assembly::assemble(&b.prims, &b.idx, b.edge(), ctx.quads_split_last, &mut asm);
         let run_asm = |route| {
             let mut wk = Worker::default();
             wk.run_by(&ctx, &vout, &wins, &b.mat, &asm, route);
