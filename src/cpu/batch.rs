@@ -97,9 +97,8 @@ unsafe fn put<T>(v: &mut Vec<T>, i: usize, x: T) {
 /// branch between them.
 #[inline(always)]
 fn same_vertex(p: &Vec4, n: &Vec3, position: Vec4, normal: NormalBits) -> bool {
-    let (n, d) = (NormalBits::of(*n), |a: u64, b: u64| a ^ b);
-    (bits128(*p) == bits128(position))
-        & (d(n.n01, normal.n01) | d(n.n2.into(), normal.n2.into()) == 0)
+    let n = NormalBits::of(*n);
+    (bits128(*p) == bits128(position)) & ((n.n01 ^ normal.n01) | u64::from(n.n2 ^ normal.n2) == 0)
 }
 
 /// The bits of `v` as one 128-bit word (a compare of two is one vector compare).
