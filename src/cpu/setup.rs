@@ -23,6 +23,7 @@ use super::assembly::{Asm, ALL_EDGES, QUAD_STRIP_EDGES};
 use super::batch::{Batch, Prim};
 use super::clip::Clipper;
 use super::framebuffer::TILE;
+use super::lanes::WinLanes;
 use super::vertex::{Lanes4, Layout, Route};
 use crate::gl;
 use crate::state::{State, MAX_TEXTURE_UNITS};
@@ -555,14 +556,23 @@ impl SetupCtx {
         }
     }
 
-    /// [`SetupCtx::win`] of `N` vertices at once, from their clip positions `c` and eye
-    /// positions `e` (read only under user clip planes), into `out` (its first `N` elements at
-    /// most): the same operations in the same order, so the same bits, on arrays that the
-    /// compiler vectorises (the vertex stage calls this while the positions are in hand).
+    /// [`SetupCtx::win`] of `N` vertices at once into `out` (its first `N` elements at most):
+    /// `win_lanes`, then `WinLanes::put`. The vertex stage calls `win_lanes` and writes the
+    /// records itself (a whole block at a time on AVX2); the tests compare this form with `win`.
+    #[cfg(test)]
+    #[inline(always)]
+    pub fn win_block<const N: usize>(&self, c: &Lanes4<N>, e: &Lanes4<N>, out: &mut [Win]) {
+        self.win_lanes(c, e).put(out);
+    }
+
+    /// [`SetupCtx::win`]'s values for `N` vertices at once, on arrays (`WinLanes`), from their
+    /// clip positions `c` and eye positions `e` (read only under user clip planes): the same
+    /// operations in the same order, so the same bits, on arrays that the compiler vectorises
+    /// (the vertex stage calls this while the positions are in hand).
     // Lane loops index several arrays in lockstep (structure of arrays): indices read best.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    pub fn win_block<const N: usize>(&self, c: &Lanes4<N>, e: &Lanes4<N>, out: &mut [Win]) {
+    pub(super) fn win_lanes<const N: usize>(&self, c: &Lanes4<N>, e: &Lanes4<N>) -> WinLanes<N> {
         let (mut xw, mut yw, mut zw, mut iw) = ([0.0f64; N], [0.0f64; N], [0.0f64; N], [0.0; N]);
         for i in 0..N {
             iw[i] = 1.0 / f64::from(c.w[i]);
@@ -581,17 +591,15 @@ impl SetupCtx {
         }
         let mut code = [0u16; N];
         self.clipper.code_block(c, e, &mut code);
-        for (i, w) in out.iter_mut().take(N).enumerate() {
-            *w = Win {
-                x: xw[i] as f32,
-                y: yw[i] as f32,
-                fx: i64::from(fx[i]),
-                fy: i64::from(fy[i]),
-                z: zw[i],
-                iw: iw[i] as f32,
-                code: code[i],
-                cen: cn[i],
-            };
+        WinLanes {
+            xw,
+            yw,
+            zw,
+            iw,
+            fx,
+            fy,
+            cen: cn,
+            code,
         }
     }
 }

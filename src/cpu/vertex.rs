@@ -7,9 +7,10 @@
 //! PHONG_WIN fragment path (through `Lighting::shade`) for single fragments, so the two shading modes can
 //! never disagree about the equation, down to the bits. The vertex stage makes one pass per block:
 //! it transforms the block's positions and normals on arrays, computes the window coordinates
-//! and clip codes (`SetupCtx::win_block`) while the clip positions are in hand, then lights the
-//! block. Results are written to one flat `f32` array with a per-flush `Layout`, carrying only
-//! the attributes the flush needs, plus each vertex's clip code and window coordinates. The
+//! and clip codes (`SetupCtx::win_lanes`, the records written a block at a time on AVX2) while
+//! the clip positions are in hand, then lights the block. Results are written to one flat `f32`
+//! array with a per-flush `Layout`, carrying only the attributes the flush needs, plus each
+//! vertex's clip code and window coordinates. The
 //! structures of arrays (`Lanes3`, `Lanes4`, `Block`, `Shaded`) live in the `lanes` submodule.
 
 use glam::{Mat3, Mat4, Vec3, Vec3A, Vec4, Vec4Swizzles};
@@ -237,7 +238,15 @@ impl Lighting {
     /// with unit normal `n` (already negated for a back face), material `m` of face `face`
     /// (FRONT or BACK), and vertex colour `color` for COLOR_MATERIAL (GL 2.1 §2.14.1, §2.14.3).
     /// The secondary colour is the specular sum under SEPARATE_SPECULAR_COLOR, else zero.
-    #[inline]
+    ///
+    /// Not inlined: PHONG_WIN's fragment loop (`FragCtx::tri_rows_avx2`) calls it for each
+    /// fragment and never inlined it (it was `#[inline]`, so every codegen unit that called it
+    /// compiled its own copy). One copy, here, keeps the fragment stage's code independent of
+    /// how the vertex stage's code is split among the codegen units: with `#[inline]`, adding
+    /// `lanes::put_wins_avx2` to the vertex stage cost `tri_rows_avx2` ≈11 instructions a
+    /// lit fragment on gauss-phong-40 (+1.0%) and set-up's `assemble_avx2` +4.7M on
+    /// gauss-smooth-400, for no change in either function's source.
+    #[inline(never)]
     pub fn shade(&self, m: &Material, face: usize, color: Vec4, v: Vec3, n: Vec3) -> (Vec4, Vec4) {
         let mut out = Shaded::default();
         let p = Block {
@@ -867,7 +876,16 @@ impl Lit<'_> {
             }
             let eye = p.transform(&tf.mv);
             let clip = eye.transform(&tf.proj);
-            self.setup.win_block(&clip, &eye, ws);
+            // The window records: on AVX2 a whole block's through `super::lanes::put_wins_avx2`.
+            let win = self.setup.win_lanes(&clip, &eye);
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `AVX2` is true only in `run_avx2`, which runs where the CPU has AVX2.
+            let put = AVX2 && unsafe { super::lanes::put_wins_avx2(&win, ws) };
+            #[cfg(not(target_arch = "x86_64"))]
+            let put = false;
+            if !put {
+                win.put(ws);
+            }
             if need_attribs {
                 for (k, o) in os.chunks_exact_mut(l.stride).enumerate() {
                     let Some(a) = b.attribs(base + k) else {
