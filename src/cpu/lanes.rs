@@ -2425,10 +2425,12 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn window_records_are_put_field_by_field() {
-        assert!(
-            WIN_WORDS,
-            "Win's layout changed: the kernel always declines"
-        );
+        const {
+            assert!(
+                WIN_WORDS,
+                "Win's layout changed: the kernel always declines"
+            )
+        };
         if !is_x86_feature_detected!("avx2") {
             return;
         }
