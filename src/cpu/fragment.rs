@@ -2640,7 +2640,7 @@ impl FragCtx<'_> {
 
     /// `ops_rows`'s textured rows (`tex_span` each) for a primitive in the fused route's state
     /// ([`FusedSpan`], sampler `tx` with coordinates at varying `to`): each group's clamped
-    /// colours from [`FusedSpan::channels`] (the bits of `oplanes::clamp01` of
+    /// colours from [`FusedSpan::channel_groups`] (a row's at once; the bits of `oplanes::clamp01` of
     /// `color_lanes`), then the alpha test, the stencil and depth tests and `finish_group_on` as
     /// `tex_span_in`, on the eight-lane AVX2 kernels. The route is set up once for the rows
     /// (its levels looked up once). False, with nothing done, when the sampler's state is not
@@ -2650,7 +2650,7 @@ impl FragCtx<'_> {
     /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
     ///
     /// [`FusedSpan`]: super::texture::FusedSpan
-    /// [`FusedSpan::channels`]: super::texture::FusedSpan::channels
+    /// [`FusedSpan::channel_groups`]: super::texture::FusedSpan::channel_groups
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,popcnt")]
     #[inline(never)]
@@ -2683,6 +2683,8 @@ impl FragCtx<'_> {
             .map(|s| &s[usize::from(p.flags & F_BACK != 0)]);
         let writes_color = self.count || self.color_mask != [false; 4];
         let dz = p.z[1];
+        // A row's groups' colours ([`FusedSpan::channel_groups`]: the route's loop a row).
+        let mut ch = [[[0.0f32; LANES]; 4]; TILE / LANES];
         for &[y, x0, x1] in rows {
             let Some((fy, zrow, base, n, live)) = self.row_at(bufs, p, y, x0, x1) else {
                 continue;
@@ -2690,18 +2692,18 @@ impl FragCtx<'_> {
             // `tex_span_in`'s row: y = oy + fy, its quad row (y & !1) - oy.
             let y = oy + fy as i32;
             fs.row(fy, ((y & !1) - oy) as f32);
+            // SAFETY: the CPU has AVX2 and POPCNT (the caller's promise).
+            unsafe { fs.channel_groups(x0, n, live, &mut ch) };
             let mut c = 0;
             while c < n {
                 let m = ((live >> c) & 0xFF) as u8;
                 let i0 = base + c;
                 let fx0 = x0 - ox + c as i32;
-                let gx = x0 + c as i32;
+                let [r, g, b, al] = ch[(c / LANES) % ch.len()];
                 c += LANES;
                 if m == 0 {
                     continue;
                 }
-                // SAFETY: the CPU has AVX2 (the caller's promise).
-                let [r, g, b, al] = unsafe { fs.channels(gx, m) };
                 let grp = TexGroup {
                     side,
                     zrow,
@@ -3838,14 +3840,16 @@ mod tests {
         samplers
     }
 
-    /// `FusedSpan::channels` (the colours of `tex_span`'s fused route) against
+    /// `FusedSpan::channel_groups` (the colours of `tex_span`'s fused route) against
     /// `oplanes::clamp01` of `color_lanes` (what `tex_span_in` computes for them, λ from each
     /// pixel's `quad_lambda`), bit for bit on the lanes of the mask: random states the fused
     /// route covers (filters, REPEAT or CLAMP_TO_EDGE, RGB or RGBA, power-of-two and 6x6
     /// levels, MODULATE or REPLACE; one round in four LINEAR with a border texel, as
     /// `border_state`), flat or smooth colours, planes with NaN, infinite or zero terms,
     /// groups and masks. `FusedSpan::group` (the colours packed and stored; the depth
-    /// comparison's own route) on the same groups against `store_pixels`' bytes of them.
+    /// comparison's own route) on the same groups against `store_pixels`' bytes of them, and
+    /// `FusedSpan::span` against `group` (LINEAR without mipmaps there with its level looked
+    /// up once a span, the filter inline: the `LIN` loops).
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn fused_channels_are_clamped_color_lanes_bit_for_bit() {
@@ -3961,8 +3965,16 @@ mod tests {
                 // SAFETY: the CPU has AVX2 (checked above).
                 unsafe { fg.span(gx, LANES, u64::from(m), &mut ps) };
                 assert_eq!(ps, px, "round {round} x {gx}: span's bytes");
-                // SAFETY: the CPU has AVX2 (checked above).
-                let got = unsafe { fs.channels(gx, m) };
+                // `FusedSpan::channel_groups` on a span of two groups from gx - 8, the group
+                // at gx its second (the first without a lane: left as it was).
+                let mut out = [[[7.0f32; LANES]; 4]; TILE / LANES];
+                // SAFETY: the CPU has AVX2 and POPCNT (checked above).
+                unsafe { fs.channel_groups(gx - 8, 16, u64::from(m) << 8, &mut out) };
+                assert_eq!(
+                    out[0], [[7.0; LANES]; 4],
+                    "round {round} x {gx}: group 0 written"
+                );
+                let got = out[1];
                 for l in (0..LANES).filter(|l| m & (1 << l) != 0) {
                     let (a, b) = (got.map(|c| c[l].to_bits()), want.map(|c| c[l].to_bits()));
                     assert!(

@@ -62,6 +62,10 @@ pub struct FusedSpan<'a> {
     /// `div`'s pattern where the colour route skips its seven tests (`DIV`): `DIV_COORDS`
     /// (s, t, q smooth, the colour not), `DIV_ALL` (every one), else `DIV_ANY`.
     divs: u8,
+    /// The colour loops' level state (`LIN_CLAMP`, `LIN_REPEAT`: LINEAR without mipmaps, no
+    /// depth comparison, no border texel, the same repeat flag on both axes; the base level
+    /// then looked up once a span, [`FusedSpan::lin_groups`]), else `LIN_NONE`.
+    lin: u8,
     /// The levels looked up last: their numbers and views.
     cache: [(i32, View<'a>); 2],
     /// Window x of the planes' origin.
@@ -96,6 +100,15 @@ const QUADS: usize = 40;
 const DIV_ANY: u8 = 0;
 const DIV_COORDS: u8 = 1;
 const DIV_ALL: u8 = 2;
+
+/// The colour route's `LIN` (its loops' level state, [`FusedSpan`]'s `lin`): the level
+/// looked up in each group (`texels`, `level_linear`); LINEAR without mipmaps on a dense base
+/// level looked up once for the span, CLAMP_TO_EDGE on both axes, or REPEAT on both (`bilinear!`
+/// inline: no call, no cache test and no dispatch on the repeat flags a group, ≈34
+/// instructions of a point-sprites group's ≈227 in `level_linear`).
+const LIN_NONE: u8 = 0;
+const LIN_CLAMP: u8 = 1;
+const LIN_REPEAT: u8 = 2;
 
 /// Bit i of the index set in bits 2i and 2i + 1: a group's filter bits from its quads' (lane
 /// pairs share a quad).
@@ -192,6 +205,110 @@ struct Lanes {
     qy: std::arch::x86_64::__m256,
 }
 
+/// The four corners of `bilinear!` (indices `$k00`, `$k10`, `$k01`, `$k11` of level texels
+/// `$dt`, each taken modulo `$dt.len()` as [`load_pairs`] takes them) as pixel-major pairs.
+/// Where every lane's `k10` is its `k00` + 1 and its `k11` its `k01` + 1 (no lane's row wraps,
+/// the common case), each row's two texels come from one address a lane; where moreover every
+/// lane's `k01` is its `k00` + `$w` (the level's width: no lane's column wraps either), the
+/// four from one address a lane (eight extractions instead of sixteen); the same texels
+/// either way. The value is `$sum` (a closure) of the corners, called in each branch: with
+/// the sixteen registers merged after the branches, six of them went through the stack in
+/// each call. (A macro: as a function it stayed out of line, called from `level`'s four
+/// bilinear kernels.)
+#[cfg(target_arch = "x86_64")]
+macro_rules! load_corners {
+    ($dt:expr, $w:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr, $sum:expr) => {{
+        let sum = $sum;
+        let dt: &[[f32; 4]] = $dt;
+        let w: i32 = $w;
+        let (k00, k10, k01, k11) = ($k00, $k10, $k01, $k11);
+        let km = dt.len().wrapping_sub(1);
+        if dt.is_empty() || km >= 1 << 28 {
+            sum([
+                load_pairs(dt, k00),
+                load_pairs(dt, k10),
+                load_pairs(dt, k01),
+                load_pairs(dt, k11),
+            ])
+        } else {
+            let kmv = _mm256_set1_epi32(km as i32);
+            let (k00, k10) = (_mm256_and_si256(k00, kmv), _mm256_and_si256(k10, kmv));
+            let (k01, k11) = (_mm256_and_si256(k01, kmv), _mm256_and_si256(k11, kmv));
+            let one = _mm256_set1_epi32(1);
+            let next = _mm256_and_si256(
+                _mm256_cmpeq_epi32(k10, _mm256_add_epi32(k00, one)),
+                _mm256_cmpeq_epi32(k11, _mm256_add_epi32(k01, one)),
+            );
+            let down = _mm256_cmpeq_epi32(k01, _mm256_add_epi32(k00, _mm256_set1_epi32(w)));
+            let (o0, o1) = (_mm256_slli_epi32::<4>(k00), _mm256_slli_epi32::<4>(k01));
+            if _mm256_movemask_epi8(_mm256_and_si256(next, down)) == -1 {
+                // SAFETY: every lane has k00 + 1 = k10, k00 + w = k01 and k01 + 1 = k11, each
+                // at most km < 2^28 (w > 0: k01 > k00 as integers below 2^28): the texels
+                // k00, k00 + 1, k00 + w and k00 + w + 1 lie inside `dt` and 16·k fits a u32.
+                unsafe {
+                    let r = w as usize;
+                    sum([
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<1>(dt, o0, 0),
+                        load_at::<0>(dt, o0, r),
+                        load_at::<1>(dt, o0, r),
+                    ])
+                }
+            } else if _mm256_movemask_epi8(next) == -1 {
+                // SAFETY: every lane has k00 + 1 = k10 <= km and k01 + 1 = k11 <= km,
+                // km < 2^28: the texels k00, k00 + 1, k01 and k01 + 1 lie inside `dt` and 16·k
+                // fits a u32.
+                unsafe {
+                    sum([
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<1>(dt, o0, 0),
+                        load_at::<0>(dt, o1, 0),
+                        load_at::<1>(dt, o1, 0),
+                    ])
+                }
+            } else {
+                // SAFETY: every lane of each index is at most km < 2^28: inside `dt`, and 16·k
+                // fits a u32.
+                unsafe {
+                    sum([
+                        load_at::<0>(dt, o0, 0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10), 0),
+                        load_at::<0>(dt, o1, 0),
+                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11), 0),
+                    ])
+                }
+            }
+        }
+    }};
+}
+
+/// `dense_linear8`'s wraps, weights and indices on level `$lv` (a `&DenseLevel`) at `$s`,
+/// `$t`, REPEAT on s `$rx`, on t `$ry` (else CLAMP_TO_EDGE), the four corners loaded per lane
+/// and summed pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order
+/// per channel. A row's two corners come from one address a lane where no lane's pair wraps
+/// (`load_corners`): the same texels. (A macro: as a function LLVM left it out of line, or
+/// inlined it, depending on how many callers it had: `FusedSpan::level_linear`'s four
+/// instances and the colour route's `LIN` loops, which took it out of line for all of them.)
+#[cfg(target_arch = "x86_64")]
+macro_rules! bilinear {
+    ($rx:literal, $ry:literal, $lv:expr, $s:expr, $t:expr) => {{
+        let lv: &DenseLevel = $lv;
+        let (x0, x1, a) = linear_axis8_of::<$rx>($s, lv.wf, lv.wm1);
+        let (y0, y1, b) = linear_axis8_of::<$ry>($t, lv.hf, lv.hm1);
+        let sh = _mm_cvtsi32_si128(lv.sh);
+        let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
+        load_corners!(
+            lv.dt,
+            lv.w,
+            _mm256_add_epi32(r0, x0),
+            _mm256_add_epi32(r0, x1),
+            _mm256_add_epi32(r1, x0),
+            _mm256_add_epi32(r1, x1),
+            |c: [[__m256; 4]; 4]| corner_sum(a, b, &c)
+        )
+    }};
+}
+
 impl<'a> FusedSpan<'a> {
     /// Does the route cover sampler `s`'s state (the checks of [`FusedSpan::new`] on the
     /// sampler alone, cheap enough for the caller to make before the call)?
@@ -271,6 +388,11 @@ impl<'a> FusedSpan<'a> {
             } else {
                 DIV_ANY
             },
+            lin: match (s.route, depth, border, rep) {
+                (Route::Linear, None, None, [false, false]) => LIN_CLAMP,
+                (Route::Linear, None, None, [true, true]) => LIN_REPEAT,
+                _ => LIN_NONE,
+            },
             cache: [(0, View::Unknown); 2],
             ox,
             // (λ's planes are read on the LOD route only.)
@@ -342,22 +464,173 @@ impl<'a> FusedSpan<'a> {
     /// comparison's state is tested once here instead of once a group.
     ///
     /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    pub unsafe fn span(&mut self, x0: i32, n: usize, mask: u64, dst: &mut [[u8; 4]]) {
+        // SAFETY: the CPU has AVX2 and POPCNT (the caller's promise).
+        unsafe {
+            if self.depth.is_some() {
+                return self.depth_groups(x0, n, mask, dst);
+            }
+            let store = |g: usize, m: u8, c| {
+                if let Some(d) = dst.get_mut(g..) {
+                    store_group(c, m, d);
+                }
+            };
+            if self.lin != LIN_NONE && self.lin_groups(x0, n, mask, store) {
+                return;
+            }
+            // (Each group's level looked up in it: the loop inline here, as before the `LIN`
+            // loops; through `colors_loop` projective-texture took 0.6% more.)
+            match self.divs {
+                DIV_COORDS => self.store_groups::<DIV_COORDS>(x0, n, mask, dst),
+                DIV_ALL => self.store_groups::<DIV_ALL>(x0, n, mask, dst),
+                _ => self.store_groups::<DIV_ANY>(x0, n, mask, dst),
+            }
+        }
+    }
+
+    /// [`FusedSpan::span`]'s colour groups, `divs` `DIV`, each group's level looked up in it.
+    ///
+    /// # Safety
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    pub unsafe fn span(&mut self, x0: i32, n: usize, mask: u64, dst: &mut [[u8; 4]]) {
-        // SAFETY: the CPU has AVX2 (the caller's promise).
+    #[inline]
+    unsafe fn store_groups<const DIV: u8>(
+        &mut self,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        dst: &mut [[u8; 4]],
+    ) {
+        each_group(n, mask, |g, m| {
+            if let Some(d) = dst.get_mut(g..) {
+                let x = x0.wrapping_add(g as i32);
+                // SAFETY: the CPU has AVX2 (the caller's promise).
+                unsafe { store_group(self.colors::<DIV>(x, m), m, d) };
+            }
+        });
+    }
+
+    /// The groups of the span of `n` pixels (at most 64) from window x `x0` with a lane in
+    /// `mask` (bit i for pixel x0 + i), in order, where the route's `lin` is LINEAR without
+    /// mipmaps on a dense base level and its `divs` not `DIV_ANY`: `f(g, m, colours)` for the
+    /// group of pixels g..g + 8 (lanes `m`), its colours as [`FusedSpan::colors`] gives them,
+    /// the level looked up once for the span and its filter inline in the loop (a copy for each
+    /// `divs` and repeat flag). False, with nothing done, otherwise.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline]
+    unsafe fn lin_groups(
+        &mut self,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        f: impl FnMut(usize, u8, [std::arch::x86_64::__m256; 4]),
+    ) -> bool {
+        if self.lin == LIN_NONE {
+            return false;
+        }
+        let Ok(&lv) = self.dense(self.s.base_level) else {
+            return false;
+        };
+        let lin = Some(&lv);
+        // SAFETY: the CPU has AVX2 and POPCNT (the caller's promise).
         unsafe {
-            if self.depth.is_some() {
-                self.groups::<true, DIV_ANY>(x0, n, mask, dst);
-            } else {
-                match self.divs {
-                    DIV_COORDS => self.groups::<false, DIV_COORDS>(x0, n, mask, dst),
-                    DIV_ALL => self.groups::<false, DIV_ALL>(x0, n, mask, dst),
-                    _ => self.groups::<false, DIV_ANY>(x0, n, mask, dst),
+            match (self.lin, self.divs) {
+                (LIN_CLAMP, DIV_COORDS) => {
+                    self.colors_loop::<DIV_COORDS, LIN_CLAMP, _>(lin, x0, n, mask, f)
                 }
+                (LIN_REPEAT, DIV_COORDS) => {
+                    self.colors_loop::<DIV_COORDS, LIN_REPEAT, _>(lin, x0, n, mask, f)
+                }
+                (LIN_CLAMP, DIV_ALL) => {
+                    self.colors_loop::<DIV_ALL, LIN_CLAMP, _>(lin, x0, n, mask, f)
+                }
+                (LIN_REPEAT, DIV_ALL) => {
+                    self.colors_loop::<DIV_ALL, LIN_REPEAT, _>(lin, x0, n, mask, f)
+                }
+                _ => return false,
             }
         }
+        true
+    }
+
+    /// The groups' colours of [`FusedSpan::span`] channel-major (`out[g][c][l]`: channel c of
+    /// lane l), as `tex_span` takes them: group g's (pixels 8g..8g + 8, from window x
+    /// `x0 + 8g`) into `out[g]` where it has a lane in `mask` (the other groups' left as they
+    /// are), `oplanes::clamp01` of each channel of `color_lanes`, bit for bit. Lanes outside
+    /// `mask` hold unspecified values.
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    pub unsafe fn channel_groups(
+        &mut self,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        out: &mut [[[f32; LANES]; 4]; 64 / LANES],
+    ) {
+        let mut put = |g: usize, _: u8, p| {
+            if let Some(o) = out.get_mut(g / LANES) {
+                *o = channel_major(p);
+            }
+        };
+        // SAFETY: the CPU has AVX2 and POPCNT (the caller's promise).
+        unsafe {
+            if self.lin != LIN_NONE && self.lin_groups(x0, n, mask, &mut put) {
+                return;
+            }
+            match self.divs {
+                DIV_COORDS => self.colors_loop::<DIV_COORDS, LIN_NONE, _>(None, x0, n, mask, put),
+                DIV_ALL => self.colors_loop::<DIV_ALL, LIN_NONE, _>(None, x0, n, mask, put),
+                _ => self.colors_loop::<DIV_ANY, LIN_NONE, _>(None, x0, n, mask, put),
+            }
+        }
+    }
+
+    /// The colour groups' loop ([`FusedSpan::lin_groups`], [`FusedSpan::channel_groups`]):
+    /// `f(g, m, colours)` for each group with a lane in `mask`, `divs` `DIV` and the level
+    /// state `LIN` (`lin` the level of `LIN_CLAMP` and `LIN_REPEAT`, the group's route inline
+    /// here; `LIN_NONE`, [`FusedSpan::colors`] out of line, as each group called it before).
+    /// `f` is meant to be small (a store): a large `f` (`fused_tex_rows`' tests and writes)
+    /// stayed out of line, called for each group, +6.8% on point-sprites. (The `LIN` copies
+    /// end up inlined into `lin_groups` all the same.)
+    ///
+    /// # Safety
+    /// The CPU must have AVX2 and POPCNT (`lanes::has_avx2`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt")]
+    #[inline(never)]
+    unsafe fn colors_loop<const DIV: u8, const LIN: u8, F>(
+        &mut self,
+        lin: Option<&DenseLevel<'a>>,
+        x0: i32,
+        n: usize,
+        mask: u64,
+        mut f: F,
+    ) where
+        F: FnMut(usize, u8, [std::arch::x86_64::__m256; 4]),
+    {
+        each_group(n, mask, |g, m| {
+            let x = x0.wrapping_add(g as i32);
+            // SAFETY: the CPU has AVX2 (the caller's promise).
+            let c = unsafe {
+                if LIN == LIN_NONE {
+                    self.colors::<DIV>(x, m)
+                } else {
+                    self.colors_at::<DIV, false, LIN, F>(self.at_row(x), m, lin)
+                }
+            };
+            f(g, m, c);
+        });
     }
 
     /// A packed group (`FragCtx::packed_rows`): lane l the fragment at window x `x[l]` and y
@@ -415,9 +688,11 @@ impl<'a> FusedSpan<'a> {
             // SAFETY: the CPU has AVX2 (the caller's promise).
             pack_group(unsafe {
                 match (self.depth.is_some(), self.divs) {
-                    (false, DIV_COORDS) => self.colors_at::<DIV_COORDS, true>(at, m),
-                    (false, DIV_ALL) => self.colors_at::<DIV_ALL, true>(at, m),
-                    _ => self.colors_at::<DIV_ANY, true>(at, m),
+                    (false, DIV_COORDS) => {
+                        self.colors_at::<DIV_COORDS, true, LIN_NONE, ()>(at, m, None)
+                    }
+                    (false, DIV_ALL) => self.colors_at::<DIV_ALL, true, LIN_NONE, ()>(at, m, None),
+                    _ => self.colors_at::<DIV_ANY, true, LIN_NONE, ()>(at, m, None),
                 }
             })
         };
@@ -425,41 +700,21 @@ impl<'a> FusedSpan<'a> {
         unsafe { std::mem::transmute::<__m256i, [[u8; 4]; LANES]>(v) }
     }
 
-    /// [`FusedSpan::span`]'s loop, the depth state `DEPTH` (`depth.is_some()`): `group`,
-    /// else `group`'s colour route without its depth test, and without the seven tests of
-    /// the varyings' division by w where `DIV` is not `DIV_ANY` (`divs`; ≈14 instructions a
-    /// group).
+    /// [`FusedSpan::span`]'s loop in the depth comparison's state: [`FusedSpan::group`] for
+    /// each group (its depth state tested once here instead of once a group).
     ///
     /// # Safety
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    unsafe fn groups<const DEPTH: bool, const DIV: u8>(
-        &mut self,
-        x0: i32,
-        n: usize,
-        mask: u64,
-        dst: &mut [[u8; 4]],
-    ) {
-        let mut g = 0;
-        while g < n.min(64) {
-            let m = (mask >> g) & ((1 << LANES) - 1);
-            if m != 0 {
-                if let Some(d) = dst.get_mut(g..) {
-                    let x = x0.wrapping_add(g as i32);
-                    // SAFETY: the CPU has AVX2 (the caller's promise).
-                    unsafe {
-                        if DEPTH {
-                            self.group(x, m as u8, d);
-                        } else {
-                            store_group(self.colors::<DIV>(x, m as u8), m as u8, d);
-                        }
-                    }
-                }
+    unsafe fn depth_groups(&mut self, x0: i32, n: usize, mask: u64, dst: &mut [[u8; 4]]) {
+        each_group(n, mask, |g, m| {
+            if let Some(d) = dst.get_mut(g..) {
+                // SAFETY: the CPU has AVX2 (the caller's promise).
+                unsafe { self.group(x0.wrapping_add(g as i32), m, d) };
             }
-            g += LANES;
-        }
+        });
     }
 
     /// [`FusedSpan::group`] in the depth comparison's state (`func` its TEXTURE_COMPARE_FUNC,
@@ -666,6 +921,21 @@ impl<'a> FusedSpan<'a> {
     }
 }
 
+/// `f(g, m)` for each group of eight pixels g..g + 8 of a span of `n` pixels (at most 64)
+/// with a lane in `mask` (bit i for pixel i), `m` its lanes, in order: the loop of
+/// [`FusedSpan::span`]'s and [`FusedSpan::channel_groups`]' routes.
+#[inline(always)]
+fn each_group(n: usize, mask: u64, mut f: impl FnMut(usize, u8)) {
+    let mut g = 0;
+    while g < n.min(64) {
+        let m = ((mask >> g) & ((1 << LANES) - 1)) as u8;
+        if m != 0 {
+            f(g, m);
+        }
+        g += LANES;
+    }
+}
+
 /// The RGBA8 store of [`FusedSpan::group`]: colours `c` (pixel-major pairs, clamped) packed as
 /// `store_pixels` converts them and stored into `dst`'s lanes of `m` (lane l into `dst[l]`).
 ///
@@ -741,21 +1011,29 @@ impl<'a> FusedSpan<'a> {
     #[inline]
     unsafe fn colors<const DIV: u8>(&mut self, x: i32, m: u8) -> [std::arch::x86_64::__m256; 4] {
         // SAFETY: the CPU has AVX2 (the caller's promise).
-        unsafe { self.colors_at::<DIV, false>(self.at_row(x), m) }
+        unsafe { self.colors_at::<DIV, false, LIN_NONE, ()>(self.at_row(x), m, None) }
     }
 
-    /// [`FusedSpan::colors`] of lanes `at` (`PACK` as [`Lanes`]; each instance has one
-    /// caller, which inlines it).
+    /// [`FusedSpan::colors`] of lanes `at` (`PACK` as [`Lanes`]); with `LIN` `LIN_CLAMP` or
+    /// `LIN_REPEAT` the caller's [`FusedSpan::lin_groups`] (its level `lin`) and
+    /// `bilinear!` inline. `K` is the caller's (`FusedSpan::colors_loop`'s closure on the
+    /// `LIN` routes, else `()`), unused but for making such an instance's caller its only
+    /// one, so that the caller inlines it: with two callers (the span's store and the rows'
+    /// channels) each instance stayed out of line, its call, prologue and return through
+    /// memory in every group. (The level looked up in each group, `LIN_NONE`, stays out of
+    /// line: inlined into the loop, textured-cube took 3% more.)
     ///
     /// # Safety
     /// The CPU must have AVX2 (`lanes::has_avx2`).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[inline]
-    unsafe fn colors_at<const DIV: u8, const PACK: bool>(
+    #[allow(clippy::extra_unused_type_parameters)]
+    unsafe fn colors_at<const DIV: u8, const PACK: bool, const LIN: u8, K>(
         &mut self,
         at: Lanes,
         m: u8,
+        lin: Option<&DenseLevel<'a>>,
     ) -> [std::arch::x86_64::__m256; 4] {
         use std::arch::x86_64::*;
         // `lanes::varyings`: x = fx0 as f32 + l, each plane (a + dx·x) + dy·fy, 1/w by
@@ -776,7 +1054,15 @@ impl<'a> FusedSpan<'a> {
         // `texels_lanes`).
         let r = self.r::<PACK>(at, inv);
         let rr = _mm256_mul_ps(r, qi);
-        let tex = if self.depth.is_some() || self.border.is_some() {
+        let tex = if let (LIN_CLAMP | LIN_REPEAT, Some(lv)) = (LIN, lin) {
+            // `level_linear`'s kernel on the span's level (`lin`: no depth
+            // comparison, no border texel, the level dense).
+            Some(if LIN == LIN_REPEAT {
+                bilinear!(true, true, lv, ss, tt)
+            } else {
+                bilinear!(false, false, lv, ss, tt)
+            })
+        } else if self.depth.is_some() || self.border.is_some() {
             // SAFETY: the CPU has AVX2 (the caller's promise).
             unsafe { self.other_texels(ss, tt, rr) }
         } else {
@@ -838,43 +1124,6 @@ impl<'a> FusedSpan<'a> {
             };
             _mm256_min_ps(_mm256_max_ps(c, zero), one)
         })
-    }
-
-    /// The colours of [`FusedSpan::colors`] channel-major (`channels[c][l]`: channel c of
-    /// lane l), as `tex_span` takes them: `oplanes::clamp01` of each channel of
-    /// `color_lanes`, bit for bit. Lanes outside `m` hold unspecified values.
-    ///
-    /// # Safety
-    /// The CPU must have AVX2 (`lanes::has_avx2`).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    pub unsafe fn channels(&mut self, x: i32, m: u8) -> [[f32; LANES]; 4] {
-        use std::arch::x86_64::*;
-        // SAFETY: the CPU has AVX2 (the caller's promise).
-        let p = unsafe {
-            match self.divs {
-                DIV_COORDS => self.colors::<DIV_COORDS>(x, m),
-                DIV_ALL => self.colors::<DIV_ALL>(x, m),
-                _ => self.colors::<DIV_ANY>(x, m),
-            }
-        };
-        // The 4x4 transposition in each half: register k holds lanes k and k + 4.
-        let (t0, t1) = (
-            _mm256_unpacklo_ps(p[0], p[1]),
-            _mm256_unpackhi_ps(p[0], p[1]),
-        );
-        let (t2, t3) = (
-            _mm256_unpacklo_ps(p[2], p[3]),
-            _mm256_unpackhi_ps(p[2], p[3]),
-        );
-        let ch = [
-            _mm256_shuffle_ps::<0x44>(t0, t2),
-            _mm256_shuffle_ps::<0xEE>(t0, t2),
-            _mm256_shuffle_ps::<0x44>(t1, t3),
-            _mm256_shuffle_ps::<0xEE>(t1, t3),
-        ];
-        // SAFETY: `__m256` has the layout of `[f32; 8]`; every bit pattern is valid.
-        ch.map(|v| unsafe { std::mem::transmute::<__m256, [f32; LANES]>(v) })
     }
 
     /// λ before bias of the eight pixels from window x `x` (lane l at x + l): each lane its
@@ -1330,7 +1579,7 @@ impl<'a> FusedSpan<'a> {
     }
 
     /// One level's LINEAR for the eight lanes (pixel-major pairs), as `pass_level` computes
-    /// it ([`bilinear`]): a missing level gives (0, 0, 0, 0); a level that is not
+    /// it (`bilinear!`): a missing level gives (0, 0, 0, 0); a level that is not
     /// [`dense_level`] gives None. Out of line: inlined into [`FusedSpan::colors`] its
     /// registers spill (twelfth session). (NEAREST is inline in [`FusedSpan::texels`].)
     ///
@@ -1352,10 +1601,10 @@ impl<'a> FusedSpan<'a> {
             Err(missing) => return missing.then(|| [_mm256_setzero_ps(); 4]),
         };
         Some(match rep {
-            [false, false] => bilinear::<false, false>(lv, ss, tt),
-            [false, true] => bilinear::<false, true>(lv, ss, tt),
-            [true, false] => bilinear::<true, false>(lv, ss, tt),
-            [true, true] => bilinear::<true, true>(lv, ss, tt),
+            [false, false] => bilinear!(false, false, lv, ss, tt),
+            [false, true] => bilinear!(false, true, lv, ss, tt),
+            [true, false] => bilinear!(true, false, lv, ss, tt),
+            [true, true] => bilinear!(true, true, lv, ss, tt),
         })
     }
 }
@@ -1558,6 +1807,18 @@ fn lambda_planes(planes: &[f32], to: usize, qy: f32) -> [[f32; 4]; 3] {
     })
 }
 
+/// Pixel-major pairs `p` (register k: lane k's RGBA, then lane k + 4's) channel-major
+/// (`[c][l]`: channel c of lane l): the 4x4 transposition in each half, its own inverse
+/// ([`pairs`]).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn channel_major(p: [std::arch::x86_64::__m256; 4]) -> [[f32; LANES]; 4] {
+    use std::arch::x86_64::*;
+    // SAFETY: `__m256` has the layout of `[f32; 8]`; every bit pattern is valid.
+    pairs(&p).map(|v| unsafe { std::mem::transmute::<__m256, [f32; LANES]>(v) })
+}
+
 /// The `vpermps` index that puts lane k in the low half and lane k + 4 in the high half.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
@@ -1649,83 +1910,6 @@ unsafe fn load_at<const D: usize>(
     })
 }
 
-/// The four corners of [`bilinear`] (indices `$k00`, `$k10`, `$k01`, `$k11` of level texels
-/// `$dt`, each taken modulo `$dt.len()` as [`load_pairs`] takes them) as pixel-major pairs.
-/// Where every lane's `k10` is its `k00` + 1 and its `k11` its `k01` + 1 (no lane's row wraps,
-/// the common case), each row's two texels come from one address a lane; where moreover every
-/// lane's `k01` is its `k00` + `$w` (the level's width: no lane's column wraps either), the
-/// four from one address a lane (eight extractions instead of sixteen); the same texels
-/// either way. The value is `$sum` (a closure) of the corners, called in each branch: with
-/// the sixteen registers merged after the branches, six of them went through the stack in
-/// each call. (A macro: as a function it stayed out of line, called from `level`'s four
-/// bilinear kernels.)
-#[cfg(target_arch = "x86_64")]
-macro_rules! load_corners {
-    ($dt:expr, $w:expr, $k00:expr, $k10:expr, $k01:expr, $k11:expr, $sum:expr) => {{
-        let sum = $sum;
-        let dt: &[[f32; 4]] = $dt;
-        let w: i32 = $w;
-        let (k00, k10, k01, k11) = ($k00, $k10, $k01, $k11);
-        let km = dt.len().wrapping_sub(1);
-        if dt.is_empty() || km >= 1 << 28 {
-            sum([
-                load_pairs(dt, k00),
-                load_pairs(dt, k10),
-                load_pairs(dt, k01),
-                load_pairs(dt, k11),
-            ])
-        } else {
-            let kmv = _mm256_set1_epi32(km as i32);
-            let (k00, k10) = (_mm256_and_si256(k00, kmv), _mm256_and_si256(k10, kmv));
-            let (k01, k11) = (_mm256_and_si256(k01, kmv), _mm256_and_si256(k11, kmv));
-            let one = _mm256_set1_epi32(1);
-            let next = _mm256_and_si256(
-                _mm256_cmpeq_epi32(k10, _mm256_add_epi32(k00, one)),
-                _mm256_cmpeq_epi32(k11, _mm256_add_epi32(k01, one)),
-            );
-            let down = _mm256_cmpeq_epi32(k01, _mm256_add_epi32(k00, _mm256_set1_epi32(w)));
-            let (o0, o1) = (_mm256_slli_epi32::<4>(k00), _mm256_slli_epi32::<4>(k01));
-            if _mm256_movemask_epi8(_mm256_and_si256(next, down)) == -1 {
-                // SAFETY: every lane has k00 + 1 = k10, k00 + w = k01 and k01 + 1 = k11, each
-                // at most km < 2^28 (w > 0: k01 > k00 as integers below 2^28): the texels
-                // k00, k00 + 1, k00 + w and k00 + w + 1 lie inside `dt` and 16·k fits a u32.
-                unsafe {
-                    let r = w as usize;
-                    sum([
-                        load_at::<0>(dt, o0, 0),
-                        load_at::<1>(dt, o0, 0),
-                        load_at::<0>(dt, o0, r),
-                        load_at::<1>(dt, o0, r),
-                    ])
-                }
-            } else if _mm256_movemask_epi8(next) == -1 {
-                // SAFETY: every lane has k00 + 1 = k10 <= km and k01 + 1 = k11 <= km,
-                // km < 2^28: the texels k00, k00 + 1, k01 and k01 + 1 lie inside `dt` and 16·k
-                // fits a u32.
-                unsafe {
-                    sum([
-                        load_at::<0>(dt, o0, 0),
-                        load_at::<1>(dt, o0, 0),
-                        load_at::<0>(dt, o1, 0),
-                        load_at::<1>(dt, o1, 0),
-                    ])
-                }
-            } else {
-                // SAFETY: every lane of each index is at most km < 2^28: inside `dt`, and 16·k
-                // fits a u32.
-                unsafe {
-                    sum([
-                        load_at::<0>(dt, o0, 0),
-                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k10), 0),
-                        load_at::<0>(dt, o1, 0),
-                        load_at::<0>(dt, _mm256_slli_epi32::<4>(k11), 0),
-                    ])
-                }
-            }
-        }
-    }};
-}
-
 /// `dense_nearest8`'s indices (the same wraps, floors and masks), the texels loaded per lane.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
@@ -1779,34 +1963,6 @@ fn nearest_depth<const RX: bool, const RY: bool>(
     _mm256_setr_ps(d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7))
 }
 
-/// `dense_linear8`'s wraps, weights and indices, the four corners loaded per lane and summed
-/// pixel-major: (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11 in that order per channel.
-/// A row's two corners come from one address a lane where no lane's pair wraps
-/// (`load_corners`): the same texels.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[inline]
-fn bilinear<const RX: bool, const RY: bool>(
-    lv: &DenseLevel,
-    s: std::arch::x86_64::__m256,
-    t: std::arch::x86_64::__m256,
-) -> [std::arch::x86_64::__m256; 4] {
-    use std::arch::x86_64::*;
-    let (x0, x1, a) = linear_axis8_of::<RX>(s, lv.wf, lv.wm1);
-    let (y0, y1, b) = linear_axis8_of::<RY>(t, lv.hf, lv.hm1);
-    let sh = _mm_cvtsi32_si128(lv.sh);
-    let (r0, r1) = (_mm256_sll_epi32(y0, sh), _mm256_sll_epi32(y1, sh));
-    load_corners!(
-        lv.dt,
-        lv.w,
-        _mm256_add_epi32(r0, x0),
-        _mm256_add_epi32(r0, x1),
-        _mm256_add_epi32(r1, x0),
-        _mm256_add_epi32(r1, x1),
-        |c: [[__m256; 4]; 4]| corner_sum(a, b, &c)
-    )
-}
-
 /// eq. 3.24's sum of the four corners `c` (t00, t10, t01, t11, each pixel-major pairs) with
 /// weights from α `a` and β `b` (lanes): (1-α)(1-β)·t00 + α(1-β)·t10 + (1-α)β·t01 + αβ·t11
 /// in that order per channel, as `pass_on`, `dense_linear8` and `dense_border8` sum them.
@@ -1838,7 +1994,7 @@ fn corner_sum(
 
 /// `dense_border8`'s LINEAR on eight lanes, wrap classes `MX` on s and `MY` on t: its axes
 /// ([`border_linear8`]: the wraps, inside masks and weights), indices (j·w + i) & km and
-/// eq. 3.24's sum ([`corner_sum`]), each corner's texels loaded per lane as [`bilinear`] loads
+/// eq. 3.24's sum ([`corner_sum`]), each corner's texels loaded per lane as `bilinear!` loads
 /// them and replaced by the border colour `bc` (pixel-major pairs) where the corner is
 /// outside the level — the texel `dense_border8` takes there.
 #[cfg(target_arch = "x86_64")]
