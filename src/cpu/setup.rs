@@ -807,7 +807,7 @@ impl Worker {
                 if wide && p.mode == gl::TRIANGLE_STRIP && ctx.colour_strips() {
                     // SAFETY: `wide`: this runs inside `assemble_avx2`, which `Route::Avx2`
                     // chooses only where the CPU has AVX2.
-                    rest = unsafe { self.directs_avx2(ctx, src, &b.idx, known, rest) };
+                    rest = unsafe { self.directs_avx2(ctx, src, rest, (&b.idx, known)) };
                     continue;
                 }
                 rest = self.directs(ctx, src, &b.idx, known, rest, is_direct);
@@ -847,8 +847,10 @@ impl Worker {
         rest
     }
 
-    /// [`Worker::directs`] compiled with AVX2, a function of its own (`inline(never)`): the
-    /// strips' set-up, a dense mesh's whole work, is compiled apart from `assemble_avx2`'s
+    /// [`Worker::directs`] of a run of triangle strips (`idx` and `known` as for `direct`) of
+    /// a colour-only layout (`SetupCtx::colour_strips`) compiled with AVX2, a function of its
+    /// own (`inline(never)`), whose strips take `strip_tri_avx2`: a dense mesh's set-up,
+    /// compiled apart from `assemble_avx2`'s
     /// other routes and from `run_avx2` (with `fast_tri`, inlined into both, a change to one
     /// route moved the other's code by ±0.2–1.5M instructions on display-list and
     /// sphere-subdivision), and its loop keeps its registers. A call a run of direct
@@ -863,9 +865,8 @@ impl Worker {
         &mut self,
         ctx: &SetupCtx,
         src: Src,
-        idx: &[u32],
-        known: [usize; 2],
         prims: &'p [Prim],
+        (idx, known): (&[u32], [usize; 2]),
     ) -> &'p [Prim] {
         let src = Src { lanes: true, ..src };
         self.directs(ctx, src, idx, known, prims, |p| {
@@ -1114,7 +1115,7 @@ impl Worker {
             if STRIP && src.lanes {
                 // SAFETY: as for `fast_tri` below; `src.wide`: compiled for AVX2 and run
                 // only where the CPU has it.
-                unsafe { self.strip_tri_avx2(ctx, src, [wa, wb, wc], ids, provoking) };
+                unsafe { self.strip_tri_avx2(ctx, src, v, provoking) };
                 return;
             }
             // SAFETY: `src.whole`: `src.vout` holds every vertex of `src.wins` whole, and `ids`
@@ -1169,26 +1170,29 @@ impl Worker {
         #[cfg(not(target_arch = "x86_64"))]
         let small = None;
         // SAFETY: the caller's contract (`fast_tri`'s).
-        unsafe { self.fast_tri_placed(ctx, src, w, ids, provoking, p, area, front, bbox, small) };
+        unsafe { self.fast_tri_placed(ctx, src, p, area, front, bbox, w, ids, provoking, small) };
     }
 
-    /// A strip's `fast_tri` with AVX2 (inside `directs_avx2` only): the box, the area and
-    /// the vertices' lanes from the records in lanes (`strip_lanes_avx2`), a box of at most
-    /// 2x2 placed from those lanes (`small_lanes_avx2`), the rest as `fast_tri`
-    /// (`fast_tri_placed`). The same primitives (`strip_route_is_fast_tri`).
+    /// A strip's `fast_tri` with AVX2 (inside `directs_avx2` only) of the vertices `v` (each
+    /// its index and its record): the box and its size class from the records in lanes
+    /// (`strip_lanes_avx2`), the area as `fast_tri`'s; a box of at most 2x2 placed by
+    /// `small_p_avx2`, the rest as `fast_tri` (`fast_tri_placed`). The same primitives
+    /// (`strip_route_is_fast_tri`).
     ///
     /// # Safety
-    /// As for `fast_tri`, and the CPU must have AVX2, the caller be compiled for it.
+    /// As for `fast_tri` (`ids` the indices of `v`), and the CPU must have AVX2, the caller be
+    /// compiled for it.
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn strip_tri_avx2(
         &mut self,
         ctx: &SetupCtx,
         src: Src,
-        w: [&Win; 3],
-        ids: [u32; 3],
+        v: [(u32, &Win); 3],
         provoking: u32,
     ) {
+        let [(a, wa), (b, wb), (c, wc)] = v;
+        let (w, ids) = ([wa, wb, wc], [a, b, c]);
         // SAFETY: the CPU has AVX2 (the contract).
         let Some(sl) = (unsafe { strip_lanes_avx2(&ctx.rect_cen, w) }) else {
             return;
@@ -1205,7 +1209,7 @@ impl Worker {
             // materials.)
             // SAFETY: the caller's contract (`fast_tri`'s).
             unsafe {
-                self.fast_tri_placed(ctx, src, w, ids, provoking, p, area, front, sl.bbox, None)
+                self.fast_tri_placed(ctx, src, p, area, front, sl.bbox, w, ids, provoking, None)
             };
             return;
         }
@@ -1213,7 +1217,7 @@ impl Worker {
         let small = Some(unsafe { small_p_avx2(sl.bbox, p, area) });
         // SAFETY: the caller's contract (`fast_tri`'s).
         unsafe {
-            self.fast_tri_placed(ctx, src, w, ids, provoking, p, area, front, sl.bbox, small)
+            self.fast_tri_placed(ctx, src, p, area, front, sl.bbox, w, ids, provoking, small)
         };
     }
 
@@ -1229,13 +1233,13 @@ impl Worker {
         &mut self,
         ctx: &SetupCtx,
         src: Src,
-        w: [&Win; 3],
-        ids: [u32; 3],
-        provoking: u32,
         p: [[i64; 2]; 3],
         area: i64,
         front: bool,
         bbox: [i32; 4],
+        w: [&Win; 3],
+        ids: [u32; 3],
+        provoking: u32,
         small: Option<(Geom, u8, EdgeLanes)>,
     ) {
         let (vout, mats) = (src.vout, src.mats);
@@ -2600,14 +2604,11 @@ mod tests {
         has
     }
 
-    /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
-    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
-    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
-    /// and the box cut by the rectangle: `(rect, p, bbox, area)`, `None` when its box is empty
-    /// or its area 0.
+    /// `small_case`'s rectangle and triangle before its box: a rectangle (the framebuffer's,
+    /// unbounded, or tiny and random) and three vertices (anywhere in the snapped range, at
+    /// its clamps, on and around pixel centres, or near one another) with their records.
     #[cfg(target_arch = "x86_64")]
-    #[allow(clippy::type_complexity)]
-    fn small_case(g: &mut Gen, case: usize) -> Option<([i32; 4], [[i64; 2]; 3], [i32; 4], i64)> {
+    fn case_records(g: &mut Gen, case: usize) -> ([i32; 4], [[i64; 2]; 3], [Win; 3]) {
         let lim = SNAP_LIMIT as i64;
         let rect = match case % 4 {
             0 => [0, 0, 799, 799],
@@ -2636,57 +2637,37 @@ mod tests {
             cen: cen(x as i32, y as i32),
             ..Win::default()
         });
+        (rect, p, w)
+    }
+
+    /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
+    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
+    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
+    /// and the box cut by the rectangle: `(rect, p, bbox, area)`, `None` when its box is empty
+    /// or its area 0.
+    #[cfg(target_arch = "x86_64")]
+    #[allow(clippy::type_complexity)]
+    fn small_case(g: &mut Gen, case: usize) -> Option<([i32; 4], [[i64; 2]; 3], [i32; 4], i64)> {
+        let (rect, p, w) = case_records(g, case);
         let bbox = wins_bbox(&rect_cen(rect), [&w[0], &w[1], &w[2]])?;
         let area = doubled_area(p);
         (area != 0).then_some((rect, p, bbox, area))
     }
 
     /// `strip_lanes_avx2` against `wins_bbox` and the 2x2 test of `geom_small_lanes_avx2`
-    /// (in i64) on 400k random triangles of window records (`small_case`'s coordinates:
-    /// anywhere in the snapped range, its clamps, on and around pixel centres and tile
-    /// edges, near one another; the records' `cen` from them) in random, empty, tiny and
-    /// unbounded rectangles: the same box, or none, and the same size class.
+    /// (in i64) on 400k random triangles of window records (`case_records`: coordinates
+    /// anywhere in the snapped range, at its clamps, on and around pixel centres, near one
+    /// another) in the framebuffer's, unbounded, and tiny or empty random rectangles: the same
+    /// box, or none, and the same size class.
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn strip_lanes_are_wins_bbox() {
+        let (mut g, mut boxes, mut small) = (Gen(0x5157_a9e1), 0, 0);
         if !has_avx2("strip_lanes_avx2") {
             return;
         }
-        let mut g = Gen(0x5157_a9e1);
-        let lim = SNAP_LIMIT as i64;
-        let (mut boxes, mut small) = (0, 0);
         for case in 0..400_000usize {
-            let rect = match case % 5 {
-                0 => [0, 0, 799, 799],
-                1 => [i32::MIN, i32::MIN, i32::MAX, i32::MAX],
-                2 => [64, 64, 63, 127],
-                _ => {
-                    let mut r = || (g.next() % 140) as i32 - 8;
-                    [r(), r(), r(), r()]
-                }
-            };
-            let (cx, cy) = (
-                (g.next() % 3000) as i64 - 800,
-                (g.next() % 3000) as i64 - 800,
-            );
-            let coord = |g: &mut Gen, c: i64| -> i64 {
-                match g.next() % 16 {
-                    0 => (g.next() % (2 * lim as u64 + 1)) as i64 - lim,
-                    1 => [lim, -lim][(g.next() % 2) as usize],
-                    2..=5 => (c & !127) + (g.next() % 5) as i64 * 128 - 256,
-                    6 => ((c >> 14) << 14) + (g.next() % 5) as i64 * 128 - 256,
-                    _ => c + (g.next() % 800) as i64 - 400,
-                }
-            };
-            let w: [Win; 3] = std::array::from_fn(|_| {
-                let (x, y) = (coord(&mut g, cx), coord(&mut g, cy));
-                Win {
-                    fx: x,
-                    fy: y,
-                    cen: cen(x as i32, y as i32),
-                    ..Win::default()
-                }
-            });
+            let (rect, _, w) = case_records(&mut g, case);
             let w = [&w[0], &w[1], &w[2]];
             let rc = rect_cen(rect);
             let want = wins_bbox(&rc, w).map(|b| {
