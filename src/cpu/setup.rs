@@ -534,6 +534,15 @@ fn cen(fx: i32, fy: i32) -> [i32; 4] {
 }
 
 impl SetupCtx {
+    /// Whether a run's strips take `Worker::directs_avx2` (with AVX2): a smooth layout whose
+    /// only varyings are the colour, one run of four floats for either face (a lit dense
+    /// mesh, whose small triangles `emit_colour_avx2` emits). Other layouts keep the strips'
+    /// set-up inlined into `assemble_avx2`, as before.
+    #[inline(always)]
+    fn colour_strips(&self) -> bool {
+        self.rl.n == 4 && !self.flat && self.gather[0][0].run && self.gather[1][0].run
+    }
+
     /// Clip code, perspective divide and viewport/DepthRange transform (§2.11.1) of the
     /// processed vertex `v`, x and y snapped to 1/256 pixel.
     #[inline]
@@ -636,6 +645,9 @@ struct Src<'a> {
     /// Set up inside `Worker::assemble_avx2` or `Worker::run_avx2` (so on a CPU with AVX2):
     /// `fast_tri` may use AVX2 kernels. A constant in each build once inlined.
     wide: bool,
+    /// Inside `Worker::directs_avx2` (so `wide` too): a strip's triangles take
+    /// `Worker::strip_tri_avx2`. A constant in each build once inlined.
+    lanes: bool,
 }
 
 impl<'a> Src<'a> {
@@ -652,8 +664,18 @@ impl<'a> Src<'a> {
             mats,
             whole,
             wide,
+            lanes: false,
         }
     }
+}
+
+/// Strips, quad strips and fans: set up as they are assembled (`Worker::direct`).
+#[inline(always)]
+fn is_direct(p: &Prim) -> bool {
+    matches!(
+        p.mode,
+        gl::TRIANGLE_STRIP | gl::QUAD_STRIP | gl::TRIANGLE_FAN
+    )
 }
 
 /// The span `[lo, hi)` of `idx` from the first of `prims` to the end of the last (a run of
@@ -783,23 +805,23 @@ impl Worker {
         let mut asm = std::mem::take(&mut self.asm);
         let mut rest = prims;
         // Strips, quad strips and fans (a mesh's and a quadric's usual primitives) are set up
-        // as they are assembled (`direct`), without the round trip through `asm`. Runs of
+        // as they are assembled (`directs`), without the round trip through `asm`. Runs of
         // other primitives go through `assemble`.
-        let direct = |p: &Prim| {
-            matches!(
-                p.mode,
-                gl::TRIANGLE_STRIP | gl::QUAD_STRIP | gl::TRIANGLE_FAN
-            )
-        };
         // (One pass: each primitive is looked at once, a run of others measured where it
         // starts; a scan for the run of direct ones first was 13 instructions a strip.)
         while let Some(p) = rest.first() {
-            if direct(p) {
-                self.direct(ctx, src, &b.idx, known, p);
-                rest = &rest[1..];
+            if is_direct(p) {
+                #[cfg(target_arch = "x86_64")]
+                if wide && p.mode == gl::TRIANGLE_STRIP && ctx.colour_strips() {
+                    // SAFETY: `wide`: this runs inside `assemble_avx2`, which `Route::Avx2`
+                    // chooses only where the CPU has AVX2.
+                    rest = unsafe { self.directs_avx2(ctx, src, rest, (&b.idx, known)) };
+                    continue;
+                }
+                rest = self.directs(ctx, src, &b.idx, known, rest, is_direct);
                 continue;
             }
-            let others = rest.iter().position(direct).unwrap_or(rest.len());
+            let others = rest.iter().position(is_direct).unwrap_or(rest.len());
             let (now, after) = rest.split_at(others);
             super::assembly::assemble(now, &b.idx, b.edge(), ctx.quads_split_last, &mut asm);
             for p in &asm {
@@ -808,6 +830,56 @@ impl Worker {
             rest = after;
         }
         self.asm = asm;
+    }
+
+    /// Sets up the run of direct primitives (`is_direct`) of kinds `kind` that `prims` starts
+    /// with, one by one (`direct`); returns the primitives after it.
+    #[inline(always)]
+    fn directs<'p>(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        idx: &[u32],
+        known: [usize; 2],
+        prims: &'p [Prim],
+        kind: impl Fn(&Prim) -> bool,
+    ) -> &'p [Prim] {
+        let mut rest = prims;
+        while let Some((p, after)) = rest.split_first() {
+            if !kind(p) {
+                break;
+            }
+            self.direct(ctx, src, idx, known, p);
+            rest = after;
+        }
+        rest
+    }
+
+    /// [`Worker::directs`] of a run of triangle strips (`idx` and `known` as for `direct`) of
+    /// a colour-only layout (`SetupCtx::colour_strips`) compiled with AVX2, a function of its
+    /// own (`inline(never)`), whose strips take `strip_tri_avx2`: a dense mesh's set-up,
+    /// compiled apart from `assemble_avx2`'s
+    /// other routes and from `run_avx2` (with `fast_tri`, inlined into both, a change to one
+    /// route moved the other's code by ±0.2–1.5M instructions on display-list and
+    /// sphere-subdivision), and its loop keeps its registers. A call a run of direct
+    /// primitives, not a strip (a gauss-smooth-400 frame has 160k strips of two triangles).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2; `src.wide`.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn directs_avx2<'p>(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        prims: &'p [Prim],
+        (idx, known): (&[u32], [usize; 2]),
+    ) -> &'p [Prim] {
+        let src = Src { lanes: true, ..src };
+        self.directs(ctx, src, idx, known, prims, |p| {
+            p.mode == gl::TRIANGLE_STRIP
+        })
     }
 
     /// Assembles and sets up the triangle strip, quad strip or fan `p` (§2.6.1) as
@@ -899,7 +971,7 @@ impl Worker {
             };
             let (a, b) = if i % 2 == 0 { (x, y) } else { (y, x) };
             // SAFETY: `w`'s records are `src.wins`'s of their indices.
-            unsafe { self.found_tri(ctx, src, [w(a), w(b), w(z)], z, ALL_EDGES) };
+            unsafe { self.found_tri::<true>(ctx, src, [w(a), w(b), w(z)], z, ALL_EDGES) };
         }
     }
 
@@ -1024,15 +1096,16 @@ impl Worker {
             return;
         };
         // SAFETY: each record is `src.wins.get` of its index (the contract).
-        unsafe { self.found_tri(ctx, src, [(a, wa), (b, wb), (c, wc)], provoking, edges) };
+        unsafe { self.found_tri::<false>(ctx, src, [(a, wa), (b, wb), (c, wc)], provoking, edges) };
     }
 
-    /// [`Worker::one_tri`] of a triangle whose three records `v` were found.
+    /// [`Worker::one_tri`] of a triangle whose three records `v` were found; a strip's
+    /// (`STRIP`) with AVX2 (`src.wide`) by `strip_tri_avx2`, every other by `fast_tri`.
     ///
     /// # Safety
     /// Each record of `v` is `src.wins[i]` of its index i.
     #[inline(always)]
-    unsafe fn found_tri(
+    unsafe fn found_tri<const STRIP: bool>(
         &mut self,
         ctx: &SetupCtx,
         src: Src,
@@ -1046,6 +1119,13 @@ impl Worker {
         }
         let ids = [a, b, c];
         if ctx.fast && src.whole && wa.code | wb.code | wc.code == 0 {
+            #[cfg(target_arch = "x86_64")]
+            if STRIP && src.lanes {
+                // SAFETY: as for `fast_tri` below; `src.wide`: compiled for AVX2 and run
+                // only where the CPU has it.
+                unsafe { self.strip_tri_avx2(ctx, src, v, provoking) };
+                return;
+            }
             // SAFETY: `src.whole`: `src.vout` holds every vertex of `src.wins` whole, and `ids`
             // are indices of `src.wins` (the contract; their records were found).
             unsafe { self.fast_tri(ctx, src, [wa, wb, wc], ids, provoking) };
@@ -1079,23 +1159,14 @@ impl Worker {
         ids: [u32; 3],
         provoking: u32,
     ) {
-        let (vout, mats) = (src.vout, src.mats);
         let Some(bbox) = wins_bbox(&ctx.rect_cen, w) else {
             return;
         };
         let p = [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]];
         let area = doubled_area(p);
-        if area == 0 {
+        let Some(front) = facing(ctx, area) else {
             return;
-        }
-        // §3.5.1 eq. 3.6: a negative signed area (clockwise) is `Geom::swapped`.
-        let front = (area < 0) != ctx.ccw_front;
-        match ctx.cull {
-            Some(gl::FRONT) if front => return,
-            Some(gl::BACK) if !front => return,
-            Some(gl::FRONT_AND_BACK) => return,
-            _ => {}
-        }
+        };
         #[cfg(target_arch = "x86_64")]
         let small = if src.wide {
             // SAFETY: `src.wide`: this runs inside `assemble_avx2` or `run_avx2`, which
@@ -1105,7 +1176,81 @@ impl Worker {
             None
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let small: Option<(Geom, u8, ())> = None;
+        let small = None;
+        // SAFETY: the caller's contract (`fast_tri`'s).
+        unsafe { self.fast_tri_placed(ctx, src, p, area, front, bbox, w, ids, provoking, small) };
+    }
+
+    /// A strip's `fast_tri` with AVX2 (inside `directs_avx2` only) of the vertices `v` (each
+    /// its index and its record): the box and its size class from the records in lanes
+    /// (`strip_lanes_avx2`), the area as `fast_tri`'s; a box of at most 2x2 placed by
+    /// `small_p_avx2`, the rest as `fast_tri` (`fast_tri_placed`). The same primitives
+    /// (`strip_route_is_fast_tri`).
+    ///
+    /// # Safety
+    /// As for `fast_tri` (`ids` the indices of `v`), and the CPU must have AVX2, the caller be
+    /// compiled for it.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn strip_tri_avx2(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        v: [(u32, &Win); 3],
+        provoking: u32,
+    ) {
+        let [(a, wa), (b, wb), (c, wc)] = v;
+        let (w, ids) = ([wa, wb, wc], [a, b, c]);
+        // SAFETY: the CPU has AVX2 (the contract).
+        let Some(sl) = (unsafe { strip_lanes_avx2(&ctx.rect_cen, w) }) else {
+            return;
+        };
+        let p = [[w[0].fx, w[0].fy], [w[1].fx, w[1].fy], [w[2].fx, w[2].fy]];
+        let area = doubled_area(p);
+        let Some(front) = facing(ctx, area) else {
+            return;
+        };
+        if !sl.small {
+            // (Its own call, with `small` a constant `None`: the larger triangle's route
+            // without the small one's arm. Joined with it, ≈6M more on gauss-smooth-400;
+            // `fast_tri` from the records again, ≈+0.3% on gauss-smooth-40, +0.6% on
+            // materials.)
+            // SAFETY: the caller's contract (`fast_tri`'s).
+            unsafe {
+                self.fast_tri_placed(ctx, src, p, area, front, sl.bbox, w, ids, provoking, None)
+            };
+            return;
+        }
+        // SAFETY: the CPU has AVX2 (the contract); `sl`'s box is at most 2x2.
+        let small = Some(unsafe { small_p_avx2(sl.bbox, p, area) });
+        // SAFETY: the caller's contract (`fast_tri`'s).
+        unsafe {
+            self.fast_tri_placed(ctx, src, p, area, front, sl.bbox, w, ids, provoking, small)
+        };
+    }
+
+    /// The rest of `fast_tri` once the triangle `p` (records `w`, vertices `ids`) is found
+    /// inside box `bbox` with doubled signed area `area` (not 0) and facing `front`, and
+    /// placed by `small` when its box is at most 2x2 (with AVX2).
+    ///
+    /// # Safety
+    /// As for `fast_tri`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn fast_tri_placed(
+        &mut self,
+        ctx: &SetupCtx,
+        src: Src,
+        p: [[i64; 2]; 3],
+        area: i64,
+        front: bool,
+        bbox: [i32; 4],
+        w: [&Win; 3],
+        ids: [u32; 3],
+        provoking: u32,
+        small: Option<(Geom, u8, EdgeLanes)>,
+    ) {
+        let (vout, mats) = (src.vout, src.mats);
         let back = !front;
         let s = ctx.layout.stride;
         let (g, cover) = match small {
@@ -1549,6 +1694,26 @@ impl Worker {
     }
 }
 
+/// Whether a triangle of doubled signed area `area` is front-facing (§3.5.1 eq. 3.6: a
+/// negative area, clockwise, is `Geom::swapped`); `None` when it has no area or is culled.
+#[inline(always)]
+fn facing(ctx: &SetupCtx, area: i64) -> Option<bool> {
+    if area == 0 {
+        return None;
+    }
+    let front = (area < 0) != ctx.ccw_front;
+    match ctx.cull {
+        Some(gl::FRONT) if front => None,
+        Some(gl::BACK) if !front => None,
+        Some(gl::FRONT_AND_BACK) => None,
+        _ => Some(front),
+    }
+}
+
+/// Without AVX2 nothing is placed in lanes (`fast_tri`'s `small` is always `None`).
+#[cfg(not(target_arch = "x86_64"))]
+type EdgeLanes = ();
+
 /// `Worker::fast_tri`'s vertices `ids` (records `w`) in `Geom::v`'s counter-clockwise order
 /// (the second and third exchanged when `swapped`): their window z, 1/w and floats in `vout`
 /// (`s` each), without a range check.
@@ -1805,6 +1970,47 @@ unsafe fn geom_small_lanes_avx2(
     p: [[i64; 2]; 3],
     area: i64,
 ) -> Option<(Geom, u8, EdgeLanes)> {
+    let [x0, y0, x1, y1] = bbox;
+    if x1 - x0 > 1 || y1 - y0 > 1 {
+        return None;
+    }
+    // SAFETY: the CPU has AVX2 (the contract); the box is at most 2x2 (just tested).
+    Some(unsafe { small_p_avx2(bbox, p, area) })
+}
+
+/// `small_lanes_avx2` of the vertices `p`.
+///
+/// # Safety
+/// As for `small_lanes_avx2`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn small_p_avx2(bbox: [i32; 4], p: [[i64; 2]; 3], area: i64) -> (Geom, u8, EdgeLanes) {
+    use std::arch::x86_64::_mm256_set_epi64x;
+    // SAFETY: the CPU has AVX2 (the contract); register arithmetic.
+    let (x, y) = unsafe {
+        (
+            _mm256_set_epi64x(0, p[2][0], p[1][0], p[0][0]),
+            _mm256_set_epi64x(0, p[2][1], p[1][1], p[0][1]),
+        )
+    };
+    // SAFETY: the CPU has AVX2 (the contract); the box is at most 2x2 (the caller's).
+    unsafe { small_lanes_avx2(bbox, x, y, p, area) }
+}
+
+/// `geom_small_lanes_avx2` of a triangle whose box `bbox` is at most 2x2 pixels, its
+/// vertices `p` also given as lanes `x`, `y` (lane k vertex k, lane 3 zero).
+///
+/// # Safety
+/// As for `geom_small_avx2`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn small_lanes_avx2(
+    bbox: [i32; 4],
+    x: std::arch::x86_64::__m256i,
+    y: std::arch::x86_64::__m256i,
+    p: [[i64; 2]; 3],
+    area: i64,
+) -> (Geom, u8, EdgeLanes) {
     use std::arch::x86_64::{
         _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_castsi256_pd,
         _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_movemask_pd, _mm256_mul_epi32,
@@ -1813,9 +2019,6 @@ unsafe fn geom_small_lanes_avx2(
         _mm256_sub_epi64, _mm256_unpackhi_epi64, _mm256_unpacklo_epi64,
     };
     let [x0, y0, x1, y1] = bbox;
-    if x1 - x0 > 1 || y1 - y0 > 1 {
-        return None;
-    }
     let swapped = area < 0;
     let (mut dx, mut dy, mut e) = ([0i64; 4], [0i64; 4], [0i64; 4]);
     // SAFETY: the CPU has AVX2, and the caller is compiled for it (this function's contract);
@@ -1823,10 +2026,8 @@ unsafe fn geom_small_lanes_avx2(
     // `dx`, `dy` and `e` (no alignment needed); the rest is register arithmetic.
     let (inside, owns, lanes) = unsafe {
         // Lane k: vertex k (counter-clockwise), and vertex k + 1 by a permutation (lane 3
-        // zeros): the lanes are built from `p`, a clockwise triangle's second and third
-        // vertices then exchanged in them (`ccw` in lanes).
-        let x = _mm256_set_epi64x(0, p[2][0], p[1][0], p[0][0]);
-        let y = _mm256_set_epi64x(0, p[2][1], p[1][1], p[0][1]);
+        // zeros): the lanes are `p`'s, a clockwise triangle's second and third vertices
+        // then exchanged in them (`ccw` in lanes).
         let (x, y) = if swapped {
             (
                 _mm256_permute4x64_epi64::<0b11_01_10_00>(x),
@@ -1894,7 +2095,67 @@ unsafe fn geom_small_lanes_avx2(
         d: [[dx[0], dy[0]], [dx[1], dy[1]], [dx[2], dy[2]]],
         e: [e[0], e[1], e[2]],
     };
-    Some((g, COVER_KNOWN | (inside & cols & rows), lanes))
+    (g, COVER_KNOWN | (inside & cols & rows), lanes)
+}
+
+/// A strip triangle's place from its window records, found in lanes by `strip_lanes_avx2`.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct StripLanes {
+    /// `wins_bbox`'s box (not empty).
+    bbox: [i32; 4],
+    /// The box is at most 2x2 pixels.
+    small: bool,
+}
+
+/// `wins_bbox(rect_cen, w)` (`None` when empty), whether that box is at most 2x2, and
+/// `doubled_area` of the vertices, in lanes: the three `Win::cen` one register each, their
+/// minimum and the maximum with `rect_cen` by `pminsd`, `pmaxsd`, the emptiness and size
+/// tests on the bounds widened to i64 (`x0 + (−x1)`, exact where `wins_bbox` compares in
+/// i64), the box's `x1`, `y1` negated back by `psignd` (`wrapping_neg`'s bits); the area
+/// `ex2·ey0 − ex0·ey2` from the edges' lanes by one `pmuldq` (each delta within ±2^31: the
+/// records' snapped coordinates are below `COORD_LIMIT`). The scalar box (bounds as 64-bit
+/// halves, the box through the stack) and area were ≈50 instructions a triangle.
+///
+/// # Safety
+/// The CPU must have AVX2, and the caller be compiled for it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn strip_lanes_avx2(rect_cen: &[i32; 4], w: [&Win; 3]) -> Option<StripLanes> {
+    use std::arch::x86_64::{
+        __m128i, _mm256_add_epi64, _mm256_castsi256_pd, _mm256_cmpgt_epi64, _mm256_cvtepi32_epi64,
+        _mm256_movemask_pd, _mm256_permute4x64_epi64, _mm256_set1_epi64x, _mm256_setzero_si256,
+        _mm_loadu_si128, _mm_max_epi32, _mm_min_epi32, _mm_setr_epi32, _mm_sign_epi32,
+        _mm_storeu_si128,
+    };
+    let load = |c: &[i32; 4]| {
+        // SAFETY: `c` is four i32, read unaligned (the CPU has AVX2: the contract).
+        unsafe { _mm_loadu_si128(c.as_ptr().cast::<__m128i>()) }
+    };
+    let mut bbox = [0i32; 4];
+    // SAFETY: the CPU has AVX2 (the contract); register arithmetic and one store of four
+    // i32 to `bbox`.
+    unsafe {
+        let c = _mm_min_epi32(
+            _mm_min_epi32(load(&w[0].cen), load(&w[1].cen)),
+            load(&w[2].cen),
+        );
+        let c = _mm_max_epi32(c, load(rect_cen));
+        // Lanes 0, 1: x0 − x1, y0 − y1 (in i64).
+        let c64 = _mm256_cvtepi32_epi64(c);
+        let size = _mm256_add_epi64(c64, _mm256_permute4x64_epi64::<0b01_00_11_10>(c64));
+        let empty = _mm256_cmpgt_epi64(size, _mm256_setzero_si256());
+        if _mm256_movemask_pd(_mm256_castsi256_pd(empty)) & 0b11 != 0 {
+            return None;
+        }
+        let big = _mm256_cmpgt_epi64(_mm256_set1_epi64x(-1), size);
+        let small = _mm256_movemask_pd(_mm256_castsi256_pd(big)) & 0b11 == 0;
+        _mm_storeu_si128(
+            bbox.as_mut_ptr().cast(),
+            _mm_sign_epi32(c, _mm_setr_epi32(1, 1, -1, -1)),
+        );
+        Some(StripLanes { bbox, small })
+    }
 }
 
 /// `geom_small_avx2`'s edges as it leaves them in AVX2 registers: lane k holds edge k's
@@ -2064,7 +2325,9 @@ mod tests {
         SNAP_LIMIT,
     };
     #[cfg(target_arch = "x86_64")]
-    use super::{doubled_area, geom_placed, geom_small_avx2, wins_bbox, COVER_KNOWN};
+    use super::{
+        doubled_area, geom_placed, geom_small_avx2, strip_lanes_avx2, wins_bbox, COVER_KNOWN,
+    };
     use crate::cpu::testgen::Gen;
     use glam::Vec4;
 
@@ -2349,14 +2612,11 @@ mod tests {
         has
     }
 
-    /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
-    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
-    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
-    /// and the box cut by the rectangle: `(rect, p, bbox, area)`, `None` when its box is empty
-    /// or its area 0.
+    /// `small_case`'s rectangle and triangle before its box: a rectangle (the framebuffer's,
+    /// unbounded, or tiny and random) and three vertices (anywhere in the snapped range, at
+    /// its clamps, on and around pixel centres, or near one another) with their records.
     #[cfg(target_arch = "x86_64")]
-    #[allow(clippy::type_complexity)]
-    fn small_case(g: &mut Gen, case: usize) -> Option<([i32; 4], [[i64; 2]; 3], [i32; 4], i64)> {
+    fn case_records(g: &mut Gen, case: usize) -> ([i32; 4], [[i64; 2]; 3], [Win; 3]) {
         let lim = SNAP_LIMIT as i64;
         let rect = match case % 4 {
             0 => [0, 0, 799, 799],
@@ -2385,9 +2645,65 @@ mod tests {
             cen: cen(x as i32, y as i32),
             ..Win::default()
         });
+        (rect, p, w)
+    }
+
+    /// A random triangle for `geom_small_is_geom` and `colour_lanes_are_emit_tri`, a few
+    /// pixels across near the grid's centres (ties at centres and on 1/128 steps, every
+    /// owned-edge pattern, either winding), some with a vertex far away or at the snap limits
+    /// and the box cut by the rectangle: `(rect, p, bbox, area)`, `None` when its box is empty
+    /// or its area 0.
+    #[cfg(target_arch = "x86_64")]
+    #[allow(clippy::type_complexity)]
+    fn small_case(g: &mut Gen, case: usize) -> Option<([i32; 4], [[i64; 2]; 3], [i32; 4], i64)> {
+        let (rect, p, w) = case_records(g, case);
         let bbox = wins_bbox(&rect_cen(rect), [&w[0], &w[1], &w[2]])?;
         let area = doubled_area(p);
         (area != 0).then_some((rect, p, bbox, area))
+    }
+
+    /// `strip_lanes_avx2` against `wins_bbox` and the 2x2 test of `geom_small_lanes_avx2`
+    /// (in i64) on 400k random triangles of window records (`case_records`: coordinates
+    /// anywhere in the snapped range, at its clamps, on and around pixel centres, near one
+    /// another) in the framebuffer's, unbounded, and tiny or empty random rectangles: the same
+    /// box, or none, and the same size class.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn strip_lanes_are_wins_bbox() {
+        let (mut g, mut boxes, mut small) = (Gen(0x5157_a9e1), 0, 0);
+        if !has_avx2("strip_lanes_avx2") {
+            return;
+        }
+        for case in 0..400_000usize {
+            let (rect, _, w) = case_records(&mut g, case);
+            let w = [&w[0], &w[1], &w[2]];
+            let rc = rect_cen(rect);
+            let want = wins_bbox(&rc, w).map(|b| {
+                let size = |lo: i32, hi: i32| i64::from(hi) - i64::from(lo);
+                (b, size(b[0], b[2]) <= 1 && size(b[1], b[3]) <= 1)
+            });
+            // SAFETY: the CPU has AVX2 (checked above), and this test is compiled for it
+            // only inside the function (`strip_lanes_avx2` is inlined where it is called).
+            let got = unsafe { lanes(&rc, w) }.map(|l| (l.bbox, l.small));
+            assert_eq!(
+                got,
+                want,
+                "case {case}: rect {rect:?}, {:?}",
+                w.map(|v| (v.fx, v.fy))
+            );
+            boxes += usize::from(want.is_some());
+            small += usize::from(want.is_some_and(|(_, s)| s));
+        }
+        assert!(
+            boxes > 100_000 && small > 20_000,
+            "{boxes} boxes, {small} small"
+        );
+
+        #[target_feature(enable = "avx2")]
+        unsafe fn lanes(rc: &[i32; 4], w: [&Win; 3]) -> Option<super::StripLanes> {
+            // SAFETY: compiled for AVX2; the caller checked the CPU.
+            unsafe { strip_lanes_avx2(rc, w) }
+        }
     }
 
     /// `i64_lanes_f64` against `as f64` on random i64 of every magnitude (and the extremes),

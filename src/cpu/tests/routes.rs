@@ -36,12 +36,7 @@ fn both_routes_set_up_the_same_primitives() {
     ];
     let mut prims = 0;
     for case in 0..200 {
-        let (w, h) = (300, 200);
-        let mut st = State::new(w, h);
-        st.viewport = [0, 0, w as i32, h as i32];
-        st.enables.cull_face = case % 4 == 1;
-        st.cull_face_mode = [gl::BACK, gl::FRONT][case % 2];
-        st.front_face = [gl::CCW, gl::CW][(case / 2) % 2];
+        let mut st = culled_state(case);
         st.shade_model = if case % 5 == 2 { gl::FLAT } else { gl::SMOOTH };
         st.enables.polygon_offset_fill = case % 6 == 3;
         st.polygon_mode = match case % 11 {
@@ -96,83 +91,158 @@ fn both_routes_set_up_the_same_primitives() {
             }
             b.end();
         }
-        let layout = Layout::for_state(&st);
-        let tiles = (w.div_ceil(64) as usize, h.div_ceil(64) as usize);
-        let ctx = SetupCtx::new(&st, layout, scissor_rect(&st), tiles);
-        let (mut vout, mut wins) = (Vec::new(), Vec::new());
-        process_by(
-            &st,
-            &b,
-            &layout,
-            &ctx,
-            &mut vout,
-            &mut wins,
-            true,
-            Route::Baseline,
-        );
-        let run = |route| {
-            let mut wk = Worker::default();
-            wk.assemble_by(&ctx, &vout, &wins, &b, &b.prims, route);
-            wk
-        };
-        let (a, c) = (run(Route::Baseline), run(wide));
-        // The same triangles assembled first and set up by `run` (the route a flush takes
-        // when one primitive dominates): the same primitives again, by both routes.
-        let mut asm = Vec::new();
-        crate::cpu::assembly::assemble(&b.prims, &b.idx, b.edge(), ctx.quads_split_last, &mut asm);
-        let run_asm = |route| {
-            let mut wk = Worker::default();
-            wk.run_by(&ctx, &vout, &wins, &b.mat, &asm, route);
-            wk
-        };
-        let (d, e) = (run_asm(Route::Baseline), run_asm(wide));
-        let fields = |wk: &Worker| {
-            wk.prims
-                .iter()
-                .map(|p| {
-                    (
-                        p.kind,
-                        p.flags,
-                        p.bbox,
-                        p.mat,
-                        p.voff,
-                        p.xy,
-                        p.owns,
-                        p.cover,
-                        p.z.map(super::lighting::nan_bits),
-                    )
-                })
-                .collect::<Vec<_>>()
-        };
-        assert_eq!(fields(&a), fields(&c), "case {case}: primitives differ");
-        assert_eq!(
-            fields(&a),
-            fields(&d),
-            "case {case}: run's primitives differ"
-        );
-        assert_eq!(
-            fields(&a),
-            fields(&e),
-            "case {case}: run's primitives differ (route)"
-        );
-        let bits = |wk: &Worker| {
-            wk.pool
-                .iter()
-                .map(|&v| super::lighting::nan_bits(v))
-                .collect::<Vec<_>>()
-        };
-        for (o, name) in [(&c, "route"), (&d, "run"), (&e, "run by route")] {
-            assert_eq!(bits(&a), bits(o), "case {case}: pools differ ({name})");
-            assert_eq!(a.touched, o.touched, "case {case} ({name})");
-            for &t in &a.touched {
-                assert_eq!(
-                    a.bins[t as usize], o.bins[t as usize],
-                    "case {case}, tile {t} ({name})"
-                );
-            }
-            assert_eq!(a.area, o.area, "case {case} ({name})");
+        prims += compare_routes(&st, &b, case, wide);
+    }
+    assert!(prims > 5000, "only {prims} primitives compared");
+}
+
+/// A 300x200 state with its viewport, culling (case 1 mod 4), the culled face and the front
+/// face chosen by `case`.
+fn culled_state(case: usize) -> State {
+    let (w, h) = (300, 200);
+    let mut st = State::new(w, h);
+    st.viewport = [0, 0, w as i32, h as i32];
+    st.enables.cull_face = case % 4 == 1;
+    st.cull_face_mode = [gl::BACK, gl::FRONT][case % 2];
+    st.front_face = [gl::CCW, gl::CW][(case / 2) % 2];
+    st
+}
+
+/// `st`'s batch `b` set up by the baseline route and by `wide`, assembled on the fly
+/// (`assemble_by`) and from `assemble`'s triangles (`run_by`): every primitive's fields, every
+/// float of the pool, every touched bin and the area the same. Returns the primitives.
+fn compare_routes(st: &State, b: &Batch, case: usize, wide: Route) -> usize {
+    let (w, h) = (st.viewport[2] as u32, st.viewport[3] as u32);
+    let layout = Layout::for_state(st);
+    let tiles = (w.div_ceil(64) as usize, h.div_ceil(64) as usize);
+    let ctx = SetupCtx::new(st, layout, scissor_rect(st), tiles);
+    let (mut vout, mut wins) = (Vec::new(), Vec::new());
+    process_by(
+        st,
+        b,
+        &layout,
+        &ctx,
+        &mut vout,
+        &mut wins,
+        true,
+        Route::Baseline,
+    );
+    let run = |route| {
+        let mut wk = Worker::default();
+        wk.assemble_by(&ctx, &vout, &wins, b, &b.prims, route);
+        wk
+    };
+    let (a, c) = (run(Route::Baseline), run(wide));
+    // The same triangles assembled first and set up by `run` (the route a flush takes
+    // when one primitive dominates): the same primitives again, by both routes.
+    let mut asm = Vec::new();
+    crate::cpu::assembly::assemble(&b.prims, &b.idx, b.edge(), ctx.quads_split_last, &mut asm);
+    let run_asm = |route| {
+        let mut wk = Worker::default();
+        wk.run_by(&ctx, &vout, &wins, &b.mat, &asm, route);
+        wk
+    };
+    let (d, e) = (run_asm(Route::Baseline), run_asm(wide));
+    let fields = |wk: &Worker| {
+        wk.prims
+            .iter()
+            .map(|p| {
+                (
+                    p.kind,
+                    p.flags,
+                    p.bbox,
+                    p.mat,
+                    p.voff,
+                    p.xy,
+                    p.owns,
+                    p.cover,
+                    p.z.map(super::lighting::nan_bits),
+                )
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(fields(&a), fields(&c), "case {case}: primitives differ");
+    assert_eq!(
+        fields(&a),
+        fields(&d),
+        "case {case}: run's primitives differ"
+    );
+    assert_eq!(
+        fields(&a),
+        fields(&e),
+        "case {case}: run's primitives differ (route)"
+    );
+    let bits = |wk: &Worker| {
+        wk.pool
+            .iter()
+            .map(|&v| super::lighting::nan_bits(v))
+            .collect::<Vec<_>>()
+    };
+    for (o, name) in [(&c, "route"), (&d, "run"), (&e, "run by route")] {
+        assert_eq!(bits(&a), bits(o), "case {case}: pools differ ({name})");
+        assert_eq!(a.touched, o.touched, "case {case} ({name})");
+        for &t in &a.touched {
+            assert_eq!(
+                a.bins[t as usize], o.bins[t as usize],
+                "case {case}, tile {t} ({name})"
+            );
         }
-        prims += a.prims.len();
+        assert_eq!(a.area, o.area, "case {case} ({name})");
+    }
+    a.prims.len()
+}
+
+/// Dense strips of a smooth colour-only layout (lit, no texture: `SetupCtx::colour_strips`,
+/// the strips' own AVX2 route, `Worker::strip_tri_avx2`), cells of a pixel or two and some of
+/// several, under random culling and facing, set up by both routes: the same primitives.
+/// Cells cross the 64-pixel tile edges, some vertices repeat (triangles without area, boxes
+/// without a centre), and some are far outside or not numbers (clipped, `general`).
+#[test]
+fn strip_route_is_fast_tri() {
+    let wide = Route::best();
+    let mut rng = Rng(0x2c1b_3a55);
+    let mut prims = 0;
+    for case in 0..60 {
+        let mut st = culled_state(case);
+        st.enables.lighting = true;
+        st.enables.lights[0] = true;
+        st.light_model.two_side = case % 3 == 0;
+        st.enables.polygon_offset_fill = case % 5 == 3;
+        st.polygon_offset_factor = rng.range(-2.0, 2.0);
+        st.polygon_offset_units = rng.range(-2.0, 2.0);
+        let (w, h) = (st.viewport[2] as f32, st.viewport[3] as f32);
+        *st.projection.top_mut() = Mat4::orthographic_rh_gl(0.0, w, 0.0, h, -1.0, 1.0);
+        let mut b = Batch::default();
+        let cell = [0.6, 1.1, 1.7, 4.0][case % 4];
+        for _ in 0..40 {
+            let (x0, y0) = (rng.range(-4.0, w), rng.range(-4.0, h));
+            let n = 4 + (rng.next() * 12.0) as usize;
+            b.begin(gl::TRIANGLE_STRIP);
+            b.note_materials(&st.materials);
+            let mut last = Vec4::ZERO;
+            for k in 0..n {
+                let jit = |r: &mut Rng| r.range(-0.3, 0.3) * cell;
+                let mut p = Vec4::new(
+                    x0 + (k / 2) as f32 * cell + jit(&mut rng),
+                    y0 + (k % 2) as f32 * cell + jit(&mut rng),
+                    rng.range(-0.9, 0.9),
+                    1.0,
+                );
+                match (rng.next() * 40.0) as usize {
+                    0 => p.x = 1e9,
+                    1 => p.y = f32::NAN,
+                    2 if k > 0 => p = last,
+                    _ => {}
+                }
+                last = p;
+                let mut c = Current::default();
+                c.inputs_mut().color = Vec4::new(rng.next(), rng.next(), rng.next(), 1.0);
+                c.normal = Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0);
+                b.vertex(p, &c);
+            }
+            b.end();
+        }
+        prims += compare_routes(&st, &b, case, wide);
     }
     assert!(prims > 5000, "only {prims} primitives compared");
 }
